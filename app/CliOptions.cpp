@@ -1,0 +1,158 @@
+#include "app/CliOptions.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <regex>
+
+namespace speculum::app {
+
+namespace {
+
+using render::Error;
+
+render::Result<int> parseInt(const std::string& option, const std::string& text, int min, int max) {
+    int value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size())
+        return Error{option + ": expected a whole number, got \"" + text + "\""};
+    if (value < min || value > max)
+        return Error{option + ": " + text + " is out of range (" + std::to_string(min) + ".." +
+                     std::to_string(max) + ")"};
+    return value;
+}
+
+render::Result<double> parseTime(const std::string& text) {
+    try {
+        std::size_t used = 0;
+        const double value = std::stod(text, &used);
+        if (used != text.size() || !std::isfinite(value))
+            throw std::invalid_argument(text);
+        if (value < 0.0 || value > 1e7)
+            return Error{"--time: " + text + " is out of range (0..1e7 seconds)"};
+        return value;
+    } catch (const std::exception&) {
+        return Error{"--time: expected a number of seconds, got \"" + text + "\""};
+    }
+}
+
+constexpr int kMaxImageSide = 16384;
+
+} // namespace
+
+std::string usageText() {
+    return "usage:\n"
+           "  speculum [PROJECT]                          open the editor\n"
+           "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference]\n"
+           "  speculum explain PROJECT [--size WxH] [--time T] [--json]\n"
+           "  speculum bench PROJECT --out DIR [--quick]\n"
+           "\n"
+           "render writes PNG, JPEG, TIFF or EXR (by the extension of OUT); --size defaults to 1280x720,\n"
+           "--ssaa N averages NxN samples per pixel (1..16), --time evaluates animations at T seconds.\n"
+           "explain renders one frame and lists the passes that ran and the effects skipped, with reasons.\n";
+}
+
+render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
+    CliOptions o;
+    std::size_t i = 0;
+    if (args.empty())
+        return o;
+    const std::string& first = args[0];
+    if (first == "-h" || first == "--help" || first == "help") {
+        o.command = Command::Help;
+        return o;
+    }
+    if (first == "--version") {
+        o.command = Command::Version;
+        return o;
+    }
+    if (first == "render")
+        o.command = Command::Render;
+    else if (first == "explain")
+        o.command = Command::Explain;
+    else if (first == "bench")
+        o.command = Command::Bench;
+    else if (!first.empty() && first[0] == '-')
+        return Error{"unknown option " + first + " (see speculum --help)"};
+    if (o.command == Command::Editor) {
+        if (args.size() > 1)
+            return Error{"the editor takes one project file, got " + std::to_string(args.size())};
+        o.project = first;
+        return o;
+    }
+    const std::string name = first;
+    ++i;
+
+    auto needValue = [&](const std::string& option) -> render::Result<std::string> {
+        if (i + 1 >= args.size())
+            return Error{option + ": missing value"};
+        return args[++i];
+    };
+    for (; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const bool renderOrExplain = o.command == Command::Render || o.command == Command::Explain;
+        if ((a == "-o" || a == "--output") && o.command == Command::Render) {
+            auto v = needValue(a);
+            if (!v)
+                return Error{v.error()};
+            o.output = *v;
+        } else if (a == "--out" && o.command == Command::Bench) {
+            auto v = needValue(a);
+            if (!v)
+                return Error{v.error()};
+            o.outDir = *v;
+        } else if (a == "--size" && renderOrExplain) {
+            auto v = needValue(a);
+            if (!v)
+                return Error{v.error()};
+            static const std::regex size(R"((\d+)[xX](\d+))");
+            std::smatch m;
+            if (!std::regex_match(*v, m, size))
+                return Error{"--size: expected WIDTHxHEIGHT such as 1280x720, got \"" + *v + "\""};
+            auto w = parseInt("--size width", m[1].str(), 1, kMaxImageSide);
+            if (!w)
+                return Error{w.error()};
+            auto h = parseInt("--size height", m[2].str(), 1, kMaxImageSide);
+            if (!h)
+                return Error{h.error()};
+            o.width = *w;
+            o.height = *h;
+        } else if (a == "--ssaa" && o.command == Command::Render) {
+            auto v = needValue(a);
+            if (!v)
+                return Error{v.error()};
+            auto n = parseInt("--ssaa", *v, 1, 16);
+            if (!n)
+                return Error{n.error()};
+            o.ssaa = *n;
+        } else if (a == "--time" && renderOrExplain) {
+            auto v = needValue(a);
+            if (!v)
+                return Error{v.error()};
+            auto t = parseTime(*v);
+            if (!t)
+                return Error{t.error()};
+            o.time = *t;
+        } else if (a == "--reference" && o.command == Command::Render) {
+            o.reference = true;
+        } else if (a == "--json" && o.command == Command::Explain) {
+            o.json = true;
+        } else if (a == "--quick" && o.command == Command::Bench) {
+            o.quick = true;
+        } else if (!a.empty() && a[0] == '-') {
+            return Error{name + ": unknown option " + a + " (see speculum --help)"};
+        } else if (o.project.empty()) {
+            o.project = a;
+        } else {
+            return Error{name + ": unexpected argument \"" + a + "\""};
+        }
+    }
+    if (o.project.empty())
+        return Error{name + ": missing PROJECT file"};
+    if (o.command == Command::Render && o.output.empty())
+        return Error{"render: missing -o OUT"};
+    if (o.command == Command::Bench && o.outDir.empty())
+        return Error{"bench: missing --out DIR"};
+    return o;
+}
+
+} // namespace speculum::app

@@ -1,0 +1,33 @@
+#pragma once
+
+#include "render/Result.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace speculum::app {
+
+enum class Command { Editor, Render, Explain, Bench, Help, Version };
+
+// The parsed command line (DESIGN.md, "Command line"). Values are validated here, before any work, so
+// bad input costs nothing and writes nothing.
+struct CliOptions {
+    Command command = Command::Editor;
+    std::string project; // PROJECT, empty for the editor with a new scene
+    std::string output;  // render -o
+    std::string outDir;  // bench --out
+    int width = 1280;
+    int height = 720;
+    int ssaa = 1;
+    double time = 0.0;
+    bool reference = false;
+    bool json = false;
+    bool quick = false;
+};
+
+render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args);
+
+std::string usageText();
+
+} // namespace speculum::app

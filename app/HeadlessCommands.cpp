@@ -1,0 +1,211 @@
+#include "app/HeadlessCommands.hpp"
+
+#include "editor/document/ProjectFile.hpp"
+#include "editor/document/Snapshot.hpp"
+#include "render/Renderer.hpp"
+#include "render/StillRenderer.hpp"
+#include "render/gl/HeadlessContext.hpp"
+#include "render/image/ImageWriter.hpp"
+
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace speculum::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void fail(const std::string& message) {
+    std::cerr << "speculum: " << message << "\n";
+}
+
+void printWarnings(const std::vector<std::string>& warnings) {
+    for (const std::string& w : warnings)
+        std::cerr << "speculum: warning: " << w << "\n";
+}
+
+// Everything a headless command needs: the scene snapshot and a renderer on an EGL context.
+struct HeadlessFrame {
+    std::unique_ptr<render::gl::HeadlessContext> context;
+    std::unique_ptr<render::Renderer> renderer;
+    render::FrameInput input;
+    std::string glDescription;
+};
+
+render::Result<HeadlessFrame> prepare(const CliOptions& options) {
+    const QString path = QString::fromStdString(options.project);
+    const QFileInfo info(path);
+    if (!info.exists())
+        return render::Error{options.project + ": no such file"};
+    if (!info.isFile())
+        return render::Error{options.project + ": not a file"};
+    document::Scene scene;
+    std::vector<std::string> warnings;
+    if (render::Status opened = document::openProject(scene, path, warnings); !opened)
+        return render::Error{options.project + ": " + opened.error()};
+    printWarnings(warnings);
+
+    HeadlessFrame frame;
+    auto context = render::gl::HeadlessContext::create();
+    if (!context)
+        return render::Error{"no OpenGL: " + context.error()};
+    frame.context = std::move(*context);
+    frame.glDescription = frame.context->description();
+    auto renderer = render::Renderer::create();
+    if (!renderer)
+        return render::Error{renderer.error()};
+    frame.renderer = std::move(*renderer);
+
+    document::MeshLibrary meshes;
+    warnings.clear();
+    frame.input = document::snapshot(scene, options.time, meshes, warnings);
+    printWarnings(warnings);
+    return frame;
+}
+
+std::string sizeText(int w, int h) {
+    return std::to_string(w) + "x" + std::to_string(h);
+}
+
+std::string fileName(const std::string& path) {
+    return std::filesystem::path(path).filename().string();
+}
+
+} // namespace
+
+int runRender(const CliOptions& options) {
+    const auto start = Clock::now();
+    if (options.reference) {
+        fail(
+            "render: --reference needs the exact ray-traced reference, which this version does not have yet");
+        return 1;
+    }
+    // Validate the output before any work: an unsupported format or a missing folder costs nothing.
+    if (!render::isSupportedImagePath(options.output)) {
+        fail(options.output + ": unsupported image format (supported: " + render::supportedImageFormats() +
+             ")");
+        return 1;
+    }
+    const std::filesystem::path outDir = std::filesystem::absolute(options.output).parent_path();
+    if (!std::filesystem::is_directory(outDir)) {
+        fail(options.output + ": folder " + outDir.string() + " does not exist");
+        return 1;
+    }
+    auto frame = prepare(options);
+    if (!frame) {
+        fail(frame.error());
+        return 1;
+    }
+    // Progress on stderr for renders that take a while: every sample when supersampling.
+    const int samples = options.ssaa * options.ssaa;
+    auto progress = [&](double fraction, const std::string& stage) {
+        if (samples > 1 || std::chrono::duration<double>(Clock::now() - start).count() > 1.0)
+            std::cerr << "speculum: rendering " << static_cast<int>(fraction * 100.0 + 0.5) << "% (" << stage
+                      << ")\n";
+        return true;
+    };
+    render::StillSettings settings{options.width, options.height, options.ssaa};
+    auto still = render::renderStill(*frame->renderer, frame->input, settings, progress);
+    if (!still) {
+        fail("render: " + still.error());
+        return 1;
+    }
+    printWarnings(still->firstSample.warnings);
+
+    render::ImageMetadata metadata;
+    std::ostringstream settingsText;
+    settingsText << "size " << sizeText(options.width, options.height) << ", ssaa " << options.ssaa
+                 << ", time " << options.time << " s";
+    metadata.attributes = {
+        {"Software", std::string("speculum ") + SPECULUM_VERSION},
+        {"ImageDescription",
+         "speculum render of " + fileName(options.project) + " (" + settingsText.str() + ")"},
+        {"speculum:scene", std::filesystem::absolute(options.project).string()},
+        {"speculum:settings", settingsText.str()},
+        {"speculum:renderTimeMs", std::to_string(still->totalMs)},
+        {"speculum:renderer", frame->glDescription},
+    };
+    if (render::Status written = render::writeImage(options.output, still->image, metadata); !written) {
+        fail(written.error());
+        return 1;
+    }
+    std::cerr << "speculum: rendered " << sizeText(options.width, options.height) << " with "
+              << still->samples << (still->samples == 1 ? " sample" : " samples") << " per pixel in "
+              << static_cast<int>(still->totalMs + 0.5) << " ms\n";
+    std::cout << options.output << "\n";
+    return 0;
+}
+
+int runExplain(const CliOptions& options) {
+    auto frame = prepare(options);
+    if (!frame) {
+        fail(frame.error());
+        return 1;
+    }
+    // Explain what a frame at this size really does: render it offscreen and report its timings.
+    render::StillSettings settings{options.width, options.height, 1};
+    auto still = render::renderStill(*frame->renderer, frame->input, settings);
+    if (!still) {
+        fail("explain: " + still.error());
+        return 1;
+    }
+    const render::FramePlan& plan = still->firstSample.plan;
+    if (options.json) {
+        QJsonArray passes;
+        for (const render::PlannedPass& p : plan.passes) {
+            QJsonObject o;
+            o["kind"] = QString::fromUtf8(render::toString(p.kind).data(),
+                                          qsizetype(render::toString(p.kind).size()));
+            o["target"] = QString::fromStdString(p.target);
+            o["reason"] = QString::fromStdString(p.reason);
+            o["gpuMs"] = p.gpuMs;
+            o["cpuMs"] = p.cpuMs;
+            passes.append(o);
+        }
+        QJsonArray skipped;
+        for (const render::SkippedEffect& s : plan.skipped)
+            skipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
+                                       {"reason", QString::fromStdString(s.reason)}});
+        QJsonObject root{{"passes", passes},
+                         {"skipped", skipped},
+                         {"size", QString::fromStdString(sizeText(options.width, options.height))},
+                         {"time", options.time},
+                         {"frameGpuMs", still->firstSample.gpuMs},
+                         {"frameCpuMs", still->firstSample.cpuMs},
+                         {"renderer", QString::fromStdString(frame->glDescription)}};
+        std::cout << QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString();
+        return 0;
+    }
+    std::printf("Frame %s at t = %g s on %s\n\n", sizeText(options.width, options.height).c_str(),
+                options.time, frame->glDescription.c_str());
+    std::printf("Passes (in order):\n");
+    for (const render::PlannedPass& p : plan.passes) {
+        const std::string kind(render::toString(p.kind));
+        std::printf("  %-11s %-14s gpu %7.2f ms  cpu %7.2f ms  %s\n", kind.c_str(),
+                    p.target.empty() ? "-" : p.target.c_str(), p.gpuMs, p.cpuMs, p.reason.c_str());
+    }
+    std::printf("\nSkipped:\n");
+    if (plan.skipped.empty())
+        std::printf("  (nothing)\n");
+    for (const render::SkippedEffect& s : plan.skipped)
+        std::printf("  %-14s %s\n", s.target.empty() ? "-" : s.target.c_str(), s.reason.c_str());
+    std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", still->firstSample.gpuMs, still->firstSample.cpuMs);
+    return 0;
+}
+
+int runBench(const CliOptions&) {
+    fail("bench: the accuracy sweep needs the exact reference tracer, which this version does not have yet; "
+         "frame-time benchmarks are in the speculum_benchmarks program");
+    return 1;
+}
+
+} // namespace speculum::app

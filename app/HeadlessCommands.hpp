@@ -1,0 +1,13 @@
+#pragma once
+
+#include "app/CliOptions.hpp"
+
+namespace speculum::app {
+
+// The commands that need no display. Each returns the process exit status: 0 success, 1 failure
+// (one line on stderr naming what is wrong; no output file is left behind).
+int runRender(const CliOptions& options);
+int runExplain(const CliOptions& options);
+int runBench(const CliOptions& options);
+
+} // namespace speculum::app

@@ -1,0 +1,218 @@
+#include "editor/document/Commands.hpp"
+
+#include <QtGlobal>
+#include <cassert>
+
+namespace speculum::document {
+
+namespace {
+
+// QUndoCommand::id() values; any distinct non-negative numbers.
+enum CommandId { SetNodeDataId = 1001, SetSettingsId, SetCameraId };
+
+QString quoted(const std::string& name) {
+    return QStringLiteral("\u201c%1\u201d").arg(QString::fromStdString(name));
+}
+
+// A command made for (or run on) a node that is not in the scene is a programmer error: the undo stack and
+// the scene went out of step. Continuing would corrupt the document, so stop loudly.
+const Node& requireNode(const Scene& scene, NodeId id, const char* where) {
+    const Node* node = scene.findNode(id);
+    if (!node) {
+        qFatal("%s", where);
+    }
+    return *node;
+}
+
+} // namespace
+
+// ---- SetNodeDataCommand ----
+
+SetNodeDataCommand::SetNodeDataCommand(Scene& scene, NodeId id, NodeData data, const QString& text,
+                                       const QString& mergeKey, QUndoCommand* parent)
+    : QUndoCommand(parent)
+    , m_scene(scene)
+    , m_node(id)
+    , m_before(requireNode(scene, id, "SetNodeDataCommand::SetNodeDataCommand(): no such node").data())
+    , m_after(std::move(data))
+    , m_mergeKey(mergeKey) {
+    setText(text.isEmpty() ? QStringLiteral("Edit %1").arg(quoted(m_before.name)) : text);
+}
+
+void SetNodeDataCommand::undo() {
+    m_scene.setNodeData(m_node, m_before);
+}
+void SetNodeDataCommand::redo() {
+    m_scene.setNodeData(m_node, m_after);
+}
+
+int SetNodeDataCommand::id() const {
+    return m_mergeKey.isEmpty() ? -1 : SetNodeDataId;
+}
+
+bool SetNodeDataCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = dynamic_cast<const SetNodeDataCommand*>(other);
+    if (!next || next->m_node != m_node || next->m_mergeKey != m_mergeKey || m_mergeKey.isEmpty()) {
+        return false;
+    }
+    m_after = next->m_after;
+    return true;
+}
+
+// ---- RenameNodeCommand ----
+
+RenameNodeCommand::RenameNodeCommand(Scene& scene, NodeId id, std::string name, QUndoCommand* parent)
+    : QUndoCommand(parent)
+    , m_scene(scene)
+    , m_node(id)
+    , m_before(requireNode(scene, id, "RenameNodeCommand::RenameNodeCommand(): no such node").name())
+    , m_after(std::move(name)) {
+    setText(QStringLiteral("Rename %1 to %2").arg(quoted(m_before), quoted(m_after)));
+}
+
+void RenameNodeCommand::undo() {
+    NodeData data = requireNode(m_scene, m_node, "RenameNodeCommand::undo(): no such node").data();
+    data.name = m_before;
+    m_scene.setNodeData(m_node, data);
+}
+
+void RenameNodeCommand::redo() {
+    NodeData data = requireNode(m_scene, m_node, "RenameNodeCommand::redo(): no such node").data();
+    data.name = m_after;
+    m_scene.setNodeData(m_node, data);
+}
+
+// ---- AddNodeCommand ----
+
+AddNodeCommand::AddNodeCommand(Scene& scene, NodeTree tree, NodeId parent, int index, QUndoCommand* parent_)
+    : QUndoCommand(parent_)
+    , m_scene(scene)
+    , m_tree(std::move(tree))
+    , m_parent(parent)
+    , m_index(index) {
+    setText(QStringLiteral("Add %1").arg(quoted(m_tree.data.name)));
+}
+
+void AddNodeCommand::redo() {
+    if (!m_detached) {
+        // First run: build the nodes (this is where their ids are assigned, once).
+        m_detached = m_scene.createNode(m_tree);
+    }
+    m_node = m_scene.insertNode(m_parent, m_index, std::move(m_detached));
+}
+
+void AddNodeCommand::undo() {
+    m_detached = m_scene.takeNode(m_node);
+}
+
+// ---- RemoveNodeCommand ----
+
+RemoveNodeCommand::RemoveNodeCommand(Scene& scene, NodeId id, QUndoCommand* parent)
+    : QUndoCommand(parent)
+    , m_scene(scene)
+    , m_node(id) {
+    setText(QStringLiteral("Delete %1")
+                .arg(quoted(
+                    requireNode(scene, id, "RemoveNodeCommand::RemoveNodeCommand(): no such node").name())));
+}
+
+void RemoveNodeCommand::redo() {
+    m_parent = m_scene.parentOf(m_node);
+    m_index = m_scene.indexOf(m_node);
+    m_detached = m_scene.takeNode(m_node);
+}
+
+void RemoveNodeCommand::undo() {
+    m_scene.insertNode(m_parent, m_index, std::move(m_detached));
+}
+
+// ---- MoveNodeCommand ----
+
+MoveNodeCommand::MoveNodeCommand(Scene& scene, NodeId id, NodeId newParent, int newIndex,
+                                 QUndoCommand* parent)
+    : QUndoCommand(parent)
+    , m_scene(scene)
+    , m_node(id)
+    , m_oldParent(scene.parentOf(id))
+    , m_oldIndex(scene.indexOf(id))
+    , m_newParent(newParent)
+    , m_newIndex(newIndex) {
+    assert(!scene.isAncestor(id, newParent) &&
+           "MoveNodeCommand::MoveNodeCommand(): cannot move a node into its own subtree");
+    setText(QStringLiteral("Move %1").arg(
+        quoted(requireNode(scene, id, "MoveNodeCommand::MoveNodeCommand(): no such node").name())));
+}
+
+void MoveNodeCommand::move(NodeId parent, int index) {
+    m_scene.insertNode(parent, index, m_scene.takeNode(m_node));
+}
+
+void MoveNodeCommand::redo() {
+    move(m_newParent, m_newIndex);
+}
+void MoveNodeCommand::undo() {
+    move(m_oldParent, m_oldIndex);
+}
+
+// ---- SetSettingsCommand ----
+
+SetSettingsCommand::SetSettingsCommand(Scene& scene, SceneSettings settings, bool mergeable,
+                                       QUndoCommand* parent)
+    : QUndoCommand(parent)
+    , m_scene(scene)
+    , m_before(scene.settings())
+    , m_after(std::move(settings))
+    , m_mergeable(mergeable) {
+    setText(QStringLiteral("Change scene settings"));
+}
+
+void SetSettingsCommand::undo() {
+    m_scene.setSettings(m_before);
+}
+void SetSettingsCommand::redo() {
+    m_scene.setSettings(m_after);
+}
+int SetSettingsCommand::id() const {
+    return m_mergeable ? SetSettingsId : -1;
+}
+
+bool SetSettingsCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = dynamic_cast<const SetSettingsCommand*>(other);
+    if (!next || !next->m_mergeable || !m_mergeable) {
+        return false;
+    }
+    m_after = next->m_after;
+    return true;
+}
+
+// ---- SetCameraCommand ----
+
+SetCameraCommand::SetCameraCommand(Scene& scene, CameraData camera, bool mergeable, QUndoCommand* parent)
+    : QUndoCommand(parent)
+    , m_scene(scene)
+    , m_before(scene.camera())
+    , m_after(std::move(camera))
+    , m_mergeable(mergeable) {
+    setText(QStringLiteral("Move camera"));
+}
+
+void SetCameraCommand::undo() {
+    m_scene.setCamera(m_before);
+}
+void SetCameraCommand::redo() {
+    m_scene.setCamera(m_after);
+}
+int SetCameraCommand::id() const {
+    return m_mergeable ? SetCameraId : -1;
+}
+
+bool SetCameraCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = dynamic_cast<const SetCameraCommand*>(other);
+    if (!next || !next->m_mergeable || !m_mergeable) {
+        return false;
+    }
+    m_after = next->m_after;
+    return true;
+}
+
+} // namespace speculum::document

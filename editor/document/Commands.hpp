@@ -1,0 +1,133 @@
+#pragma once
+
+#include "editor/document/Scene.hpp"
+
+#include <QUndoCommand>
+#include <memory>
+
+namespace speculum::document {
+
+// Undoable edits of a Scene. Push them on a QUndoStack (push() runs redo() once). Commands refer to nodes by
+// NodeId, which survives remove/undo cycles, so a stack of commands stays valid in any order of undo/redo.
+
+// Replaces one node's whole data. Consecutive commands on the same node with the same non-empty mergeKey
+// merge into one undo step (a slider drag: use e.g. "material.specular"; start a new key, e.g. with a drag
+// serial number, when a new drag begins).
+class SetNodeDataCommand : public QUndoCommand {
+public:
+    SetNodeDataCommand(Scene& scene, NodeId id, NodeData data, const QString& text = {},
+                       const QString& mergeKey = {}, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    Scene& m_scene;
+    NodeId m_node;
+    NodeData m_before;
+    NodeData m_after;
+    QString m_mergeKey;
+};
+
+// Changes only the name (a separate command so the undo text reads "Rename").
+class RenameNodeCommand : public QUndoCommand {
+public:
+    RenameNodeCommand(Scene& scene, NodeId id, std::string name, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+
+private:
+    Scene& m_scene;
+    NodeId m_node;
+    std::string m_before;
+    std::string m_after;
+};
+
+// Adds a subtree under parent (kNoNode = top level) at index (-1 = append). The new node's id is known after
+// the first redo() (i.e. after push) and stays the same over undo/redo.
+class AddNodeCommand : public QUndoCommand {
+public:
+    AddNodeCommand(Scene& scene, NodeTree tree, NodeId parent = kNoNode, int index = -1,
+                   QUndoCommand* parent_ = nullptr);
+    void undo() override;
+    void redo() override;
+    NodeId nodeId() const { return m_node; }
+
+private:
+    Scene& m_scene;
+    NodeTree m_tree;
+    NodeId m_parent;
+    int m_index;
+    NodeId m_node = kNoNode;
+    std::unique_ptr<Node> m_detached; // held while undone
+};
+
+// Removes a node and its subtree; undo puts the same nodes (same ids) back at the same place.
+class RemoveNodeCommand : public QUndoCommand {
+public:
+    RemoveNodeCommand(Scene& scene, NodeId id, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+
+private:
+    Scene& m_scene;
+    NodeId m_node;
+    NodeId m_parent = kNoNode;
+    int m_index = -1;
+    std::unique_ptr<Node> m_detached; // held while done
+};
+
+// Moves a node (with its subtree) under another parent / to another position. newIndex counts positions in
+// the new parent's child list after the node has been taken out. Moving a node into its own subtree is a
+// programmer error (check Scene::isAncestor first).
+class MoveNodeCommand : public QUndoCommand {
+public:
+    MoveNodeCommand(Scene& scene, NodeId id, NodeId newParent, int newIndex, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+
+private:
+    void move(NodeId parent, int index);
+    Scene& m_scene;
+    NodeId m_node;
+    NodeId m_oldParent;
+    int m_oldIndex;
+    NodeId m_newParent;
+    int m_newIndex;
+};
+
+// Scene settings; consecutive commands merge (one undo step per slider drag) when mergeable is true.
+class SetSettingsCommand : public QUndoCommand {
+public:
+    SetSettingsCommand(Scene& scene, SceneSettings settings, bool mergeable = false,
+                       QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    Scene& m_scene;
+    SceneSettings m_before;
+    SceneSettings m_after;
+    bool m_mergeable;
+};
+
+// Camera; consecutive mergeable commands merge (one undo step per orbit/pan drag).
+class SetCameraCommand : public QUndoCommand {
+public:
+    SetCameraCommand(Scene& scene, CameraData camera, bool mergeable = false, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    Scene& m_scene;
+    CameraData m_before;
+    CameraData m_after;
+    bool m_mergeable;
+};
+
+} // namespace speculum::document

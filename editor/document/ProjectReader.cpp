@@ -1,0 +1,559 @@
+#include "editor/document/ProjectFile.hpp"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonParseError>
+#include <QSet>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <glm/geometric.hpp>
+
+namespace speculum::document {
+
+namespace {
+
+// Validation unwinds through many small readers; an exception thrown here and caught in parseProject keeps
+// each reader a straight line. It never leaves this file.
+struct ParseFailure {
+    std::string message;
+};
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw ParseFailure{path.empty() ? what : path + ": " + what};
+}
+
+std::string num(double v) {
+    return QString::number(v, 'g', QLocale::FloatingPointShortest).toStdString();
+}
+
+std::string join(const std::string& path, const QString& key) {
+    return path.empty() ? key.toStdString() : path + "." + key.toStdString();
+}
+
+std::string indexed(const std::string& path, qsizetype i) {
+    return path + "[" + std::to_string(i) + "]";
+}
+
+// ---- scalar readers: each names the path in its error ----
+
+double readNumber(const QJsonValue& v, const std::string& path) {
+    if (!v.isDouble()) {
+        fail(path, "expected a number");
+    }
+    const double d = v.toDouble();
+    if (!std::isfinite(d)) {
+        fail(path, "expected a finite number");
+    }
+    return d;
+}
+
+int readInt(const QJsonValue& v, const std::string& path) {
+    const double d = v.isDouble() ? v.toDouble() : NAN;
+    if (!std::isfinite(d) || d != std::floor(d) || std::abs(d) > 1e9) {
+        fail(path, "expected an integer");
+    }
+    return static_cast<int>(d);
+}
+
+std::string readString(const QJsonValue& v, const std::string& path) {
+    if (!v.isString()) {
+        fail(path, "expected a string");
+    }
+    return v.toString().toStdString();
+}
+
+template <int N>
+glm::vec<N, double> readVec(const QJsonValue& v, const std::string& path) {
+    const std::string what = "expected " + std::to_string(N) + " numbers";
+    if (!v.isArray() || v.toArray().size() != N) {
+        fail(path, what);
+    }
+    const QJsonArray a = v.toArray();
+    glm::vec<N, double> out(0.0);
+    for (int i = 0; i < N; ++i) {
+        if (!a[i].isDouble() || !std::isfinite(a[i].toDouble())) {
+            fail(path, what);
+        }
+        out[i] = a[i].toDouble();
+    }
+    return out;
+}
+
+void requireRange(double v, double lo, double hi, const std::string& path) {
+    if (v < lo || v > hi) {
+        fail(path, "must be in " + num(lo) + ".." + num(hi) + ", got " + num(v));
+    }
+}
+
+void requirePositive(double v, const std::string& path) {
+    if (!(v > 0.0)) {
+        fail(path, "must be greater than 0, got " + num(v));
+    }
+}
+
+void requireNonNegative(double v, const std::string& path) {
+    if (v < 0.0) {
+        fail(path, "must not be negative, got " + num(v));
+    }
+}
+
+glm::dvec3 readColor(const QJsonValue& v, const std::string& path) {
+    const glm::dvec3 c = readVec<3>(v, path);
+    for (int i = 0; i < 3; ++i) {
+        if (c[i] < 0.0 || c[i] > 1.0) {
+            fail(path, "colour components must be in 0..1 (linear RGB), got " + num(c[i]));
+        }
+    }
+    return c;
+}
+
+template <typename E>
+E readEnum(const QJsonValue& v, const std::string& path, const char* what,
+           std::optional<E> (*parse)(std::string_view), const char* expected) {
+    const std::string s = readString(v, path);
+    const std::optional<E> e = parse(s);
+    if (!e) {
+        fail(path, std::string("unknown ") + what + " \"" + s + "\" (expected " + expected + ")");
+    }
+    return *e;
+}
+
+// ---- objects: tracks which keys were read so the rest become warnings and `extra` ----
+
+class ObjectReader {
+public:
+    ObjectReader(const QJsonValue& v, std::string path, std::vector<std::string>& warnings)
+        : m_path(std::move(path))
+        , m_warnings(warnings) {
+        if (!v.isObject()) {
+            fail(m_path, "expected an object");
+        }
+        m_object = v.toObject();
+    }
+
+    const std::string& path() const { return m_path; }
+    std::string at(const char* key) const { return join(m_path, QString::fromLatin1(key)); }
+    bool has(const char* key) const { return m_object.contains(QLatin1String(key)); }
+
+    // The value, or Undefined when absent; marks the key as known either way.
+    QJsonValue get(const char* key) {
+        m_known.insert(QString::fromLatin1(key));
+        return m_object.value(QLatin1String(key));
+    }
+
+    template <typename T, typename F>
+    void optional(const char* key, T& out, F&& read) {
+        const QJsonValue v = get(key);
+        if (!v.isUndefined()) {
+            out = read(v, at(key));
+        }
+    }
+
+    // Unknown keys: warned about and returned for `extra`.
+    QJsonObject finish() {
+        QJsonObject extra;
+        for (auto it = m_object.begin(); it != m_object.end(); ++it) {
+            if (!m_known.contains(it.key())) {
+                m_warnings.push_back(join(m_path, it.key()) + ": unknown field, ignored");
+                extra.insert(it.key(), it.value());
+            }
+        }
+        return extra;
+    }
+
+private:
+    QJsonObject m_object;
+    std::string m_path;
+    std::vector<std::string>& m_warnings;
+    QSet<QString> m_known;
+};
+
+class ProjectReader {
+public:
+    ProjectReader(const QDir& baseDir, std::vector<std::string>& warnings)
+        : m_baseDir(baseDir)
+        , m_warnings(warnings) {}
+
+    SceneData readScene(const QJsonValue& root) {
+        ObjectReader o(root, "", m_warnings);
+        readHeader(o);
+        SceneData scene;
+        if (const QJsonValue v = o.get("settings"); !v.isUndefined()) {
+            scene.settings = readSettings(v, "settings");
+        }
+        if (const QJsonValue v = o.get("camera"); !v.isUndefined()) {
+            scene.camera = readCamera(v, "camera");
+        }
+        if (const QJsonValue v = o.get("nodes"); !v.isUndefined()) {
+            scene.nodes = readNodeList(v, "nodes");
+        }
+        scene.extra = o.finish();
+        return scene;
+    }
+
+private:
+    void readHeader(ObjectReader& o) {
+        const QJsonValue format = o.get("format");
+        if (format.isUndefined()) {
+            fail("format", "missing (this is not a speculum scene file)");
+        }
+        if (format.toString() != QLatin1String("speculum-scene")) {
+            const std::string got =
+                format.isString() ? ", got \"" + format.toString().toStdString() + "\"" : "";
+            fail("format", "expected \"speculum-scene\"" + got + " (this is not a speculum scene file)");
+        }
+        const QJsonValue version = o.get("version");
+        if (version.isUndefined()) {
+            fail("version", "missing");
+        }
+        const int v = readInt(version, "version");
+        if (v > kProjectFormatVersion) {
+            fail("version", "version " + std::to_string(v) + " is newer than this speculum (reads up to " +
+                                std::to_string(kProjectFormatVersion) + ")");
+        }
+        if (v < 1) {
+            fail("version", "must be at least 1, got " + std::to_string(v));
+        }
+    }
+
+    SceneSettings readSettings(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        SceneSettings s;
+        o.optional("background", s.background, readColor);
+        o.optional("mirrorDepth", s.mirrorDepth, readInt);
+        requireRange(s.mirrorDepth, 0, 16, o.at("mirrorDepth"));
+        o.optional("ambient", s.ambient, readNumber);
+        requireRange(s.ambient, 0.0, 1.0, o.at("ambient"));
+        s.extra = o.finish();
+        return s;
+    }
+
+    CameraData readCamera(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        CameraData c;
+        o.optional("position", c.position, readVec<3>);
+        o.optional("target", c.target, readVec<3>);
+        o.optional("up", c.up, readVec<3>);
+        o.optional("fovY", c.fovY, readNumber);
+        o.optional("near", c.near, readNumber);
+        o.optional("far", c.far, readNumber);
+        if (!(c.fovY > 0.0 && c.fovY < 180.0)) {
+            fail(o.at("fovY"), "must be between 0 and 180 degrees (exclusive), got " + num(c.fovY));
+        }
+        requirePositive(c.near, o.at("near"));
+        if (!(c.far > c.near)) {
+            fail(o.at("far"), "must be greater than near (" + num(c.near) + "), got " + num(c.far));
+        }
+        const glm::dvec3 view = c.target - c.position;
+        if (glm::length(view) == 0.0) {
+            fail(o.at("target"), "must differ from the camera position");
+        }
+        const glm::dvec3 side = glm::cross(view, c.up);
+        if (glm::length(c.up) == 0.0 || glm::length(side) <= 1e-12 * glm::length(view) * glm::length(c.up)) {
+            fail(o.at("up"), "must be non-zero and not parallel to the view direction");
+        }
+        c.extra = o.finish();
+        return c;
+    }
+
+    std::vector<NodeTree> readNodeList(const QJsonValue& v, const std::string& path) {
+        if (!v.isArray()) {
+            fail(path, "expected an array of nodes");
+        }
+        const QJsonArray a = v.toArray();
+        std::vector<NodeTree> nodes;
+        nodes.reserve(static_cast<std::size_t>(a.size()));
+        for (qsizetype i = 0; i < a.size(); ++i) {
+            nodes.push_back(readNode(a[i], indexed(path, i)));
+        }
+        return nodes;
+    }
+
+    NodeTree readNode(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        NodeTree node;
+        NodeData& d = node.data;
+        o.optional("name", d.name, readString);
+        if (const QJsonValue t = o.get("transform"); !t.isUndefined()) {
+            d.transform = readTransform(t, o.at("transform"));
+        }
+        readComponent(o, "mesh", d.mesh, &ProjectReader::readMesh);
+        readComponent(o, "material", d.material, &ProjectReader::readMaterial);
+        readComponent(o, "light", d.light, &ProjectReader::readLight);
+        readComponent(o, "mirror", d.mirror, &ProjectReader::readMirror);
+        readComponent(o, "reflector", d.reflector, &ProjectReader::readReflector);
+        readComponent(o, "animation", d.animation, &ProjectReader::readAnimation);
+        if (d.reflector) {
+            if (!d.mesh) {
+                fail(o.at("reflector"),
+                     "needs a mesh on the same node (the reflector's surface is its mesh)");
+            }
+            if (!m_firstReflector.empty()) {
+                fail(o.at("reflector"),
+                     "a scene has at most one reflector (the first is " + m_firstReflector + ")");
+            }
+            m_firstReflector = path;
+        }
+        if (const QJsonValue c = o.get("children"); !c.isUndefined()) {
+            node.children = readNodeList(c, o.at("children"));
+        }
+        d.extra = o.finish();
+        return node;
+    }
+
+    template <typename T>
+    void readComponent(ObjectReader& o, const char* key, std::optional<T>& out,
+                       T (ProjectReader::*read)(const QJsonValue&, const std::string&)) {
+        if (const QJsonValue v = o.get(key); !v.isUndefined()) {
+            out = (this->*read)(v, o.at(key));
+        }
+    }
+
+    Transform readTransform(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        Transform t;
+        o.optional("translate", t.translate, readVec<3>);
+        o.optional("rotate", t.rotate, readVec<3>);
+        o.optional("scale", t.scale, readVec<3>);
+        for (int i = 0; i < 3; ++i) {
+            if (t.scale[i] == 0.0) {
+                fail(o.at("scale"), "components must be non-zero (a zero scale flattens the node)");
+            }
+        }
+        t.extra = o.finish();
+        return t;
+    }
+
+    std::string readPath(const QJsonValue& v, const std::string& path) {
+        const std::string s = readString(v, path);
+        if (s.empty()) {
+            fail(path, "expected a file path, got an empty string");
+        }
+        return QDir::cleanPath(m_baseDir.absoluteFilePath(QString::fromStdString(s))).toStdString();
+    }
+
+    MeshComponent readMesh(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        const QJsonValue builtin = o.get("builtin");
+        const QJsonValue file = o.get("file");
+        const QJsonValue tessellation = o.get("tessellation");
+        MeshComponent m;
+        if (!builtin.isUndefined() && !file.isUndefined()) {
+            fail(path, "has both \"builtin\" and \"file\" (expected one of them)");
+        }
+        if (!builtin.isUndefined()) {
+            m = MeshComponent::fromBuiltin(readEnum<BuiltinMesh>(builtin, o.at("builtin"), "builtin mesh",
+                                                                 builtinMeshFromString,
+                                                                 "teapot, sphere, box or plane"));
+            if (!tessellation.isUndefined()) {
+                m.tessellation = readInt(tessellation, o.at("tessellation"));
+                requireRange(m.tessellation, 1, 64, o.at("tessellation"));
+            }
+        } else if (!file.isUndefined()) {
+            m = MeshComponent::fromFile(readPath(file, o.at("file")));
+            if (!tessellation.isUndefined()) {
+                fail(o.at("tessellation"), "only built-in meshes have a tessellation");
+            }
+        } else {
+            fail(path, "expected \"builtin\" or \"file\"");
+        }
+        m.extra = o.finish();
+        return m;
+    }
+
+    MaterialComponent readMaterial(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        MaterialComponent m;
+        o.optional("color", m.color, readColor);
+        o.optional("ambient", m.ambient, readNumber);
+        requireNonNegative(m.ambient, o.at("ambient"));
+        o.optional("diffuse", m.diffuse, readNumber);
+        requireNonNegative(m.diffuse, o.at("diffuse"));
+        o.optional("specular", m.specular, readNumber);
+        requireNonNegative(m.specular, o.at("specular"));
+        o.optional("shininess", m.shininess, readNumber);
+        requireRange(m.shininess, 0.0, 10000.0, o.at("shininess"));
+        o.optional("emission", m.emission, readColor);
+        if (const QJsonValue t = o.get("texture"); !t.isUndefined()) {
+            m.texture = readPath(t, o.at("texture"));
+        }
+        m.extra = o.finish();
+        return m;
+    }
+
+    ShadowComponent readShadows(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        ShadowComponent s;
+        o.optional("mapSize", s.mapSize, readInt);
+        // Shadow maps are square power-of-two textures; 16384 is the GL_MAX_TEXTURE_SIZE of large GPUs.
+        if (s.mapSize < 16 || s.mapSize > 16384 || (s.mapSize & (s.mapSize - 1)) != 0) {
+            fail(o.at("mapSize"), "must be a power of two in 16..16384, got " + std::to_string(s.mapSize));
+        }
+        o.optional("pcf", s.pcf, readInt);
+        // An odd kernel is centred on the looked-up texel.
+        if (s.pcf < 1 || s.pcf > 15 || s.pcf % 2 == 0) {
+            fail(o.at("pcf"), "must be an odd kernel width in 1..15, got " + std::to_string(s.pcf));
+        }
+        s.extra = o.finish();
+        return s;
+    }
+
+    LightComponent readLight(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        LightComponent l;
+        o.optional("type", l.type, [](const QJsonValue& t, const std::string& p) {
+            return readEnum<LightType>(t, p, "light type", lightTypeFromString, "point, directional or spot");
+        });
+        o.optional("color", l.color, readColor);
+        o.optional("intensity", l.intensity, readNumber);
+        requireNonNegative(l.intensity, o.at("intensity"));
+        o.optional("spotAngle", l.spotAngle, readNumber);
+        if (!(l.spotAngle > 0.0 && l.spotAngle <= 90.0)) {
+            fail(o.at("spotAngle"), "must be in (0, 90] degrees, got " + num(l.spotAngle));
+        }
+        o.optional("spotBlend", l.spotBlend, readNumber);
+        requireRange(l.spotBlend, 0.0, 1.0, o.at("spotBlend"));
+        if (const QJsonValue s = o.get("shadows"); !s.isUndefined()) {
+            l.shadows = readShadows(s, o.at("shadows"));
+        }
+        l.extra = o.finish();
+        return l;
+    }
+
+    MirrorComponent readMirror(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        MirrorComponent m;
+        o.optional("size", m.size, readVec<2>);
+        if (!(m.size.x > 0.0 && m.size.y > 0.0)) {
+            fail(o.at("size"), "extents must be greater than 0");
+        }
+        o.optional("reflectivity", m.reflectivity, readNumber);
+        requireRange(m.reflectivity, 0.0, 1.0, o.at("reflectivity"));
+        o.optional("technique", m.technique, [](const QJsonValue& t, const std::string& p) {
+            return readEnum<MirrorTechnique>(t, p, "mirror technique", mirrorTechniqueFromString,
+                                             "stencil or texture");
+        });
+        m.extra = o.finish();
+        return m;
+    }
+
+    ReflectorComponent readReflector(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        ReflectorComponent r;
+        o.optional("map", r.map, [](const QJsonValue& t, const std::string& p) {
+            return readEnum<ReflectorMap>(t, p, "reflector map", reflectorMapFromString,
+                                          "cube, dual-paraboloid or tennis-ball");
+        });
+        o.optional("resolution", r.resolution, readInt);
+        requireRange(r.resolution, 8, 8192, o.at("resolution"));
+        o.optional("reflectivity", r.reflectivity, readNumber);
+        requireRange(r.reflectivity, 0.0, 1.0, o.at("reflectivity"));
+        r.extra = o.finish();
+        return r;
+    }
+
+    AnimationComponent readAnimation(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        AnimationComponent a;
+        if (const QJsonValue b = o.get("bounce"); !b.isUndefined()) {
+            ObjectReader bo(b, o.at("bounce"), m_warnings);
+            BounceAnimation bounce;
+            bo.optional("height", bounce.height, readNumber);
+            bo.optional("period", bounce.period, readNumber);
+            requirePositive(bounce.period, bo.at("period"));
+            bounce.extra = bo.finish();
+            a.bounce = bounce;
+        }
+        if (const QJsonValue r = o.get("orbit"); !r.isUndefined()) {
+            ObjectReader ro(r, o.at("orbit"), m_warnings);
+            OrbitAnimation orbit;
+            ro.optional("center", orbit.center, readVec<3>);
+            ro.optional("radius", orbit.radius, readNumber);
+            requireNonNegative(orbit.radius, ro.at("radius"));
+            ro.optional("period", orbit.period, readNumber);
+            requirePositive(orbit.period, ro.at("period"));
+            orbit.extra = ro.finish();
+            a.orbit = orbit;
+        }
+        a.extra = o.finish();
+        return a;
+    }
+
+    QDir m_baseDir;
+    std::vector<std::string>& m_warnings;
+    std::string m_firstReflector; // path of the node holding the scene's reflector, once seen
+};
+
+std::string syntaxError(const QByteArray& json, const QJsonParseError& error) {
+    // QJsonParseError gives a byte offset; people count lines and characters.
+    const qsizetype offset = std::clamp<qsizetype>(error.offset, 0, json.size());
+    int line = 1;
+    qsizetype lineStart = 0;
+    for (qsizetype i = 0; i < offset; ++i) {
+        if (json[i] == '\n') {
+            ++line;
+            lineStart = i + 1;
+        }
+    }
+    const int column =
+        static_cast<int>(QString::fromUtf8(json.mid(lineStart, offset - lineStart)).size()) + 1;
+    return "line " + std::to_string(line) + ", column " + std::to_string(column) +
+           ": JSON syntax error: " + error.errorString().toStdString();
+}
+
+} // namespace
+
+render::Result<SceneData> parseProject(const QByteArray& json, const QDir& baseDir,
+                                       std::vector<std::string>& warnings) {
+    QByteArray bytes = json;
+    if (bytes.startsWith("\xEF\xBB\xBF")) {
+        bytes.remove(0, 3); // a UTF-8 byte order mark some editors add
+    }
+    if (bytes.trimmed().isEmpty()) {
+        return render::Error{"the file is empty"};
+    }
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        return render::Error{syntaxError(bytes, parseError)};
+    }
+    if (!document.isObject()) {
+        return render::Error{"expected a JSON object at the top level"};
+    }
+    std::vector<std::string> newWarnings;
+    try {
+        ProjectReader reader(baseDir, newWarnings);
+        SceneData scene = reader.readScene(document.object());
+        warnings.insert(warnings.end(), newWarnings.begin(), newWarnings.end());
+        return scene;
+    } catch (const ParseFailure& failure) {
+        return render::Error{failure.message};
+    }
+}
+
+render::Result<SceneData> loadProject(const QString& path, std::vector<std::string>& warnings) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return render::Error{"cannot open " + path.toStdString() + ": " + file.errorString().toStdString()};
+    }
+    const QByteArray bytes = file.readAll();
+    if (file.error() != QFileDevice::NoError) {
+        return render::Error{"cannot read " + path.toStdString() + ": " + file.errorString().toStdString()};
+    }
+    return parseProject(bytes, QFileInfo(path).absoluteDir(), warnings);
+}
+
+render::Status openProject(Scene& scene, const QString& path, std::vector<std::string>& warnings) {
+    render::Result<SceneData> data = loadProject(path, warnings);
+    if (!data) {
+        return render::Error{data.error()};
+    }
+    scene.reset(std::move(data).value());
+    scene.setProjectPath(QFileInfo(path).absoluteFilePath());
+    return render::Done{};
+}
+
+} // namespace speculum::document

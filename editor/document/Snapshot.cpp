@@ -1,0 +1,190 @@
+#include "editor/document/Snapshot.hpp"
+
+#include "editor/document/NodeMath.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace speculum::document {
+
+render::Settings toRender(const SceneSettings& settings) {
+    return render::Settings{settings.background, settings.mirrorDepth, settings.ambient};
+}
+
+render::Camera toRender(const CameraData& camera) {
+    return render::Camera{camera.position, camera.target, camera.up, camera.fovY, camera.near, camera.far};
+}
+
+render::Material toRender(const MaterialComponent& material) {
+    render::Material m;
+    m.color = material.color;
+    m.ambient = material.ambient;
+    m.diffuse = material.diffuse;
+    m.specular = material.specular;
+    m.shininess = material.shininess;
+    m.emission = material.emission;
+    m.texturePath = material.texture; // already absolute in the model
+    return m;
+}
+
+namespace {
+
+render::LightType toRender(LightType type) {
+    switch (type) {
+    case LightType::Point:
+        return render::LightType::Point;
+    case LightType::Directional:
+        return render::LightType::Directional;
+    case LightType::Spot:
+        return render::LightType::Spot;
+    }
+    return render::LightType::Point;
+}
+
+render::ReflectorMap toRender(ReflectorMap map) {
+    switch (map) {
+    case ReflectorMap::Cube:
+        return render::ReflectorMap::Cube;
+    case ReflectorMap::DualParaboloid:
+        return render::ReflectorMap::DualParaboloid;
+    case ReflectorMap::TennisBall:
+        return render::ReflectorMap::TennisBall;
+    }
+    return render::ReflectorMap::Cube;
+}
+
+class SnapshotBuilder {
+public:
+    SnapshotBuilder(const Scene& scene, double time, MeshLibrary& meshes, std::vector<std::string>& warnings)
+        : m_projectDir(QFileInfo(scene.projectPath()).absoluteDir())
+        , m_hasProject(!scene.projectPath().isEmpty())
+        , m_time(time)
+        , m_meshes(meshes)
+        , m_warnings(warnings) {}
+
+    void visit(const Node& node, const glm::dmat4& parentWorld, render::FrameInput& frame) {
+        const NodeData& d = node.data();
+        const glm::dmat4 world = parentWorld * animatedLocalMatrix(d, m_time);
+        render::Material material = d.material ? toRender(*d.material) : render::Material{};
+        material.texturePath = absolute(material.texturePath);
+
+        render::MeshHandle mesh;
+        if (d.mesh) {
+            MeshComponent source = *d.mesh;
+            source.file = absolute(source.file);
+            render::Result<render::MeshHandle> loaded = m_meshes.get(source, m_warnings);
+            if (loaded) {
+                mesh = *loaded;
+            } else {
+                warn(d, "mesh skipped: " + loaded.error());
+            }
+        }
+
+        if (d.reflector) {
+            addReflector(d, world, mesh, material, frame);
+        } else if (mesh) {
+            frame.items.push_back(render::DrawItem{d.name, world, mesh, material, true});
+        }
+        if (d.light) {
+            frame.lights.push_back(light(d, world));
+        }
+        if (d.mirror) {
+            render::Mirror mirror;
+            mirror.name = d.name;
+            mirror.world = world;
+            mirror.size = d.mirror->size;
+            mirror.reflectivity = d.mirror->reflectivity;
+            mirror.technique = d.mirror->technique == MirrorTechnique::Texture
+                                   ? render::MirrorTechnique::Texture
+                                   : render::MirrorTechnique::Stencil;
+            mirror.hasMaterial = d.material.has_value();
+            mirror.material = material;
+            frame.mirrors.push_back(std::move(mirror));
+        }
+        for (const auto& child : node.children()) {
+            visit(*child, world, frame);
+        }
+    }
+
+private:
+    // The model holds absolute paths (the reader resolves them); a relative one set by code is taken relative
+    // to the project file, as in the file format.
+    std::string absolute(const std::string& path) const {
+        if (path.empty() || !m_hasProject || !QDir::isRelativePath(QString::fromStdString(path))) {
+            return path;
+        }
+        return QDir::cleanPath(m_projectDir.absoluteFilePath(QString::fromStdString(path))).toStdString();
+    }
+
+    void warn(const NodeData& d, const std::string& what) {
+        m_warnings.push_back("node \"" + d.name + "\": " + what);
+    }
+
+    void addReflector(const NodeData& d, const glm::dmat4& world, const render::MeshHandle& mesh,
+                      const render::Material& material, render::FrameInput& frame) {
+        if (frame.reflector) {
+            warn(d, "reflector skipped: the scene already has one (\"" + frame.reflector->name + "\")");
+            return;
+        }
+        if (!mesh) {
+            warn(d, "reflector skipped: it needs a mesh on the same node");
+            return;
+        }
+        render::Reflector r;
+        r.name = d.name;
+        r.world = world;
+        r.mesh = mesh;
+        r.material = material;
+        r.map = toRender(d.reflector->map);
+        r.resolution = d.reflector->resolution;
+        r.reflectivity = d.reflector->reflectivity;
+        frame.reflector = std::move(r);
+    }
+
+    static render::Light light(const NodeData& d, const glm::dmat4& world) {
+        const LightComponent& l = *d.light;
+        render::Light out;
+        out.name = d.name;
+        out.type = toRender(l.type);
+        out.position = glm::dvec3(world[3]);
+        // Directions transform with the linear part; normalise away any scale. A degenerate matrix keeps −Y.
+        const glm::dvec3 down = glm::dvec3(world * glm::dvec4(0.0, -1.0, 0.0, 0.0));
+        const double length = glm::length(down);
+        out.direction = length > 0.0 && std::isfinite(length) ? down / length : glm::dvec3(0.0, -1.0, 0.0);
+        out.color = l.color;
+        out.intensity = l.intensity;
+        out.spotAngle = l.spotAngle;
+        out.spotBlend = l.spotBlend;
+        if (l.shadows) {
+            out.shadows.enabled = true;
+            out.shadows.mapSize = l.shadows->mapSize;
+            out.shadows.pcf = l.shadows->pcf;
+        }
+        return out;
+    }
+
+    QDir m_projectDir;
+    bool m_hasProject;
+    double m_time;
+    MeshLibrary& m_meshes;
+    std::vector<std::string>& m_warnings;
+};
+
+} // namespace
+
+render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary& meshes,
+                            std::vector<std::string>& warnings) {
+    render::FrameInput frame;
+    frame.settings = toRender(scene.settings());
+    frame.camera = toRender(scene.camera());
+    frame.time = timeSeconds;
+    SnapshotBuilder builder(scene, timeSeconds, meshes, warnings);
+    for (const auto& node : scene.topLevelNodes()) {
+        builder.visit(*node, glm::dmat4(1.0), frame);
+    }
+    return frame;
+}
+
+} // namespace speculum::document

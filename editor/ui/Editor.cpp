@@ -1,0 +1,66 @@
+#include "editor/ui/Editor.hpp"
+
+#include "editor/ui/AnimationClock.hpp"
+#include "editor/ui/MainWindow.hpp"
+#include "editor/ui/Screenshot.hpp"
+
+#include <QApplication>
+#include <QMessageBox>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+namespace speculum::ui {
+
+void installDefaultSurfaceFormat() {
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8); // mirror recursion masks
+    QSurfaceFormat::setDefaultFormat(format);
+}
+
+int runEditor(int& argc, char** argv, const std::string& projectPath) {
+    // Both must precede the QApplication: the format is read when the first context is made, and shared
+    // contexts let the viewport survive being re-parented (docking) without losing its GL objects.
+    installDefaultSurfaceFormat();
+    QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("speculum"));
+    QApplication::setApplicationName(QStringLiteral("speculum"));
+    QApplication::setApplicationVersion(QStringLiteral(SPECULUM_VERSION));
+
+    const ScreenshotRequest screenshot = screenshotRequestFromEnvironment();
+
+    MainWindow window;
+    QString openError;
+    if (!projectPath.empty()) {
+        render::Status status = window.openProjectFile(QString::fromStdString(projectPath));
+        if (!status) {
+            openError = QString::fromStdString(status.error());
+        }
+    }
+
+    if (screenshot.enabled) {
+        if (!openError.isEmpty()) {
+            qCritical("speculum: %s", qPrintable(openError));
+            return 1;
+        }
+        return takeScreenshot(window, screenshot);
+    }
+
+    window.clock().setPlaying(true); // a live view; Space pauses
+    window.show();
+    if (!openError.isEmpty()) {
+        // After the window is up, so the box has a parent on screen; the empty document stays open.
+        QTimer::singleShot(0, &window, [&window, openError, projectPath] {
+            QMessageBox::critical(
+                &window, QObject::tr("Open Project"),
+                QObject::tr("Could not open %1:\n\n%2").arg(QString::fromStdString(projectPath), openError));
+        });
+    }
+    return app.exec();
+}
+
+} // namespace speculum::ui

@@ -1,0 +1,74 @@
+#include "editor/ui/Screenshot.hpp"
+
+#include "editor/ui/AnimationClock.hpp"
+#include "editor/ui/MainWindow.hpp"
+#include "editor/ui/Viewport.hpp"
+
+#include <QApplication>
+#include <QEventLoop>
+#include <QPixmap>
+#include <QRegularExpression>
+#include <QTimer>
+
+namespace speculum::ui {
+
+ScreenshotRequest screenshotRequestFromEnvironment() {
+    ScreenshotRequest request;
+    request.outputPath = qEnvironmentVariable("SPECULUM_SCREENSHOT");
+    request.enabled = !request.outputPath.isEmpty();
+    bool ok = false;
+    const double time = qEnvironmentVariable("SPECULUM_SCREENSHOT_TIME").toDouble(&ok);
+    if (ok) {
+        request.time = time;
+    }
+    static const QRegularExpression sizePattern(QStringLiteral("^(\\d+)x(\\d+)$"));
+    const auto match = sizePattern.match(qEnvironmentVariable("SPECULUM_SCREENSHOT_SIZE"));
+    if (match.hasMatch()) {
+        request.size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    }
+    return request;
+}
+
+int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
+    window.clock().setPlaying(false);
+    window.clock().setTime(request.time);
+    window.resize(request.size);
+    window.show();
+
+    QEventLoop loop;
+    QString failure;
+    auto finishWithFailure = [&](const QString& why) {
+        failure = why;
+        loop.quit();
+    };
+    QObject::connect(&window.viewport(), &Viewport::rendererFailed, &loop,
+                     [&](const QString& message) { finishWithFailure(message); });
+    QObject::connect(&window.viewport(), &Viewport::frameRendered, &loop, [&] {
+        if (window.viewport().framesRendered() < request.frames) {
+            // Paused, the viewport draws only on demand; ask for the next frame.
+            window.viewport().update();
+            return;
+        }
+        // Grab outside paintGL, from the event loop.
+        QTimer::singleShot(0, &loop, &QEventLoop::quit);
+    });
+    QTimer::singleShot(request.timeoutMs, &loop, [&] {
+        finishWithFailure(
+            QStringLiteral("the viewport did not draw within %1 s").arg(request.timeoutMs / 1000));
+    });
+    loop.exec();
+
+    if (!failure.isEmpty()) {
+        qCritical("speculum: screenshot failed: %s", qPrintable(failure));
+        return 1;
+    }
+    const QPixmap picture = window.grab();
+    if (picture.isNull() || !picture.save(request.outputPath)) {
+        qCritical("speculum: could not write %s", qPrintable(request.outputPath));
+        return 1;
+    }
+    qInfo("speculum: wrote %s (%dx%d)", qPrintable(request.outputPath), picture.width(), picture.height());
+    return 0;
+}
+
+} // namespace speculum::ui

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <QSize>
+#include <QString>
+
+namespace speculum::ui {
+
+class MainWindow;
+
+// A picture of the editor window for documentation and for checking the editor on machines without a
+// desktop (scripts/screenshot-editor runs it under Xvfb).
+struct ScreenshotRequest {
+    bool enabled = false;
+    QString outputPath;     // SPECULUM_SCREENSHOT
+    double time = 0.0;      // SPECULUM_SCREENSHOT_TIME: animation frozen at this time
+    QSize size{1280, 800};  // SPECULUM_SCREENSHOT_SIZE=WxH
+    int frames = 3;         // frames the viewport draws before the grab
+    int timeoutMs = 120000; // give up (exit 1) if the viewport has not drawn by then
+};
+
+ScreenshotRequest screenshotRequestFromEnvironment();
+
+// Shows the window, runs the event loop until the viewport has drawn `frames` frames, saves the whole
+// window to the output path and returns 0; returns 1 (with a message on stderr) when the viewport cannot
+// draw, the timeout passes or the image cannot be written. Needs a running QApplication.
+int takeScreenshot(MainWindow& window, const ScreenshotRequest& request);
+
+} // namespace speculum::ui

@@ -1,0 +1,104 @@
+#pragma once
+
+#include "render/mesh/MeshData.hpp"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace speculum::render {
+
+// A snapshot of everything one frame needs, in plain structs. Transforms are double precision world
+// matrices; the renderer makes them camera-relative before converting to float.
+
+struct Settings {
+    glm::dvec3 background{0.1, 0.1, 0.12};
+    int mirrorDepth = 3;
+    double ambient = 0.2;
+};
+
+struct Camera {
+    glm::dvec3 position{0.0, 0.0, 1.0};
+    glm::dvec3 target{0.0, 0.0, -3.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fovY = 65.0; // degrees, vertical
+    double near = 0.1;
+    double far = 10.0;
+};
+
+struct Material {
+    glm::dvec3 color{0.8, 0.8, 0.8};
+    double ambient = 1.0;
+    double diffuse = 1.0;
+    double specular = 0.0;
+    double shininess = 32.0;
+    glm::dvec3 emission{0.0, 0.0, 0.0};
+    std::string texturePath; // absolute path, empty for none
+};
+
+struct DrawItem {
+    std::string name;
+    glm::dmat4 world{1.0};
+    MeshHandle mesh;
+    Material material;
+    bool castsShadows = true;
+};
+
+enum class LightType { Point, Directional, Spot };
+
+struct ShadowSettings {
+    bool enabled = false;
+    int mapSize = 1024;
+    int pcf = 1; // kernel width in texels; 1 = hard shadows
+};
+
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    glm::dvec3 position{0.0};
+    glm::dvec3 direction{0.0, -1.0, 0.0}; // unit; directional and spot lights
+    glm::dvec3 color{1.0};
+    double intensity = 1.0;
+    double spotAngle = 30.0; // outer half angle, degrees
+    double spotBlend = 0.15; // fraction of the cone over which the edge fades
+    ShadowSettings shadows;
+};
+
+enum class MirrorTechnique { Stencil, Texture };
+
+struct Mirror {
+    std::string name;
+    glm::dmat4 world{1.0};
+    glm::dvec2 size{1.0, 1.0}; // local X and Z extents of the rectangle
+    double reflectivity = 1.0;
+    MirrorTechnique technique = MirrorTechnique::Stencil;
+    Material material;
+    bool hasMaterial = false;
+};
+
+enum class ReflectorMap { Cube, DualParaboloid, TennisBall };
+
+struct Reflector {
+    std::string name;
+    glm::dmat4 world{1.0};
+    MeshHandle mesh;
+    Material material;
+    ReflectorMap map = ReflectorMap::Cube;
+    int resolution = 256;
+    double reflectivity = 1.0;
+};
+
+struct FrameInput {
+    Settings settings;
+    Camera camera;
+    std::vector<DrawItem> items;
+    std::vector<Light> lights;
+    std::vector<Mirror> mirrors;
+    std::optional<Reflector> reflector;
+    double time = 0.0; // seconds, the time animations were evaluated at
+};
+
+} // namespace speculum::render

@@ -1,0 +1,56 @@
+#pragma once
+
+#include "render/FrameInput.hpp"
+#include "render/Result.hpp"
+#include "render/plan/FramePlan.hpp"
+
+#include <glm/vec2.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace speculum::render {
+
+// Where a frame ends up: a framebuffer of the caller's (the editor widget's default framebuffer
+// object, or an offscreen FBO). Never framebuffer 0 unless the caller owns a window surface.
+struct RenderTarget {
+    unsigned framebuffer = 0;
+    int width = 0;
+    int height = 0;
+    bool encodeSrgb = true; // 8-bit targets get sRGB-encoded colour; float targets keep linear values
+};
+
+struct RenderOptions {
+    glm::dvec2 jitterPixels{0.0}; // sub-pixel image offset, for supersampling
+    bool gpuTimings = true;       // timer queries per pass (waits for the GPU at the end of the frame)
+};
+
+struct FrameReport {
+    FramePlan plan;                    // the passes that ran, with their timings, and the skips with reasons
+    double cpuMs = 0.0;                // whole frame on the CPU, planning included
+    double gpuMs = -1.0;               // sum of the passes' GPU times, -1 if not measured
+    std::vector<std::string> warnings; // e.g. a texture that failed to load
+};
+
+// Draws FrameInput snapshots with OpenGL 3.3 core. Needs a current context for its whole life, from
+// create() to destruction (or releaseGlResources() when the context is going away first).
+class Renderer {
+public:
+    static Result<std::unique_ptr<Renderer>> create();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    FrameReport render(const FrameInput& input, const RenderTarget& target,
+                       const RenderOptions& options = {});
+
+    // Frees every GL object now, while the context is still current. The renderer is unusable after.
+    void releaseGlResources();
+
+private:
+    Renderer();
+    struct State;
+    std::unique_ptr<State> m_state;
+};
+
+} // namespace speculum::render

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "render/gl/Objects.hpp"
+#include "render/mesh/MeshData.hpp"
+
+#include <unordered_map>
+
+namespace speculum::render::gl {
+
+struct GpuMesh {
+    VertexArray vao;
+    Buffer vertices;
+    Buffer indices;
+    GLsizei indexCount = 0;
+
+    void draw() const;
+};
+
+// Uploads each MeshData once and keeps it while the mesh is alive; the shared pointer's address is the
+// key, and a weak pointer tells when the CPU mesh is gone so its buffers can be freed.
+class MeshCache {
+public:
+    const GpuMesh& get(const MeshHandle& mesh);
+    // Frees the GPU copies of meshes nobody holds any more.
+    void purge();
+    std::size_t size() const { return m_entries.size(); }
+
+private:
+    struct Entry {
+        std::weak_ptr<const MeshData> owner;
+        GpuMesh gpu;
+    };
+    std::unordered_map<const MeshData*, Entry> m_entries;
+};
+
+} // namespace speculum::render::gl

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "render/Result.hpp"
+#include "render/image/Image.hpp"
+
+#include <string>
+
+namespace speculum::render {
+
+// Writes a linear frame to PNG, JPEG, TIFF or OpenEXR, chosen by the extension (case-insensitive).
+// PNG/JPEG/TIFF get 8-bit sRGB-encoded values (clamped to 0..1, rounded, alpha straight; JPEG drops
+// alpha). EXR gets linear half floats with alpha premultiplied, as the OpenEXR convention expects.
+// Metadata attributes are stored as strings (PNG tEXt, EXR header, TIFF/JPEG tags); TIFF and JPEG cannot
+// hold custom keys, so "speculum:*" entries are appended to their ImageDescription as "key=value" lines.
+// "Software" defaults to "speculum <version>".
+//
+// Atomic: the file is written to a temporary sibling and renamed over `path` only once complete, so a
+// failure never leaves a partial file and never touches an existing one.
+Status writeImage(const std::string& path, const Image& linear, const ImageMetadata& metadata = {});
+
+// Writes 8-bit sRGB-encoded RGBA bytes as they are (no second encoding) to PNG, JPEG or TIFF; EXR
+// gets the decoded linear values. Same atomicity and errors as above.
+Status writeImage(const std::string& path, const TextureImage& srgb, const ImageMetadata& metadata = {});
+
+// True when `path` ends in an extension writeImage() supports, so callers can reject a bad output name
+// before doing any expensive work.
+bool isSupportedImagePath(const std::string& path);
+
+// The supported extensions for messages: ".png, .jpg, .jpeg, .tif, .tiff, .exr".
+std::string supportedImageFormats();
+
+} // namespace speculum::render

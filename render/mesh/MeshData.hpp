@@ -1,0 +1,34 @@
+#pragma once
+
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace speculum::render {
+
+// CPU-side triangle mesh: what the GL layer uploads and the reference tracer intersects.
+// Counter-clockwise triangles seen from outside; normals unit length; uvs optional (empty or one per vertex).
+struct MeshData {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint32_t> indices; // three per triangle
+
+    std::size_t vertexCount() const { return positions.size(); }
+    std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// Meshes are shared and immutable once built: the pointer is their identity for GPU caches.
+using MeshHandle = std::shared_ptr<const MeshData>;
+
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+};
+
+Bounds computeBounds(const MeshData& mesh);
+
+} // namespace speculum::render

@@ -1,0 +1,188 @@
+#include "render/mesh/MeshRepair.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+namespace speculum::render {
+namespace {
+
+bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool isFinite(const glm::vec2& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
+// Twice the triangle area, in double so that large coordinates don't cancel to zero.
+glm::dvec3 areaVector(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::dvec3 da(a);
+    return glm::cross(glm::dvec3(b) - da, glm::dvec3(c) - da);
+}
+
+// A triangle is degenerate when its area is negligible next to its longest edge: a needle or a collapsed
+// triangle has no defined normal and only produces rasterisation and intersection noise.
+bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const double twiceArea = glm::length(areaVector(a, b, c));
+    const glm::dvec3 da(a), db(b), dc(c);
+    const double longest = std::max({glm::length(db - da), glm::length(dc - db), glm::length(da - dc)});
+    return !(twiceArea > 1e-12 * longest * longest) || longest == 0.0;
+}
+
+void appendCount(std::ostringstream& out, bool& first, std::size_t count, const char* what) {
+    if (count == 0) {
+        return;
+    }
+    out << (first ? "" : "; ") << what << ' ' << count;
+    first = false;
+}
+
+} // namespace
+
+bool RepairReport::clean() const {
+    return droppedTrailingIndices == 0 && droppedTriangles() == 0 && removedUnusedVertices == 0 &&
+           regeneratedNormals == 0 && renormalizedNormals == 0 && fixedUvs == 0 && !droppedUvs;
+}
+
+std::string RepairReport::summary() const {
+    if (clean()) {
+        return "no repairs needed";
+    }
+    std::ostringstream out;
+    bool first = true;
+    appendCount(out, first, droppedOutOfRange, "dropped triangles with out-of-range indices:");
+    appendCount(out, first, droppedNonFinite, "dropped triangles with non-finite positions:");
+    appendCount(out, first, droppedDegenerate, "dropped degenerate triangles:");
+    appendCount(out, first, droppedTrailingIndices, "dropped trailing indices:");
+    appendCount(out, first, removedUnusedVertices, "removed unused vertices:");
+    appendCount(out, first, regeneratedNormals, "regenerated normals:");
+    appendCount(out, first, renormalizedNormals, "renormalised normals:");
+    appendCount(out, first, fixedUvs, "reset non-finite uvs:");
+    if (droppedUvs) {
+        out << (first ? "" : "; ") << "dropped uvs (count did not match the vertices)";
+    }
+    return out.str();
+}
+
+Result<MeshData> repairMesh(MeshData mesh, RepairReport& report, std::size_t maxTriangles) {
+    report = RepairReport{};
+    if (mesh.indices.size() / 3 > maxTriangles || mesh.positions.size() / 3 > maxTriangles) {
+        std::ostringstream out;
+        out << "mesh too large (" << mesh.indices.size() / 3 << " triangles, " << mesh.positions.size()
+            << " vertices; the limit is " << maxTriangles << " triangles)";
+        return Error{out.str()};
+    }
+    if (mesh.positions.size() > std::numeric_limits<std::uint32_t>::max()) {
+        return Error{"mesh too large (vertex count does not fit 32-bit indices)"};
+    }
+
+    const std::size_t vertexCount = mesh.positions.size();
+    report.droppedTrailingIndices = mesh.indices.size() % 3;
+    mesh.indices.resize(mesh.indices.size() - report.droppedTrailingIndices);
+
+    // 1. Keep the triangles that make sense.
+    std::vector<std::uint32_t> kept;
+    kept.reserve(mesh.indices.size());
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+        const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
+        if (i0 >= vertexCount || i1 >= vertexCount || i2 >= vertexCount) {
+            ++report.droppedOutOfRange;
+            continue;
+        }
+        const glm::vec3 &a = mesh.positions[i0], &b = mesh.positions[i1], &c = mesh.positions[i2];
+        if (!isFinite(a) || !isFinite(b) || !isFinite(c)) {
+            ++report.droppedNonFinite;
+            continue;
+        }
+        if (i0 == i1 || i1 == i2 || i2 == i0 || isDegenerate(a, b, c)) {
+            ++report.droppedDegenerate;
+            continue;
+        }
+        kept.insert(kept.end(), {i0, i1, i2});
+    }
+    if (kept.empty()) {
+        std::ostringstream out;
+        out << "no usable triangles";
+        if (report.droppedTriangles() > 0) {
+            out << " (" << report.droppedTriangles() << " dropped: " << report.summary() << ")";
+        }
+        return Error{out.str()};
+    }
+
+    // 2. Compact the vertices to those still referenced (this also removes non-finite positions, which
+    // would otherwise poison bounds and the tracer's acceleration structure).
+    const bool hasNormals = mesh.normals.size() == vertexCount;
+    const bool hasUvs = mesh.uvs.size() == vertexCount;
+    report.droppedUvs = !mesh.uvs.empty() && !hasUvs;
+    constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> remap(vertexCount, kUnused);
+    MeshData out;
+    for (std::uint32_t& index : kept) {
+        std::uint32_t& target = remap[index];
+        if (target == kUnused) {
+            target = static_cast<std::uint32_t>(out.positions.size());
+            out.positions.push_back(mesh.positions[index]);
+            out.normals.push_back(hasNormals ? mesh.normals[index] : glm::vec3(0.0f));
+            if (hasUvs) {
+                glm::vec2 uv = mesh.uvs[index];
+                if (!isFinite(uv)) {
+                    uv = glm::vec2(0.0f);
+                    ++report.fixedUvs;
+                }
+                out.uvs.push_back(uv);
+            }
+        }
+        index = target;
+    }
+    report.removedUnusedVertices = vertexCount - out.positions.size();
+    out.indices = std::move(kept);
+    mesh = MeshData{}; // release the input before the normal pass allocates
+
+    // 3. Normals: keep the good ones, rebuild the rest from the area-weighted face normals around them.
+    std::vector<bool> rebuild(out.positions.size(), false);
+    bool anyRebuild = false;
+    for (std::size_t v = 0; v < out.normals.size(); ++v) {
+        const glm::vec3 n = out.normals[v];
+        const float length = glm::length(n);
+        if (!isFinite(n) || !std::isfinite(length) || length < 1e-20f) {
+            rebuild[v] = true;
+            anyRebuild = true;
+        } else if (std::abs(length - 1.0f) > 1e-4f) {
+            out.normals[v] = n / length;
+            ++report.renormalizedNormals;
+        } else {
+            out.normals[v] = n / length; // tidy the last bits too, silently
+        }
+    }
+    if (anyRebuild) {
+        std::vector<glm::dvec3> sums(out.positions.size(), glm::dvec3(0.0));
+        std::vector<glm::dvec3> fallback(out.positions.size(), glm::dvec3(0.0));
+        for (std::size_t t = 0; t < out.indices.size(); t += 3) {
+            const std::uint32_t i[3] = {out.indices[t], out.indices[t + 1], out.indices[t + 2]};
+            // The cross product's length is twice the area: summing it weights each face by its area.
+            const glm::dvec3 face = areaVector(out.positions[i[0]], out.positions[i[1]], out.positions[i[2]]);
+            for (std::uint32_t v : i) {
+                sums[v] += face;
+                if (fallback[v] == glm::dvec3(0.0)) {
+                    fallback[v] = face;
+                }
+            }
+        }
+        for (std::size_t v = 0; v < out.normals.size(); ++v) {
+            if (!rebuild[v]) {
+                continue;
+            }
+            // Faces around a vertex can cancel (a paper-thin fin); then any one face is better than none.
+            const glm::dvec3 sum =
+                glm::length(sums[v]) > 1e-12 * glm::length(fallback[v]) ? sums[v] : fallback[v];
+            out.normals[v] = glm::vec3(glm::normalize(sum));
+            ++report.regeneratedNormals;
+        }
+    }
+    return out;
+}
+
+} // namespace speculum::render

@@ -1,0 +1,126 @@
+#include "render/passes/MainPass.hpp"
+
+#include "render/math/Projection.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <string>
+
+namespace speculum::render::passes {
+
+namespace {
+
+std::string indexed(const char* name, int i) {
+    return std::string(name) + "[" + std::to_string(i) + "]";
+}
+
+void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, const MainPassContext& ctx) {
+    const gl::Program& p = ctx.program;
+    const int count = std::min<int>(static_cast<int>(input.lights.size()), kMaxLights);
+    p.set("uLightCount", count);
+    for (int i = 0; i < count; ++i) {
+        const Light& light = input.lights[static_cast<std::size_t>(i)];
+        const int type = light.type == LightType::Point ? 0 : light.type == LightType::Directional ? 1 : 2;
+        p.set(indexed("uLightType", i), type);
+        p.set(indexed("uLightPosition", i), glm::vec3(toCameraRelative * glm::dvec4(light.position, 1.0)));
+        const glm::dvec3 dir =
+            glm::length(light.direction) > 0 ? glm::normalize(light.direction) : glm::dvec3(0, -1, 0);
+        p.set(indexed("uLightDirection", i), glm::vec3(dir));
+        p.set(indexed("uLightRadiance", i), glm::vec3(light.color * light.intensity));
+        const double outer = glm::radians(std::clamp(light.spotAngle, 0.1, 179.0));
+        const double inner = outer * (1.0 - std::clamp(light.spotBlend, 0.0, 1.0));
+        p.set(indexed("uLightSpotCos", i), glm::vec2(std::cos(outer), std::cos(inner)));
+        p.set(indexed("uLightShadowSlot", i), -1);
+    }
+
+    // Every sampler gets a texture of its own type, used or not, so no unit is left incomplete.
+    for (int slot = 0; slot < kMaxShadowedLights; ++slot) {
+        glActiveTexture(GL_TEXTURE0 + kShadow2DUnit + slot);
+        glBindTexture(GL_TEXTURE_2D, ctx.dummyShadow2D);
+        glActiveTexture(GL_TEXTURE0 + kShadowCubeUnit + slot);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, ctx.dummyShadowCube);
+        p.set("uShadowMap" + std::to_string(slot), kShadow2DUnit + slot);
+        p.set("uShadowCube" + std::to_string(slot), kShadowCubeUnit + slot);
+        p.set(indexed("uShadowIsCube", slot), 0);
+    }
+    const glm::dmat4 fromCameraRelative = glm::inverse(toCameraRelative);
+    for (int slot = 0; slot < static_cast<int>(ctx.shadowedLights.size()); ++slot) {
+        const int lightIndex = ctx.shadowedLights[static_cast<std::size_t>(slot)];
+        const ShadowMap* map = ctx.shadows.find(lightIndex);
+        if (!map || lightIndex >= count)
+            continue;
+        p.set(indexed("uLightShadowSlot", lightIndex), slot);
+        if (map->cube) {
+            glActiveTexture(GL_TEXTURE0 + kShadowCubeUnit + slot);
+            glBindTexture(GL_TEXTURE_CUBE_MAP, map->depth.id());
+        } else {
+            glActiveTexture(GL_TEXTURE0 + kShadow2DUnit + slot);
+            glBindTexture(GL_TEXTURE_2D, map->depth.id());
+        }
+        p.set(indexed("uShadowIsCube", slot), map->cube ? 1 : 0);
+        p.set(indexed("uShadowPerspective", slot), map->frustum.perspective ? 1 : 0);
+        // World → light clip composed with camera-relative → world, in double, then rounded once.
+        p.set(indexed("uShadowMatrix", slot), glm::mat4(map->frustum.viewProjection[0] * fromCameraRelative));
+        p.set(indexed("uShadowNearFar", slot), glm::vec2(map->frustum.near, map->frustum.far));
+        p.set(indexed("uShadowTexelSize", slot), float(map->frustum.texelSize));
+        p.set(indexed("uShadowMapSize", slot), map->size);
+        p.set(indexed("uShadowPcf", slot), map->pcf);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void setMaterial(const Material& m, const MainPassContext& ctx) {
+    const gl::Program& p = ctx.program;
+    p.set("uColor", glm::vec3(m.color));
+    p.set("uAmbient", float(m.ambient));
+    p.set("uDiffuse", float(m.diffuse));
+    p.set("uSpecular", float(m.specular));
+    p.set("uShininess", float(std::max(m.shininess, 1e-3)));
+    p.set("uEmission", glm::vec3(m.emission));
+    p.set("uHasTexture", m.texturePath.empty() ? 0 : 1);
+    if (!m.texturePath.empty()) {
+        glActiveTexture(GL_TEXTURE0 + kMaterialTextureUnit);
+        glBindTexture(GL_TEXTURE_2D, ctx.textures.get(m.texturePath));
+    }
+}
+
+void drawMesh(const MeshHandle& mesh, const glm::dmat4& world, const glm::dmat4& toCameraRelative,
+              const MainPassContext& ctx) {
+    const glm::dmat4 model = toCameraRelative * world;
+    ctx.program.set("uModel", glm::mat4(model));
+    ctx.program.set("uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(model))));
+    ctx.meshes.get(mesh).draw();
+}
+
+} // namespace
+
+void drawMainPass(const FrameInput& input, const glm::dmat4& viewProjection, const MainPassContext& ctx) {
+    const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
+    ctx.program.use();
+    ctx.program.set("uViewProjection", glm::mat4(viewProjection));
+    ctx.program.set("uSceneAmbient", float(input.settings.ambient));
+    ctx.program.set("uTexture", kMaterialTextureUnit);
+    setLights(input, toCameraRelative, ctx);
+
+    for (const DrawItem& item : input.items) {
+        if (!item.mesh)
+            continue;
+        setMaterial(item.material, ctx);
+        drawMesh(item.mesh, item.world, toCameraRelative, ctx);
+    }
+    for (const Mirror& mirror : input.mirrors) {
+        setMaterial(mirror.material, ctx);
+        const glm::dmat4 rect =
+            glm::scale(glm::dmat4(1.0), glm::dvec3(mirror.size.x * 0.5, 1.0, mirror.size.y * 0.5));
+        drawMesh(ctx.unitPlane, mirror.world * rect, toCameraRelative, ctx);
+    }
+    if (input.reflector && input.reflector->mesh) {
+        setMaterial(input.reflector->material, ctx);
+        drawMesh(input.reflector->mesh, input.reflector->world, toCameraRelative, ctx);
+    }
+}
+
+} // namespace speculum::render::passes

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "render/FrameInput.hpp"
+#include "render/gl/GpuMesh.hpp"
+#include "render/gl/Objects.hpp"
+#include "render/gl/Program.hpp"
+#include "render/math/ShadowFrustum.hpp"
+
+#include <unordered_map>
+
+namespace speculum::render::passes {
+
+// One light's depth map: a 2D texture (spot, directional) or a cube map (point), with hardware depth
+// comparison enabled so the main pass filters it with sampler2DShadow / samplerCubeShadow.
+struct ShadowMap {
+    bool cube = false;
+    int size = 0;
+    int pcf = 1;
+    gl::Texture depth;
+    gl::Framebuffer framebuffer;
+    math::ShadowFrustum frustum;
+};
+
+class ShadowMaps {
+public:
+    // Renders the depth map of input.lights[lightIndex] from every shadow caster.
+    void render(const FrameInput& input, int lightIndex, gl::MeshCache& meshes, const gl::Program& program);
+    // The map of a light rendered this frame or earlier, or nullptr.
+    const ShadowMap* find(int lightIndex) const;
+    // The light's map settings may change without re-rendering (PCF is a lookup setting).
+    void setPcf(int lightIndex, int pcf);
+    void clear() { m_maps.clear(); }
+
+private:
+    ShadowMap& prepare(int lightIndex, bool cube, int size);
+    std::unordered_map<int, ShadowMap> m_maps;
+};
+
+} // namespace speculum::render::passes

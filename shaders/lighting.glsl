@@ -1,0 +1,131 @@
+// Blinn-Phong with point, directional and spot lights, and shadow maps filtered by percentage-closer
+// filtering. Positions are camera-relative world coordinates.
+#define MAX_LIGHTS 8
+#define LIGHT_POINT 0
+#define LIGHT_DIRECTIONAL 1
+#define LIGHT_SPOT 2
+
+uniform int uLightCount;
+uniform int uLightType[MAX_LIGHTS];
+uniform vec3 uLightPosition[MAX_LIGHTS];  // camera-relative
+uniform vec3 uLightDirection[MAX_LIGHTS]; // unit, the way the light shines
+uniform vec3 uLightRadiance[MAX_LIGHTS];  // colour × intensity
+uniform vec2 uLightSpotCos[MAX_LIGHTS];   // cos(outer), cos(inner)
+uniform int uLightShadowSlot[MAX_LIGHTS]; // -1: no shadow map
+
+// Four shadow slots. GLSL 3.30 only indexes sampler arrays with constant expressions, so each slot
+// has its own sampler and lookups branch on the slot number.
+uniform sampler2DShadow uShadowMap0;
+uniform sampler2DShadow uShadowMap1;
+uniform sampler2DShadow uShadowMap2;
+uniform sampler2DShadow uShadowMap3;
+uniform samplerCubeShadow uShadowCube0;
+uniform samplerCubeShadow uShadowCube1;
+uniform samplerCubeShadow uShadowCube2;
+uniform samplerCubeShadow uShadowCube3;
+uniform mat4 uShadowMatrix[4];      // camera-relative world → light clip space (2D maps)
+uniform int uShadowIsCube[4];
+uniform int uShadowPerspective[4];
+uniform vec2 uShadowNearFar[4];
+uniform float uShadowTexelSize[4];  // world texel size (at unit distance for perspective maps)
+uniform int uShadowMapSize[4];
+uniform int uShadowPcf[4];          // kernel width in texels, 1 = a single hard tap
+
+// Normal offset in texels: pushes the lookup point off the surface, so slopes don't shadow themselves.
+const float kNormalOffsetTexels = 1.5;
+
+float sampleShadow2D(int slot, vec3 coord) {
+    if (slot == 0) return texture(uShadowMap0, coord);
+    if (slot == 1) return texture(uShadowMap1, coord);
+    if (slot == 2) return texture(uShadowMap2, coord);
+    return texture(uShadowMap3, coord);
+}
+
+float sampleShadowCube(int slot, vec3 dir, float depth) {
+    if (slot == 0) return texture(uShadowCube0, vec4(dir, depth));
+    if (slot == 1) return texture(uShadowCube1, vec4(dir, depth));
+    if (slot == 2) return texture(uShadowCube2, vec4(dir, depth));
+    return texture(uShadowCube3, vec4(dir, depth));
+}
+
+// Window depth a cube face stores for a point at `dir` from the light: the face's perspective depth
+// of the major axis, so the hardware comparison works on a cube map.
+float cubeDepth(vec3 dir, vec2 nearFar) {
+    float major = max(abs(dir.x), max(abs(dir.y), abs(dir.z)));
+    float n = nearFar.x, f = nearFar.y;
+    float ndc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * major);
+    return ndc * 0.5 + 0.5;
+}
+
+float shadowVisibility(int slot, vec3 position, vec3 normal, vec3 lightPosition) {
+    int kernel = max(uShadowPcf[slot], 1);
+    float halfKernel = float(kernel - 1) * 0.5;
+    vec3 toLight = lightPosition - position;
+    float distanceToLight = length(toLight);
+    float texel = uShadowTexelSize[slot] * (uShadowPerspective[slot] != 0 ? distanceToLight : 1.0);
+    // Two offsets keep a surface from shadowing itself: along the normal by a texel and a half, and
+    // towards the light in proportion to the slope, because a wide PCF kernel on a surface at a grazing
+    // angle to the light compares against depths of the same surface several texels away.
+    float cosTheta = clamp(dot(normal, toLight / max(distanceToLight, 1e-6)), 0.05, 1.0);
+    float tanTheta = sqrt(1.0 - cosTheta * cosTheta) / cosTheta;
+    vec3 p = position + normal * (kNormalOffsetTexels * texel) +
+             (toLight / max(distanceToLight, 1e-6)) * (texel * (halfKernel + 1.0) * min(tanTheta, 8.0));
+    float sum = 0.0;
+    if (uShadowIsCube[slot] != 0) {
+        vec3 dir = p - lightPosition;
+        // Offsets in the plane perpendicular to the lookup direction, one texel of the face apart.
+        vec3 axis = abs(dir.y) < 0.99 * length(dir) ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+        vec3 u = normalize(cross(dir, axis));
+        vec3 v = cross(normalize(dir), u);
+        float step = length(dir) * 2.0 / float(uShadowMapSize[slot]);
+        for (int j = 0; j < kernel; ++j)
+            for (int i = 0; i < kernel; ++i) {
+                vec3 d = dir + (u * (float(i) - halfKernel) + v * (float(j) - halfKernel)) * step;
+                // Each tap's own reference depth: near a cube edge a tap may land on the neighbouring
+                // face, whose depth is measured along another axis.
+                sum += sampleShadowCube(slot, d, cubeDepth(d, uShadowNearFar[slot]));
+            }
+    } else {
+        vec4 clip = uShadowMatrix[slot] * vec4(p, 1.0);
+        vec3 coord = clip.xyz / clip.w * 0.5 + 0.5;
+        // Beyond the far plane nothing was drawn into the map; the cone (spot) or the fitted box
+        // (directional) decide the lighting there.
+        if (coord.z > 1.0) return 1.0;
+        vec2 texelUv = vec2(1.0 / float(uShadowMapSize[slot]));
+        for (int j = 0; j < kernel; ++j)
+            for (int i = 0; i < kernel; ++i)
+                sum += sampleShadow2D(slot, vec3(coord.xy + vec2(float(i) - halfKernel, float(j) - halfKernel) * texelUv, coord.z));
+    }
+    return sum / float(kernel * kernel);
+}
+
+struct SurfaceLight {
+    vec3 diffuse;
+    vec3 specular;
+};
+
+SurfaceLight shadeLights(vec3 position, vec3 normal, vec3 viewDir, float shininess) {
+    SurfaceLight result = SurfaceLight(vec3(0.0), vec3(0.0));
+    for (int i = 0; i < uLightCount; ++i) {
+        vec3 toLight;
+        float cone = 1.0;
+        if (uLightType[i] == LIGHT_DIRECTIONAL) {
+            toLight = -uLightDirection[i];
+        } else {
+            toLight = normalize(uLightPosition[i] - position);
+            if (uLightType[i] == LIGHT_SPOT)
+                cone = smoothstep(uLightSpotCos[i].x, uLightSpotCos[i].y, dot(-toLight, uLightDirection[i]));
+        }
+        float nDotL = dot(normal, toLight);
+        if (nDotL <= 0.0 || cone <= 0.0)
+            continue;
+        float visibility = cone;
+        int slot = uLightShadowSlot[i];
+        if (slot >= 0)
+            visibility *= shadowVisibility(slot, position, normal, uLightPosition[i]);
+        vec3 halfway = normalize(toLight + viewDir);
+        result.diffuse += uLightRadiance[i] * nDotL * visibility;
+        result.specular += uLightRadiance[i] * pow(max(dot(normal, halfway), 0.0), shininess) * visibility;
+    }
+    return result;
+}

@@ -1,0 +1,21 @@
+// Main pass: positions are camera-relative world coordinates (camera at the origin), so large world
+// coordinates never reach the GPU in single precision.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+
+uniform mat4 uModel;        // object → camera-relative world
+uniform mat3 uNormalMatrix; // inverse transpose of uModel's upper 3×3
+uniform mat4 uViewProjection;
+
+out vec3 vWorld;
+out vec3 vNormal;
+out vec2 vUv;
+
+void main() {
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    vWorld = world.xyz;
+    vNormal = uNormalMatrix * aNormal;
+    vUv = aUv;
+    gl_Position = uViewProjection * world;
+}

@@ -1,0 +1,2 @@
+// Depth only: the rasterizer writes the depth the comparison sampler reads.
+void main() {}

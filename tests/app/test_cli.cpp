@@ -1,0 +1,153 @@
+// The speculum command line as a user runs it: exit status, the one-line error, the files it writes.
+#include <OpenImageIO/imageio.h>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+CliRun speculum(const std::string& arguments) {
+    const fs::path errFile =
+        fs::temp_directory_path() / ("speculum-cli-" + std::to_string(::getpid()) + ".err");
+    const std::string command = std::string(SPECULUM_BINARY) + " " + arguments + " 2>" + errFile.string();
+    CliRun run;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+        run.out.append(buffer.data(), n);
+    const int raw = ::pclose(pipe);
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(errFile);
+    run.err.assign(std::istreambuf_iterator<char>(in), {});
+    fs::remove(errFile);
+    return run;
+}
+
+std::string demo() {
+    return std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/teapot.speculum.json";
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_dir = fs::path(SPECULUM_TEST_DATA_DIR) /
+                ("cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    fs::path m_dir;
+};
+
+TEST_F(Cli, RenderWritesThePngAtTheRequestedSizeWithMetadata) {
+    const fs::path out = m_dir / "teapot.png";
+    const CliRun run = speculum("render " + demo() + " -o " + out.string() + " --size 320x180");
+    ASSERT_EQ(run.status, 0) << run.err;
+    auto input = OIIO::ImageInput::open(out.string());
+    ASSERT_TRUE(input);
+    const OIIO::ImageSpec& spec = input->spec();
+    EXPECT_EQ(spec.width, 320);
+    EXPECT_EQ(spec.height, 180);
+    EXPECT_EQ(spec.nchannels, 4);
+    EXPECT_NE(spec.get_string_attribute("Software").find("speculum"), std::string::npos);
+    EXPECT_NE(spec.get_string_attribute("ImageDescription").find("teapot.speculum.json"), std::string::npos);
+    EXPECT_NE(run.out.find("teapot.png"), std::string::npos) << "prints the path it wrote";
+}
+
+TEST_F(Cli, RenderWritesEveryFormatByExtension) {
+    for (const char* ext : {"jpg", "tif", "exr"}) {
+        const fs::path out = m_dir / (std::string("still.") + ext);
+        const CliRun run =
+            speculum("render " + demo() + " -o " + out.string() + " --size 64x36 --ssaa 2 --time 0.5");
+        ASSERT_EQ(run.status, 0) << ext << ": " << run.err;
+        auto input = OIIO::ImageInput::open(out.string());
+        ASSERT_TRUE(input) << ext;
+        EXPECT_EQ(input->spec().width, 64);
+        EXPECT_NE(run.err.find("rendering"), std::string::npos) << "supersampled renders report progress";
+    }
+}
+
+TEST_F(Cli, BadInputFailsWithOneLineAndWritesNothing) {
+    const fs::path out = m_dir / "out.png";
+    const fs::path broken = m_dir / "broken.speculum.json";
+    std::ofstream(broken)
+        << R"({"format": "speculum-scene", "version": 1, "nodes": [{"name": "A", "mesh": {"builtin": "dodecahedron"}}]})";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"render /no/such/scene.json -o " + out.string(), "no such file"},
+        {"render " + broken.string() + " -o " + out.string(), "nodes[0].mesh"},
+        {"render " + demo() + " -o " + (m_dir / "out.bmpx").string(), "unsupported image format"},
+        {"render " + demo() + " -o /no/such/folder/out.png", "does not exist"},
+        {"render " + demo() + " -o " + out.string() + " --size 0x10", "--size"},
+        {"render " + demo() + " -o " + out.string() + " --size big", "--size"},
+        {"render " + demo() + " -o " + out.string() + " --ssaa 99", "--ssaa"},
+        {"render " + demo() + " -o " + out.string() + " --time -1", "--time"},
+        {"render " + demo(), "-o"},
+        {"explain", "PROJECT"},
+        {"render " + demo() + " -o " + out.string() + " --frobnicate", "--frobnicate"},
+    };
+    for (const auto& [args, expected] : cases) {
+        const CliRun run = speculum(args);
+        EXPECT_NE(run.status, 0) << args;
+        EXPECT_NE(run.err.find(expected), std::string::npos) << args << " → " << run.err;
+        EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << args << " → " << run.err;
+        EXPECT_FALSE(fs::exists(out)) << args;
+    }
+}
+
+TEST_F(Cli, FailedRenderLeavesAnExistingFileIntact) {
+    const fs::path out = m_dir / "keep.png";
+    std::ofstream(out) << "precious";
+    const CliRun run = speculum("render /no/such/scene.json -o " + out.string());
+    EXPECT_NE(run.status, 0);
+    std::ifstream in(out);
+    std::string content((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_EQ(content, "precious");
+    EXPECT_EQ(std::distance(fs::directory_iterator(m_dir), fs::directory_iterator{}), 1)
+        << "no temp files left";
+}
+
+TEST_F(Cli, ExplainJsonListsShadowAndMainPassesWithReasons) {
+    const CliRun run = speculum("explain " + demo() + " --size 320x180 --json");
+    ASSERT_EQ(run.status, 0) << run.err;
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(run.out), &error);
+    ASSERT_EQ(error.error, QJsonParseError::NoError) << run.out;
+    const QJsonArray passes = doc.object()["passes"].toArray();
+    bool shadow = false, main = false;
+    for (const auto& value : passes) {
+        const QJsonObject p = value.toObject();
+        EXPECT_FALSE(p["reason"].toString().isEmpty());
+        EXPECT_TRUE(p.contains("gpuMs"));
+        EXPECT_TRUE(p.contains("cpuMs"));
+        EXPECT_TRUE(p.contains("target"));
+        shadow |= p["kind"].toString() == "shadow" && p["target"].toString() == "Light";
+        main |= p["kind"].toString() == "main";
+    }
+    EXPECT_TRUE(shadow) << run.out;
+    EXPECT_TRUE(main) << run.out;
+    EXPECT_TRUE(doc.object()["skipped"].isArray());
+}
+
+TEST_F(Cli, ExplainTextIsReadable) {
+    const CliRun run = speculum("explain " + demo() + " --size 160x90");
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.out.find("shadow"), std::string::npos);
+    EXPECT_NE(run.out.find("main"), std::string::npos);
+}
+
+} // namespace

@@ -1,0 +1,251 @@
+#include "editor/document/Commands.hpp"
+
+#include <QUndoStack>
+#include <gtest/gtest.h>
+
+namespace speculum::document {
+namespace {
+
+NodeTree named(const std::string& name, std::vector<NodeTree> children = {}) {
+    NodeTree node;
+    node.data.name = name;
+    node.children = std::move(children);
+    return node;
+}
+
+// Scene: A, B (with children B1, B2), C.
+class CommandsTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        SceneData data;
+        data.nodes = {named("A"), named("B", {named("B1"), named("B2")}), named("C")};
+        scene.reset(data);
+        original = scene.toData();
+        QObject::connect(&scene, &Scene::changed, [this] { ++changes; });
+    }
+
+    NodeId idOf(const std::string& name) const {
+        NodeId found = kNoNode;
+        scene.forEachNode([&](const Node& node) {
+            if (node.name() == name) {
+                found = node.id();
+            }
+        });
+        return found;
+    }
+
+    std::vector<std::string> topLevelNames() const {
+        std::vector<std::string> names;
+        for (const auto& node : scene.topLevelNodes()) {
+            names.push_back(node->name());
+        }
+        return names;
+    }
+
+    Scene scene;
+    QUndoStack stack;
+    SceneData original;
+    int changes = 0;
+};
+
+TEST_F(CommandsTest, SetNodeDataUndoesAndRedoes) {
+    const NodeId a = idOf("A");
+    NodeData data = scene.findNode(a)->data();
+    data.transform.translate = {1, 2, 3};
+    data.material = MaterialComponent{};
+    NodeId signalled = kNoNode;
+    QObject::connect(&scene, &Scene::nodeChanged, [&](NodeId id) { signalled = id; });
+    stack.push(new SetNodeDataCommand(scene, a, data));
+    EXPECT_EQ(signalled, a);
+    EXPECT_EQ(scene.findNode(a)->data(), data);
+    stack.undo();
+    EXPECT_EQ(scene.toData(), original);
+    stack.redo();
+    EXPECT_EQ(scene.findNode(a)->data(), data);
+    EXPECT_GT(changes, 0);
+}
+
+TEST_F(CommandsTest, ASliderDragIsOneUndoStep) {
+    const NodeId a = idOf("A");
+    for (int i = 1; i <= 10; ++i) {
+        NodeData data = scene.findNode(a)->data();
+        data.transform.rotate.y = i * 10.0;
+        stack.push(new SetNodeDataCommand(scene, a, data, "Rotate", "transform.rotate#1"));
+    }
+    EXPECT_EQ(stack.count(), 1);
+    EXPECT_EQ(scene.findNode(a)->data().transform.rotate.y, 100.0);
+    stack.undo();
+    EXPECT_EQ(scene.toData(), original);
+    stack.redo();
+    EXPECT_EQ(scene.findNode(a)->data().transform.rotate.y, 100.0);
+
+    // Another key, another node, or no key: separate steps.
+    NodeData data = scene.findNode(a)->data();
+    data.transform.scale.x = 2;
+    stack.push(new SetNodeDataCommand(scene, a, data, "Scale", "transform.scale#2"));
+    NodeData c = scene.findNode(idOf("C"))->data();
+    c.transform.scale.x = 3;
+    stack.push(new SetNodeDataCommand(scene, idOf("C"), c, "Scale", "transform.scale#2"));
+    stack.push(new SetNodeDataCommand(scene, idOf("C"), c));
+    stack.push(new SetNodeDataCommand(scene, idOf("C"), c));
+    EXPECT_EQ(stack.count(), 5);
+    while (stack.canUndo()) {
+        stack.undo();
+    }
+    EXPECT_EQ(scene.toData(), original);
+}
+
+TEST_F(CommandsTest, RenameUndoesAndRedoes) {
+    const NodeId b = idOf("B");
+    stack.push(new RenameNodeCommand(scene, b, "Bee"));
+    EXPECT_EQ(scene.findNode(b)->name(), "Bee");
+    EXPECT_NE(stack.text(0).indexOf("Bee"), -1);
+    stack.undo();
+    EXPECT_EQ(scene.findNode(b)->name(), "B");
+    EXPECT_EQ(scene.toData(), original);
+    stack.redo();
+    EXPECT_EQ(scene.findNode(b)->name(), "Bee");
+}
+
+TEST_F(CommandsTest, AddKeepsItsIdOverUndoRedo) {
+    const NodeId b = idOf("B");
+    std::vector<std::tuple<NodeId, NodeId, int>> added;
+    QObject::connect(&scene, &Scene::nodeAdded,
+                     [&](NodeId id, NodeId parent, int index) { added.emplace_back(id, parent, index); });
+    auto* command = new AddNodeCommand(scene, named("New", {named("New child")}), b, 1);
+    stack.push(command);
+    const NodeId id = command->nodeId();
+    ASSERT_NE(id, kNoNode);
+    ASSERT_EQ(scene.findNode(b)->childCount(), 3);
+    EXPECT_EQ(scene.findNode(b)->child(1)->id(), id);
+    EXPECT_EQ(scene.findNode(id)->child(0)->name(), "New child");
+    ASSERT_EQ(added.size(), 1u);
+    EXPECT_EQ(added[0], std::make_tuple(id, b, 1));
+    const NodeId childId = scene.findNode(id)->child(0)->id();
+
+    stack.undo();
+    EXPECT_EQ(scene.findNode(id), nullptr);
+    EXPECT_EQ(scene.findNode(childId), nullptr);
+    EXPECT_EQ(scene.toData(), original);
+    stack.redo();
+    EXPECT_EQ(scene.findNode(b)->child(1)->id(), id);
+    EXPECT_EQ(scene.findNode(childId)->parent()->id(), id);
+
+    // Appending at the top level.
+    auto* top = new AddNodeCommand(scene, named("Last"));
+    stack.push(top);
+    EXPECT_EQ(topLevelNames(), (std::vector<std::string>{"A", "B", "C", "Last"}));
+}
+
+TEST_F(CommandsTest, RemoveRestoresTheSameNodesAtTheSamePlace) {
+    const NodeId b = idOf("B");
+    const NodeId b2 = idOf("B2");
+    int aboutToRemove = 0;
+    auto connection =
+        QObject::connect(&scene, &Scene::nodeAboutToBeRemoved, [&](NodeId id, NodeId parent, int index) {
+            ++aboutToRemove;
+            EXPECT_EQ(id, b);
+            EXPECT_EQ(parent, kNoNode);
+            EXPECT_EQ(index, 1);
+            EXPECT_NE(scene.findNode(id), nullptr) << "still there when views are told it is about to go";
+        });
+    stack.push(new RemoveNodeCommand(scene, b));
+    QObject::disconnect(connection);
+    EXPECT_EQ(aboutToRemove, 1);
+    EXPECT_EQ(topLevelNames(), (std::vector<std::string>{"A", "C"}));
+    EXPECT_EQ(scene.findNode(b2), nullptr);
+    stack.undo();
+    EXPECT_EQ(scene.toData(), original);
+    EXPECT_EQ(scene.indexOf(b), 1);
+    EXPECT_EQ(scene.findNode(b2)->parent()->id(), b);
+
+    // A later command that refers to a removed-then-restored child still works.
+    stack.push(new RemoveNodeCommand(scene, b2));
+    stack.push(new RemoveNodeCommand(scene, b));
+    stack.undo();
+    stack.undo();
+    EXPECT_EQ(scene.toData(), original);
+    stack.redo();
+    stack.redo();
+    EXPECT_EQ(topLevelNames(), (std::vector<std::string>{"A", "C"}));
+    stack.undo();
+    EXPECT_EQ(scene.findNode(b)->childCount(), 1);
+    EXPECT_EQ(scene.findNode(b)->child(0)->name(), "B1");
+}
+
+TEST_F(CommandsTest, MoveReparentsAndUndoes) {
+    const NodeId c = idOf("C");
+    const NodeId b = idOf("B");
+    stack.push(new MoveNodeCommand(scene, c, b, 0));
+    EXPECT_EQ(scene.parentOf(c), b);
+    EXPECT_EQ(scene.indexOf(c), 0);
+    EXPECT_EQ(topLevelNames(), (std::vector<std::string>{"A", "B"}));
+    EXPECT_TRUE(scene.isAncestor(b, c));
+    stack.undo();
+    EXPECT_EQ(scene.toData(), original);
+    EXPECT_EQ(scene.parentOf(c), kNoNode);
+    stack.redo();
+    EXPECT_EQ(scene.findNode(b)->child(0)->id(), c);
+}
+
+TEST_F(CommandsTest, SettingsAndCameraUndoAndMerge) {
+    int settingsSignals = 0;
+    int cameraSignals = 0;
+    QObject::connect(&scene, &Scene::settingsChanged, [&] { ++settingsSignals; });
+    QObject::connect(&scene, &Scene::cameraChanged, [&] { ++cameraSignals; });
+
+    SceneSettings settings = scene.settings();
+    for (double ambient : {0.3, 0.4, 0.5}) {
+        settings.ambient = ambient;
+        stack.push(new SetSettingsCommand(scene, settings, true));
+    }
+    EXPECT_EQ(stack.count(), 1);
+    EXPECT_EQ(scene.settings().ambient, 0.5);
+    settings.mirrorDepth = 7;
+    stack.push(new SetSettingsCommand(scene, settings));
+    EXPECT_EQ(stack.count(), 2);
+
+    CameraData camera = scene.camera();
+    for (double x : {1.0, 2.0}) {
+        camera.position.x = x;
+        stack.push(new SetCameraCommand(scene, camera, true));
+    }
+    EXPECT_EQ(stack.count(), 3);
+    EXPECT_EQ(scene.camera().position.x, 2.0);
+    camera.fovY = 30;
+    stack.push(new SetCameraCommand(scene, camera));
+    EXPECT_EQ(stack.count(), 4);
+    EXPECT_GE(settingsSignals, 4);
+    EXPECT_GE(cameraSignals, 3);
+
+    stack.undo();
+    EXPECT_EQ(scene.camera().fovY, 65.0);
+    stack.undo();
+    EXPECT_EQ(scene.camera(), original.camera);
+    stack.undo();
+    EXPECT_EQ(scene.settings().mirrorDepth, original.settings.mirrorDepth);
+    EXPECT_EQ(scene.settings().ambient, 0.5);
+    stack.undo();
+    EXPECT_EQ(scene.toData(), original);
+    while (stack.canRedo()) {
+        stack.redo();
+    }
+    EXPECT_EQ(scene.settings().mirrorDepth, 7);
+    EXPECT_EQ(scene.camera().fovY, 30.0);
+}
+
+TEST_F(CommandsTest, ResetGivesFreshIdsAndSignals) {
+    std::vector<NodeId> before;
+    scene.forEachNode([&](const Node& node) { before.push_back(node.id()); });
+    int resets = 0;
+    QObject::connect(&scene, &Scene::sceneReset, [&] { ++resets; });
+    scene.reset(original);
+    EXPECT_EQ(resets, 1);
+    EXPECT_EQ(scene.toData(), original);
+    for (NodeId id : before) {
+        EXPECT_EQ(scene.findNode(id), nullptr) << "ids are never reused";
+    }
+}
+
+} // namespace
+} // namespace speculum::document

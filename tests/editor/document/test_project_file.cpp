@@ -1,0 +1,326 @@
+#include "DocumentTestSupport.hpp"
+#include "editor/document/ProjectFile.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <filesystem>
+
+namespace speculum::document {
+namespace {
+
+using test::demoScenePath;
+using test::freshTestFolder;
+using test::qpath;
+using test::readBytes;
+using test::writeBytes;
+
+// A scene that uses every component and every non-default value the format has.
+SceneData everythingScene(const QDir& folder) {
+    SceneData scene;
+    scene.settings.background = {0.05, 0.2, 0.3};
+    scene.settings.mirrorDepth = 5;
+    scene.settings.ambient = 0.35;
+    scene.camera.position = {1e5 + 0.125, -2.5, 7};
+    scene.camera.target = {1e5, 0, 0};
+    scene.camera.up = {0, 0, 1};
+    scene.camera.fovY = 47.5;
+    scene.camera.near = 0.001;
+    scene.camera.far = 12345.678;
+
+    NodeTree ball;
+    ball.data.name = "Chrome \"ball\" \u00e9\t";
+    ball.data.transform = {{1, -0.5, -3}, {10, 20, 30}, {0.4, 0.4, -0.4}, {}};
+    ball.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere, 48);
+    ball.data.reflector = ReflectorComponent{ReflectorMap::TennisBall, 512, 0.75, {}};
+    ball.data.material = MaterialComponent{{0.1, 0.2, 0.3},
+                                           0.5,
+                                           0.25,
+                                           0.75,
+                                           100,
+                                           {0.01, 0.02, 0.03},
+                                           folder.absoluteFilePath("textures/chrome.png").toStdString(),
+                                           {}};
+
+    NodeTree mirror;
+    mirror.data.name = "Wall mirror";
+    mirror.data.transform.rotate = {90, 0, 0};
+    mirror.data.mirror = MirrorComponent{{3, 1.5}, 0.9, MirrorTechnique::Texture, {}};
+
+    NodeTree spot;
+    spot.data.name = "Spot";
+    spot.data.light =
+        LightComponent{LightType::Spot, {1, 0.9, 0.8}, 2.5, 40, 0.3, ShadowComponent{2048, 7, {}}, {}};
+    spot.data.animation =
+        AnimationComponent{BounceAnimation{0.3, 1.5, {}}, OrbitAnimation{{0, 2, -3}, 1.5, 6, {}}, {}};
+
+    NodeTree sun;
+    sun.data.name = "Sun";
+    sun.data.light = LightComponent{LightType::Directional, {1, 1, 1}, 0.5, 30, 0.15, std::nullopt, {}};
+
+    NodeTree model;
+    model.data.name = "Imported";
+    model.data.mesh = MeshComponent::fromFile(folder.absoluteFilePath("models/bunny.obj").toStdString());
+    model.children = {spot, sun};
+
+    NodeTree group;
+    group.data.name = "Group";
+    group.children = {mirror, model};
+
+    scene.nodes = {ball, group};
+    return scene;
+}
+
+TEST(ProjectFile, DemoSceneLoadsWithoutWarnings) {
+    std::vector<std::string> warnings;
+    auto loaded = loadProject(demoScenePath(), warnings);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_TRUE(warnings.empty());
+    const SceneData& scene = *loaded;
+    ASSERT_EQ(scene.nodes.size(), 3u);
+    EXPECT_EQ(scene.nodes[0].data.name, "Teapot");
+    ASSERT_TRUE(scene.nodes[0].data.mesh && scene.nodes[0].data.mesh->builtin);
+    EXPECT_EQ(*scene.nodes[0].data.mesh->builtin, BuiltinMesh::Teapot);
+    EXPECT_EQ(scene.nodes[0].data.mesh->tessellation, 8);
+    EXPECT_EQ(scene.camera.fovY, 65.0);
+    // The texture path is relative in the file and absolute in the model.
+    ASSERT_TRUE(scene.nodes[1].data.material);
+    const QString texture = QString::fromStdString(scene.nodes[1].data.material->texture);
+    EXPECT_TRUE(QFileInfo(texture).isAbsolute());
+    EXPECT_EQ(texture,
+              QDir::cleanPath(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/textures/marble.png")));
+    ASSERT_TRUE(scene.nodes[2].data.light && scene.nodes[2].data.light->shadows);
+    EXPECT_EQ(scene.nodes[2].data.light->shadows->pcf, 5);
+}
+
+TEST(ProjectFile, DemoSceneSavesTwiceToIdenticalBytes) {
+    const auto folder = freshTestFolder();
+    std::vector<std::string> warnings;
+    auto original = loadProject(demoScenePath(), warnings);
+    ASSERT_TRUE(original.ok()) << original.error();
+
+    const QString first = qpath(folder / "first.speculum.json");
+    const QString second = qpath(folder / "second.speculum.json");
+    ASSERT_TRUE(saveProject(*original, first).ok());
+    auto reloaded = loadProject(first, warnings);
+    ASSERT_TRUE(reloaded.ok()) << reloaded.error();
+    EXPECT_EQ(*reloaded, *original); // the texture resolves to the same file from the other folder
+    ASSERT_TRUE(saveProject(*reloaded, second).ok());
+    EXPECT_EQ(readBytes(first), readBytes(second));
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(ProjectFile, DemoSceneIsWrittenInCanonicalForm) {
+    // Saving the demo next to itself reproduces the committed file byte for byte, so the committed file
+    // shows exactly what speculum writes.
+    std::vector<std::string> warnings;
+    auto scene = loadProject(demoScenePath(), warnings);
+    ASSERT_TRUE(scene.ok()) << scene.error();
+    const QByteArray written = serializeProject(*scene, QFileInfo(demoScenePath()).absoluteDir());
+    EXPECT_EQ(written.toStdString(), readBytes(demoScenePath()).toStdString());
+}
+
+TEST(ProjectFile, EveryComponentRoundTrips) {
+    const auto folder = freshTestFolder();
+    const QDir dir(qpath(folder));
+    const SceneData scene = everythingScene(dir);
+    const QString path = qpath(folder / "all.speculum.json");
+    ASSERT_TRUE(saveProject(scene, path).ok());
+
+    std::vector<std::string> warnings;
+    auto loaded = loadProject(path, warnings);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_EQ(*loaded, scene);
+
+    const QByteArray bytes = readBytes(path);
+    EXPECT_TRUE(bytes.contains("\"texture\": \"textures/chrome.png\"")) << bytes.toStdString();
+    EXPECT_TRUE(bytes.contains("\"file\": \"models/bunny.obj\"")) << bytes.toStdString();
+    EXPECT_TRUE(bytes.contains("\"far\": 12345.678"));
+    EXPECT_TRUE(bytes.contains("\"mapSize\": 2048"));
+    EXPECT_FALSE(bytes.contains(".0,")) << "integers are written without a fraction";
+    EXPECT_EQ(serializeProject(*loaded, dir), bytes);
+}
+
+TEST(ProjectFile, SavingIntoAnotherFolderKeepsPathsPointingAtTheSameFiles) {
+    const auto folder = freshTestFolder();
+    const QDir dir(qpath(folder));
+    const SceneData scene = everythingScene(dir);
+    std::filesystem::create_directories(folder / "sub" / "deeper");
+    const QString path = qpath(folder / "sub" / "deeper" / "moved.speculum.json");
+    ASSERT_TRUE(saveProject(scene, path).ok());
+    EXPECT_TRUE(readBytes(path).contains("\"texture\": \"../../textures/chrome.png\""));
+    std::vector<std::string> warnings;
+    auto loaded = loadProject(path, warnings);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_EQ(*loaded, scene);
+}
+
+TEST(ProjectFile, KeyOrderAndLayoutFollowTheDesign) {
+    const QByteArray bytes = serializeProject(everythingScene(QDir("/tmp")), QDir("/tmp"));
+    const std::string text = bytes.toStdString();
+    auto at = [&](const char* key) { return text.find(std::string("\"") + key + "\""); };
+    EXPECT_EQ(text.rfind("{\n  \"format\": \"speculum-scene\",\n  \"version\": 1,\n  \"settings\": {", 0),
+              0u);
+    EXPECT_LT(at("settings"), at("camera"));
+    EXPECT_LT(at("camera"), at("nodes"));
+    // Within the first node: name, transform, mesh, material, ..., reflector.
+    EXPECT_LT(at("name"), at("transform"));
+    EXPECT_LT(at("transform"), at("mesh"));
+    EXPECT_LT(at("mesh"), at("material"));
+    EXPECT_LT(at("material"), at("reflector"));
+    EXPECT_NE(text.find("\n    {\n      \"name\": "), std::string::npos) << "2-space indentation";
+    EXPECT_NE(text.find("\"translate\": [1, -0.5, -3]"), std::string::npos);
+    EXPECT_EQ(text.back(), '\n');
+}
+
+TEST(ProjectFile, NumbersRoundTripExactly) {
+    const auto folder = freshTestFolder();
+    SceneData scene;
+    NodeTree node;
+    node.data.name = "n";
+    node.data.transform.translate = {0.1, 1.0 / 3.0, -1e-7};
+    node.data.transform.rotate = {123456789.123, 2.5e-300, -0.0};
+    node.data.transform.scale = {1e20, 3e15, -7};
+    scene.nodes.push_back(node);
+    const QString path = qpath(folder / "numbers.speculum.json");
+    ASSERT_TRUE(saveProject(scene, path).ok());
+    std::vector<std::string> warnings;
+    auto loaded = loadProject(path, warnings);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    const Transform& t = loaded->nodes[0].data.transform;
+    EXPECT_EQ(t.translate, node.data.transform.translate);
+    EXPECT_EQ(t.rotate, node.data.transform.rotate);
+    EXPECT_EQ(t.scale, node.data.transform.scale);
+    EXPECT_TRUE(readBytes(path).contains("\"translate\": [0.1, 0.3333333333333333, -1e-07]"));
+}
+
+TEST(ProjectFile, UnknownFieldsWarnWithTheirPathAndSurviveASave) {
+    const QByteArray json = R"({
+  "format": "speculum-scene", "version": 1, "comment": "made by hand",
+  "settings": { "fog": { "density": 0.5 } },
+  "nodes": [
+    { "name": "A", "transfrom": { "translate": [1, 2, 3] },
+      "light": { "type": "point", "shadows": { "bias": 0.002 }, "ies": "lamp.ies" },
+      "physics": { "mass": 2, "tags": ["x", 1, null, true] },
+      "children": [ { "name": "B", "mesh": { "builtin": "box", "lod": [1, 2] } } ] }
+  ]
+})";
+    std::vector<std::string> warnings;
+    auto loaded = parseProject(json, QDir("/tmp"), warnings);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    const std::vector<std::string> expected = {"comment",
+                                               "settings.fog",
+                                               "nodes[0].transfrom",
+                                               "nodes[0].physics",
+                                               "nodes[0].light.ies",
+                                               "nodes[0].light.shadows.bias",
+                                               "nodes[0].children[0].mesh.lod"};
+    for (const std::string& path : expected) {
+        const bool found = std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) {
+            return w.rfind(path + ": unknown field", 0) == 0;
+        });
+        EXPECT_TRUE(found) << "no warning for " << path;
+    }
+    EXPECT_EQ(warnings.size(), expected.size());
+
+    const QByteArray saved = serializeProject(*loaded, QDir("/tmp"));
+    std::vector<std::string> again;
+    auto reloaded = parseProject(saved, QDir("/tmp"), again);
+    ASSERT_TRUE(reloaded.ok()) << reloaded.error();
+    EXPECT_EQ(*reloaded, *loaded);
+    EXPECT_EQ(again.size(), expected.size()) << "unknown fields are written back";
+    EXPECT_EQ(serializeProject(*reloaded, QDir("/tmp")), saved);
+    EXPECT_TRUE(saved.contains("\"tags\": [\n")) << saved.toStdString();
+    EXPECT_TRUE(saved.contains("\"lod\": [1, 2]")) << saved.toStdString();
+}
+
+TEST(ProjectFile, FailedOpenLeavesTheSceneUntouched) {
+    const auto folder = freshTestFolder();
+    Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(openProject(scene, demoScenePath(), warnings).ok());
+    const SceneData before = scene.toData();
+    const QString pathBefore = scene.projectPath();
+    const std::vector<NodeId> idsBefore = {scene.topLevelNodes()[0]->id(), scene.topLevelNodes()[2]->id()};
+    int resets = 0;
+    QObject::connect(&scene, &Scene::aboutToReset, [&] { ++resets; });
+
+    // A file that is valid up to its last node: nothing of it may leak into the scene.
+    QByteArray broken = readBytes(demoScenePath());
+    broken.replace("\"type\": \"point\"", "\"type\": \"lamp\"");
+    const QString brokenPath = qpath(folder / "broken.speculum.json");
+    writeBytes(brokenPath, broken);
+    warnings.clear();
+    auto status = openProject(scene, brokenPath, warnings);
+    ASSERT_FALSE(status.ok());
+    EXPECT_NE(status.error().find("nodes[2].light.type"), std::string::npos) << status.error();
+    auto missing = openProject(scene, qpath(folder / "nope.speculum.json"), warnings);
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().find("nope.speculum.json"), std::string::npos) << missing.error();
+
+    EXPECT_EQ(scene.toData(), before);
+    EXPECT_EQ(scene.projectPath(), pathBefore);
+    EXPECT_EQ(scene.topLevelNodes()[0]->id(), idsBefore[0]);
+    EXPECT_EQ(scene.topLevelNodes()[2]->id(), idsBefore[1]);
+    EXPECT_EQ(resets, 0);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(ProjectFile, SaveIntoAMissingFolderFails) {
+    const auto folder = freshTestFolder();
+    const QString path = qpath(folder / "no" / "such" / "folder" / "x.speculum.json");
+    auto status = saveProject(SceneData{}, path);
+    ASSERT_FALSE(status.ok());
+    EXPECT_NE(status.error().find("x.speculum.json"), std::string::npos) << status.error();
+    EXPECT_FALSE(QFileInfo::exists(path));
+}
+
+TEST(ProjectFile, SaveIntoAReadOnlyFolderFailsAndKeepsTheOldFile) {
+    const auto folder = freshTestFolder() / "locked";
+    std::filesystem::create_directories(folder);
+    const QString path = qpath(folder / "scene.speculum.json");
+    writeBytes(path, "old contents");
+    std::filesystem::permissions(folder,
+                                 std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    const bool permissionsBite = !QFile(qpath(folder / "probe")).open(QIODevice::WriteOnly);
+    if (!permissionsBite) {
+        std::filesystem::remove(folder / "probe");
+        std::filesystem::permissions(folder, std::filesystem::perms::owner_all);
+        GTEST_SKIP() << "running with privileges that ignore folder permissions (root)";
+    }
+    auto status = saveProject(SceneData{}, path);
+    std::filesystem::permissions(folder, std::filesystem::perms::owner_all);
+    ASSERT_FALSE(status.ok());
+    EXPECT_NE(status.error().find("scene.speculum.json"), std::string::npos) << status.error();
+    EXPECT_EQ(readBytes(path), QByteArray("old contents"));
+}
+
+TEST(ProjectFile, AModelTheReaderWouldRejectIsNotSavedAndTheOldFileStays) {
+    const auto folder = freshTestFolder();
+    const QString path = qpath(folder / "scene.speculum.json");
+    ASSERT_TRUE(saveProject(SceneData{}, path).ok());
+    const QByteArray before = readBytes(path);
+    SceneData bad;
+    bad.camera.far = bad.camera.near / 2;
+    auto status = saveProject(bad, path);
+    ASSERT_FALSE(status.ok());
+    EXPECT_NE(status.error().find("camera.far"), std::string::npos) << status.error();
+    EXPECT_EQ(readBytes(path), before);
+    EXPECT_EQ(QDir(qpath(folder)).entryList(QDir::Files).size(), 1) << "no temporary file left behind";
+}
+
+TEST(ProjectFile, OpenSetsTheProjectPathAndFreshIds) {
+    Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(openProject(scene, demoScenePath(), warnings).ok());
+    EXPECT_EQ(scene.projectPath(), QFileInfo(demoScenePath()).absoluteFilePath());
+    std::vector<NodeId> ids;
+    scene.forEachNode([&](const Node& node) { ids.push_back(node.id()); });
+    ASSERT_EQ(ids.size(), 3u);
+    EXPECT_NE(ids[0], ids[1]);
+    EXPECT_NE(ids[1], ids[2]);
+    EXPECT_EQ(scene.findNode(ids[1])->name(), "Table");
+}
+
+} // namespace
+} // namespace speculum::document

@@ -1,0 +1,350 @@
+#include "DocumentTestSupport.hpp"
+#include "editor/document/NodeMath.hpp"
+#include "editor/document/ProjectFile.hpp"
+#include "editor/document/Snapshot.hpp"
+
+#include <QFileInfo>
+#include <cmath>
+#include <filesystem>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <thread>
+
+namespace speculum::document {
+namespace {
+
+using test::freshTestFolder;
+using test::qpath;
+
+constexpr double kTolerance = 1e-12;
+
+glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
+
+void expectNear(const glm::dvec3& actual, const glm::dvec3& expected, double tolerance = kTolerance) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+NodeTree boxNode(const std::string& name, const Transform& transform) {
+    NodeTree node;
+    node.data.name = name;
+    node.data.transform = transform;
+    node.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Box);
+    return node;
+}
+
+render::FrameInput snap(const SceneData& data, double time, MeshLibrary& meshes,
+                        std::vector<std::string>& warnings) {
+    Scene scene;
+    scene.reset(data);
+    return snapshot(scene, time, meshes, warnings);
+}
+
+TEST(Snapshot, EulerAnglesApplyXThenYThenZ) {
+    // +Y turned 90° about X is +Z; then 90° about Y is +X. The other order would give +Z.
+    expectNear(apply(rotationMatrix({90, 90, 0}), {0, 1, 0}), {1, 0, 0});
+    // +X turned about Y (90°) is −Z; then about Z nothing changes for −Z.
+    expectNear(apply(rotationMatrix({0, 90, 90}), {1, 0, 0}), {0, 0, -1});
+    // X then Z: +Y → +Z (X) → +Z (Z).
+    expectNear(apply(rotationMatrix({90, 0, 90}), {0, 1, 0}), {0, 0, 1});
+}
+
+TEST(Snapshot, LocalMatrixIsTranslateRotateScale) {
+    // (1,0,0) scaled by 2 on X → (2,0,0), turned 90° about Z → (0,2,0), moved by (10,0,0).
+    SceneData data;
+    data.nodes.push_back(boxNode("n", {{10, 0, 0}, {0, 0, 90}, {2, 1, 1}, {}}));
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    ASSERT_EQ(frame.items.size(), 1u);
+    expectNear(apply(frame.items[0].world, {1, 0, 0}), {10, 2, 0});
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(Snapshot, ChildWorldIsParentWorldTimesLocal) {
+    SceneData data;
+    NodeTree parent = boxNode("parent", {{0, 5, 0}, {0, 90, 0}, {2, 2, 2}, {}});
+    NodeTree child = boxNode("child", {{1, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}});
+    child.children.push_back(boxNode("grandchild", {{0, 0, 1}, {0, 0, 0}, {0.5, 0.5, 0.5}, {}}));
+    parent.children.push_back(child);
+    data.nodes.push_back(parent);
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    ASSERT_EQ(frame.items.size(), 3u);
+    EXPECT_EQ(frame.items[1].name, "child");
+    // Child origin: (1,0,0) scaled by 2 → (2,0,0), turned 90° about Y → (0,0,-2), up 5.
+    expectNear(apply(frame.items[1].world, {0, 0, 0}), {0, 5, -2});
+    // Grandchild origin: child-space (0,0,1) → parent-space (1,0,1) → (2,0,2) → Y90: (2,0,-2) → (2,5,-2).
+    expectNear(apply(frame.items[2].world, {0, 0, 0}), {2, 5, -2});
+    // A unit along the grandchild's X is 2 · 0.5 = 1 long in the world, pointing along world −Z.
+    expectNear(apply(frame.items[2].world, {1, 0, 0}) - apply(frame.items[2].world, {0, 0, 0}), {0, 0, -1});
+}
+
+TEST(Snapshot, WorldMatricesKeepDoublePrecisionFarFromTheOrigin) {
+    SceneData data;
+    NodeTree far = boxNode("far", {{1e8, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}});
+    far.children.push_back(boxNode("near it", {{0.125 + 1e-6, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}}));
+    data.nodes.push_back(far);
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    ASSERT_EQ(frame.items.size(), 2u);
+    EXPECT_NEAR(frame.items[1].world[3].x - 1e8, 0.125 + 1e-6,
+                1e-8); // a float matrix would be off by up to 4
+}
+
+TEST(Snapshot, BounceFollowsItsDefinition) {
+    SceneData data;
+    NodeTree node = boxNode("hopper", {{0, -1, -3}, {0, 0, 0}, {1, 1, 1}, {}});
+    node.data.animation = AnimationComponent{BounceAnimation{1.0, 2.0, {}}, std::nullopt, {}};
+    data.nodes.push_back(node);
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    auto yAt = [&](double t) { return snap(data, t, meshes, warnings).items.at(0).world[3].y; };
+    EXPECT_NEAR(yAt(0.0), -1.0, kTolerance);
+    EXPECT_NEAR(yAt(1.0), 0.0, kTolerance);                                   // top of the hop at period/2
+    EXPECT_NEAR(yAt(0.5), -1.0 + std::sin(std::numbers::pi / 4), kTolerance); // height·|sin(πt/T)|
+    EXPECT_NEAR(yAt(2.0), -1.0, kTolerance);
+    EXPECT_NEAR(yAt(2.5), yAt(0.5), kTolerance); // |sin| keeps it above its rest position
+    EXPECT_EQ(snap(data, 0.75, meshes, warnings).time, 0.75);
+}
+
+TEST(Snapshot, OrbitFollowsItsDefinitionInTheParentsSpace) {
+    SceneData data;
+    NodeTree parent;
+    parent.data.name = "pivot";
+    parent.data.transform.translate = {100, 0, 0};
+    NodeTree light;
+    light.data.name = "Light";
+    light.data.transform.translate = {0, 2, -2}; // replaced by the orbit
+    light.data.light = LightComponent{};
+    light.data.animation = AnimationComponent{std::nullopt, OrbitAnimation{{0, 2, -3}, 1.5, 6.0, {}}, {}};
+    parent.children.push_back(light);
+    data.nodes.push_back(parent);
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    auto at = [&](double t) { return snap(data, t, meshes, warnings).lights.at(0).position; };
+    expectNear(at(0.0), {101.5, 2, -3});
+    expectNear(at(1.5), {100, 2, -1.5}); // quarter turn: +Z
+    expectNear(at(3.0), {98.5, 2, -3});
+    expectNear(at(6.0), at(0.0), 1e-12);
+}
+
+TEST(Snapshot, BounceLiftsAnOrbit) {
+    NodeData node;
+    node.animation =
+        AnimationComponent{BounceAnimation{0.5, 2.0, {}}, OrbitAnimation{{0, 0, 0}, 1.0, 4.0, {}}, {}};
+    expectNear(animatedTranslate(node, 1.0), {0, 0.5, 1});
+}
+
+TEST(Snapshot, LightsPointAlongTheirWorldMinusY) {
+    SceneData data;
+    NodeTree sun;
+    sun.data.name = "Sun";
+    sun.data.transform = {{3, 4, 5}, {0, 0, 90}, {1, 7, 1}, {}};
+    sun.data.light = LightComponent{LightType::Directional, {1, 0.5, 0.25}, 2.0, 30, 0.15, std::nullopt, {}};
+    NodeTree spot;
+    spot.data.name = "Spot";
+    spot.data.light =
+        LightComponent{LightType::Spot, {1, 1, 1}, 1.0, 25, 0.2, ShadowComponent{512, 3, {}}, {}};
+    data.nodes = {sun, spot};
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    ASSERT_EQ(frame.lights.size(), 2u);
+    EXPECT_TRUE(frame.items.empty());
+    const render::Light& s = frame.lights[0];
+    EXPECT_EQ(s.type, render::LightType::Directional);
+    expectNear(s.position, {3, 4, 5});
+    expectNear(s.direction, {1, 0, 0}); // −Y turned 90° about Z, unit length despite the scale
+    expectNear(s.color, {1, 0.5, 0.25});
+    EXPECT_EQ(s.intensity, 2.0);
+    EXPECT_FALSE(s.shadows.enabled);
+    const render::Light& p = frame.lights[1];
+    EXPECT_EQ(p.type, render::LightType::Spot);
+    expectNear(p.direction, {0, -1, 0});
+    EXPECT_EQ(p.spotAngle, 25.0);
+    EXPECT_EQ(p.spotBlend, 0.2);
+    EXPECT_TRUE(p.shadows.enabled);
+    EXPECT_EQ(p.shadows.mapSize, 512);
+    EXPECT_EQ(p.shadows.pcf, 3);
+}
+
+TEST(Snapshot, MirrorsAndTheReflector) {
+    SceneData data;
+    NodeTree table;
+    table.data.name = "Table";
+    table.data.transform.translate = {0, -1, -3};
+    table.data.mirror = MirrorComponent{{4, 2}, 0.5, MirrorTechnique::Texture, {}};
+    table.data.material = MaterialComponent{};
+    table.data.material->texture = "/abs/marble.png";
+    NodeTree plain;
+    plain.data.name = "Plain";
+    plain.data.mirror = MirrorComponent{};
+    NodeTree ball;
+    ball.data.name = "Ball";
+    ball.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere, 12);
+    ball.data.reflector = ReflectorComponent{ReflectorMap::DualParaboloid, 128, 0.9, {}};
+    data.nodes = {table, plain, ball};
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_TRUE(frame.items.empty()) << "a reflector's mesh is not drawn a second time as an item";
+    ASSERT_EQ(frame.mirrors.size(), 2u);
+    const render::Mirror& m = frame.mirrors[0];
+    EXPECT_EQ(m.name, "Table");
+    expectNear(apply(m.world, {0, 0, 0}), {0, -1, -3});
+    EXPECT_EQ(m.size, glm::dvec2(4, 2));
+    EXPECT_EQ(m.reflectivity, 0.5);
+    EXPECT_EQ(m.technique, render::MirrorTechnique::Texture);
+    EXPECT_TRUE(m.hasMaterial);
+    EXPECT_EQ(m.material.texturePath, "/abs/marble.png");
+    EXPECT_FALSE(frame.mirrors[1].hasMaterial);
+    EXPECT_EQ(frame.mirrors[1].technique, render::MirrorTechnique::Stencil);
+    ASSERT_TRUE(frame.reflector.has_value());
+    EXPECT_EQ(frame.reflector->name, "Ball");
+    EXPECT_EQ(frame.reflector->map, render::ReflectorMap::DualParaboloid);
+    EXPECT_EQ(frame.reflector->resolution, 128);
+    EXPECT_EQ(frame.reflector->reflectivity, 0.9);
+    EXPECT_EQ(frame.reflector->mesh, meshes.builtin(BuiltinMesh::Sphere, 12));
+}
+
+TEST(Snapshot, ABrokenReflectorBecomesAWarning) {
+    SceneData data;
+    NodeTree first;
+    first.data.name = "First";
+    first.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere, 8);
+    first.data.reflector = ReflectorComponent{};
+    NodeTree second = first;
+    second.data.name = "Second";
+    NodeTree meshless;
+    meshless.data.name = "Meshless";
+    meshless.data.reflector = ReflectorComponent{};
+    data.nodes = {first, second, meshless};
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    ASSERT_TRUE(frame.reflector.has_value());
+    EXPECT_EQ(frame.reflector->name, "First");
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_NE(warnings[0].find("Second"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[1].find("Meshless"), std::string::npos) << warnings[1];
+}
+
+TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {
+    std::vector<std::string> warnings;
+    Scene scene;
+    ASSERT_TRUE(openProject(scene, test::demoScenePath(), warnings).ok());
+    MeshLibrary meshes;
+    const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+    EXPECT_TRUE(warnings.empty());
+    ASSERT_EQ(frame.items.size(), 2u);
+    EXPECT_EQ(frame.items[0].name, "Teapot");
+    EXPECT_EQ(frame.items[0].material.specular, 0.5);
+    EXPECT_EQ(frame.items[0].mesh->triangleCount(), 32u * 8u * 8u * 2u);
+    const QString texture = QString::fromStdString(frame.items[1].material.texturePath);
+    EXPECT_TRUE(QFileInfo(texture).isAbsolute());
+    EXPECT_TRUE(QFileInfo(texture).isFile()) << texture.toStdString();
+    ASSERT_EQ(frame.lights.size(), 1u);
+    expectNear(frame.lights[0].position, {1.5, 2, -3});
+    EXPECT_EQ(frame.settings.mirrorDepth, 3);
+    EXPECT_EQ(frame.camera.fovY, 65.0);
+
+    // A mesh node without a material gets DESIGN.md's default material.
+    SceneData data;
+    data.nodes.push_back(boxNode("bare", {}));
+    const render::FrameInput bare = snap(data, 0.0, meshes, warnings);
+    const render::Material defaults;
+    EXPECT_EQ(bare.items.at(0).material.color, defaults.color);
+    EXPECT_EQ(bare.items.at(0).material.diffuse, 1.0);
+    EXPECT_EQ(bare.items.at(0).material.specular, 0.0);
+}
+
+TEST(Snapshot, ARelativePathSetByCodeIsTakenRelativeToTheProject) {
+    SceneData data;
+    NodeTree node = boxNode("textured", {});
+    node.data.material = MaterialComponent{};
+    node.data.material->texture = "textures/wood.png";
+    data.nodes.push_back(node);
+    Scene scene;
+    scene.reset(data);
+    scene.setProjectPath("/projects/demo/scene.speculum.json");
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+    EXPECT_EQ(frame.items.at(0).material.texturePath, "/projects/demo/textures/wood.png");
+}
+
+TEST(Snapshot, MeshHandlesAreStableAcrossFrames) {
+    SceneData data;
+    data.nodes.push_back(boxNode("a", {}));
+    NodeTree teapot = boxNode("b", {});
+    teapot.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Teapot, 3);
+    data.nodes.push_back(teapot);
+    Scene scene;
+    scene.reset(data);
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput one = snapshot(scene, 0.0, meshes, warnings);
+    const render::FrameInput two = snapshot(scene, 1.0, meshes, warnings);
+    EXPECT_EQ(one.items[0].mesh, two.items[0].mesh);
+    EXPECT_EQ(one.items[1].mesh, two.items[1].mesh);
+    EXPECT_NE(meshes.builtin(BuiltinMesh::Teapot, 3), meshes.builtin(BuiltinMesh::Teapot, 4));
+    EXPECT_EQ(meshes.size(), 3u);
+}
+
+TEST(Snapshot, AMissingMeshFileIsAWarningNotACrash) {
+    const auto folder = freshTestFolder();
+    SceneData data;
+    NodeTree missing;
+    missing.data.name = "Ghost";
+    missing.data.mesh = MeshComponent::fromFile((folder / "ghost.obj").string());
+    NodeTree garbage;
+    garbage.data.name = "Garbage";
+    garbage.data.mesh = MeshComponent::fromFile((folder / "garbage.obj").string());
+    test::writeBytes(qpath(folder / "garbage.obj"), "this is not a model\n\x01\x02\x03");
+    data.nodes = {missing, garbage, boxNode("Box", {})};
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    ASSERT_EQ(frame.items.size(), 1u);
+    EXPECT_EQ(frame.items[0].name, "Box");
+    ASSERT_GE(warnings.size(), 2u);
+    auto mentions = [&](const std::string& a, const std::string& b) {
+        return std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) {
+            return w.find(a) != std::string::npos && w.find(b) != std::string::npos;
+        });
+    };
+    EXPECT_TRUE(mentions("Ghost", "ghost.obj"));
+    EXPECT_TRUE(mentions("Garbage", "garbage.obj"));
+}
+
+TEST(Snapshot, MeshFilesAreImportedOnceAndAgainWhenTheyChange) {
+    const auto folder = freshTestFolder();
+    const QString path = qpath(folder / "tri.obj");
+    test::writeBytes(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    auto first = meshes.file(path.toStdString(), warnings);
+    ASSERT_TRUE(first.ok()) << first.error();
+    EXPECT_EQ((*first)->triangleCount(), 1u);
+    auto again = meshes.file(path.toStdString(), warnings);
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(*first, *again);
+
+    // Two triangles now; a different size is a change even if the clock did not tick.
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    test::writeBytes(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+    auto changed = meshes.file(path.toStdString(), warnings);
+    ASSERT_TRUE(changed.ok()) << changed.error();
+    EXPECT_NE(*changed, *first);
+    EXPECT_EQ((*changed)->triangleCount(), 2u);
+}
+
+} // namespace
+} // namespace speculum::document

@@ -1,0 +1,7 @@
+# The scene document: model, project files, snapshot, undo commands. Unit tier, no GL.
+speculum_add_test(test_editor_document TIER unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_project_file.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_project_errors.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_snapshot.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_commands.cpp
+    LIBS speculum_document)

@@ -1,0 +1,6 @@
+# Model import through Assimp (real files from Debian's assimp-testmodels, broken files written by the
+# tests): unit tier, no GL. Links Assimp directly to cross-check the flattening against its own
+# PreTransformVertices step.
+speculum_add_test(test_editor_import TIER unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_model_import.cpp
+    LIBS speculum_document assimp::assimp)

@@ -1,0 +1,218 @@
+#include "TestFolder.hpp"
+#include "render/image/TextureLoader.hpp"
+
+#include <OpenImageIO/imageio.h>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace speculum::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Writes a file with OIIO directly, so the loader is tested against files it did not produce itself.
+template <typename T>
+void writeRaw(const fs::path& path, int width, int height, int channels, OIIO::TypeDesc type,
+              const std::vector<T>& pixels) {
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out) << OIIO::geterror();
+    OIIO::ImageSpec spec(width, height, channels, type);
+    if (channels == 2 || channels == 4) {
+        spec.alpha_channel = channels - 1;
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+    }
+    ASSERT_TRUE(out->open(path.string(), spec)) << out->geterror();
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc(OIIO::BaseTypeFromC<T>::value), pixels.data()))
+        << out->geterror();
+    ASSERT_TRUE(out->close()) << out->geterror();
+}
+
+// Deterministic "noise" so compressed files are large enough to truncate in the middle of the data.
+std::vector<std::uint8_t> noisyBytes(std::size_t count) {
+    std::vector<std::uint8_t> bytes(count);
+    std::uint32_t state = 12345;
+    for (auto& b : bytes) {
+        state = state * 1664525U + 1013904223U;
+        b = static_cast<std::uint8_t>(state >> 24);
+    }
+    return bytes;
+}
+
+std::string contentsOf(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+void writeBytes(const fs::path& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::vector<std::uint8_t> pixel(const TextureImage& image, int x, int y) {
+    const auto* p = &image.rgba8[(static_cast<std::size_t>(y) * image.width + x) * 4];
+    return {p[0], p[1], p[2], p[3]};
+}
+
+using Bytes = std::vector<std::uint8_t>;
+
+TEST(TextureLoader, RgbaPngKeepsExactBytesStraightAlphaAndRowOrder) {
+    const fs::path path = test::freshTestFolder() / "rgba.png";
+    // Top row: red, transparent green (colour must survive alpha 0). Bottom row: blue, half grey.
+    writeRaw<std::uint8_t>(path, 2, 2, 4, OIIO::TypeDesc::UINT8,
+                           {255, 0, 0, 255, 0, 200, 0, 0, 0, 0, 255, 255, 100, 100, 100, 128});
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    ASSERT_EQ(texture->width, 2);
+    ASSERT_EQ(texture->height, 2);
+    EXPECT_EQ(pixel(*texture, 0, 0), (Bytes{255, 0, 0, 255}));
+    EXPECT_EQ(pixel(*texture, 1, 0), (Bytes{0, 200, 0, 0}));
+    EXPECT_EQ(pixel(*texture, 0, 1), (Bytes{0, 0, 255, 255}));
+    EXPECT_EQ(pixel(*texture, 1, 1), (Bytes{100, 100, 100, 128}));
+}
+
+TEST(TextureLoader, RgbPngGetsOpaqueAlpha) {
+    const fs::path path = test::freshTestFolder() / "rgb.png";
+    writeRaw<std::uint8_t>(path, 2, 1, 3, OIIO::TypeDesc::UINT8, {10, 20, 30, 40, 50, 60});
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    EXPECT_EQ(texture->rgba8, (Bytes{10, 20, 30, 255, 40, 50, 60, 255}));
+}
+
+TEST(TextureLoader, GreyIsSpreadToRgb) {
+    const fs::path folder = test::freshTestFolder();
+    writeRaw<std::uint8_t>(folder / "grey.png", 2, 1, 1, OIIO::TypeDesc::UINT8, {0, 77});
+    const Result<TextureImage> grey = loadTexture((folder / "grey.png").string());
+    ASSERT_TRUE(grey.ok()) << grey.error();
+    EXPECT_EQ(grey->rgba8, (Bytes{0, 0, 0, 255, 77, 77, 77, 255}));
+
+    writeRaw<std::uint8_t>(folder / "grey-alpha.png", 1, 1, 2, OIIO::TypeDesc::UINT8, {90, 30});
+    const Result<TextureImage> greyAlpha = loadTexture((folder / "grey-alpha.png").string());
+    ASSERT_TRUE(greyAlpha.ok()) << greyAlpha.error();
+    EXPECT_EQ(greyAlpha->rgba8, (Bytes{90, 90, 90, 30}));
+}
+
+TEST(TextureLoader, SixteenBitIsRoundedToEightBit) {
+    const fs::path path = test::freshTestFolder() / "deep.png";
+    writeRaw<std::uint16_t>(path, 3, 1, 3, OIIO::TypeDesc::UINT16,
+                            {0, 65535, 128 * 257, 257, 254 * 257, 32768, 65535, 0, 1000});
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    EXPECT_EQ(texture->rgba8, (Bytes{0, 255, 128, 255, 1, 254, 128, 255, 255, 0, 4, 255}));
+}
+
+TEST(TextureLoader, JpegLoadsCloseToItsColour) {
+    const fs::path path = test::freshTestFolder() / "flat.jpg";
+    std::vector<std::uint8_t> flat;
+    for (int i = 0; i < 16 * 16; ++i) {
+        flat.insert(flat.end(), {200, 120, 40});
+    }
+    writeRaw(path, 16, 16, 3, OIIO::TypeDesc::UINT8, flat);
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    ASSERT_EQ(texture->width, 16);
+    const Bytes p = pixel(*texture, 7, 7);
+    EXPECT_NEAR(p[0], 200, 3);
+    EXPECT_NEAR(p[1], 120, 3);
+    EXPECT_NEAR(p[2], 40, 3);
+    EXPECT_EQ(p[3], 255);
+}
+
+TEST(TextureLoader, FloatFilesAreSrgbEncoded) {
+    const fs::path path = test::freshTestFolder() / "linear.exr";
+    // Linear 0.2158605 is sRGB code 128 (128/255 decoded); 1.0 stays 255; alpha is not encoded.
+    writeRaw<float>(path, 1, 1, 4, OIIO::TypeDesc::FLOAT, {0.2158605f * 0.5f, 1.0f * 0.5f, 0.0f, 0.5f});
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    EXPECT_EQ(texture->rgba8, (Bytes{128, 255, 0, 128}));
+}
+
+TEST(TextureLoader, MissingFileIsAnErrorNamingThePath) {
+    const fs::path path = test::freshTestFolder() / "missing.png";
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_FALSE(texture.ok());
+    EXPECT_NE(texture.error().find(path.string()), std::string::npos) << texture.error();
+    EXPECT_NE(texture.error().find("does not exist"), std::string::npos) << texture.error();
+}
+
+TEST(TextureLoader, GarbageBytesAreAnError) {
+    const fs::path folder = test::freshTestFolder();
+    const Bytes noise = noisyBytes(4000);
+    const std::string garbage(noise.begin(), noise.end());
+    for (const char* name : {"garbage.png", "garbage.jpg", "garbage.tif", "garbage.exr", "garbage.xyz"}) {
+        writeBytes(folder / name, garbage);
+        const Result<TextureImage> texture = loadTexture((folder / name).string());
+        ASSERT_FALSE(texture.ok()) << name;
+        EXPECT_NE(texture.error().find(name), std::string::npos) << texture.error();
+    }
+}
+
+// Writes a noisy image, cuts the file in half, and expects an error rather than a half-grey texture.
+void expectTruncatedFileFails(const fs::path& path) {
+    writeRaw(path, 64, 64, 3, OIIO::TypeDesc::UINT8, noisyBytes(64 * 64 * 3));
+    ASSERT_TRUE(loadTexture(path.string()).ok()) << "the intact file must load";
+    const std::string whole = contentsOf(path);
+    ASSERT_GT(whole.size(), 2000u);
+    writeBytes(path, whole.substr(0, whole.size() / 2));
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_FALSE(texture.ok()) << path << " was cut to " << whole.size() / 2 << " bytes but loaded";
+    EXPECT_NE(texture.error().find(path.string()), std::string::npos) << texture.error();
+}
+
+TEST(TextureLoader, TruncatedPngIsAnError) {
+    expectTruncatedFileFails(test::freshTestFolder() / "cut.png");
+}
+
+TEST(TextureLoader, TruncatedJpegIsAnError) {
+    expectTruncatedFileFails(test::freshTestFolder() / "cut.jpg");
+}
+
+TEST(TextureLoader, TruncatedTiffIsAnError) {
+    expectTruncatedFileFails(test::freshTestFolder() / "cut.tif");
+}
+
+TEST(TextureLoader, AbsurdSizeIsRefused) {
+    const fs::path path = test::freshTestFolder() / "wide.png";
+    writeRaw(path, kMaxTextureSide + 1, 1, 1, OIIO::TypeDesc::UINT8,
+             std::vector<std::uint8_t>(kMaxTextureSide + 1));
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_FALSE(texture.ok());
+    EXPECT_NE(texture.error().find("16384"), std::string::npos) << texture.error();
+}
+
+TEST(TextureLoader, FolderIsAnError) {
+    const fs::path folder = test::freshTestFolder();
+    const Result<TextureImage> texture = loadTexture(folder.string());
+    ASSERT_FALSE(texture.ok());
+    EXPECT_NE(texture.error().find("folder"), std::string::npos) << texture.error();
+}
+
+TEST(CheckerTexture, IsAMagentaAndBlackChecker) {
+    const TextureImage checker = checkerTexture(64);
+    ASSERT_EQ(checker.width, 64);
+    ASSERT_EQ(checker.height, 64);
+    ASSERT_EQ(checker.rgba8.size(), 64u * 64u * 4u);
+    const Bytes magenta{255, 0, 255, 255};
+    const Bytes black{0, 0, 0, 255};
+    EXPECT_EQ(pixel(checker, 0, 0), magenta);
+    EXPECT_EQ(pixel(checker, 63, 63), magenta);
+    EXPECT_EQ(pixel(checker, 8, 0), black);
+    EXPECT_EQ(pixel(checker, 0, 8), black);
+    EXPECT_EQ(pixel(checker, 8, 8), magenta);
+    int magentaCount = 0;
+    for (int y = 0; y < 64; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            const Bytes p = pixel(checker, x, y);
+            EXPECT_TRUE(p == magenta || p == black);
+            magentaCount += p == magenta;
+        }
+    }
+    EXPECT_EQ(magentaCount, 64 * 64 / 2);
+    EXPECT_EQ(checkerTexture(3).width, 3);
+}
+
+} // namespace
+} // namespace speculum::render

@@ -1,0 +1,3 @@
+speculum_add_test(test_render_plan TIER unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_planner.cpp
+    LIBS speculum_render)
