@@ -73,8 +73,11 @@ struct Mirror {
     std::string name;
     glm::dmat4 world{1.0};
     glm::dvec2 size{1.0, 1.0}; // local X and Z extents of the rectangle
-    double reflectivity = 1.0;
+    double reflectivity = 1.0; // at normal incidence when fresnel is on
     MirrorTechnique technique = MirrorTechnique::Stencil;
+    glm::dvec3 tint{1.0, 1.0, 1.0}; // multiplies the reflected light
+    bool fresnel = false;           // Schlick: reflectivity rises towards 1 at grazing angles
+    double blur = 0.0;              // 0..1, texture technique only: how rough the reflection looks
     Material material;
     bool hasMaterial = false;
 };

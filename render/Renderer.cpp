@@ -4,10 +4,12 @@
 #include "render/gl/GpuTimer.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/gl/Program.hpp"
+#include "render/gl/RenderTexture.hpp"
 #include "render/gl/TextureCache.hpp"
 #include "render/math/Projection.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/passes/MainPass.hpp"
+#include "render/passes/MirrorPasses.hpp"
 #include "render/passes/ShadowMaps.hpp"
 #include "render/plan/Planner.hpp"
 
@@ -23,40 +25,6 @@ using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
-
-// The linear (half-float) colour buffer every frame is drawn into before the composite pass, with a
-// depth-stencil buffer for the main and (later) mirror passes.
-struct LinearTarget {
-    int width = 0;
-    int height = 0;
-    gl::Texture color;
-    gl::Renderbuffer depthStencil;
-    gl::Framebuffer framebuffer;
-
-    void ensure(int w, int h) {
-        if (framebuffer && w == width && h == height)
-            return;
-        width = w;
-        height = h;
-        color = gl::makeTexture();
-        glBindTexture(GL_TEXTURE_2D, color.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        depthStencil = gl::makeRenderbuffer();
-        glBindRenderbuffer(GL_RENDERBUFFER, depthStencil.id());
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
-        glBindRenderbuffer(GL_RENDERBUFFER, 0);
-        framebuffer = gl::makeFramebuffer();
-        gl::FramebufferBinding keep;
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                  depthStencil.id());
-    }
-};
 
 gl::Texture makeDummyDepth(GLenum target) {
     gl::Texture t = gl::makeTexture();
@@ -82,12 +50,18 @@ gl::Texture makeDummyDepth(GLenum target) {
 
 struct Renderer::State {
     gl::Program meshProgram;
-    gl::Program shadowProgram;
+    gl::Program shadowProgram; // depth only
+    gl::Program flatProgram;   // mirror masks and background resets
+    gl::Program mirrorProgram;
     gl::Program compositeProgram;
     gl::MeshCache meshes;
     gl::TextureCache textures;
     passes::ShadowMaps shadows;
-    LinearTarget linear;
+    // The linear (half-float) colour buffer every frame is drawn into before the composite pass, with
+    // the depth-stencil buffer the mirror passes nest in.
+    gl::RenderTexture linear;
+    std::vector<gl::RenderTexture> reflectionTextures; // texture-technique mirrors, one per nesting
+    gl::Query occlusion;
     gl::VertexArray emptyVao; // core profile needs a VAO bound even for attribute-less draws
     gl::Texture dummyShadow2D;
     gl::Texture dummyShadowCube;
@@ -111,12 +85,21 @@ Result<std::unique_ptr<Renderer>> Renderer::create() {
     auto shadow = gl::Program::build("shadow.vert", "shadow.frag");
     if (!shadow)
         return Error{shadow.error()};
+    auto flat = gl::Program::build("shadow.vert", "flat.frag");
+    if (!flat)
+        return Error{flat.error()};
+    auto mirror = gl::Program::build("mesh.vert", "mirror.frag");
+    if (!mirror)
+        return Error{mirror.error()};
     auto composite = gl::Program::build("fullscreen.vert", "composite.frag");
     if (!composite)
         return Error{composite.error()};
     s.meshProgram = std::move(*mesh);
     s.shadowProgram = std::move(*shadow);
+    s.mirrorProgram = std::move(*mirror);
+    s.flatProgram = std::move(*flat);
     s.compositeProgram = std::move(*composite);
+    s.occlusion = gl::makeQuery();
     s.emptyVao = gl::makeVertexArray();
     s.dummyShadow2D = makeDummyDepth(GL_TEXTURE_2D);
     s.dummyShadowCube = makeDummyDepth(GL_TEXTURE_CUBE_MAP);
@@ -130,6 +113,31 @@ void Renderer::releaseGlResources() {
     m_state->released = true;
 }
 
+namespace {
+
+// Marks pass i and every later pass of the same view or its descendants as not run.
+bool descendsFrom(const FramePlan& plan, int view, int ancestor) {
+    for (int v = view; v >= 0; v = plan.views[static_cast<std::size_t>(v)].parent)
+        if (v == ancestor)
+            return true;
+    return false;
+}
+
+void resetState() {
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilMask(0xFF);
+    glFrontFace(GL_CCW);
+}
+
+} // namespace
+
 FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target,
                              const RenderOptions& options) {
     const auto frameStart = Clock::now();
@@ -137,22 +145,48 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
     FrameReport report;
     if (s.released || target.width <= 0 || target.height <= 0)
         return report;
-    report.plan = planFrame(input, s.plannerState);
+    const PlanViewport viewport{target.width, target.height, options.jitterPixels};
+    FramePlan& plan = report.plan;
+    plan = planFrame(input, s.plannerState, viewport);
 
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
     // face instead of clamping (which would leak light or shadow along the seams).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    s.linear.ensure(target.width, target.height);
+    s.linear.ensure(target.width, target.height, GL_RGBA16F, false);
+    const glm::dmat4 projection = cameraProjection(input, viewport);
+    const passes::MainPassContext ctx{
+        s.meshProgram,          s.meshes,   s.textures, s.shadows, plan.shadowedLights, s.dummyShadow2D.id(),
+        s.dummyShadowCube.id(), s.unitPlane};
 
-    const double aspect = double(target.width) / double(target.height);
-    glm::dmat4 projection = math::perspective(input.camera.fovY, aspect, input.camera.near, input.camera.far);
-    projection =
-        math::jitter(projection, options.jitterPixels.x, options.jitterPixels.y, target.width, target.height);
-    const glm::dmat4 viewProjection = projection * math::viewRotation(input.camera);
+    // The framebuffer a view's scene is drawn into: its own texture, or its parent's target.
+    auto targetOf = [&](int viewIndex) -> GLuint {
+        if (viewIndex < 0)
+            return s.linear.framebuffer();
+        const MirrorView& v = plan.views[static_cast<std::size_t>(viewIndex)];
+        return v.textureSlot < 0
+                   ? s.linear.framebuffer()
+                   : s.reflectionTextures[static_cast<std::size_t>(v.textureSlot)].framebuffer();
+    };
+    std::vector<bool> ran(plan.passes.size(), true);
+    std::vector<std::string> hidden; // reasons for views found fully occluded, by view
+    hidden.resize(plan.views.size());
+    int deepestSlot = -1;
+    for (const MirrorView& v : plan.views)
+        deepestSlot = std::max(deepestSlot, v.textureSlot);
+    if (static_cast<int>(s.reflectionTextures.size()) <= deepestSlot)
+        s.reflectionTextures.resize(static_cast<std::size_t>(deepestSlot + 1));
 
     gl::FramebufferBinding keepCallerBinding;
-    for (std::size_t i = 0; i < report.plan.passes.size(); ++i) {
-        PlannedPass& pass = report.plan.passes[i];
+    for (std::size_t i = 0; i < plan.passes.size(); ++i) {
+        PlannedPass& pass = plan.passes[i];
+        if (pass.view >= 0) {
+            // A view inside a mirror found hidden runs nothing.
+            for (std::size_t v = 0; v < plan.views.size(); ++v)
+                if (!hidden[v].empty() && descendsFrom(plan, pass.view, static_cast<int>(v)))
+                    ran[i] = false;
+            if (!ran[i])
+                continue;
+        }
         const auto passStart = Clock::now();
         if (options.gpuTimings)
             s.timer.begin(i);
@@ -162,43 +196,94 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
             s.plannerState.shadowSignatures[pass.lightIndex] = shadowSignature(input, pass.lightIndex);
             break;
         case PassKind::Main: {
-            for (int lightIndex : report.plan.shadowedLights)
+            for (int lightIndex : plan.shadowedLights)
                 s.shadows.setPcf(lightIndex, input.lights[static_cast<std::size_t>(lightIndex)].shadows.pcf);
-            glBindFramebuffer(GL_FRAMEBUFFER, s.linear.framebuffer.id());
+            glBindFramebuffer(GL_FRAMEBUFFER, s.linear.framebuffer());
             glViewport(0, 0, target.width, target.height);
-            glDisable(GL_SCISSOR_TEST);
-            glDisable(GL_BLEND);
-            glDisable(GL_CULL_FACE);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
-            glDepthMask(GL_TRUE);
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glStencilMask(0xFF);
+            resetState();
             glClearColor(float(input.settings.background.r), float(input.settings.background.g),
                          float(input.settings.background.b), 1.0f);
             glClearStencil(0);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-            passes::MainPassContext ctx{s.meshProgram,
-                                        s.meshes,
-                                        s.textures,
-                                        s.shadows,
-                                        report.plan.shadowedLights,
-                                        s.dummyShadow2D.id(),
-                                        s.dummyShadowCube.id(),
-                                        s.unitPlane};
-            passes::drawMainPass(input, viewProjection, ctx);
+            passes::drawMainPass(input, passes::viewSetup(input, plan, -1, projection), ctx);
+            break;
+        }
+        case PassKind::MirrorMask: {
+            const MirrorView& view = plan.views[static_cast<std::size_t>(pass.view)];
+            glBindFramebuffer(GL_FRAMEBUFFER, targetOf(view.parent));
+            glViewport(0, 0, target.width, target.height);
+            resetState();
+            passes::scissorTo(view.rect);
+            const passes::ViewSetup parent = passes::viewSetup(input, plan, view.parent, projection);
+            if (!passes::drawMirrorMask(input, view, parent, s.flatProgram, ctx, s.occlusion.id()))
+                hidden[static_cast<std::size_t>(pass.view)] =
+                    "fully occluded: no pixel of it passed the depth test";
+            break;
+        }
+        case PassKind::Mirror: {
+            const MirrorView& view = plan.views[static_cast<std::size_t>(pass.view)];
+            resetState();
+            if (view.ownTarget) {
+                gl::RenderTexture& texture = s.reflectionTextures[static_cast<std::size_t>(view.textureSlot)];
+                const bool blurred = input.mirrors[static_cast<std::size_t>(view.mirror)].blur > 0.0;
+                texture.ensure(target.width, target.height, GL_RGBA16F, true);
+                glBindFramebuffer(GL_FRAMEBUFFER, texture.framebuffer());
+                glViewport(0, 0, target.width, target.height);
+                // Blurred lookups read around the mirror's pixels too: clear the whole texture for them.
+                if (!blurred)
+                    passes::scissorTo(view.rect);
+                glClearColor(float(input.settings.background.r), float(input.settings.background.g),
+                             float(input.settings.background.b), 1.0f);
+                glClearStencil(0);
+                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+            } else {
+                glBindFramebuffer(GL_FRAMEBUFFER, targetOf(pass.view));
+                glViewport(0, 0, target.width, target.height);
+                glEnable(GL_STENCIL_TEST);
+                glStencilFunc(GL_EQUAL, view.stencilLevel, 0xFF);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+            }
+            passes::scissorTo(view.rect);
+            // An odd number of reflections turns counter-clockwise triangles clockwise.
+            glFrontFace(glm::determinant(glm::dmat3(view.reflection)) < 0.0 ? GL_CW : GL_CCW);
+            passes::drawMainPass(input, passes::viewSetup(input, plan, pass.view, projection), ctx);
+            glFrontFace(GL_CCW);
+            break;
+        }
+        case PassKind::MirrorSurface: {
+            const MirrorView& view = plan.views[static_cast<std::size_t>(pass.view)];
+            GLuint reflection = 0;
+            int levels = 1;
+            if (view.ownTarget) {
+                gl::RenderTexture& texture = s.reflectionTextures[static_cast<std::size_t>(view.textureSlot)];
+                if (input.mirrors[static_cast<std::size_t>(view.mirror)].blur > 0.0)
+                    texture.generateMipmaps();
+                reflection = texture.color();
+                levels = texture.levels();
+            }
+            glBindFramebuffer(GL_FRAMEBUFFER, targetOf(view.parent));
+            glViewport(0, 0, target.width, target.height);
+            resetState();
+            passes::scissorTo(view.rect);
+            if (view.parent >= 0) // drawn in the parent's (reflected) view
+                glFrontFace(glm::determinant(glm::dmat3(
+                                plan.views[static_cast<std::size_t>(view.parent)].reflection)) < 0.0
+                                ? GL_CW
+                                : GL_CCW);
+            passes::drawMirrorSurface(input, view, passes::viewSetup(input, plan, view.parent, projection),
+                                      s.mirrorProgram, ctx, reflection, levels,
+                                      {target.width, target.height});
+            glFrontFace(GL_CCW);
             break;
         }
         case PassKind::Composite:
             glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
             glViewport(0, 0, target.width, target.height);
+            resetState();
             glDisable(GL_DEPTH_TEST);
-            glDisable(GL_BLEND);
-            glDisable(GL_STENCIL_TEST);
-            glDisable(GL_CULL_FACE);
             s.compositeProgram.use();
             glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D, s.linear.color.id());
+            glBindTexture(GL_TEXTURE_2D, s.linear.color());
             s.compositeProgram.set("uColor", 0);
             s.compositeProgram.set("uEncodeSrgb", target.encodeSrgb ? 1 : 0);
             glBindVertexArray(s.emptyVao.id());
@@ -213,16 +298,31 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
     }
     glBindVertexArray(0);
     glUseProgram(0);
+    resetState();
 
     if (options.gpuTimings) {
-        const std::vector<double> gpu = s.timer.collect(report.plan.passes.size());
+        const std::vector<double> gpu = s.timer.collect(plan.passes.size());
         report.gpuMs = 0.0;
         for (std::size_t i = 0; i < gpu.size(); ++i) {
-            report.plan.passes[i].gpuMs = gpu[i];
-            if (gpu[i] > 0)
+            plan.passes[i].gpuMs = ran[i] ? gpu[i] : -1.0;
+            if (ran[i] && gpu[i] > 0)
                 report.gpuMs += gpu[i];
         }
     }
+    // Passes of hidden mirrors did not run: report them as skipped, with the reason.
+    std::vector<PlannedPass> executed;
+    for (std::size_t i = 0; i < plan.passes.size(); ++i) {
+        if (ran[i]) {
+            executed.push_back(std::move(plan.passes[i]));
+        } else if (plan.passes[i].kind == PassKind::Mirror) {
+            for (std::size_t v = 0; v < plan.views.size(); ++v)
+                if (!hidden[v].empty() && descendsFrom(plan, plan.passes[i].view, static_cast<int>(v))) {
+                    plan.skipped.push_back({plan.passes[i].target, "no reflection: " + hidden[v]});
+                    break;
+                }
+        }
+    }
+    plan.passes = std::move(executed);
     s.meshes.purge();
     report.warnings = s.textures.takeWarnings();
     report.cpuMs = msSince(frameStart);

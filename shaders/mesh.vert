@@ -1,11 +1,13 @@
 // Main pass: positions are camera-relative world coordinates (camera at the origin), so large world
-// coordinates never reach the GPU in single precision.
+// coordinates never reach the GPU in single precision. In a mirror's view, geometry is drawn through the
+// reflection, but vWorld stays unreflected: lighting is mirrored, not recomputed at the mirrored place.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
 
 uniform mat4 uModel;        // object → camera-relative world
 uniform mat3 uNormalMatrix; // inverse transpose of uModel's upper 3×3
+uniform mat4 uReflection;   // camera-relative world → camera-relative reflected world (identity: no mirror)
 uniform mat4 uViewProjection;
 
 out vec3 vWorld;
@@ -17,5 +19,5 @@ void main() {
     vWorld = world.xyz;
     vNormal = uNormalMatrix * aNormal;
     vUv = aUv;
-    gl_Position = uViewProjection * world;
+    gl_Position = uViewProjection * (uReflection * world);
 }

@@ -110,6 +110,13 @@ glm::dvec3 readColor(const QJsonValue& v, const std::string& path) {
     return c;
 }
 
+bool readBool(const QJsonValue& v, const std::string& path) {
+    if (!v.isBool()) {
+        fail(path, "expected true or false");
+    }
+    return v.toBool();
+}
+
 template <typename E>
 E readEnum(const QJsonValue& v, const std::string& path, const char* what,
            std::optional<E> (*parse)(std::string_view), const char* expected) {
@@ -436,6 +443,10 @@ private:
             return readEnum<MirrorTechnique>(t, p, "mirror technique", mirrorTechniqueFromString,
                                              "stencil or texture");
         });
+        o.optional("tint", m.tint, readColor);
+        o.optional("fresnel", m.fresnel, readBool);
+        o.optional("blur", m.blur, readNumber);
+        requireRange(m.blur, 0.0, 1.0, o.at("blur"));
         m.extra = o.finish();
         return m;
     }

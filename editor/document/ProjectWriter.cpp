@@ -194,6 +194,9 @@ private:
         vec("size", m.size);
         field("reflectivity", m.reflectivity);
         field("technique", toString(m.technique));
+        vec("tint", m.tint);
+        field("fresnel", QJsonValue(m.fresnel));
+        field("blur", m.blur);
         writeExtra(m.extra);
         w.endObject();
     }

@@ -133,6 +133,9 @@ struct MirrorComponent {
     glm::dvec2 size{1.0, 1.0}; // [x extent, z extent]
     double reflectivity = 1.0; // 0..1
     MirrorTechnique technique = MirrorTechnique::Stencil;
+    glm::dvec3 tint{1.0, 1.0, 1.0}; // multiplies the reflection, linear RGB 0..1
+    bool fresnel = false;           // Schlick: `reflectivity` at normal incidence, rising to 1 at grazing
+    double blur = 0.0;              // 0..1, roughness of the reflection (texture technique)
     QJsonObject extra;
     bool operator==(const MirrorComponent&) const = default;
 };

@@ -99,6 +99,9 @@ public:
             mirror.technique = d.mirror->technique == MirrorTechnique::Texture
                                    ? render::MirrorTechnique::Texture
                                    : render::MirrorTechnique::Stencil;
+            mirror.tint = d.mirror->tint;
+            mirror.fresnel = d.mirror->fresnel;
+            mirror.blur = d.mirror->blur;
             mirror.hasMaterial = d.material.has_value();
             mirror.material = material;
             frame.mirrors.push_back(std::move(mirror));

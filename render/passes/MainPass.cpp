@@ -17,8 +17,8 @@ std::string indexed(const char* name, int i) {
     return std::string(name) + "[" + std::to_string(i) + "]";
 }
 
-void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, const MainPassContext& ctx) {
-    const gl::Program& p = ctx.program;
+void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, const gl::Program& p,
+               const MainPassContext& ctx) {
     const int count = std::min<int>(static_cast<int>(input.lights.size()), kMaxLights);
     p.set("uLightCount", count);
     for (int i = 0; i < count; ++i) {
@@ -72,8 +72,9 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
     glActiveTexture(GL_TEXTURE0);
 }
 
-void setMaterial(const Material& m, const MainPassContext& ctx) {
-    const gl::Program& p = ctx.program;
+} // namespace
+
+void setMaterial(const Material& m, const gl::Program& p, const MainPassContext& ctx) {
     p.set("uColor", glm::vec3(m.color));
     p.set("uAmbient", float(m.ambient));
     p.set("uDiffuse", float(m.diffuse));
@@ -87,39 +88,51 @@ void setMaterial(const Material& m, const MainPassContext& ctx) {
     }
 }
 
-void drawMesh(const MeshHandle& mesh, const glm::dmat4& world, const glm::dmat4& toCameraRelative,
-              const MainPassContext& ctx) {
-    const glm::dmat4 model = toCameraRelative * world;
-    ctx.program.set("uModel", glm::mat4(model));
-    ctx.program.set("uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(model))));
+void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& p,
+                  const MainPassContext& ctx) {
+    const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
+    const glm::dmat4 fromCameraRelative = glm::inverse(toCameraRelative);
+    p.use();
+    p.set("uViewProjection", glm::mat4(view.viewProjection));
+    // The reflection acts on camera-relative coordinates: composed in double, rounded once.
+    p.set("uReflection", glm::mat4(toCameraRelative * view.reflection * fromCameraRelative));
+    p.set("uEye", glm::vec3(view.eye - input.camera.position));
+    p.set("uSceneAmbient", float(input.settings.ambient));
+    p.set("uTexture", kMaterialTextureUnit);
+    setLights(input, toCameraRelative, p, ctx);
+}
+
+void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInput& input,
+                 const gl::Program& p, const MainPassContext& ctx) {
+    const glm::dmat4 model = math::cameraRelative(input.camera) * world;
+    p.set("uModel", glm::mat4(model));
+    p.set("uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(model))));
     ctx.meshes.get(mesh).draw();
 }
 
-} // namespace
+glm::dmat4 mirrorRectangle(const Mirror& mirror) {
+    return mirror.world *
+           glm::scale(glm::dmat4(1.0), glm::dvec3(mirror.size.x * 0.5, 1.0, mirror.size.y * 0.5));
+}
 
-void drawMainPass(const FrameInput& input, const glm::dmat4& viewProjection, const MainPassContext& ctx) {
-    const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
-    ctx.program.use();
-    ctx.program.set("uViewProjection", glm::mat4(viewProjection));
-    ctx.program.set("uSceneAmbient", float(input.settings.ambient));
-    ctx.program.set("uTexture", kMaterialTextureUnit);
-    setLights(input, toCameraRelative, ctx);
-
+void drawMainPass(const FrameInput& input, const ViewSetup& view, const MainPassContext& ctx) {
+    const gl::Program& p = ctx.program;
+    beginLitView(input, view, p, ctx);
     for (const DrawItem& item : input.items) {
         if (!item.mesh)
             continue;
-        setMaterial(item.material, ctx);
-        drawMesh(item.mesh, item.world, toCameraRelative, ctx);
+        setMaterial(item.material, p, ctx);
+        drawLitMesh(item.mesh, item.world, input, p, ctx);
     }
-    for (const Mirror& mirror : input.mirrors) {
-        setMaterial(mirror.material, ctx);
-        const glm::dmat4 rect =
-            glm::scale(glm::dmat4(1.0), glm::dvec3(mirror.size.x * 0.5, 1.0, mirror.size.y * 0.5));
-        drawMesh(ctx.unitPlane, mirror.world * rect, toCameraRelative, ctx);
+    for (std::size_t i = 0; i < input.mirrors.size(); ++i) {
+        if (i < view.skipMirror.size() && view.skipMirror[i])
+            continue;
+        setMaterial(input.mirrors[i].material, p, ctx);
+        drawLitMesh(ctx.unitPlane, mirrorRectangle(input.mirrors[i]), input, p, ctx);
     }
     if (input.reflector && input.reflector->mesh) {
-        setMaterial(input.reflector->material, ctx);
-        drawMesh(input.reflector->mesh, input.reflector->world, toCameraRelative, ctx);
+        setMaterial(input.reflector->material, p, ctx);
+        drawLitMesh(input.reflector->mesh, input.reflector->world, input, p, ctx);
     }
 }
 

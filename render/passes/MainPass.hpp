@@ -15,6 +15,7 @@ namespace speculum::render::passes {
 inline constexpr int kMaterialTextureUnit = 0;
 inline constexpr int kShadow2DUnit = 1;   // 1..4
 inline constexpr int kShadowCubeUnit = 5; // 5..8
+inline constexpr int kReflectionTextureUnit = 9;
 
 // Everything the main pass needs besides the scene: resources owned by the renderer.
 struct MainPassContext {
@@ -28,8 +29,31 @@ struct MainPassContext {
     MeshHandle unitPlane; // the mirror rectangle: [-1,1]² in XZ
 };
 
-// Draws every object with Blinn-Phong lighting and filtered shadows into the bound framebuffer.
-// `viewProjection` maps camera-relative world space to clip space.
-void drawMainPass(const FrameInput& input, const glm::dmat4& viewProjection, const MainPassContext& context);
+// How one view sees the scene: the camera's own, or the scene reflected in a mirror.
+struct ViewSetup {
+    glm::dmat4 viewProjection{1.0}; // camera-relative world → clip (with an oblique near plane in mirrors)
+    glm::dmat4 reflection{1.0};     // world → reflected world (identity for the camera's view)
+    glm::dvec3 eye{0.0};            // world position of the (virtual) eye: lighting and specular use it
+    std::vector<bool> skipMirror;   // mirrors drawn by passes of their own in this view (by mirror index)
+};
+
+// Binds the lit-material program and sets everything that is the same for every object of the view:
+// camera, lights, shadow maps.
+void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& program,
+                  const MainPassContext& context);
+
+// Draws every object with Blinn-Phong lighting and filtered shadows into the bound framebuffer, and the
+// mirrors that got no pass of their own as surfaces of their own material (they reflect nothing).
+void drawMainPass(const FrameInput& input, const ViewSetup& view, const MainPassContext& context);
+
+// Sets a material's uniforms (and binds its texture) on the bound lit program.
+void setMaterial(const Material& material, const gl::Program& program, const MainPassContext& context);
+
+// Draws one mesh with a world matrix, in the view set by beginLitView.
+void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInput& input,
+                 const gl::Program& program, const MainPassContext& context);
+
+// The world matrix of a mirror's rectangle drawn with the unit plane mesh.
+glm::dmat4 mirrorRectangle(const Mirror& mirror);
 
 } // namespace speculum::render::passes

@@ -1,5 +1,6 @@
 #include "render/plan/Planner.hpp"
 
+#include "render/math/Projection.hpp"
 #include "render/math/ShadowFrustum.hpp"
 
 #include <bit>
@@ -16,6 +17,8 @@ std::string_view toString(PassKind kind) {
         return "mirror-mask";
     case PassKind::Mirror:
         return "mirror";
+    case PassKind::MirrorSurface:
+        return "mirror-surface";
     case PassKind::Envmap:
         return "envmap";
     case PassKind::Main:
@@ -54,6 +57,14 @@ std::string lightLabel(const Light& light, int index) {
 
 } // namespace
 
+glm::dmat4 cameraProjection(const FrameInput& input, const PlanViewport& viewport) {
+    const double aspect = double(std::max(viewport.width, 1)) / double(std::max(viewport.height, 1));
+    const glm::dmat4 projection =
+        math::perspective(input.camera.fovY, aspect, input.camera.near, input.camera.far);
+    return math::jitter(projection, viewport.jitterPixels.x, viewport.jitterPixels.y,
+                        std::max(viewport.width, 1), std::max(viewport.height, 1));
+}
+
 std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
     Hasher h;
@@ -80,7 +91,7 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
     return h.value;
 }
 
-FramePlan planFrame(const FrameInput& input, const PlannerState& state) {
+FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport) {
     FramePlan plan;
     std::size_t casters = 0;
     for (const DrawItem& item : input.items)
@@ -143,10 +154,6 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state) {
         plan.passes.push_back(std::move(pass));
     }
 
-    for (const Mirror& mirror : input.mirrors)
-        plan.skipped.push_back({mirror.name,
-                                "planar reflections are not rendered by this version; the mirror is "
-                                "drawn as an opaque surface"});
     if (input.reflector)
         plan.skipped.push_back({input.reflector->name,
                                 "environment maps are not rendered by this version; the "
@@ -160,6 +167,8 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state) {
         " lit by " + plural(std::min<std::size_t>(input.lights.size(), kMaxLights), "light", "lights") +
         " into the linear colour buffer";
     plan.passes.push_back(std::move(main));
+
+    planMirrors(input, viewport, plan);
 
     PlannedPass composite;
     composite.kind = PassKind::Composite;

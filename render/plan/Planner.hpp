@@ -4,6 +4,7 @@
 #include "render/plan/FramePlan.hpp"
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <unordered_map>
 
 namespace speculum::render {
@@ -16,6 +17,23 @@ struct PlannerState {
 
 inline constexpr int kMaxLights = 8;
 inline constexpr int kMaxShadowedLights = 4;
+// Mirror views in one frame, all depths together: facing mirrors at depth 16 stay bounded.
+inline constexpr int kMaxMirrorViews = 64;
+// Nesting levels the 8-bit stencil buffer can tell apart.
+inline constexpr int kStencilLevels = 255;
+// Geometry closer than this (world units) to a mirror's plane is not reflected: a constant world
+// distance, not a depth bias, so it means the same near and far from the camera.
+inline constexpr double kMirrorClipOffset = 1e-4;
+
+// The target the frame is planned for: mirror coverage is measured in its pixels.
+struct PlanViewport {
+    int width = 1;
+    int height = 1;
+    glm::dvec2 jitterPixels{0.0};
+};
+
+// The camera's projection for this viewport (jittered) and its camera-relative view-projection.
+glm::dmat4 cameraProjection(const FrameInput& input, const PlanViewport& viewport);
 
 // Hash of everything a light's shadow map depends on: the light, its map settings, the frustum and
 // every caster's mesh and transform. Equal signatures mean the old map can be reused.
@@ -23,6 +41,10 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex);
 
 // The pure planning step: which passes run this frame, in order, with the reason for each, and which
 // effects got no pass and why. Needs no GL.
-FramePlan planFrame(const FrameInput& input, const PlannerState& state);
+FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport = {});
+
+// The mirror part of planning: the views of every mirror seen directly or through other mirrors, and the
+// passes that draw them, appended to `plan` in execution order (depth first).
+void planMirrors(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan);
 
 } // namespace speculum::render

@@ -1,3 +1,4 @@
 speculum_add_test(test_gl_shadows TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_shadows.cpp ${CMAKE_CURRENT_LIST_DIR}/test_frame.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_mirrors.cpp
     LIBS speculum_render)

@@ -198,17 +198,21 @@ TEST_F(MainWindowTest, DrawsTheTeapotOnTheMarbleTable) {
     // front of its near edge there is background again.
     const auto table = nodeNamed("Table");
     ASSERT_TRUE(table);
-    const auto& tt = m_window->scene().findNode(*table)->data().transform;
-    // Plane [-1,1]² scaled by (sx, sz): sample the front half, left and right of the centre line.
+    const auto& tableData = m_window->scene().findNode(*table)->data();
+    const auto& tt = tableData.transform;
+    // The table is a mirror rectangle (or a [-1,1]² plane): its half extents, scaled.
+    const glm::dvec2 half = tableData.mirror ? tableData.mirror->size * 0.5 : glm::dvec2(1.0);
+    const glm::dvec3 extent(half.x * tt.scale.x, 0.0, half.y * tt.scale.z);
+    // Sample the front half, left and right of the centre line.
     for (double fx : {-0.5, 0.0, 0.5}) {
-        const glm::dvec3 onTable = tt.translate + glm::dvec3(fx * tt.scale.x, 0.0, 0.7 * tt.scale.z);
+        const glm::dvec3 onTable = tt.translate + glm::dvec3(fx * extent.x, 0.0, 0.7 * extent.z);
         const QPoint p = project(onTable, size);
         ASSERT_TRUE(image.rect().contains(p));
         const Rgb c = patch(image, p, 4);
         EXPECT_GT(c.luminance(), 110.0) << "table at x=" << fx << ": " << c.r << "," << c.g << "," << c.b;
         EXPECT_GT(c.luminance(), bg.luminance() + 50.0);
     }
-    const QPoint beyond = project(tt.translate + glm::dvec3(0.0, 0.0, 1.15 * tt.scale.z), size);
+    const QPoint beyond = project(tt.translate + glm::dvec3(0.0, 0.0, 1.15 * extent.z), size);
     if (image.rect().contains(beyond)) {
         EXPECT_LT(patch(image, beyond, 2).distance(bg), 6.0) << "in front of the table";
     }

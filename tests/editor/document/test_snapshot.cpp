@@ -243,11 +243,17 @@ TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {
     MeshLibrary meshes;
     const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
     EXPECT_TRUE(warnings.empty());
-    ASSERT_EQ(frame.items.size(), 2u);
+    ASSERT_EQ(frame.items.size(), 1u);
     EXPECT_EQ(frame.items[0].name, "Teapot");
     EXPECT_EQ(frame.items[0].material.specular, 0.5);
     EXPECT_EQ(frame.items[0].mesh->triangleCount(), 32u * 8u * 8u * 2u);
-    const QString texture = QString::fromStdString(frame.items[1].material.texturePath);
+    // The marble table is a textured mirror.
+    ASSERT_EQ(frame.mirrors.size(), 1u);
+    EXPECT_EQ(frame.mirrors[0].name, "Table");
+    EXPECT_TRUE(frame.mirrors[0].hasMaterial);
+    EXPECT_EQ(frame.mirrors[0].reflectivity, 0.5);
+    expectNear(glm::dvec3(frame.mirrors[0].size, 0.0), {4, 4, 0});
+    const QString texture = QString::fromStdString(frame.mirrors[0].material.texturePath);
     EXPECT_TRUE(QFileInfo(texture).isAbsolute());
     EXPECT_TRUE(QFileInfo(texture).isFile()) << texture.toStdString();
     ASSERT_EQ(frame.lights.size(), 1u);

@@ -135,12 +135,13 @@ TEST(ShaderLog, CompileErrorsNameTheShaderFileAndLine) {
     std::vector<std::string> files;
     auto text = gl::preprocessShader("mesh.frag", "", files);
     ASSERT_TRUE(text.ok()) << text.error();
-    ASSERT_GE(files.size(), 2u); // mesh.frag includes lighting.glsl
+    ASSERT_GE(files.size(), 3u); // mesh.frag includes material.glsl, which includes lighting.glsl
     EXPECT_EQ(files[0], "mesh.frag");
-    EXPECT_EQ(files[1], "lighting.glsl");
+    EXPECT_EQ(files[1], "material.glsl");
+    EXPECT_EQ(files[2], "lighting.glsl");
     EXPECT_EQ(gl::mapShaderLog("0:12(3): error: `foo' undeclared", files),
               "shaders/mesh.frag:12:3: error: `foo' undeclared\n");
-    EXPECT_EQ(gl::mapShaderLog("1(40) : error C1008: undefined variable", files),
+    EXPECT_EQ(gl::mapShaderLog("2(40) : error C1008: undefined variable", files),
               "shaders/lighting.glsl:40: error C1008: undefined variable\n");
 }
 

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "render/gl/Objects.hpp"
+
+namespace speculum::render::gl {
+
+// A colour texture with a depth-stencil buffer, as one framebuffer: the linear frame buffer every frame is
+// drawn into, and the reflection textures of texture-technique mirrors.
+class RenderTexture {
+public:
+    // (Re)allocates when the size or format changes; `mipmapped` allows blurred lookups.
+    void ensure(int width, int height, GLenum colorFormat, bool mipmapped);
+    void generateMipmaps();
+
+    GLuint framebuffer() const { return m_framebuffer.id(); }
+    GLuint color() const { return m_color.id(); }
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+    int levels() const { return m_levels; }
+
+private:
+    int m_width = 0;
+    int m_height = 0;
+    int m_levels = 1;
+    GLenum m_format = 0;
+    Texture m_color;
+    Renderbuffer m_depthStencil;
+    Framebuffer m_framebuffer;
+};
+
+} // namespace speculum::render::gl

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "render/FrameInput.hpp"
+#include "render/passes/MainPass.hpp"
+#include "render/plan/FramePlan.hpp"
+
+namespace speculum::render::passes {
+
+// The view a mirror view is drawn from: its parent's, or the camera's for index −1.
+ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewIndex,
+                    const glm::dmat4& cameraProjection);
+
+// Stencil technique, step 1: in the parent's view, marks the mirror's visible pixels (those of its parent's
+// stencil level whose depth test passes) with the view's stencil level, and counts them with an occlusion
+// query. Returns false (and marks nothing) if no pixel passed: the mirror is fully hidden. Then resets the
+// depth of the marked pixels to the far plane, so the reflected scene can be drawn there.
+// Texture technique: only counts the visible pixels.
+bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
+                    const gl::Program& maskProgram, const MainPassContext& context, GLuint query);
+
+// Step 3: the mirror's own surface over its reflection, in the parent's view (see shaders/mirror.frag);
+// stencil views also step their pixels back to the parent's stencil level and restore the mirror's depth.
+void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
+                       const gl::Program& surfaceProgram, const MainPassContext& context,
+                       GLuint reflectionTexture, int reflectionLevels, glm::ivec2 targetSize);
+
+// Scissor to a view's pixels.
+void scissorTo(const math::PixelRect& rect);
+
+} // namespace speculum::render::passes
