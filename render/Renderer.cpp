@@ -154,7 +154,7 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     s.linear.ensure(target.width, target.height, GL_RGBA16F, false);
     const glm::dmat4 projection = cameraProjection(input, viewport);
-    const passes::MainPassContext ctx{
+    passes::MainPassContext ctx{
         s.meshProgram,          s.meshes,   s.textures, s.shadows, plan.shadowedLights, s.dummyShadow2D.id(),
         s.dummyShadowCube.id(), s.unitPlane};
 

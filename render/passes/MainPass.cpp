@@ -89,7 +89,8 @@ void setMaterial(const Material& m, const gl::Program& p, const MainPassContext&
 }
 
 void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& p,
-                  const MainPassContext& ctx) {
+                  MainPassContext& ctx) {
+    ctx.mirroredView = glm::determinant(glm::dmat3(view.reflection)) < 0.0;
     const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
     const glm::dmat4 fromCameraRelative = glm::inverse(toCameraRelative);
     p.use();
@@ -105,6 +106,10 @@ void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Prog
 void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInput& input,
                  const gl::Program& p, const MainPassContext& ctx) {
     const glm::dmat4 model = math::cameraRelative(input.camera) * world;
+    // Counter-clockwise stays front-facing unless the object's own transform or the view's reflection
+    // (but not both) mirrors it: negative scales and mirror views both flip the winding.
+    const bool mirrored = (glm::determinant(glm::dmat3(world)) < 0.0) != ctx.mirroredView;
+    glFrontFace(mirrored ? GL_CW : GL_CCW);
     p.set("uModel", glm::mat4(model));
     p.set("uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(model))));
     ctx.meshes.get(mesh).draw();
@@ -115,7 +120,7 @@ glm::dmat4 mirrorRectangle(const Mirror& mirror) {
            glm::scale(glm::dmat4(1.0), glm::dvec3(mirror.size.x * 0.5, 1.0, mirror.size.y * 0.5));
 }
 
-void drawMainPass(const FrameInput& input, const ViewSetup& view, const MainPassContext& ctx) {
+void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& ctx) {
     const gl::Program& p = ctx.program;
     beginLitView(input, view, p, ctx);
     for (const DrawItem& item : input.items) {

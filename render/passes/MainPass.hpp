@@ -26,7 +26,8 @@ struct MainPassContext {
     const std::vector<int>& shadowedLights; // light index per shadow slot
     GLuint dummyShadow2D;
     GLuint dummyShadowCube;
-    MeshHandle unitPlane; // the mirror rectangle: [-1,1]² in XZ
+    MeshHandle unitPlane;      // the mirror rectangle: [-1,1]² in XZ
+    bool mirroredView = false; // set by beginLitView: the view's reflection flips the winding
 };
 
 // How one view sees the scene: the camera's own, or the scene reflected in a mirror.
@@ -40,11 +41,11 @@ struct ViewSetup {
 // Binds the lit-material program and sets everything that is the same for every object of the view:
 // camera, lights, shadow maps.
 void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& program,
-                  const MainPassContext& context);
+                  MainPassContext& context);
 
 // Draws every object with Blinn-Phong lighting and filtered shadows into the bound framebuffer, and the
 // mirrors that got no pass of their own as surfaces of their own material (they reflect nothing).
-void drawMainPass(const FrameInput& input, const ViewSetup& view, const MainPassContext& context);
+void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& context);
 
 // Sets a material's uniforms (and binds its texture) on the bound lit program.
 void setMaterial(const Material& material, const gl::Program& program, const MainPassContext& context);

@@ -79,8 +79,8 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
 }
 
 void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                       const gl::Program& surfaceProgram, const MainPassContext& context,
-                       GLuint reflectionTexture, int reflectionLevels, glm::ivec2 targetSize) {
+                       const gl::Program& surfaceProgram, MainPassContext& context, GLuint reflectionTexture,
+                       int reflectionLevels, glm::ivec2 targetSize) {
     const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
     beginLitView(input, parent, surfaceProgram, context);
     setMaterial(mirror.hasMaterial ? mirror.material : Material{}, surfaceProgram, context);

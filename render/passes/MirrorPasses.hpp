@@ -21,8 +21,8 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
 // Step 3: the mirror's own surface over its reflection, in the parent's view (see shaders/mirror.frag);
 // stencil views also step their pixels back to the parent's stencil level and restore the mirror's depth.
 void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                       const gl::Program& surfaceProgram, const MainPassContext& context,
-                       GLuint reflectionTexture, int reflectionLevels, glm::ivec2 targetSize);
+                       const gl::Program& surfaceProgram, MainPassContext& context, GLuint reflectionTexture,
+                       int reflectionLevels, glm::ivec2 targetSize);
 
 // Scissor to a view's pixels.
 void scissorTo(const math::PixelRect& rect);

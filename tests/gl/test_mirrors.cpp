@@ -279,3 +279,93 @@ INSTANTIATE_TEST_SUITE_P(Techniques, Mirrors,
 
 } // namespace
 } // namespace speculum::test
+
+namespace speculum::test {
+namespace {
+
+using namespace render;
+
+// A lit sphere: with a negative scale its triangles wind the other way, which must not turn its lighting
+// inside out, directly or in a mirror.
+TEST_F(GlTest, NegativeScaleObjectsAreLitTheSameDirectlyAndInMirrors) {
+    auto renderSphere = [&](double sx, bool throughMirror) {
+        FrameInput input;
+        input.settings.background = {0, 0, 0};
+        input.settings.ambient = 0.0;
+        input.camera.position = {0, 0, 4};
+        input.camera.target = {0, 0, 0};
+        input.camera.fovY = 40.0;
+        auto sphere = std::make_shared<const MeshData>(makeSphere(48));
+        DrawItem ball{"Ball", glm::scale(glm::dmat4(1.0), glm::dvec3(sx, 1.0, 1.0)), sphere, {}, false};
+        Light light;
+        light.type = LightType::Directional;
+        light.direction = glm::normalize(glm::dvec3(-1, -0.5, -1));
+        input.lights = {light};
+        if (throughMirror) {
+            // Look at the ball's reflection in a mirror behind the camera-facing side: the ball moves to
+            // the mirror's other side and the camera looks at the mirror.
+            Mirror mirror;
+            mirror.name = "Mirror";
+            mirror.world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -2)),
+                                       glm::radians(90.0), glm::dvec3(1, 0, 0));
+            mirror.size = {8, 8};
+            input.mirrors = {mirror};
+            ball.world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 2)) * ball.world;
+            input.camera.position = {0, 0, 6};
+            input.camera.fovY = 20.0;
+            // Light the side that faces the mirror.
+            input.lights[0].direction = glm::normalize(glm::dvec3(-1, -0.5, 1));
+        }
+        input.items = {ball};
+        return renderImage(input, 96, 96);
+    };
+    for (bool mirror : {false, true}) {
+        const Image positive = renderSphere(1.0, mirror);
+        const Image negative = renderSphere(-1.0, mirror);
+        ASSERT_EQ(positive.rgba.size(), negative.rgba.size());
+        double difference = 0.0, brightness = 0.0;
+        for (std::size_t i = 0; i < positive.rgba.size(); ++i) {
+            difference = std::max(difference, double(std::abs(positive.rgba[i] - negative.rgba[i])));
+            brightness = std::max(brightness, double(positive.rgba[i]));
+        }
+        EXPECT_GT(brightness, 0.5) << "the lit side is visible (mirror: " << mirror << ")";
+        EXPECT_LT(difference, 0.05) << "mirror: " << mirror;
+    }
+}
+
+TEST_F(GlTest, MirrorPartlyOffScreenReflectsOnlyItsVisiblePart) {
+    FrameInput input;
+    input.settings.background = {0, 0, 0};
+    input.camera.position = {0, 0, 4};
+    input.camera.target = {0, 0, 0};
+    input.camera.fovY = 60.0;
+    Mirror mirror;
+    mirror.name = "Mirror";
+    // Centred far to the right: only its left part is on screen.
+    mirror.world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(4, 0, -2)), glm::radians(90.0),
+                               glm::dvec3(1, 0, 0));
+    mirror.size = {6, 3};
+    input.mirrors = {mirror};
+    auto box = std::make_shared<const MeshData>(makeBox());
+    Material red;
+    red.color = {0, 0, 0};
+    red.ambient = red.diffuse = 0.0;
+    red.emission = {1, 0, 0};
+    input.items = {{"Red", glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(2, 0, 0)), glm::dvec3(0.3)),
+                    box, red, false}};
+    const Image image = renderImage(input, 160, 120);
+    ASSERT_EQ(lastReport().plan.views.size(), 1u);
+    const math::PixelRect rect = lastReport().plan.views[0].rect;
+    EXPECT_EQ(rect.x1, 160) << "clamped to the screen";
+    EXPECT_GT(rect.x0, 60);
+    int redPixels = 0;
+    for (float v : image.rgba)
+        ASSERT_TRUE(std::isfinite(v));
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 160; ++x)
+            redPixels += image.at(x, y).r > 0.5f;
+    EXPECT_GT(redPixels, 20);
+}
+
+} // namespace
+} // namespace speculum::test
