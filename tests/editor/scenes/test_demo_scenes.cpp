@@ -1,0 +1,77 @@
+// The demo projects shipped in resources/scenes: each loads without warnings, is already in the form
+// speculum writes (so opening and saving one changes nothing), and snapshots into a renderable frame.
+#include "editor/document/MeshLibrary.hpp"
+#include "editor/document/ProjectFile.hpp"
+#include "editor/document/Snapshot.hpp"
+
+#include <QDir>
+#include <QFile>
+#include <gtest/gtest.h>
+
+namespace speculum::document {
+namespace {
+
+QStringList demoScenes() {
+    const QDir dir(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes"));
+    QStringList paths;
+    for (const QString& name : dir.entryList({"*.speculum.json"}, QDir::Files, QDir::Name))
+        paths << dir.filePath(name);
+    return paths;
+}
+
+TEST(DemoScenes, ThereAreDemoScenes) {
+    EXPECT_TRUE(
+        demoScenes().contains(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json")));
+    EXPECT_TRUE(
+        demoScenes().contains(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json")));
+}
+
+TEST(DemoScenes, EachLoadsCleanlyAndIsInTheFormSpeculumWrites) {
+    for (const QString& path : demoScenes()) {
+        SCOPED_TRACE(path.toStdString());
+        std::vector<std::string> warnings;
+        auto data = loadProject(path, warnings);
+        ASSERT_TRUE(data.ok()) << data.error();
+        EXPECT_TRUE(warnings.empty()) << warnings.front();
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+        EXPECT_EQ(serializeProject(*data, QFileInfo(path).dir()), file.readAll());
+
+        Scene scene;
+        ASSERT_TRUE(openProject(scene, path, warnings).ok());
+        MeshLibrary meshes;
+        warnings.clear();
+        const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+        EXPECT_TRUE(warnings.empty());
+        EXPECT_FALSE(frame.items.empty() && frame.mirrors.empty());
+        EXPECT_FALSE(frame.lights.empty());
+    }
+}
+
+TEST(DemoScenes, MirrorRoomHasTwoFacingMirrorsAndObjectsBetween) {
+    std::vector<std::string> warnings;
+    Scene scene;
+    ASSERT_TRUE(openProject(scene,
+                            QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json"),
+                            warnings)
+                    .ok());
+    MeshLibrary meshes;
+    const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+    ASSERT_GE(frame.mirrors.size(), 3u);
+    // Two of them face each other: opposite normals, each in front of the other.
+    auto normal = [](const render::Mirror& m) {
+        return glm::normalize(glm::dvec3(m.world * glm::dvec4(0, 1, 0, 0)));
+    };
+    bool facing = false;
+    for (const auto& a : frame.mirrors)
+        for (const auto& b : frame.mirrors)
+            if (&a != &b && glm::dot(normal(a), normal(b)) < -0.999) {
+                const glm::dvec3 pa(a.world[3]), pb(b.world[3]);
+                facing |= glm::dot(normal(a), pb - pa) > 0 && glm::dot(normal(b), pa - pb) > 0;
+            }
+    EXPECT_TRUE(facing);
+    EXPECT_GE(frame.items.size(), 3u);
+}
+
+} // namespace
+} // namespace speculum::document
