@@ -1,0 +1,268 @@
+#include "render/envmap/EnvironmentCapture.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cstdio>
+#include <glm/gtc/type_ptr.hpp>
+#include <string>
+
+namespace speculum::render::envmap {
+
+namespace {
+
+int mipLevels(int width, int height) {
+    int levels = 1;
+    for (int size = std::max(width, height); size > 1; size /= 2)
+        ++levels;
+    return levels;
+}
+
+void allocateCube(GLuint texture, int size, GLenum format, bool mipmaps) {
+    glBindTexture(GL_TEXTURE_CUBE_MAP, texture);
+    const int levels = mipmaps ? mipLevels(size, size) : 1;
+    for (int level = 0; level < levels; ++level)
+        for (int face = 0; face < 6; ++face)
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, level, static_cast<GLint>(format),
+                         std::max(1, size >> level), std::max(1, size >> level), 0, GL_RGBA, GL_FLOAT,
+                         nullptr);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER,
+                    mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+}
+
+void allocateArray(GLuint texture, int width, int height, GLenum format, bool mipmaps) {
+    glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+    const int levels = mipmaps ? mipLevels(width, height) : 1;
+    for (int level = 0; level < levels; ++level)
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, level, static_cast<GLint>(format), std::max(1, width >> level),
+                     std::max(1, height >> level), 2, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER,
+                    mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // Clamp: the guard band, not wrapping, supplies the texels past a component's nominal square.
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+}
+
+gl::Renderbuffer makeDepth(int width, int height) {
+    gl::Renderbuffer depth = gl::makeRenderbuffer();
+    glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    return depth;
+}
+
+Status checkFramebuffer(const char* what) {
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status == GL_FRAMEBUFFER_COMPLETE)
+        return Done{};
+    return Error{std::string("environment map: the ") + what + " framebuffer is incomplete (status 0x" +
+                 [status] {
+                     char hex[16];
+                     std::snprintf(hex, sizeof hex, "%x", status);
+                     return std::string(hex);
+                 }() +
+                 ")"};
+}
+
+// The GL state update() and resample() set or that callbacks may change, put back when they end.
+class SavedState {
+public:
+    SavedState() {
+        glGetIntegerv(GL_VIEWPORT, m_viewport);
+        glGetFloatv(GL_COLOR_CLEAR_VALUE, m_clear);
+        glGetIntegerv(GL_FRONT_FACE, &m_frontFace);
+        glGetIntegerv(GL_DEPTH_FUNC, &m_depthFunc);
+        glGetBooleanv(GL_DEPTH_WRITEMASK, &m_depthMask);
+        glGetBooleanv(GL_COLOR_WRITEMASK, m_colorMask);
+        for (std::size_t i = 0; i < kCaps.size(); ++i)
+            m_enabled[i] = glIsEnabled(kCaps[i]);
+    }
+    ~SavedState() {
+        glViewport(m_viewport[0], m_viewport[1], m_viewport[2], m_viewport[3]);
+        glClearColor(m_clear[0], m_clear[1], m_clear[2], m_clear[3]);
+        glFrontFace(static_cast<GLenum>(m_frontFace));
+        glDepthFunc(static_cast<GLenum>(m_depthFunc));
+        glDepthMask(m_depthMask);
+        glColorMask(m_colorMask[0], m_colorMask[1], m_colorMask[2], m_colorMask[3]);
+        for (std::size_t i = 0; i < kCaps.size(); ++i)
+            (m_enabled[i] ? glEnable : glDisable)(kCaps[i]);
+    }
+    SavedState(const SavedState&) = delete;
+    SavedState& operator=(const SavedState&) = delete;
+
+private:
+    static constexpr std::array<GLenum, 5> kCaps{GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST,
+                                                 GL_STENCIL_TEST};
+    GLint m_viewport[4] = {};
+    GLfloat m_clear[4] = {};
+    GLint m_frontFace = GL_CCW;
+    GLint m_depthFunc = GL_LESS;
+    GLboolean m_depthMask = GL_TRUE;
+    GLboolean m_colorMask[4] = {};
+    std::array<GLboolean, 5> m_enabled{};
+};
+
+// A clean target for a callback: whatever the previous callback left enabled is off again.
+void prepareTarget(int width, int height, const glm::dvec3& background) {
+    glViewport(0, 0, width, height);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClearColor(float(background.r), float(background.g), float(background.b), 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+} // namespace
+
+void setWarpUniforms(const gl::Program& program, const WarpPass& pass) {
+    program.set("uEnvWarpType", static_cast<int>(pass.warp.type));
+    program.set("uEnvWarpComponent", pass.warp.component);
+    program.set("uEnvWarpView", glm::mat4(pass.view));
+    program.set("uEnvWarpParams", glm::vec4(pass.warp.packed()));
+    program.set("uEnvWarpFar", static_cast<float>(pass.warp.far));
+}
+
+Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSettings& settings) {
+    assert(settings.resolution >= 8 && "EnvironmentCapture::create(): resolution below 8");
+    EnvironmentCapture capture;
+    capture.m_settings = settings;
+    capture.m_layout = makeLayout(settings.type, settings.resolution);
+    const MapLayout& layout = capture.m_layout;
+    // Seamless filtering across cube faces is a context-wide switch (core since 3.2); pass 2 and the
+    // resampling both rely on it.
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    gl::FramebufferBinding keepBinding;
+    capture.m_framebuffer = gl::makeFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, capture.m_framebuffer.id());
+
+    capture.m_map = gl::makeTexture();
+    capture.m_depth = makeDepth(layout.width, layout.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, capture.m_depth.id());
+    if (settings.type == MapType::Cube) {
+        allocateCube(capture.m_map.id(), layout.width, settings.colorFormat, settings.mipmaps);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
+                               capture.m_map.id(), 0);
+    } else {
+        allocateArray(capture.m_map.id(), layout.width, layout.height, settings.colorFormat,
+                      settings.mipmaps);
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, capture.m_map.id(), 0, 0);
+    }
+    if (Status s = checkFramebuffer("map"); !s)
+        return Error{s.error()};
+
+    if (settings.type != MapType::Cube && settings.fill == FillMethod::Resampled) {
+        const int size = settings.cubeResolution > 0 ? settings.cubeResolution : settings.resolution;
+        capture.m_cube = gl::makeTexture();
+        allocateCube(capture.m_cube.id(), size, settings.colorFormat, settings.mipmaps);
+        capture.m_cubeDepth = makeDepth(size, size);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  capture.m_cubeDepth.id());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
+                               capture.m_cube.id(), 0);
+        if (Status s = checkFramebuffer("intermediate cube"); !s)
+            return Error{s.error()};
+    }
+    if (settings.type != MapType::Cube) {
+        auto program = gl::Program::build("fullscreen.vert", "envmap_resample.glsl");
+        if (!program)
+            return Error{program.error()};
+        capture.m_resample = std::move(*program);
+        capture.m_emptyVao = gl::makeVertexArray();
+    }
+    return capture;
+}
+
+void EnvironmentCapture::renderCube(GLuint cube, int size, GLuint depth, const CaptureView& view,
+                                    const DrawCubeFace& drawFace) {
+    assert(drawFace && "EnvironmentCapture::update(): cube faces need a drawFace callback");
+    glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    for (int face = 0; face < 6; ++face) {
+        glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id()); // the callback may have bound another
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
+                               cube, 0);
+        prepareTarget(size, size, view.background);
+        drawFace(cubeFaceViewProjection(face, view.mapFromWorld, view.near, view.far), face);
+    }
+}
+
+void EnvironmentCapture::renderWarped(const CaptureView& view, const DrawWarped& drawWarped) {
+    assert(drawWarped && "EnvironmentCapture::update(): the direct fill needs a drawWarped callback");
+    glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_depth.id());
+    for (int component = 0; component < 2; ++component) {
+        glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m_map.id(), 0, component);
+        prepareTarget(m_layout.width, m_layout.height, view.background);
+        drawWarped({warpParameters(m_layout, component, view.far), glm::dmat4(view.mapFromWorld)});
+    }
+}
+
+void EnvironmentCapture::finish(GLenum target, GLuint texture) {
+    if (!m_settings.mipmaps)
+        return;
+    glBindTexture(target, texture);
+    glGenerateMipmap(target);
+    glBindTexture(target, 0);
+}
+
+void EnvironmentCapture::update(const CaptureView& view, const DrawCubeFace& drawFace,
+                                const DrawWarped& drawWarped) {
+    assert(m_map && "EnvironmentCapture::update(): not created");
+    gl::FramebufferBinding keepBinding;
+    SavedState keepState;
+    if (m_settings.type == MapType::Cube) {
+        renderCube(m_map.id(), m_layout.width, m_depth.id(), view, drawFace);
+        finish(GL_TEXTURE_CUBE_MAP, m_map.id());
+    } else if (m_settings.fill == FillMethod::Resampled) {
+        const int size = m_settings.cubeResolution > 0 ? m_settings.cubeResolution : m_settings.resolution;
+        renderCube(m_cube.id(), size, m_cubeDepth.id(), view, drawFace);
+        finish(GL_TEXTURE_CUBE_MAP, m_cube.id());
+        resample(m_cube.id()); // the cube was rendered in the map frame
+    } else {
+        renderWarped(view, drawWarped);
+        finish(GL_TEXTURE_2D_ARRAY, m_map.id());
+    }
+}
+
+void EnvironmentCapture::resample(GLuint cubeTexture, const glm::dmat3& cubeFromMap) {
+    assert(m_settings.type != MapType::Cube && "EnvironmentCapture::resample(): a cube map is not resampled");
+    gl::FramebufferBinding keepBinding;
+    SavedState keepState;
+    glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+    prepareTarget(m_layout.width, m_layout.height, glm::dvec3(0.0)); // every texel is written below
+    glDisable(GL_DEPTH_TEST);
+    m_resample.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, cubeTexture);
+    m_resample.set("uEnvCube", 0);
+    m_resample.set("uEnvType", static_cast<int>(m_settings.type));
+    m_resample.set("uEnvLayout", m_layout.packed());
+    m_resample.set("uEnvSize", glm::vec2(m_layout.width, m_layout.height));
+    m_resample.set("uEnvWorldFromMap", glm::mat3(cubeFromMap));
+    glBindVertexArray(m_emptyVao.id());
+    for (int component = 0; component < 2; ++component) {
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m_map.id(), 0, component);
+        m_resample.set("uEnvComponent", component);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    finish(GL_TEXTURE_2D_ARRAY, m_map.id());
+}
+
+} // namespace speculum::render::envmap

@@ -1,0 +1,30 @@
+#include "render/envmap/Layout.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+namespace speculum::render::envmap {
+
+int defaultGuard(int resolution) {
+    // 4 texels at n = 128, 16 at n = 512: the band survives the first log2(g) mip levels, about as far
+    // as a reflector's lookups go before the map is too blurred for a seam to show.
+    return std::max(2, resolution / 32);
+}
+
+MapLayout makeLayout(MapType type, int resolution, int guard) {
+    assert(resolution >= 8 && "envmap::makeLayout(): resolution below 8");
+    MapLayout layout;
+    layout.type = type;
+    layout.resolution = resolution;
+    layout.components = componentCount(type);
+    layout.width = resolution;
+    layout.height = type == MapType::TennisBall ? 3 * resolution : resolution;
+    layout.guard = type == MapType::Cube ? 0 : (guard < 0 ? defaultGuard(resolution) : guard);
+    assert(4 * layout.guard < resolution && "envmap::makeLayout(): guard band too wide");
+    const double g = layout.guard;
+    layout.scale = {(layout.width - 2.0 * g) / layout.width, (layout.height - 2.0 * g) / layout.height};
+    layout.offset = {g / layout.width, g / layout.height};
+    return layout;
+}
+
+} // namespace speculum::render::envmap
