@@ -78,6 +78,18 @@ float shadowVisibility(int slot, vec3 position, vec3 normal, vec3 lightPosition)
         vec3 u = normalize(cross(dir, axis));
         vec3 v = cross(normalize(dir), u);
         float step = length(dir) * 2.0 / float(uShadowMapSize[slot]);
+        // Most pixels are fully lit or fully shadowed: if the kernel's four corner taps agree, take their
+        // verdict and skip the rest (a shadow feature smaller than the kernel between them is missed).
+        if (kernel > 2) {
+            float corners = 0.0;
+            for (int c = 0; c < 4; ++c) {
+                vec2 o = vec2(c & 1, c >> 1) * float(kernel - 1) - halfKernel;
+                vec3 d = dir + (u * o.x + v * o.y) * step;
+                corners += sampleShadowCube(slot, d, cubeDepth(d, uShadowNearFar[slot]));
+            }
+            if (corners == 0.0 || corners == 4.0)
+                return corners * 0.25;
+        }
         for (int j = 0; j < kernel; ++j)
             for (int i = 0; i < kernel; ++i) {
                 vec3 d = dir + (u * (float(i) - halfKernel) + v * (float(j) - halfKernel)) * step;
@@ -92,6 +104,15 @@ float shadowVisibility(int slot, vec3 position, vec3 normal, vec3 lightPosition)
         // (directional) decide the lighting there.
         if (coord.z > 1.0) return 1.0;
         vec2 texelUv = vec2(1.0 / float(uShadowMapSize[slot]));
+        if (kernel > 2) {
+            float corners = 0.0;
+            for (int c = 0; c < 4; ++c) {
+                vec2 o = vec2(c & 1, c >> 1) * float(kernel - 1) - halfKernel;
+                corners += sampleShadow2D(slot, vec3(coord.xy + o * texelUv, coord.z));
+            }
+            if (corners == 0.0 || corners == 4.0)
+                return corners * 0.25;
+        }
         for (int j = 0; j < kernel; ++j)
             for (int i = 0; i < kernel; ++i)
                 sum += sampleShadow2D(slot, vec3(coord.xy + vec2(float(i) - halfKernel, float(j) - halfKernel) * texelUv, coord.z));
