@@ -178,7 +178,7 @@ int SetSettingsCommand::id() const {
 
 bool SetSettingsCommand::mergeWith(const QUndoCommand* other) {
     const auto* next = dynamic_cast<const SetSettingsCommand*>(other);
-    if (!next || !next->m_mergeable || !m_mergeable) {
+    if (!next || !next->m_mergeable || !m_mergeable || next->m_mergeKey != m_mergeKey) {
         return false;
     }
     m_after = next->m_after;
@@ -208,7 +208,7 @@ int SetCameraCommand::id() const {
 
 bool SetCameraCommand::mergeWith(const QUndoCommand* other) {
     const auto* next = dynamic_cast<const SetCameraCommand*>(other);
-    if (!next || !next->m_mergeable || !m_mergeable) {
+    if (!next || !next->m_mergeable || !m_mergeable || next->m_mergeKey != m_mergeKey) {
         return false;
     }
     m_after = next->m_after;

@@ -106,12 +106,16 @@ public:
     void redo() override;
     int id() const override;
     bool mergeWith(const QUndoCommand* other) override;
+    // Mergeable commands merge only with the next one of the same key (empty by default): the inspector
+    // uses "property#gesture" so that one slider drag is one step but two different edits are two.
+    void setMergeKey(const QString& key) { m_mergeKey = key; }
 
 private:
     Scene& m_scene;
     SceneSettings m_before;
     SceneSettings m_after;
     bool m_mergeable;
+    QString m_mergeKey;
 };
 
 // Camera; consecutive mergeable commands merge (one undo step per orbit/pan drag).
@@ -122,12 +126,16 @@ public:
     void redo() override;
     int id() const override;
     bool mergeWith(const QUndoCommand* other) override;
+    // Mergeable commands merge only with the next one of the same key (empty by default): the inspector
+    // uses "property#gesture" so that one slider drag is one step but two different edits are two.
+    void setMergeKey(const QString& key) { m_mergeKey = key; }
 
 private:
     Scene& m_scene;
     CameraData m_before;
     CameraData m_after;
     bool m_mergeable;
+    QString m_mergeKey;
 };
 
 } // namespace speculum::document

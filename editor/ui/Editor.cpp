@@ -50,8 +50,13 @@ int runEditor(int& argc, char** argv, const std::string& projectPath) {
         return takeScreenshot(window, screenshot);
     }
 
+    window.restoreLayout();
     window.clock().setPlaying(true); // a live view; Space pauses
     window.show();
+    if (openError.isEmpty() && projectPath.empty()) {
+        // A previous session that crashed left unsaved work: offer it (only when no file was asked for).
+        QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
+    }
     if (!openError.isEmpty()) {
         // After the window is up, so the box has a parent on screen; the empty document stays open.
         QTimer::singleShot(0, &window, [&window, openError, projectPath] {

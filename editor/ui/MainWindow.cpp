@@ -1,19 +1,27 @@
 #include "editor/ui/MainWindow.hpp"
 
+#include "editor/document/ModelFormats.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/AnimationClock.hpp"
+#include "editor/ui/Inspector.hpp"
+#include "editor/ui/RenderPassesPanel.hpp"
+#include "editor/ui/SceneTreeModel.hpp"
+#include "editor/ui/SceneTreePanel.hpp"
+#include "editor/ui/Selection.hpp"
 #include "editor/ui/Viewport.hpp"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileDialog>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileInfo>
 #include <QLabel>
-#include <QMenuBar>
+#include <QMenu>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QPlainTextEdit>
 #include <QSettings>
 #include <QStandardPaths>
@@ -24,9 +32,12 @@ namespace speculum::ui {
 
 namespace {
 
-const QString kProjectSuffix = QStringLiteral(".speculum.json");
-const QString kProjectFilter = QObject::tr("speculum projects (*.speculum.json);;JSON files (*.json)");
 const QString kLastFolderKey = QStringLiteral("files/lastFolder");
+const QString kRecentKey = QStringLiteral("files/recent");
+const QString kGeometryKey = QStringLiteral("window/geometry");
+const QString kStateKey = QStringLiteral("window/state");
+constexpr int kMaxRecent = 8;
+constexpr int kAutosaveMs = 30000;
 
 } // namespace
 
@@ -34,24 +45,45 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
     , m_scene(new document::Scene(this))
     , m_undoStack(new QUndoStack(this))
-    , m_clock(new AnimationClock(this)) {
+    , m_clock(new AnimationClock(this))
+    , m_recovery(std::make_unique<document::RecoveryStore>(document::RecoveryStore::forThisProcess())) {
+    m_selection = new Selection(*m_scene, this);
     m_viewport = new Viewport(*m_scene, *m_clock, this);
+    m_viewport->setEditing(m_selection, m_undoStack);
     setCentralWidget(m_viewport);
+    setAcceptDrops(true);
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks |
+                   QMainWindow::AllowNestedDocks);
 
     createActions();
+    createDocks();
     createStatusBar();
-    createLogDock();
 
     connect(m_undoStack, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_scene, &document::Scene::projectPathChanged, this, &MainWindow::updateTitle);
+    connect(m_selection, &Selection::changed, this, &MainWindow::updateEditActions);
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::onFrameRendered);
     connect(m_viewport, &Viewport::warningsChanged, this, &MainWindow::onWarningsChanged);
     connect(m_viewport, &Viewport::rendererFailed, this, &MainWindow::logMessage);
+    connect(m_inspector, &Inspector::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+
+    m_autosave.setInterval(kAutosaveMs);
+    connect(&m_autosave, &QTimer::timeout, this, [this] { autosaveNow(); });
+    m_autosave.start();
 
     newProject();
 }
 
 MainWindow::~MainWindow() = default;
+
+QAction* MainWindow::action(const QString& objectName) const {
+    return findChild<QAction*>(objectName);
+}
+
+bool MainWindow::isModified() const {
+    return !m_undoStack->isClean() || m_restoredUnsaved;
+}
 
 // ---- document operations without dialogs ----
 
@@ -66,10 +98,13 @@ render::Status MainWindow::openProjectFile(const QString& path) {
     // The old document's commands refer to nodes that no longer exist.
     m_undoStack->clear();
     m_undoStack->setClean();
+    m_restoredUnsaved = false;
+    m_recovery->discard();
     for (const auto& w : warnings) {
         logMessage(QString::fromStdString(w));
     }
     QSettings().setValue(kLastFolderKey, QFileInfo(absolute).absolutePath());
+    addRecentFile(absolute);
     logMessage(tr("Opened %1").arg(absolute));
     statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(absolute).fileName()), 5000);
     updateTitle();
@@ -85,7 +120,10 @@ render::Status MainWindow::saveProjectFile(const QString& path) {
     }
     m_scene->setProjectPath(absolute);
     m_undoStack->setClean();
+    m_restoredUnsaved = false;
+    m_recovery->discard(); // saved: nothing left to recover
     QSettings().setValue(kLastFolderKey, QFileInfo(absolute).absolutePath());
+    addRecentFile(absolute);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(absolute).fileName()), 5000);
     updateTitle();
     return status;
@@ -96,6 +134,8 @@ void MainWindow::newProject() {
     m_scene->setProjectPath(QString());
     m_undoStack->clear();
     m_undoStack->setClean();
+    m_restoredUnsaved = false;
+    m_recovery->discard();
     m_clock->setTime(0.0);
     updateTitle();
 }
@@ -108,66 +148,131 @@ void MainWindow::logMessage(const QString& message) {
     qInfo("%s", qPrintable(message));
 }
 
-// ---- menu actions ----
+// ---- recovery ----
 
-void MainWindow::onNew() {
-    if (maybeSave()) {
-        newProject();
-    }
+void MainWindow::setRecoveryStore(const document::RecoveryStore& store) {
+    m_recovery = std::make_unique<document::RecoveryStore>(store);
 }
 
-void MainWindow::onOpen() {
-    if (!maybeSave()) {
+render::Status MainWindow::autosaveNow() {
+    if (!isModified()) {
+        return render::Done{};
+    }
+    render::Status status = m_recovery->write(m_scene->toData(), m_scene->projectPath());
+    if (!status) {
+        logMessage(tr("Autosave failed: %1").arg(QString::fromStdString(status.error())));
+    }
+    return status;
+}
+
+render::Status MainWindow::restoreRecovery(const document::RecoveryStore::Recovered& recovered) {
+    std::vector<std::string> warnings;
+    auto data = document::RecoveryStore::load(recovered, warnings);
+    if (!data) {
+        return render::Error{data.error()};
+    }
+    m_scene->reset(std::move(*data));
+    m_scene->setProjectPath(recovered.originalPath);
+    m_undoStack->clear();
+    m_undoStack->setClean();
+    m_restoredUnsaved = true;
+    document::RecoveryStore::remove(recovered);
+    autosaveNow(); // this session now owns the unsaved document
+    logMessage(
+        tr("Restored unsaved changes of %1 from %2")
+            .arg(recovered.originalPath.isEmpty() ? tr("an untitled document") : recovered.originalPath,
+                 recovered.savedAt.toLocalTime().toString()));
+    updateTitle();
+    return render::Done{};
+}
+
+void MainWindow::offerRecovery() {
+    const auto orphans = m_recovery->orphans();
+    if (orphans.empty()) {
         return;
     }
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open Project"), dialogFolder(), kProjectFilter);
-    if (path.isEmpty()) {
+    const auto& newest = orphans.front();
+    const QString name = newest.originalPath.isEmpty() ? tr("an untitled document")
+                                                       : QFileInfo(newest.originalPath).fileName();
+    const auto answer = QMessageBox::question(
+        this, tr("Recover Unsaved Changes"),
+        tr("speculum did not shut down properly. Unsaved changes to %1 from %2 were kept.\n\n"
+           "Do you want to restore them?")
+            .arg(name, newest.savedAt.toLocalTime().toString(QLocale().dateTimeFormat(QLocale::ShortFormat))),
+        QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+    if (answer == QMessageBox::Yes) {
+        if (auto status = restoreRecovery(newest); !status) {
+            QMessageBox::critical(this, tr("Recover Unsaved Changes"),
+                                  QString::fromStdString(status.error()));
+        }
+    } else {
+        document::RecoveryStore::remove(newest);
+    }
+    for (std::size_t i = 1; i < orphans.size(); ++i) {
+        document::RecoveryStore::remove(orphans[i]); // older ones: only the newest is offered
+    }
+}
+
+// ---- layout and recent files ----
+
+void MainWindow::restoreLayout() {
+    QSettings settings;
+    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kStateKey).toByteArray());
+}
+
+QStringList MainWindow::recentFiles() const {
+    return QSettings().value(kRecentKey).toStringList();
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QStringList files = recentFiles();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecent) {
+        files.removeLast();
+    }
+    QSettings().setValue(kRecentKey, files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    if (!m_recentMenu) {
         return;
     }
-    render::Status status = openProjectFile(path);
-    if (!status) {
-        // The error names the JSON path of the problem; the current document is unchanged.
-        QMessageBox::critical(this, tr("Open Project"),
-                              tr("Could not open %1:\n\n%2")
-                                  .arg(QFileInfo(path).fileName(), QString::fromStdString(status.error())));
+    m_recentMenu->clear();
+    const QStringList files = recentFiles();
+    int n = 0;
+    for (const QString& file : files) {
+        QAction* a =
+            m_recentMenu->addAction(QStringLiteral("&%1 %2").arg(++n).arg(QFileInfo(file).fileName()));
+        a->setToolTip(file);
+        a->setStatusTip(file);
+        connect(a, &QAction::triggered, this, [this, file] {
+            if (!maybeSave()) {
+                return;
+            }
+            if (auto status = openProjectFile(file); !status) {
+                QMessageBox::critical(
+                    this, tr("Open Project"),
+                    tr("Could not open %1:\n\n%2").arg(file, QString::fromStdString(status.error())));
+            }
+        });
     }
+    if (!files.isEmpty()) {
+        m_recentMenu->addSeparator();
+        m_recentMenu->addAction(tr("Clear Recent Files"), this, [this] {
+            QSettings().remove(kRecentKey);
+            rebuildRecentMenu();
+        });
+    }
+    m_recentMenu->setEnabled(!files.isEmpty());
 }
 
-bool MainWindow::onSave() {
-    if (m_scene->projectPath().isEmpty()) {
-        return onSaveAs();
-    }
-    render::Status status = saveProjectFile(m_scene->projectPath());
-    if (!status) {
-        QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::onSaveAs() {
-    QString suggestion = m_scene->projectPath();
-    if (suggestion.isEmpty()) {
-        suggestion = dialogFolder() + QStringLiteral("/untitled") + kProjectSuffix;
-    }
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"), suggestion, kProjectFilter);
-    if (path.isEmpty()) {
-        return false;
-    }
-    if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
-        path += kProjectSuffix;
-    }
-    render::Status status = saveProjectFile(path);
-    if (!status) {
-        QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
-        return false;
-    }
-    return true;
-}
+// ---- closing, drag and drop ----
 
 bool MainWindow::maybeSave() {
-    if (m_undoStack->isClean()) {
+    if (!isModified()) {
         return true;
     }
     const auto answer = QMessageBox::warning(
@@ -185,9 +290,50 @@ bool MainWindow::maybeSave() {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (maybeSave()) {
+        QSettings settings;
+        settings.setValue(kGeometryKey, saveGeometry());
+        settings.setValue(kStateKey, saveState());
+        m_recovery->discard(); // a clean exit: nothing to recover next time
         event->accept();
     } else {
         event->ignore();
+    }
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    const QMimeData* mime = event->mimeData();
+    if (!mime->hasUrls()) {
+        return;
+    }
+    for (const QUrl& url : mime->urls()) {
+        const QString path = url.toLocalFile();
+        if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive) ||
+            document::isImportableModel(path)) {
+            event->acceptProposedAction();
+            return;
+        }
+    }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    QStringList failures;
+    for (const QUrl& url : event->mimeData()->urls()) {
+        const QString path = url.toLocalFile();
+        if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+            if (maybeSave()) {
+                if (auto status = openProjectFile(path); !status) {
+                    failures << QString::fromStdString(status.error());
+                }
+            }
+        } else if (document::isImportableModel(path)) {
+            if (auto status = importModelFile(path); !status) {
+                failures << QString::fromStdString(status.error());
+            }
+        }
+    }
+    event->acceptProposedAction();
+    if (!failures.isEmpty()) {
+        QMessageBox::critical(this, tr("Import"), failures.join(QLatin1Char('\n')));
     }
 }
 
@@ -204,26 +350,7 @@ void MainWindow::updateTitle() {
         m_scene->projectPath().isEmpty() ? tr("Untitled") : QFileInfo(m_scene->projectPath()).fileName();
     // "[*]" is where Qt shows the modified marker.
     setWindowTitle(tr("%1[*] — speculum").arg(name));
-    setWindowModified(!m_undoStack->isClean());
-}
-
-void MainWindow::showControls() {
-    QMessageBox::information(this, tr("Viewport Controls"),
-                             tr("<table>"
-                                "<tr><td><b>Left drag</b></td><td>orbit around the camera target</td></tr>"
-                                "<tr><td><b>Middle drag</b> or <b>Shift+left drag</b></td><td>pan</td></tr>"
-                                "<tr><td><b>Mouse wheel</b></td><td>zoom</td></tr>"
-                                "<tr><td><b>Double-click</b></td><td>back to the scene camera</td></tr>"
-                                "<tr><td><b>Space</b></td><td>play / pause the animation</td></tr>"
-                                "</table><p>Moving the view does not change the document.</p>"));
-}
-
-void MainWindow::showAbout() {
-    QMessageBox::about(
-        this, tr("About speculum"),
-        tr("<h3>speculum %1</h3><p>A scene editor for reflections: planar mirrors and "
-           "environment-mapped curved reflectors, measured against a ray-traced reference.</p>")
-            .arg(QApplication::applicationVersion()));
+    setWindowModified(isModified());
 }
 
 // ---- status bar and log ----
@@ -233,8 +360,12 @@ void MainWindow::onFrameRendered(const render::FrameReport& report, double anima
     if (report.gpuMs >= 0.0) {
         text += tr(" · GPU %1 ms").arg(report.gpuMs, 0, 'f', 2);
     }
+    if (m_viewport->framesPerSecond() > 0.0) {
+        text += tr(" · %1 fps").arg(m_viewport->framesPerSecond(), 0, 'f', 1);
+    }
     m_frameLabel->setText(text);
     m_timeLabel->setText(tr("t = %1 s").arg(animationTime, 0, 'f', 2));
+    m_passesPanel->showReport(report);
 }
 
 void MainWindow::onWarningsChanged(const QStringList& warnings) {
@@ -246,76 +377,60 @@ void MainWindow::onWarningsChanged(const QStringList& warnings) {
     }
 }
 
-// ---- construction ----
-
-void MainWindow::createActions() {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    QAction* newAction = file->addAction(tr("&New"), this, &MainWindow::onNew);
-    newAction->setShortcut(QKeySequence::New);
-    QAction* openAction = file->addAction(tr("&Open…"), this, &MainWindow::onOpen);
-    openAction->setShortcut(QKeySequence::Open);
-    QAction* saveAction = file->addAction(tr("&Save"), this, &MainWindow::onSave);
-    saveAction->setShortcut(QKeySequence::Save);
-    QAction* saveAsAction = file->addAction(tr("Save &As…"), this, &MainWindow::onSaveAs);
-    saveAsAction->setShortcut(QKeySequence::SaveAs);
-    file->addSeparator();
-    QAction* quitAction = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quitAction->setShortcut(QKeySequence::Quit);
-    quitAction->setMenuRole(QAction::QuitRole);
-
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = m_undoStack->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = m_undoStack->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
-    edit->addAction(undo);
-    edit->addAction(redo);
-
-    QMenu* view = menuBar()->addMenu(tr("&View"));
-    m_playAction = view->addAction(tr("&Play Animation"));
-    m_playAction->setCheckable(true);
-    m_playAction->setShortcut(Qt::Key_Space);
-    // The viewport has focus most of the time; the shortcut must work from anywhere in the window.
-    m_playAction->setShortcutContext(Qt::WindowShortcut);
-    connect(m_playAction, &QAction::toggled, m_clock, &AnimationClock::setPlaying);
-    connect(m_clock, &AnimationClock::playingChanged, m_playAction, &QAction::setChecked);
-    QAction* rewind = view->addAction(tr("&Rewind Animation"), m_clock, [this] { m_clock->setTime(0.0); });
-    rewind->setShortcut(Qt::Key_Home);
-    QAction* resetView = view->addAction(tr("Reset &View"), m_viewport, &Viewport::resetView);
-    resetView->setShortcut(Qt::Key_F);
-    view->addSeparator();
-    m_viewMenu = view;
-
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("Viewport &Controls"), this, &MainWindow::showControls);
-    QAction* about = help->addAction(tr("&About speculum"), this, &MainWindow::showAbout);
-    about->setMenuRole(QAction::AboutRole);
-}
-
 void MainWindow::createStatusBar() {
     m_frameLabel = new QLabel(this);
+    m_frameLabel->setObjectName(QStringLiteral("frameLabel"));
     m_timeLabel = new QLabel(this);
-    m_frameLabel->setMinimumWidth(200);
+    m_frameLabel->setMinimumWidth(260);
     m_timeLabel->setMinimumWidth(90);
     statusBar()->addPermanentWidget(m_frameLabel);
     statusBar()->addPermanentWidget(m_timeLabel);
 }
 
-void MainWindow::createLogDock() {
-    auto* dock = new QDockWidget(tr("Log"), this);
-    dock->setObjectName(QStringLiteral("logDock"));
-    m_log = new QPlainTextEdit(dock);
+void MainWindow::createDocks() {
+    m_treeModel = new SceneTreeModel(*m_scene, *m_undoStack, this);
+    m_treePanel = new SceneTreePanel(*m_treeModel, *m_selection, this);
+    auto* treeDock = new QDockWidget(tr("Scene"), this);
+    treeDock->setObjectName(QStringLiteral("sceneDock"));
+    treeDock->setWidget(m_treePanel);
+    addDockWidget(Qt::LeftDockWidgetArea, treeDock);
+    m_treePanel->setContextActions({m_renameAction, m_duplicateAction, m_deleteAction, nullptr,
+                                    action(QStringLiteral("actionFrameSelected"))},
+                                   m_addMenu);
+
+    m_inspector = new Inspector(*m_scene, *m_undoStack, *m_selection, this);
+    auto* inspectorDock = new QDockWidget(tr("Properties"), this);
+    inspectorDock->setObjectName(QStringLiteral("inspectorDock"));
+    inspectorDock->setWidget(m_inspector);
+    addDockWidget(Qt::RightDockWidgetArea, inspectorDock);
+
+    m_passesPanel = new RenderPassesPanel(this);
+    auto* passesDock = new QDockWidget(tr("Render Passes"), this);
+    passesDock->setObjectName(QStringLiteral("passesDock"));
+    passesDock->setWidget(m_passesPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, passesDock);
+    splitDockWidget(treeDock, passesDock, Qt::Vertical);
+
+    auto* logDock = new QDockWidget(tr("Log"), this);
+    logDock->setObjectName(QStringLiteral("logDock"));
+    m_log = new QPlainTextEdit(logDock);
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(2000);
     for (const QString& line : m_logLines) {
         m_log->appendPlainText(line);
     }
-    dock->setWidget(m_log);
-    addDockWidget(Qt::BottomDockWidgetArea, dock);
-    dock->hide();
-    QAction* toggle = dock->toggleViewAction();
-    toggle->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
-    m_viewMenu->addAction(toggle);
+    logDock->setWidget(m_log);
+    addDockWidget(Qt::BottomDockWidgetArea, logDock);
+    logDock->hide();
+
+    resizeDocks({treeDock, inspectorDock}, {240, 320}, Qt::Horizontal);
+    resizeDocks({treeDock, passesDock}, {300, 200}, Qt::Vertical);
+
+    m_viewMenu->addSeparator();
+    for (QDockWidget* dock : {treeDock, inspectorDock, passesDock, logDock}) {
+        m_viewMenu->addAction(dock->toggleViewAction());
+    }
+    logDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
 }
 
 } // namespace speculum::ui

@@ -1,10 +1,15 @@
 #pragma once
 
+#include "editor/document/NodeFactory.hpp"
+#include "editor/document/Recovery.hpp"
+#include "editor/document/StillExport.hpp"
 #include "render/Result.hpp"
 
 #include <QMainWindow>
 #include <QString>
 #include <QStringList>
+#include <QTimer>
+#include <memory>
 
 class QAction;
 class QLabel;
@@ -22,14 +27,20 @@ struct FrameReport;
 namespace speculum::ui {
 
 class AnimationClock;
+class Inspector;
+class RenderPassesPanel;
+class SceneTreeModel;
+class SceneTreePanel;
+class Selection;
 class Viewport;
 
-// The editor's top-level window: owns the open document (Scene + its undo stack), the animation clock and
-// the viewport, and the File/Edit/View/Help menus.
+// The editor's top-level window: owns the open document (Scene + its undo stack), the selection, the
+// animation clock and the viewport, with the Scene, Properties, Render passes and Log docks around it and
+// the File/Edit/Add/View/Help menus.
 //
-// The file operations come in two layers: openProjectFile()/saveProjectFile()/newProject() do the work
-// and return a Status without any dialog (for tests and scripted use); the menu actions add the file
-// dialogs, the unsaved-changes prompt and the error boxes.
+// Operations come in two layers: the public functions below do the work and return a Status without any
+// dialog (for tests and scripted use); the menu actions add file dialogs, prompts and error boxes.
+// Every menu action has an objectName ("actionSave", "addMirror", ...) so tests can trigger it.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -41,6 +52,13 @@ public:
     QUndoStack& undoStack() { return *m_undoStack; }
     Viewport& viewport() { return *m_viewport; }
     AnimationClock& clock() { return *m_clock; }
+    Selection& selection() { return *m_selection; }
+    Inspector& inspector() { return *m_inspector; }
+    SceneTreePanel& sceneTree() { return *m_treePanel; }
+    SceneTreeModel& sceneTreeModel() { return *m_treeModel; }
+    RenderPassesPanel& passesPanel() { return *m_passesPanel; }
+    // A menu action by object name, or null.
+    QAction* action(const QString& objectName) const;
 
     // Loads a project; on failure the open document stays exactly as it was and the error (which names
     // the JSON path or the file problem) is returned. Load warnings go to the log.
@@ -49,6 +67,38 @@ public:
     render::Status saveProjectFile(const QString& path);
     // Replaces the document with an empty scene (no prompt).
     void newProject();
+    // Unsaved changes: edits since the last save, or a document restored from a recovery file.
+    bool isModified() const;
+
+    // Adds a node of the Add menu where the view looks, selects it; one undo step.
+    render::Status addNode(document::NewNodeKind kind);
+    // Imports a model file (any format Assimp reads) as a new node; asReflector makes it the curved
+    // reflector's surface. Fails when the file cannot be read.
+    render::Status importModelFile(const QString& path, bool asReflector = false);
+    render::Status deleteSelected();
+    render::Status duplicateSelected();
+
+    // File ▸ Export Scene as glTF 2.0.
+    render::Status exportGltfFile(const QString& path);
+    // File ▸ Export Still, without the dialog: renders on the viewport's context with the same code as
+    // `speculum render`. `progress` may cancel (return false).
+    render::Result<document::StillExportResult>
+    exportStillFile(const QString& path, const document::StillExportSettings& settings,
+                    const render::ProgressCallback& progress = {});
+
+    // Crash recovery. The store defaults to RecoveryStore::forThisProcess(); tests use their own folder.
+    void setRecoveryStore(const document::RecoveryStore& store);
+    const document::RecoveryStore& recoveryStore() const { return *m_recovery; }
+    // Writes the recovery file now if there are unsaved changes (the timer does it every 30 s).
+    render::Status autosaveNow();
+    // Loads an orphaned recovery file as the open document, marked modified and titled as its project.
+    render::Status restoreRecovery(const document::RecoveryStore::Recovered& recovered);
+    // At start-up: asks whether to restore documents of a crashed session (declined ones are removed).
+    void offerRecovery();
+
+    // Window layout and dock state from the last session (QSettings).
+    void restoreLayout();
+    QStringList recentFiles() const;
 
     // Appends a line to the log panel (and stderr).
     void logMessage(const QString& message);
@@ -56,33 +106,58 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private slots:
     void onNew();
     void onOpen();
     bool onSave();
     bool onSaveAs();
+    void onImportModel(bool asReflector);
+    void onExportGltf();
+    void onExportStill();
     void showControls();
     void showAbout();
     void updateTitle();
+    void updateEditActions();
     void onFrameRendered(const speculum::render::FrameReport& report, double animationTime);
     void onWarningsChanged(const QStringList& warnings);
 
 private:
     void createActions();
+    void createAddMenu();
     void createStatusBar();
-    void createLogDock();
+    void createDocks();
+    void rebuildRecentMenu();
+    void addRecentFile(const QString& path);
+    render::Status addTree(document::NodeTree tree);
     // Asks to save unsaved changes. Returns false when the user cancels (or saving fails).
     bool maybeSave();
     QString dialogFolder() const;
+    QAction* makeAction(QMenu* menu, const QString& name, const QString& text,
+                        const QKeySequence& shortcut = {});
 
     document::Scene* m_scene = nullptr;
     QUndoStack* m_undoStack = nullptr;
     AnimationClock* m_clock = nullptr;
+    Selection* m_selection = nullptr;
     Viewport* m_viewport = nullptr;
+    SceneTreeModel* m_treeModel = nullptr;
+    SceneTreePanel* m_treePanel = nullptr;
+    Inspector* m_inspector = nullptr;
+    RenderPassesPanel* m_passesPanel = nullptr;
+    std::unique_ptr<document::RecoveryStore> m_recovery;
+    QTimer m_autosave;
+    bool m_restoredUnsaved = false; // a recovered document counts as modified until saved
 
     QMenu* m_viewMenu = nullptr;
+    QMenu* m_addMenu = nullptr;
+    QMenu* m_recentMenu = nullptr;
     QAction* m_playAction = nullptr;
+    QAction* m_deleteAction = nullptr;
+    QAction* m_duplicateAction = nullptr;
+    QAction* m_renameAction = nullptr;
     QLabel* m_frameLabel = nullptr;
     QLabel* m_timeLabel = nullptr;
     QPlainTextEdit* m_log = nullptr;

@@ -68,4 +68,19 @@ void ViewCamera::zoom(double factor) {
     m_camera.far = m_baseFar + std::max(0.0, newDistance - m_baseDistance);
 }
 
+void ViewCamera::frame(const glm::dvec3& center, double radius, double aspect) {
+    if (!(radius > 0.0) || !std::isfinite(radius)) {
+        radius = 1.0;
+    }
+    const glm::dvec3 forward = safeNormalize(m_camera.target - m_camera.position, {0.0, 0.0, -1.0});
+    const double halfY = glm::radians(m_camera.fovY) * 0.5;
+    const double halfX = std::atan(std::tan(halfY) * std::max(aspect, 1e-3));
+    const double distance = std::max(radius / std::sin(std::min(halfX, halfY)) * 1.1, m_camera.near * 2.0);
+    m_camera.target = center;
+    m_camera.position = center - forward * distance;
+    m_camera.far = std::max(m_camera.far, distance + radius * 2.0);
+    m_baseFar = std::max(m_baseFar, m_camera.far);
+    m_baseDistance = std::max(m_baseDistance, distance);
+}
+
 } // namespace speculum::ui

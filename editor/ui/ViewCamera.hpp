@@ -21,6 +21,9 @@ public:
     void pan(double rightFraction, double upFraction);
     // Multiplies the distance to the target by factor (> 0).
     void zoom(double factor);
+    // Looks at center from the current direction, close enough that a sphere of `radius` fills the view
+    // (aspect = width / height; the narrower field of view decides). The far plane grows to keep it.
+    void frame(const glm::dvec3& center, double radius, double aspect);
 
 private:
     render::Camera m_camera;

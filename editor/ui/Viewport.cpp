@@ -1,16 +1,36 @@
 #include "editor/ui/Viewport.hpp"
 
+#include "editor/document/Commands.hpp"
+#include "editor/document/NodeMath.hpp"
+#include "editor/document/PickScene.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/document/Snapshot.hpp"
 #include "editor/ui/AnimationClock.hpp"
+#include "editor/ui/Selection.hpp"
+#include "editor/ui/ViewportOverlay.hpp"
+#include "render/math/Projection.hpp"
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
+#include <QUndoStack>
 #include <QWheelEvent>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace speculum::ui {
+
+namespace {
+
+constexpr double kClickSlopPixels = 4.0; // a press that moves less than this is a click, not a drag
+constexpr double kLightPickPixels = 12.0;
+
+const QColor kAxisColors[3] = {QColor(230, 70, 70), QColor(90, 200, 80), QColor(70, 130, 240)};
+const QColor kActiveColor(255, 220, 60);
+const QColor kSelectionColor(255, 150, 40);
+
+} // namespace
 
 Viewport::Viewport(document::Scene& scene, AnimationClock& clock, QWidget* parent)
     : QOpenGLWidget(parent)
@@ -18,7 +38,10 @@ Viewport::Viewport(document::Scene& scene, AnimationClock& clock, QWidget* paren
     , m_clock(clock) {
     setMinimumSize(160, 120);
     setFocusPolicy(Qt::ClickFocus);
+    setMouseTracking(true); // handle hover highlight
+    setObjectName(QStringLiteral("viewport"));
     m_view.reset(document::toRender(m_scene.camera()));
+    m_overlay = new ViewportOverlay(*this);
 
     connect(&m_scene, &document::Scene::changed, this, qOverload<>(&Viewport::update));
     // A camera edit or a newly opened document: show the document's camera again.
@@ -42,9 +65,80 @@ Viewport::~Viewport() {
     releaseGlResources();
 }
 
+void Viewport::setEditing(Selection* selection, QUndoStack* undoStack) {
+    m_selection = selection;
+    m_undoStack = undoStack;
+    if (selection) {
+        connect(selection, &Selection::changed, this, [this] {
+            m_hoverAxis = -1;
+            m_overlay->update();
+        });
+    }
+}
+
+void Viewport::setHandleMode(HandleMode mode) {
+    if (mode == m_handleMode) {
+        return;
+    }
+    m_handleMode = mode;
+    m_hoverAxis = -1;
+    m_overlay->update();
+    emit handleModeChanged(mode);
+}
+
+void Viewport::setLookThroughSceneCamera(bool on) {
+    m_sceneCameraMode = on;
+    if (on) {
+        resetView();
+    }
+}
+
 void Viewport::resetView() {
     m_view.reset(document::toRender(m_scene.camera()));
     update();
+}
+
+void Viewport::frameSelected() {
+    const double t = m_clock.time();
+    const auto worlds = document::worldMatrices(m_scene, t);
+    render::math::Box box;
+    std::vector<std::string> ignored;
+    auto addNode = [&](const document::Node& node) {
+        const auto it = worlds.find(node.id());
+        if (it == worlds.end()) {
+            return;
+        }
+        const document::NodeData& d = node.data();
+        const glm::dmat4& world = it->second;
+        bool added = false;
+        if (d.mesh) {
+            if (auto mesh = m_meshes.get(*d.mesh, ignored)) {
+                box.add(render::math::worldBounds(render::computeBounds(**mesh), world));
+                added = true;
+            }
+        }
+        if (d.mirror) {
+            const glm::vec2 h = glm::vec2(d.mirror->size * 0.5);
+            box.add(render::math::worldBounds(render::Bounds{{-h.x, 0.0f, -h.y}, {h.x, 0.0f, h.y}}, world));
+            added = true;
+        }
+        if (!added) {
+            const glm::dvec3 p(world[3]);
+            box.add(p - glm::dvec3(0.5));
+            box.add(p + glm::dvec3(0.5));
+        }
+    };
+    if (m_selection && m_selection->selectedNode()) {
+        addNode(*m_selection->selectedNode());
+    } else {
+        m_scene.forEachNode(addNode);
+    }
+    if (box.empty()) {
+        return;
+    }
+    const double radius = std::max(glm::length(box.max - box.min) * 0.5, 1e-3);
+    m_view.frame(box.center(), radius, double(width()) / std::max(height(), 1));
+    navigated();
 }
 
 void Viewport::updateTicking() {
@@ -112,6 +206,16 @@ void Viewport::paintGL() {
     m_lastFrameTime = time;
     ++m_framesRendered;
 
+    if (!m_fpsTimer.isValid()) {
+        m_fpsTimer.start();
+    }
+    ++m_fpsFrames;
+    if (m_fpsTimer.elapsed() >= 1000) {
+        m_fps = m_fpsFrames * 1000.0 / double(m_fpsTimer.elapsed());
+        m_fpsFrames = 0;
+        m_fpsTimer.restart();
+    }
+
     QStringList all;
     for (const auto& w : warnings) {
         all << QString::fromStdString(w);
@@ -120,7 +224,13 @@ void Viewport::paintGL() {
         all << QString::fromStdString(w);
     }
     reportWarnings(std::move(all));
+    m_overlay->update(); // handles follow animated nodes
     emit frameRendered(m_lastReport, time);
+}
+
+void Viewport::resizeEvent(QResizeEvent* event) {
+    QOpenGLWidget::resizeEvent(event);
+    m_overlay->setGeometry(rect());
 }
 
 void Viewport::paintError() {
@@ -139,27 +249,268 @@ void Viewport::reportWarnings(QStringList warnings) {
     emit warningsChanged(m_warnings);
 }
 
+ScreenProjection Viewport::projection() const {
+    return ScreenProjection(m_view.camera(), QSizeF(width(), height()));
+}
+
+void Viewport::updateGizmo() {
+    const document::Node* node = m_selection ? m_selection->selectedNode() : nullptr;
+    if (!node || !m_undoStack) {
+        m_gizmo = Gizmo{};
+        return;
+    }
+    const double t = m_lastFrameTime;
+    const glm::dmat4 parent = document::parentWorldMatrix(m_scene, node->id(), t);
+    const glm::dmat4 world = parent * document::animatedLocalMatrix(node->data(), t);
+    m_gizmo.setUp(m_handleMode, projection(), parent, world);
+}
+
+std::optional<QPointF> Viewport::handlePoint(int axis) {
+    updateGizmo();
+    if (!m_gizmo.isValid() || axis < 0 || axis > 2) {
+        return std::nullopt;
+    }
+    const auto& line = m_gizmo.axes()[std::size_t(axis)].line;
+    if (line.empty()) {
+        return std::nullopt;
+    }
+    // The tip of a segment, or the ring point nearest the bottom of the screen (least likely hidden).
+    if (m_handleMode != HandleMode::Rotate) {
+        const QPointF tip = line.back();
+        return line.front() + (tip - line.front()) * 0.9;
+    }
+    return *std::max_element(line.begin(), line.end(), [](QPointF a, QPointF b) { return a.y() < b.y(); });
+}
+
+std::uint64_t Viewport::pickAt(QPointF position, bool mirrorItself) {
+    const double t = m_lastFrameTime;
+    const ScreenProjection screen = projection();
+    // Lights have no surface: they are picked by their marker.
+    std::uint64_t light = 0;
+    double nearest = kLightPickPixels;
+    const auto worlds = document::worldMatrices(m_scene, t);
+    m_scene.forEachNode([&](const document::Node& node) {
+        if (!node.data().light) {
+            return;
+        }
+        if (auto p = screen.project(glm::dvec3(worlds.at(node.id())[3]))) {
+            const double d = std::hypot(p->x() - position.x(), p->y() - position.y());
+            if (d < nearest) {
+                nearest = d;
+                light = node.id();
+            }
+        }
+    });
+    if (light) {
+        return light;
+    }
+    document::PickScene pickScene = document::buildPickScene(m_scene, t, m_meshes);
+    if (mirrorItself) {
+        pickScene.mirrorDepth = 0;
+    }
+    const double w = std::max(width(), 1), h = std::max(height(), 1);
+    const document::Ray ray = document::cameraRay(m_view.camera(), w / h, position.x() / w * 2.0 - 1.0,
+                                                  1.0 - position.y() / h * 2.0);
+    const auto hit = document::pick(pickScene, ray);
+    return hit ? hit->id : 0;
+}
+
+void Viewport::paintOverlay(QPainter& painter) {
+    if (!m_renderer) {
+        return;
+    }
+    const ScreenProjection screen = projection();
+    const double t = m_lastFrameTime;
+    const auto worlds = document::worldMatrices(m_scene, t);
+
+    // Light markers: lights have no surface in the frame, so show where they are.
+    m_scene.forEachNode([&](const document::Node& node) {
+        if (!node.data().light) {
+            return;
+        }
+        if (auto p = screen.project(glm::dvec3(worlds.at(node.id())[3]))) {
+            const glm::dvec3 c = glm::clamp(node.data().light->color, 0.0, 1.0);
+            painter.setPen(QPen(QColor(30, 30, 30, 200), 1.0));
+            painter.setBrush(QColor::fromRgbF(float(c.r), float(c.g), float(c.b)));
+            painter.drawEllipse(*p, 5.0, 5.0);
+            painter.setPen(QPen(QColor(255, 210, 60), 1.5));
+            for (int i = 0; i < 8; ++i) {
+                const double a = i * 3.14159265358979 / 4.0;
+                painter.drawLine(*p + QPointF(std::cos(a), std::sin(a)) * 7.0,
+                                 *p + QPointF(std::cos(a), std::sin(a)) * 11.0);
+            }
+        }
+    });
+
+    const document::Node* node = m_selection ? m_selection->selectedNode() : nullptr;
+    if (!node) {
+        return;
+    }
+    const auto found = worlds.find(node->id());
+    if (found == worlds.end()) {
+        return;
+    }
+    const glm::dmat4& world = found->second;
+    const document::NodeData& d = node->data();
+
+    // Selection outline: the node's local box (mesh bounds, or the mirror rectangle) in world space.
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
+    auto addBox = [&](glm::dvec3 lo, glm::dvec3 hi) {
+        glm::dvec3 c[8];
+        for (int i = 0; i < 8; ++i) {
+            c[i] = glm::dvec3(
+                world * glm::dvec4((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z, 1.0));
+        }
+        static const int pairs[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                         {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+        for (const auto& p : pairs) {
+            edges.emplace_back(c[p[0]], c[p[1]]);
+        }
+    };
+    std::vector<std::string> ignored;
+    if (d.mesh) {
+        if (auto mesh = m_meshes.get(*d.mesh, ignored)) {
+            const render::Bounds b = render::computeBounds(**mesh);
+            addBox(glm::dvec3(b.min), glm::dvec3(b.max));
+        }
+    }
+    if (d.mirror) {
+        const glm::dvec2 h = d.mirror->size * 0.5;
+        addBox({-h.x, 0.0, -h.y}, {h.x, 0.0, h.y});
+    }
+    painter.setPen(QPen(kSelectionColor, 1.5, Qt::DashLine));
+    painter.setBrush(Qt::NoBrush);
+    for (const auto& [a, b] : edges) {
+        const auto pa = screen.project(a), pb = screen.project(b);
+        if (pa && pb) {
+            painter.drawLine(*pa, *pb);
+        }
+    }
+
+    // Handles.
+    if (!m_undoStack) {
+        return;
+    }
+    updateGizmo();
+    const Gizmo& gizmo = m_drag == Drag::Handle ? m_dragGizmo : m_gizmo;
+    if (!gizmo.isValid()) {
+        return;
+    }
+    const int active = m_drag == Drag::Handle ? m_dragAxis : m_hoverAxis;
+    for (const auto& axis : gizmo.axes()) {
+        const QColor color = axis.index == active ? kActiveColor : kAxisColors[axis.index];
+        painter.setPen(QPen(color, axis.index == active ? 3.5 : 2.5, Qt::SolidLine, Qt::RoundCap));
+        painter.setBrush(Qt::NoBrush);
+        if (axis.line.size() < 2) {
+            continue;
+        }
+        painter.drawPolyline(axis.line.data(), int(axis.line.size()));
+        if (gizmo.mode() == HandleMode::Move || gizmo.mode() == HandleMode::Scale) {
+            const QPointF tip = axis.line.back();
+            painter.setBrush(color);
+            if (gizmo.mode() == HandleMode::Scale) {
+                painter.drawRect(QRectF(tip - QPointF(4.5, 4.5), QSizeF(9, 9)));
+            } else {
+                const QPointF dir = tip - axis.line.front();
+                const double len = std::hypot(dir.x(), dir.y());
+                if (len > 1.0) {
+                    const QPointF u = dir / len, n(-u.y(), u.x());
+                    const QPointF head[3] = {tip + u * 10.0, tip + n * 5.0, tip - n * 5.0};
+                    painter.drawPolygon(head, 3);
+                }
+            }
+        }
+    }
+    painter.setPen(QPen(Qt::white, 1.5));
+    painter.setBrush(QColor(40, 40, 40));
+    painter.drawEllipse(gizmo.origin(), 3.5, 3.5);
+}
+
+void Viewport::navigated() {
+    if (m_sceneCameraMode && m_undoStack) {
+        // Looking through the scene camera: the navigation is an edit of the document's camera.
+        document::CameraData camera = m_scene.camera();
+        const render::Camera& v = m_view.camera();
+        camera.position = v.position;
+        camera.target = v.target;
+        camera.up = v.up;
+        camera.far = std::max(camera.far, v.far);
+        auto* command = new document::SetCameraCommand(m_scene, camera, true);
+        command->setMergeKey(QStringLiteral("navigate#%1").arg(m_gestureSerial));
+        m_undoStack->push(command);
+    }
+    update();
+}
+
 void Viewport::mousePressEvent(QMouseEvent* event) {
+    const QPointF pos = event->position();
     const bool pan = event->button() == Qt::MiddleButton ||
                      (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier));
+    ++m_gestureSerial;
     if (pan) {
         m_drag = Drag::Pan;
     } else if (event->button() == Qt::LeftButton) {
-        m_drag = Drag::Orbit;
+        updateGizmo();
+        const int axis = m_selection && m_undoStack ? m_gizmo.hitTest(pos) : -1;
+        if (axis >= 0) {
+            m_drag = Drag::Handle;
+            m_dragAxis = axis;
+            m_dragGizmo = m_gizmo;
+            m_dragNode = m_selection->node();
+            m_dragStart = m_selection->selectedNode()->data();
+        } else {
+            m_drag = Drag::PendingClick;
+        }
+        m_pressPosition = pos;
+        m_pressAlt = event->modifiers() & Qt::AltModifier;
     } else {
         QOpenGLWidget::mousePressEvent(event);
         return;
     }
-    m_lastMouse = event->position().toPoint();
+    m_lastMouse = pos.toPoint();
     event->accept();
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF posF = event->position();
     if (m_drag == Drag::None) {
+        if (m_selection && m_undoStack) {
+            updateGizmo();
+            const int hover = m_gizmo.hitTest(posF);
+            if (hover != m_hoverAxis) {
+                m_hoverAxis = hover;
+                setCursor(hover >= 0 ? Qt::PointingHandCursor : Qt::ArrowCursor);
+                m_overlay->update();
+            }
+        }
         QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
-    const QPoint pos = event->position().toPoint();
+    if (m_drag == Drag::Handle) {
+        const document::Node* node = m_scene.findNode(m_dragNode);
+        if (node) {
+            document::NodeData data = m_dragGizmo.drag(m_dragStart, m_dragAxis, m_pressPosition, posF);
+            if (!(data == node->data())) {
+                static const char* const verbs[] = {"Select", "Move", "Rotate", "Scale"};
+                m_undoStack->push(
+                    new document::SetNodeDataCommand(m_scene, m_dragNode, data,
+                                                     tr("%1 \u201c%2\u201d")
+                                                         .arg(QLatin1String(verbs[int(m_dragGizmo.mode())]),
+                                                              QString::fromStdString(node->name())),
+                                                     QStringLiteral("handle#%1").arg(m_gestureSerial)));
+            }
+        }
+        event->accept();
+        return;
+    }
+    if (m_drag == Drag::PendingClick) {
+        if (std::hypot(posF.x() - m_pressPosition.x(), posF.y() - m_pressPosition.y()) < kClickSlopPixels) {
+            event->accept();
+            return;
+        }
+        m_drag = Drag::Orbit;
+    }
+    const QPoint pos = posF.toPoint();
     const QPoint delta = pos - m_lastMouse;
     m_lastMouse = pos;
     if (m_drag == Drag::Orbit) {
@@ -170,7 +521,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         const double perPixel = 1.0 / std::max(height(), 1);
         m_view.pan(-delta.x() * perPixel, delta.y() * perPixel);
     }
-    update();
+    navigated();
     event->accept();
 }
 
@@ -179,7 +530,17 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         QOpenGLWidget::mouseReleaseEvent(event);
         return;
     }
+    if (m_drag == Drag::PendingClick && m_selection) {
+        const std::uint64_t id = pickAt(m_pressPosition, m_pressAlt);
+        if (id) {
+            m_selection->selectNode(document::NodeId(id));
+        } else {
+            m_selection->clear();
+        }
+    }
     m_drag = Drag::None;
+    m_dragAxis = -1;
+    m_overlay->update();
     event->accept();
 }
 
@@ -195,9 +556,25 @@ void Viewport::wheelEvent(QWheelEvent* event) {
     const double notches = event->angleDelta().y() / 120.0;
     if (notches != 0.0) {
         m_view.zoom(std::pow(0.85, notches));
-        update();
+        navigated();
     }
     event->accept();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && m_drag == Drag::Handle) {
+        // Cancel the drag: put the node back as it was (the merged step then changes nothing).
+        if (m_scene.findNode(m_dragNode)) {
+            m_undoStack->push(
+                new document::SetNodeDataCommand(m_scene, m_dragNode, m_dragStart, tr("Cancel drag"),
+                                                 QStringLiteral("handle#%1").arg(m_gestureSerial)));
+        }
+        m_drag = Drag::None;
+        m_overlay->update();
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
 }
 
 } // namespace speculum::ui

@@ -1,6 +1,14 @@
-# GUI tier: the whole binary runs as one CTest entry under scripts/with-display (Xvfb with GLX on llvmpipe
-# when there is no display). The test has its own main() (it needs a QApplication), which takes precedence
-# over gtest_main's.
+# GUI tier: each binary runs as one CTest entry under scripts/with-display (Xvfb with GLX on llvmpipe
+# when there is no display). The tests have their own main() (they need a QApplication), which takes
+# precedence over gtest_main's.
 speculum_add_test(test_main_window TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_main_window.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui)
+find_package(Qt6 REQUIRED COMPONENTS Test) # QTest mouse events
+speculum_add_test(test_editor_workflow TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_editor_workflow.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)
+# Runs the real speculum binary to compare Export Still with `speculum render`.
+speculum_add_test(test_editor_output TIER gui USES_CLI
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_editor_output.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
     LIBS speculum_ui)

@@ -1,0 +1,147 @@
+// Frame rate of the editor's viewport at 1280×720 with the teapot demo while the teapot's move handle is
+// dragged: every mouse move pushes a (merged) undo command, the document changes, and the viewport
+// snapshots, renders and repaints its handles. One iteration = one mouse move and the frame it causes.
+// Needs a display: scripts/with-display build/release/benchmarks/speculum_bench_editor
+#include "editor/document/Scene.hpp"
+#include "editor/ui/AnimationClock.hpp"
+#include "editor/ui/Editor.hpp"
+#include "editor/ui/MainWindow.hpp"
+#include "editor/ui/Selection.hpp"
+#include "editor/ui/Viewport.hpp"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QMouseEvent>
+#include <QStandardPaths>
+#include <QUndoStack>
+#include <benchmark/benchmark.h>
+#include <cmath>
+#include <map>
+#include <memory>
+
+namespace {
+
+using namespace speculum;
+
+std::unique_ptr<ui::MainWindow> g_window;
+
+bool waitForFrame(ui::Viewport& viewport, int target, int timeoutMs = 30000) {
+    QElapsedTimer timer;
+    timer.start();
+    while (viewport.framesRendered() < target) {
+        if (timer.elapsed() > timeoutMs) {
+            return false;
+        }
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    }
+    return true;
+}
+
+void sendMouse(ui::Viewport& viewport, QEvent::Type type, QPointF at, Qt::MouseButton button,
+               Qt::MouseButtons buttons) {
+    QMouseEvent event(type, at, viewport.mapToGlobal(at), button, buttons, Qt::NoModifier);
+    QCoreApplication::sendEvent(&viewport, &event);
+}
+
+// overlay = false hides the QPainter overlay (handles, outline) to show what it costs.
+void dragHandle(benchmark::State& state, bool overlay) {
+    ui::MainWindow& window = *g_window;
+    ui::Viewport& viewport = window.viewport();
+    QWidget* overlayWidget = viewport.findChild<QWidget*>(QStringLiteral("viewportOverlay"));
+    if (overlayWidget) {
+        overlayWidget->setVisible(overlay);
+    }
+    if (!viewport.rendererError().isEmpty() || viewport.size() != QSize(1280, 720)) {
+        state.SkipWithError("no viewport renderer or wrong size");
+        return;
+    }
+    const auto handle = viewport.handlePoint(0);
+    if (!handle) {
+        state.SkipWithError("no move handle on the teapot");
+        return;
+    }
+    const QPointF start = *handle;
+    sendMouse(viewport, QEvent::MouseButtonPress, start, Qt::LeftButton, Qt::LeftButton);
+    double rendererCpu = 0.0, rendererGpu = 0.0;
+    std::map<std::string, double> passMs;
+    std::int64_t frames = 0;
+    for (auto _ : state) {
+        // Back and forth along the handle, 60 px either way.
+        const QPointF at = start + QPointF(60.0 * std::sin(double(frames + 1) * 0.3), 0.0);
+        const int target = viewport.framesRendered() + 1;
+        sendMouse(viewport, QEvent::MouseMove, at, Qt::NoButton, Qt::LeftButton);
+        if (!waitForFrame(viewport, target)) {
+            state.SkipWithError("the viewport stopped drawing");
+            break;
+        }
+        rendererCpu += viewport.lastReport().cpuMs;
+        rendererGpu += std::max(viewport.lastReport().gpuMs, 0.0);
+        for (const auto& pass : viewport.lastReport().plan.passes) {
+            passMs[std::string(render::toString(pass.kind))] += std::max(pass.gpuMs, 0.0);
+        }
+        ++frames;
+    }
+    sendMouse(viewport, QEvent::MouseButtonRelease, start, Qt::LeftButton, Qt::NoButton);
+    state.counters["fps"] = benchmark::Counter(double(frames), benchmark::Counter::kIsRate);
+    state.counters["renderer_cpu_ms"] = frames ? rendererCpu / double(frames) : 0.0;
+    state.counters["renderer_gpu_ms"] = frames ? rendererGpu / double(frames) : 0.0;
+    for (const auto& [kind, ms] : passMs) {
+        state.counters[kind + "_gpu_ms"] = frames ? ms / double(frames) : 0.0;
+    }
+    // Each benchmark run is one drag: one undo step per run, however many moves.
+    state.counters["undo_steps"] = window.undoStack().count();
+    if (overlayWidget) {
+        overlayWidget->show();
+    }
+}
+
+void BM_ViewportFrameWhileDraggingHandle1280x720(benchmark::State& state) {
+    dragHandle(state, true);
+}
+void BM_ViewportFrameWhileDraggingHandle1280x720NoOverlay(benchmark::State& state) {
+    dragHandle(state, false);
+}
+
+BENCHMARK(BM_ViewportFrameWhileDraggingHandle1280x720)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(4.0)
+    ->UseRealTime();
+BENCHMARK(BM_ViewportFrameWhileDraggingHandle1280x720NoOverlay)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(4.0)
+    ->UseRealTime();
+
+} // namespace
+
+int main(int argc, char** argv) {
+    ui::installDefaultSurfaceFormat();
+    QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("speculum-bench"));
+    QStandardPaths::setTestModeEnabled(true);
+    ::benchmark::Initialize(&argc, argv);
+
+    g_window = std::make_unique<ui::MainWindow>();
+    g_window->viewport().setFixedSize(1280, 720);
+    g_window->show();
+    const QString demo = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+    if (!g_window->openProjectFile(demo)) {
+        return 1;
+    }
+    g_window->clock().setPlaying(false);
+    g_window->clock().setTime(0.0);
+    g_window->scene().forEachNode([&](const document::Node& node) {
+        if (node.name() == "Teapot") {
+            g_window->selection().selectNode(node.id());
+        }
+    });
+    g_window->viewport().setHandleMode(ui::HandleMode::Move);
+    waitForFrame(g_window->viewport(), g_window->viewport().framesRendered() + 3);
+
+    ::benchmark::RunSpecifiedBenchmarks();
+    ::benchmark::Shutdown();
+    g_window->undoStack().setClean();
+    g_window->newProject();
+    g_window.reset();
+    return 0;
+}

@@ -1,0 +1,175 @@
+#include "editor/ui/ExportStillDialog.hpp"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace speculum::ui {
+
+namespace {
+
+struct Format {
+    const char* name;
+    const char* suffix;
+};
+constexpr Format kFormats[] = {{"PNG (8-bit sRGB)", "png"},
+                               {"JPEG (8-bit sRGB)", "jpg"},
+                               {"TIFF (8-bit sRGB)", "tif"},
+                               {"OpenEXR (linear half)", "exr"}};
+
+} // namespace
+
+ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, QWidget* parent)
+    : QDialog(parent) {
+    setWindowTitle(tr("Export Still"));
+    auto* form = new QFormLayout;
+
+    m_path = new QLineEdit(suggestedPath, this);
+    m_path->setObjectName(QStringLiteral("stillPath"));
+    auto* browse = new QToolButton(this);
+    browse->setText(QStringLiteral("…"));
+    auto* pathRow = new QHBoxLayout;
+    pathRow->addWidget(m_path, 1);
+    pathRow->addWidget(browse);
+    form->addRow(tr("File"), pathRow);
+    connect(browse, &QToolButton::clicked, this, &ExportStillDialog::browse);
+
+    m_format = new QComboBox(this);
+    m_format->setObjectName(QStringLiteral("stillFormat"));
+    for (const Format& f : kFormats) {
+        m_format->addItem(tr(f.name), QString::fromLatin1(f.suffix));
+    }
+    const QString suffix = QFileInfo(suggestedPath).suffix().toLower();
+    for (int i = 0; i < m_format->count(); ++i) {
+        if (m_format->itemData(i).toString() == suffix) {
+            m_format->setCurrentIndex(i);
+        }
+    }
+    form->addRow(tr("Format"), m_format);
+    connect(m_format, &QComboBox::currentIndexChanged, this, &ExportStillDialog::formatChanged);
+
+    m_width = new QSpinBox(this);
+    m_height = new QSpinBox(this);
+    for (QSpinBox* s : {m_width, m_height}) {
+        s->setRange(1, 16384);
+        s->setSuffix(tr(" px"));
+    }
+    m_width->setObjectName(QStringLiteral("stillWidth"));
+    m_height->setObjectName(QStringLiteral("stillHeight"));
+    m_width->setValue(1280);
+    m_height->setValue(720);
+    auto* sizeRow = new QHBoxLayout;
+    sizeRow->addWidget(m_width);
+    sizeRow->addWidget(new QLabel(QStringLiteral("×"), this));
+    sizeRow->addWidget(m_height);
+    form->addRow(tr("Size"), sizeRow);
+
+    m_ssaa = new QSpinBox(this);
+    m_ssaa->setObjectName(QStringLiteral("stillSsaa"));
+    m_ssaa->setRange(1, 16);
+    m_ssaa->setPrefix(tr("N = "));
+    m_ssaa->setToolTip(tr("Supersampling: N×N samples per pixel (the CLI's --ssaa N)"));
+    form->addRow(tr("Supersampling"), m_ssaa);
+
+    m_time = new QDoubleSpinBox(this);
+    m_time->setObjectName(QStringLiteral("stillTime"));
+    m_time->setRange(0.0, 1e6);
+    m_time->setDecimals(3);
+    m_time->setSuffix(tr(" s"));
+    m_time->setValue(time);
+    m_time->setToolTip(tr("Animation time (the CLI's --time T)"));
+    form->addRow(tr("Time"), m_time);
+
+    m_camera = new QComboBox(this);
+    m_camera->setObjectName(QStringLiteral("stillCamera"));
+    m_camera->addItem(tr("Scene camera (as the CLI renders)"));
+    m_camera->addItem(tr("Current view"));
+    form->addRow(tr("Camera"), m_camera);
+
+    m_reference = new QCheckBox(tr("Exact reference (ray traced)"), this);
+    m_reference->setObjectName(QStringLiteral("stillReference"));
+    m_reference->setEnabled(false);
+    m_reference->setToolTip(tr("needs the reference tracer"));
+    form->addRow(QString(), m_reference);
+
+    m_error = new QLabel(this);
+    m_error->setStyleSheet(QStringLiteral("color: #b02020;"));
+    m_error->setWordWrap(true);
+    m_error->hide();
+
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
+    connect(buttons, &QDialogButtonBox::accepted, this, &ExportStillDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_error);
+    layout->addWidget(buttons);
+    formatChanged();
+}
+
+void ExportStillDialog::formatChanged() {
+    const QString suffix = m_format->currentData().toString();
+    QString path = m_path->text();
+    const QFileInfo info(path);
+    if (!path.isEmpty() && info.suffix().toLower() != suffix) {
+        path = info.path() + QLatin1Char('/') + info.completeBaseName() + QLatin1Char('.') + suffix;
+        m_path->setText(QDir::cleanPath(path));
+    }
+}
+
+void ExportStillDialog::browse() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Still"), m_path->text(),
+                                                      tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr)"));
+    if (!path.isEmpty()) {
+        m_path->setText(path);
+        const QString suffix = QFileInfo(path).suffix().toLower();
+        for (int i = 0; i < m_format->count(); ++i) {
+            if (m_format->itemData(i).toString() == suffix) {
+                m_format->setCurrentIndex(i);
+            }
+        }
+    }
+}
+
+QString ExportStillDialog::outputPath() const {
+    return m_path->text().trimmed();
+}
+
+bool ExportStillDialog::useCurrentView() const {
+    return m_camera->currentIndex() == 1;
+}
+
+document::StillExportSettings ExportStillDialog::settings() const {
+    document::StillExportSettings s;
+    s.width = m_width->value();
+    s.height = m_height->value();
+    s.ssaa = m_ssaa->value();
+    s.time = m_time->value();
+    s.reference = m_reference->isChecked();
+    return s;
+}
+
+void ExportStillDialog::accept() {
+    if (auto valid = document::validateStillExport(settings(), outputPath()); !valid) {
+        m_error->setText(QString::fromStdString(valid.error()));
+        m_error->show();
+        return;
+    }
+    QDialog::accept();
+}
+
+} // namespace speculum::ui

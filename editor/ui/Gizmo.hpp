@@ -1,0 +1,77 @@
+#pragma once
+
+#include "editor/document/SceneData.hpp"
+#include "render/FrameInput.hpp"
+
+#include <QPointF>
+#include <QSizeF>
+#include <array>
+#include <glm/mat4x4.hpp>
+#include <optional>
+#include <vector>
+
+namespace speculum::ui {
+
+enum class HandleMode { Select, Move, Rotate, Scale };
+
+// Projects world points to widget pixels with the renderer's own matrices (render/math/Projection.hpp),
+// so overlays drawn with QPainter line up with the GL frame.
+class ScreenProjection {
+public:
+    ScreenProjection() = default;
+    ScreenProjection(const render::Camera& camera, QSizeF size);
+    // Widget position (logical pixels, y down), or nothing when the point is behind the camera.
+    std::optional<QPointF> project(const glm::dvec3& world) const;
+    // World units per pixel at the depth of a point.
+    double worldPerPixel(const glm::dvec3& world) const;
+    const render::Camera& camera() const { return m_camera; }
+    QSizeF size() const { return m_size; }
+
+private:
+    render::Camera m_camera;
+    QSizeF m_size{1, 1};
+    glm::dmat4 m_viewProjection{1.0};
+};
+
+// The move / rotate / scale handles of one node: geometry in widget pixels for drawing and hit-testing,
+// and the node data a drag produces. Move works along the parent's axes (it edits translate), scale along
+// the node's own axes (scale), rotate around the axes of the Euler angles (rotate x, y, z: rings drawn
+// where each angle turns the node).
+class Gizmo {
+public:
+    static constexpr double kHandlePixels = 90.0; // on-screen length of the axes
+    static constexpr double kHitPixels = 7.0;
+
+    struct Axis {
+        int index = 0;             // 0 x, 1 y, 2 z
+        std::vector<QPointF> line; // polyline: a segment (move, scale) or a ring (rotate)
+        glm::dvec3 direction{0.0}; // world direction, unit
+    };
+
+    // Sets the handles up for a node. `parentWorld` is its parent's world matrix, `world` its own (with
+    // animation applied, as drawn).
+    void setUp(HandleMode mode, const ScreenProjection& projection, const glm::dmat4& parentWorld,
+               const glm::dmat4& world);
+    bool isValid() const { return m_valid; }
+    HandleMode mode() const { return m_mode; }
+    QPointF origin() const { return m_originPx; }
+    const std::array<Axis, 3>& axes() const { return m_axes; }
+
+    // The axis under a widget point, or -1.
+    int hitTest(QPointF point) const;
+
+    // The node data after dragging `axis` from `from` to `to` (widget pixels), starting from `start`.
+    document::NodeData drag(const document::NodeData& start, int axis, QPointF from, QPointF to) const;
+
+private:
+    bool m_valid = false;
+    HandleMode m_mode = HandleMode::Select;
+    ScreenProjection m_projection;
+    glm::dmat4 m_parentWorld{1.0};
+    glm::dvec3 m_origin{0.0};
+    QPointF m_originPx;
+    double m_length = 1.0; // world length of the axes
+    std::array<Axis, 3> m_axes;
+};
+
+} // namespace speculum::ui

@@ -1,0 +1,364 @@
+#include "editor/ui/Inspector.hpp"
+
+#include "editor/document/Commands.hpp"
+#include "editor/document/NodeFactory.hpp"
+#include "editor/ui/Icons.hpp"
+#include "editor/ui/PropertyEditors.hpp"
+#include "editor/ui/Selection.hpp"
+
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenu>
+#include <QScrollArea>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace speculum::ui {
+
+using document::ComponentInfo;
+using document::NodeData;
+
+namespace {
+
+QString quoted(const std::string& name) {
+    return QStringLiteral("\u201c%1\u201d").arg(QString::fromStdString(name));
+}
+
+} // namespace
+
+Inspector::Inspector(document::Scene& scene, QUndoStack& undoStack, Selection& selection, QWidget* parent)
+    : QWidget(parent)
+    , m_scene(scene)
+    , m_undoStack(undoStack)
+    , m_selection(selection) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    m_header = new QLabel(this);
+    m_header->setObjectName(QStringLiteral("inspectorHeader"));
+    QFont bold = m_header->font();
+    bold.setBold(true);
+    bold.setPointSizeF(bold.pointSizeF() * 1.1);
+    m_header->setFont(bold);
+    layout->addWidget(m_header);
+
+    m_error = new QLabel(this);
+    m_error->setObjectName(QStringLiteral("inspectorError"));
+    m_error->setWordWrap(true);
+    m_error->setStyleSheet(QStringLiteral("QLabel { background: #f8d7da; color: #721c24; border: 1px solid "
+                                          "#d03030; border-radius: 3px; padding: 4px; }"));
+    m_error->hide();
+    layout->addWidget(m_error);
+
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    layout->addWidget(m_scroll, 1);
+
+    connect(&selection, &Selection::changed, this, [this] {
+        clearError();
+        rebuild();
+    });
+    connect(&scene, &document::Scene::sceneReset, this, &Inspector::rebuild);
+    connect(&scene, &document::Scene::nodeChanged, this, [this](document::NodeId id) {
+        if (id == m_selection.node()) {
+            refresh();
+        }
+    });
+    connect(&scene, &document::Scene::settingsChanged, this, &Inspector::refresh);
+    connect(&scene, &document::Scene::cameraChanged, this, &Inspector::refresh);
+    // A new undo step elsewhere (or an undo) ends the current gesture.
+    connect(&undoStack, &QUndoStack::indexChanged, this, [this] {
+        if (!m_committing) {
+            ++m_gesture;
+        }
+    });
+    rebuild();
+}
+
+QString Inspector::errorText() const {
+    return m_error->isHidden() ? QString() : m_error->text();
+}
+
+QString Inspector::layoutSignature() const {
+    QString sig;
+    if (m_selection.isCamera()) {
+        return QStringLiteral("camera");
+    }
+    const document::Node* node = m_selection.selectedNode();
+    if (!node) {
+        return QStringLiteral("scene");
+    }
+    sig = QString::number(node->id());
+    for (const ComponentInfo& c : document::nodeComponents()) {
+        if (!c.present(node->data())) {
+            continue;
+        }
+        sig += QLatin1Char('|') + c.key;
+        for (const auto& p : c.properties) {
+            if (p.isVisible(node->data())) {
+                sig += QLatin1Char(',') + p.info.key;
+            }
+        }
+    }
+    return sig;
+}
+
+void Inspector::rebuild() {
+    m_signature = layoutSignature();
+    m_editors.clear();
+    // Replace the whole content widget: simplest way to drop every generated editor and layout.
+    m_content = new QWidget;
+    m_contentLayout = new QVBoxLayout(m_content);
+    m_contentLayout->setContentsMargins(0, 0, 0, 0);
+
+    if (const document::Node* node = m_selection.selectedNode()) {
+        const NodeData& d = node->data();
+        m_header->setText(
+            QStringLiteral("%1  ·  %2").arg(QString::fromStdString(d.name), kindName(nodeKind(d))));
+        for (const ComponentInfo& c : document::nodeComponents()) {
+            if (!c.present(d)) {
+                continue;
+            }
+            QWidget* group = addGroup(c.title, c.key, c.optional);
+            for (const auto& p : c.properties) {
+                if (p.isVisible(d)) {
+                    addEditor(group, p.info, p.get(d));
+                }
+            }
+        }
+        addComponentButton(d);
+    } else {
+        const bool cameraOnly = m_selection.isCamera();
+        m_header->setText(cameraOnly ? tr("Camera") : tr("Scene"));
+        if (!cameraOnly) {
+            QWidget* settings = addGroup(tr("Scene settings"), {}, false);
+            for (const auto& p : document::settingsProperties()) {
+                addEditor(settings, p.info, p.get(m_scene.settings()));
+            }
+        }
+        QWidget* camera = addGroup(tr("Camera"), {}, false);
+        for (const auto& p : document::cameraProperties()) {
+            addEditor(camera, p.info, p.get(m_scene.camera()));
+        }
+    }
+    m_contentLayout->addStretch(1);
+    // The old editors may be in the middle of emitting the edit that caused this rebuild: delete later.
+    if (QWidget* old = m_scroll->takeWidget()) {
+        old->hide();
+        old->deleteLater();
+    }
+    m_scroll->setWidget(m_content);
+    if (!m_invalidKey.isEmpty() && m_editors.contains(m_invalidKey)) {
+        m_editors[m_invalidKey]->setInvalid(true);
+    }
+}
+
+void Inspector::refresh() {
+    if (layoutSignature() != m_signature) {
+        rebuild();
+        return;
+    }
+    if (const document::Node* node = m_selection.selectedNode()) {
+        m_header->setText(
+            QStringLiteral("%1  ·  %2")
+                .arg(QString::fromStdString(node->data().name), kindName(nodeKind(node->data()))));
+        for (auto it = m_editors.begin(); it != m_editors.end(); ++it) {
+            if (const auto* p = document::findNodeProperty(it.key())) {
+                it.value()->setValue(p->get(node->data()));
+            }
+        }
+        return;
+    }
+    for (auto it = m_editors.begin(); it != m_editors.end(); ++it) {
+        if (const auto* p = document::findSettingsProperty(it.key())) {
+            it.value()->setValue(p->get(m_scene.settings()));
+        } else if (const auto* c = document::findCameraProperty(it.key())) {
+            it.value()->setValue(c->get(m_scene.camera()));
+        }
+    }
+}
+
+QWidget* Inspector::addGroup(const QString& title, const QString& componentKey, bool removable) {
+    auto* box = new QGroupBox(title, m_content);
+    box->setObjectName(componentKey.isEmpty() ? title : componentKey + QStringLiteral(".group"));
+    auto* form = new QFormLayout(box);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    form->setLabelAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    if (removable) {
+        auto* remove = new QToolButton(box);
+        remove->setObjectName(componentKey + QStringLiteral(".remove"));
+        remove->setText(tr("Remove"));
+        remove->setToolTip(tr("Remove the %1 component").arg(title.toLower()));
+        remove->setAutoRaise(true);
+        form->addRow(QString(), remove);
+        connect(remove, &QToolButton::clicked, this,
+                [this, componentKey] { changeComponent(componentKey, false); });
+    }
+    m_contentLayout->addWidget(box);
+    return box;
+}
+
+void Inspector::addEditor(QWidget* group, const document::PropertyInfo& info, const QVariant& value) {
+    PropertyEditor* editor = PropertyEditor::create(info, group);
+    editor->setValue(value);
+    auto* label = new QLabel(info.label, group);
+    label->setToolTip(info.tooltip);
+    static_cast<QFormLayout*>(group->layout())->addRow(label, editor);
+    m_editors.insert(info.key, editor);
+    connect(editor, &PropertyEditor::interactionStarted, this, [this] { ++m_gesture; });
+    connect(editor, &PropertyEditor::edited, this,
+            [this, key = info.key](const QVariant& v) { applyValue(key, v); });
+}
+
+void Inspector::addComponentButton(const NodeData& d) {
+    auto* button = new QToolButton(m_content);
+    button->setObjectName(QStringLiteral("addComponent"));
+    button->setText(tr("Add Component"));
+    button->setPopupMode(QToolButton::InstantPopup);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    auto* menu = new QMenu(button);
+    for (const ComponentInfo& c : document::nodeComponents()) {
+        if (c.optional && !c.present(d)) {
+            QAction* action = menu->addAction(c.title);
+            action->setObjectName(QStringLiteral("add.") + c.key);
+            connect(action, &QAction::triggered, this, [this, key = c.key] { changeComponent(key, true); });
+        }
+    }
+    button->setMenu(menu);
+    button->setEnabled(!menu->isEmpty());
+    m_contentLayout->addWidget(button, 0, Qt::AlignLeft);
+}
+
+void Inspector::changeComponent(const QString& key, bool add) {
+    const document::Node* node = m_selection.selectedNode();
+    const ComponentInfo* c = document::findComponent(key);
+    if (!node || !c) {
+        return;
+    }
+    if (add && key == QStringLiteral("reflector")) {
+        const document::NodeId other = document::reflectorNode(m_scene);
+        if (other != document::kNoNode && other != node->id()) {
+            showError(key, tr("A scene has at most one curved reflector, and %1 already is one.")
+                               .arg(quoted(m_scene.findNode(other)->name())));
+            return;
+        }
+    }
+    NodeData data = node->data();
+    const render::Status status = add ? c->add(data) : c->remove(data);
+    if (!status) {
+        showError(key, QString::fromStdString(status.error()));
+        return;
+    }
+    clearError();
+    const QString text = add ? tr("Add %1 to %2").arg(c->title, quoted(node->name()))
+                             : tr("Remove %1 from %2").arg(c->title, quoted(node->name()));
+    m_undoStack.push(new document::SetNodeDataCommand(m_scene, node->id(), data, text));
+}
+
+render::Status Inspector::applyValue(const QString& key, const QVariant& value) {
+    render::Status status = render::Done{};
+    if (m_selection.selectedNode()) {
+        status = commitNode(key, value);
+    } else if (document::findSettingsProperty(key)) {
+        status = commitSettings(key, value);
+    } else {
+        status = commitCamera(key, value);
+    }
+    if (status) {
+        clearError();
+    } else {
+        showError(key, QString::fromStdString(status.error()));
+    }
+    return status;
+}
+
+render::Status Inspector::commitNode(const QString& key, const QVariant& value) {
+    const document::Node* node = m_selection.selectedNode();
+    const auto* p = document::findNodeProperty(key);
+    if (!node || !p) {
+        return render::Error{"no such property: " + key.toStdString()};
+    }
+    NodeData data = node->data();
+    if (auto status = p->set(data, value); !status) {
+        return status;
+    }
+    if (data == node->data()) {
+        return render::Done{};
+    }
+    const QString text = key == QStringLiteral("node.name")
+                             ? tr("Rename %1 to %2").arg(quoted(node->name()), quoted(data.name))
+                             : tr("Change %1 of %2").arg(p->info.label, quoted(node->name()));
+    m_committing = true;
+    m_undoStack.push(new document::SetNodeDataCommand(m_scene, node->id(), data, text, mergeKey(key)));
+    m_committing = false;
+    return render::Done{};
+}
+
+render::Status Inspector::commitSettings(const QString& key, const QVariant& value) {
+    const auto* p = document::findSettingsProperty(key);
+    if (!p) {
+        return render::Error{"no such property: " + key.toStdString()};
+    }
+    document::SceneSettings settings = m_scene.settings();
+    if (auto status = p->set(settings, value); !status) {
+        return status;
+    }
+    if (settings == m_scene.settings()) {
+        return render::Done{};
+    }
+    auto* command = new document::SetSettingsCommand(m_scene, settings, true);
+    command->setText(tr("Change %1").arg(p->info.label));
+    command->setMergeKey(mergeKey(key));
+    m_committing = true;
+    m_undoStack.push(command);
+    m_committing = false;
+    return render::Done{};
+}
+
+render::Status Inspector::commitCamera(const QString& key, const QVariant& value) {
+    const auto* p = document::findCameraProperty(key);
+    if (!p) {
+        return render::Error{"no such property: " + key.toStdString()};
+    }
+    document::CameraData camera = m_scene.camera();
+    if (auto status = p->set(camera, value); !status) {
+        return status;
+    }
+    if (camera == m_scene.camera()) {
+        return render::Done{};
+    }
+    auto* command = new document::SetCameraCommand(m_scene, camera, true);
+    command->setText(tr("Change camera %1").arg(p->info.label.toLower()));
+    command->setMergeKey(mergeKey(key));
+    m_committing = true;
+    m_undoStack.push(command);
+    m_committing = false;
+    return render::Done{};
+}
+
+void Inspector::showError(const QString& key, const QString& text) {
+    m_error->setText(tr("Not applied: %1").arg(text));
+    m_error->show();
+    if (!m_invalidKey.isEmpty() && m_editors.contains(m_invalidKey)) {
+        m_editors[m_invalidKey]->setInvalid(false);
+    }
+    m_invalidKey = key;
+    if (m_editors.contains(key)) {
+        m_editors[key]->setInvalid(true);
+    }
+    emit message(text);
+}
+
+void Inspector::clearError() {
+    m_error->hide();
+    m_error->clear();
+    if (!m_invalidKey.isEmpty() && m_editors.contains(m_invalidKey)) {
+        m_editors[m_invalidKey]->setInvalid(false);
+    }
+    m_invalidKey.clear();
+}
+
+} // namespace speculum::ui

@@ -1,0 +1,72 @@
+#pragma once
+
+#include "editor/document/Properties.hpp"
+#include "editor/document/Scene.hpp"
+
+#include <QHash>
+#include <QWidget>
+
+class QLabel;
+class QScrollArea;
+class QUndoStack;
+class QVBoxLayout;
+
+namespace speculum::ui {
+
+class PropertyEditor;
+class Selection;
+
+// The Properties dock. Its editors are generated from the property descriptions (document/Properties.hpp)
+// of the selected node's components; with nothing selected it shows the scene settings and the camera,
+// with the camera row selected the camera. Every edit is an undoable command: consecutive edits within one
+// gesture (a slider drag, a held spin arrow, a colour dialog) merge into one undo step. A value the
+// description refuses is not applied: the message shows at the top, the field turns red.
+class Inspector : public QWidget {
+    Q_OBJECT
+
+public:
+    Inspector(document::Scene& scene, QUndoStack& undoStack, Selection& selection, QWidget* parent = nullptr);
+
+    // The editor of a property key ("mirror.reflectivity"), if shown.
+    PropertyEditor* editor(const QString& key) const { return m_editors.value(key); }
+    // The message about the last refused value; empty when the last edit was applied.
+    QString errorText() const;
+
+    // Applies a value as if typed into the editor (scripting and tests). Returns the validation result.
+    render::Status applyValue(const QString& key, const QVariant& value);
+
+signals:
+    void message(const QString& text); // for the status bar
+
+private:
+    void rebuild();
+    void refresh();
+    QString layoutSignature() const;
+    void showError(const QString& key, const QString& text);
+    void clearError();
+    void addEditor(QWidget* group, const document::PropertyInfo& info, const QVariant& value);
+    QWidget* addGroup(const QString& title, const QString& componentKey, bool removable);
+    void addComponentButton(const document::NodeData& data);
+    void changeComponent(const QString& key, bool add);
+    QString mergeKey(const QString& key) const { return key + QLatin1Char('#') + QString::number(m_gesture); }
+
+    render::Status commitNode(const QString& key, const QVariant& value);
+    render::Status commitSettings(const QString& key, const QVariant& value);
+    render::Status commitCamera(const QString& key, const QVariant& value);
+
+    document::Scene& m_scene;
+    QUndoStack& m_undoStack;
+    Selection& m_selection;
+    QLabel* m_header = nullptr;
+    QLabel* m_error = nullptr;
+    QScrollArea* m_scroll = nullptr;
+    QWidget* m_content = nullptr;
+    QVBoxLayout* m_contentLayout = nullptr;
+    QHash<QString, PropertyEditor*> m_editors;
+    QString m_signature;
+    QString m_invalidKey;
+    int m_gesture = 0;
+    bool m_committing = false;
+};
+
+} // namespace speculum::ui

@@ -1,0 +1,510 @@
+// MainWindow: menus and the edit operations behind them (add, import, delete, duplicate, export).
+#include "editor/document/Commands.hpp"
+#include "editor/document/GltfExport.hpp"
+#include "editor/document/ModelFormats.hpp"
+#include "editor/document/NodeFactory.hpp"
+#include "editor/document/ProjectFile.hpp"
+#include "editor/document/Scene.hpp"
+#include "editor/ui/AnimationClock.hpp"
+#include "editor/ui/ExportStillDialog.hpp"
+#include "editor/ui/MainWindow.hpp"
+#include "editor/ui/SceneTreePanel.hpp"
+#include "editor/ui/Selection.hpp"
+#include "editor/ui/Viewport.hpp"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QStatusBar>
+#include <QUndoStack>
+
+namespace speculum::ui {
+
+namespace {
+
+const QString kProjectSuffix = QStringLiteral(".speculum.json");
+const QString kProjectFilter = QObject::tr("speculum projects (*.speculum.json);;JSON files (*.json)");
+
+QString quoted(const std::string& name) {
+    return QStringLiteral("\u201c%1\u201d").arg(QString::fromStdString(name));
+}
+
+} // namespace
+
+QAction* MainWindow::makeAction(QMenu* menu, const QString& name, const QString& text,
+                                const QKeySequence& shortcut) {
+    auto* a = new QAction(text, this);
+    a->setObjectName(name);
+    if (!shortcut.isEmpty()) {
+        a->setShortcut(shortcut);
+    }
+    if (menu) {
+        menu->addAction(a);
+    }
+    return a;
+}
+
+// ---- editing ----
+
+render::Status MainWindow::addTree(document::NodeTree tree) {
+    if (auto ok = document::canAdd(*m_scene, tree); !ok) {
+        statusBar()->showMessage(QString::fromStdString(ok.error()), 8000);
+        return ok;
+    }
+    tree.data.name = document::uniqueName(*m_scene, tree.data.name);
+    auto* command = new document::AddNodeCommand(*m_scene, std::move(tree));
+    m_undoStack->push(command);
+    m_selection->selectNode(command->nodeId());
+    return render::Done{};
+}
+
+render::Status MainWindow::addNode(document::NewNodeKind kind) {
+    return addTree(document::makeNode(kind, m_viewport->lookAtPoint()));
+}
+
+render::Status MainWindow::importModelFile(const QString& path, bool asReflector) {
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    if (!QFileInfo(absolute).isFile()) {
+        return render::Error{absolute.toStdString() + ": no such file"};
+    }
+    document::NodeTree tree = document::makeModelNode(absolute, m_viewport->lookAtPoint(), asReflector);
+    // Import once now, so a file Assimp cannot read is an error here and not a warning on every frame.
+    std::vector<std::string> warnings;
+    auto mesh = m_viewport->meshes().get(*tree.data.mesh, warnings);
+    if (!mesh) {
+        logMessage(tr("Could not import %1: %2").arg(absolute, QString::fromStdString(mesh.error())));
+        return render::Error{mesh.error()};
+    }
+    for (const auto& w : warnings) {
+        logMessage(QString::fromStdString(w));
+    }
+    // Fit it in a unit-sized box where the view looks: models come in any units.
+    const render::Bounds b = render::computeBounds(**mesh);
+    const glm::dvec3 extent = glm::dvec3(b.max) - glm::dvec3(b.min);
+    const double size = std::max({extent.x, extent.y, extent.z});
+    if (size > 0.0 && std::isfinite(size)) {
+        tree.data.transform.scale = glm::dvec3(1.0 / size);
+    }
+    auto status = addTree(std::move(tree));
+    if (status) {
+        logMessage(tr("Imported %1 (%2 triangles)").arg(absolute).arg((*mesh)->triangleCount()));
+    }
+    return status;
+}
+
+render::Status MainWindow::deleteSelected() {
+    const document::Node* node = m_selection->selectedNode();
+    if (!node) {
+        return render::Error{"nothing is selected"};
+    }
+    m_undoStack->push(new document::RemoveNodeCommand(*m_scene, node->id()));
+    return render::Done{};
+}
+
+render::Status MainWindow::duplicateSelected() {
+    const document::Node* node = m_selection->selectedNode();
+    if (!node) {
+        return render::Error{"nothing is selected"};
+    }
+    bool droppedReflector = false;
+    document::NodeTree copy = document::duplicateTree(*m_scene, node->id(), &droppedReflector);
+    auto* command = new document::AddNodeCommand(*m_scene, std::move(copy), m_scene->parentOf(node->id()),
+                                                 m_scene->indexOf(node->id()) + 1);
+    command->setText(tr("Duplicate %1").arg(quoted(node->name())));
+    m_undoStack->push(command);
+    m_selection->selectNode(command->nodeId());
+    if (droppedReflector) {
+        statusBar()->showMessage(tr("The copy is not a reflector: a scene has at most one."), 8000);
+    }
+    return render::Done{};
+}
+
+void MainWindow::updateEditActions() {
+    const bool hasNode = m_selection->selectedNode() != nullptr;
+    m_deleteAction->setEnabled(hasNode);
+    m_duplicateAction->setEnabled(hasNode);
+    m_renameAction->setEnabled(hasNode);
+}
+
+// ---- export ----
+
+render::Status MainWindow::exportGltfFile(const QString& path) {
+    std::vector<std::string> warnings;
+    auto status = document::exportGltf(*m_scene, path, m_viewport->meshes(), warnings);
+    for (const auto& w : warnings) {
+        logMessage(QString::fromStdString(w));
+    }
+    if (status) {
+        logMessage(tr("Exported %1").arg(path));
+        statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 5000);
+    } else {
+        logMessage(tr("glTF export failed: %1").arg(QString::fromStdString(status.error())));
+    }
+    return status;
+}
+
+render::Result<document::StillExportResult>
+MainWindow::exportStillFile(const QString& path, const document::StillExportSettings& settings,
+                            const render::ProgressCallback& progress) {
+    if (auto valid = document::validateStillExport(settings, path); !valid) {
+        return render::Error{valid.error()};
+    }
+    if (!m_viewport->isValid() || !m_viewport->renderer()) {
+        return render::Error{m_viewport->rendererError().isEmpty()
+                                 ? std::string("the viewport has no OpenGL context yet")
+                                 : m_viewport->rendererError().toStdString()};
+    }
+    // Render on the viewport's context, with its renderer: the same renderer code the CLI uses. Anything
+    // the progress callback lets run (the event loop) may make another context current: take it back.
+    m_viewport->makeCurrent();
+    const render::ProgressCallback keepContext = [&](double fraction, const std::string& stage) {
+        const bool goOn = !progress || progress(fraction, stage);
+        m_viewport->makeCurrent();
+        return goOn;
+    };
+    auto result = document::exportStill(*m_viewport->renderer(), *m_scene, m_viewport->meshes(), settings,
+                                        path, keepContext, "editor viewport context");
+    m_viewport->doneCurrent();
+    m_viewport->update();
+    if (result) {
+        for (const auto& w : result->warnings) {
+            logMessage(QString::fromStdString(w));
+        }
+        logMessage(tr("Exported %1 (%2×%3, %4 samples per pixel, %5 ms)")
+                       .arg(path)
+                       .arg(settings.width)
+                       .arg(settings.height)
+                       .arg(result->still.samples)
+                       .arg(result->still.totalMs, 0, 'f', 0));
+    } else {
+        logMessage(tr("Still export failed: %1").arg(QString::fromStdString(result.error())));
+    }
+    return result;
+}
+
+// ---- menu actions ----
+
+void MainWindow::onNew() {
+    if (maybeSave()) {
+        newProject();
+    }
+}
+
+void MainWindow::onOpen() {
+    if (!maybeSave()) {
+        return;
+    }
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Project"), dialogFolder(), kProjectFilter);
+    if (path.isEmpty()) {
+        return;
+    }
+    render::Status status = openProjectFile(path);
+    if (!status) {
+        // The error names the JSON path of the problem; the current document is unchanged.
+        QMessageBox::critical(this, tr("Open Project"),
+                              tr("Could not open %1:\n\n%2")
+                                  .arg(QFileInfo(path).fileName(), QString::fromStdString(status.error())));
+    }
+}
+
+bool MainWindow::onSave() {
+    if (m_scene->projectPath().isEmpty()) {
+        return onSaveAs();
+    }
+    render::Status status = saveProjectFile(m_scene->projectPath());
+    if (!status) {
+        QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
+        return false;
+    }
+    return true;
+}
+
+bool MainWindow::onSaveAs() {
+    QString suggestion = m_scene->projectPath();
+    if (suggestion.isEmpty()) {
+        suggestion = dialogFolder() + QStringLiteral("/untitled") + kProjectSuffix;
+    }
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"), suggestion, kProjectFilter);
+    if (path.isEmpty()) {
+        return false;
+    }
+    if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+        path += kProjectSuffix;
+    }
+    render::Status status = saveProjectFile(path);
+    if (!status) {
+        QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::onImportModel(bool asReflector) {
+    const QString path =
+        QFileDialog::getOpenFileName(this, asReflector ? tr("Import Reflector Surface") : tr("Import Model"),
+                                     dialogFolder(), document::modelFileFilter());
+    if (path.isEmpty()) {
+        return;
+    }
+    if (auto status = importModelFile(path, asReflector); !status) {
+        QMessageBox::critical(this, tr("Import Model"), QString::fromStdString(status.error()));
+    }
+}
+
+void MainWindow::onExportGltf() {
+    QString base = m_scene->projectPath();
+    base = base.isEmpty()
+               ? dialogFolder() + QStringLiteral("/scene.gltf")
+               : QFileInfo(base).absolutePath() + QLatin1Char('/') +
+                     QFileInfo(base).fileName().section(QLatin1Char('.'), 0, 0) + QStringLiteral(".gltf");
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Scene as glTF 2.0"), base,
+                                                tr("glTF 2.0 (*.gltf);;glTF 2.0 binary (*.glb)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    if (!path.endsWith(QStringLiteral(".gltf"), Qt::CaseInsensitive) &&
+        !path.endsWith(QStringLiteral(".glb"), Qt::CaseInsensitive)) {
+        path += QStringLiteral(".gltf");
+    }
+    if (auto status = exportGltfFile(path); !status) {
+        QMessageBox::critical(this, tr("Export glTF"), QString::fromStdString(status.error()));
+    }
+}
+
+void MainWindow::onExportStill() {
+    QString base = m_scene->projectPath();
+    base = base.isEmpty()
+               ? dialogFolder() + QStringLiteral("/render.png")
+               : QFileInfo(base).absolutePath() + QLatin1Char('/') +
+                     QFileInfo(base).fileName().section(QLatin1Char('.'), 0, 0) + QStringLiteral(".png");
+    ExportStillDialog dialog(base, m_clock->time(), this);
+    if (dialog.exec() != QDialog::Accepted) {
+        return;
+    }
+    document::StillExportSettings settings = dialog.settings();
+    if (dialog.useCurrentView()) {
+        settings.camera = m_viewport->viewCamera();
+    }
+    QProgressDialog progress(tr("Rendering %1…").arg(QFileInfo(dialog.outputPath()).fileName()), tr("Cancel"),
+                             0, 1000, this);
+    progress.setWindowTitle(tr("Export Still"));
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(300);
+    auto result =
+        exportStillFile(dialog.outputPath(), settings, [&](double fraction, const std::string& stage) {
+            progress.setValue(int(fraction * 1000));
+            progress.setLabelText(
+                tr("Rendering %1 (%2)…")
+                    .arg(QFileInfo(dialog.outputPath()).fileName(), QString::fromStdString(stage)));
+            QApplication::processEvents();
+            return !progress.wasCanceled();
+        });
+    progress.reset();
+    if (!result) {
+        if (progress.wasCanceled()) {
+            statusBar()->showMessage(tr("Export cancelled; nothing was written."), 5000);
+        } else {
+            QMessageBox::critical(this, tr("Export Still"), QString::fromStdString(result.error()));
+        }
+        return;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(dialog.outputPath()).fileName()), 5000);
+}
+
+void MainWindow::showControls() {
+    QMessageBox::information(
+        this, tr("Viewport Controls"),
+        tr("<table>"
+           "<tr><td><b>Click</b></td><td>select (in a mirror: the reflected object)</td></tr>"
+           "<tr><td><b>Alt+click</b></td><td>select a mirror itself</td></tr>"
+           "<tr><td><b>Drag a handle</b></td><td>move / rotate / scale the selection</td></tr>"
+           "<tr><td><b>Q / W / E / R</b></td><td>no handles / move / rotate / scale</td></tr>"
+           "<tr><td><b>Left drag</b></td><td>orbit around the camera target</td></tr>"
+           "<tr><td><b>Middle drag</b> or <b>Shift+left drag</b></td><td>pan</td></tr>"
+           "<tr><td><b>Mouse wheel</b></td><td>zoom</td></tr>"
+           "<tr><td><b>F</b></td><td>frame the selection</td></tr>"
+           "<tr><td><b>Double-click</b> or <b>Shift+F</b></td><td>back to the scene camera</td></tr>"
+           "<tr><td><b>Esc</b> while dragging</td><td>cancel the drag</td></tr>"
+           "<tr><td><b>Space</b> / <b>Home</b></td><td>play or pause / rewind the animation</td></tr>"
+           "</table><p>Moving the view does not change the document, unless View ▸ Look Through Scene "
+           "Camera is on.</p>"));
+}
+
+void MainWindow::showAbout() {
+    QMessageBox::about(
+        this, tr("About speculum"),
+        tr("<h3>speculum %1</h3><p>A scene editor for reflections: planar mirrors and "
+           "environment-mapped curved reflectors, measured against a ray-traced reference.</p>")
+            .arg(QApplication::applicationVersion()));
+}
+
+// ---- construction ----
+
+void MainWindow::createActions() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    connect(makeAction(file, QStringLiteral("actionNew"), tr("&New"), QKeySequence::New), &QAction::triggered,
+            this, &MainWindow::onNew);
+    connect(makeAction(file, QStringLiteral("actionOpen"), tr("&Open…"), QKeySequence::Open),
+            &QAction::triggered, this, &MainWindow::onOpen);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    rebuildRecentMenu();
+    connect(makeAction(file, QStringLiteral("actionSave"), tr("&Save"), QKeySequence::Save),
+            &QAction::triggered, this, &MainWindow::onSave);
+    connect(makeAction(file, QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs),
+            &QAction::triggered, this, &MainWindow::onSaveAs);
+    file->addSeparator();
+    connect(makeAction(file, QStringLiteral("actionImportModel"), tr("&Import Model…"),
+                       QKeySequence(Qt::CTRL | Qt::Key_I)),
+            &QAction::triggered, this, [this] { onImportModel(false); });
+    connect(makeAction(file, QStringLiteral("actionExportGltf"), tr("Export Scene as &glTF 2.0…"),
+                       QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E)),
+            &QAction::triggered, this, &MainWindow::onExportGltf);
+    connect(makeAction(file, QStringLiteral("actionExportStill"), tr("Export S&till…"),
+                       QKeySequence(Qt::CTRL | Qt::Key_E)),
+            &QAction::triggered, this, &MainWindow::onExportStill);
+    file->addSeparator();
+    QAction* quit = makeAction(file, QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
+    quit->setMenuRole(QAction::QuitRole);
+    connect(quit, &QAction::triggered, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    // Undo/redo texts follow the command on top of the stack: "Undo Change Reflectivity of “Mirror”".
+    QAction* undo = m_undoStack->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("actionUndo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_undoStack->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("actionRedo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    m_renameAction =
+        makeAction(edit, QStringLiteral("actionRename"), tr("Re&name"), QKeySequence(Qt::Key_F2));
+    connect(m_renameAction, &QAction::triggered, this, [this] { m_treePanel->editSelected(); });
+    m_duplicateAction = makeAction(edit, QStringLiteral("actionDuplicate"), tr("D&uplicate"),
+                                   QKeySequence(Qt::CTRL | Qt::Key_D));
+    connect(m_duplicateAction, &QAction::triggered, this, [this] { duplicateSelected(); });
+    m_deleteAction = makeAction(edit, QStringLiteral("actionDelete"), tr("&Delete"), QKeySequence::Delete);
+    connect(m_deleteAction, &QAction::triggered, this, [this] { deleteSelected(); });
+    edit->addSeparator();
+    connect(makeAction(edit, QStringLiteral("actionSelectNone"), tr("Select &None"),
+                       QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A)),
+            &QAction::triggered, m_selection, &Selection::clear);
+    // Shortcuts of the window must work while the viewport (or any dock) has focus, but not steal keys
+    // from text fields: Delete in the inspector's name field deletes characters, not the node.
+    for (QAction* a : {m_renameAction, m_duplicateAction, m_deleteAction}) {
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        m_viewport->addAction(a);
+    }
+    updateEditActions();
+
+    createAddMenu();
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    m_playAction =
+        makeAction(view, QStringLiteral("actionPlay"), tr("&Play Animation"), QKeySequence(Qt::Key_Space));
+    m_playAction->setCheckable(true);
+    // The viewport has focus most of the time; the shortcut must work from anywhere in the window.
+    m_playAction->setShortcutContext(Qt::WindowShortcut);
+    connect(m_playAction, &QAction::toggled, m_clock, &AnimationClock::setPlaying);
+    connect(m_clock, &AnimationClock::playingChanged, m_playAction, &QAction::setChecked);
+    connect(
+        makeAction(view, QStringLiteral("actionRewind"), tr("&Rewind Animation"), QKeySequence(Qt::Key_Home)),
+        &QAction::triggered, m_clock, [this] { m_clock->setTime(0.0); });
+    view->addSeparator();
+    connect(makeAction(view, QStringLiteral("actionFrameSelected"), tr("&Frame Selection"),
+                       QKeySequence(Qt::Key_F)),
+            &QAction::triggered, m_viewport, &Viewport::frameSelected);
+    connect(makeAction(view, QStringLiteral("actionResetView"), tr("Reset &View to Scene Camera"),
+                       QKeySequence(Qt::SHIFT | Qt::Key_F)),
+            &QAction::triggered, m_viewport, &Viewport::resetView);
+    QAction* throughCamera =
+        makeAction(view, QStringLiteral("actionSceneCamera"), tr("&Look Through Scene Camera"));
+    throughCamera->setCheckable(true);
+    throughCamera->setToolTip(
+        tr("Navigation moves the scene camera (undoable) instead of a free editor camera"));
+    connect(throughCamera, &QAction::toggled, m_viewport, &Viewport::setLookThroughSceneCamera);
+    connect(makeAction(view, QStringLiteral("actionCameraFromView"), tr("Set Scene &Camera from View")),
+            &QAction::triggered, this, [this] {
+                document::CameraData camera = m_scene->camera();
+                const render::Camera& v = m_viewport->viewCamera();
+                camera.position = v.position;
+                camera.target = v.target;
+                camera.up = v.up;
+                camera.far = std::max(camera.far, v.far);
+                auto* command = new document::SetCameraCommand(*m_scene, camera);
+                command->setText(tr("Set scene camera from view"));
+                m_undoStack->push(command);
+            });
+    view->addSeparator();
+    auto* handles = new QActionGroup(this);
+    const std::pair<HandleMode, std::pair<const char*, QString>> modes[] = {
+        {HandleMode::Select, {"actionHandleSelect", tr("&Select Only")}},
+        {HandleMode::Move, {"actionHandleMove", tr("&Move Handles")}},
+        {HandleMode::Rotate, {"actionHandleRotate", tr("R&otate Handles")}},
+        {HandleMode::Scale, {"actionHandleScale", tr("S&cale Handles")}}};
+    const Qt::Key keys[] = {Qt::Key_Q, Qt::Key_W, Qt::Key_E, Qt::Key_R};
+    int k = 0;
+    for (const auto& [mode, names] : modes) {
+        QAction* a =
+            makeAction(view, QString::fromLatin1(names.first), names.second, QKeySequence(keys[k++]));
+        a->setCheckable(true);
+        a->setChecked(mode == m_viewport->handleMode());
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        m_viewport->addAction(a);
+        handles->addAction(a);
+        connect(a, &QAction::triggered, m_viewport, [this, mode] { m_viewport->setHandleMode(mode); });
+    }
+    m_viewMenu = view;
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    makeAction(help, QStringLiteral("actionControls"), tr("Viewport &Controls"), QKeySequence::HelpContents);
+    connect(action(QStringLiteral("actionControls")), &QAction::triggered, this, &MainWindow::showControls);
+    QAction* about = makeAction(help, QStringLiteral("actionAbout"), tr("&About speculum"));
+    about->setMenuRole(QAction::AboutRole);
+    connect(about, &QAction::triggered, this, &MainWindow::showAbout);
+}
+
+void MainWindow::createAddMenu() {
+    using document::NewNodeKind;
+    m_addMenu = menuBar()->addMenu(tr("&Add"));
+    m_addMenu->setObjectName(QStringLiteral("addMenu"));
+    auto add = [this](QMenu* menu, const char* name, NewNodeKind kind, const QString& tip = {}) {
+        QAction* a = makeAction(menu, QString::fromLatin1(name), document::displayName(kind));
+        a->setStatusTip(tip);
+        connect(a, &QAction::triggered, this, [this, kind] {
+            if (auto status = addNode(kind); !status) {
+                QMessageBox::warning(this, tr("Add"), QString::fromStdString(status.error()));
+            }
+        });
+    };
+    add(m_addMenu, "addMirror", NewNodeKind::Mirror,
+        tr("A planar mirror: a rectangle reflecting on its +Y side"));
+    QMenu* reflector = m_addMenu->addMenu(tr("Curved &Reflector"));
+    add(reflector, "addReflectorSphere", NewNodeKind::ReflectorSphere);
+    add(reflector, "addReflectorTeapot", NewNodeKind::ReflectorTeapot);
+    connect(makeAction(reflector, QStringLiteral("addReflectorModel"), tr("Imported Mesh…")),
+            &QAction::triggered, this, [this] { onImportModel(true); });
+    m_addMenu->addSeparator();
+    QMenu* primitives = m_addMenu->addMenu(tr("&Primitive"));
+    add(primitives, "addTeapot", NewNodeKind::Teapot);
+    add(primitives, "addSphere", NewNodeKind::Sphere);
+    add(primitives, "addBox", NewNodeKind::Box);
+    add(primitives, "addPlane", NewNodeKind::Plane);
+    QMenu* lights = m_addMenu->addMenu(tr("&Light"));
+    add(lights, "addPointLight", NewNodeKind::PointLight);
+    add(lights, "addDirectionalLight", NewNodeKind::DirectionalLight);
+    add(lights, "addSpotLight", NewNodeKind::SpotLight);
+    add(m_addMenu, "addEmpty", NewNodeKind::Empty, tr("An empty node to group others under"));
+    m_addMenu->addSeparator();
+    m_addMenu->addAction(action(QStringLiteral("actionImportModel")));
+}
+
+} // namespace speculum::ui

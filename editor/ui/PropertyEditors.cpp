@@ -1,0 +1,360 @@
+#include "editor/ui/PropertyEditors.hpp"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <QToolButton>
+#include <cmath>
+#include <limits>
+
+namespace speculum::ui {
+
+using document::PropertyInfo;
+using document::PropertyKind;
+
+namespace {
+
+constexpr double kWide = 1e12; // spin boxes take anything; validation decides
+constexpr int kSliderSteps = 1000;
+
+QDoubleSpinBox* makeSpin(const PropertyInfo& info, QWidget* parent, const QString& name) {
+    auto* spin = new QDoubleSpinBox(parent);
+    spin->setObjectName(name);
+    spin->setRange(-kWide, kWide);
+    spin->setDecimals(info.kind == PropertyKind::Integer ? 0 : std::max(info.decimals, 3));
+    spin->setSingleStep(info.step);
+    spin->setKeyboardTracking(false); // typing commits on Enter or focus-out, not per keystroke
+    spin->setAccelerated(true);
+    spin->setCorrectionMode(QAbstractSpinBox::CorrectToPreviousValue);
+    if (!info.unit.isEmpty()) {
+        spin->setSuffix(info.unit);
+    }
+    spin->setToolTip(info.tooltip);
+    spin->setMinimumWidth(70);
+    spin->setFocusPolicy(Qt::StrongFocus);
+    return spin;
+}
+
+double srgbFromLinear(double c) {
+    c = std::clamp(c, 0.0, 1.0); // only for the swatch's display colour
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+
+double linearFromSrgb(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+class NumberEditor : public PropertyEditor {
+public:
+    NumberEditor(const PropertyInfo& info, QWidget* parent)
+        : PropertyEditor(info, parent) {
+        auto* layout = new QHBoxLayout(this);
+        layout->setContentsMargins(0, 0, 0, 0);
+        if (info.slider) {
+            m_slider = new QSlider(Qt::Horizontal, this);
+            m_slider->setObjectName(info.key + QStringLiteral(".slider"));
+            m_slider->setRange(0, kSliderSteps);
+            m_slider->setToolTip(info.tooltip);
+            layout->addWidget(m_slider, 1);
+            // A drag is one gesture: it begins on press and ends on release, so the next edit is a new step.
+            connect(m_slider, &QSlider::sliderPressed, this, &PropertyEditor::interactionStarted);
+            connect(m_slider, &QSlider::sliderReleased, this, &PropertyEditor::interactionStarted);
+            connect(m_slider, &QSlider::valueChanged, this, [this](int v) {
+                const double value =
+                    m_info.softMinimum + (m_info.softMaximum - m_info.softMinimum) * v / kSliderSteps;
+                const double rounded = m_info.kind == PropertyKind::Integer ? std::round(value) : value;
+                {
+                    QSignalBlocker block(m_spin);
+                    m_spin->setValue(rounded);
+                }
+                emit edited(m_info.kind == PropertyKind::Integer ? QVariant(int(rounded))
+                                                                 : QVariant(rounded));
+            });
+        }
+        m_spin = makeSpin(info, this, info.key);
+        layout->addWidget(m_spin, info.slider ? 0 : 1);
+        watchFocus(m_spin);
+        // Held arrows merge into one step; each typed value (Enter) is a step of its own.
+        connect(m_spin, &QDoubleSpinBox::editingFinished, this, &PropertyEditor::interactionStarted);
+        connect(m_spin, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+            syncSlider(v);
+            emit edited(m_info.kind == PropertyKind::Integer ? QVariant(int(std::round(v))) : QVariant(v));
+        });
+    }
+
+    void setValue(const QVariant& value) override {
+        const double v = value.toDouble();
+        QSignalBlocker block(m_spin);
+        m_spin->setValue(v);
+        syncSlider(v);
+    }
+
+private:
+    void syncSlider(double v) {
+        if (!m_slider || m_slider->isSliderDown()) {
+            return;
+        }
+        const double span = m_info.softMaximum - m_info.softMinimum;
+        const double f = span > 0 ? (v - m_info.softMinimum) / span : 0.0;
+        QSignalBlocker block(m_slider);
+        m_slider->setValue(int(std::lround(std::clamp(f, 0.0, 1.0) * kSliderSteps)));
+    }
+
+    QDoubleSpinBox* m_spin = nullptr;
+    QSlider* m_slider = nullptr;
+};
+
+class VectorEditor : public PropertyEditor {
+public:
+    VectorEditor(const PropertyInfo& info, int n, QWidget* parent)
+        : PropertyEditor(info, parent) {
+        auto* layout = new QHBoxLayout(this);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->setSpacing(2);
+        const bool color = info.kind == PropertyKind::Color;
+        if (color) {
+            m_swatch = new QPushButton(this);
+            m_swatch->setObjectName(info.key + QStringLiteral(".swatch"));
+            m_swatch->setFixedSize(28, 22);
+            m_swatch->setToolTip(tr("Pick a colour"));
+            layout->addWidget(m_swatch);
+            connect(m_swatch, &QPushButton::clicked, this, &VectorEditor::pickColor);
+        }
+        static const char* const xyz[] = {"x", "y", "z"};
+        static const char* const rgb[] = {"r", "g", "b"};
+        for (int i = 0; i < n; ++i) {
+            auto* spin =
+                makeSpin(info, this, info.key + QLatin1Char('.') + QLatin1String(color ? rgb[i] : xyz[i]));
+            spin->setSuffix(QString());
+            spin->setPrefix(QString::fromLatin1(color ? rgb[i] : xyz[i]).toUpper() + QLatin1Char(' '));
+            spin->setToolTip(info.tooltip.isEmpty() ? info.unit.trimmed() : info.tooltip);
+            spin->setMinimumWidth(60);
+            layout->addWidget(spin, 1);
+            watchFocus(spin);
+            connect(spin, &QDoubleSpinBox::valueChanged, this, [this] {
+                updateSwatch();
+                emit edited(value());
+            });
+            m_spins.push_back(spin);
+        }
+    }
+
+    void setValue(const QVariant& v) override {
+        const QVariantList list = v.toList();
+        for (int i = 0; i < m_spins.size() && i < list.size(); ++i) {
+            QSignalBlocker block(m_spins[i]);
+            m_spins[i]->setValue(list[i].toDouble());
+        }
+        updateSwatch();
+    }
+
+private:
+    QVariant value() const {
+        QVariantList list;
+        for (auto* spin : m_spins) {
+            list << spin->value();
+        }
+        return list;
+    }
+
+    QColor displayColor() const {
+        if (m_spins.size() < 3) {
+            return {};
+        }
+        return QColor::fromRgbF(float(srgbFromLinear(m_spins[0]->value())),
+                                float(srgbFromLinear(m_spins[1]->value())),
+                                float(srgbFromLinear(m_spins[2]->value())));
+    }
+
+    void updateSwatch() {
+        if (m_swatch) {
+            m_swatch->setStyleSheet(
+                QStringLiteral("background-color: %1; border: 1px solid #444;").arg(displayColor().name()));
+        }
+    }
+
+    void pickColor() {
+        emit interactionStarted();
+        const QVariant before = value();
+        QColorDialog dialog(displayColor(), this);
+        dialog.setWindowTitle(tr("%1").arg(m_info.label));
+        dialog.setOption(QColorDialog::DontUseNativeDialog);
+        // Live preview: every change while the dialog is open is one gesture (one undo step).
+        connect(&dialog, &QColorDialog::currentColorChanged, this,
+                [this](const QColor& c) { applyColor(c); });
+        if (dialog.exec() == QDialog::Accepted) {
+            applyColor(dialog.selectedColor());
+        } else {
+            setValue(before);
+            emit edited(before);
+        }
+    }
+
+    void applyColor(const QColor& c) {
+        const double values[] = {linearFromSrgb(c.redF()), linearFromSrgb(c.greenF()),
+                                 linearFromSrgb(c.blueF())};
+        for (int i = 0; i < 3; ++i) {
+            QSignalBlocker block(m_spins[i]);
+            m_spins[i]->setValue(values[i]);
+        }
+        updateSwatch();
+        emit edited(value());
+    }
+
+    QList<QDoubleSpinBox*> m_spins;
+    QPushButton* m_swatch = nullptr;
+};
+
+class BoolEditor : public PropertyEditor {
+public:
+    BoolEditor(const PropertyInfo& info, QWidget* parent)
+        : PropertyEditor(info, parent) {
+        auto* layout = new QHBoxLayout(this);
+        layout->setContentsMargins(0, 0, 0, 0);
+        m_box = new QCheckBox(this);
+        m_box->setObjectName(info.key);
+        m_box->setToolTip(info.tooltip);
+        layout->addWidget(m_box);
+        connect(m_box, &QCheckBox::toggled, this, [this](bool on) {
+            emit interactionStarted();
+            emit edited(on);
+        });
+    }
+    void setValue(const QVariant& v) override {
+        QSignalBlocker block(m_box);
+        m_box->setChecked(v.toBool());
+    }
+
+private:
+    QCheckBox* m_box;
+};
+
+class EnumEditor : public PropertyEditor {
+public:
+    EnumEditor(const PropertyInfo& info, QWidget* parent)
+        : PropertyEditor(info, parent) {
+        auto* layout = new QHBoxLayout(this);
+        layout->setContentsMargins(0, 0, 0, 0);
+        m_combo = new QComboBox(this);
+        m_combo->setObjectName(info.key);
+        m_combo->addItems(info.options);
+        m_combo->setToolTip(info.tooltip);
+        layout->addWidget(m_combo, 1);
+        connect(m_combo, &QComboBox::activated, this, [this](int i) {
+            emit interactionStarted();
+            emit edited(i);
+        });
+    }
+    void setValue(const QVariant& v) override {
+        QSignalBlocker block(m_combo);
+        m_combo->setCurrentIndex(v.isValid() ? v.toInt() : -1);
+    }
+
+private:
+    QComboBox* m_combo;
+};
+
+class TextEditor : public PropertyEditor {
+public:
+    TextEditor(const PropertyInfo& info, QWidget* parent)
+        : PropertyEditor(info, parent) {
+        auto* layout = new QHBoxLayout(this);
+        layout->setContentsMargins(0, 0, 0, 0);
+        m_edit = new QLineEdit(this);
+        m_edit->setObjectName(info.key);
+        m_edit->setToolTip(info.tooltip);
+        layout->addWidget(m_edit, 1);
+        connect(m_edit, &QLineEdit::editingFinished, this, [this] {
+            if (m_edit->isModified()) {
+                m_edit->setModified(false);
+                emit interactionStarted();
+                emit edited(m_edit->text());
+            }
+        });
+        if (info.kind == PropertyKind::FilePath) {
+            auto* browse = new QToolButton(this);
+            browse->setObjectName(info.key + QStringLiteral(".browse"));
+            browse->setText(QStringLiteral("…"));
+            browse->setToolTip(tr("Choose a file"));
+            layout->addWidget(browse);
+            connect(browse, &QToolButton::clicked, this, [this] {
+                const QString start =
+                    m_edit->text().isEmpty() ? QString() : QFileInfo(m_edit->text()).absolutePath();
+                const QString path =
+                    QFileDialog::getOpenFileName(this, m_info.label, start, m_info.fileFilter);
+                if (!path.isEmpty()) {
+                    m_edit->setText(path);
+                    emit interactionStarted();
+                    emit edited(path);
+                }
+            });
+            m_edit->setPlaceholderText(tr("none"));
+        }
+    }
+    void setValue(const QVariant& v) override {
+        QSignalBlocker block(m_edit);
+        m_edit->setText(v.toString());
+        m_edit->setModified(false);
+        m_edit->setCursorPosition(0);
+    }
+
+private:
+    QLineEdit* m_edit;
+};
+
+} // namespace
+
+PropertyEditor::PropertyEditor(const PropertyInfo& info, QWidget* parent)
+    : QWidget(parent)
+    , m_info(info) {
+    setObjectName(info.key + QStringLiteral(".editor"));
+}
+
+PropertyEditor* PropertyEditor::create(const PropertyInfo& info, QWidget* parent) {
+    switch (info.kind) {
+    case PropertyKind::Number:
+    case PropertyKind::Integer:
+        return new NumberEditor(info, parent);
+    case PropertyKind::Vector2:
+        return new VectorEditor(info, 2, parent);
+    case PropertyKind::Vector3:
+    case PropertyKind::Color:
+        return new VectorEditor(info, 3, parent);
+    case PropertyKind::Bool:
+        return new BoolEditor(info, parent);
+    case PropertyKind::Enum:
+        return new EnumEditor(info, parent);
+    case PropertyKind::Text:
+    case PropertyKind::FilePath:
+        return new TextEditor(info, parent);
+    }
+    return nullptr;
+}
+
+void PropertyEditor::setInvalid(bool invalid) {
+    setStyleSheet(invalid ? QStringLiteral("QAbstractSpinBox, QLineEdit { border: 2px solid #d03030; }")
+                          : QString());
+}
+
+void PropertyEditor::watchFocus(QWidget* widget) {
+    widget->installEventFilter(this);
+}
+
+bool PropertyEditor::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::FocusIn) {
+        emit interactionStarted();
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+} // namespace speculum::ui

@@ -1,0 +1,99 @@
+#include "editor/ui/RenderPassesPanel.hpp"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace speculum::ui {
+
+namespace {
+
+constexpr int kUpdateIntervalMs = 250;
+
+QString text(std::string_view s) {
+    return QString::fromUtf8(s.data(), qsizetype(s.size()));
+}
+
+QString ms(double value) {
+    return value < 0.0 ? QStringLiteral("–") : QString::number(value, 'f', 2);
+}
+
+} // namespace
+
+RenderPassesPanel::RenderPassesPanel(QWidget* parent)
+    : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    m_summary = new QLabel(tr("No frame yet"), this);
+    m_summary->setObjectName(QStringLiteral("passesSummary"));
+    layout->addWidget(m_summary);
+    m_tree = new QTreeWidget(this);
+    m_tree->setObjectName(QStringLiteral("passesTree"));
+    m_tree->setColumnCount(4);
+    m_tree->setHeaderLabels({tr("Pass"), tr("Target"), tr("GPU ms"), tr("Why")});
+    m_tree->setRootIsDecorated(true);
+    m_tree->setUniformRowHeights(true);
+    m_tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_tree->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_tree->header()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+    m_tree->header()->setStretchLastSection(true);
+    layout->addWidget(m_tree, 1);
+}
+
+void RenderPassesPanel::showReport(const render::FrameReport& report) {
+    if (m_sinceUpdate.isValid() && m_sinceUpdate.elapsed() < kUpdateIntervalMs) {
+        return;
+    }
+    showReportNow(report);
+}
+
+void RenderPassesPanel::showReportNow(const render::FrameReport& report) {
+    m_sinceUpdate.start();
+    const render::FramePlan& plan = report.plan;
+    m_summary->setText(tr("%1 passes, %2 skipped · CPU %3 ms · GPU %4 ms")
+                           .arg(plan.passes.size())
+                           .arg(plan.skipped.size())
+                           .arg(ms(report.cpuMs), ms(report.gpuMs)));
+
+    QString layout;
+    for (const auto& p : plan.passes) {
+        layout += text(render::toString(p.kind)) + QLatin1Char('/') + QString::fromStdString(p.target) +
+                  QLatin1Char('/') + QString::fromStdString(p.reason) + QLatin1Char('\n');
+    }
+    layout += QStringLiteral("--\n");
+    for (const auto& s : plan.skipped) {
+        layout += QString::fromStdString(s.target) + QLatin1Char('/') + QString::fromStdString(s.reason) +
+                  QLatin1Char('\n');
+    }
+    if (layout == m_lastLayout && m_tree->topLevelItemCount() == 2) {
+        // Same plan: only the timings change.
+        QTreeWidgetItem* passes = m_tree->topLevelItem(0);
+        for (int i = 0; i < passes->childCount() && i < int(plan.passes.size()); ++i) {
+            passes->child(i)->setText(2, ms(plan.passes[std::size_t(i)].gpuMs));
+        }
+        passes->setText(2, ms(report.gpuMs));
+        return;
+    }
+    m_lastLayout = layout;
+    m_tree->clear();
+    auto* passes =
+        new QTreeWidgetItem(m_tree, {tr("Passes (%1)").arg(plan.passes.size()), QString(), ms(report.gpuMs)});
+    for (const auto& p : plan.passes) {
+        auto* item =
+            new QTreeWidgetItem(passes, {text(render::toString(p.kind)), QString::fromStdString(p.target),
+                                         ms(p.gpuMs), QString::fromStdString(p.reason)});
+        item->setToolTip(3, QString::fromStdString(p.reason));
+        item->setTextAlignment(2, Qt::AlignRight | Qt::AlignVCenter);
+    }
+    auto* skipped = new QTreeWidgetItem(m_tree, {tr("Skipped effects (%1)").arg(plan.skipped.size())});
+    for (const auto& s : plan.skipped) {
+        auto* item = new QTreeWidgetItem(skipped, {tr("skipped"), QString::fromStdString(s.target), QString(),
+                                                   QString::fromStdString(s.reason)});
+        item->setToolTip(3, QString::fromStdString(s.reason));
+        item->setForeground(0, QColor(150, 90, 20));
+    }
+    m_tree->expandAll();
+}
+
+} // namespace speculum::ui

@@ -1,0 +1,67 @@
+#pragma once
+
+#include "editor/document/Scene.hpp"
+
+#include <QAbstractItemModel>
+
+class QUndoStack;
+
+namespace speculum::ui {
+
+// The document as a tree for QTreeView: the scene camera as the first top-level row, then the nodes in file
+// order. It follows the Scene's signals, so every change from anywhere (inspector, viewport, undo) shows.
+// Edits made in the view become undoable commands: renaming in place pushes RenameNodeCommand, dragging
+// a node onto another (or between rows) pushes MoveNodeCommand.
+class SceneTreeModel : public QAbstractItemModel {
+    Q_OBJECT
+
+public:
+    static constexpr quintptr kCameraId = ~quintptr(0);
+    static constexpr const char* kMimeType = "application/x-speculum-node-ids";
+
+    SceneTreeModel(document::Scene& scene, QUndoStack& undoStack, QObject* parent = nullptr);
+
+    QModelIndex indexOf(document::NodeId id) const;
+    QModelIndex cameraIndex() const;
+    // kNoNode for the camera row and invalid indexes.
+    document::NodeId nodeId(const QModelIndex& index) const;
+    bool isCamera(const QModelIndex& index) const;
+    // True while rows are being removed: views move their current index then, which is no user's choice.
+    bool isRemovingRows() const { return m_removing; }
+
+    QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
+    QModelIndex parent(const QModelIndex& index) const override;
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+
+    Qt::DropActions supportedDropActions() const override { return Qt::MoveAction; }
+    Qt::DropActions supportedDragActions() const override { return Qt::MoveAction; }
+    QStringList mimeTypes() const override;
+    QMimeData* mimeData(const QModelIndexList& indexes) const override;
+    bool canDropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                         const QModelIndex& parent) const override;
+    bool dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                      const QModelIndex& parent) override;
+
+    // Moves a node under newParent (kNoNode = top level) before scene position `index` of the new parent's
+    // current children (-1 = at the end), as one undoable command. False when the move is impossible (into
+    // its own subtree) or changes nothing.
+    bool moveNode(document::NodeId id, document::NodeId newParent, int index);
+
+private:
+    // Top-level scene index <-> model row (the camera row comes first).
+    static int rowOf(document::NodeId parent, int sceneIndex) {
+        return parent == document::kNoNode ? sceneIndex + 1 : sceneIndex;
+    }
+    QModelIndex parentIndexOf(document::NodeId parent) const;
+    std::vector<document::NodeId> decode(const QMimeData* data) const;
+
+    document::Scene& m_scene;
+    QUndoStack& m_undoStack;
+    bool m_removing = false;
+};
+
+} // namespace speculum::ui

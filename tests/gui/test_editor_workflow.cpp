@@ -1,0 +1,403 @@
+// The editor as a user drives it: building a scene from the Add menu and the inspector, undoing it all and
+// redoing it, saving and reopening; the scene tree's rename, reparent, delete and duplicate; refused
+// inspector values; click-to-select (also through a mirror) and handle drags; crash recovery.
+#include "GuiTestSupport.hpp"
+#include "editor/document/ProjectFile.hpp"
+#include "editor/document/Scene.hpp"
+#include "editor/ui/AnimationClock.hpp"
+#include "editor/ui/Gizmo.hpp"
+#include "editor/ui/Inspector.hpp"
+#include "editor/ui/PropertyEditors.hpp"
+#include "editor/ui/SceneTreeModel.hpp"
+#include "editor/ui/SceneTreePanel.hpp"
+#include "editor/ui/Selection.hpp"
+
+#include <QAction>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QDropEvent>
+#include <QFile>
+#include <QLabel>
+#include <QMimeData>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTreeView>
+#include <QUndoStack>
+#include <QUrl>
+#include <QWindow>
+#include <gtest/gtest.h>
+#include <optional>
+
+namespace {
+
+using namespace speculum;
+using namespace speculum::ui::test;
+using document::NodeId;
+using ui::MainWindow;
+
+const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+
+class EditorWorkflow : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_window = std::make_unique<MainWindow>();
+        m_window->resize(1600, 900);
+        m_window->show();
+        ASSERT_TRUE(
+            waitFor([&] { return m_window->windowHandle() && m_window->windowHandle()->isExposed(); }));
+        m_window->clock().setPlaying(false);
+        m_window->clock().setTime(0.0);
+    }
+
+    void TearDown() override {
+        if (m_window) {
+            m_window->undoStack().setClean();
+            m_window->newProject(); // nothing modified: no prompt on close
+            m_window.reset();
+        }
+    }
+
+    void openTeapot() {
+        auto status = m_window->openProjectFile(kTeapotProject);
+        ASSERT_TRUE(status.ok()) << status.error();
+        ASSERT_TRUE(waitForFrames(*m_window));
+        ASSERT_TRUE(m_window->viewport().rendererError().isEmpty());
+    }
+
+    void trigger(const char* name) {
+        QAction* a = m_window->action(QString::fromLatin1(name));
+        ASSERT_NE(a, nullptr) << name;
+        ASSERT_TRUE(a->isEnabled()) << name;
+        a->trigger();
+    }
+
+    // A spin box of the inspector: "<key>" for numbers, "<key>.x" etc. for vectors and colours.
+    QDoubleSpinBox* spin(const QString& key, const QString& part = {}) {
+        ui::PropertyEditor* editor = m_window->inspector().editor(key);
+        if (!editor) {
+            ADD_FAILURE() << "no editor for " << key.toStdString();
+            return nullptr;
+        }
+        auto* box = editor->findChild<QDoubleSpinBox*>(part.isEmpty() ? key : key + QLatin1Char('.') + part);
+        EXPECT_NE(box, nullptr) << key.toStdString() << " " << part.toStdString();
+        return box;
+    }
+
+    void setVector(const QString& key, const glm::dvec3& v) {
+        const char* parts[] = {"x", "y", "z"};
+        for (int i = 0; i < 3; ++i) {
+            if (QDoubleSpinBox* s = spin(key, QString::fromLatin1(parts[i]))) {
+                s->setValue(v[i]);
+            }
+        }
+    }
+
+    const document::Node* selected() { return m_window->selection().selectedNode(); }
+
+    std::optional<NodeId> nodeNamed(const std::string& name) {
+        std::optional<NodeId> found;
+        m_window->scene().forEachNode([&](const document::Node& node) {
+            if (node.name() == name && !found) {
+                found = node.id();
+            }
+        });
+        return found;
+    }
+
+    // Widget position (logical pixels) of a world point in the viewport's current view.
+    QPoint onScreen(const glm::dvec3& world) {
+        ui::ScreenProjection projection(m_window->viewport().viewCamera(),
+                                        QSizeF(m_window->viewport().width(), m_window->viewport().height()));
+        const auto p = projection.project(world);
+        EXPECT_TRUE(p.has_value());
+        return p ? p->toPoint() : QPoint();
+    }
+
+    std::unique_ptr<MainWindow> m_window;
+};
+
+TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndReopen) {
+    m_window->newProject();
+    QUndoStack& undo = m_window->undoStack();
+
+    trigger("addTeapot");
+    ASSERT_TRUE(selected());
+    EXPECT_EQ(selected()->name(), "Teapot");
+    setVector(QStringLiteral("transform.translate"), {0.0, -1.0, -3.0});
+
+    trigger("addMirror");
+    EXPECT_EQ(selected()->name(), "Mirror");
+    setVector(QStringLiteral("transform.translate"), {0.0, -1.0, -3.0});
+    spin(QStringLiteral("mirror.size"), QStringLiteral("x"))->setValue(4.0);
+    spin(QStringLiteral("mirror.size"), QStringLiteral("y"))->setValue(4.0);
+    spin(QStringLiteral("mirror.reflectivity"))->setValue(0.6);
+
+    trigger("addMirror");
+    EXPECT_EQ(selected()->name(), "Mirror 2");
+    setVector(QStringLiteral("transform.translate"), {0.0, 0.0, -5.0});
+    spin(QStringLiteral("transform.rotate"), QStringLiteral("x"))->setValue(90.0); // a back wall facing +Z
+
+    trigger("addReflectorSphere");
+    EXPECT_EQ(selected()->name(), "Chrome sphere");
+    setVector(QStringLiteral("transform.translate"), {1.0, -0.6, -3.0});
+
+    trigger("addPointLight");
+    EXPECT_EQ(selected()->name(), "Point light");
+    setVector(QStringLiteral("transform.translate"), {0.0, 2.0, -2.0});
+    EXPECT_EQ(undo.undoText().toStdString(), "Change Translate of \u201cPoint light\u201d");
+    EXPECT_TRUE(m_window->action(QStringLiteral("actionUndo"))->text().contains(undo.undoText()));
+
+    // A second reflector is refused (the menu action stays harmless).
+    EXPECT_FALSE(m_window->addNode(document::NewNodeKind::ReflectorTeapot).ok());
+
+    // Scene tree shows them all (camera row first), with the kinds' names.
+    ui::SceneTreeModel& tree = m_window->sceneTreeModel();
+    ASSERT_EQ(tree.rowCount(), 6);
+    EXPECT_EQ(tree.index(1, 0).data().toString(), QStringLiteral("Teapot"));
+    EXPECT_EQ(tree.index(5, 0).data().toString(), QStringLiteral("Point light"));
+
+    const document::SceneData built = m_window->scene().toData();
+    ASSERT_EQ(built.nodes.size(), 5u);
+    EXPECT_EQ(built.nodes[1].data.mirror->size, glm::dvec2(4.0, 4.0));
+    EXPECT_DOUBLE_EQ(built.nodes[1].data.mirror->reflectivity, 0.6);
+    EXPECT_DOUBLE_EQ(built.nodes[2].data.transform.rotate.x, 90.0);
+    EXPECT_TRUE(built.nodes[3].data.reflector);
+    EXPECT_TRUE(built.nodes[4].data.light);
+    EXPECT_TRUE(m_window->isWindowModified());
+
+    // Undo everything: an empty scene, an empty tree; redo everything: the same scene.
+    const int steps = undo.count();
+    EXPECT_GE(steps, 10);
+    while (undo.canUndo()) {
+        undo.undo();
+    }
+    EXPECT_TRUE(m_window->scene().topLevelNodes().empty());
+    EXPECT_EQ(tree.rowCount(), 1);
+    EXPECT_FALSE(m_window->isWindowModified());
+    while (undo.canRedo()) {
+        undo.redo();
+    }
+    EXPECT_TRUE(m_window->scene().toData() == built);
+    EXPECT_EQ(tree.rowCount(), 6);
+    ASSERT_TRUE(waitForFrames(*m_window));
+
+    // Save, start afresh, reopen: the same scene.
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("built.speculum.json"));
+    ASSERT_TRUE(m_window->saveProjectFile(path).ok());
+    EXPECT_FALSE(m_window->isWindowModified());
+    EXPECT_EQ(m_window->recentFiles().value(0), path);
+    m_window->newProject();
+    EXPECT_TRUE(m_window->scene().topLevelNodes().empty());
+    ASSERT_TRUE(m_window->openProjectFile(path).ok());
+    EXPECT_TRUE(m_window->scene().toData() == built);
+    EXPECT_EQ(m_window->windowHandle()->title(), QStringLiteral("built.speculum.json — speculum"));
+}
+
+TEST_F(EditorWorkflow, ASliderDragIsOneUndoStepAndInvalidValuesAreRefusedVisibly) {
+    m_window->newProject();
+    trigger("addMirror");
+    const NodeId mirror = selected()->id();
+    QUndoStack& undo = m_window->undoStack();
+    const int before = undo.count();
+
+    auto* slider = m_window->inspector()
+                       .editor(QStringLiteral("mirror.reflectivity"))
+                       ->findChild<QSlider*>(QStringLiteral("mirror.reflectivity.slider"));
+    ASSERT_NE(slider, nullptr);
+    slider->setSliderDown(true); // press
+    for (int v : {100, 200, 300, 400}) {
+        slider->setValue(v);
+    }
+    slider->setSliderDown(false);
+    EXPECT_EQ(undo.count(), before + 1) << "one drag, one step";
+    EXPECT_NEAR(m_window->scene().findNode(mirror)->data().mirror->reflectivity, 0.4, 1e-9);
+    EXPECT_EQ(undo.undoText().toStdString(), "Change Reflectivity of \u201cMirror\u201d");
+
+    // A second drag is a second step.
+    slider->setSliderDown(true);
+    slider->setValue(500);
+    slider->setSliderDown(false);
+    EXPECT_EQ(undo.count(), before + 2);
+
+    // Out of range: refused with a message, nothing changes, nothing is clamped.
+    spin(QStringLiteral("mirror.reflectivity"))->setValue(2.0);
+    const QString error = m_window->inspector().errorText();
+    EXPECT_TRUE(error.contains(QStringLiteral("Reflectivity must be in 0..1, got 2"))) << error.toStdString();
+    EXPECT_TRUE(m_window->inspector().findChild<QLabel*>(QStringLiteral("inspectorError"))->isVisible());
+    EXPECT_NEAR(m_window->scene().findNode(mirror)->data().mirror->reflectivity, 0.5, 1e-9);
+    EXPECT_EQ(undo.count(), before + 2);
+    spin(QStringLiteral("mirror.size"), QStringLiteral("x"))->setValue(-1.0);
+    EXPECT_TRUE(m_window->inspector().errorText().contains(QStringLiteral("greater than 0")));
+    EXPECT_EQ(m_window->scene().findNode(mirror)->data().mirror->size.x, 2.0);
+
+    // A valid value clears the message.
+    spin(QStringLiteral("mirror.reflectivity"))->setValue(0.75);
+    EXPECT_TRUE(m_window->inspector().errorText().isEmpty());
+    EXPECT_NEAR(m_window->scene().findNode(mirror)->data().mirror->reflectivity, 0.75, 1e-9);
+
+    // The inspector follows undo.
+    undo.undo();
+    EXPECT_NEAR(spin(QStringLiteral("mirror.reflectivity"))->value(), 0.5, 1e-9);
+}
+
+TEST_F(EditorWorkflow, SceneTreeRenamesReparentsDeletesAndDuplicatesUndoably) {
+    openTeapot();
+    ui::SceneTreeModel& tree = m_window->sceneTreeModel();
+    QUndoStack& undo = m_window->undoStack();
+    const NodeId teapot = *nodeNamed("Teapot");
+    const NodeId light = *nodeNamed("Light");
+
+    // Rename in place.
+    ASSERT_TRUE(tree.setData(tree.indexOf(teapot), QStringLiteral("Pot")));
+    EXPECT_EQ(m_window->scene().findNode(teapot)->name(), "Pot");
+    EXPECT_EQ(undo.undoText().toStdString(), "Rename \u201cTeapot\u201d to \u201cPot\u201d");
+    EXPECT_FALSE(tree.setData(tree.indexOf(teapot), QString())) << "an empty name is refused";
+    undo.undo();
+    EXPECT_EQ(tree.indexOf(teapot).data().toString(), QStringLiteral("Teapot"));
+
+    // Drag the light onto the teapot: it becomes its child.
+    std::unique_ptr<QMimeData> mime(tree.mimeData({tree.indexOf(light)}));
+    ASSERT_TRUE(tree.canDropMimeData(mime.get(), Qt::MoveAction, -1, 0, tree.indexOf(teapot)));
+    tree.dropMimeData(mime.get(), Qt::MoveAction, -1, 0, tree.indexOf(teapot));
+    EXPECT_EQ(m_window->scene().parentOf(light), teapot);
+    EXPECT_EQ(tree.indexOf(light).parent(), tree.indexOf(teapot));
+    EXPECT_EQ(undo.undoText().toStdString(), "Move \u201cLight\u201d");
+    // Not into its own subtree.
+    std::unique_ptr<QMimeData> up(tree.mimeData({tree.indexOf(teapot)}));
+    EXPECT_FALSE(tree.canDropMimeData(up.get(), Qt::MoveAction, -1, 0, tree.indexOf(light)));
+    undo.undo();
+    EXPECT_EQ(m_window->scene().parentOf(light), document::kNoNode);
+    EXPECT_EQ(tree.rowCount(), 4);
+
+    // Delete and duplicate through the Edit menu.
+    m_window->selection().selectNode(light);
+    trigger("actionDelete");
+    QCoreApplication::processEvents(); // the selection lets go of removed nodes once the command is done
+    EXPECT_FALSE(m_window->scene().findNode(light));
+    EXPECT_EQ(tree.rowCount(), 3);
+    EXPECT_TRUE(m_window->selection().isEmpty());
+    undo.undo();
+    EXPECT_TRUE(m_window->scene().findNode(light)) << "the same node comes back";
+    EXPECT_TRUE(tree.indexOf(light).isValid());
+
+    m_window->selection().selectNode(teapot);
+    trigger("actionDuplicate");
+    ASSERT_TRUE(selected());
+    EXPECT_EQ(selected()->name(), "Teapot 2");
+    EXPECT_EQ(m_window->scene().indexOf(selected()->id()), m_window->scene().indexOf(teapot) + 1);
+    EXPECT_EQ(undo.undoText().toStdString(), "Duplicate \u201cTeapot\u201d");
+    EXPECT_EQ(tree.rowCount(), 5);
+
+    // The tree's selection follows the shared selection.
+    auto* view = m_window->sceneTree().findChild<QTreeView*>(QStringLiteral("sceneTree"));
+    ASSERT_NE(view, nullptr);
+    EXPECT_EQ(tree.nodeId(view->currentIndex()), selected()->id());
+}
+
+TEST_F(EditorWorkflow, ClickSelectsThroughMirrorsAndHandlesMoveWithOneUndoStep) {
+    openTeapot();
+    ui::Viewport& viewport = m_window->viewport();
+    const NodeId teapot = *nodeNamed("Teapot");
+    const NodeId table = *nodeNamed("Table");
+    ASSERT_TRUE(m_window->scene().findNode(table)->data().mirror) << "the demo's table is a mirror";
+
+    // The teapot's body.
+    const glm::dvec3 body(0.0, -1.0 + 1.0 * 0.25, -3.0);
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, onScreen(body));
+    EXPECT_EQ(m_window->selection().node(), teapot);
+
+    // Its reflection in the table (the mirror image of the body below the table plane y = -1).
+    const glm::dvec3 reflection(0.0, -1.0 - 1.0 * 0.25, -3.0);
+    m_window->selection().clear();
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, onScreen(reflection));
+    EXPECT_EQ(m_window->selection().node(), teapot) << "clicking a reflection selects the real object";
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::AltModifier, onScreen(reflection));
+    EXPECT_EQ(m_window->selection().node(), table) << "Alt+click selects the mirror itself";
+
+    // The sky: nothing.
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, QPoint(viewport.width() / 2, 5));
+    EXPECT_TRUE(m_window->selection().isEmpty());
+
+    // Drag the teapot's X handle to the right: it moves along +X, as one undo step.
+    m_window->selection().selectNode(teapot);
+    viewport.setHandleMode(ui::HandleMode::Move);
+    ASSERT_TRUE(waitForFrames(*m_window));
+    const auto handle = viewport.handlePoint(0);
+    ASSERT_TRUE(handle);
+    const int before = m_window->undoStack().count();
+    const double x0 = m_window->scene().findNode(teapot)->data().transform.translate.x;
+    const QPoint start = handle->toPoint();
+    QTest::mousePress(&viewport, Qt::LeftButton, Qt::NoModifier, start);
+    for (int dx = 10; dx <= 60; dx += 10) {
+        QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(dx, 0)),
+                         viewport.mapToGlobal(QPointF(start + QPoint(dx, 0))), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QCoreApplication::sendEvent(&viewport, &move);
+    }
+    QTest::mouseRelease(&viewport, Qt::LeftButton, Qt::NoModifier, start + QPoint(60, 0));
+    const auto& moved = m_window->scene().findNode(teapot)->data().transform;
+    EXPECT_GT(moved.translate.x, x0 + 0.1);
+    EXPECT_NEAR(moved.translate.y, -1.0, 1e-9) << "only along X";
+    EXPECT_EQ(m_window->undoStack().count(), before + 1);
+    EXPECT_EQ(m_window->undoStack().undoText().toStdString(), "Move \u201cTeapot\u201d");
+    m_window->undoStack().undo();
+    EXPECT_DOUBLE_EQ(m_window->scene().findNode(teapot)->data().transform.translate.x, x0);
+
+    // Rotate and scale handles exist too.
+    viewport.setHandleMode(ui::HandleMode::Scale);
+    EXPECT_TRUE(viewport.handlePoint(1));
+    viewport.setHandleMode(ui::HandleMode::Rotate);
+    EXPECT_TRUE(viewport.handlePoint(2));
+    viewport.setHandleMode(ui::HandleMode::Select);
+    EXPECT_FALSE(viewport.handlePoint(0));
+}
+
+TEST_F(EditorWorkflow, ImportsDroppedModelsAndOffersRecoveredWork) {
+    m_window->newProject();
+    const QString box = QStringLiteral("/usr/share/assimp/models/OBJ/box.obj");
+    if (!QFile::exists(box)) {
+        GTEST_SKIP() << "assimp-testmodels not installed";
+    }
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(box)});
+    // As Qt delivers a drag: enter (which makes the window the drop target), then drop.
+    QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(m_window.get(), &enter);
+    EXPECT_TRUE(enter.isAccepted()) << "model files are accepted";
+    QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(m_window.get(), &drop);
+    ASSERT_EQ(m_window->scene().topLevelNodes().size(), 1u);
+    const auto& node = m_window->scene().topLevelNodes().front()->data();
+    EXPECT_EQ(node.name, "box");
+    ASSERT_TRUE(node.mesh);
+    EXPECT_EQ(node.mesh->file, box.toStdString());
+    EXPECT_FALSE(
+        m_window->importModelFile(QStringLiteral("/usr/share/assimp/models/invalid/empty.obj")).ok());
+
+    // The unsaved document goes to a recovery file; a later editor restores it, marked modified.
+    QTemporaryDir dir;
+    m_window->setRecoveryStore(document::RecoveryStore(dir.path(), 4194303 + 99)); // as if this process died
+    ASSERT_TRUE(m_window->autosaveNow().ok());
+    const auto data = m_window->scene().toData();
+    m_window->setRecoveryStore(document::RecoveryStore(dir.path(), QCoreApplication::applicationPid()));
+    m_window->undoStack().setClean();
+    m_window->newProject();
+    const auto orphans = m_window->recoveryStore().orphans();
+    ASSERT_EQ(orphans.size(), 1u);
+    ASSERT_TRUE(m_window->restoreRecovery(orphans.front()).ok());
+    EXPECT_TRUE(m_window->scene().toData() == data);
+    EXPECT_TRUE(m_window->isModified());
+    EXPECT_EQ(m_window->windowHandle()->title(), QStringLiteral("Untitled* — speculum"));
+    m_window->newProject();
+    EXPECT_TRUE(m_window->recoveryStore().orphans().empty());
+
+    // glTF export through the window.
+    const QString gltf = QDir(dir.path()).filePath(QStringLiteral("scene.glb"));
+    ASSERT_TRUE(m_window->exportGltfFile(gltf).ok());
+    EXPECT_TRUE(QFile::exists(gltf));
+}
+
+} // namespace
