@@ -83,6 +83,17 @@ struct Mirror {
 };
 
 enum class ReflectorMap { Cube, DualParaboloid, TennisBall };
+enum class ReflectorFill { Direct, Resampled };
+enum class ReflectorUpdate { Always, OnChange, Once };
+
+// A proxy of the environment for parallax-corrected lookups, around the capture point (world axes).
+struct ParallaxProxy {
+    enum class Shape { None, Sphere, Box };
+    Shape shape = Shape::None;
+    double radius = 1.0;  // sphere
+    glm::dvec3 min{-1.0}; // box, relative to the capture point
+    glm::dvec3 max{1.0};
+};
 
 struct Reflector {
     std::string name;
@@ -91,7 +102,12 @@ struct Reflector {
     Material material;
     ReflectorMap map = ReflectorMap::Cube;
     int resolution = 256;
-    double reflectivity = 1.0;
+    double reflectivity = 1.0; // at normal incidence when fresnel is on
+    bool fresnel = false;
+    ReflectorFill fill = ReflectorFill::Resampled; // the non-linear maps only
+    ParallaxProxy parallax;
+    ReflectorUpdate update = ReflectorUpdate::OnChange;
+    int mirrorDepth = 1; // planar-mirror levels inside the environment map
 };
 
 struct FrameInput {

@@ -10,6 +10,7 @@
 #include "render/mesh/Primitives.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/MirrorPasses.hpp"
+#include "render/passes/ReflectorPass.hpp"
 #include "render/passes/ShadowMaps.hpp"
 #include "render/plan/Planner.hpp"
 
@@ -57,6 +58,7 @@ struct Renderer::State {
     gl::MeshCache meshes;
     gl::TextureCache textures;
     passes::ShadowMaps shadows;
+    passes::ReflectorPass reflector; // the curved reflector's environment map and surface
     // The linear (half-float) colour buffer every frame is drawn into before the composite pass, with
     // the depth-stencil buffer the mirror passes nest in.
     gl::RenderTexture linear;
@@ -104,6 +106,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create() {
     s.dummyShadow2D = makeDummyDepth(GL_TEXTURE_2D);
     s.dummyShadowCube = makeDummyDepth(GL_TEXTURE_CUBE_MAP);
     s.unitPlane = std::make_shared<const MeshData>(makePlane(1));
+    if (Status reflector = s.reflector.init(); !reflector)
+        return Error{reflector.error()};
     return renderer;
 }
 
@@ -157,6 +161,9 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
     passes::MainPassContext ctx{
         s.meshProgram,          s.meshes,   s.textures, s.shadows, plan.shadowedLights, s.dummyShadow2D.id(),
         s.dummyShadowCube.id(), s.unitPlane};
+    // Every view the main pass draws (the camera's and each mirror's) draws the reflector with its map.
+    ctx.drawReflector = [&s](const FrameInput& in, const passes::ViewSetup& view,
+                             passes::MainPassContext& c) { return s.reflector.drawSurface(in, view, c); };
 
     // The framebuffer a view's scene is drawn into: its own texture, or its parent's target.
     auto targetOf = [&](int viewIndex) -> GLuint {
@@ -195,6 +202,28 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
             s.shadows.render(input, pass.lightIndex, s.meshes, s.shadowProgram);
             s.plannerState.shadowSignatures[pass.lightIndex] = shadowSignature(input, pass.lightIndex);
             break;
+        case PassKind::Envmap: {
+            for (int lightIndex : plan.shadowedLights)
+                s.shadows.setPcf(lightIndex, input.lights[static_cast<std::size_t>(lightIndex)].shadows.pcf);
+            resetState();
+            passes::MainPassContext envCtx{s.meshProgram,
+                                           s.meshes,
+                                           s.textures,
+                                           s.shadows,
+                                           plan.shadowedLights,
+                                           s.dummyShadow2D.id(),
+                                           s.dummyShadowCube.id(),
+                                           s.unitPlane};
+            if (Status captured = s.reflector.capture(input, envmapCapture(input), envCtx,
+                                                      {&s.flatProgram, &s.mirrorProgram});
+                captured) {
+                s.plannerState.envmapSignature = envmapSignature(input);
+                s.plannerState.envmapSettings = envmapSettingsKey(*input.reflector);
+            } else {
+                report.warnings.push_back(captured.error());
+            }
+            break;
+        }
         case PassKind::Main: {
             for (int lightIndex : plan.shadowedLights)
                 s.shadows.setPcf(lightIndex, input.lights[static_cast<std::size_t>(lightIndex)].shadows.pcf);
@@ -324,7 +353,9 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
     }
     plan.passes = std::move(executed);
     s.meshes.purge();
-    report.warnings = s.textures.takeWarnings();
+    s.reflector.purge();
+    for (std::string& warning : s.textures.takeWarnings())
+        report.warnings.push_back(std::move(warning));
     report.cpuMs = msSince(frameStart);
     return report;
 }

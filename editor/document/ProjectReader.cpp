@@ -462,8 +462,48 @@ private:
         requireRange(r.resolution, 8, 8192, o.at("resolution"));
         o.optional("reflectivity", r.reflectivity, readNumber);
         requireRange(r.reflectivity, 0.0, 1.0, o.at("reflectivity"));
+        o.optional("fresnel", r.fresnel, readBool);
+        o.optional("fill", r.fill, [](const QJsonValue& t, const std::string& p) {
+            return readEnum<ReflectorFill>(t, p, "reflector fill", reflectorFillFromString,
+                                           "direct or resampled");
+        });
+        if (const QJsonValue p = o.get("parallax"); !p.isUndefined()) {
+            r.parallax = readParallax(p, o.at("parallax"));
+        }
+        o.optional("update", r.update, [](const QJsonValue& t, const std::string& p) {
+            return readEnum<ReflectorUpdate>(t, p, "reflector update", reflectorUpdateFromString,
+                                             "always, on-change or once");
+        });
+        o.optional("mirrorDepth", r.mirrorDepth, readInt);
+        requireRange(r.mirrorDepth, 0, 16, o.at("mirrorDepth"));
         r.extra = o.finish();
         return r;
+    }
+
+    ReflectorParallax readParallax(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        ReflectorParallax p;
+        const QJsonValue shape = o.get("shape");
+        if (shape.isUndefined()) {
+            fail(path, "expected a \"shape\" (sphere or box)");
+        }
+        p.shape = readEnum<ParallaxShape>(shape, o.at("shape"), "parallax shape", parallaxShapeFromString,
+                                          "sphere or box");
+        if (p.shape == ParallaxShape::Sphere) {
+            o.optional("radius", p.radius, readNumber);
+            requirePositive(p.radius, o.at("radius"));
+        } else {
+            o.optional("min", p.min, readVec<3>);
+            o.optional("max", p.max, readVec<3>);
+            for (int i = 0; i < 3; ++i) {
+                if (!(p.min[i] < 0.0 && p.max[i] > 0.0)) {
+                    fail(o.at(p.min[i] < 0.0 ? "max" : "min"),
+                         "the box must contain the capture point (min < 0 < max on every axis)");
+                }
+            }
+        }
+        p.extra = o.finish();
+        return p;
     }
 
     AnimationComponent readAnimation(const QJsonValue& v, const std::string& path) {

@@ -206,6 +206,23 @@ private:
         field("map", toString(r.map));
         field("resolution", r.resolution);
         field("reflectivity", r.reflectivity);
+        field("fresnel", QJsonValue(r.fresnel));
+        field("fill", toString(r.fill));
+        if (r.parallax) {
+            w.key("parallax");
+            w.beginObject();
+            field("shape", toString(r.parallax->shape));
+            if (r.parallax->shape == ParallaxShape::Sphere) {
+                field("radius", r.parallax->radius);
+            } else {
+                vec("min", r.parallax->min);
+                vec("max", r.parallax->max);
+            }
+            writeExtra(r.parallax->extra);
+            w.endObject();
+        }
+        field("update", toString(r.update));
+        field("mirrorDepth", r.mirrorDepth);
         writeExtra(r.extra);
         w.endObject();
     }

@@ -46,6 +46,17 @@ constexpr std::array<std::pair<ReflectorMap, std::string_view>, 3> kMapNames{
      {ReflectorMap::DualParaboloid, "dual-paraboloid"},
      {ReflectorMap::TennisBall, "tennis-ball"}}};
 
+constexpr std::array<std::pair<ReflectorFill, std::string_view>, 2> kFillNames{
+    {{ReflectorFill::Direct, "direct"}, {ReflectorFill::Resampled, "resampled"}}};
+
+constexpr std::array<std::pair<ReflectorUpdate, std::string_view>, 3> kUpdateNames{
+    {{ReflectorUpdate::Always, "always"},
+     {ReflectorUpdate::OnChange, "on-change"},
+     {ReflectorUpdate::Once, "once"}}};
+
+constexpr std::array<std::pair<ParallaxShape, std::string_view>, 2> kShapeNames{
+    {{ParallaxShape::Sphere, "sphere"}, {ParallaxShape::Box, "box"}}};
+
 } // namespace
 
 int defaultTessellation(BuiltinMesh kind) {
@@ -101,6 +112,24 @@ std::optional<MirrorTechnique> mirrorTechniqueFromString(std::string_view name) 
 }
 std::optional<ReflectorMap> reflectorMapFromString(std::string_view name) {
     return valueOf(kMapNames, name);
+}
+std::string_view toString(ReflectorFill fill) {
+    return nameOf(kFillNames, fill);
+}
+std::string_view toString(ReflectorUpdate update) {
+    return nameOf(kUpdateNames, update);
+}
+std::string_view toString(ParallaxShape shape) {
+    return nameOf(kShapeNames, shape);
+}
+std::optional<ReflectorFill> reflectorFillFromString(std::string_view name) {
+    return valueOf(kFillNames, name);
+}
+std::optional<ReflectorUpdate> reflectorUpdateFromString(std::string_view name) {
+    return valueOf(kUpdateNames, name);
+}
+std::optional<ParallaxShape> parallaxShapeFromString(std::string_view name) {
+    return valueOf(kShapeNames, name);
 }
 
 } // namespace speculum::document

@@ -141,12 +141,34 @@ struct MirrorComponent {
 };
 
 enum class ReflectorMap { Cube, DualParaboloid, TennisBall };
+// How the two non-linear maps are filled: warping the scene's vertices (the reference's method, needs fine
+// tessellation) or resampling a cube map rendered first (exact up to the cube's resolution).
+enum class ReflectorFill { Direct, Resampled };
+// When the map is rendered again: every frame, when something it sees changed, or once.
+enum class ReflectorUpdate { Always, OnChange, Once };
+enum class ParallaxShape { Sphere, Box };
+
+// Parallax correction: a proxy of the environment around the capture point (the reflector's centre),
+// in world axes and units relative to that point. Lookups intersect the reflected ray with it.
+struct ReflectorParallax {
+    ParallaxShape shape = ParallaxShape::Sphere;
+    double radius = 5.0;              // sphere
+    glm::dvec3 min{-5.0, -5.0, -5.0}; // box, relative to the capture point
+    glm::dvec3 max{5.0, 5.0, 5.0};
+    QJsonObject extra;
+    bool operator==(const ReflectorParallax&) const = default;
+};
 
 // The curved reflector (at most one per scene); its surface is the node's mesh.
 struct ReflectorComponent {
     ReflectorMap map = ReflectorMap::Cube;
     int resolution = 256; // 8..8192
     double reflectivity = 1.0;
+    bool fresnel = false; // Schlick: `reflectivity` at normal incidence, rising to 1 at grazing angles
+    ReflectorFill fill = ReflectorFill::Resampled;
+    std::optional<ReflectorParallax> parallax; // off when absent
+    ReflectorUpdate update = ReflectorUpdate::OnChange;
+    int mirrorDepth = 1; // levels of planar mirrors inside the environment map, 0..16
     QJsonObject extra;
     bool operator==(const ReflectorComponent&) const = default;
 };
@@ -186,9 +208,15 @@ std::string_view toString(BuiltinMesh kind);
 std::string_view toString(LightType type);
 std::string_view toString(MirrorTechnique technique);
 std::string_view toString(ReflectorMap map);
+std::string_view toString(ReflectorFill fill);
+std::string_view toString(ReflectorUpdate update);
+std::string_view toString(ParallaxShape shape);
 std::optional<BuiltinMesh> builtinMeshFromString(std::string_view name);
 std::optional<LightType> lightTypeFromString(std::string_view name);
 std::optional<MirrorTechnique> mirrorTechniqueFromString(std::string_view name);
 std::optional<ReflectorMap> reflectorMapFromString(std::string_view name);
+std::optional<ReflectorFill> reflectorFillFromString(std::string_view name);
+std::optional<ReflectorUpdate> reflectorUpdateFromString(std::string_view name);
+std::optional<ParallaxShape> parallaxShapeFromString(std::string_view name);
 
 } // namespace speculum::document

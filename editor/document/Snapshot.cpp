@@ -143,6 +143,20 @@ private:
         r.map = toRender(d.reflector->map);
         r.resolution = d.reflector->resolution;
         r.reflectivity = d.reflector->reflectivity;
+        r.fresnel = d.reflector->fresnel;
+        r.fill = d.reflector->fill == ReflectorFill::Direct ? render::ReflectorFill::Direct
+                                                            : render::ReflectorFill::Resampled;
+        r.update = d.reflector->update == ReflectorUpdate::Always ? render::ReflectorUpdate::Always
+                   : d.reflector->update == ReflectorUpdate::Once ? render::ReflectorUpdate::Once
+                                                                  : render::ReflectorUpdate::OnChange;
+        r.mirrorDepth = d.reflector->mirrorDepth;
+        if (const auto& p = d.reflector->parallax) {
+            r.parallax.shape = p->shape == ParallaxShape::Sphere ? render::ParallaxProxy::Shape::Sphere
+                                                                 : render::ParallaxProxy::Shape::Box;
+            r.parallax.radius = p->radius;
+            r.parallax.min = p->min;
+            r.parallax.max = p->max;
+        }
         frame.reflector = std::move(r);
     }
 

@@ -90,7 +90,7 @@ void setMaterial(const Material& m, const gl::Program& p, const MainPassContext&
 
 void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& p,
                   MainPassContext& ctx) {
-    ctx.mirroredView = glm::determinant(glm::dmat3(view.reflection)) < 0.0;
+    ctx.mirroredView = (glm::determinant(glm::dmat3(view.reflection)) < 0.0) != view.flipWinding;
     const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
     const glm::dmat4 fromCameraRelative = glm::inverse(toCameraRelative);
     p.use();
@@ -135,7 +135,8 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
         setMaterial(input.mirrors[i].material, p, ctx);
         drawLitMesh(ctx.unitPlane, mirrorRectangle(input.mirrors[i]), input, p, ctx);
     }
-    if (input.reflector && input.reflector->mesh) {
+    if (input.reflector && input.reflector->mesh &&
+        !(ctx.drawReflector && ctx.drawReflector(input, view, ctx))) {
         setMaterial(input.reflector->material, p, ctx);
         drawLitMesh(input.reflector->mesh, input.reflector->world, input, p, ctx);
     }

@@ -6,6 +6,7 @@
 #include "render/gl/TextureCache.hpp"
 #include "render/passes/ShadowMaps.hpp"
 
+#include <functional>
 #include <glm/mat4x4.hpp>
 #include <vector>
 
@@ -16,6 +17,14 @@ inline constexpr int kMaterialTextureUnit = 0;
 inline constexpr int kShadow2DUnit = 1;   // 1..4
 inline constexpr int kShadowCubeUnit = 5; // 5..8
 inline constexpr int kReflectionTextureUnit = 9;
+inline constexpr int kEnvCubeUnit = 10;  // the reflector's cube map
+inline constexpr int kEnvArrayUnit = 11; // the reflector's dual-paraboloid or tennis-ball map
+
+struct MainPassContext;
+struct ViewSetup;
+// Draws the curved reflector in a view instead of the main pass's plain material; returns false (having
+// changed nothing) when it cannot, and the main pass draws the material.
+using DrawReflector = std::function<bool(const FrameInput&, const ViewSetup&, MainPassContext&)>;
 
 // Everything the main pass needs besides the scene: resources owned by the renderer.
 struct MainPassContext {
@@ -26,8 +35,9 @@ struct MainPassContext {
     const std::vector<int>& shadowedLights; // light index per shadow slot
     GLuint dummyShadow2D;
     GLuint dummyShadowCube;
-    MeshHandle unitPlane;      // the mirror rectangle: [-1,1]² in XZ
-    bool mirroredView = false; // set by beginLitView: the view's reflection flips the winding
+    MeshHandle unitPlane;        // the mirror rectangle: [-1,1]² in XZ
+    bool mirroredView = false;   // set by beginLitView: the view's reflection flips the winding
+    DrawReflector drawReflector; // empty: the reflector is drawn with its material
 };
 
 // How one view sees the scene: the camera's own, or the scene reflected in a mirror.
@@ -36,6 +46,7 @@ struct ViewSetup {
     glm::dmat4 reflection{1.0};     // world → reflected world (identity for the camera's view)
     glm::dvec3 eye{0.0};            // world position of the (virtual) eye: lighting and specular use it
     std::vector<bool> skipMirror;   // mirrors drawn by passes of their own in this view (by mirror index)
+    bool flipWinding = false;       // the projection mirrors the image (a warped environment component)
 };
 
 // Binds the lit-material program and sets everything that is the same for every object of the view:

@@ -2,6 +2,7 @@
 
 #include "render/math/Projection.hpp"
 #include "render/math/ShadowFrustum.hpp"
+#include "render/plan/Hasher.hpp"
 
 #include <bit>
 #include <cstring>
@@ -30,22 +31,6 @@ std::string_view toString(PassKind kind) {
 }
 
 namespace {
-
-// FNV-1a over raw bytes: deterministic and cheap; the inputs are plain doubles and pointers.
-struct Hasher {
-    std::uint64_t value = 1469598103934665603ull;
-    void bytes(const void* data, std::size_t size) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) {
-            value ^= p[i];
-            value *= 1099511628211ull;
-        }
-    }
-    template <typename T>
-    void add(const T& v) {
-        bytes(&v, sizeof(v));
-    }
-};
 
 std::string plural(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
@@ -154,10 +139,11 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         plan.passes.push_back(std::move(pass));
     }
 
-    if (input.reflector)
-        plan.skipped.push_back({input.reflector->name,
-                                "environment maps are not rendered by this version; the "
-                                "reflector is drawn with its material"});
+    // Mirror views are planned first (their passes run after the main pass): the environment pass, which
+    // runs before the main pass, is needed only if the reflector is seen directly or in one of them.
+    FramePlan mirrors;
+    planMirrors(input, viewport, mirrors);
+    planReflector(input, state, viewport, mirrors, plan);
 
     PlannedPass main;
     main.kind = PassKind::Main;
@@ -168,7 +154,12 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         " into the linear colour buffer";
     plan.passes.push_back(std::move(main));
 
-    planMirrors(input, viewport, plan);
+    // The mirror passes keep their view indices: plan.views is empty until here.
+    plan.views = std::move(mirrors.views);
+    for (PlannedPass& pass : mirrors.passes)
+        plan.passes.push_back(std::move(pass));
+    for (SkippedEffect& skip : mirrors.skipped)
+        plan.skipped.push_back(std::move(skip));
 
     PlannedPass composite;
     composite.kind = PassKind::Composite;

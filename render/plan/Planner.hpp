@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <optional>
 #include <unordered_map>
 
 namespace speculum::render {
@@ -13,6 +14,10 @@ namespace speculum::render {
 struct PlannerState {
     // Signature of the contents of each light's shadow map (by index into FrameInput::lights).
     std::unordered_map<int, std::uint64_t> shadowSignatures;
+    // The reflector's environment map, once rendered: the signature of what it saw (envmapSignature) and
+    // of the settings it was made with (envmapSettingsKey).
+    std::optional<std::uint64_t> envmapSignature;
+    std::optional<std::uint64_t> envmapSettings;
 };
 
 inline constexpr int kMaxLights = 8;
@@ -42,6 +47,35 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex);
 // The pure planning step: which passes run this frame, in order, with the reason for each, and which
 // effects got no pass and why. Needs no GL.
 FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport = {});
+
+// Where the reflector's environment map is captured from: the centre of the reflector's world bounds
+// (a teapot's node origin is its base), with a near distance that clips nothing outside the reflector
+// and a far distance that reaches every corner of the scene. Needs a reflector with a mesh.
+struct EnvmapCapture {
+    glm::dvec3 centre{0.0};
+    double near = 0.01;
+    double far = 100.0;
+};
+EnvmapCapture envmapCapture(const FrameInput& input);
+
+// Hash of the map's settings (type, resolution, fill): a change needs new textures and a new map.
+std::uint64_t envmapSettingsKey(const Reflector& reflector);
+
+// Hash of everything the environment map sees, independent of the camera: the capture point, the map
+// settings, background and ambient, every light, every object's mesh, transform and material, every
+// mirror. Animations change transforms, so they change it too. Equal signatures: the map can be reused.
+std::uint64_t envmapSignature(const FrameInput& input);
+
+// Whether the reflector's world bounds can be seen by the camera or in one of the mirror views planned
+// in `plan` (its reflected frustum, with the oblique near plane, narrowed to the mirror's pixels).
+// `where` gets "seen directly" or "seen in <mirror>".
+bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, const FramePlan& plan,
+                      std::string* where = nullptr);
+
+// The environment-map part of planning: appends the envmap pass to `plan` (or a skip with its reason).
+// `mirrors` holds the frame's mirror views, used for visibility.
+void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
+                   const FramePlan& mirrors, FramePlan& plan);
 
 // The mirror part of planning: the views of every mirror seen directly or through other mirrors, and the
 // passes that draw them, appended to `plan` in execution order (depth first).

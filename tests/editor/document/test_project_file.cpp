@@ -31,7 +31,16 @@ SceneData everythingScene(const QDir& folder) {
     ball.data.name = "Chrome \"ball\" \u00e9\t";
     ball.data.transform = {{1, -0.5, -3}, {10, 20, 30}, {0.4, 0.4, -0.4}, {}};
     ball.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere, 48);
-    ball.data.reflector = ReflectorComponent{ReflectorMap::TennisBall, 512, 0.75, {}};
+    ball.data.reflector =
+        ReflectorComponent{ReflectorMap::TennisBall,
+                           512,
+                           0.75,
+                           true,
+                           ReflectorFill::Direct,
+                           ReflectorParallax{ParallaxShape::Box, 5, {-1, -2, -3}, {4, 5, 6}, {}},
+                           ReflectorUpdate::Once,
+                           3,
+                           {}};
     ball.data.material = MaterialComponent{{0.1, 0.2, 0.3},
                                            0.5,
                                            0.25,
@@ -139,6 +148,45 @@ TEST(ProjectFile, EveryComponentRoundTrips) {
     EXPECT_TRUE(bytes.contains("\"mapSize\": 2048"));
     EXPECT_FALSE(bytes.contains(".0,")) << "integers are written without a fraction";
     EXPECT_EQ(serializeProject(*loaded, dir), bytes);
+}
+
+TEST(ProjectFile, ReflectorOptionsHaveDefaultsAndAreWrittenInAFixedOrder) {
+    const QByteArray json = R"({ "format": "speculum-scene", "version": 1, "nodes": [
+        { "name": "Ball", "mesh": { "builtin": "sphere" }, "reflector": { "map": "dual-paraboloid" } } ] })";
+    std::vector<std::string> warnings;
+    auto loaded = parseProject(json, QDir("/tmp"), warnings);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    const ReflectorComponent& r = *loaded->nodes[0].data.reflector;
+    EXPECT_FALSE(r.fresnel);
+    EXPECT_EQ(r.fill, ReflectorFill::Resampled);
+    EXPECT_FALSE(r.parallax.has_value()) << "parallax correction is off by default";
+    EXPECT_EQ(r.update, ReflectorUpdate::OnChange);
+    EXPECT_EQ(r.mirrorDepth, 1);
+
+    const std::string written = serializeProject(*loaded, QDir("/tmp")).toStdString();
+    std::size_t last = 0;
+    for (const char* key : {"\"map\"", "\"resolution\"", "\"reflectivity\"", "\"fresnel\"", "\"fill\"",
+                            "\"update\"", "\"mirrorDepth\""}) {
+        const std::size_t at = written.find(key, written.find("\"reflector\""));
+        ASSERT_NE(at, std::string::npos) << key;
+        EXPECT_GT(at, last) << key << " out of order";
+        last = at;
+    }
+    EXPECT_EQ(written.find("parallax"), std::string::npos);
+
+    // A sphere proxy round-trips with its radius only.
+    SceneData withProxy = *loaded;
+    withProxy.nodes[0].data.reflector->parallax = ReflectorParallax{ParallaxShape::Sphere, 7.5, {}, {}, {}};
+    withProxy.nodes[0].data.reflector->parallax->min = ReflectorParallax{}.min;
+    withProxy.nodes[0].data.reflector->parallax->max = ReflectorParallax{}.max;
+    const QByteArray bytes = serializeProject(withProxy, QDir("/tmp"));
+    EXPECT_TRUE(bytes.contains("\"parallax\": {\n")) << bytes.toStdString();
+    EXPECT_TRUE(bytes.contains("\"radius\": 7.5")) << bytes.toStdString();
+    EXPECT_FALSE(bytes.contains("\"min\"")) << bytes.toStdString();
+    auto again = parseProject(bytes, QDir("/tmp"), warnings);
+    ASSERT_TRUE(again.ok()) << again.error();
+    EXPECT_EQ(*again, withProxy);
+    EXPECT_TRUE(warnings.empty());
 }
 
 TEST(ProjectFile, SavingIntoAnotherFolderKeepsPathsPointingAtTheSameFiles) {

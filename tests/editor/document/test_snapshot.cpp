@@ -189,6 +189,11 @@ TEST(Snapshot, MirrorsAndTheReflector) {
     ball.data.name = "Ball";
     ball.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere, 12);
     ball.data.reflector = ReflectorComponent{ReflectorMap::DualParaboloid, 128, 0.9, {}};
+    ball.data.reflector->fresnel = true;
+    ball.data.reflector->fill = ReflectorFill::Direct;
+    ball.data.reflector->update = ReflectorUpdate::Once;
+    ball.data.reflector->mirrorDepth = 2;
+    ball.data.reflector->parallax = ReflectorParallax{ParallaxShape::Box, 1, {-1, -2, -3}, {4, 5, 6}, {}};
     data.nodes = {table, plain, ball};
     MeshLibrary meshes;
     std::vector<std::string> warnings;
@@ -212,6 +217,13 @@ TEST(Snapshot, MirrorsAndTheReflector) {
     EXPECT_EQ(frame.reflector->resolution, 128);
     EXPECT_EQ(frame.reflector->reflectivity, 0.9);
     EXPECT_EQ(frame.reflector->mesh, meshes.builtin(BuiltinMesh::Sphere, 12));
+    EXPECT_TRUE(frame.reflector->fresnel);
+    EXPECT_EQ(frame.reflector->fill, render::ReflectorFill::Direct);
+    EXPECT_EQ(frame.reflector->update, render::ReflectorUpdate::Once);
+    EXPECT_EQ(frame.reflector->mirrorDepth, 2);
+    EXPECT_EQ(frame.reflector->parallax.shape, render::ParallaxProxy::Shape::Box);
+    EXPECT_EQ(frame.reflector->parallax.min, glm::dvec3(-1, -2, -3));
+    EXPECT_EQ(frame.reflector->parallax.max, glm::dvec3(4, 5, 6));
 }
 
 TEST(Snapshot, ABrokenReflectorBecomesAWarning) {

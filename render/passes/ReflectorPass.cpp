@@ -1,0 +1,140 @@
+#include "render/passes/ReflectorPass.hpp"
+
+#include <algorithm>
+
+namespace speculum::render::passes {
+
+namespace {
+
+envmap::CaptureSettings captureSettings(const Reflector& r) {
+    envmap::CaptureSettings s;
+    s.type = r.map == ReflectorMap::Cube             ? envmap::MapType::Cube
+             : r.map == ReflectorMap::DualParaboloid ? envmap::MapType::DualParaboloid
+                                                     : envmap::MapType::TennisBall;
+    s.resolution = r.resolution;
+    s.fill = r.fill == ReflectorFill::Direct ? envmap::FillMethod::Direct : envmap::FillMethod::Resampled;
+    return s;
+}
+
+// Pass 1 sees the scene from the capture point: it is the origin of camera-relative space, so model
+// matrices are made relative to it in double by the main pass's own drawing, and the eye for specular
+// highlights is there too. The reflector is not part of its own environment.
+FrameInput environmentInput(const FrameInput& input, const glm::dvec3& centre) {
+    FrameInput env = input;
+    env.reflector.reset();
+    env.camera.position = centre;
+    env.camera.target = centre + glm::dvec3(0.0, 0.0, -1.0);
+    env.camera.up = glm::dvec3(0.0, 1.0, 0.0);
+    return env;
+}
+
+MainPassContext withProgram(const gl::Program& program, MainPassContext& base, MeshHandle unitPlane) {
+    return MainPassContext{program,
+                           base.meshes,
+                           base.textures,
+                           base.shadows,
+                           base.shadowedLights,
+                           base.dummyShadow2D,
+                           base.dummyShadowCube,
+                           std::move(unitPlane)};
+}
+
+} // namespace
+
+Status ReflectorPass::init() {
+    auto warp = gl::Program::build("mesh.vert", "mesh.frag", "#define ENVMAP_WARP 1");
+    if (!warp)
+        return Error{warp.error()};
+    auto surface = gl::Program::build("mesh.vert", "reflector.frag");
+    if (!surface)
+        return Error{surface.error()};
+    m_warp = std::move(*warp);
+    m_surface = std::move(*surface);
+    return Done{};
+}
+
+bool ReflectorPass::hasMap(const Reflector& reflector) const {
+    return m_capture && m_settingsKey == envmapSettingsKey(reflector);
+}
+
+Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& where, MainPassContext& context,
+                              const EnvironmentMirrorPrograms& mirrors) {
+    const Reflector& reflector = *input.reflector;
+    const std::uint64_t key = envmapSettingsKey(reflector);
+    if (!m_capture || key != m_settingsKey) {
+        m_capture.reset();
+        auto created = envmap::EnvironmentCapture::create(captureSettings(reflector));
+        if (!created)
+            return Error{"reflector \"" + reflector.name + "\": " + created.error()};
+        m_capture = std::move(*created);
+        m_settingsKey = key;
+    }
+    m_centre = where.centre;
+    const FrameInput env = environmentInput(input, where.centre);
+    envmap::CaptureView view;
+    view.near = where.near;
+    view.far = where.far;
+    view.background = input.settings.background;
+
+    MainPassContext faces = withProgram(context.program, context, context.unitPlane);
+    // The map frame is the world's (CaptureView::mapFromWorld is the identity), so a face's view-projection
+    // is its projection times its view.
+    auto drawFace = [&](const glm::dmat4&, int face) {
+        drawEnvironmentFace(env, where.near, where.far, envmap::cubeFaceView(face), reflector.resolution,
+                            reflector.mirrorDepth, mirrors, faces);
+    };
+
+    // The direct fill draws subdivided copies of the meshes (straight edges turn into curves).
+    std::optional<FrameInput> fine;
+    MeshHandle finePlane;
+    if (m_capture->settings().type != envmap::MapType::Cube &&
+        m_capture->settings().fill == envmap::FillMethod::Direct) {
+        fine = env;
+        for (DrawItem& item : fine->items)
+            item.mesh = m_warpMeshes.get(item.mesh);
+        finePlane = m_warpMeshes.get(context.unitPlane);
+    }
+    MainPassContext warped = withProgram(m_warp, context, finePlane);
+    auto drawWarped = [&](const envmap::WarpPass& pass) {
+        m_warp.use();
+        envmap::setWarpUniforms(m_warp, pass);
+        ViewSetup setup;
+        setup.eye = where.centre;
+        setup.flipWinding = pass.warp.mirrored; // gl_FrontFacing must still name the outside of surfaces
+        drawMainPass(*fine, setup, warped);
+    };
+    m_capture->update(view, drawFace, drawWarped);
+    return Done{};
+}
+
+bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context) {
+    if (!input.reflector || !hasMap(*input.reflector))
+        return false;
+    const Reflector& r = *input.reflector;
+    const gl::Program& p = m_surface;
+    beginLitView(input, view, p, context);
+    setMaterial(r.material, p, context);
+    p.set("uReflectivity", float(std::clamp(r.reflectivity, 0.0, 1.0)));
+    p.set("uFresnel", r.fresnel ? 1 : 0);
+    const envmap::EnvironmentCapture& map = *m_capture;
+    p.set("uEnvType", static_cast<int>(map.settings().type));
+    p.set("uEnvLayout", map.layout().packed());
+    p.set("uEnvMapFromWorld", glm::mat3(1.0f));
+    p.set("uEnvCentre", glm::vec3(m_centre - input.camera.position));
+    const int parallax = r.parallax.shape == ParallaxProxy::Shape::Sphere ? 1
+                         : r.parallax.shape == ParallaxProxy::Shape::Box  ? 2
+                                                                          : 0;
+    p.set("uParallax", parallax);
+    p.set("uParallaxRadius", float(r.parallax.radius));
+    p.set("uParallaxMin", glm::vec3(r.parallax.min));
+    p.set("uParallaxMax", glm::vec3(r.parallax.max));
+    p.set("uEnvCube", kEnvCubeUnit);
+    p.set("uEnvArray", kEnvArrayUnit);
+    glActiveTexture(GL_TEXTURE0 + (map.target() == GL_TEXTURE_CUBE_MAP ? kEnvCubeUnit : kEnvArrayUnit));
+    glBindTexture(map.target(), map.texture());
+    glActiveTexture(GL_TEXTURE0);
+    drawLitMesh(r.mesh, r.world, input, p, context);
+    return true;
+}
+
+} // namespace speculum::render::passes

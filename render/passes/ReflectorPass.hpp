@@ -1,0 +1,54 @@
+#pragma once
+
+#include "render/FrameInput.hpp"
+#include "render/Result.hpp"
+#include "render/envmap/EnvironmentCapture.hpp"
+#include "render/passes/EnvironmentMirrors.hpp"
+#include "render/passes/MainPass.hpp"
+#include "render/passes/WarpMeshes.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <optional>
+
+namespace speculum::render::passes {
+
+// The curved reflector's two passes.
+// Pass 1 (capture): the scene without the reflector, lit and shadowed by the main pass's own drawing,
+// from the capture point into the reflector's environment map: six cube faces (model matrices relative
+// to the capture point, composed in double), or for the non-linear maps the direct warp (mesh.vert with
+// ENVMAP_WARP, meshes subdivided) or the resampling of such a cube. Planar mirrors in cube faces reflect
+// the scene one level deep (reflector.mirrorDepth ≥ 1); in the direct warp they show their own material.
+// The map frame is aligned with the world axes.
+// Pass 2 (drawSurface): the reflector with shaders/reflector.frag, in any view the main pass draws
+// (the camera's or a mirror's, whose virtual eye it uses).
+class ReflectorPass {
+public:
+    // Builds the programs. Needs a current context.
+    Status init();
+
+    // Renders the map for `input.reflector` (re-creating its textures when the map settings changed).
+    // Planar mirrors in cube faces reflect one level deep with `mirrors` (see drawEnvironmentFace).
+    Status capture(const FrameInput& input, const EnvmapCapture& where, MainPassContext& context,
+                   const EnvironmentMirrorPrograms& mirrors = {});
+
+    // Whether a map made with the reflector's current settings exists.
+    bool hasMap(const Reflector& reflector) const;
+
+    // Draws the reflector with its map in `view`; false (nothing changed) if there is no map for it.
+    bool drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context);
+
+    // The map itself, for tests and tools (empty before the first capture).
+    const envmap::EnvironmentCapture* map() const { return m_capture ? &*m_capture : nullptr; }
+
+    void purge() { m_warpMeshes.purge(); }
+
+private:
+    std::optional<envmap::EnvironmentCapture> m_capture;
+    std::uint64_t m_settingsKey = 0;
+    glm::dvec3 m_centre{0.0}; // the capture point of the map, world space
+    gl::Program m_warp;       // mesh.vert with ENVMAP_WARP + mesh.frag
+    gl::Program m_surface;    // mesh.vert + reflector.frag
+    WarpMeshes m_warpMeshes;
+};
+
+} // namespace speculum::render::passes

@@ -1,0 +1,218 @@
+// Plans the curved reflector's environment pass: whether the reflector can be seen at all (directly or in
+// a planned mirror view), and whether its map must be rendered again under its update policy. The
+// signature of what the map sees is camera-independent, so a camera moving around a static scene reuses
+// the map.
+#include "render/math/Projection.hpp"
+#include "render/plan/Hasher.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace speculum::render {
+
+namespace {
+
+std::string mapName(ReflectorMap map) {
+    switch (map) {
+    case ReflectorMap::Cube:
+        return "cube";
+    case ReflectorMap::DualParaboloid:
+        return "dual-paraboloid";
+    case ReflectorMap::TennisBall:
+        return "tennis-ball";
+    }
+    return "cube";
+}
+
+void addMaterial(Hasher& h, const Material& m) {
+    h.add(m.color);
+    h.add(m.ambient);
+    h.add(m.diffuse);
+    h.add(m.specular);
+    h.add(m.shininess);
+    h.add(m.emission);
+    h.add(std::string_view(m.texturePath));
+}
+
+// True if all eight corners lie on the negative side of one of the planes (clip-space rows): the box is
+// outside. Conservative: a box near a frustum edge may be reported inside.
+bool boxOutside(const std::array<glm::dvec4, 8>& clip, const std::vector<glm::dvec4>& planes) {
+    for (const glm::dvec4& plane : planes) {
+        bool allOut = true;
+        for (const glm::dvec4& c : clip)
+            if (glm::dot(plane, c) >= 0.0) {
+                allOut = false;
+                break;
+            }
+        if (allOut)
+            return true;
+    }
+    return false;
+}
+
+// The frustum planes of clip space, narrowed to a pixel rectangle of the viewport: dot(plane, clip) ≥ 0
+// inside.
+std::vector<glm::dvec4> clipPlanes(const math::PixelRect& rect, const PlanViewport& viewport) {
+    const double x0 = 2.0 * rect.x0 / viewport.width - 1.0, x1 = 2.0 * rect.x1 / viewport.width - 1.0;
+    const double y0 = 2.0 * rect.y0 / viewport.height - 1.0, y1 = 2.0 * rect.y1 / viewport.height - 1.0;
+    return {{1, 0, 0, -x0}, {-1, 0, 0, x1}, {0, 1, 0, -y0}, {0, -1, 0, y1}, {0, 0, 1, 1}, {0, 0, -1, 1}};
+}
+
+} // namespace
+
+EnvmapCapture envmapCapture(const FrameInput& input) {
+    const Reflector& reflector = *input.reflector;
+    const math::Box own = math::worldBounds(computeBounds(*reflector.mesh), reflector.world);
+    EnvmapCapture capture;
+    capture.centre = own.center();
+    const glm::dvec3 half = (own.max - own.min) * 0.5;
+    const double inner = std::min({half.x, half.y, half.z});
+    const double outer = std::max(glm::length(half), 1e-6);
+    // A cube face clips points up to near·√3 from the centre: keep that inside the reflector, which is not
+    // drawn into its own map, so nothing around it is ever clipped.
+    capture.near = std::max(inner * 0.5 / std::sqrt(3.0), outer * 1e-3);
+    double far = 0.0;
+    const math::Box scene = math::sceneBounds(input);
+    if (!scene.empty())
+        for (const glm::dvec3& c : scene.corners())
+            far = std::max(far, glm::length(c - capture.centre));
+    capture.far = std::max(far * 1.01, capture.near * 16.0);
+    return capture;
+}
+
+std::uint64_t envmapSettingsKey(const Reflector& reflector) {
+    Hasher h;
+    h.add(reflector.map);
+    h.add(reflector.resolution);
+    h.add(reflector.map == ReflectorMap::Cube ? ReflectorFill::Resampled : reflector.fill);
+    return h.value;
+}
+
+std::uint64_t envmapSignature(const FrameInput& input) {
+    Hasher h;
+    h.add(envmapSettingsKey(*input.reflector));
+    const EnvmapCapture capture = envmapCapture(input);
+    h.add(capture.centre);
+    h.add(capture.near);
+    h.add(capture.far);
+    h.add(input.reflector->world); // its shadows on the scene
+    h.add(input.reflector->mirrorDepth);
+    h.add(input.settings.background);
+    h.add(input.settings.ambient);
+    h.add(input.settings.mirrorDepth);
+    for (const Light& light : input.lights) {
+        h.add(light.type);
+        h.add(light.position);
+        h.add(light.direction);
+        h.add(light.color);
+        h.add(light.intensity);
+        h.add(light.spotAngle);
+        h.add(light.spotBlend);
+        h.add(light.shadows.enabled);
+        h.add(light.shadows.mapSize);
+        h.add(light.shadows.pcf);
+    }
+    for (const DrawItem& item : input.items) {
+        h.add(item.mesh.get());
+        h.add(item.world);
+        h.add(item.castsShadows);
+        addMaterial(h, item.material);
+    }
+    for (const Mirror& mirror : input.mirrors) {
+        h.add(mirror.world);
+        h.add(mirror.size);
+        h.add(mirror.reflectivity);
+        h.add(mirror.tint);
+        h.add(mirror.hasMaterial);
+        addMaterial(h, mirror.material);
+    }
+    return h.value;
+}
+
+bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, const FramePlan& plan,
+                      std::string* where) {
+    const Reflector& reflector = *input.reflector;
+    const math::Box box = math::worldBounds(computeBounds(*reflector.mesh), reflector.world);
+    const glm::dmat4 rotation = math::viewRotation(input.camera);
+    const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
+    auto clipCorners = [&](const glm::dmat4& worldToClip) {
+        std::array<glm::dvec4, 8> clip;
+        const auto corners = box.corners();
+        for (std::size_t i = 0; i < corners.size(); ++i)
+            clip[i] = worldToClip * glm::dvec4(corners[i], 1.0);
+        return clip;
+    };
+    const math::PixelRect whole{0, 0, viewport.width, viewport.height};
+    if (!boxOutside(clipCorners(cameraProjection(input, viewport) * rotation * toCameraRelative),
+                    clipPlanes(whole, viewport))) {
+        if (where)
+            *where = "seen directly";
+        return true;
+    }
+    for (const MirrorView& view : plan.views) {
+        // The reflected scene as this view draws it: world → reflected world → camera-relative → clip,
+        // with the oblique near plane on the mirror and only the mirror's pixels.
+        const glm::dmat4 worldToClip = view.projection * rotation * toCameraRelative * view.reflection;
+        if (!boxOutside(clipCorners(worldToClip), clipPlanes(view.rect, viewport))) {
+            if (where)
+                *where = "seen in " + input.mirrors[static_cast<std::size_t>(view.mirror)].name;
+            return true;
+        }
+    }
+    return false;
+}
+
+void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
+                   const FramePlan& mirrors, FramePlan& plan) {
+    if (!input.reflector || !input.reflector->mesh)
+        return;
+    const Reflector& reflector = *input.reflector;
+    std::string where;
+    if (!reflectorVisible(input, viewport, mirrors, &where)) {
+        plan.skipped.push_back({reflector.name, "environment pass not needed: the reflector is outside the "
+                                                "view and outside every mirror's reflected view"});
+        return;
+    }
+    const bool haveMap = state.envmapSignature && state.envmapSettings == envmapSettingsKey(reflector);
+    std::string why;
+    if (!haveMap) {
+        why = "no map yet";
+    } else if (reflector.update == ReflectorUpdate::Always) {
+        why = "update: always";
+    } else if (reflector.update == ReflectorUpdate::Once) {
+        plan.skipped.push_back(
+            {reflector.name, "environment map reused: update is \"once\" and the map was rendered"});
+        return;
+    } else if (*state.envmapSignature == envmapSignature(input)) {
+        plan.skipped.push_back({reflector.name, "environment map reused: nothing it sees changed since it "
+                                                "was rendered (update on-change)"});
+        return;
+    } else {
+        why = "something it sees changed (update on-change)";
+    }
+    const int n = reflector.resolution;
+    const std::string size = std::to_string(n) + "×" + std::to_string(n);
+    std::string what;
+    if (reflector.map == ReflectorMap::Cube)
+        what = "a cube map (6 faces of " + size + ")";
+    else {
+        what = "a " + mapName(reflector.map) + " map (2 components of " +
+               (reflector.map == ReflectorMap::TennisBall ? std::to_string(n) + "×" + std::to_string(3 * n)
+                                                          : size) +
+               ", " +
+               (reflector.fill == ReflectorFill::Direct
+                    ? std::string("direct: vertices warped, 2 scene passes")
+                    : "resampled from a " + size + " cube: 6 scene passes + 2 resampling passes") +
+               ")";
+    }
+    PlannedPass pass;
+    pass.kind = PassKind::Envmap;
+    pass.target = reflector.name;
+    pass.reason = "renders the scene around the reflector, lit and shadowed, from its centre into " + what +
+                  "; the reflector is " + where + "; " + why;
+    plan.passes.push_back(std::move(pass));
+}
+
+} // namespace speculum::render

@@ -1,0 +1,188 @@
+// The environment pass of the curved reflector, planned without GL: it runs only when the reflector can
+// be seen (directly or in a mirror), after the shadow passes and before the main pass, and its update
+// policy reuses the map when nothing the map sees changed.
+#include "render/mesh/Primitives.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+namespace speculum::render {
+namespace {
+
+MeshHandle sphere() {
+    static const auto mesh = std::make_shared<const MeshData>(makeSphere(16));
+    return mesh;
+}
+
+// A chrome ball at the origin on a box, a shadowing light; the camera at +Z looks at it.
+FrameInput chromeScene(ReflectorUpdate update = ReflectorUpdate::OnChange) {
+    FrameInput input;
+    input.camera.position = {0.0, 0.0, 5.0};
+    input.camera.target = {0.0, 0.0, 0.0};
+    input.camera.far = 50.0;
+    static const auto box = std::make_shared<const MeshData>(makeBox());
+    input.items.push_back({"Box", glm::translate(glm::dmat4(1.0), glm::dvec3(2, 0, 0)), box, {}, true});
+    Light light;
+    light.name = "Lamp";
+    light.position = {0, 4, 0};
+    light.shadows.enabled = true;
+    input.lights.push_back(light);
+    Reflector r;
+    r.name = "Ball";
+    r.mesh = sphere();
+    r.update = update;
+    input.reflector = r;
+    return input;
+}
+
+std::vector<PassKind> kinds(const FramePlan& plan) {
+    std::vector<PassKind> k;
+    for (const auto& p : plan.passes)
+        k.push_back(p.kind);
+    return k;
+}
+
+std::string skipReason(const FramePlan& plan, const std::string& target) {
+    for (const auto& s : plan.skipped)
+        if (s.target == target)
+            return s.reason;
+    return {};
+}
+
+bool hasEnvmap(const FramePlan& plan) {
+    for (const auto& p : plan.passes)
+        if (p.kind == PassKind::Envmap)
+            return true;
+    return false;
+}
+
+// What the renderer records after it ran the envmap pass.
+PlannerState afterRendering(const FrameInput& input) {
+    PlannerState state;
+    state.envmapSignature = envmapSignature(input);
+    state.envmapSettings = envmapSettingsKey(*input.reflector);
+    return state;
+}
+
+TEST(ReflectorPlanner, EnvmapRunsAfterShadowsAndBeforeTheMainPass) {
+    const FramePlan plan = planFrame(chromeScene(), {});
+    EXPECT_EQ(kinds(plan),
+              (std::vector{PassKind::Shadow, PassKind::Envmap, PassKind::Main, PassKind::Composite}));
+    const PlannedPass& envmap = plan.passes[1];
+    EXPECT_EQ(envmap.target, "Ball");
+    EXPECT_NE(envmap.reason.find("seen directly"), std::string::npos) << envmap.reason;
+    EXPECT_NE(envmap.reason.find("no map yet"), std::string::npos) << envmap.reason;
+    EXPECT_NE(envmap.reason.find("cube map"), std::string::npos) << envmap.reason;
+}
+
+TEST(ReflectorPlanner, NoEnvmapWhenTheReflectorIsOutsideTheView) {
+    FrameInput input = chromeScene();
+    input.camera.target = {0.0, 0.0, 10.0}; // looking away
+    const FramePlan plan = planFrame(input, {});
+    EXPECT_FALSE(hasEnvmap(plan));
+    EXPECT_NE(skipReason(plan, "Ball").find("outside the view"), std::string::npos)
+        << skipReason(plan, "Ball");
+
+    input.camera.target = {0.0, 0.0, 0.0};
+    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 8)); // behind the camera
+    EXPECT_FALSE(hasEnvmap(planFrame(input, {})));
+    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -60)); // beyond the far plane
+    EXPECT_FALSE(hasEnvmap(planFrame(input, {})));
+    // Barely inside the frustum's edge: still planned (the test is conservative, never wrong).
+    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(3.4, 0, 0));
+    EXPECT_TRUE(hasEnvmap(planFrame(input, {})));
+}
+
+TEST(ReflectorPlanner, ReflectorSeenOnlyInAMirrorGetsItsEnvmap) {
+    FrameInput input = chromeScene();
+    // The camera looks at a mirror in z = −4 facing +Z; the ball is behind the camera, so only the mirror
+    // shows it.
+    input.camera.position = {0.0, 0.0, 2.0};
+    input.camera.target = {0.0, 0.0, -4.0};
+    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 4));
+    Mirror mirror;
+    mirror.name = "Mirror";
+    mirror.world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -4)), glm::radians(90.0),
+                               glm::dvec3(1, 0, 0));
+    mirror.size = {6.0, 6.0};
+    input.mirrors.push_back(mirror);
+    FramePlan plan = planFrame(input, {}, {320, 240});
+    ASSERT_TRUE(hasEnvmap(plan)) << skipReason(plan, "Ball");
+    for (const auto& p : plan.passes)
+        if (p.kind == PassKind::Envmap)
+            EXPECT_NE(p.reason.find("seen in Mirror"), std::string::npos) << p.reason;
+
+    // Turned away from the mirror's reflected view (the mirror now shows the scene to the left).
+    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 40, 4));
+    plan = planFrame(input, {}, {320, 240});
+    EXPECT_FALSE(hasEnvmap(plan));
+    EXPECT_NE(skipReason(plan, "Ball").find("mirror"), std::string::npos);
+}
+
+TEST(ReflectorPlanner, OnChangeReusesTheMapUntilSomethingItSeesChanges) {
+    FrameInput input = chromeScene();
+    const PlannerState state = afterRendering(input);
+    FramePlan plan = planFrame(input, state);
+    EXPECT_FALSE(hasEnvmap(plan));
+    EXPECT_NE(skipReason(plan, "Ball").find("reused"), std::string::npos) << skipReason(plan, "Ball");
+
+    // The camera is not part of what the map sees.
+    input.camera.position = {1.0, 1.0, 6.0};
+    EXPECT_FALSE(hasEnvmap(planFrame(input, state)));
+
+    // An object moves (an animation does this), a light changes, a material changes, the ball moves,
+    // the map settings change: each needs a new map.
+    auto rerenders = [&](auto change) {
+        FrameInput changed = input;
+        change(changed);
+        const FramePlan p = planFrame(changed, state);
+        return hasEnvmap(p);
+    };
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].world[3].y += 0.1; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.lights[0].color = {1.0, 0.5, 0.5}; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.color = {1.0, 0.0, 0.0}; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflector->world[3].x += 0.1; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflector->map = ReflectorMap::TennisBall; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflector->resolution = 128; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.settings.background = {1.0, 1.0, 1.0}; }));
+    // The reflector's own material is not seen by its map.
+    EXPECT_FALSE(rerenders([](FrameInput& f) { f.reflector->material.color = {1.0, 0.0, 0.0}; }));
+    EXPECT_FALSE(rerenders([](FrameInput& f) { f.reflector->reflectivity = 0.5; }));
+}
+
+TEST(ReflectorPlanner, OnceKeepsTheFirstMapAndAlwaysRendersEveryFrame) {
+    FrameInput once = chromeScene(ReflectorUpdate::Once);
+    EXPECT_TRUE(hasEnvmap(planFrame(once, {}))) << "the first frame has no map";
+    PlannerState state = afterRendering(once);
+    once.items[0].world[3].y += 1.0;
+    FramePlan plan = planFrame(once, state);
+    EXPECT_FALSE(hasEnvmap(plan));
+    EXPECT_NE(skipReason(plan, "Ball").find("once"), std::string::npos) << skipReason(plan, "Ball");
+    once.reflector->map = ReflectorMap::DualParaboloid; // new textures: rendered once more
+    EXPECT_TRUE(hasEnvmap(planFrame(once, state)));
+
+    FrameInput always = chromeScene(ReflectorUpdate::Always);
+    state = afterRendering(always);
+    plan = planFrame(always, state);
+    ASSERT_TRUE(hasEnvmap(plan));
+    EXPECT_NE(plan.passes[1].reason.find("always"), std::string::npos) << plan.passes[1].reason;
+}
+
+TEST(ReflectorPlanner, CaptureLooksFromTheCentreOfTheReflectorsBounds) {
+    FrameInput input = chromeScene();
+    input.reflector->world =
+        glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(1, 2, 3)), glm::dvec3(0.5));
+    const EnvmapCapture capture = envmapCapture(input);
+    EXPECT_NEAR(capture.centre.x, 1.0, 1e-6);
+    EXPECT_NEAR(capture.centre.y, 2.0, 1e-6);
+    EXPECT_NEAR(capture.centre.z, 3.0, 1e-6);
+    // Nothing outside the ball is clipped by a cube face's near plane (corners reach near·√3).
+    EXPECT_LT(capture.near * std::sqrt(3.0), 0.5);
+    EXPECT_GT(capture.near, 0.0);
+    // The far distance reaches the box at (2, 0, 0) ± 1.
+    EXPECT_GE(capture.far, glm::length(glm::dvec3(3, 1, 1) - glm::dvec3(1, 2, 3)));
+}
+
+} // namespace
+} // namespace speculum::render
