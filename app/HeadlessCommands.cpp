@@ -6,6 +6,7 @@
 #include "render/StillRenderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/image/ImageWriter.hpp"
+#include "render/reference/Tracer.hpp"
 
 #include <QFileInfo>
 #include <QJsonArray>
@@ -17,6 +18,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 namespace speculum::app {
 
@@ -41,7 +43,8 @@ struct HeadlessFrame {
     std::string glDescription;
 };
 
-render::Result<HeadlessFrame> prepare(const CliOptions& options) {
+// Loads the project and evaluates it at options.time; no GL needed.
+render::Result<render::FrameInput> loadFrameInput(const CliOptions& options) {
     const QString path = QString::fromStdString(options.project);
     const QFileInfo info(path);
     if (!info.exists())
@@ -53,8 +56,19 @@ render::Result<HeadlessFrame> prepare(const CliOptions& options) {
     if (render::Status opened = document::openProject(scene, path, warnings); !opened)
         return render::Error{options.project + ": " + opened.error()};
     printWarnings(warnings);
+    document::MeshLibrary meshes;
+    warnings.clear();
+    render::FrameInput input = document::snapshot(scene, options.time, meshes, warnings);
+    printWarnings(warnings);
+    return input;
+}
 
+render::Result<HeadlessFrame> prepare(const CliOptions& options) {
+    auto input = loadFrameInput(options);
+    if (!input)
+        return render::Error{input.error()};
     HeadlessFrame frame;
+    frame.input = std::move(*input);
     auto context = render::gl::HeadlessContext::create();
     if (!context)
         return render::Error{"no OpenGL: " + context.error()};
@@ -64,11 +78,6 @@ render::Result<HeadlessFrame> prepare(const CliOptions& options) {
     if (!renderer)
         return render::Error{renderer.error()};
     frame.renderer = std::move(*renderer);
-
-    document::MeshLibrary meshes;
-    warnings.clear();
-    frame.input = document::snapshot(scene, options.time, meshes, warnings);
-    printWarnings(warnings);
     return frame;
 }
 
@@ -80,15 +89,70 @@ std::string fileName(const std::string& path) {
     return std::filesystem::path(path).filename().string();
 }
 
+// `render --reference`: the exact tracer on the CPU, no GL. Same output checks and metadata as a
+// rasterized still; nothing is written on failure or cancel.
+int runReferenceRender(const CliOptions& options, Clock::time_point start) {
+    auto input = loadFrameInput(options);
+    if (!input) {
+        fail(input.error());
+        return 1;
+    }
+    auto tracer = render::reference::Tracer::create(*input);
+    if (!tracer) {
+        fail("render: " + tracer.error());
+        return 1;
+    }
+    render::reference::TraceSettings settings;
+    settings.width = options.width;
+    settings.height = options.height;
+    settings.ssaa = options.ssaa;
+    int lastPercent = -1;
+    auto progress = [&](double fraction) {
+        // Whole tens of percent, once the render has taken a moment: quiet for tiny frames.
+        const int percent = static_cast<int>(fraction * 10.0) * 10;
+        if (percent != lastPercent && std::chrono::duration<double>(Clock::now() - start).count() > 0.5) {
+            std::cerr << "speculum: tracing " << percent << "%\n";
+            lastPercent = percent;
+        }
+        return true;
+    };
+    auto traced = tracer->render(settings, progress);
+    if (!traced) {
+        fail("render: " + traced.error());
+        return 1;
+    }
+    printWarnings(traced->warnings);
+
+    std::ostringstream settingsText;
+    settingsText << "size " << sizeText(options.width, options.height) << ", ssaa " << options.ssaa
+                 << ", time " << options.time << " s, reference";
+    render::ImageMetadata metadata;
+    metadata.attributes = {
+        {"Software", std::string("speculum ") + SPECULUM_VERSION},
+        {"ImageDescription",
+         "speculum reference render of " + fileName(options.project) + " (" + settingsText.str() + ")"},
+        {"speculum:scene", std::filesystem::absolute(options.project).string()},
+        {"speculum:settings", settingsText.str()},
+        {"speculum:renderTimeMs", std::to_string(traced->totalMs)},
+        {"speculum:renderer", "reference ray tracer (Embree 3, " +
+                                  std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
+                                  " threads)"},
+    };
+    if (render::Status written = render::writeImage(options.output, traced->image, metadata); !written) {
+        fail(written.error());
+        return 1;
+    }
+    std::cerr << "speculum: traced " << sizeText(options.width, options.height) << " with " << traced->samples
+              << (traced->samples == 1 ? " sample" : " samples") << " per pixel in "
+              << static_cast<int>(traced->totalMs + 0.5) << " ms\n";
+    std::cout << options.output << "\n";
+    return 0;
+}
+
 } // namespace
 
 int runRender(const CliOptions& options) {
     const auto start = Clock::now();
-    if (options.reference) {
-        fail(
-            "render: --reference needs the exact ray-traced reference, which this version does not have yet");
-        return 1;
-    }
     // Validate the output before any work: an unsupported format or a missing folder costs nothing.
     if (!render::isSupportedImagePath(options.output)) {
         fail(options.output + ": unsupported image format (supported: " + render::supportedImageFormats() +
@@ -100,6 +164,8 @@ int runRender(const CliOptions& options) {
         fail(options.output + ": folder " + outDir.string() + " does not exist");
         return 1;
     }
+    if (options.reference)
+        return runReferenceRender(options, start);
     auto frame = prepare(options);
     if (!frame) {
         fail(frame.error());
@@ -203,7 +269,7 @@ int runExplain(const CliOptions& options) {
 }
 
 int runBench(const CliOptions&) {
-    fail("bench: the accuracy sweep needs the exact reference tracer, which this version does not have yet; "
+    fail("bench: the accuracy sweep is not in this version yet (render --reference gives the exact image); "
          "frame-time benchmarks are in the speculum_benchmarks program");
     return 1;
 }

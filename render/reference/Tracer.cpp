@@ -1,0 +1,278 @@
+#include "render/reference/Tracer.hpp"
+
+#include "render/math/Mirror.hpp"
+#include "render/math/Projection.hpp"
+#include "render/plan/Planner.hpp"
+#include "render/reference/SceneGeometry.hpp"
+#include "render/reference/Shading.hpp"
+#include "render/reference/TextureSampler.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <glm/trigonometric.hpp>
+#include <limits>
+#include <mutex>
+#include <thread>
+
+namespace speculum::render::reference {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+bool finite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace
+
+struct Tracer::Impl {
+    FrameInput input;
+    std::unique_ptr<SceneGeometry> geometry;
+    TextureSet textures;
+    std::vector<ShadingLight> lights;
+    std::vector<int> itemTexture;   // texture index per item (-1: none)
+    std::vector<int> mirrorTexture; // per mirror: its material's texture
+    std::vector<std::optional<math::Plane>> mirrorPlanes;
+    int reflectorTexture = -1;
+    int maxMirrorDepth = 0;
+    std::vector<std::string> warnings;
+
+    // Everything one ray needs to know about the path that led to it.
+    struct Path {
+        int mirrorLevel = 0; // planar reflections so far (since the last reflector bounce)
+        int mirrorLimit = 0; // planar reflections allowed: the scene's depth, or the reflector's in its map
+        int reflectorLevel = 0;     // bounces off the reflector so far
+        double farLeft = kInfinity; // what is left of the camera's far plane (in units of the direction)
+    };
+
+    // The colour seen along origin + t·direction, t ≥ tnear. `id`, if given, receives what was hit.
+    glm::dvec3 radiance(const Shader& shader, const TraceSettings& settings, const glm::dvec3& origin,
+                        const glm::dvec3& direction, double tnear, const Path& path, PixelId* id) const {
+        const std::optional<Hit> hit = geometry->intersect(origin, direction, tnear, path.farLeft);
+        if (!hit) {
+            if (id)
+                *id = {HitKind::Background, -1};
+            return input.settings.background;
+        }
+        const glm::dvec3 viewDir = -glm::normalize(direction);
+        const Surface& surface = *hit->surface;
+        const double eps = SceneGeometry::offset(hit->position);
+        switch (surface.kind) {
+        case SurfaceKind::Object: {
+            if (id)
+                *id = {HitKind::Object, surface.index};
+            const DrawItem& item = input.items[static_cast<std::size_t>(surface.index)];
+            return shader.shade(item.material, itemTexture[static_cast<std::size_t>(surface.index)], *hit,
+                                viewDir);
+        }
+        case SurfaceKind::Mirror: {
+            const std::size_t m = static_cast<std::size_t>(surface.index);
+            const Mirror& mirror = input.mirrors[m];
+            const int texture = mirrorTexture[m];
+            const bool reflects =
+                hit->frontFacing && mirrorPlanes[m] && path.mirrorLevel + 1 <= path.mirrorLimit;
+            if (id)
+                *id = {hit->frontFacing ? HitKind::Mirror : HitKind::MirrorBack, surface.index};
+            if (!reflects)
+                return shader.shade(mirror.material, texture, *hit, viewDir);
+            // mirror.frag: surface·(1−R) + reflection·R·tint, Schlick's R with fresnel.
+            const glm::dvec3 normal = mirrorPlanes[m]->normal;
+            double r = std::clamp(mirror.reflectivity, 0.0, 1.0);
+            if (mirror.fresnel) {
+                const double c = std::clamp(glm::dot(normal, viewDir), 0.0, 1.0);
+                r = r + (1.0 - r) * std::pow(1.0 - c, 5.0);
+            }
+            glm::dvec3 result(0.0);
+            if (r < 1.0) {
+                Hit surfaceHit = *hit;
+                surfaceHit.normal = normal;
+                result += shader.shade(mirror.hasMaterial ? mirror.material : Material{},
+                                       mirror.hasMaterial ? texture : -1, surfaceHit, viewDir) *
+                          (1.0 - r);
+            }
+            Path next = path;
+            next.mirrorLevel += 1;
+            next.farLeft = path.farLeft - hit->t;
+            const glm::dvec3 reflected = direction - 2.0 * glm::dot(direction, normal) * normal;
+            result += mirror.tint * r *
+                      radiance(shader, settings, hit->position + normal * eps, reflected, 0.0, next, nullptr);
+            return result;
+        }
+        case SurfaceKind::Reflector: {
+            if (id)
+                *id = {HitKind::Reflector, 0};
+            const Reflector& reflector = *input.reflector;
+            if (path.reflectorLevel >= settings.reflectorDepth)
+                return shader.shade(reflector.material, reflectorTexture, *hit, viewDir);
+            // reflector.frag: surface·(1−R) + environment·R, Schlick's R with fresnel.
+            double r = std::clamp(reflector.reflectivity, 0.0, 1.0);
+            if (reflector.fresnel) {
+                const double c = std::clamp(glm::dot(hit->normal, viewDir), 0.0, 1.0);
+                r = r + (1.0 - r) * std::pow(1.0 - c, 5.0);
+            }
+            glm::dvec3 result(0.0);
+            if (r < 1.0)
+                result += shader.shade(reflector.material, reflectorTexture, *hit, viewDir) * (1.0 - r);
+            // Reflected about the interpolated normal (what an environment-map lookup uses too); the
+            // new ray leaves from the side the viewer is on. An environment map has no far plane, and
+            // shows planar mirrors to the reflector's own mirror depth.
+            Path next = path;
+            next.reflectorLevel += 1;
+            next.farLeft = kInfinity;
+            next.mirrorLevel = 0;
+            next.mirrorLimit = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
+            const glm::dvec3 d = glm::normalize(direction);
+            const glm::dvec3 reflected = d - 2.0 * glm::dot(d, hit->normal) * hit->normal;
+            const glm::dvec3 side = glm::dot(reflected, hit->geometricNormal) >= 0.0 ? hit->geometricNormal
+                                                                                     : -hit->geometricNormal;
+            result +=
+                r * radiance(shader, settings, hit->position + side * eps, reflected, 0.0, next, nullptr);
+            return result;
+        }
+        }
+        return input.settings.background;
+    }
+};
+
+Tracer::Tracer(std::unique_ptr<Impl> impl)
+    : m_impl(std::move(impl)) {}
+Tracer::Tracer(Tracer&&) noexcept = default;
+Tracer& Tracer::operator=(Tracer&&) noexcept = default;
+Tracer::~Tracer() = default;
+
+const std::vector<std::string>& Tracer::warnings() const {
+    return m_impl->warnings;
+}
+
+Result<Tracer> Tracer::create(const FrameInput& input) {
+    auto impl = std::make_unique<Impl>();
+    impl->input = input;
+    const glm::dvec3 origin = input.camera.position;
+    auto geometry = SceneGeometry::build(impl->input, origin, impl->warnings);
+    if (!geometry)
+        return Error{geometry.error()};
+    impl->geometry = std::move(*geometry);
+    for (const DrawItem& item : impl->input.items)
+        impl->itemTexture.push_back(impl->textures.add(item.material.texturePath));
+    for (const Mirror& mirror : impl->input.mirrors) {
+        impl->mirrorTexture.push_back(impl->textures.add(mirror.material.texturePath));
+        // The plane in camera-relative coordinates; a collapsed rectangle has none and never reflects.
+        glm::dmat4 world = mirror.world;
+        world[3] -= glm::dvec4(origin, 0.0);
+        auto plane = math::mirrorPlane(world);
+        impl->mirrorPlanes.push_back(plane ? std::optional<math::Plane>(*plane) : std::nullopt);
+    }
+    if (impl->input.reflector)
+        impl->reflectorTexture = impl->textures.add(impl->input.reflector->material.texturePath);
+    impl->lights = shadingLights(impl->input, origin);
+    impl->maxMirrorDepth = std::clamp(impl->input.settings.mirrorDepth, 0, kStencilLevels);
+    impl->warnings.insert(impl->warnings.end(), impl->textures.warnings().begin(),
+                          impl->textures.warnings().end());
+    return Tracer(std::move(impl));
+}
+
+Result<TraceResult> Tracer::render(const TraceSettings& settings, const TraceProgress& progress) const {
+    const auto start = std::chrono::steady_clock::now();
+    if (settings.width <= 0 || settings.height <= 0)
+        return Error{"image size must be positive, got " + std::to_string(settings.width) + "x" +
+                     std::to_string(settings.height)};
+    const Impl& impl = *m_impl;
+    const int width = settings.width, height = settings.height;
+    const int n = std::clamp(settings.ssaa, 1, 16);
+    const Shader shader(impl.lights, *impl.geometry, impl.textures, impl.input.settings.ambient,
+                        settings.shadows);
+
+    // Camera rays in camera-relative world space. Directions have a view-depth component of exactly 1,
+    // so a ray's t is the view depth and [near, far] clips like the projection does.
+    const Camera& camera = impl.input.camera;
+    const glm::dmat3 viewToWorld = glm::transpose(glm::dmat3(math::viewRotation(camera)));
+    const double tanHalf = std::tan(glm::radians(camera.fovY) * 0.5);
+    const double aspect = double(width) / double(height);
+    auto rayThrough = [&](double px, double py) {
+        const double ndcX = 2.0 * px / width - 1.0;
+        const double ndcY = 1.0 - 2.0 * py / height;
+        return viewToWorld * glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0);
+    };
+    Impl::Path primary;
+    primary.farLeft = camera.far;
+    primary.mirrorLimit = impl.maxMirrorDepth;
+
+    TraceResult result;
+    result.samples = n * n;
+    result.warnings = impl.warnings;
+    result.image.width = result.ids.width = width;
+    result.image.height = result.ids.height = height;
+    result.image.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
+    result.ids.ids.assign(static_cast<std::size_t>(width) * height, PixelId{});
+
+    // A first call before any work, so a caller can cancel at once.
+    if (progress && !progress(0.0))
+        return Error{"render cancelled"};
+    std::atomic<int> nextRow{0};
+    std::atomic<int> rowsDone{0};
+    std::atomic<bool> cancelled{false};
+    std::mutex mutex;
+    std::condition_variable finished;
+    auto work = [&] {
+        for (int y = nextRow++; y < height && !cancelled; y = nextRow++) {
+            for (int x = 0; x < width; ++x) {
+                glm::dvec3 sum(0.0);
+                PixelId id;
+                for (int j = 0; j < n; ++j)
+                    for (int i = 0; i < n; ++i) {
+                        // The ordered grid of renderStill: sample (i, j) at ((i + ½)/N, (j + ½)/N) in the
+                        // pixel.
+                        const glm::dvec3 dir = rayThrough(x + (i + 0.5) / n, y + (j + 0.5) / n);
+                        glm::dvec3 c = impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near,
+                                                     primary, n == 1 ? &id : nullptr);
+                        sum += finite(c) ? c : glm::dvec3(0.0);
+                    }
+                if (n > 1) // what the pixel's centre shows
+                    impl.radiance(shader, settings, glm::dvec3(0.0), rayThrough(x + 0.5, y + 0.5),
+                                  camera.near, primary, &id);
+                const glm::dvec3 c = sum / double(n * n);
+                const std::size_t p = static_cast<std::size_t>(y) * width + x;
+                result.image.rgba[p * 4 + 0] = static_cast<float>(c.r);
+                result.image.rgba[p * 4 + 1] = static_cast<float>(c.g);
+                result.image.rgba[p * 4 + 2] = static_cast<float>(c.b);
+                result.image.rgba[p * 4 + 3] = 1.0f;
+                result.ids.ids[p] = id;
+            }
+            if (++rowsDone == height) {
+                std::lock_guard lock(mutex);
+                finished.notify_all();
+            }
+        }
+    };
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    const int threads =
+        std::clamp(settings.threads > 0 ? settings.threads : int(hardware), 1, std::max(height, 1));
+    std::vector<std::thread> workers;
+    workers.reserve(static_cast<std::size_t>(threads));
+    for (int t = 0; t < threads; ++t)
+        workers.emplace_back(work);
+    // Progress is reported from this (the caller's) thread, a few times a second.
+    {
+        std::unique_lock lock(mutex);
+        while (rowsDone < height && !cancelled) {
+            finished.wait_for(lock, std::chrono::milliseconds(100));
+            if (progress && rowsDone < height && !progress(double(rowsDone) / height))
+                cancelled = true;
+        }
+    }
+    for (std::thread& t : workers)
+        t.join();
+    if (cancelled)
+        return Error{"render cancelled"};
+    if (progress)
+        progress(1.0);
+    result.totalMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace speculum::render::reference
