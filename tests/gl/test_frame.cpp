@@ -100,3 +100,37 @@ TEST_F(GlTest, AbsurdStillSizesAreRefusedNotCrashedOn) {
 
 } // namespace
 } // namespace speculum::test
+
+#include "editor/document/MeshLibrary.hpp"
+#include "editor/document/ProjectFile.hpp"
+#include "editor/document/Snapshot.hpp"
+
+namespace speculum::test {
+namespace {
+
+// A frame of an unchanged scene looks the same as the one before it, whatever the renderer reused
+// (shadow maps, environment maps) between them.
+TEST_F(GlTest, ConsecutiveFramesOfAnUnchangedDemoSceneAreIdentical) {
+    for (const char* name : {"teapot.speculum.json", "mirrors.speculum.json", "chrome.speculum.json"}) {
+        document::Scene scene;
+        std::vector<std::string> warnings;
+        ASSERT_TRUE(
+            document::openProject(scene, QString(SPECULUM_SOURCE_DIR "/resources/scenes/") + name, warnings)
+                .ok());
+        document::MeshLibrary meshes;
+        const render::FrameInput input = document::snapshot(scene, 0.25, meshes, warnings);
+        const render::Image first = renderImage(input, 160, 90);
+        const render::Image second = renderImage(input, 160, 90);
+        const render::Image third = renderImage(input, 160, 90);
+        double worst12 = 0.0, worst23 = 0.0;
+        for (std::size_t i = 0; i < first.rgba.size(); ++i) {
+            worst12 = std::max(worst12, double(std::abs(first.rgba[i] - second.rgba[i])));
+            worst23 = std::max(worst23, double(std::abs(second.rgba[i] - third.rgba[i])));
+        }
+        EXPECT_EQ(worst12, 0.0) << name << ": first and second frame";
+        EXPECT_EQ(worst23, 0.0) << name << ": second and third frame";
+    }
+}
+
+} // namespace
+} // namespace speculum::test
