@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <optional>
 
 namespace speculum::render {
 
@@ -57,8 +58,11 @@ struct Planner {
 
     // Plans every mirror seen from `parentView` (-1: the camera) and recurses.
     void planChildren(int parentView) {
-        const MirrorView* parent =
-            parentView >= 0 ? &plan.views[static_cast<std::size_t>(parentView)] : nullptr;
+        // A copy, not a pointer: planning the children appends to plan.views, which may reallocate it.
+        const std::optional<MirrorView> parentCopy =
+            parentView >= 0 ? std::optional<MirrorView>(plan.views[static_cast<std::size_t>(parentView)])
+                            : std::nullopt;
+        const MirrorView* parent = parentCopy ? &*parentCopy : nullptr;
         const int depth = parent ? parent->depth + 1 : 1;
         const glm::dmat4 parentReflection = parent ? parent->reflection : glm::dmat4(1.0);
         const glm::dvec3 parentEye = parent ? parent->eye : input.camera.position;
