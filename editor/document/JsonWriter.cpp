@@ -105,7 +105,15 @@ void JsonWriter::value(std::string_view text) {
 
 void JsonWriter::writeString(std::string_view text) {
     m_out.append('"');
-    for (const char c : text) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        // U+FEFF (a byte-order mark) is dropped by Qt's parser when it appears raw inside a string, so a
+        // key or value holding one would change between a save and the next load: write it escaped.
+        if (text.compare(i, 3, "\xEF\xBB\xBF") == 0) {
+            raw("\\ufeff");
+            i += 2;
+            continue;
+        }
         switch (c) {
         case '"':
             raw("\\\"");
@@ -200,14 +208,20 @@ void JsonWriter::value(const QJsonValue& any) {
     case QJsonValue::Object: {
         const QJsonObject object = any.toObject();
         beginObject();
-        for (auto it = object.begin(); it != object.end(); ++it) {
-            key(it.key().toStdString());
-            value(it.value());
+        for (const QString& name : sortedKeys(object)) {
+            key(name.toStdString());
+            value(object.value(name));
         }
         endObject();
         break;
     }
     }
+}
+
+QStringList JsonWriter::sortedKeys(const QJsonObject& object) {
+    QStringList keys = object.keys();
+    std::sort(keys.begin(), keys.end(), [](const QString& a, const QString& b) { return a.compare(b) < 0; });
+    return keys;
 }
 
 QByteArray JsonWriter::finish() {

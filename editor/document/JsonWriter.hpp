@@ -1,7 +1,9 @@
 #pragma once
 
 #include <QByteArray>
+#include <QJsonObject>
 #include <QJsonValue>
+#include <QStringList>
 #include <string_view>
 #include <vector>
 
@@ -12,6 +14,10 @@ namespace speculum::document {
 // The output is a pure function of the calls, which is what makes saving byte-for-byte reproducible.
 class JsonWriter {
 public:
+    // The keys of an object in code-unit order. QJsonObject's own iteration order is not a dependable
+    // sort (a key whose raw U+FEFF the parser dropped keeps its old place), so files are written by this.
+    static QStringList sortedKeys(const QJsonObject& object);
+
     void beginObject();
     void endObject();
     void beginArray();

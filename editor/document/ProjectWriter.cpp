@@ -51,9 +51,9 @@ private:
     }
 
     void writeExtra(const QJsonObject& extra) {
-        for (auto it = extra.begin(); it != extra.end(); ++it) {
-            w.key(it.key().toStdString());
-            w.value(it.value());
+        for (const QString& name : JsonWriter::sortedKeys(extra)) {
+            w.key(name.toStdString());
+            w.value(extra.value(name));
         }
     }
 
@@ -277,6 +277,13 @@ render::Status saveProject(const SceneData& data, const QString& path) {
         return render::Error{"cannot write " + path.toStdString() + ": " + file.errorString().toStdString()};
     }
     if (file.write(bytes) != bytes.size()) {
+        const std::string reason = file.errorString().toStdString();
+        file.cancelWriting();
+        return render::Error{"cannot write " + path.toStdString() + ": " + reason};
+    }
+    // Flush first and check it: QSaveFile (Qt 6.4) commits a file whose buffered write failed part-way
+    // (a full disk, a file-size limit), replacing the previous file with a truncated one.
+    if (!file.flush()) {
         const std::string reason = file.errorString().toStdString();
         file.cancelWriting();
         return render::Error{"cannot write " + path.toStdString() + ": " + reason};

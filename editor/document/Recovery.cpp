@@ -62,7 +62,12 @@ render::Status RecoveryStore::write(const SceneData& data, const QString& origin
     }
     const QJsonObject o{{QStringLiteral("project"), originalPath},
                         {QStringLiteral("savedAt"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
-    note.write(QJsonDocument(o).toJson());
+    // A failed flush must not be committed (see saveProject): the note would be truncated.
+    if (note.write(QJsonDocument(o).toJson()) < 0 || !note.flush()) {
+        const std::string reason = note.errorString().toStdString();
+        note.cancelWriting();
+        return render::Error{reason};
+    }
     if (!note.commit()) {
         return render::Error{note.errorString().toStdString()};
     }
