@@ -43,12 +43,13 @@ std::string usageText() {
     return "usage:\n"
            "  speculum [PROJECT]                          open the editor\n"
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference]\n"
-           "  speculum explain PROJECT [--size WxH] [--time T] [--json]\n"
+           "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--json]\n"
            "  speculum bench PROJECT --out DIR [--quick]\n"
            "\n"
            "render writes PNG, JPEG, TIFF or EXR (by the extension of OUT); --size defaults to 1280x720,\n"
            "--ssaa N averages NxN samples per pixel (1..16), --time evaluates animations at T seconds.\n"
-           "explain renders one frame and lists the passes that ran and the effects skipped, with reasons.\n";
+           "explain renders a frame and lists the passes that ran and the effects skipped, with reasons;\n"
+           "--frame N explains the Nth of N identical frames, showing what a static scene reuses.\n";
 }
 
 render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
@@ -134,6 +135,14 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
             o.time = *t;
         } else if (a == "--reference" && o.command == Command::Render) {
             o.reference = true;
+        } else if (a == "--frame" && o.command == Command::Explain) {
+            auto v = needValue(a);
+            if (!v)
+                return Error{v.error()};
+            auto n = parseInt("--frame", *v, 1, 100);
+            if (!n)
+                return Error{n.error()};
+            o.frame = *n;
         } else if (a == "--json" && o.command == Command::Explain) {
             o.json = true;
         } else if (a == "--quick" && o.command == Command::Bench) {

@@ -24,6 +24,7 @@ struct CliOptions {
     bool reference = false;
     bool json = false;
     bool quick = false;
+    int frame = 1; // explain: which of consecutive frames of the same scene to explain (reuse shows from 2)
 };
 
 render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args);

@@ -219,6 +219,12 @@ int runExplain(const CliOptions& options) {
     }
     // Explain what a frame at this size really does: render it offscreen and report its timings.
     render::StillSettings settings{options.width, options.height, 1};
+    // Frames before the one explained warm the renderer's caches exactly as a live viewport would.
+    for (int warmUp = 1; warmUp < options.frame; ++warmUp)
+        if (auto earlier = render::renderStill(*frame->renderer, frame->input, settings); !earlier) {
+            fail("explain: " + earlier.error());
+            return 1;
+        }
     auto still = render::renderStill(*frame->renderer, frame->input, settings);
     if (!still) {
         fail("explain: " + still.error());
@@ -245,6 +251,7 @@ int runExplain(const CliOptions& options) {
                          {"skipped", skipped},
                          {"size", QString::fromStdString(sizeText(options.width, options.height))},
                          {"time", options.time},
+                         {"frame", options.frame},
                          {"frameGpuMs", still->firstSample.gpuMs},
                          {"frameCpuMs", still->firstSample.cpuMs},
                          {"renderer", QString::fromStdString(frame->glDescription)}};

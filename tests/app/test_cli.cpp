@@ -151,3 +151,21 @@ TEST_F(Cli, ExplainTextIsReadable) {
 }
 
 } // namespace
+
+namespace {
+
+TEST_F(Cli, ExplainOfASecondStaticFrameShowsTheReusedMaps) {
+    const std::string chrome = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/chrome.speculum.json";
+    const CliRun first = speculum("explain " + chrome + " --size 160x90 --json");
+    ASSERT_EQ(first.status, 0) << first.err;
+    EXPECT_NE(first.out.find("\"envmap\""), std::string::npos) << "the first frame captures the environment";
+    const CliRun second = speculum("explain " + chrome + " --size 160x90 --json --frame 2");
+    ASSERT_EQ(second.status, 0) << second.err;
+    EXPECT_EQ(second.out.find("\"envmap\""), std::string::npos)
+        << "a static scene reuses its environment map";
+    EXPECT_EQ(second.out.find("\"shadow\""), std::string::npos) << "and its shadow maps";
+    EXPECT_NE(second.out.find("reused"), std::string::npos);
+    EXPECT_NE(speculum("explain " + chrome + " --frame 0").status, 0);
+}
+
+} // namespace
