@@ -1,4 +1,6 @@
 // The speculum command line as a user runs it: exit status, the one-line error, the files it writes.
+#include "support/CliRun.hpp"
+
 #include <OpenImageIO/imageio.h>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -14,29 +16,13 @@
 
 namespace {
 
+namespace test = speculum::test;
 namespace fs = std::filesystem;
 
-struct CliRun {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
+using test::CliRun;
 
 CliRun speculum(const std::string& arguments) {
-    const fs::path errFile =
-        fs::temp_directory_path() / ("speculum-cli-" + std::to_string(::getpid()) + ".err");
-    const std::string command = std::string(SPECULUM_BINARY) + " " + arguments + " 2>" + errFile.string();
-    CliRun run;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-        run.out.append(buffer.data(), n);
-    const int raw = ::pclose(pipe);
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    std::ifstream in(errFile);
-    run.err.assign(std::istreambuf_iterator<char>(in), {});
-    fs::remove(errFile);
-    return run;
+    return test::runSpeculum(arguments);
 }
 
 std::string demo() {

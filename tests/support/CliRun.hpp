@@ -1,0 +1,40 @@
+#pragma once
+
+// Runs the real speculum binary (SPECULUM_BINARY, for tests registered with USES_CLI) as a user would,
+// capturing its exit status, stdout and stderr.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace speculum::test {
+
+struct CliRun {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+inline CliRun runSpeculum(const std::string& arguments) {
+    namespace fs = std::filesystem;
+    static int counter = 0;
+    const fs::path errFile = fs::temp_directory_path() / ("speculum-cli-" + std::to_string(::getpid()) + "-" +
+                                                          std::to_string(++counter) + ".err");
+    const std::string command = std::string(SPECULUM_BINARY) + " " + arguments + " 2>" + errFile.string();
+    CliRun run;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+        run.out.append(buffer.data(), n);
+    const int raw = ::pclose(pipe);
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(errFile);
+    run.err.assign(std::istreambuf_iterator<char>(in), {});
+    fs::remove(errFile);
+    return run;
+}
+
+} // namespace speculum::test
