@@ -5,6 +5,7 @@
 // Prints each map's texel solid-angle ratio and checks that the dual-paraboloid update (direct fill)
 // costs at most half the cube update at equal n.
 // Run: build/release/benchmarks/speculum_bench_envmap
+#include "BenchGl.hpp"
 #include "render/Renderer.hpp"
 #include "render/envmap/SolidAngle.hpp"
 #include "render/gl/HeadlessContext.hpp"
@@ -26,33 +27,10 @@ using namespace speculum::render;
 // A small target: the main pass is not what is measured.
 constexpr int kWidth = 160, kHeight = 120;
 
-struct Gl {
-    std::unique_ptr<gl::HeadlessContext> context;
-    std::unique_ptr<Renderer> renderer;
-    gl::Texture color;
-    gl::Framebuffer framebuffer;
-};
+using Gl = speculum::bench::BenchGl;
 
 Gl* gl() {
-    static std::unique_ptr<Gl> g;
-    if (!g) {
-        auto context = gl::HeadlessContext::create();
-        if (!context)
-            return nullptr;
-        g = std::make_unique<Gl>();
-        g->context = std::move(*context);
-        auto renderer = Renderer::create();
-        if (!renderer)
-            return nullptr;
-        g->renderer = std::move(*renderer);
-        g->color = gl::makeTexture();
-        glBindTexture(GL_TEXTURE_2D, g->color.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kWidth, kHeight, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        g->framebuffer = gl::makeFramebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, g->framebuffer.id());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, g->color.id(), 0);
-    }
-    return g.get();
+    return speculum::bench::benchGl(kWidth, kHeight);
 }
 
 Material colored(glm::dvec3 c) {

@@ -1,6 +1,7 @@
 // What planar mirrors cost at 1280×720: a mirror that is present but hidden, one visible mirror covering
 // a fraction f of the screen, and two facing mirrors at depth 1 and 8. Prints the checks of the mirror
 // issue after the timings. Run: build/release/benchmarks/speculum_bench_mirrors
+#include "BenchGl.hpp"
 #include "render/Renderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/gl/Objects.hpp"
@@ -20,33 +21,10 @@ using namespace speculum::render;
 
 constexpr int kWidth = 1280, kHeight = 720;
 
-struct Gl {
-    std::unique_ptr<gl::HeadlessContext> context;
-    std::unique_ptr<Renderer> renderer;
-    gl::Texture color;
-    gl::Framebuffer framebuffer;
-};
+using Gl = speculum::bench::BenchGl;
 
 Gl* gl() {
-    static std::unique_ptr<Gl> g;
-    if (!g) {
-        auto context = gl::HeadlessContext::create();
-        if (!context)
-            return nullptr;
-        g = std::make_unique<Gl>();
-        g->context = std::move(*context);
-        auto renderer = Renderer::create();
-        if (!renderer)
-            return nullptr;
-        g->renderer = std::move(*renderer);
-        g->color = gl::makeTexture();
-        glBindTexture(GL_TEXTURE_2D, g->color.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kWidth, kHeight, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        g->framebuffer = gl::makeFramebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, g->framebuffer.id());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, g->color.id(), 0);
-    }
-    return g.get();
+    return speculum::bench::benchGl(kWidth, kHeight);
 }
 
 Mirror wall(const std::string& name, glm::dvec3 at, glm::dvec3 axis, double degrees, glm::dvec2 size) {
