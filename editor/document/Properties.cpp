@@ -612,6 +612,25 @@ ComponentInfo mirrorGroup() {
                                      {QStringLiteral("Stencil"), QStringLiteral("Texture")},
                                      std::array{MirrorTechnique::Stencil, MirrorTechnique::Texture},
                                      in(&NodeData::mirror, &Mi::technique)));
+    c.properties.push_back(color<NodeData>(QStringLiteral("mirror.tint"), QStringLiteral("Tint"),
+                                           in(&NodeData::mirror, &Mi::tint)));
+    c.properties.push_back(boolean<NodeData>(
+        QStringLiteral("mirror.fresnel"), QStringLiteral("Fresnel"),
+        [](const NodeData& d) { return d.mirror && d.mirror->fresnel; },
+        [](NodeData& d, bool on) -> render::Status {
+            if (!d.mirror) {
+                return render::Error{"Fresnel does not apply to this node"};
+            }
+            d.mirror->fresnel = on;
+            return ok();
+        }));
+    c.properties.back().info.tooltip = QStringLiteral(
+        "Schlick: the reflectivity applies at normal incidence and rises to 1 at grazing angles");
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("mirror.blur"), QStringLiteral("Blur"),
+                                in(&NodeData::mirror, &Mi::blur), {0.0, 1.0}, {},
+                                QStringLiteral("Roughness of the reflection (texture technique)")),
+               0.0, 1.0));
     return c;
 }
 
