@@ -664,6 +664,30 @@ ComponentInfo reflectorGroup() {
         slider(number<NodeData>(QStringLiteral("reflector.reflectivity"), QStringLiteral("Reflectivity"),
                                 in(&NodeData::reflector, &R::reflectivity), {0.0, 1.0}),
                0.0, 1.0));
+    c.properties.push_back(boolean<NodeData>(
+        QStringLiteral("reflector.fresnel"), QStringLiteral("Fresnel"),
+        [](const NodeData& d) { return d.reflector && d.reflector->fresnel; },
+        [](NodeData& d, bool on) -> render::Status {
+            if (!d.reflector) {
+                return render::Error{"Fresnel does not apply to this node"};
+            }
+            d.reflector->fresnel = on;
+            return ok();
+        }));
+    c.properties.push_back(enumField(
+        QStringLiteral("reflector.fill"), QStringLiteral("Fill"),
+        {QStringLiteral("Direct (vertex warp)"), QStringLiteral("Resampled cube")},
+        std::array{ReflectorFill::Direct, ReflectorFill::Resampled}, in(&NodeData::reflector, &R::fill)));
+    c.properties.back().info.tooltip =
+        QStringLiteral("How dual-paraboloid and tennis-ball maps are filled; the cube map ignores it");
+    c.properties.push_back(enumField(
+        QStringLiteral("reflector.update"), QStringLiteral("Update"),
+        {QStringLiteral("Always"), QStringLiteral("When something it sees changes"), QStringLiteral("Once")},
+        std::array{ReflectorUpdate::Always, ReflectorUpdate::OnChange, ReflectorUpdate::Once},
+        in(&NodeData::reflector, &R::update)));
+    c.properties.push_back(integer<NodeData>(QStringLiteral("reflector.mirrorDepth"),
+                                             QStringLiteral("Mirror depth in the map"),
+                                             in(&NodeData::reflector, &R::mirrorDepth), {0, 16}, {}));
     return c;
 }
 

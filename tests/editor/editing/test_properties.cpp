@@ -174,4 +174,23 @@ TEST(Properties, MirrorTintFresnelAndBlurAreEditable) {
     EXPECT_DOUBLE_EQ(d.mirror->tint.x, 1.0);
 }
 
+TEST(Properties, ReflectorFresnelFillUpdateAndMirrorDepthAreEditable) {
+    NodeData d = fullNode();
+    const auto* fresnel = findNodeProperty(QStringLiteral("reflector.fresnel"));
+    const auto* fill = findNodeProperty(QStringLiteral("reflector.fill"));
+    const auto* update = findNodeProperty(QStringLiteral("reflector.update"));
+    const auto* depth = findNodeProperty(QStringLiteral("reflector.mirrorDepth"));
+    ASSERT_TRUE(fresnel && fill && update && depth);
+    ASSERT_TRUE(fresnel->set(d, true).ok());
+    EXPECT_TRUE(d.reflector->fresnel);
+    ASSERT_TRUE(fill->set(d, 0).ok());
+    EXPECT_EQ(d.reflector->fill, ReflectorFill::Direct);
+    ASSERT_TRUE(update->set(d, 2).ok());
+    EXPECT_EQ(d.reflector->update, ReflectorUpdate::Once);
+    ASSERT_TRUE(depth->set(d, 3).ok());
+    EXPECT_EQ(d.reflector->mirrorDepth, 3);
+    EXPECT_FALSE(depth->set(d, 17).ok());
+    EXPECT_EQ(d.reflector->mirrorDepth, 3);
+}
+
 } // namespace
