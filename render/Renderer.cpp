@@ -161,6 +161,7 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
     passes::MainPassContext ctx{
         s.meshProgram,          s.meshes,   s.textures, s.shadows, plan.shadowedLights, s.dummyShadow2D.id(),
         s.dummyShadowCube.id(), s.unitPlane};
+    ctx.depthOnlyProgram = &s.flatProgram;
     // Every view the main pass draws (the camera's and each mirror's) draws the reflector with its map.
     ctx.drawReflector = [&s](const FrameInput& in, const passes::ViewSetup& view,
                              passes::MainPassContext& c) { return s.reflector.drawSurface(in, view, c); };
@@ -234,7 +235,8 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
                          float(input.settings.background.b), 1.0f);
             glClearStencil(0);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-            passes::drawMainPass(input, passes::viewSetup(input, plan, -1, projection), ctx);
+            passes::drawMainPass(
+                input, passes::viewSetup(input, plan, -1, projection, {target.width, target.height}), ctx);
             break;
         }
         case PassKind::MirrorMask: {
@@ -243,7 +245,8 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
             glViewport(0, 0, target.width, target.height);
             resetState();
             passes::scissorTo(view.rect);
-            const passes::ViewSetup parent = passes::viewSetup(input, plan, view.parent, projection);
+            const passes::ViewSetup parent =
+                passes::viewSetup(input, plan, view.parent, projection, {target.width, target.height});
             if (!passes::drawMirrorMask(input, view, parent, s.flatProgram, ctx, s.occlusion.id()))
                 hidden[static_cast<std::size_t>(pass.view)] =
                     "fully occluded: no pixel of it passed the depth test";
@@ -275,7 +278,9 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
             passes::scissorTo(view.rect);
             // An odd number of reflections turns counter-clockwise triangles clockwise.
             glFrontFace(glm::determinant(glm::dmat3(view.reflection)) < 0.0 ? GL_CW : GL_CCW);
-            passes::drawMainPass(input, passes::viewSetup(input, plan, pass.view, projection), ctx);
+            passes::drawMainPass(
+                input, passes::viewSetup(input, plan, pass.view, projection, {target.width, target.height}),
+                ctx);
             glFrontFace(GL_CCW);
             break;
         }
@@ -299,9 +304,10 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
                                 plan.views[static_cast<std::size_t>(view.parent)].reflection)) < 0.0
                                 ? GL_CW
                                 : GL_CCW);
-            passes::drawMirrorSurface(input, view, passes::viewSetup(input, plan, view.parent, projection),
-                                      s.mirrorProgram, ctx, reflection, levels,
-                                      {target.width, target.height});
+            passes::drawMirrorSurface(
+                input, view,
+                passes::viewSetup(input, plan, view.parent, projection, {target.width, target.height}),
+                s.mirrorProgram, s.flatProgram, ctx, reflection, levels, {target.width, target.height});
             glFrontFace(GL_CCW);
             break;
         }

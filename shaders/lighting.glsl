@@ -13,16 +13,12 @@ uniform vec3 uLightRadiance[MAX_LIGHTS];  // colour × intensity
 uniform vec2 uLightSpotCos[MAX_LIGHTS];   // cos(outer), cos(inner)
 uniform int uLightShadowSlot[MAX_LIGHTS]; // -1: no shadow map
 
-// Four shadow slots. GLSL 3.30 only indexes sampler arrays with constant expressions, so each slot
-// has its own sampler and lookups branch on the slot number.
-uniform sampler2DShadow uShadowMap0;
-uniform sampler2DShadow uShadowMap1;
-uniform sampler2DShadow uShadowMap2;
-uniform sampler2DShadow uShadowMap3;
-uniform samplerCubeShadow uShadowCube0;
-uniform samplerCubeShadow uShadowCube1;
-uniform samplerCubeShadow uShadowCube2;
-uniform samplerCubeShadow uShadowCube3;
+// Four shadow slots. GLSL 3.30 only indexes sampler arrays with constant expressions; with
+// ARB_gpu_shader5 (every GL 4 driver, llvmpipe included) the slot, the same for every pixel of a draw,
+// indexes them directly. Branching on the slot instead costs four lookups per tap on a SIMD rasterizer
+// that runs every branch under a mask (llvmpipe: a third of a lit frame).
+uniform sampler2DShadow uShadowMaps[4];
+uniform samplerCubeShadow uShadowCubes[4];
 uniform mat4 uShadowMatrix[4];      // camera-relative world → light clip space (2D maps)
 uniform int uShadowIsCube[4];
 uniform int uShadowPerspective[4];
@@ -35,17 +31,25 @@ uniform int uShadowPcf[4];          // kernel width in texels, 1 = a single hard
 const float kNormalOffsetTexels = 1.5;
 
 float sampleShadow2D(int slot, vec3 coord) {
-    if (slot == 0) return texture(uShadowMap0, coord);
-    if (slot == 1) return texture(uShadowMap1, coord);
-    if (slot == 2) return texture(uShadowMap2, coord);
-    return texture(uShadowMap3, coord);
+#ifdef GL_ARB_gpu_shader5
+    return texture(uShadowMaps[slot], coord);
+#else
+    if (slot == 0) return texture(uShadowMaps[0], coord);
+    if (slot == 1) return texture(uShadowMaps[1], coord);
+    if (slot == 2) return texture(uShadowMaps[2], coord);
+    return texture(uShadowMaps[3], coord);
+#endif
 }
 
 float sampleShadowCube(int slot, vec3 dir, float depth) {
-    if (slot == 0) return texture(uShadowCube0, vec4(dir, depth));
-    if (slot == 1) return texture(uShadowCube1, vec4(dir, depth));
-    if (slot == 2) return texture(uShadowCube2, vec4(dir, depth));
-    return texture(uShadowCube3, vec4(dir, depth));
+#ifdef GL_ARB_gpu_shader5
+    return texture(uShadowCubes[slot], vec4(dir, depth));
+#else
+    if (slot == 0) return texture(uShadowCubes[0], vec4(dir, depth));
+    if (slot == 1) return texture(uShadowCubes[1], vec4(dir, depth));
+    if (slot == 2) return texture(uShadowCubes[2], vec4(dir, depth));
+    return texture(uShadowCubes[3], vec4(dir, depth));
+#endif
 }
 
 // Window depth a cube face stores for a point at `dir` from the light: the face's perspective depth

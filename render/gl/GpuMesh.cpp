@@ -61,6 +61,7 @@ const GpuMesh& MeshCache::get(const MeshHandle& mesh) {
     if (it != m_entries.end() && it->second.owner.lock() == mesh)
         return it->second.gpu;
     Entry entry{mesh, upload(*mesh)};
+    entry.gpu.bounds = computeBounds(*mesh);
     auto [pos, inserted] = m_entries.insert_or_assign(mesh.get(), std::move(entry));
     return pos->second.gpu;
 }

@@ -12,6 +12,7 @@ struct GpuMesh {
     Buffer vertices;
     Buffer indices;
     GLsizei indexCount = 0;
+    Bounds bounds; // of the positions, in the mesh's own space: views cull with it
 
     void draw() const;
 };

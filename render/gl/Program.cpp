@@ -81,7 +81,8 @@ Result<std::string> preprocessShader(std::string_view file, const std::string& d
     std::ostringstream body;
     if (Status s = expand(file, body, fileNumbers, 0); !s)
         return Error{s.error()};
-    return "#version 330 core\n" + defines + "\n" + body.str();
+    // ARB_gpu_shader5 where the driver has it: shaders test GL_ARB_gpu_shader5 and fall back to GLSL 3.30.
+    return "#version 330 core\n#extension GL_ARB_gpu_shader5 : enable\n" + defines + "\n" + body.str();
 }
 
 std::string mapShaderLog(const std::string& log, const std::vector<std::string>& fileNumbers) {

@@ -42,8 +42,8 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
         glBindTexture(GL_TEXTURE_2D, ctx.dummyShadow2D);
         glActiveTexture(GL_TEXTURE0 + kShadowCubeUnit + slot);
         glBindTexture(GL_TEXTURE_CUBE_MAP, ctx.dummyShadowCube);
-        p.set("uShadowMap" + std::to_string(slot), kShadow2DUnit + slot);
-        p.set("uShadowCube" + std::to_string(slot), kShadowCubeUnit + slot);
+        p.set(indexed("uShadowMaps", slot), kShadow2DUnit + slot);
+        p.set(indexed("uShadowCubes", slot), kShadowCubeUnit + slot);
         p.set(indexed("uShadowIsCube", slot), 0);
     }
     const glm::dmat4 fromCameraRelative = glm::inverse(toCameraRelative);
@@ -120,17 +120,75 @@ glm::dmat4 mirrorRectangle(const Mirror& mirror) {
            glm::scale(glm::dmat4(1.0), glm::dvec3(mirror.size.x * 0.5, 1.0, mirror.size.y * 0.5));
 }
 
+glm::mat4 mirrorRectangleClip(const FrameInput& input, const Mirror& mirror, const ViewSetup& view) {
+    const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
+    return glm::mat4(view.viewProjection * toCameraRelative * view.reflection * mirrorRectangle(mirror));
+}
+
+namespace {
+
+// The depth of the view's stencil mirrors goes first: whatever lies behind a mirror (the wall it hangs
+// on) then fails the depth test before it is shaded, so a mirror's pixels are not paid for twice. The
+// mask pass later finds exactly these depths (same program, same matrix) where nothing stands in front.
+void drawStencilMirrorDepths(const FrameInput& input, const ViewSetup& view, const MainPassContext& ctx) {
+    if (!ctx.depthOnlyProgram)
+        return;
+    bool any = false;
+    for (std::size_t i = 0; i < view.stencilMirror.size(); ++i) {
+        if (!view.stencilMirror[i])
+            continue;
+        if (!any) {
+            ctx.depthOnlyProgram->use();
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            any = true;
+        }
+        ctx.depthOnlyProgram->set("uModelLightClip", mirrorRectangleClip(input, input.mirrors[i], view));
+        ctx.meshes.get(ctx.unitPlane).draw();
+    }
+    if (any)
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+// True when no part of the box can show in the view: its eight corners all lie outside one side of the
+// view's clip volume (narrowed to its pixels). Each side is a half-space in clip coordinates, so the test
+// holds for corners behind the eye too; a box that straddles a corner of the frustum is kept.
+bool outsideView(const Bounds& local, const glm::dmat4& world, const FrameInput& input,
+                 const ViewSetup& view) {
+    if (!view.cullOutside)
+        return false;
+    const glm::dmat4 toClip =
+        view.viewProjection * math::cameraRelative(input.camera) * view.reflection * world;
+    const glm::dvec4& r = view.ndcBounds;
+    int outside[6] = {0, 0, 0, 0, 0, 0};
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                           (corner & 4) ? local.max.z : local.min.z);
+        const glm::dvec4 c = toClip * glm::dvec4(p, 1.0);
+        outside[0] += c.x < r.x * c.w;
+        outside[1] += c.x > r.z * c.w;
+        outside[2] += c.y < r.y * c.w;
+        outside[3] += c.y > r.w * c.w;
+        outside[4] += c.z < -c.w; // the near plane (oblique in a mirror's view: the mirror's plane)
+        outside[5] += c.z > c.w;
+    }
+    return std::any_of(std::begin(outside), std::end(outside), [](int n) { return n == 8; });
+}
+
+} // namespace
+
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& ctx) {
+    drawStencilMirrorDepths(input, view, ctx);
     const gl::Program& p = ctx.program;
     beginLitView(input, view, p, ctx);
     for (const DrawItem& item : input.items) {
-        if (!item.mesh)
+        if (!item.mesh || outsideView(ctx.meshes.get(item.mesh).bounds, item.world, input, view))
             continue;
         setMaterial(item.material, p, ctx);
         drawLitMesh(item.mesh, item.world, input, p, ctx);
     }
     for (std::size_t i = 0; i < input.mirrors.size(); ++i) {
-        if (i < view.skipMirror.size() && view.skipMirror[i])
+        if ((i < view.skipMirror.size() && view.skipMirror[i]) ||
+            outsideView(ctx.meshes.get(ctx.unitPlane).bounds, mirrorRectangle(input.mirrors[i]), input, view))
             continue;
         setMaterial(input.mirrors[i].material, p, ctx);
         drawLitMesh(ctx.unitPlane, mirrorRectangle(input.mirrors[i]), input, p, ctx);

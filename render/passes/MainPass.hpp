@@ -38,15 +38,22 @@ struct MainPassContext {
     MeshHandle unitPlane;        // the mirror rectangle: [-1,1]² in XZ
     bool mirroredView = false;   // set by beginLitView: the view's reflection flips the winding
     DrawReflector drawReflector; // empty: the reflector is drawn with its material
+    // Draws a mirror rectangle's depth (uModelLightClip); null: stencil mirrors lay no depth first.
+    const gl::Program* depthOnlyProgram = nullptr;
 };
 
 // How one view sees the scene: the camera's own, or the scene reflected in a mirror.
 struct ViewSetup {
-    glm::dmat4 viewProjection{1.0}; // camera-relative world → clip (with an oblique near plane in mirrors)
-    glm::dmat4 reflection{1.0};     // world → reflected world (identity for the camera's view)
-    glm::dvec3 eye{0.0};            // world position of the (virtual) eye: lighting and specular use it
-    std::vector<bool> skipMirror;   // mirrors drawn by passes of their own in this view (by mirror index)
-    bool flipWinding = false;       // the projection mirrors the image (a warped environment component)
+    glm::dmat4 viewProjection{1.0};  // camera-relative world → clip (with an oblique near plane in mirrors)
+    glm::dmat4 reflection{1.0};      // world → reflected world (identity for the camera's view)
+    glm::dvec3 eye{0.0};             // world position of the (virtual) eye: lighting and specular use it
+    std::vector<bool> skipMirror;    // mirrors drawn by passes of their own in this view (by mirror index)
+    std::vector<bool> stencilMirror; // of those, the ones drawn through the stencil (their depth goes first)
+    bool flipWinding = false;        // the projection mirrors the image (a warped environment component)
+    // The part of clip space the view can draw into (x0, y0, x1, y1 in normalized device coordinates):
+    // a mirror's view only shows through its mirror's pixels. Objects wholly outside are not drawn.
+    glm::dvec4 ndcBounds{-1.0, -1.0, 1.0, 1.0};
+    bool cullOutside = false; // off for warped views, whose clip space is not a frustum
 };
 
 // Binds the lit-material program and sets everything that is the same for every object of the view:
@@ -67,5 +74,9 @@ void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInp
 
 // The world matrix of a mirror's rectangle drawn with the unit plane mesh.
 glm::dmat4 mirrorRectangle(const Mirror& mirror);
+
+// Object → clip of a mirror's rectangle drawn in a view, composed in double. The depth-first pass and
+// the stencil mask both use it with the same program, so their depths agree exactly.
+glm::mat4 mirrorRectangleClip(const FrameInput& input, const Mirror& mirror, const ViewSetup& view);
 
 } // namespace speculum::render::passes

@@ -7,8 +7,9 @@
 namespace speculum::render::passes {
 
 ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewIndex,
-                    const glm::dmat4& cameraProjection) {
+                    const glm::dmat4& cameraProjection, glm::ivec2 targetSize) {
     ViewSetup setup;
+    setup.cullOutside = true;
     const glm::dmat4 rotation = math::viewRotation(input.camera);
     if (viewIndex < 0) {
         setup.viewProjection = cameraProjection * rotation;
@@ -18,11 +19,19 @@ ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewInde
         setup.viewProjection = view.projection * rotation;
         setup.reflection = view.reflection;
         setup.eye = view.eye;
+        const glm::dvec2 size = glm::max(glm::dvec2(targetSize), glm::dvec2(1.0));
+        setup.ndcBounds = glm::dvec4(view.rect.x0 / size.x, view.rect.y0 / size.y, view.rect.x1 / size.x,
+                                     view.rect.y1 / size.y) *
+                              2.0 -
+                          1.0;
     }
     setup.skipMirror.assign(input.mirrors.size(), false);
+    setup.stencilMirror.assign(input.mirrors.size(), false);
     for (const MirrorView& child : plan.views)
-        if (child.parent == viewIndex)
+        if (child.parent == viewIndex) {
             setup.skipMirror[static_cast<std::size_t>(child.mirror)] = true;
+            setup.stencilMirror[static_cast<std::size_t>(child.mirror)] = !child.ownTarget;
+        }
     return setup;
 }
 
@@ -31,21 +40,11 @@ void scissorTo(const math::PixelRect& rect) {
     glScissor(rect.x0, rect.y0, rect.width(), rect.height());
 }
 
-namespace {
-
-// Object → clip for the mirror rectangle drawn in the parent's view, composed in double.
-glm::mat4 rectangleClip(const FrameInput& input, const Mirror& mirror, const ViewSetup& parent) {
-    const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
-    return glm::mat4(parent.viewProjection * toCameraRelative * parent.reflection * mirrorRectangle(mirror));
-}
-
-} // namespace
-
 bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
                     const gl::Program& maskProgram, const MainPassContext& context, GLuint query) {
     const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
     maskProgram.use();
-    maskProgram.set("uModelLightClip", rectangleClip(input, mirror, parent));
+    maskProgram.set("uModelLightClip", mirrorRectangleClip(input, mirror, parent));
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -78,10 +77,41 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
     return anyPassed != 0;
 }
 
-void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                       const gl::Program& surfaceProgram, MainPassContext& context, GLuint reflectionTexture,
-                       int reflectionLevels, glm::ivec2 targetSize) {
+namespace {
+
+// Reflectivity 1 leaves nothing of the surface's own material (Fresnel cannot raise it further): the
+// reflection, already in place, is only scaled by the tint. Same stencil and depth steps as the lit path.
+void tintPerfectMirror(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
+                       const gl::Program& flatProgram, const MainPassContext& context) {
     const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
+    flatProgram.use();
+    flatProgram.set("uModelLightClip", mirrorRectangleClip(input, mirror, parent));
+    flatProgram.set("uFlatColor", glm::vec4(0.0f));
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glStencilFunc(GL_EQUAL, view.stencilLevel, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_DECR);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ZERO, GL_CONSTANT_COLOR);
+    glBlendColor(float(mirror.tint.r), float(mirror.tint.g), float(mirror.tint.b), 1.0f);
+    context.meshes.get(context.unitPlane).draw();
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+}
+
+} // namespace
+
+void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
+                       const gl::Program& surfaceProgram, const gl::Program& flatProgram,
+                       MainPassContext& context, GLuint reflectionTexture, int reflectionLevels,
+                       glm::ivec2 targetSize) {
+    const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
+    if (!view.ownTarget && mirror.reflectivity >= 1.0) {
+        tintPerfectMirror(input, view, parent, flatProgram, context);
+        return;
+    }
     beginLitView(input, parent, surfaceProgram, context);
     setMaterial(mirror.hasMaterial ? mirror.material : Material{}, surfaceProgram, context);
     surfaceProgram.set("uReflectivity", float(mirror.reflectivity));

@@ -8,7 +8,7 @@ namespace speculum::render::passes {
 
 // The view a mirror view is drawn from: its parent's, or the camera's for index −1.
 ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewIndex,
-                    const glm::dmat4& cameraProjection);
+                    const glm::dmat4& cameraProjection, glm::ivec2 targetSize);
 
 // Stencil technique, step 1: in the parent's view, marks the mirror's visible pixels (those of its parent's
 // stencil level whose depth test passes) with the view's stencil level, and counts them with an occlusion
@@ -20,9 +20,11 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
 
 // Step 3: the mirror's own surface over its reflection, in the parent's view (see shaders/mirror.frag);
 // stencil views also step their pixels back to the parent's stencil level and restore the mirror's depth.
+// A perfect stencil mirror (reflectivity 1) has no surface of its own to shade: flatProgram only tints.
 void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                       const gl::Program& surfaceProgram, MainPassContext& context, GLuint reflectionTexture,
-                       int reflectionLevels, glm::ivec2 targetSize);
+                       const gl::Program& surfaceProgram, const gl::Program& flatProgram,
+                       MainPassContext& context, GLuint reflectionTexture, int reflectionLevels,
+                       glm::ivec2 targetSize);
 
 // Scissor to a view's pixels.
 void scissorTo(const math::PixelRect& rect);

@@ -367,5 +367,34 @@ TEST_F(GlTest, MirrorPartlyOffScreenReflectsOnlyItsVisiblePart) {
     EXPECT_GT(redPixels, 20);
 }
 
+// A perfect stencil mirror skips shading its own surface and only tints the reflection: its image must
+// be the one a lit mirror gives as its reflectivity approaches 1 (here 0.9999, off by 1e-4 of the surface).
+TEST_F(GlTest, PerfectMirrorLooksLikeAMirrorOfReflectivityJustUnderOne) {
+    FrameInput input = mirrorScene(MirrorTechnique::Stencil);
+    input.settings.ambient = 0.3;
+    input.mirrors[0].tint = {1.0, 0.5, 0.25};
+    input.mirrors[0].hasMaterial = false; // a plain grey lit surface under the reflection
+    Light light;
+    light.name = "Light";
+    light.position = {0, 3, 2};
+    light.shadows = {true, 512, 3};
+    input.lights = {light};
+    input.items.push_back(cube("Red", {1.0, 0.3, 0.0}, 0.3, {1, 0, 0}));
+    input.items.push_back(cube("Green", {-1.0, -0.3, 0.5}, 0.3, {0, 1, 0}));
+    const Image perfect = renderImage(input, kWidth, kHeight);
+    input.mirrors[0].reflectivity = 0.9999;
+    const Image lit = renderImage(input, kWidth, kHeight);
+    float largest = 0.0f;
+    int tinted = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const glm::vec4 a = perfect.at(x, y), b = lit.at(x, y);
+            largest = std::max({largest, std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+            tinted += a.r > 0.5f && a.g < 0.2f; // the red cube's reflection, tint applied
+        }
+    EXPECT_LT(largest, 2.0f / 255.0f);
+    EXPECT_GT(tinted, 20);
+}
+
 } // namespace
 } // namespace speculum::test
