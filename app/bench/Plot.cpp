@@ -30,13 +30,14 @@ struct Range {
     double hi = 1.0;
 };
 
-// The data's range with a margin, so no point sits on the frame; a single value gets a unit-wide range.
-Range paddedRange(double lo, double hi) {
+// The data's range with a margin (a fraction of it on each side), so no point or label sits on the frame;
+// a single value gets a range around it.
+Range paddedRange(double lo, double hi, double margin) {
     if (!(hi > lo)) {
         const double half = std::max(std::abs(lo) * 0.05, 0.5);
         return {lo - half, hi + half};
     }
-    const double pad = (hi - lo) * 0.08;
+    const double pad = (hi - lo) * margin;
     return {lo - pad, hi + pad};
 }
 
@@ -93,10 +94,10 @@ render::Status writePlot(const std::string& path, const PlotSpec& spec, int widt
     if (spec.points.empty())
         xMin = xMax = yMin = yMax = 0.0;
     // Time starts at zero when that costs little room, so bar-like ratios read true.
-    Range xr = paddedRange(xMin, xMax);
+    Range xr = paddedRange(xMin, xMax, 0.12); // labels sit beside points
     if (xMin >= 0.0 && xMin < 0.5 * xMax)
         xr.lo = 0.0;
-    const Range yr = paddedRange(yMin, yMax);
+    const Range yr = paddedRange(yMin, yMax, 0.08);
     auto toScreen = [&](double x, double y) {
         return QPointF(area.left() + (x - xr.lo) / (xr.hi - xr.lo) * area.width(),
                        area.bottom() - (y - yr.lo) / (yr.hi - yr.lo) * area.height());
@@ -236,7 +237,7 @@ render::Status writePlot(const std::string& path, const PlotSpec& spec, int widt
         QRectF chosen(c + offsets[0], QSizeF(w, h));
         for (const QPointF& o : offsets) {
             const QRectF box(c + o, QSizeF(w, h));
-            const bool inside = area.adjusted(-6, -6, 6, 6).contains(box.toRect());
+            const bool inside = QRectF(area).contains(box);
             const bool clear =
                 std::none_of(taken.begin(), taken.end(), [&](const QRectF& t) { return t.intersects(box); });
             if (inside && clear) {
