@@ -286,7 +286,12 @@ int run(const Options& options) {
         return fail(s.error());
     if (render::Status s = writeReportWithGui(staging, run, records); !s)
         return fail(s.error());
-    if (render::Status s = output->commit(); !s)
+    // Plots and references of an earlier run in the same folder would mix two runs: they go too.
+    auto earlierOutput = [](const std::string& name) {
+        const bool png = name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0;
+        return png && (name.rfind("plot-", 0) == 0 || name.rfind("reference", 0) == 0);
+    };
+    if (render::Status s = output->commit(earlierOutput); !s)
         return fail(s.error());
     const fs::path report = output->folder() / "report.md";
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -60,13 +60,23 @@ void StagedOutput::discard() {
     m_done = true;
 }
 
-render::Status StagedOutput::commit() {
+render::Status StagedOutput::commit(const std::function<bool(const std::string&)>& earlierOutput) {
     std::error_code ec;
     std::vector<fs::path> written; // listed first: the loop below adds to the staging folder
     for (const fs::directory_entry& entry : fs::directory_iterator(m_staging, ec))
         written.push_back(entry.path());
     if (ec)
         return render::Error{m_staging.string() + ": " + ec.message()};
+    if (earlierOutput) {
+        std::vector<fs::path> stale;
+        for (const fs::directory_entry& entry : fs::directory_iterator(m_folder, ec)) {
+            const std::string name = entry.path().filename().string();
+            if (entry.is_regular_file() && earlierOutput(name) && !fs::exists(m_staging / name))
+                stale.push_back(entry.path());
+        }
+        for (const fs::path& path : stale)
+            fs::remove(path, ec);
+    }
     for (const fs::path& path : written) {
         const fs::path target = m_folder / path.filename();
         if (fs::is_directory(path) && fs::exists(target)) {

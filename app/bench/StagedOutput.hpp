@@ -3,6 +3,7 @@
 #include "render/Result.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 
 namespace speculum::app::bench {
@@ -27,8 +28,9 @@ public:
     const std::filesystem::path& folder() const { return m_folder; }
 
     // Moves everything written into the folder. Sub-folders (such as errors/) replace the old ones whole,
-    // so no stale file of an earlier run survives among the new ones.
-    render::Status commit();
+    // so no stale file of an earlier run survives among the new ones; files of the folder that this run
+    // did not write and `earlierOutput` claims (a plot of a family this scene lacks) are removed too.
+    render::Status commit(const std::function<bool(const std::string& fileName)>& earlierOutput = {});
 
 private:
     StagedOutput() = default;

@@ -266,10 +266,13 @@ TEST_F(BenchCli, BadInputFailsWithOneLineAndWritesNothing) {
     std::ofstream(folder / "notes.txt") << "keep me";
     EXPECT_NE(bench(broken, folder).status, 0);
     EXPECT_EQ(std::vector<fs::path>(fs::directory_iterator(folder), {}).size(), 1u);
+    // A plot an earlier run left for a family this scene lacks would mix two runs: it goes.
+    std::ofstream(folder / "plot-envmap.png") << "from an earlier run";
     const CliRun ok = bench(good, folder);
     ASSERT_EQ(ok.status, 0) << ok.err;
     EXPECT_EQ(readFile(folder / "notes.txt"), "keep me");
     EXPECT_TRUE(fs::is_regular_file(folder / "results.json"));
+    EXPECT_FALSE(fs::exists(folder / "plot-envmap.png"));
 }
 
 } // namespace
