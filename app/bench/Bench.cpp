@@ -144,7 +144,7 @@ int run(const Options& options) {
     const auto start = Clock::now();
     const int width = options.width > 0 ? options.width : options.quick ? 480 : 1280;
     const int height = options.height > 0 ? options.height : options.quick ? 270 : 720;
-    const Timing timing = options.quick ? Timing{2, 5} : Timing{2, 9};
+    const Timing timing = options.quick ? Timing{2, 7} : Timing{2, 9};
 
     auto project = loadProjectFrame(options.project, 0.0);
     if (!project)

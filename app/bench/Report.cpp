@@ -316,11 +316,10 @@ render::Status writeReport(const std::filesystem::path& folder, const RunInfo& r
     md << "Frame " << run.width << "x" << run.height << " of `" << run.scene << "` on " << run.renderer
        << ". " << (run.quick ? "Quick sweep. " : "") << "Times are medians over " << run.timedFrames
        << " rounds; each round renders every distinct configuration once, after one untimed frame that "
-          "absorbs "
-          "the switch, so load from other processes spreads over all configurations alike. Every frame "
-          "renders "
-          "all of its shadow and environment maps again, so the times are what the settings cost an animated "
-          "scene (a static one reuses them). "
+          "absorbs the switch, so load from other processes spreads over all configurations alike (still, "
+          "compare times within one run, not across runs on a busy machine). Every frame renders all of its "
+          "shadow and environment maps again, so the times are what the settings cost an animated scene (a "
+          "static one reuses them). "
           "GPU time is the sum of the passes' timer queries, CPU time the renderer's own clock for the "
           "frame. "
           "Memory counts the render targets the frame uses (colour and depth buffers, reflection textures, "
