@@ -44,12 +44,17 @@ std::string usageText() {
            "  speculum [PROJECT]                          open the editor\n"
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--json]\n"
-           "  speculum bench PROJECT --out DIR [--quick]\n"
+           "  speculum bench PROJECT --out DIR [--quick] [--size WxH]\n"
            "\n"
            "render writes PNG, JPEG, TIFF or EXR (by the extension of OUT); --size defaults to 1280x720,\n"
            "--ssaa N averages NxN samples per pixel (1..16), --time evaluates animations at T seconds.\n"
            "explain renders a frame and lists the passes that ran and the effects skipped, with reasons;\n"
-           "--frame N explains the Nth of N identical frames, showing what a static scene reuses.\n";
+           "--frame N explains the Nth of N identical frames, showing what a static scene reuses.\n"
+           "bench sweeps the settings the scene uses (map type and resolution, parallax, mirror technique "
+           "and\n"
+           "depth, PCF, tessellation), times each and measures its error against the exact tracer; it "
+           "writes\n"
+           "results.csv, results.json, plots and report.md into DIR. --quick: fewer points at 480x270.\n";
 }
 
 render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
@@ -101,7 +106,7 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
             if (!v)
                 return Error{v.error()};
             o.outDir = *v;
-        } else if (a == "--size" && renderOrExplain) {
+        } else if (a == "--size" && (renderOrExplain || o.command == Command::Bench)) {
             auto v = needValue(a);
             if (!v)
                 return Error{v.error()};
@@ -117,6 +122,7 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
                 return Error{h.error()};
             o.width = *w;
             o.height = *h;
+            o.sizeGiven = true;
         } else if (a == "--ssaa" && o.command == Command::Render) {
             auto v = needValue(a);
             if (!v)

@@ -19,6 +19,7 @@ struct CliOptions {
     std::string outDir;  // bench --out
     int width = 1280;
     int height = 720;
+    bool sizeGiven = false; // --size was on the command line (bench picks its own default otherwise)
     int ssaa = 1;
     double time = 0.0;
     bool reference = false;

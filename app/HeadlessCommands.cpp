@@ -1,14 +1,13 @@
 #include "app/HeadlessCommands.hpp"
 
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
+#include "app/ProjectInput.hpp"
+#include "app/bench/Bench.hpp"
 #include "render/Renderer.hpp"
 #include "render/StillRenderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/image/ImageWriter.hpp"
 #include "render/reference/Tracer.hpp"
 
-#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -30,11 +29,6 @@ void fail(const std::string& message) {
     std::cerr << "speculum: " << message << "\n";
 }
 
-void printWarnings(const std::vector<std::string>& warnings) {
-    for (const std::string& w : warnings)
-        std::cerr << "speculum: warning: " << w << "\n";
-}
-
 // Everything a headless command needs: the scene snapshot and a renderer on an EGL context.
 struct HeadlessFrame {
     std::unique_ptr<render::gl::HeadlessContext> context;
@@ -45,22 +39,10 @@ struct HeadlessFrame {
 
 // Loads the project and evaluates it at options.time; no GL needed.
 render::Result<render::FrameInput> loadFrameInput(const CliOptions& options) {
-    const QString path = QString::fromStdString(options.project);
-    const QFileInfo info(path);
-    if (!info.exists())
-        return render::Error{options.project + ": no such file"};
-    if (!info.isFile())
-        return render::Error{options.project + ": not a file"};
-    document::Scene scene;
-    std::vector<std::string> warnings;
-    if (render::Status opened = document::openProject(scene, path, warnings); !opened)
-        return render::Error{options.project + ": " + opened.error()};
-    printWarnings(warnings);
-    document::MeshLibrary meshes;
-    warnings.clear();
-    render::FrameInput input = document::snapshot(scene, options.time, meshes, warnings);
-    printWarnings(warnings);
-    return input;
+    auto frame = loadProjectFrame(options.project, options.time);
+    if (!frame)
+        return render::Error{frame.error()};
+    return std::move(frame->input);
 }
 
 render::Result<HeadlessFrame> prepare(const CliOptions& options) {
@@ -275,10 +257,16 @@ int runExplain(const CliOptions& options) {
     return 0;
 }
 
-int runBench(const CliOptions&) {
-    fail("bench: the accuracy sweep is not in this version yet (render --reference gives the exact image); "
-         "frame-time benchmarks are in the speculum_benchmarks program");
-    return 1;
+int runBench(const CliOptions& options) {
+    bench::Options b;
+    b.project = options.project;
+    b.outDir = options.outDir;
+    b.quick = options.quick;
+    if (options.sizeGiven) {
+        b.width = options.width;
+        b.height = options.height;
+    }
+    return bench::run(b);
 }
 
 } // namespace speculum::app

@@ -151,7 +151,7 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
         return report;
     const PlanViewport viewport{target.width, target.height, options.jitterPixels};
     FramePlan& plan = report.plan;
-    plan = planFrame(input, s.plannerState, viewport);
+    plan = planFrame(input, options.reuseMaps ? s.plannerState : PlannerState{}, viewport);
 
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
     // face instead of clamping (which would leak light or shadow along the seams).
@@ -358,6 +358,14 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
         }
     }
     plan.passes = std::move(executed);
+
+    report.memory.main = s.linear.bytes();
+    for (int slot = 0; slot <= deepestSlot; ++slot)
+        report.memory.mirrors += s.reflectionTextures[static_cast<std::size_t>(slot)].bytes();
+    for (int lightIndex : plan.shadowedLights)
+        report.memory.shadows += s.shadows.bytes(lightIndex);
+    if (input.reflector)
+        report.memory.envmap = s.reflector.mapBytes(*input.reflector);
     s.meshes.purge();
     s.reflector.purge();
     for (std::string& warning : s.textures.takeWarnings())

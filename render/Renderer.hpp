@@ -4,6 +4,7 @@
 #include "render/Result.hpp"
 #include "render/plan/FramePlan.hpp"
 
+#include <cstddef>
 #include <glm/vec2.hpp>
 #include <memory>
 #include <string>
@@ -23,6 +24,20 @@ struct RenderTarget {
 struct RenderOptions {
     glm::dvec2 jitterPixels{0.0}; // sub-pixel image offset, for supersampling
     bool gpuTimings = true;       // timer queries per pass (waits for the GPU at the end of the frame)
+    // false: plan as if no shadow or environment map existed yet, so every one is rendered this frame.
+    // Benchmarks use it to time what an animated scene costs per frame; the maps are reused as usual
+    // from the next frame on.
+    bool reuseMaps = true;
+};
+
+// GPU memory of the render targets a frame used, from their sizes and internal formats (24-bit depth
+// counts 4 bytes). The caller's own target (the window, or the still's buffer) is not included.
+struct TargetMemory {
+    std::size_t main = 0;    // the linear colour buffer and its depth-stencil buffer
+    std::size_t mirrors = 0; // reflection textures of texture-technique mirrors (mip chains included)
+    std::size_t shadows = 0; // depth maps of the lights the main pass samples
+    std::size_t envmap = 0;  // the reflector's environment map, its depth and its intermediate cube
+    std::size_t total() const { return main + mirrors + shadows + envmap; }
 };
 
 struct FrameReport {
@@ -30,6 +45,7 @@ struct FrameReport {
     double cpuMs = 0.0;                // whole frame on the CPU, planning included
     double gpuMs = -1.0;               // sum of the passes' GPU times, -1 if not measured
     std::vector<std::string> warnings; // e.g. a texture that failed to load
+    TargetMemory memory;
 };
 
 // Draws FrameInput snapshots with OpenGL 3.3 core. Needs a current context for its whole life, from

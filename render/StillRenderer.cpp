@@ -56,6 +56,7 @@ Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, con
             return Error{"render cancelled"};
         RenderOptions options;
         options.jitterPixels = {(k % n + 0.5) / n - 0.5, (k / n + 0.5) / n - 0.5};
+        options.reuseMaps = settings.reuseMaps || k > 0;
         FrameReport report = renderer.render(input, target, options);
         if (k == 0)
             result.firstSample = std::move(report);

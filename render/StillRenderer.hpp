@@ -13,7 +13,8 @@ namespace speculum::render {
 struct StillSettings {
     int width = 1280;
     int height = 720;
-    int ssaa = 1; // N: N×N samples per pixel on an ordered sub-pixel grid
+    int ssaa = 1;          // N: N×N samples per pixel on an ordered sub-pixel grid
+    bool reuseMaps = true; // RenderOptions::reuseMaps for the first sample (later ones always reuse)
 };
 
 // Reports progress in 0..1 with a short stage name; returning false cancels the render.

@@ -1,5 +1,7 @@
 #include "render/envmap/EnvironmentCapture.hpp"
 
+#include "render/gl/Memory.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -183,6 +185,26 @@ Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSettings& set
         capture.m_emptyVao = gl::makeVertexArray();
     }
     return capture;
+}
+
+std::size_t EnvironmentCapture::bytes() const {
+    if (!m_map)
+        return 0;
+    const std::size_t colour = gl::bytesPerTexel(m_settings.colorFormat);
+    const std::size_t depth = gl::bytesPerTexel(GL_DEPTH_COMPONENT24);
+    const MapLayout& l = m_layout;
+    const int levels = m_settings.mipmaps ? mipLevels(l.width, l.height) : 1;
+    // One depth buffer of a face's (or a layer's) size serves every face in turn.
+    std::size_t total =
+        static_cast<std::size_t>(l.components) * gl::mipChainTexels(l.width, l.height, levels) * colour +
+        static_cast<std::size_t>(l.width) * static_cast<std::size_t>(l.height) * depth;
+    if (m_cube) {
+        const int size = m_settings.cubeResolution > 0 ? m_settings.cubeResolution : m_settings.resolution;
+        const int cubeLevels = m_settings.mipmaps ? mipLevels(size, size) : 1;
+        total += 6 * gl::mipChainTexels(size, size, cubeLevels) * colour +
+                 static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * depth;
+    }
+    return total;
 }
 
 void EnvironmentCapture::renderCube(GLuint cube, int size, GLuint depth, const CaptureView& view,

@@ -84,6 +84,10 @@ public:
     // The resampled fill's cube (0 if none).
     GLuint intermediateCube() const { return m_cube.id(); }
 
+    // GPU memory of everything the map owns: the map with its mip chain and depth buffer, and the
+    // resampled fill's intermediate cube with its own.
+    std::size_t bytes() const;
+
 private:
     void renderCube(GLuint cube, int size, GLuint depth, const CaptureView& view,
                     const DrawCubeFace& drawFace);

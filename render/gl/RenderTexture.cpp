@@ -1,5 +1,7 @@
 #include "render/gl/RenderTexture.hpp"
 
+#include "render/gl/Memory.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -36,6 +38,14 @@ void RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mipma
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_color.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                               m_depthStencil.id());
+}
+
+std::size_t RenderTexture::bytes() const {
+    if (!m_framebuffer)
+        return 0;
+    const auto pixels = static_cast<std::size_t>(m_width) * static_cast<std::size_t>(m_height);
+    return mipChainTexels(m_width, m_height, m_levels) * bytesPerTexel(m_format) +
+           pixels * bytesPerTexel(GL_DEPTH24_STENCIL8);
 }
 
 void RenderTexture::generateMipmaps() {

@@ -2,6 +2,8 @@
 
 #include "render/gl/Objects.hpp"
 
+#include <cstddef>
+
 namespace speculum::render::gl {
 
 // A colour texture with a depth-stencil buffer, as one framebuffer: the linear frame buffer every frame is
@@ -17,6 +19,8 @@ public:
     int width() const { return m_width; }
     int height() const { return m_height; }
     int levels() const { return m_levels; }
+    // GPU memory of the colour mip chain and the depth-stencil buffer (0 before ensure()).
+    std::size_t bytes() const;
 
 private:
     int m_width = 0;

@@ -37,6 +37,11 @@ public:
     // Draws the reflector with its map in `view`; false (nothing changed) if there is no map for it.
     bool drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context);
 
+    // GPU memory of the reflector's map if one made with its current settings exists, else 0.
+    std::size_t mapBytes(const Reflector& reflector) const {
+        return hasMap(reflector) ? m_capture->bytes() : 0;
+    }
+
     // The map itself, for tests and tools (empty before the first capture).
     const envmap::EnvironmentCapture* map() const { return m_capture ? &*m_capture : nullptr; }
 

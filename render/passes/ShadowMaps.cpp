@@ -1,5 +1,7 @@
 #include "render/passes/ShadowMaps.hpp"
 
+#include "render/gl/Memory.hpp"
+
 #include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -45,6 +47,14 @@ ShadowMap& ShadowMaps::prepare(int lightIndex, bool cube, int size) {
     setDepthSampling(target, map.pcf);
     glBindTexture(target, 0);
     return map;
+}
+
+std::size_t ShadowMaps::bytes(int lightIndex) const {
+    const ShadowMap* map = find(lightIndex);
+    if (!map || !map->depth)
+        return 0;
+    return (map->cube ? 6u : 1u) * static_cast<std::size_t>(map->size) * static_cast<std::size_t>(map->size) *
+           gl::bytesPerTexel(GL_DEPTH_COMPONENT24);
 }
 
 void ShadowMaps::setPcf(int lightIndex, int pcf) {

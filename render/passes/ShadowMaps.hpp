@@ -29,6 +29,8 @@ public:
     const ShadowMap* find(int lightIndex) const;
     // The light's map settings may change without re-rendering (PCF is a lookup setting).
     void setPcf(int lightIndex, int pcf);
+    // GPU memory of the light's depth map (six faces for a cube), 0 if it has none.
+    std::size_t bytes(int lightIndex) const;
     void clear() { m_maps.clear(); }
 
 private:

@@ -2,3 +2,15 @@
 speculum_add_test(test_app_cli TIER gl USES_CLI
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_cli.cpp
     LIBS Qt6::Core PkgConfig::OIIO)
+# The bench command's sweep planning and analysis, without GL.
+speculum_add_test(test_bench_sweep TIER unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_bench_sweep.cpp
+    LIBS speculum_bench)
+# `speculum bench --quick` on tiny scenes made by the test (the binary renders on EGL: gl tier).
+speculum_add_test(test_bench_cli TIER gl USES_CLI
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_bench_cli.cpp
+    LIBS Qt6::Core PkgConfig::OIIO)
+# The same on the chrome and mirrors demos at the quick size: tens of seconds each, so labelled slow.
+speculum_add_test(test_bench_demos TIER gl USES_CLI LABELS slow
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_bench_demos.cpp
+    LIBS Qt6::Core)
