@@ -164,6 +164,11 @@ int runRender(const CliOptions& options) {
         fail(options.output + ": folder " + outDir.string() + " does not exist");
         return 1;
     }
+    if (render::Status target = render::checkImageTarget(options.output, options.width, options.height);
+        !target) {
+        fail(target.error());
+        return 1;
+    }
     if (options.reference)
         return runReferenceRender(options, start);
     auto frame = prepare(options);

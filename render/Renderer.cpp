@@ -149,15 +149,26 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
     FrameReport report;
     if (s.released || target.width <= 0 || target.height <= 0)
         return report;
-    const PlanViewport viewport{target.width, target.height, options.jitterPixels};
+    // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
+    // untiled frame would, with the same sub-pixel sample positions.
+    const PlanViewport viewport{options.tile ? options.tile->imageWidth : target.width,
+                                options.tile ? options.tile->imageHeight : target.height,
+                                options.jitterPixels};
     FramePlan& plan = report.plan;
     plan = planFrame(input, s.plannerState, viewport);
+    glm::dmat4 projection = cameraProjection(input, viewport);
+    if (options.tile) {
+        const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,
+                                   options.tile->y + target.height};
+        restrictToTile(plan, tile, viewport);
+        projection = math::tileProjection(projection, tile.x0, tile.y0, target.width, target.height,
+                                          viewport.width, viewport.height);
+    }
 
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
     // face instead of clamping (which would leak light or shadow along the seams).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     s.linear.ensure(target.width, target.height, GL_RGBA16F, false);
-    const glm::dmat4 projection = cameraProjection(input, viewport);
     passes::MainPassContext ctx{
         s.meshProgram,          s.meshes,   s.textures, s.shadows, plan.shadowedLights, s.dummyShadow2D.id(),
         s.dummyShadowCube.id(), s.unitPlane};
@@ -246,7 +257,8 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
             const passes::ViewSetup parent = passes::viewSetup(input, plan, view.parent, projection);
             if (!passes::drawMirrorMask(input, view, parent, s.flatProgram, ctx, s.occlusion.id()))
                 hidden[static_cast<std::size_t>(pass.view)] =
-                    "fully occluded: no pixel of it passed the depth test";
+                    options.tile ? "fully occluded in this tile: no pixel of it passed the depth test"
+                                 : "fully occluded: no pixel of it passed the depth test";
             break;
         }
         case PassKind::Mirror: {

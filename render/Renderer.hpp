@@ -6,6 +6,7 @@
 
 #include <glm/vec2.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,9 +21,22 @@ struct RenderTarget {
     bool encodeSrgb = true; // 8-bit targets get sRGB-encoded colour; float targets keep linear values
 };
 
+// Part of a larger image, for stills beyond what one framebuffer can hold: the target holds the pixels
+// from (x, y) (GL window coordinates, y up) of an imageWidth × imageHeight image, as many as it is wide
+// and high (it may reach past the image's edge).
+struct ImageTile {
+    int imageWidth = 0;
+    int imageHeight = 0;
+    int x = 0;
+    int y = 0;
+};
+
 struct RenderOptions {
     glm::dvec2 jitterPixels{0.0}; // sub-pixel image offset, for supersampling
     bool gpuTimings = true;       // timer queries per pass (waits for the GPU at the end of the frame)
+    // Draw only this tile of the image (planned for the whole image, see restrictToTile); none: the
+    // target is the whole image.
+    std::optional<ImageTile> tile;
 };
 
 struct FrameReport {
