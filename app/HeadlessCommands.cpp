@@ -252,8 +252,12 @@ int runExplain(const CliOptions& options) {
         for (const render::SkippedEffect& s : plan.skipped)
             skipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
                                        {"reason", QString::fromStdString(s.reason)}});
+        QJsonArray warnings;
+        for (const std::string& w : still->firstSample.warnings)
+            warnings.append(QString::fromStdString(w));
         QJsonObject root{{"passes", passes},
                          {"skipped", skipped},
+                         {"warnings", warnings},
                          {"size", QString::fromStdString(sizeText(options.width, options.height))},
                          {"time", options.time},
                          {"frame", options.frame},
@@ -276,6 +280,12 @@ int runExplain(const CliOptions& options) {
         std::printf("  (nothing)\n");
     for (const render::SkippedEffect& s : plan.skipped)
         std::printf("  %-14s %s\n", s.target.empty() ? "-" : s.target.c_str(), s.reason.c_str());
+    // What the frame could not do as the scene asks (a map larger than the GPU holds, a missing texture).
+    if (!still->firstSample.warnings.empty()) {
+        std::printf("\nWarnings:\n");
+        for (const std::string& w : still->firstSample.warnings)
+            std::printf("  %s\n", w.c_str());
+    }
     std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", still->firstSample.gpuMs, still->firstSample.cpuMs);
     return 0;
 }

@@ -169,6 +169,26 @@ TEST_F(Cli, ExplainJsonListsShadowAndMainPassesWithReasons) {
     EXPECT_TRUE(doc.object()["skipped"].isArray());
 }
 
+// What a frame could not do as asked (here a texture that is missing; a map larger than the GPU holds
+// is reported the same way) is listed by explain, in text and JSON.
+TEST_F(Cli, ExplainListsTheFramesWarnings) {
+    const fs::path project = m_dir / "untextured.speculum.json";
+    std::ofstream(project) << R"({"format": "speculum-scene", "version": 1, "nodes": [{"name": "Box",
+        "mesh": {"builtin": "box"}, "material": {"texture": "missing-marble.png"}}]})";
+    const CliRun text = speculum("explain " + project.string() + " --size 64x36");
+    ASSERT_EQ(text.status, 0) << text.err;
+    const std::size_t section = text.out.find("Warnings:");
+    ASSERT_NE(section, std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("missing-marble.png", section), std::string::npos) << text.out;
+
+    const CliRun json = speculum("explain " + project.string() + " --size 64x36 --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    const QJsonArray warnings =
+        QJsonDocument::fromJson(QByteArray::fromStdString(json.out)).object()["warnings"].toArray();
+    ASSERT_EQ(warnings.size(), 1) << json.out;
+    EXPECT_TRUE(warnings[0].toString().contains("missing-marble.png")) << json.out;
+}
+
 TEST_F(Cli, ExplainTextIsReadable) {
     const CliRun run = speculum("explain " + demo() + " --size 160x90");
     ASSERT_EQ(run.status, 0) << run.err;

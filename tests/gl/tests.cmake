@@ -7,5 +7,5 @@ speculum_add_test(test_gl_reflector TIER gl
     LIBS speculum_render speculum_document)
 # Stills in tiles (compared with untiled stills) and the GPU's size limits.
 speculum_add_test(test_gl_stills TIER gl
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_tiled_stills.cpp
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_tiled_stills.cpp ${CMAKE_CURRENT_LIST_DIR}/test_gpu_limits.cpp
     LIBS speculum_render speculum_document)
