@@ -84,8 +84,9 @@ TEST_F(GlTest, StillInSmallTilesMatchesTheUntiledStill) {
         // by the first still, reused after).
         EXPECT_TRUE(ran(whole->firstSample, PassKind::Mirror));
         EXPECT_GE(whole->firstSample.plan.views.size(), 3u);
-        if (ssaa == 1)
+        if (ssaa == 1) {
             EXPECT_TRUE(ran(whole->firstSample, PassKind::Envmap));
+        }
 
         // Same sample positions, same plan, same depth: the only difference left is float rounding of
         // vertex positions in the tile's clip space. It can move a triangle edge across a sample that lies
