@@ -222,8 +222,9 @@ int runExplain(const CliOptions& options) {
         fail(frame.error());
         return 1;
     }
-    // Explain what a frame at this size really does: render it offscreen and report its timings.
-    render::StillSettings settings{options.width, options.height, 1};
+    // Explain what a frame at this size really does: render it offscreen and report its timings. In one
+    // piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
+    render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
     // Frames before the one explained warm the renderer's caches exactly as a live viewport would.
     for (int warmUp = 1; warmUp < options.frame; ++warmUp)
         if (auto earlier = render::renderStill(*frame->renderer, frame->input, settings); !earlier) {
@@ -261,6 +262,7 @@ int runExplain(const CliOptions& options) {
                          {"size", QString::fromStdString(sizeText(options.width, options.height))},
                          {"time", options.time},
                          {"frame", options.frame},
+                         {"tiles", still->tiles},
                          {"frameGpuMs", still->firstSample.gpuMs},
                          {"frameCpuMs", still->firstSample.cpuMs},
                          {"renderer", QString::fromStdString(frame->glDescription)}};
@@ -269,6 +271,9 @@ int runExplain(const CliOptions& options) {
     }
     std::printf("Frame %s at t = %g s on %s\n\n", sizeText(options.width, options.height).c_str(),
                 options.time, frame->glDescription.c_str());
+    if (still->tiles > 1)
+        std::printf("Larger than this GPU renders in one piece: the passes of the first of %d tiles.\n\n",
+                    still->tiles);
     std::printf("Passes (in order):\n");
     for (const render::PlannedPass& p : plan.passes) {
         const std::string kind(render::toString(p.kind));
