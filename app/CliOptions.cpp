@@ -1,7 +1,10 @@
 #include "app/CliOptions.hpp"
 
+#include "render/StillRenderer.hpp"
+
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <regex>
 
 namespace speculum::app {
@@ -13,6 +16,9 @@ using render::Error;
 render::Result<int> parseInt(const std::string& option, const std::string& text, int min, int max) {
     int value = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec == std::errc::result_out_of_range && end == text.data() + text.size())
+        return Error{option + ": " + text + " is out of range (" + std::to_string(min) + ".." +
+                     std::to_string(max) + ")"};
     if (ec != std::errc() || end != text.data() + text.size())
         return Error{option + ": expected a whole number, got \"" + text + "\""};
     if (value < min || value > max)
@@ -34,8 +40,6 @@ render::Result<double> parseTime(const std::string& text) {
         return Error{"--time: expected a number of seconds, got \"" + text + "\""};
     }
 }
-
-constexpr int kMaxImageSide = 16384;
 
 } // namespace
 
@@ -114,12 +118,17 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
             std::smatch m;
             if (!std::regex_match(*v, m, size))
                 return Error{"--size: expected WIDTHxHEIGHT such as 1280x720, got \"" + *v + "\""};
-            auto w = parseInt("--size width", m[1].str(), 1, kMaxImageSide);
+            // No limit per side: stills larger than the GPU's limits render in tiles. Only sizes whose
+            // pixels would not fit in memory are refused, here, before any work.
+            constexpr int kMaxSide = std::numeric_limits<int>::max();
+            auto w = parseInt("--size width", m[1].str(), 1, kMaxSide);
             if (!w)
                 return Error{w.error()};
-            auto h = parseInt("--size height", m[2].str(), 1, kMaxImageSide);
+            auto h = parseInt("--size height", m[2].str(), 1, kMaxSide);
             if (!h)
                 return Error{h.error()};
+            if (render::Status size = render::checkStillSize(*w, *h); !size)
+                return Error{"--size: " + size.error()};
             o.width = *w;
             o.height = *h;
             o.sizeGiven = true;

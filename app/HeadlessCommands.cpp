@@ -146,6 +146,11 @@ int runRender(const CliOptions& options) {
         fail(options.output + ": folder " + outDir.string() + " does not exist");
         return 1;
     }
+    if (render::Status target = render::checkImageTarget(options.output, options.width, options.height);
+        !target) {
+        fail(target.error());
+        return 1;
+    }
     if (options.reference)
         return runReferenceRender(options, start);
     auto frame = prepare(options);
@@ -199,8 +204,9 @@ int runExplain(const CliOptions& options) {
         fail(frame.error());
         return 1;
     }
-    // Explain what a frame at this size really does: render it offscreen and report its timings.
-    render::StillSettings settings{options.width, options.height, 1};
+    // Explain what a frame at this size really does: render it offscreen and report its timings. In one
+    // piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
+    render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
     // Frames before the one explained warm the renderer's caches exactly as a live viewport would.
     for (int warmUp = 1; warmUp < options.frame; ++warmUp)
         if (auto earlier = render::renderStill(*frame->renderer, frame->input, settings); !earlier) {
@@ -229,11 +235,16 @@ int runExplain(const CliOptions& options) {
         for (const render::SkippedEffect& s : plan.skipped)
             skipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
                                        {"reason", QString::fromStdString(s.reason)}});
+        QJsonArray warnings;
+        for (const std::string& w : still->firstSample.warnings)
+            warnings.append(QString::fromStdString(w));
         QJsonObject root{{"passes", passes},
                          {"skipped", skipped},
+                         {"warnings", warnings},
                          {"size", QString::fromStdString(sizeText(options.width, options.height))},
                          {"time", options.time},
                          {"frame", options.frame},
+                         {"tiles", still->tiles},
                          {"frameGpuMs", still->firstSample.gpuMs},
                          {"frameCpuMs", still->firstSample.cpuMs},
                          {"renderer", QString::fromStdString(frame->glDescription)}};
@@ -242,6 +253,9 @@ int runExplain(const CliOptions& options) {
     }
     std::printf("Frame %s at t = %g s on %s\n\n", sizeText(options.width, options.height).c_str(),
                 options.time, frame->glDescription.c_str());
+    if (still->tiles > 1)
+        std::printf("Larger than this GPU renders in one piece: the passes of the first of %d tiles.\n\n",
+                    still->tiles);
     std::printf("Passes (in order):\n");
     for (const render::PlannedPass& p : plan.passes) {
         const std::string kind(render::toString(p.kind));
@@ -253,6 +267,12 @@ int runExplain(const CliOptions& options) {
         std::printf("  (nothing)\n");
     for (const render::SkippedEffect& s : plan.skipped)
         std::printf("  %-14s %s\n", s.target.empty() ? "-" : s.target.c_str(), s.reason.c_str());
+    // What the frame could not do as the scene asks (a map larger than the GPU holds, a missing texture).
+    if (!still->firstSample.warnings.empty()) {
+        std::printf("\nWarnings:\n");
+        for (const std::string& w : still->firstSample.warnings)
+            std::printf("  %s\n", w.c_str());
+    }
     std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", still->firstSample.gpuMs, still->firstSample.cpuMs);
     return 0;
 }

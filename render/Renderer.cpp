@@ -69,6 +69,7 @@ struct Renderer::State {
     gl::Texture dummyShadowCube;
     gl::GpuTimer timer;
     PlannerState plannerState;
+    GpuLimits limits;
     MeshHandle unitPlane;
     bool released = false;
 };
@@ -106,6 +107,7 @@ Result<std::unique_ptr<Renderer>> Renderer::create() {
     s.dummyShadow2D = makeDummyDepth(GL_TEXTURE_2D);
     s.dummyShadowCube = makeDummyDepth(GL_TEXTURE_CUBE_MAP);
     s.unitPlane = std::make_shared<const MeshData>(makePlane(1));
+    s.limits = queryGpuLimits();
     if (Status reflector = s.reflector.init(); !reflector)
         return Error{reflector.error()};
     return renderer;
@@ -115,6 +117,18 @@ void Renderer::releaseGlResources() {
     // Destroying the state deletes every GL object while the caller's context is current.
     m_state = std::make_unique<State>();
     m_state->released = true;
+}
+
+const GpuLimits& Renderer::gpuLimits() const {
+    return m_state->limits;
+}
+
+void Renderer::lowerGpuLimits(const GpuLimits& limits) {
+    GpuLimits& l = m_state->limits;
+    l.maxTextureSize = std::min(l.maxTextureSize, limits.maxTextureSize);
+    l.maxCubeMapSize = std::min(l.maxCubeMapSize, limits.maxCubeMapSize);
+    l.maxRenderbufferSize = std::min(l.maxRenderbufferSize, limits.maxRenderbufferSize);
+    l.maxViewportSize = std::min(l.maxViewportSize, limits.maxViewportSize);
 }
 
 namespace {
@@ -142,22 +156,37 @@ void resetState() {
 
 } // namespace
 
-FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target,
+FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& target,
                              const RenderOptions& options) {
     const auto frameStart = Clock::now();
     State& s = *m_state;
     FrameReport report;
     if (s.released || target.width <= 0 || target.height <= 0)
         return report;
-    const PlanViewport viewport{target.width, target.height, options.jitterPixels};
+    // Map sizes beyond the GPU's limits would fail to allocate: the frame is planned and drawn with sizes
+    // it can hold, and says so.
+    const std::optional<FrameInput> fitted = fitToGpuLimits(requested, s.limits, report.warnings);
+    const FrameInput& input = fitted ? *fitted : requested;
+    // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
+    // untiled frame would, with the same sub-pixel sample positions.
+    const PlanViewport viewport{options.tile ? options.tile->imageWidth : target.width,
+                                options.tile ? options.tile->imageHeight : target.height,
+                                options.jitterPixels};
     FramePlan& plan = report.plan;
     plan = planFrame(input, options.reuseMaps ? s.plannerState : PlannerState{}, viewport);
+    glm::dmat4 projection = cameraProjection(input, viewport);
+    if (options.tile) {
+        const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,
+                                   options.tile->y + target.height};
+        restrictToTile(plan, tile, viewport);
+        projection = math::tileProjection(projection, tile.x0, tile.y0, target.width, target.height,
+                                          viewport.width, viewport.height);
+    }
 
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
     // face instead of clamping (which would leak light or shadow along the seams).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     s.linear.ensure(target.width, target.height, GL_RGBA16F, false);
-    const glm::dmat4 projection = cameraProjection(input, viewport);
     passes::MainPassContext ctx{
         s.meshProgram,          s.meshes,   s.textures, s.shadows, plan.shadowedLights, s.dummyShadow2D.id(),
         s.dummyShadowCube.id(), s.unitPlane};
@@ -249,7 +278,8 @@ FrameReport Renderer::render(const FrameInput& input, const RenderTarget& target
                 passes::viewSetup(input, plan, view.parent, projection, {target.width, target.height});
             if (!passes::drawMirrorMask(input, view, parent, s.flatProgram, ctx, s.occlusion.id()))
                 hidden[static_cast<std::size_t>(pass.view)] =
-                    "fully occluded: no pixel of it passed the depth test";
+                    options.tile ? "fully occluded in this tile: no pixel of it passed the depth test"
+                                 : "fully occluded: no pixel of it passed the depth test";
             break;
         }
         case PassKind::Mirror: {

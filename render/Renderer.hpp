@@ -1,12 +1,14 @@
 #pragma once
 
 #include "render/FrameInput.hpp"
+#include "render/GpuLimits.hpp"
 #include "render/Result.hpp"
 #include "render/plan/FramePlan.hpp"
 
 #include <cstddef>
 #include <glm/vec2.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,16 @@ struct RenderTarget {
     bool encodeSrgb = true; // 8-bit targets get sRGB-encoded colour; float targets keep linear values
 };
 
+// Part of a larger image, for stills beyond what one framebuffer can hold: the target holds the pixels
+// from (x, y) (GL window coordinates, y up) of an imageWidth × imageHeight image, as many as it is wide
+// and high (it may reach past the image's edge).
+struct ImageTile {
+    int imageWidth = 0;
+    int imageHeight = 0;
+    int x = 0;
+    int y = 0;
+};
+
 struct RenderOptions {
     glm::dvec2 jitterPixels{0.0}; // sub-pixel image offset, for supersampling
     bool gpuTimings = true;       // timer queries per pass (waits for the GPU at the end of the frame)
@@ -28,6 +40,9 @@ struct RenderOptions {
     // Benchmarks use it to time what an animated scene costs per frame; the maps are reused as usual
     // from the next frame on.
     bool reuseMaps = true;
+    // Draw only this tile of the image (planned for the whole image, see restrictToTile); none: the
+    // target is the whole image.
+    std::optional<ImageTile> tile;
 };
 
 // GPU memory of the render targets a frame used, from their sizes and internal formats (24-bit depth
@@ -62,6 +77,12 @@ public:
 
     // Frees every GL object now, while the context is still current. The renderer is unusable after.
     void releaseGlResources();
+
+    // What the context can hold (queried by create()); frames asking for more are fitted to it, with a
+    // warning (fitToGpuLimits). Tests lower the limits to see that happen without allocating gigabytes;
+    // each limit only ever goes down.
+    const GpuLimits& gpuLimits() const;
+    void lowerGpuLimits(const GpuLimits& limits);
 
 private:
     Renderer();

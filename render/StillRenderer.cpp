@@ -4,8 +4,45 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <new>
 
 namespace speculum::render {
+
+namespace {
+
+std::string sizeText(int width, int height) {
+    return std::to_string(width) + "x" + std::to_string(height);
+}
+
+// The tiles of a still: a grid of equal tiles from the image's bottom-left corner (GL window
+// coordinates), so every tile renders into the same buffers; the top row and the right column may reach
+// past the image's edge, by a few pixels. Tile sides are even: the GPU shades pixels in 2×2 quads aligned
+// to the target's origin and takes texture-LOD derivatives within them, so a tile starting at an odd
+// pixel would group pixels differently from the untiled image and sample textures differently.
+struct TileGrid {
+    int columns = 1, rows = 1;
+    int width = 0, height = 0; // of each tile
+    int count() const { return columns * rows; }
+};
+
+TileGrid tileGrid(int width, int height, int tileSize) {
+    TileGrid grid;
+    if (width <= tileSize && height <= tileSize) { // one tile: exactly the image
+        grid.width = width;
+        grid.height = height;
+        return grid;
+    }
+    const int side = std::max(2, tileSize & ~1);
+    grid.columns = (width + side - 1) / side;
+    grid.rows = (height + side - 1) / side;
+    auto evenShare = [](int size, int parts) { return ((size + parts - 1) / parts + 1) & ~1; };
+    grid.width = std::min(side, evenShare(width, grid.columns));
+    grid.height = std::min(side, evenShare(height, grid.rows));
+    return grid;
+}
+
+} // namespace
 
 int maxStillSize() {
     GLint renderbuffer = 0, texture = 0, viewport[2] = {0, 0};
@@ -15,24 +52,51 @@ int maxStillSize() {
     return std::min({renderbuffer, texture, viewport[0], viewport[1]});
 }
 
+Status checkStillSize(int width, int height) {
+    if (width <= 0 || height <= 0)
+        return Error{"image size must be positive, got " + sizeText(width, height)};
+    const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * 4 * sizeof(float);
+    if (bytes > kMaxStillBytes) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "image size %s is too large: its pixels would take %.0f GiB (at most %llu GiB)",
+                      sizeText(width, height).c_str(), double(bytes) / double(1ull << 30),
+                      static_cast<unsigned long long>(kMaxStillBytes >> 30));
+        return Error{text};
+    }
+    return Done{};
+}
+
 Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, const StillSettings& settings,
                                 const ProgressCallback& progress) {
     const auto start = std::chrono::steady_clock::now();
-    if (settings.width <= 0 || settings.height <= 0)
-        return Error{"image size must be positive, got " + std::to_string(settings.width) + "x" +
-                     std::to_string(settings.height)};
-    const int limit = maxStillSize();
-    if (settings.width > limit || settings.height > limit)
-        return Error{"image size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                     " exceeds this GPU's limit of " + std::to_string(limit) + " pixels per side"};
+    if (Status size = checkStillSize(settings.width, settings.height); !size)
+        return Error{size.error()};
     const int n = std::clamp(settings.ssaa, 1, 16);
+    const int limit = maxStillSize();
+    const int tileSize = std::min(settings.tileSize > 0 ? settings.tileSize : kDefaultTileSize, limit);
+    if (tileSize < 1)
+        return Error{"this OpenGL context cannot render any image (its size limit is " +
+                     std::to_string(limit) + ")"};
+    const TileGrid grid = tileGrid(settings.width, settings.height, tileSize);
+    const bool tiled = grid.count() > 1;
+
+    StillResult result;
+    result.samples = n * n;
+    result.tiles = grid.count();
+    result.image.width = settings.width;
+    result.image.height = settings.height;
+    try {
+        result.image.rgba.resize(std::size_t(settings.width) * std::size_t(settings.height) * 4);
+    } catch (const std::bad_alloc&) {
+        return Error{"not enough memory for a " + sizeText(settings.width, settings.height) + " still"};
+    }
 
     // A float target keeps the samples linear and unclamped until they are averaged.
     gl::FramebufferBinding keepBinding;
     gl::Texture color = gl::makeTexture();
     glBindTexture(GL_TEXTURE_2D, color.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, settings.width, settings.height, 0, GL_RGBA, GL_FLOAT,
-                 nullptr);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, grid.width, grid.height, 0, GL_RGBA, GL_FLOAT, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -40,46 +104,62 @@ Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, con
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        return Error{"cannot create a " + std::to_string(settings.width) + "x" +
-                     std::to_string(settings.height) + " float render target on this GPU"};
+        return Error{"cannot create a " + sizeText(grid.width, grid.height) +
+                     " float render target on this GPU"};
 
-    const std::size_t pixelCount = static_cast<std::size_t>(settings.width) * settings.height;
-    std::vector<float> sample(pixelCount * 4);
-    std::vector<double> sum(n > 1 ? pixelCount * 4 : 0, 0.0);
-    StillResult result;
-    result.samples = n * n;
-    const RenderTarget target{framebuffer.id(), settings.width, settings.height, false};
+    const std::size_t tilePixels = std::size_t(grid.width) * std::size_t(grid.height);
+    std::vector<float> sample(tilePixels * 4);
+    std::vector<double> sum(n > 1 ? tilePixels * 4 : 0);
+    const RenderTarget target{framebuffer.id(), grid.width, grid.height, false};
+    const int steps = grid.count() * n * n;
 
-    for (int k = 0; k < n * n; ++k) {
-        if (progress &&
-            !progress(double(k) / (n * n), "sample " + std::to_string(k + 1) + "/" + std::to_string(n * n)))
-            return Error{"render cancelled"};
-        RenderOptions options;
-        options.jitterPixels = {(k % n + 0.5) / n - 0.5, (k / n + 0.5) / n - 0.5};
-        options.reuseMaps = settings.reuseMaps || k > 0;
-        FrameReport report = renderer.render(input, target, options);
-        if (k == 0)
-            result.firstSample = std::move(report);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glPixelStorei(GL_PACK_ALIGNMENT, 4);
-        glReadPixels(0, 0, settings.width, settings.height, GL_RGBA, GL_FLOAT, sample.data());
+    for (int t = 0; t < grid.count(); ++t) {
+        // Tiles in reading order: the top row first (GL rows count from the bottom).
+        const int x0 = (t % grid.columns) * grid.width;
+        const int y0 = (grid.rows - 1 - t / grid.columns) * grid.height;
+        std::fill(sum.begin(), sum.end(), 0.0);
+        for (int k = 0; k < n * n; ++k) {
+            const int step = t * n * n + k;
+            std::string stage = "sample " + std::to_string(k + 1) + "/" + std::to_string(n * n);
+            if (tiled)
+                stage = "tile " + std::to_string(t + 1) + "/" + std::to_string(grid.count()) + ", " + stage;
+            if (progress && !progress(double(step) / steps, stage))
+                return Error{"render cancelled"};
+            RenderOptions options;
+            options.jitterPixels = {(k % n + 0.5) / n - 0.5, (k / n + 0.5) / n - 0.5};
+            if (tiled)
+                options.tile = ImageTile{settings.width, settings.height, x0, y0};
+            options.reuseMaps = settings.reuseMaps || step > 0;
+            FrameReport report = renderer.render(input, target, options);
+            if (step == 0)
+                result.firstSample = std::move(report);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
+            glReadBuffer(GL_COLOR_ATTACHMENT0);
+            glPixelStorei(GL_PACK_ALIGNMENT, 4);
+            glReadPixels(0, 0, grid.width, grid.height, GL_RGBA, GL_FLOAT, sample.data());
+            if (n > 1)
+                for (std::size_t i = 0; i < sample.size(); ++i)
+                    sum[i] += sample[i];
+        }
         if (n > 1)
             for (std::size_t i = 0; i < sample.size(); ++i)
-                sum[i] += sample[i];
-    }
-    if (n > 1)
-        for (std::size_t i = 0; i < sample.size(); ++i)
-            sample[i] = static_cast<float>(sum[i] / (n * n));
+                sample[i] = static_cast<float>(sum[i] / (n * n));
 
-    // GL rows run bottom to top; images run top to bottom.
-    result.image.width = settings.width;
-    result.image.height = settings.height;
-    result.image.rgba.resize(sample.size());
-    const std::size_t row = static_cast<std::size_t>(settings.width) * 4;
-    for (int y = 0; y < settings.height; ++y)
-        std::copy_n(sample.begin() + static_cast<std::ptrdiff_t>((settings.height - 1 - y) * row), row,
-                    result.image.rgba.begin() + static_cast<std::ptrdiff_t>(y * row));
+        // Into the image: GL rows run bottom to top, image rows top to bottom; the parts of the tile past
+        // the image's edge are dropped.
+        const int columns = std::min(grid.width, settings.width - x0);
+        const std::size_t tileRow = std::size_t(grid.width) * 4;
+        for (int row = 0; row < grid.height; ++row) {
+            const int y = y0 + row; // GL row in the image
+            if (y >= settings.height)
+                break;
+            const std::size_t from = std::size_t(row) * tileRow;
+            const std::size_t to =
+                (std::size_t(settings.height - 1 - y) * std::size_t(settings.width) + std::size_t(x0)) * 4;
+            std::copy_n(sample.begin() + std::ptrdiff_t(from), std::size_t(columns) * 4,
+                        result.image.rgba.begin() + std::ptrdiff_t(to));
+        }
+    }
     if (progress)
         progress(1.0, "done");
     result.totalMs =

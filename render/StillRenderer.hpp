@@ -5,15 +5,26 @@
 #include "render/Result.hpp"
 #include "render/image/Image.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
 namespace speculum::render {
 
+// Stills larger than this (either side) render in tiles of at most this size, so the GPU memory a still
+// takes stays bounded whatever its size.
+inline constexpr int kDefaultTileSize = 2048;
+// The largest still: its linear RGBA float pixels (16 bytes each) must fit in this many bytes. Larger
+// sizes are refused before anything is allocated.
+inline constexpr std::uint64_t kMaxStillBytes = std::uint64_t(4) << 30;
+
 struct StillSettings {
     int width = 1280;
     int height = 720;
-    int ssaa = 1;          // N: N×N samples per pixel on an ordered sub-pixel grid
+    int ssaa = 1; // N: N×N samples per pixel on an ordered sub-pixel grid
+    // Largest tile side in pixels; 0: kDefaultTileSize. Never more than maxStillSize(). Tests set small
+    // tiles to compare tiled and untiled stills.
+    int tileSize = 0;
     bool reuseMaps = true; // RenderOptions::reuseMaps for the first sample (later ones always reuse)
 };
 
@@ -21,18 +32,27 @@ struct StillSettings {
 using ProgressCallback = std::function<bool(double fraction, const std::string& stage)>;
 
 struct StillResult {
-    Image image;             // linear RGBA, row 0 at the top
-    FrameReport firstSample; // the plan and timings of the first sample (the one that renders shadows)
+    Image image; // linear RGBA, row 0 at the top
+    // The plan and timings of the first sample of the first tile (the one that renders shadows and the
+    // environment map). A tile's plan holds only the passes that draw in that tile.
+    FrameReport firstSample;
     double totalMs = 0.0;
     int samples = 1;
+    int tiles = 1;
 };
 
 // Largest still the current context can render in one piece.
 int maxStillSize();
 
+// Whether a still of this size can be rendered at all: positive, and its pixels within kMaxStillBytes.
+// The message names the size. Needs no GL; the CLI and the export dialog check before any work.
+Status checkStillSize(int width, int height);
+
 // Renders a still offscreen with the given renderer (the CLI's and the editor's export share this),
 // supersampling by averaging N×N frames each shifted by a sub-pixel offset: the same result as
-// rendering N times larger and box-filtering, without the N²-times larger buffers.
+// rendering N times larger and box-filtering, without the N²-times larger buffers. Stills larger than a
+// tile render tile by tile, each tile a window of the whole image's view (see RenderOptions::tile), so
+// the pixels are those of an untiled render.
 Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, const StillSettings& settings,
                                 const ProgressCallback& progress = {});
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editor/document/ProjectVersion.hpp"
 #include "editor/document/Scene.hpp"
 #include "render/Result.hpp"
 
@@ -11,7 +12,8 @@
 
 namespace speculum::document {
 
-// Project files (*.speculum.json), format "speculum-scene" version 1 as DESIGN.md fixes it.
+// Project files (*.speculum.json), format "speculum-scene" version 1 as DESIGN.md fixes it (the version
+// check and the place for upgrading older versions: ProjectVersion.hpp).
 //
 // Reading validates everything; an error names the JSON path ("nodes[2].mirror.size: expected 2 numbers")
 // or, for broken JSON, the line and column. Unknown fields are no error: each gives a warning
@@ -23,8 +25,6 @@ namespace speculum::document {
 // integers without ".0", unknown fields after the known ones in alphabetical order. Every field of every
 // present component is written, so a file never depends on defaults. Saving a loaded file twice gives
 // identical bytes.
-
-inline constexpr int kProjectFormatVersion = 1;
 
 // Parses file contents. baseDir resolves relative paths. Warnings are appended only on success.
 render::Result<SceneData> parseProject(const QByteArray& json, const QDir& baseDir,

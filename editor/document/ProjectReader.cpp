@@ -202,28 +202,10 @@ public:
     }
 
 private:
+    // Checked (and the file upgraded to the current version) before the reader runs, by parseProject.
     void readHeader(ObjectReader& o) {
-        const QJsonValue format = o.get("format");
-        if (format.isUndefined()) {
-            fail("format", "missing (this is not a speculum scene file)");
-        }
-        if (format.toString() != QLatin1String("speculum-scene")) {
-            const std::string got =
-                format.isString() ? ", got \"" + format.toString().toStdString() + "\"" : "";
-            fail("format", "expected \"speculum-scene\"" + got + " (this is not a speculum scene file)");
-        }
-        const QJsonValue version = o.get("version");
-        if (version.isUndefined()) {
-            fail("version", "missing");
-        }
-        const int v = readInt(version, "version");
-        if (v > kProjectFormatVersion) {
-            fail("version", "version " + std::to_string(v) + " is newer than this speculum (reads up to " +
-                                std::to_string(kProjectFormatVersion) + ")");
-        }
-        if (v < 1) {
-            fail("version", "must be at least 1, got " + std::to_string(v));
-        }
+        o.get("format");
+        o.get("version");
     }
 
     SceneSettings readSettings(const QJsonValue& v, const std::string& path) {
@@ -574,10 +556,16 @@ render::Result<SceneData> parseProject(const QByteArray& json, const QDir& baseD
     if (!document.isObject()) {
         return render::Error{"expected a JSON object at the top level"};
     }
+    QJsonObject root = document.object();
+    const render::Result<int> version = readProjectHeader(root);
+    if (!version) {
+        return render::Error{version.error()};
+    }
+    upgradeToCurrentVersion(root, *version);
     std::vector<std::string> newWarnings;
     try {
         ProjectReader reader(baseDir, newWarnings);
-        SceneData scene = reader.readScene(document.object());
+        SceneData scene = reader.readScene(root);
         warnings.insert(warnings.end(), newWarnings.begin(), newWarnings.end());
         return scene;
     } catch (const ParseFailure& failure) {

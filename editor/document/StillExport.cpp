@@ -19,6 +19,9 @@ render::Status validateStillExport(const StillExportSettings& settings, const QS
     if (settings.width < 1 || settings.height < 1) {
         return render::Error{"the image size must be at least 1×1"};
     }
+    if (auto size = render::checkStillSize(settings.width, settings.height); !size) {
+        return size;
+    }
     if (settings.ssaa < 1 || settings.ssaa > 16) {
         return render::Error{"supersampling must be in 1..16, got " + std::to_string(settings.ssaa)};
     }
@@ -30,7 +33,7 @@ render::Status validateStillExport(const StillExportSettings& settings, const QS
     if (!info.absoluteDir().exists()) {
         return render::Error{path + ": folder " + info.absolutePath().toStdString() + " does not exist"};
     }
-    return render::Done{};
+    return render::checkImageTarget(path, settings.width, settings.height);
 }
 
 render::ImageMetadata stillMetadata(const QString& projectPath, const StillExportSettings& settings,

@@ -63,7 +63,9 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
     m_width = new QSpinBox(this);
     m_height = new QSpinBox(this);
     for (QSpinBox* s : {m_width, m_height}) {
-        s->setRange(1, 16384);
+        // Larger than the GPU allows in one piece: big stills render in tiles; validateStillExport refuses
+        // sizes whose pixels would not fit in memory.
+        s->setRange(1, 65536);
         s->setSuffix(tr(" px"));
     }
     m_width->setObjectName(QStringLiteral("stillWidth"));

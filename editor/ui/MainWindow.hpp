@@ -89,7 +89,8 @@ public:
     // Crash recovery. The store defaults to RecoveryStore::forThisProcess(); tests use their own folder.
     void setRecoveryStore(const document::RecoveryStore& store);
     const document::RecoveryStore& recoveryStore() const { return *m_recovery; }
-    // Writes the recovery file now if there are unsaved changes (the timer does it every 30 s).
+    // Writes the recovery file now if there are unsaved changes (the timer does it every 30 s, or every
+    // SPECULUM_AUTOSAVE_SECONDS).
     render::Status autosaveNow();
     // Loads an orphaned recovery file as the open document, marked modified and titled as its project.
     render::Status restoreRecovery(const document::RecoveryStore::Recovered& recovered);

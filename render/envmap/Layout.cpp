@@ -8,7 +8,8 @@ namespace speculum::render::envmap {
 int defaultGuard(int resolution) {
     // 4 texels at n = 128, 16 at n = 512: the band survives the first log2(g) mip levels, about as far
     // as a reflector's lookups go before the map is too blurred for a seam to show.
-    return std::max(2, resolution / 32);
+    // Never so wide that the bands (4 of them across a map) leave nothing: at n = 8 one texel.
+    return std::min(std::max(2, resolution / 32), (resolution - 1) / 4);
 }
 
 MapLayout makeLayout(MapType type, int resolution, int guard) {

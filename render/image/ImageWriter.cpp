@@ -110,8 +110,9 @@ private:
     fs::path m_path;
 };
 
-// Checks everything that can be known before any byte is written, so a bad name fails fast.
-Status checkTarget(const std::string& path, int width, int height) {
+} // namespace
+
+Status checkImageTarget(const std::string& path, int width, int height) {
     if (!formatFor(path)) {
         const std::string ext = fs::path(path).extension().string();
         const std::string what =
@@ -147,6 +148,8 @@ Status checkTarget(const std::string& path, int width, int height) {
     }
     return Done{};
 }
+
+namespace {
 
 // The single place that talks to OIIO for output. `pixels` are interleaved, `channels` per pixel, of
 // type `memoryType`; OIIO converts them to the file type the format calls for (uint8 or half).
@@ -238,7 +241,7 @@ std::string supportedImageFormats() {
 }
 
 Status writeImage(const std::string& path, const Image& linear, const ImageMetadata& metadata) {
-    if (Status ok = checkTarget(path, linear.width, linear.height); !ok) {
+    if (Status ok = checkImageTarget(path, linear.width, linear.height); !ok) {
         return ok;
     }
     assert(linear.rgba.size() == static_cast<std::size_t>(linear.width) * linear.height * 4 &&
@@ -273,7 +276,7 @@ Status writeImage(const std::string& path, const Image& linear, const ImageMetad
 }
 
 Status writeImage(const std::string& path, const TextureImage& srgb, const ImageMetadata& metadata) {
-    if (Status ok = checkTarget(path, srgb.width, srgb.height); !ok) {
+    if (Status ok = checkImageTarget(path, srgb.width, srgb.height); !ok) {
         return ok;
     }
     assert(srgb.rgba8.size() == static_cast<std::size_t>(srgb.width) * srgb.height * 4 &&

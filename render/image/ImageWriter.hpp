@@ -22,6 +22,11 @@ Status writeImage(const std::string& path, const Image& linear, const ImageMetad
 // gets the decoded linear values. Same atomicity and errors as above.
 Status writeImage(const std::string& path, const TextureImage& srgb, const ImageMetadata& metadata = {});
 
+// Everything writeImage() can check before there are pixels: the format, whether it can hold an image
+// of this size (JPEG: at most 65500 pixels per side), the folder. Callers check first, so a bad target
+// costs no rendering.
+Status checkImageTarget(const std::string& path, int width, int height);
+
 // True when `path` ends in an extension writeImage() supports, so callers can reject a bad output name
 // before doing any expensive work.
 bool isSupportedImagePath(const std::string& path);

@@ -28,6 +28,18 @@ glm::dmat4 jitter(const glm::dmat4& projection, double dxPixels, double dyPixels
     return shift * projection;
 }
 
+glm::dmat4 tileProjection(const glm::dmat4& projection, int x0, int y0, int tileWidth, int tileHeight,
+                          int width, int height) {
+    // Image NDC x maps to pixel (x + 1)·width/2; the tile's NDC is (pixel − x0)·2/tileWidth − 1. Applied to
+    // clip coordinates (before the divide by w): x' = sx·x + ox·w.
+    glm::dmat4 crop(1.0);
+    crop[0][0] = double(width) / tileWidth;
+    crop[1][1] = double(height) / tileHeight;
+    crop[3][0] = double(width - 2 * x0 - tileWidth) / tileWidth;
+    crop[3][1] = double(height - 2 * y0 - tileHeight) / tileHeight;
+    return crop * projection;
+}
+
 glm::dmat4 cameraRelative(const Camera& camera) {
     return glm::translate(glm::dmat4(1.0), -camera.position);
 }

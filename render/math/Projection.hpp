@@ -21,6 +21,13 @@ glm::dmat4 perspective(double fovYDegrees, double aspect, double near, double fa
 // (dx, dy) pixels on a width × height target.
 glm::dmat4 jitter(const glm::dmat4& projection, double dxPixels, double dyPixels, int width, int height);
 
+// The part of `projection` that falls on the pixels [x0, x0 + tileWidth) × [y0, y0 + tileHeight) (GL
+// window coordinates, y up) of a width × height image, spread over a whole target of the tile's size:
+// pixel (x, y) of the image becomes pixel (x − x0, y − y0) of the tile. Only clip x and y change, so depth,
+// near and far (also an oblique near plane) stay exactly those of the whole image.
+glm::dmat4 tileProjection(const glm::dmat4& projection, int x0, int y0, int tileWidth, int tileHeight,
+                          int width, int height);
+
 // Translation that takes world space to camera-relative world space.
 glm::dmat4 cameraRelative(const Camera& camera);
 

@@ -1,5 +1,6 @@
 #include "render/passes/ShadowMaps.hpp"
 
+#include "render/GpuLimits.hpp"
 #include "render/gl/Memory.hpp"
 
 #include <algorithm>
@@ -76,7 +77,8 @@ const ShadowMap* ShadowMaps::find(int lightIndex) const {
 void ShadowMaps::render(const FrameInput& input, int lightIndex, gl::MeshCache& meshes,
                         const gl::Program& program) {
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
-    const int size = std::clamp(light.shadows.mapSize, 16, 16384);
+    // The renderer already fitted the size to the GPU's limits (fitToGpuLimits).
+    const int size = std::max(light.shadows.mapSize, kMinShadowMapSize);
     auto frustum = math::shadowFrustum(input, light, size);
     if (!frustum)
         return;

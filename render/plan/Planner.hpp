@@ -77,6 +77,19 @@ bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, con
 void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
                    const FramePlan& mirrors, FramePlan& plan);
 
+// Tiled stills: makes `plan`, planned for the whole image `image`, draw only the pixels `tile` of it
+// (GL window coordinates, y up) into a target of the tile's size. Every view's projection becomes the
+// image's own restricted to the tile (math::tileProjection), its pixel rectangle is clipped to the tile
+// and moved to the tile's origin, and the passes of mirror views without a pixel in the tile are dropped
+// (they could only draw outside it). Whatever the planner decided (which mirrors are seen, to what depth,
+// which cover under one pixel, whether the reflector is seen) was decided for the whole image, so every
+// tile draws its pixels as an untiled frame would. Where a tile legitimately differs: the renderer's
+// occlusion query sees only the tile, so a mirror hidden there is reported "fully occluded in this tile"
+// (it has no pixel to draw in it either way); a blurred texture-technique mirror reads the mip chain of
+// the tile's own reflection texture, so near tile borders its blur cannot reach past the tile; and float
+// rounding of vertices in the tile's clip space can move an edge across a sample lying on it.
+void restrictToTile(FramePlan& plan, const math::PixelRect& tile, const PlanViewport& image);
+
 // The mirror part of planning: the views of every mirror seen directly or through other mirrors, and the
 // passes that draw them, appended to `plan` in execution order (depth first).
 void planMirrors(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan);

@@ -1,5 +1,6 @@
 #include "render/reference/Tracer.hpp"
 
+#include "render/StillRenderer.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"
@@ -177,9 +178,8 @@ Result<Tracer> Tracer::create(const FrameInput& input) {
 
 Result<TraceResult> Tracer::render(const TraceSettings& settings, const TraceProgress& progress) const {
     const auto start = std::chrono::steady_clock::now();
-    if (settings.width <= 0 || settings.height <= 0)
-        return Error{"image size must be positive, got " + std::to_string(settings.width) + "x" +
-                     std::to_string(settings.height)};
+    if (Status size = checkStillSize(settings.width, settings.height); !size)
+        return Error{size.error()};
     const Impl& impl = *m_impl;
     const int width = settings.width, height = settings.height;
     const int n = std::clamp(settings.ssaa, 1, 16);

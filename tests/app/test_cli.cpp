@@ -1,4 +1,6 @@
 // The speculum command line as a user runs it: exit status, the one-line error, the files it writes.
+#include "render/StillRenderer.hpp"
+#include "render/gl/HeadlessContext.hpp"
 #include "support/CliRun.hpp"
 
 #include <OpenImageIO/imageio.h>
@@ -95,6 +97,44 @@ TEST_F(Cli, BadInputFailsWithOneLineAndWritesNothing) {
     }
 }
 
+// The largest still this machine's GPU renders in one piece, asked of the same driver the CLI uses.
+int gpuStillLimit() {
+    auto context = speculum::render::gl::HeadlessContext::create();
+    EXPECT_TRUE(context.ok()) << (context.ok() ? "" : context.error());
+    return context.ok() ? speculum::render::maxStillSize() : 0;
+}
+
+TEST_F(Cli, RenderWiderThanTheGpuAllowsWritesTheWholeImage) {
+    const int limit = gpuStillLimit();
+    ASSERT_GT(limit, 0);
+    const int width = limit + 16;
+    const fs::path out = m_dir / "wide.png";
+    const CliRun run =
+        speculum("render " + demo() + " -o " + out.string() + " --size " + std::to_string(width) + "x8");
+    ASSERT_EQ(run.status, 0) << run.err;
+    auto input = OIIO::ImageInput::open(out.string());
+    ASSERT_TRUE(input);
+    EXPECT_EQ(input->spec().width, width);
+    EXPECT_EQ(input->spec().height, 8);
+}
+
+TEST_F(Cli, SizesNoImageCanHoldAreRefusedBeforeAnyWork) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"huge.png", "1000000x1000000"}, // 14901 GiB of pixels
+        {"wide.jpg", "70000x8"},         // JPEG holds at most 65500 pixels per side
+    };
+    for (const auto& [name, size] : cases) {
+        const fs::path out = m_dir / name;
+        const CliRun run = speculum("render " + demo() + " -o " + out.string() + " --size " + size);
+        EXPECT_NE(run.status, 0) << size;
+        const std::string named = name == "huge.png" ? size : "JPEG";
+        EXPECT_NE(run.err.find(named), std::string::npos) << size << " → " << run.err;
+        EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << size << " → " << run.err;
+        EXPECT_FALSE(fs::exists(out)) << size;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(m_dir), fs::directory_iterator{}), 0) << "nothing written";
+}
+
 TEST_F(Cli, FailedRenderLeavesAnExistingFileIntact) {
     const fs::path out = m_dir / "keep.png";
     std::ofstream(out) << "precious";
@@ -127,6 +167,26 @@ TEST_F(Cli, ExplainJsonListsShadowAndMainPassesWithReasons) {
     EXPECT_TRUE(shadow) << run.out;
     EXPECT_TRUE(main) << run.out;
     EXPECT_TRUE(doc.object()["skipped"].isArray());
+}
+
+// What a frame could not do as asked (here a texture that is missing; a map larger than the GPU holds
+// is reported the same way) is listed by explain, in text and JSON.
+TEST_F(Cli, ExplainListsTheFramesWarnings) {
+    const fs::path project = m_dir / "untextured.speculum.json";
+    std::ofstream(project) << R"({"format": "speculum-scene", "version": 1, "nodes": [{"name": "Box",
+        "mesh": {"builtin": "box"}, "material": {"texture": "missing-marble.png"}}]})";
+    const CliRun text = speculum("explain " + project.string() + " --size 64x36");
+    ASSERT_EQ(text.status, 0) << text.err;
+    const std::size_t section = text.out.find("Warnings:");
+    ASSERT_NE(section, std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("missing-marble.png", section), std::string::npos) << text.out;
+
+    const CliRun json = speculum("explain " + project.string() + " --size 64x36 --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    const QJsonArray warnings =
+        QJsonDocument::fromJson(QByteArray::fromStdString(json.out)).object()["warnings"].toArray();
+    ASSERT_EQ(warnings.size(), 1) << json.out;
+    EXPECT_TRUE(warnings[0].toString().contains("missing-marble.png")) << json.out;
 }
 
 TEST_F(Cli, ExplainTextIsReadable) {

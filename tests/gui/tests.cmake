@@ -12,3 +12,8 @@ speculum_add_test(test_editor_workflow TIER gui
 speculum_add_test(test_editor_output TIER gui USES_CLI
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_editor_output.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
     LIBS speculum_ui)
+# Kills a real editor process (this binary started again) after its autosave, then recovers in a new
+# one; has its own main() for the child's side and a temporary XDG home for both.
+speculum_add_test(test_crash_recovery TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_crash_recovery.cpp
+    LIBS speculum_ui)

@@ -1,5 +1,7 @@
 #include "editor/document/ProjectFile.hpp"
 
+#include <QJsonArray>
+#include <QJsonObject>
 #include <gtest/gtest.h>
 #include <string>
 #include <vector>
@@ -45,7 +47,25 @@ std::vector<BadCase> badCases() {
         {"version zero", R"({ "format": "speculum-scene", "version": 0 })", {"version: must be at least 1"}},
         {"version fraction",
          R"({ "format": "speculum-scene", "version": 1.5 })",
-         {"version: expected an integer"}},
+         {"version: expected an integer", "1.5"}},
+        {"version next",
+         R"({ "format": "speculum-scene", "version": 2 })",
+         {"version: version 2 is newer", "reads up to 1"}},
+        {"version far future",
+         R"({ "format": "speculum-scene", "version": 1e12 })",
+         {"version: version 1e+12 is newer", "reads up to 1"}},
+        {"version negative",
+         R"({ "format": "speculum-scene", "version": -2 })",
+         {"version: must be at least 1", "-2"}},
+        {"version text",
+         R"({ "format": "speculum-scene", "version": "1" })",
+         {"version: expected an integer", "\"1\""}},
+        {"version null",
+         R"({ "format": "speculum-scene", "version": null })",
+         {"version: expected an integer", "null"}},
+        {"version array",
+         R"({ "format": "speculum-scene", "version": [1] })",
+         {"version: expected an integer", "an array"}},
         {"top level array", R"([1, 2])", {"expected a JSON object"}},
         {"settings not object", document(R"("settings": 3)"), {"settings: expected an object"}},
         {"background short",
@@ -271,6 +291,25 @@ TEST(ProjectErrors, MinimalDocumentLoadsWithDefaults) {
     ASSERT_TRUE(sphere.ok()) << sphere.error();
     EXPECT_EQ(sphere->nodes[2].data.mesh->tessellation, defaultTessellation(BuiltinMesh::Sphere));
     EXPECT_TRUE(warnings.empty());
+}
+
+} // namespace
+} // namespace speculum::document
+
+namespace speculum::document {
+namespace {
+
+// Version 1 is the first format: the upgrade step has nothing to convert, and the header check is what
+// every file passes before the readers see it.
+TEST(ProjectVersion, CurrentVersionFilesPassTheHeaderAndUpgradeUnchanged) {
+    const QJsonObject root{
+        {"format", "speculum-scene"}, {"version", kProjectFormatVersion}, {"nodes", QJsonArray{}}};
+    const auto version = readProjectHeader(root);
+    ASSERT_TRUE(version.ok()) << version.error();
+    EXPECT_EQ(*version, kProjectFormatVersion);
+    QJsonObject upgraded = root;
+    upgradeToCurrentVersion(upgraded, *version);
+    EXPECT_EQ(upgraded, root);
 }
 
 } // namespace

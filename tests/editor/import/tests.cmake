@@ -4,3 +4,8 @@
 speculum_add_test(test_editor_import TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_model_import.cpp
     LIBS speculum_document assimp::assimp)
+# Every file of the corpus in a child process of its own under a time limit (a hang or a crash fails
+# naming the file); fork() needs no other thread running, so it is a binary of its own.
+speculum_add_test(test_editor_import_corpus TIER unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_import_corpus.cpp
+    LIBS speculum_document)

@@ -202,6 +202,12 @@ TEST(EnvMapping, LayoutPlacesTheNominalSquareInsideTheGuardBand) {
     EXPECT_EQ(cube.guard, 0);
     EXPECT_EQ(cube.components, 6);
     EXPECT_EQ(makeLayout(MapType::DualParaboloid, 512).guard, 16);
+    // The smallest resolution a project may ask for still leaves most of the map inside the bands.
+    for (const MapType type : {MapType::DualParaboloid, MapType::TennisBall}) {
+        const MapLayout smallest = makeLayout(type, 8);
+        EXPECT_GE(smallest.guard, 1);
+        EXPECT_LT(4 * smallest.guard, smallest.resolution);
+    }
 }
 
 } // namespace

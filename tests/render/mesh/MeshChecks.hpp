@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <string>
 
 namespace speculum::render::test {
 
@@ -50,6 +51,27 @@ inline void expectWellFormed(const MeshData& mesh) {
     for (const glm::vec2& uv : mesh.uvs) {
         ASSERT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y));
     }
+}
+
+// The same checks as expectWellFormed, as a value: what is wrong, or empty. For code that cannot report
+// through GoogleTest (a child process).
+inline std::string wellFormedProblem(const MeshData& mesh) {
+    if (mesh.triangleCount() == 0 || mesh.indices.size() % 3 != 0)
+        return "no whole triangles";
+    if (mesh.normals.size() != mesh.positions.size() ||
+        !(mesh.uvs.empty() || mesh.uvs.size() == mesh.positions.size()))
+        return "attribute arrays of different sizes";
+    for (std::uint32_t index : mesh.indices)
+        if (index >= mesh.positions.size())
+            return "index " + std::to_string(index) + " out of range";
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+        if (!finite(mesh.positions[v]) || !finite(mesh.normals[v]) ||
+            std::abs(glm::length(mesh.normals[v]) - 1.0f) > 1e-4f)
+            return "vertex " + std::to_string(v) + " has a non-finite position or a normal of wrong length";
+    for (const glm::vec2& uv : mesh.uvs)
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+            return "non-finite uv";
+    return {};
 }
 
 } // namespace speculum::render::test
