@@ -263,9 +263,9 @@ void AccuracyPanel::showResult(const ComparisonResult& result) {
                      .arg(decibels(result.psnr), m_rasterMs->text(), m_traceMs->text()));
 }
 
-void AccuracyPanel::comparisonFailed(const QString& text) {
+void AccuracyPanel::comparisonFailed(const QString& text, bool cancelled) {
     setBusy(false);
-    m_status->setText(text == tr("cancelled") ? tr("Cancelled.") : tr("Could not compare: %1").arg(text));
+    m_status->setText(cancelled ? tr("Cancelled.") : tr("Could not compare: %1").arg(text));
 }
 
 render::Status AccuracyPanel::loadSweepFile(const QString& path) {
@@ -275,9 +275,9 @@ render::Status AccuracyPanel::loadSweepFile(const QString& path) {
         return render::Error{results.error()};
     }
     m_chart->setResults(*results);
-    m_sweepMessage->setText(tr("%1 configurations from %2. Click a point to apply its settings.")
+    m_sweepMessage->setText(tr("%1 configurations of %2 at %3 (%4). Click a point to apply its settings.")
                                 .arg(results->records.size())
-                                .arg(QFileInfo(path).fileName()));
+                                .arg(results->scene, results->size, QFileInfo(path).fileName()));
     return render::Done{};
 }
 

@@ -53,7 +53,7 @@ signals:
 
 private:
     void showResult(const ComparisonResult& result);
-    void comparisonFailed(const QString& text);
+    void comparisonFailed(const QString& text, bool cancelled);
     void setBusy(bool busy);
     void loadSweepDialog();
 

@@ -54,12 +54,13 @@ void ExactComparison::cancel() {
 
 bool ExactComparison::start(int width, double time) {
     if (running()) {
-        emit failed(tr("a comparison is already running"));
+        emit failed(tr("a comparison is already running"), false);
         return false;
     }
     if (!m_viewport.isValid() || !m_viewport.renderer()) {
         emit failed(m_viewport.rendererError().isEmpty() ? tr("the viewport has no OpenGL context yet")
-                                                         : m_viewport.rendererError());
+                                                         : m_viewport.rendererError(),
+                    false);
         return false;
     }
     // The viewport's aspect, so the error map lies over the view it was measured on.
@@ -85,7 +86,7 @@ bool ExactComparison::start(int width, double time) {
     m_viewport.doneCurrent();
     m_viewport.update();
     if (!raster) {
-        emit failed(QString::fromStdString(raster.error()));
+        emit failed(QString::fromStdString(raster.error()), false);
         return false;
     }
     result->rasterCpuMs = raster->firstSample.cpuMs;
@@ -98,6 +99,7 @@ bool ExactComparison::start(int width, double time) {
     m_done = false;
     m_fraction = 0.0;
     m_error.clear();
+    m_cancelled = false;
     m_result.reset();
     // The tracer is thread-safe and needs no GL; the worker owns copies of everything it reads.
     m_thread = std::thread([this, result = std::move(result), image = std::move(raster->image)]() mutable {
@@ -116,7 +118,8 @@ bool ExactComparison::start(int width, double time) {
             return !m_cancel.load();
         });
         if (!traced) {
-            m_error = m_cancel ? tr("cancelled") : QString::fromStdString(traced.error());
+            m_cancelled = m_cancel;
+            m_error = QString::fromStdString(traced.error());
             m_done = true;
             return;
         }
@@ -160,7 +163,7 @@ void ExactComparison::poll() {
         m_result.reset();
         emit finished(result);
     } else {
-        emit failed(m_error);
+        emit failed(m_error, m_cancelled);
     }
 }
 

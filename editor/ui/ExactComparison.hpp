@@ -56,7 +56,7 @@ public:
 signals:
     void progress(double fraction); // 0..1 of the trace
     void finished(const speculum::ui::ComparisonResult& result);
-    void failed(const QString& message); // "cancelled" when cancelled
+    void failed(const QString& message, bool cancelled);
 
 private:
     void poll();
@@ -71,6 +71,7 @@ private:
     // Written by the worker before m_done; read on the GUI thread after it.
     std::unique_ptr<ComparisonResult> m_result;
     QString m_error;
+    bool m_cancelled = false; // the worker stopped because cancel() asked it to
 };
 
 // The linear error map of render::metrics as an 8-bit sRGB QImage.

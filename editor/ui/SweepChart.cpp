@@ -1,8 +1,12 @@
 #include "editor/ui/SweepChart.hpp"
 
 #include <QChart>
+#include <QCursor>
+#include <QFont>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QScatterSeries>
+#include <QToolTip>
 #include <QValueAxis>
 #include <algorithm>
 #include <limits>
@@ -17,7 +21,10 @@ SweepChart::SweepChart(QWidget* parent)
     chart()->setTitle(tr("Load a bench results.json to compare settings"));
     chart()->legend()->setAlignment(Qt::AlignBottom);
     chart()->setMargins(QMargins(2, 2, 2, 2));
-    setMinimumHeight(220);
+    setMinimumHeight(300);
+    QFont small = chart()->legend()->font();
+    small.setPointSizeF(small.pointSizeF() * 0.85);
+    chart()->legend()->setFont(small);
 }
 
 int SweepChart::seriesCount() const {
@@ -45,7 +52,8 @@ void SweepChart::setResults(const document::SweepResults& results) {
     axisY->setTitleText(tr("PSNR (dB)"));
     c->addAxis(axisX, Qt::AlignBottom);
     c->addAxis(axisY, Qt::AlignLeft);
-    c->setTitle(tr("Error against time: %1 (%2)").arg(m_results.scene, m_results.size));
+    // The panel names the run under the chart; a title here would squeeze the plot in a narrow dock.
+    c->setTitle(QString());
 
     // Families in the order of the file, so colours follow the bench's own order.
     std::vector<QString> families;
@@ -79,6 +87,23 @@ void SweepChart::setResults(const document::SweepResults& results) {
         series->attachAxis(axisY);
         connect(series, &QScatterSeries::clicked, this,
                 [this, family](const QPointF& p) { pointClicked(family, p); });
+        connect(series, &QScatterSeries::hovered, this, [this, family](const QPointF& p, bool entered) {
+            const int index = nearest(family, p);
+            if (entered && index >= 0) {
+                const auto& r = m_results.records[std::size_t(index)];
+                QStringList settings;
+                for (const auto& [key, value] : r.settings) {
+                    settings << key + QStringLiteral(" ") + value;
+                }
+                QToolTip::showText(QCursor::pos(), tr("<b>%1 %2</b><br>%3 ms · PSNR %4 dB<br>%5")
+                                                       .arg(r.family, r.label)
+                                                       .arg(r.ms(), 0, 'f', 2)
+                                                       .arg(r.psnr, 0, 'f', 2)
+                                                       .arg(settings.join(QStringLiteral(", "))));
+            } else {
+                QToolTip::hideText();
+            }
+        });
     }
     m_highlight = new QScatterSeries;
     m_highlight->setName(tr("applied"));
@@ -88,6 +113,9 @@ void SweepChart::setResults(const document::SweepResults& results) {
     c->addSeries(m_highlight);
     m_highlight->attachAxis(axisX);
     m_highlight->attachAxis(axisY);
+    for (QLegendMarker* marker : c->legend()->markers(m_highlight)) {
+        marker->setVisible(false); // a ring, not a family
+    }
     if (!records.empty()) {
         const double padMs = std::max(0.05, 0.08 * (highMs - lowMs));
         const double padDb = std::max(0.5, 0.08 * (highDb - lowDb));
@@ -114,7 +142,13 @@ void SweepChart::highlight(int index) {
 }
 
 void SweepChart::pointClicked(const QString& family, const QPointF& point) {
-    // The nearest record of that family, in screen distance (the axes have different units).
+    if (const int index = nearest(family, point); index >= 0) {
+        emit recordChosen(index);
+    }
+}
+
+int SweepChart::nearest(const QString& family, const QPointF& point) const {
+    // In screen distance: the axes have different units.
     const QPointF at = chart()->mapToPosition(point);
     int best = -1;
     double bestDistance = std::numeric_limits<double>::infinity();
@@ -130,9 +164,7 @@ void SweepChart::pointClicked(const QString& family, const QPointF& point) {
             best = int(i);
         }
     }
-    if (best >= 0) {
-        emit recordChosen(best);
-    }
+    return best;
 }
 
 } // namespace speculum::ui

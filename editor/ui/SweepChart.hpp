@@ -28,6 +28,7 @@ signals:
 
 private:
     void pointClicked(const QString& family, const QPointF& point);
+    int nearest(const QString& family, const QPointF& point) const; // record index, -1 if none
 
     document::SweepResults m_results;
     QScatterSeries* m_highlight = nullptr;

@@ -28,8 +28,8 @@ using test::waitForFrames;
 
 const QString kChrome = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json");
 
-// Two configurations of a sweep on the chrome scene: its own, and a coarse tennis-ball map with shallower
-// mirrors and a sharper PCF kernel, in the layout `speculum bench` writes.
+// Configurations of a sweep on the chrome scene in the layout `speculum bench` writes: its own, a coarse
+// tennis-ball map with shallower mirrors and a sharper PCF kernel (the one the test clicks), and a few more.
 const char* kResults = R"({
   "format": "speculum-bench", "version": 1, "scene": "chrome.speculum.json", "size": "480x270",
   "results": [
@@ -44,9 +44,35 @@ const char* kResults = R"({
      "settings": {"map": "tennis-ball", "resolution": 64, "fill": "direct", "parallax": "off",
                   "mirrorDepth": 2, "pcf": 3},
      "gpuMs": 2.0, "cpuMs": 3.0, "memoryBytes": 500, "rmse": 0.04, "psnr": 28.0,
-     "psnrMirrors": null, "psnrReflector": 22.0}
+     "psnrMirrors": null, "psnrReflector": 22.0},
+    {"id": "envmap-cube-64", "family": "envmap", "label": "64", "series": "cube", "reference": "scene",
+     "sceneSetting": false,
+     "settings": {"map": "cube", "resolution": 64, "fill": "resampled", "parallax": "off",
+                  "mirrorDepth": 3, "pcf": 5},
+     "gpuMs": 3.0, "cpuMs": 4.5, "memoryBytes": 700, "rmse": 0.03, "psnr": 31.0,
+     "psnrMirrors": null, "psnrReflector": 26.0},
+    {"id": "mirror-depth-1", "family": "mirror-depth", "label": "1", "series": "depth", "reference": "deep-mirrors",
+     "sceneSetting": false,
+     "settings": {"map": "cube", "resolution": 256, "fill": "resampled", "parallax": "off",
+                  "mirrorDepth": 1, "pcf": 5},
+     "gpuMs": 3.5, "cpuMs": 5.0, "memoryBytes": 1000, "rmse": 0.025, "psnr": 32.5,
+     "psnrMirrors": null, "psnrReflector": 29.0},
+    {"id": "shadows-pcf-1", "family": "shadows", "label": "pcf 1", "series": "pcf", "reference": "hard-shadows",
+     "sceneSetting": false,
+     "settings": {"map": "cube", "resolution": 256, "fill": "resampled", "parallax": "off",
+                  "mirrorDepth": 3, "pcf": 1},
+     "gpuMs": 3.8, "cpuMs": 5.5, "memoryBytes": 1000, "rmse": 0.03, "psnr": 30.5,
+     "psnrMirrors": null, "psnrReflector": 30.0}
   ]
 })";
+
+QString writeResults(const QTemporaryDir& dir) {
+    const QString path = dir.filePath(QStringLiteral("results.json"));
+    QFile file(path);
+    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(kResults);
+    return path;
+}
 
 const document::ReflectorComponent* reflectorOf(const document::Scene& scene) {
     const document::ReflectorComponent* found = nullptr;
@@ -124,6 +150,9 @@ TEST_F(AccuracyPanelTest, CompareWithExactShowsFiniteNumbersAndAnErrorMap) {
     ASSERT_NE(over, nullptr);
     EXPECT_TRUE(over->isVisible());
     EXPECT_EQ(over->size(), m_window->viewport().size());
+    // The chart of a sweep too, for the picture.
+    QTemporaryDir dir;
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
     ASSERT_TRUE(waitForFrames(*m_window, 2));
     const QString shot = QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-accuracy-panel.png");
     ASSERT_TRUE(m_window->grab().save(shot));
@@ -141,16 +170,12 @@ TEST_F(AccuracyPanelTest, CompareWithExactShowsFiniteNumbersAndAnErrorMap) {
 
 TEST_F(AccuracyPanelTest, ClickingASweepPointAppliesItsSettingsAsOneUndoStep) {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("results.json"));
-    QFile file(path);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(kResults);
-    file.close();
+    const QString path = writeResults(dir);
 
     EXPECT_FALSE(panel().loadSweepFile(dir.filePath(QStringLiteral("missing.json"))).ok());
     ASSERT_TRUE(panel().loadSweepFile(path).ok());
     SweepChart& chart = panel().chart();
-    EXPECT_EQ(chart.seriesCount(), 2); // one per family: scene, envmap
+    EXPECT_EQ(chart.seriesCount(), 4); // one per family: scene, envmap, mirror-depth, shadows
     const document::SceneData before = m_window->scene().toData();
     ASSERT_NE(reflectorOf(m_window->scene()), nullptr);
     EXPECT_EQ(reflectorOf(m_window->scene())->map, document::ReflectorMap::Cube);
