@@ -3,6 +3,7 @@
 #include "editor/document/ModelFormats.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Scene.hpp"
+#include "editor/ui/AccuracyPanel.hpp"
 #include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/RenderPassesPanel.hpp"
@@ -435,6 +436,20 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::LeftDockWidgetArea, passesDock);
     splitDockWidget(treeDock, passesDock, Qt::Vertical);
 
+    // Hidden at first: it is for the moments a user asks what an approximation costs, not for editing.
+    m_accuracyPanel = new AccuracyPanel(*m_scene, *m_undoStack, *m_viewport, *m_clock, this);
+    auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
+    accuracyDock->setObjectName(QStringLiteral("accuracyDock"));
+    accuracyDock->setWidget(m_accuracyPanel);
+    addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
+    tabifyDockWidget(inspectorDock, accuracyDock);
+    inspectorDock->raise();
+    accuracyDock->hide();
+    connect(m_accuracyPanel, &AccuracyPanel::message, this, [this](const QString& text) {
+        logMessage(text);
+        statusBar()->showMessage(text, 8000);
+    });
+
     auto* logDock = new QDockWidget(tr("Log"), this);
     logDock->setObjectName(QStringLiteral("logDock"));
     m_log = new QPlainTextEdit(logDock);
@@ -451,7 +466,7 @@ void MainWindow::createDocks() {
     resizeDocks({treeDock, passesDock}, {300, 200}, Qt::Vertical);
 
     m_viewMenu->addSeparator();
-    for (QDockWidget* dock : {treeDock, inspectorDock, passesDock, logDock}) {
+    for (QDockWidget* dock : {treeDock, inspectorDock, passesDock, accuracyDock, logDock}) {
         m_viewMenu->addAction(dock->toggleViewAction());
     }
     logDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));

@@ -26,6 +26,7 @@ struct FrameReport;
 
 namespace speculum::ui {
 
+class AccuracyPanel;
 class AnimationClock;
 class Inspector;
 class RenderPassesPanel;
@@ -35,8 +36,8 @@ class Selection;
 class Viewport;
 
 // The editor's top-level window: owns the open document (Scene + its undo stack), the selection, the
-// animation clock and the viewport, with the Scene, Properties, Render passes and Log docks around it and
-// the File/Edit/Add/View/Help menus.
+// animation clock and the viewport, with the Scene, Properties, Render passes, Accuracy and Log docks around
+// it and the File/Edit/Add/View/Help menus.
 //
 // Operations come in two layers: the public functions below do the work and return a Status without any
 // dialog (for tests and scripted use); the menu actions add file dialogs, prompts and error boxes.
@@ -57,6 +58,7 @@ public:
     SceneTreePanel& sceneTree() { return *m_treePanel; }
     SceneTreeModel& sceneTreeModel() { return *m_treeModel; }
     RenderPassesPanel& passesPanel() { return *m_passesPanel; }
+    AccuracyPanel& accuracyPanel() { return *m_accuracyPanel; }
     // A menu action by object name, or null.
     QAction* action(const QString& objectName) const;
 
@@ -148,6 +150,7 @@ private:
     SceneTreePanel* m_treePanel = nullptr;
     Inspector* m_inspector = nullptr;
     RenderPassesPanel* m_passesPanel = nullptr;
+    AccuracyPanel* m_accuracyPanel = nullptr;
     std::unique_ptr<document::RecoveryStore> m_recovery;
     QTimer m_autosave;
     bool m_restoredUnsaved = false; // a recovered document counts as modified until saved

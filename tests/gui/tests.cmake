@@ -17,3 +17,7 @@ speculum_add_test(test_editor_output TIER gui USES_CLI
 speculum_add_test(test_crash_recovery TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_crash_recovery.cpp
     LIBS speculum_ui)
+# The Accuracy dock: compare with the exact tracer, the chart of a bench run.
+speculum_add_test(test_accuracy_panel TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_accuracy_panel.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)

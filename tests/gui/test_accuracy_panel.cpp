@@ -1,0 +1,225 @@
+// The Accuracy dock on the chrome-ball demo: Compare with exact measures the current view against the
+// tracer and shows finite numbers and an error map (also over the viewport); a cancelled comparison leaves
+// the last numbers alone; a bench results.json loads into the chart, and clicking a point gives the
+// document that configuration's settings in one undo step that undo takes back.
+#include "GuiTestSupport.hpp"
+#include "editor/document/Scene.hpp"
+#include "editor/ui/AccuracyPanel.hpp"
+#include "editor/ui/SweepChart.hpp"
+
+#include <QAction>
+#include <QChart>
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QLabel>
+#include <QPushButton>
+#include <QScatterSeries>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+#include <gtest/gtest.h>
+
+namespace speculum::ui {
+namespace {
+
+using test::waitFor;
+using test::waitForFrames;
+
+const QString kChrome = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json");
+
+// Configurations of a sweep on the chrome scene in the layout `speculum bench` writes: its own, a coarse
+// tennis-ball map with shallower mirrors and a sharper PCF kernel (the one the test clicks), and a few more.
+const char* kResults = R"({
+  "format": "speculum-bench", "version": 1, "scene": "chrome.speculum.json", "size": "480x270",
+  "results": [
+    {"id": "scene", "family": "scene", "label": "scene", "series": "scene", "reference": "scene",
+     "sceneSetting": true,
+     "settings": {"map": "cube", "resolution": 256, "fill": "resampled", "parallax": "off",
+                  "mirrorDepth": 3, "pcf": 5},
+     "gpuMs": 4.0, "cpuMs": 6.0, "memoryBytes": 1000, "rmse": 0.02, "psnr": 34.0,
+     "psnrMirrors": null, "psnrReflector": 30.0},
+    {"id": "envmap-tennis-ball-direct-64", "family": "envmap", "label": "64", "series": "tennis-ball direct",
+     "reference": "scene", "sceneSetting": false,
+     "settings": {"map": "tennis-ball", "resolution": 64, "fill": "direct", "parallax": "off",
+                  "mirrorDepth": 2, "pcf": 3},
+     "gpuMs": 2.0, "cpuMs": 3.0, "memoryBytes": 500, "rmse": 0.04, "psnr": 28.0,
+     "psnrMirrors": null, "psnrReflector": 22.0},
+    {"id": "envmap-cube-64", "family": "envmap", "label": "64", "series": "cube", "reference": "scene",
+     "sceneSetting": false,
+     "settings": {"map": "cube", "resolution": 64, "fill": "resampled", "parallax": "off",
+                  "mirrorDepth": 3, "pcf": 5},
+     "gpuMs": 3.0, "cpuMs": 4.5, "memoryBytes": 700, "rmse": 0.03, "psnr": 31.0,
+     "psnrMirrors": null, "psnrReflector": 26.0},
+    {"id": "mirror-depth-1", "family": "mirror-depth", "label": "1", "series": "depth", "reference": "deep-mirrors",
+     "sceneSetting": false,
+     "settings": {"map": "cube", "resolution": 256, "fill": "resampled", "parallax": "off",
+                  "mirrorDepth": 1, "pcf": 5},
+     "gpuMs": 3.5, "cpuMs": 5.0, "memoryBytes": 1000, "rmse": 0.025, "psnr": 32.5,
+     "psnrMirrors": null, "psnrReflector": 29.0},
+    {"id": "shadows-pcf-1", "family": "shadows", "label": "pcf 1", "series": "pcf", "reference": "hard-shadows",
+     "sceneSetting": false,
+     "settings": {"map": "cube", "resolution": 256, "fill": "resampled", "parallax": "off",
+                  "mirrorDepth": 3, "pcf": 1},
+     "gpuMs": 3.8, "cpuMs": 5.5, "memoryBytes": 1000, "rmse": 0.03, "psnr": 30.5,
+     "psnrMirrors": null, "psnrReflector": 30.0}
+  ]
+})";
+
+QString writeResults(const QTemporaryDir& dir) {
+    const QString path = dir.filePath(QStringLiteral("results.json"));
+    QFile file(path);
+    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(kResults);
+    return path;
+}
+
+const document::ReflectorComponent* reflectorOf(const document::Scene& scene) {
+    const document::ReflectorComponent* found = nullptr;
+    scene.forEachNode([&](const document::Node& node) {
+        if (node.data().reflector && !found) {
+            found = &*node.data().reflector;
+        }
+    });
+    return found;
+}
+
+class AccuracyPanelTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_window = std::make_unique<MainWindow>();
+        m_window->resize(1400, 900);
+        m_window->show();
+        ASSERT_TRUE(m_window->openProjectFile(kChrome).ok());
+        m_dock = m_window->findChild<QDockWidget*>(QStringLiteral("accuracyDock"));
+        ASSERT_NE(m_dock, nullptr);
+        // The View menu toggles it like the other docks.
+        m_dock->toggleViewAction()->trigger();
+        m_dock->raise();
+        ASSERT_TRUE(m_dock->isVisible());
+        ASSERT_TRUE(waitForFrames(*m_window, 2));
+    }
+
+    AccuracyPanel& panel() { return m_window->accuracyPanel(); }
+    QString text(const char* name) { return panel().findChild<QLabel*>(QString::fromLatin1(name))->text(); }
+
+    std::unique_ptr<MainWindow> m_window;
+    QDockWidget* m_dock = nullptr;
+};
+
+TEST_F(AccuracyPanelTest, CompareWithExactShowsFiniteNumbersAndAnErrorMap) {
+    EXPECT_EQ(text("accuracyPsnr"), QStringLiteral("—"));
+    panel().setPreviewWidth(160);
+    panel().findChild<QPushButton*>(QStringLiteral("compareExact"))->click();
+    ASSERT_TRUE(waitFor([&] { return !panel().comparing(); }, 180000));
+    ASSERT_TRUE(panel().lastComparison().has_value()) << text("accuracyStatus").toStdString();
+    const ComparisonResult& r = *panel().lastComparison();
+    EXPECT_EQ(r.width, 160);
+    EXPECT_GT(r.height, 0);
+    EXPECT_TRUE(std::isfinite(r.rmse));
+    EXPECT_GE(r.rmse, 0.0);
+    EXPECT_LT(r.rmse, 0.5); // the same scene both ways: far from random
+    EXPECT_TRUE(std::isfinite(r.psnr));
+    EXPECT_GT(r.psnr, 10.0);
+    ASSERT_TRUE(r.psnrReflector.has_value()); // the chrome ball is in view
+    EXPECT_TRUE(std::isfinite(*r.psnrReflector));
+    EXPECT_GT(r.rasterCpuMs, 0.0);
+    EXPECT_GT(r.traceMs, 0.0);
+    // The numbers are on screen.
+    EXPECT_TRUE(text("accuracyPsnr").endsWith(QStringLiteral(" dB"))) << text("accuracyPsnr").toStdString();
+    EXPECT_TRUE(text("accuracyPsnrReflector").endsWith(QStringLiteral(" dB")));
+    EXPECT_NE(text("accuracyRmse"), QStringLiteral("—"));
+    EXPECT_TRUE(text("accuracyTraceMs").endsWith(QStringLiteral(" ms")));
+    EXPECT_TRUE(text("accuracyRasterMs").contains(QStringLiteral("ms")));
+    // The error map: the frame's size, not all black (some pixel differs), shown in the panel.
+    EXPECT_EQ(r.errorMap.size(), QSize(r.width, r.height));
+    const QImage map = r.errorMap.convertToFormat(QImage::Format_RGB32);
+    int lit = 0;
+    for (int y = 0; y < map.height(); ++y) {
+        for (int x = 0; x < map.width(); ++x) {
+            lit += qGray(map.pixel(x, y)) > 20;
+        }
+    }
+    EXPECT_GT(lit, 0);
+    EXPECT_FALSE(panel().findChild<QLabel*>(QStringLiteral("accuracyErrorMap"))->pixmap().isNull());
+    // Over the viewport on request.
+    auto* overlay = panel().findChild<QCheckBox*>(QStringLiteral("accuracyOverlay"));
+    ASSERT_TRUE(overlay->isEnabled());
+    overlay->setChecked(true);
+    auto* over = m_window->viewport().findChild<QWidget*>(QStringLiteral("errorMapOverlay"));
+    ASSERT_NE(over, nullptr);
+    EXPECT_TRUE(over->isVisible());
+    EXPECT_EQ(over->size(), m_window->viewport().size());
+    // The chart of a sweep too, for the picture.
+    QTemporaryDir dir;
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
+    ASSERT_TRUE(waitForFrames(*m_window, 2));
+    const QString shot = QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-accuracy-panel.png");
+    ASSERT_TRUE(m_window->grab().save(shot));
+    std::printf("screenshot: %s\n", qPrintable(shot));
+
+    // A cancelled comparison keeps the last numbers and says so.
+    const double psnr = r.psnr;
+    panel().setPreviewWidth(1200);
+    panel().compareWithExact();
+    panel().cancelComparison();
+    ASSERT_TRUE(waitFor([&] { return !panel().comparing(); }, 180000));
+    EXPECT_EQ(text("accuracyStatus"), QStringLiteral("Cancelled."));
+    EXPECT_EQ(panel().lastComparison()->psnr, psnr);
+}
+
+TEST_F(AccuracyPanelTest, ClickingASweepPointAppliesItsSettingsAsOneUndoStep) {
+    QTemporaryDir dir;
+    const QString path = writeResults(dir);
+
+    EXPECT_FALSE(panel().loadSweepFile(dir.filePath(QStringLiteral("missing.json"))).ok());
+    ASSERT_TRUE(panel().loadSweepFile(path).ok());
+    SweepChart& chart = panel().chart();
+    EXPECT_EQ(chart.seriesCount(), 4); // one per family: scene, envmap, mirror-depth, shadows
+    const document::SceneData before = m_window->scene().toData();
+    ASSERT_NE(reflectorOf(m_window->scene()), nullptr);
+    EXPECT_EQ(reflectorOf(m_window->scene())->map, document::ReflectorMap::Cube);
+
+    // A real mouse click on the envmap point.
+    QScatterSeries* envmap = nullptr;
+    for (QAbstractSeries* s : chart.chart()->series()) {
+        if (s->name() == QStringLiteral("envmap")) {
+            envmap = qobject_cast<QScatterSeries*>(s);
+        }
+    }
+    ASSERT_NE(envmap, nullptr);
+    QApplication::processEvents();
+    const QPoint at = chart.mapFromScene(chart.chart()->mapToPosition(QPointF(2.0, 28.0), envmap));
+    QTest::mouseClick(chart.viewport(), Qt::LeftButton, {}, at);
+    ASSERT_TRUE(waitFor([&] { return m_window->undoStack().count() == 1; }, 5000))
+        << "the click at " << at.x() << "," << at.y() << " applied nothing";
+
+    const auto* reflector = reflectorOf(m_window->scene());
+    EXPECT_EQ(reflector->map, document::ReflectorMap::TennisBall);
+    EXPECT_EQ(reflector->resolution, 64);
+    EXPECT_EQ(reflector->fill, document::ReflectorFill::Direct);
+    EXPECT_EQ(m_window->scene().settings().mirrorDepth, 2);
+    int pcf = 0;
+    m_window->scene().forEachNode([&](const document::Node& node) {
+        if (node.data().light && node.data().light->shadows) {
+            pcf = node.data().light->shadows->pcf;
+        }
+    });
+    EXPECT_EQ(pcf, 3);
+    // The Edit menu names the change; undo takes it all back in one step.
+    EXPECT_TRUE(m_window->undoStack().undoText().startsWith(QStringLiteral("Apply Sweep Setting envmap 64")))
+        << m_window->undoStack().undoText().toStdString();
+    m_window->undoStack().undo();
+    EXPECT_EQ(m_window->scene().toData(), before);
+    m_window->undoStack().redo();
+    EXPECT_EQ(reflectorOf(m_window->scene())->map, document::ReflectorMap::TennisBall);
+
+    // Settings the scene cannot take are named, the rest still applied.
+    m_window->undoStack().undo();
+    const QString message = panel().applyRecord(0);
+    EXPECT_TRUE(message.contains(QStringLiteral("Not applied")) == false) << message.toStdString();
+    EXPECT_EQ(m_window->scene().toData(), before); // the scene's own settings: nothing to change
+}
+
+} // namespace
+} // namespace speculum::ui
