@@ -84,17 +84,26 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
                             reflector.mirrorDepth, mirrors, faces);
     };
 
-    // The direct fill draws subdivided copies of the meshes (straight edges turn into curves).
+    // The direct fill draws copies of the meshes split until no edge spans more than a few degrees seen
+    // from the capture point (straight edges turn into curves). Mirrors show their own material there, so
+    // they become plain items with rectangles of their own.
     std::optional<FrameInput> fine;
-    MeshHandle finePlane;
     if (m_capture->settings().type != envmap::MapType::Cube &&
         m_capture->settings().fill == envmap::FillMethod::Direct) {
+        const WarpTolerance tolerance{where.centre, warpEdgeAngle(m_capture->layout()), where.near};
+        m_warpMeshes.begin();
         fine = env;
         for (DrawItem& item : fine->items)
-            item.mesh = m_warpMeshes.get(item.mesh);
-        finePlane = m_warpMeshes.get(context.unitPlane);
+            item.mesh = m_warpMeshes.get(item.mesh, item.world, tolerance);
+        for (const Mirror& mirror : fine->mirrors) {
+            const glm::dmat4 rectangle = mirrorRectangle(mirror);
+            fine->items.push_back({mirror.name, rectangle,
+                                   m_warpMeshes.get(context.unitPlane, rectangle, tolerance), mirror.material,
+                                   true});
+        }
+        fine->mirrors.clear();
     }
-    MainPassContext warped = withProgram(m_warp, context, finePlane);
+    MainPassContext warped = withProgram(m_warp, context, context.unitPlane);
     auto drawWarped = [&](const envmap::WarpPass& pass) {
         m_warp.use();
         envmap::setWarpUniforms(m_warp, pass);

@@ -3,5 +3,5 @@ speculum_add_test(test_gl_shadows TIER gl
             ${CMAKE_CURRENT_LIST_DIR}/test_mirrors.cpp
     LIBS speculum_render speculum_document)
 speculum_add_test(test_gl_reflector TIER gl
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_reflector.cpp
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_reflector.cpp ${CMAKE_CURRENT_LIST_DIR}/test_reflector_fill.cpp
     LIBS speculum_render speculum_document)
