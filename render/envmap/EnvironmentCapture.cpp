@@ -244,6 +244,9 @@ void EnvironmentCapture::resample(GLuint cubeTexture, const glm::dmat3& cubeFrom
     SavedState keepState;
     glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+    // The map's own layer before the clear: the colour attachment left from update() is a face of the
+    // very cube about to be read, and clearing that wiped its level 0.
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m_map.id(), 0, 0);
     prepareTarget(m_layout.width, m_layout.height, glm::dvec3(0.0)); // every texel is written below
     glDisable(GL_DEPTH_TEST);
     m_resample.use();
