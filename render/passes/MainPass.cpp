@@ -133,7 +133,7 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
         if (i < view.skipMirror.size() && view.skipMirror[i])
             continue;
         setMaterial(input.mirrors[i].material, p, ctx);
-        drawLitMesh(ctx.unitPlane, mirrorRectangle(input.mirrors[i]), input, p, ctx);
+        drawLitMesh(ctx.mirrorMesh(i), mirrorRectangle(input.mirrors[i]), input, p, ctx);
     }
     if (input.reflector && input.reflector->mesh &&
         !(ctx.drawReflector && ctx.drawReflector(input, view, ctx))) {

@@ -38,6 +38,13 @@ struct MainPassContext {
     MeshHandle unitPlane;        // the mirror rectangle: [-1,1]² in XZ
     bool mirroredView = false;   // set by beginLitView: the view's reflection flips the winding
     DrawReflector drawReflector; // empty: the reflector is drawn with its material
+    // Per mirror (by index), a mesh drawn instead of unitPlane where set: the environment's direct fill
+    // splits each rectangle for the capture point it is seen from.
+    std::vector<MeshHandle> mirrorMeshes;
+
+    const MeshHandle& mirrorMesh(std::size_t mirror) const {
+        return mirror < mirrorMeshes.size() && mirrorMeshes[mirror] ? mirrorMeshes[mirror] : unitPlane;
+    }
 };
 
 // How one view sees the scene: the camera's own, or the scene reflected in a mirror.
