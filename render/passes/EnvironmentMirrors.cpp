@@ -11,6 +11,19 @@
 
 namespace speculum::render::passes {
 
+const MeshFacts::Facts& MeshFacts::get(const MeshHandle& mesh) {
+    auto it = m_entries.find(mesh.get());
+    // A new mesh may reuse the address of a freed one: only a live weak pointer to this very mesh counts.
+    if (it != m_entries.end() && it->second.owner.lock() == mesh)
+        return it->second.facts;
+    Entry entry{mesh, {computeBounds(*mesh), isClosed(*mesh)}};
+    return m_entries.insert_or_assign(mesh.get(), std::move(entry)).first->second.facts;
+}
+
+void MeshFacts::purge() {
+    std::erase_if(m_entries, [](const auto& kv) { return kv.second.owner.expired(); });
+}
+
 namespace {
 
 // One view of the environment: the capture point's own (mirror −1), or the scene reflected in a chain of
@@ -62,6 +75,7 @@ public:
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_CLIP_DISTANCE0);
         m_ctx.mirrorMeshes.clear();
+        m_ctx.cullBackFaces.clear();
     }
 
 private:
@@ -101,6 +115,26 @@ private:
             scene.mirrorMeshes.push_back(
                 m_target.warpMeshes->get(m_ctx.unitPlane, mirrorRectangle(mirror), tolerance));
         return scene;
+    }
+
+    // Items whose back faces the level's (virtual) capture point cannot see: closed meshes it is outside of.
+    std::vector<bool> cullFor(const Level& level) const {
+        std::vector<bool> cull;
+        if (!m_target.meshFacts)
+            return cull;
+        cull.reserve(m_env.items.size());
+        for (const DrawItem& item : m_env.items) {
+            if (!item.mesh) {
+                cull.push_back(false);
+                continue;
+            }
+            const MeshFacts::Facts& facts = m_target.meshFacts->get(item.mesh);
+            const math::Box box = math::worldBounds(facts.bounds, item.world);
+            const bool inside = glm::all(glm::greaterThanEqual(level.eye, box.min)) &&
+                                glm::all(glm::lessThanEqual(level.eye, box.max));
+            cull.push_back(facts.closed && !inside);
+        }
+        return cull;
     }
 
     ViewSetup setupFor(const Level& level) const {
@@ -208,8 +242,10 @@ private:
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         }
         m_ctx.mirrorMeshes = scene.mirrorMeshes;
+        m_ctx.cullBackFaces = cullFor(level);
         prepareWarp(m_ctx.program, level);
         drawMainPass(scene.input(), setup, m_ctx);
+        m_ctx.cullBackFaces.clear();
 
         for (const Level& c : children) {
             drawMask(level, scene, c, stencil);

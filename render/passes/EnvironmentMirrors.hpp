@@ -7,6 +7,7 @@
 #include "render/passes/WarpMeshes.hpp"
 
 #include <glm/mat4x4.hpp>
+#include <unordered_map>
 
 namespace speculum::render::passes {
 
@@ -15,6 +16,27 @@ namespace speculum::render::passes {
 struct EnvironmentMirrorPrograms {
     const gl::Program* flat = nullptr;   // the mirror masks
     const gl::Program* mirror = nullptr; // the mirror surfaces
+};
+
+// What the environment pass remembers of each mesh while the mesh lives: its bounds and whether it is
+// closed (isClosed). Items of closed meshes seen from outside are drawn with their back faces culled:
+// with small, many-sided objects an environment map's cost is mostly triangles, not texels.
+class MeshFacts {
+public:
+    struct Facts {
+        Bounds bounds;
+        bool closed = false;
+    };
+    const Facts& get(const MeshHandle& mesh);
+    // Forgets meshes nobody holds any more.
+    void purge();
+
+private:
+    struct Entry {
+        std::weak_ptr<const MeshData> owner;
+        Facts facts;
+    };
+    std::unordered_map<const MeshData*, Entry> m_entries;
 };
 
 // One target of the reflector's environment (pass 1): a cube face, or a component of the direct fill.
@@ -29,6 +51,7 @@ struct EnvironmentTarget {
     const envmap::WarpPass* warp = nullptr;
     WarpMeshes* warpMeshes = nullptr;
     double warpAngle = 0.3;
+    MeshFacts* meshFacts = nullptr; // null: every face of every item is drawn
 };
 
 // Draws the environment `env` (the scene without the reflector, camera at the capture point) into the

@@ -123,12 +123,17 @@ glm::dmat4 mirrorRectangle(const Mirror& mirror) {
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& ctx) {
     const gl::Program& p = ctx.program;
     beginLitView(input, view, p, ctx);
-    for (const DrawItem& item : input.items) {
+    for (std::size_t i = 0; i < input.items.size(); ++i) {
+        const DrawItem& item = input.items[i];
         if (!item.mesh)
             continue;
+        const bool cull = i < ctx.cullBackFaces.size() && ctx.cullBackFaces[i];
+        (cull ? glEnable : glDisable)(GL_CULL_FACE);
         setMaterial(item.material, p, ctx);
         drawLitMesh(item.mesh, item.world, input, p, ctx);
     }
+    if (!ctx.cullBackFaces.empty())
+        glDisable(GL_CULL_FACE);
     for (std::size_t i = 0; i < input.mirrors.size(); ++i) {
         if (i < view.skipMirror.size() && view.skipMirror[i])
             continue;

@@ -41,6 +41,9 @@ struct MainPassContext {
     // Per mirror (by index), a mesh drawn instead of unitPlane where set: the environment's direct fill
     // splits each rectangle for the capture point it is seen from.
     std::vector<MeshHandle> mirrorMeshes;
+    // Per item (by index), true where the view can never see the item's back faces (a closed mesh seen from
+    // outside): drawn with them culled. The environment pass sets it; empty draws every face.
+    std::vector<bool> cullBackFaces;
 
     const MeshHandle& mirrorMesh(std::size_t mirror) const {
         return mirror < mirrorMeshes.size() && mirrorMeshes[mirror] ? mirrorMeshes[mirror] : unitPlane;

@@ -92,6 +92,7 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
     face.far = where.far;
     const envmap::CaptureSettings& settings = m_capture->settings();
     face.size = settings.cubeResolution > 0 ? settings.cubeResolution : settings.resolution;
+    face.meshFacts = &m_meshFacts;
     auto drawFace = [&](const glm::dmat4&, int index) {
         face.faceView = envmap::cubeFaceView(index);
         drawEnvironmentTarget(env, face, reflector.mirrorDepth, mirrors, faces);
@@ -109,6 +110,7 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
         component.warp = &pass;
         component.warpMeshes = &m_warpMeshes;
         component.warpAngle = warpEdgeAngle(m_capture->layout());
+        component.meshFacts = &m_meshFacts;
         drawEnvironmentTarget(env, component, reflector.mirrorDepth, {&m_warpFlat, &m_warpMirror}, warped);
     };
     m_capture->update(view, drawFace, drawWarped);

@@ -40,7 +40,10 @@ public:
     // The map itself, for tests and tools (empty before the first capture).
     const envmap::EnvironmentCapture* map() const { return m_capture ? &*m_capture : nullptr; }
 
-    void purge() { m_warpMeshes.purge(); }
+    void purge() {
+        m_warpMeshes.purge();
+        m_meshFacts.purge();
+    }
 
 private:
     std::optional<envmap::EnvironmentCapture> m_capture;
@@ -51,6 +54,7 @@ private:
     gl::Program m_warpMirror; // mesh.vert with ENVMAP_WARP + mirror.frag: mirror surfaces in the warp
     gl::Program m_surface;    // mesh.vert + reflector.frag
     WarpMeshes m_warpMeshes;
+    MeshFacts m_meshFacts;
 };
 
 } // namespace speculum::render::passes

@@ -288,6 +288,21 @@ INSTANTIATE_TEST_SUITE_P(
                       Variant{ReflectorMap::TennisBall, ReflectorFill::Resampled, "tennisBallResampled"}),
     [](const auto& info) { return std::string(info.param.name); });
 
+TEST_F(ReflectorFrames, ClosedMeshAroundTheCapturePointKeepsItsInsideFaces) {
+    // The environment pass culls the back faces of closed meshes it sees from outside. A room made of one
+    // closed box around the ball is seen from inside, by its back faces: it must still fill the map.
+    FrameInput input = ballInRoom(ReflectorMap::DualParaboloid, ReflectorFill::Direct);
+    static const auto box = std::make_shared<const MeshData>(makeBox());
+    input.items = {
+        {"Room", glm::scale(glm::dmat4(1.0), glm::dvec3(10.0)), box, emissive({0.2, 0.6, 0.3}), false}};
+    for (ReflectorMap map : {ReflectorMap::Cube, ReflectorMap::DualParaboloid}) {
+        input.reflector->map = map;
+        const glm::dvec3 centre(renderImage(input, 64, 64).at(32, 32));
+        EXPECT_LT(glm::length(centre - glm::dvec3(0.2, 0.6, 0.3)), 0.05)
+            << centre.x << " " << centre.y << " " << centre.z;
+    }
+}
+
 TEST_F(ReflectorFrames, ParallaxCorrectionMovesNearbyReflectionsWhereTheyBelong) {
     // The ball sits off-centre in a small room (half 3): without correction the walls appear as if seen
     // from the ball's centre; with a box proxy of the room, the reflection at each pixel matches the wall
