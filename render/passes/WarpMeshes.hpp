@@ -22,11 +22,12 @@ struct WarpTolerance {
     double minLength = 0.0; // world units: shorter edges are never split (geometry at the capture point)
 };
 
-// The largest angle an edge may span in a dual-paraboloid or tennis-ball map: its chord may stray about
-// half of the map's largest texel, and the edge never spans more than kMaxWarpEdgeAngle, which bounds
-// the error of the linear interpolation (its share of the error falls only linearly with the angle).
+// The largest angle an edge may span in a dual-paraboloid or tennis-ball map: its chord may stray up to
+// one of the map's largest texels, and the edge never spans more than kMaxWarpEdgeAngle, which bounds
+// the error of the linear interpolation (its share of the error falls only linearly with the angle)
+// in small maps.
 double warpEdgeAngle(const envmap::MapLayout& layout);
-inline constexpr double kMaxWarpEdgeAngle = 0.35; // radians, 20°
+inline constexpr double kMaxWarpEdgeAngle = 0.6; // radians, 34°: binds below n = 128
 
 // Splits edges of `mesh` (placed by `world`) at their midpoints until every edge spans at most
 // tolerance.maxAngle seen from tolerance.centre, or is shorter than tolerance.minLength. Whether an edge

@@ -111,8 +111,9 @@ protected:
 
 // With meshes split to a fixed fraction of their own size (edges at most 1/16 of the bounding-box
 // diagonal, so the floor's edges under the ball still spanned up to ~80°) this scene measured an RMSE of
-// 0.065 (dual paraboloid) and 0.078 (tennis ball); split by the angle edges span from the capture point it
-// measures about 0.005 and 0.002. The bound sits well below the old errors and well above the new.
+// 0.065 (dual paraboloid) and 0.078 (tennis ball); split until a chord strays at most one texel it
+// measures about 0.009 and 0.003 (half a texel: 0.005 and 0.002). The bound sits well below the old
+// errors and well above the new.
 constexpr double kMaxRmse = 0.02;
 
 TEST_F(ReflectorFill, DirectParaboloidMatchesResampledNearLargeTriangles) {
