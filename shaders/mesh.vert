@@ -3,10 +3,13 @@
 // reflection, but vWorld stays unreflected: lighting is mirrored, not recomputed at the mirrored place.
 //
 // With ENVMAP_WARP defined this is the environment pass's "direct" fill: the camera-relative origin is
-// the capture point, and the position is warped into a dual-paraboloid or tennis-ball component
-// (envmap_warp.glsl); lighting is unchanged.
+// the capture point, and the (reflected) position is warped into a dual-paraboloid or tennis-ball
+// component (envmap_warp.glsl); lighting is unchanged. The warp has no projection to give an oblique near
+// plane, so a mirror's reflection is cut at the mirror by clip distance 0 instead (uClipPlane, in
+// reflected camera-relative coordinates; the caller enables GL_CLIP_DISTANCE0 when it is used).
 #ifdef ENVMAP_WARP
 #include "envmap_warp.glsl"
+uniform vec4 uClipPlane;
 #endif
 
 layout(location = 0) in vec3 aPosition;
@@ -28,7 +31,9 @@ void main() {
     vNormal = uNormalMatrix * aNormal;
     vUv = aUv;
 #ifdef ENVMAP_WARP
-    gl_Position = envmapWarp(world.xyz);
+    vec4 drawn = uReflection * world;
+    gl_Position = envmapWarp(drawn.xyz);
+    gl_ClipDistance[0] = dot(uClipPlane, drawn);
 #else
     gl_Position = uViewProjection * (uReflection * world);
 #endif

@@ -685,9 +685,12 @@ ComponentInfo reflectorGroup() {
         {QStringLiteral("Always"), QStringLiteral("When something it sees changes"), QStringLiteral("Once")},
         std::array{ReflectorUpdate::Always, ReflectorUpdate::OnChange, ReflectorUpdate::Once},
         in(&NodeData::reflector, &R::update)));
-    c.properties.push_back(integer<NodeData>(QStringLiteral("reflector.mirrorDepth"),
-                                             QStringLiteral("Mirror depth in the map"),
-                                             in(&NodeData::reflector, &R::mirrorDepth), {0, 16}, {}));
+    c.properties.push_back(integer<NodeData>(
+        QStringLiteral("reflector.mirrorDepth"), QStringLiteral("Mirror depth in the map"),
+        in(&NodeData::reflector, &R::mirrorDepth), {0, 16}, {}, {},
+        QStringLiteral(
+            "How many levels of planar mirrors reflect inside the environment map, mirrors seen in "
+            "mirrors included (every fill); 0 shows them with their own material")));
     return c;
 }
 

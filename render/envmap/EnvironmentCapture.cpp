@@ -53,10 +53,12 @@ void allocateArray(GLuint texture, int width, int height, GLenum format, bool mi
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
 }
 
+// Depth and 8 stencil bits: planar mirrors inside the map nest their reflections in the stencil buffer, as
+// the main pass's do.
 gl::Renderbuffer makeDepth(int width, int height) {
     gl::Renderbuffer depth = gl::makeRenderbuffer();
     glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
     return depth;
 }
@@ -84,6 +86,7 @@ public:
         glGetIntegerv(GL_DEPTH_FUNC, &m_depthFunc);
         glGetBooleanv(GL_DEPTH_WRITEMASK, &m_depthMask);
         glGetBooleanv(GL_COLOR_WRITEMASK, m_colorMask);
+        glGetIntegerv(GL_STENCIL_WRITEMASK, &m_stencilMask);
         for (std::size_t i = 0; i < kCaps.size(); ++i)
             m_enabled[i] = glIsEnabled(kCaps[i]);
     }
@@ -94,6 +97,7 @@ public:
         glDepthFunc(static_cast<GLenum>(m_depthFunc));
         glDepthMask(m_depthMask);
         glColorMask(m_colorMask[0], m_colorMask[1], m_colorMask[2], m_colorMask[3]);
+        glStencilMask(static_cast<GLuint>(m_stencilMask));
         for (std::size_t i = 0; i < kCaps.size(); ++i)
             (m_enabled[i] ? glEnable : glDisable)(kCaps[i]);
     }
@@ -101,15 +105,16 @@ public:
     SavedState& operator=(const SavedState&) = delete;
 
 private:
-    static constexpr std::array<GLenum, 5> kCaps{GL_DEPTH_TEST, GL_CULL_FACE, GL_BLEND, GL_SCISSOR_TEST,
-                                                 GL_STENCIL_TEST};
+    static constexpr std::array<GLenum, 6> kCaps{GL_DEPTH_TEST,   GL_CULL_FACE,    GL_BLEND,
+                                                 GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_CLIP_DISTANCE0};
     GLint m_viewport[4] = {};
     GLfloat m_clear[4] = {};
     GLint m_frontFace = GL_CCW;
     GLint m_depthFunc = GL_LESS;
     GLboolean m_depthMask = GL_TRUE;
     GLboolean m_colorMask[4] = {};
-    std::array<GLboolean, 5> m_enabled{};
+    GLint m_stencilMask = 0xFF;
+    std::array<GLboolean, kCaps.size()> m_enabled{};
 };
 
 // A clean target for a callback: whatever the previous callback left enabled is off again.
@@ -119,13 +124,16 @@ void prepareTarget(int width, int height, const glm::dvec3& background) {
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
+    glDisable(GL_CLIP_DISTANCE0);
     glFrontFace(GL_CCW);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilMask(0xFF);
     glClearColor(float(background.r), float(background.g), float(background.b), 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 } // namespace
 
@@ -152,7 +160,8 @@ Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSettings& set
 
     capture.m_map = gl::makeTexture();
     capture.m_depth = makeDepth(layout.width, layout.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, capture.m_depth.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              capture.m_depth.id());
     if (settings.type == MapType::Cube) {
         allocateCube(capture.m_map.id(), layout.width, settings.colorFormat, settings.mipmaps);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
@@ -170,7 +179,7 @@ Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSettings& set
         capture.m_cube = gl::makeTexture();
         allocateCube(capture.m_cube.id(), size, settings.colorFormat, settings.mipmaps);
         capture.m_cubeDepth = makeDepth(size, size);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                                   capture.m_cubeDepth.id());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
                                capture.m_cube.id(), 0);
@@ -211,7 +220,7 @@ void EnvironmentCapture::renderCube(GLuint cube, int size, GLuint depth, const C
                                     const DrawCubeFace& drawFace) {
     assert(drawFace && "EnvironmentCapture::update(): cube faces need a drawFace callback");
     glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth);
     for (int face = 0; face < 6; ++face) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id()); // the callback may have bound another
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
@@ -224,7 +233,7 @@ void EnvironmentCapture::renderCube(GLuint cube, int size, GLuint depth, const C
 void EnvironmentCapture::renderWarped(const CaptureView& view, const DrawWarped& drawWarped) {
     assert(drawWarped && "EnvironmentCapture::update(): the direct fill needs a drawWarped callback");
     glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_depth.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, m_depth.id());
     for (int component = 0; component < 2; ++component) {
         glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
         glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m_map.id(), 0, component);
@@ -265,7 +274,10 @@ void EnvironmentCapture::resample(GLuint cubeTexture, const glm::dmat3& cubeFrom
     gl::FramebufferBinding keepBinding;
     SavedState keepState;
     glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
+    // The map's own layer before the clear: the colour attachment left from update() is a face of the
+    // very cube about to be read, and clearing that wiped its level 0.
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m_map.id(), 0, 0);
     prepareTarget(m_layout.width, m_layout.height, glm::dvec3(0.0)); // every texel is written below
     glDisable(GL_DEPTH_TEST);
     m_resample.use();

@@ -48,11 +48,12 @@ void setWarpUniforms(const gl::Program& program, const WarpPass& pass);
 //
 // The map: cube → one GL_TEXTURE_CUBE_MAP, n×n faces; dual paraboloid / tennis ball → one
 // GL_TEXTURE_2D_ARRAY with 2 layers (the two components), n×n or n×3n with the guard band inside. A
-// depth renderbuffer comes with each render target. The scene itself is drawn by callbacks, which find
-// the target bound and cleared, the viewport set, depth test on (GL_LESS, writes on), culling, blending,
-// scissor and stencil tests off and the front face CCW; they may change any state and need not restore
-// it. update() and resample() put back the framebuffer binding, viewport, clear colour, those enables,
-// front face, depth function and write masks they found; program, VAO and texture bindings they do not.
+// depth renderbuffer with 8 stencil bits comes with each render target. The scene itself is drawn by
+// callbacks, which find the target bound and cleared (stencil to 0), the viewport set, depth test on
+// (GL_LESS, writes on), culling, blending, scissor and stencil tests and clip distance 0 off and the
+// front face CCW; they may change any state and need not restore it. update() and resample() put back
+// the framebuffer binding, viewport, clear colour, those enables, front face, depth function and write
+// masks they found; program, VAO and texture bindings, stencil function and operations they do not.
 class EnvironmentCapture {
 public:
     using DrawCubeFace =

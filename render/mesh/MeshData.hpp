@@ -31,4 +31,9 @@ struct Bounds {
 
 Bounds computeBounds(const MeshData& mesh);
 
+// Whether the mesh is a closed, consistently wound surface: every edge, by the positions of its end
+// points (vertices duplicated for normals or uvs count as one), is run once in each direction by exactly
+// two triangles. Seen from outside, such a mesh never shows a back face.
+bool isClosed(const MeshData& mesh);
+
 } // namespace speculum::render

@@ -1,31 +1,72 @@
 #pragma once
 
 #include "render/FrameInput.hpp"
+#include "render/envmap/EnvironmentCapture.hpp"
 #include "render/gl/Program.hpp"
 #include "render/passes/MainPass.hpp"
+#include "render/passes/WarpMeshes.hpp"
 
 #include <glm/mat4x4.hpp>
+#include <unordered_map>
 
 namespace speculum::render::passes {
 
-// The programs planar mirrors need inside an environment map's cube faces.
+// The programs planar mirrors need inside one kind of environment target: for cube faces shadow.vert +
+// flat.frag (masks) and mesh.vert + mirror.frag (surfaces); for the direct fill their ENVMAP_WARP variants.
 struct EnvironmentMirrorPrograms {
-    const gl::Program* flat = nullptr;   // shadow.vert + flat.frag: the mirror masks
-    const gl::Program* mirror = nullptr; // mesh.vert + mirror.frag: the mirror surfaces
+    const gl::Program* flat = nullptr;   // the mirror masks
+    const gl::Program* mirror = nullptr; // the mirror surfaces
 };
 
-// One cube face of the reflector's environment (pass 1), with the planar mirrors it sees reflecting the
-// scene one level deep (`mirrorDepth` ≥ 1; deeper mirrors, and every mirror when it is 0, show their own
-// material). `env` is the scene as the environment sees it (camera at the capture point); near, far and
-// the face's `view` (cubeFaceView) make up its capture-relative view-projection; `size` is its texel count.
+// What the environment pass remembers of each mesh while the mesh lives: its bounds and whether it is
+// closed (isClosed). Items of closed meshes seen from outside are drawn with their back faces culled:
+// with small, many-sided objects an environment map's cost is mostly triangles, not texels.
+class MeshFacts {
+public:
+    struct Facts {
+        Bounds bounds;
+        bool closed = false;
+    };
+    const Facts& get(const MeshHandle& mesh);
+    // Forgets meshes nobody holds any more.
+    void purge();
+
+private:
+    struct Entry {
+        std::weak_ptr<const MeshData> owner;
+        Facts facts;
+    };
+    std::unordered_map<const MeshData*, Entry> m_entries;
+};
+
+// One target of the reflector's environment (pass 1): a cube face, or a component of the direct fill.
+struct EnvironmentTarget {
+    // A cube face (warp is null): its view (envmap::cubeFaceView), near and far, its size in texels.
+    glm::dmat4 faceView{1.0};
+    double near = 0.01;
+    double far = 100.0;
+    int size = 1;
+    // The direct fill: the component's warp, and the cache that splits the meshes for each (virtual)
+    // capture point they are seen from (edges up to warpAngle; shorter than `near` never split).
+    const envmap::WarpPass* warp = nullptr;
+    WarpMeshes* warpMeshes = nullptr;
+    double warpAngle = 0.3;
+    MeshFacts* meshFacts = nullptr; // null: every face of every item is drawn
+};
+
+// Draws the environment `env` (the scene without the reflector, camera at the capture point) into the
+// bound target, with the planar mirrors it sees reflecting the scene up to `mirrorDepth` levels deep
+// (mirrors in mirrors included; deeper mirrors, and every mirror when it is 0, show their own material).
+// context.program draws the scene: mesh.vert + mesh.frag, or its ENVMAP_WARP variant for a warp.
 //
-// The capture target has no stencil buffer, so each mirror is masked through depth: with depth cleared to
-// 0, the mirror rectangle writes depth 1 on its own pixels, and the reflected scene (reflection matrix,
-// oblique near plane on the mirror) can pass the depth test only there. Then depth is cleared to 1, the
-// mirror surfaces are blended over their reflections first (dual-source, as in the stencil technique),
-// and the rest of the scene is drawn with ordinary depth testing, hiding what lies behind a mirror.
-void drawEnvironmentFace(const FrameInput& env, double near, double far, const glm::dmat4& view, int size,
-                         int mirrorDepth, const EnvironmentMirrorPrograms& programs,
-                         MainPassContext& context);
+// The stencil technique of the main pass, nested the same way: a mirror's visible pixels (those of its
+// parent's stencil level whose depth test passes) are marked one level deeper and reset to the background
+// at the far plane, the scene reflected in it is drawn there, then its own mirrors, then its surface is
+// blended over its reflection, restoring its depth and stepping its pixels back to the parent's level.
+// A cube face cuts a reflection at its mirror with Lengyel's oblique near plane; the warp, which has no
+// projection matrix, with clip distance 0. Reflected points lie up to (2·depth + 1)·far away, so each level
+// gets a far distance that deep. At most kMaxMirrorViews mirror views per target.
+void drawEnvironmentTarget(const FrameInput& env, const EnvironmentTarget& target, int mirrorDepth,
+                           const EnvironmentMirrorPrograms& programs, MainPassContext& context);
 
 } // namespace speculum::render::passes

@@ -180,18 +180,23 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
     drawStencilMirrorDepths(input, view, ctx);
     const gl::Program& p = ctx.program;
     beginLitView(input, view, p, ctx);
-    for (const DrawItem& item : input.items) {
+    for (std::size_t i = 0; i < input.items.size(); ++i) {
+        const DrawItem& item = input.items[i];
         if (!item.mesh || outsideView(ctx.meshes.get(item.mesh).bounds, item.world, input, view))
             continue;
+        const bool cull = i < ctx.cullBackFaces.size() && ctx.cullBackFaces[i];
+        (cull ? glEnable : glDisable)(GL_CULL_FACE);
         setMaterial(item.material, p, ctx);
         drawLitMesh(item.mesh, item.world, input, p, ctx);
     }
+    if (!ctx.cullBackFaces.empty())
+        glDisable(GL_CULL_FACE);
     for (std::size_t i = 0; i < input.mirrors.size(); ++i) {
         if ((i < view.skipMirror.size() && view.skipMirror[i]) ||
             outsideView(ctx.meshes.get(ctx.unitPlane).bounds, mirrorRectangle(input.mirrors[i]), input, view))
             continue;
         setMaterial(input.mirrors[i].material, p, ctx);
-        drawLitMesh(ctx.unitPlane, mirrorRectangle(input.mirrors[i]), input, p, ctx);
+        drawLitMesh(ctx.mirrorMesh(i), mirrorRectangle(input.mirrors[i]), input, p, ctx);
     }
     if (input.reflector && input.reflector->mesh &&
         !(ctx.drawReflector && ctx.drawReflector(input, view, ctx))) {

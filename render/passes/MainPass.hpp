@@ -38,6 +38,16 @@ struct MainPassContext {
     MeshHandle unitPlane;        // the mirror rectangle: [-1,1]² in XZ
     bool mirroredView = false;   // set by beginLitView: the view's reflection flips the winding
     DrawReflector drawReflector; // empty: the reflector is drawn with its material
+    // Per mirror (by index), a mesh drawn instead of unitPlane where set: the environment's direct fill
+    // splits each rectangle for the capture point it is seen from.
+    std::vector<MeshHandle> mirrorMeshes;
+    // Per item (by index), true where the view can never see the item's back faces (a closed mesh seen from
+    // outside): drawn with them culled. The environment pass sets it; empty draws every face.
+    std::vector<bool> cullBackFaces;
+
+    const MeshHandle& mirrorMesh(std::size_t mirror) const {
+        return mirror < mirrorMeshes.size() && mirrorMeshes[mirror] ? mirrorMeshes[mirror] : unitPlane;
+    }
     // Draws a mirror rectangle's depth (uModelLightClip); null: stencil mirrors lay no depth first.
     const gl::Program* depthOnlyProgram = nullptr;
 };

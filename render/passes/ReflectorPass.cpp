@@ -48,6 +48,14 @@ Status ReflectorPass::init() {
     auto surface = gl::Program::build("mesh.vert", "reflector.frag");
     if (!surface)
         return Error{surface.error()};
+    auto warpFlat = gl::Program::build("shadow.vert", "flat.frag", "#define ENVMAP_WARP 1");
+    if (!warpFlat)
+        return Error{warpFlat.error()};
+    auto warpMirror = gl::Program::build("mesh.vert", "mirror.frag", "#define ENVMAP_WARP 1");
+    if (!warpMirror)
+        return Error{warpMirror.error()};
+    m_warpFlat = std::move(*warpFlat);
+    m_warpMirror = std::move(*warpMirror);
     m_warp = std::move(*warp);
     m_surface = std::move(*surface);
     return Done{};
@@ -79,29 +87,31 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
     MainPassContext faces = withProgram(context.program, context, context.unitPlane);
     // The map frame is the world's (CaptureView::mapFromWorld is the identity), so a face's view-projection
     // is its projection times its view.
-    auto drawFace = [&](const glm::dmat4&, int face) {
-        drawEnvironmentFace(env, where.near, where.far, envmap::cubeFaceView(face), reflector.resolution,
-                            reflector.mirrorDepth, mirrors, faces);
+    EnvironmentTarget face;
+    face.near = where.near;
+    face.far = where.far;
+    const envmap::CaptureSettings& settings = m_capture->settings();
+    face.size = settings.cubeResolution > 0 ? settings.cubeResolution : settings.resolution;
+    face.meshFacts = &m_meshFacts;
+    auto drawFace = [&](const glm::dmat4&, int index) {
+        face.faceView = envmap::cubeFaceView(index);
+        drawEnvironmentTarget(env, face, reflector.mirrorDepth, mirrors, faces);
     };
 
-    // The direct fill draws subdivided copies of the meshes (straight edges turn into curves).
-    std::optional<FrameInput> fine;
-    MeshHandle finePlane;
-    if (m_capture->settings().type != envmap::MapType::Cube &&
-        m_capture->settings().fill == envmap::FillMethod::Direct) {
-        fine = env;
-        for (DrawItem& item : fine->items)
-            item.mesh = m_warpMeshes.get(item.mesh);
-        finePlane = m_warpMeshes.get(context.unitPlane);
-    }
-    MainPassContext warped = withProgram(m_warp, context, finePlane);
+    // The direct fill draws copies of the meshes split until no edge spans more than a few degrees seen
+    // from the (virtual) capture point: straight edges turn into curves.
+    MainPassContext warped = withProgram(m_warp, context, context.unitPlane);
+    m_warpMeshes.begin();
     auto drawWarped = [&](const envmap::WarpPass& pass) {
-        m_warp.use();
-        envmap::setWarpUniforms(m_warp, pass);
-        ViewSetup setup;
-        setup.eye = where.centre;
-        setup.flipWinding = pass.warp.mirrored; // gl_FrontFacing must still name the outside of surfaces
-        drawMainPass(*fine, setup, warped);
+        EnvironmentTarget component;
+        component.near = where.near;
+        component.far = where.far;
+        component.size = m_capture->layout().width;
+        component.warp = &pass;
+        component.warpMeshes = &m_warpMeshes;
+        component.warpAngle = warpEdgeAngle(m_capture->layout());
+        component.meshFacts = &m_meshFacts;
+        drawEnvironmentTarget(env, component, reflector.mirrorDepth, {&m_warpFlat, &m_warpMirror}, warped);
     };
     m_capture->update(view, drawFace, drawWarped);
     return Done{};

@@ -16,9 +16,9 @@ namespace speculum::render::passes {
 // Pass 1 (capture): the scene without the reflector, lit and shadowed by the main pass's own drawing,
 // from the capture point into the reflector's environment map: six cube faces (model matrices relative
 // to the capture point, composed in double), or for the non-linear maps the direct warp (mesh.vert with
-// ENVMAP_WARP, meshes subdivided) or the resampling of such a cube. Planar mirrors in cube faces reflect
-// the scene one level deep (reflector.mirrorDepth ≥ 1); in the direct warp they show their own material.
-// The map frame is aligned with the world axes.
+// ENVMAP_WARP, meshes split by the angle their edges span) or the resampling of such a cube. Planar
+// mirrors reflect the scene in every fill, nested up to reflector.mirrorDepth levels
+// (drawEnvironmentTarget). The map frame is aligned with the world axes.
 // Pass 2 (drawSurface): the reflector with shaders/reflector.frag, in any view the main pass draws
 // (the camera's or a mirror's, whose virtual eye it uses).
 class ReflectorPass {
@@ -27,7 +27,7 @@ public:
     Status init();
 
     // Renders the map for `input.reflector` (re-creating its textures when the map settings changed).
-    // Planar mirrors in cube faces reflect one level deep with `mirrors` (see drawEnvironmentFace).
+    // `mirrors` are the cube faces' mirror programs (the warp's variants are the pass's own).
     Status capture(const FrameInput& input, const EnvmapCapture& where, MainPassContext& context,
                    const EnvironmentMirrorPrograms& mirrors = {});
 
@@ -45,15 +45,21 @@ public:
     // The map itself, for tests and tools (empty before the first capture).
     const envmap::EnvironmentCapture* map() const { return m_capture ? &*m_capture : nullptr; }
 
-    void purge() { m_warpMeshes.purge(); }
+    void purge() {
+        m_warpMeshes.purge();
+        m_meshFacts.purge();
+    }
 
 private:
     std::optional<envmap::EnvironmentCapture> m_capture;
     std::uint64_t m_settingsKey = 0;
     glm::dvec3 m_centre{0.0}; // the capture point of the map, world space
     gl::Program m_warp;       // mesh.vert with ENVMAP_WARP + mesh.frag
+    gl::Program m_warpFlat;   // shadow.vert with ENVMAP_WARP + flat.frag: mirror masks in the warp
+    gl::Program m_warpMirror; // mesh.vert with ENVMAP_WARP + mirror.frag: mirror surfaces in the warp
     gl::Program m_surface;    // mesh.vert + reflector.frag
     WarpMeshes m_warpMeshes;
+    MeshFacts m_meshFacts;
 };
 
 } // namespace speculum::render::passes

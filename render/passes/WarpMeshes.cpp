@@ -1,90 +1,205 @@
 #include "render/passes/WarpMeshes.hpp"
 
+#include "render/envmap/Layout.hpp"
+#include "render/plan/Hasher.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <vector>
 
 namespace speculum::render::passes {
 
 namespace {
 
-constexpr double kEdgeFraction = 1.0 / 16.0; // of the bounding-box diagonal
-constexpr int kMaxLevels = 5;                // 1024 triangles per original triangle at most
-constexpr std::size_t kFineEnough = 200000;  // triangles: dense meshes are left as they are
+// Angle between two directions, accurate for small angles too (acos of a dot product is not).
+double angleBetween(const glm::dvec3& u, const glm::dvec3& v) {
+    return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+}
 
-int levelsFor(const MeshData& mesh) {
-    if (mesh.triangleCount() == 0 || mesh.triangleCount() >= kFineEnough)
-        return 0;
-    const Bounds b = computeBounds(mesh);
-    const double diagonal = glm::length(glm::dvec3(b.max) - glm::dvec3(b.min));
-    double longest = 0.0;
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
-        for (int e = 0; e < 3; ++e) {
-            const glm::vec3 a = mesh.positions[mesh.indices[t + e]];
-            const glm::vec3 c = mesh.positions[mesh.indices[t + (e + 1) % 3]];
-            longest = std::max(longest, double(glm::length(a - c)));
+class Splitter {
+public:
+    Splitter(const MeshData& mesh, const glm::dmat4& world, const WarpTolerance& tolerance)
+        : m_world(world)
+        , m_tolerance(tolerance)
+        , m_hasUv(mesh.uvs.size() == mesh.positions.size()) {
+        m_out.positions = mesh.positions;
+        m_out.normals = mesh.normals;
+        if (m_hasUv)
+            m_out.uvs = mesh.uvs;
+        m_relative.reserve(mesh.positions.size());
+        for (const glm::vec3& p : mesh.positions)
+            m_relative.push_back(relative(p));
+    }
+
+    // False when the triangle budget ran out.
+    bool run(const MeshData& mesh, std::size_t maxTriangles) {
+        std::vector<std::array<std::uint32_t, 3>> stack;
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            stack.push_back({mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]});
+            while (!stack.empty()) {
+                const auto [a, b, c] = stack.back();
+                stack.pop_back();
+                if (m_out.indices.size() / 3 + stack.size() > maxTriangles)
+                    return false;
+                split(a, b, c, stack);
+            }
         }
-    if (!(diagonal > 0.0) || longest <= diagonal * kEdgeFraction)
-        return 0;
-    int levels = static_cast<int>(std::ceil(std::log2(longest / (diagonal * kEdgeFraction))));
-    levels = std::clamp(levels, 0, kMaxLevels);
-    // Keep the copy under the dense-mesh size.
-    while (levels > 0 && (mesh.triangleCount() << (2 * levels)) > kFineEnough * 4)
-        --levels;
-    return levels;
+        return true;
+    }
+
+    MeshData take() { return std::move(m_out); }
+
+private:
+    glm::dvec3 relative(const glm::vec3& p) const {
+        return glm::dvec3(m_world * glm::dvec4(glm::dvec3(p), 1.0)) - m_tolerance.centre;
+    }
+
+    // Depends on the two end points' positions only, symmetrically (the cross product and the dot product
+    // of swapped arguments round alike), so both triangles of an edge decide the same.
+    bool needsSplit(std::uint32_t a, std::uint32_t b) const {
+        const glm::dvec3& u = m_relative[a];
+        const glm::dvec3& v = m_relative[b];
+        return glm::length(u - v) > m_tolerance.minLength && angleBetween(u, v) > m_tolerance.maxAngle;
+    }
+
+    // The midpoint vertex of edge a-b, shared by both triangles of the edge.
+    std::uint32_t midpoint(std::uint32_t a, std::uint32_t b) {
+        const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+        const auto found = m_midpoints.find(key);
+        if (found != m_midpoints.end())
+            return found->second;
+        const auto index = static_cast<std::uint32_t>(m_out.positions.size());
+        // 0.5·(a + b) rounds the same for (b, a): vertices duplicated at one position (a box's corners, one
+        // per face) get midpoints at one position too, so the faces stay closed.
+        const glm::vec3 p = 0.5f * (m_out.positions[a] + m_out.positions[b]);
+        const glm::vec3 n = m_out.normals[a] + m_out.normals[b];
+        const float length = glm::length(n);
+        m_out.positions.push_back(p);
+        m_out.normals.push_back(length > 0.0f ? n / length : m_out.normals[a]);
+        if (m_hasUv)
+            m_out.uvs.push_back(0.5f * (m_out.uvs[a] + m_out.uvs[b]));
+        m_relative.push_back(relative(p));
+        m_midpoints.emplace(key, index);
+        return index;
+    }
+
+    void split(std::uint32_t a, std::uint32_t b, std::uint32_t c,
+               std::vector<std::array<std::uint32_t, 3>>& out) {
+        // Rotate (keeping the winding) so that the split edges come first: ab, then bc.
+        std::array<std::uint32_t, 3> v{a, b, c};
+        std::array<bool, 3> s{needsSplit(a, b), needsSplit(b, c), needsSplit(c, a)};
+        const int count = int(s[0]) + int(s[1]) + int(s[2]);
+        if (count == 0) {
+            m_out.indices.insert(m_out.indices.end(), {a, b, c});
+            return;
+        }
+        for (int turn = 0; turn < 3; ++turn) {
+            const bool canonical = count == 1 ? s[0] : count == 2 ? (s[0] && s[1]) : true;
+            if (canonical)
+                break;
+            std::rotate(v.begin(), v.begin() + 1, v.end());
+            std::rotate(s.begin(), s.begin() + 1, s.end());
+        }
+        const auto [p, q, r] = v;
+        const std::uint32_t mpq = midpoint(p, q);
+        if (count == 1) {
+            out.push_back({p, mpq, r});
+            out.push_back({mpq, q, r});
+            return;
+        }
+        const std::uint32_t mqr = midpoint(q, r);
+        if (count == 2) {
+            out.push_back({mpq, q, mqr});
+            // The quad p, mpq, mqr, r: cut along its shorter diagonal (in angle, the measure that matters).
+            if (angleBetween(m_relative[p], m_relative[mqr]) <=
+                angleBetween(m_relative[mpq], m_relative[r])) {
+                out.push_back({p, mpq, mqr});
+                out.push_back({p, mqr, r});
+            } else {
+                out.push_back({p, mpq, r});
+                out.push_back({mpq, mqr, r});
+            }
+            return;
+        }
+        const std::uint32_t mrp = midpoint(r, p);
+        out.push_back({p, mpq, mrp});
+        out.push_back({mpq, q, mqr});
+        out.push_back({mrp, mqr, r});
+        out.push_back({mpq, mqr, mrp});
+    }
+
+    glm::dmat4 m_world;
+    WarpTolerance m_tolerance;
+    bool m_hasUv;
+    MeshData m_out;
+    std::vector<glm::dvec3> m_relative; // per output vertex: world position − centre
+    std::unordered_map<std::uint64_t, std::uint32_t> m_midpoints;
+};
+
+std::uint64_t entryKey(const MeshData* mesh, const glm::dmat4& world, const WarpTolerance& t) {
+    Hasher h;
+    h.add(mesh);
+    h.add(world);
+    h.add(t.centre);
+    h.add(t.maxAngle);
+    h.add(t.minLength);
+    return h.value;
 }
 
 } // namespace
 
-MeshData subdivideUniformly(const MeshData& mesh, int levels) {
-    const int k = 1 << levels;
-    MeshData out;
-    const bool hasUv = mesh.uvs.size() == mesh.positions.size();
-    const std::size_t perTriangle = static_cast<std::size_t>((k + 1) * (k + 2) / 2);
-    out.positions.reserve(mesh.triangleCount() * perTriangle);
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
-        const auto base = static_cast<std::uint32_t>(out.positions.size());
-        // Row i (0..k) from vertex 0 towards the edge 1-2, j (0..i) along the row towards vertex 2.
-        for (int i = 0; i <= k; ++i)
-            for (int j = 0; j <= i; ++j) {
-                const float w1 = float(i - j) / float(k), w2 = float(j) / float(k), w0 = 1.0f - w1 - w2;
-                out.positions.push_back(w0 * mesh.positions[i0] + w1 * mesh.positions[i1] +
-                                        w2 * mesh.positions[i2]);
-                glm::vec3 n = w0 * mesh.normals[i0] + w1 * mesh.normals[i1] + w2 * mesh.normals[i2];
-                const float length = glm::length(n);
-                out.normals.push_back(length > 0.0f ? n / length : mesh.normals[i0]);
-                if (hasUv)
-                    out.uvs.push_back(w0 * mesh.uvs[i0] + w1 * mesh.uvs[i1] + w2 * mesh.uvs[i2]);
-            }
-        auto at = [&](int i, int j) { return base + static_cast<std::uint32_t>(i * (i + 1) / 2 + j); };
-        for (int i = 0; i < k; ++i)
-            for (int j = 0; j <= i; ++j) {
-                out.indices.insert(out.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-                if (j < i)
-                    out.indices.insert(out.indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-            }
-    }
-    return out;
+double warpEdgeAngle(const envmap::MapLayout& layout) {
+    // The largest texel angle: a paraboloid's centre (nominal radius 1 over (n − 2g)/2 texels, dθ/dr = 2
+    // there), a tennis ball's equator (90° over n − 2g texels). A chord of an edge spanning θ strays
+    // θ²/8; one texel allows θ = √(8 · texel angle). Half a texel (the rasterizer's own snapping) took
+    // ~60% more triangles, and on llvmpipe a small triangle costs whole 4×4 blocks of fragments: split
+    // that finely, the benchmark scene's floor shaded 2.4 fragments for each texel it covers at n = 128.
+    const double inner = layout.width - 2.0 * layout.guard;
+    const double texel = layout.type == envmap::MapType::DualParaboloid ? 4.0 / inner : 1.5707963 / inner;
+    return std::min(kMaxWarpEdgeAngle, std::sqrt(8.0 * texel));
 }
 
-MeshHandle WarpMeshes::get(const MeshHandle& mesh) {
+MeshData subdivideForWarp(const MeshData& mesh, const glm::dmat4& world, const WarpTolerance& tolerance,
+                          std::size_t maxTriangles) {
+    Splitter splitter(mesh, world, tolerance);
+    if (splitter.run(mesh, maxTriangles))
+        return splitter.take();
+    // Geometry crowding the capture point would need more: split it to a coarser angle everywhere
+    // rather than stop half way (which would leave cracks).
+    WarpTolerance coarser = tolerance;
+    coarser.maxAngle = tolerance.maxAngle * 2.0;
+    if (coarser.maxAngle > 3.2)
+        return mesh;
+    return subdivideForWarp(mesh, world, coarser, maxTriangles);
+}
+
+MeshHandle WarpMeshes::get(const MeshHandle& mesh, const glm::dmat4& world, const WarpTolerance& tolerance) {
     if (!mesh)
         return mesh;
-    auto it = m_entries.find(mesh.get());
-    if (it != m_entries.end() && !it->second.owner.expired())
+    const std::uint64_t key = entryKey(mesh.get(), world, tolerance);
+    auto it = m_entries.find(key);
+    if (it != m_entries.end() && it->second.owner.lock() == mesh && it->second.world == world &&
+        it->second.tolerance.centre == tolerance.centre &&
+        it->second.tolerance.maxAngle == tolerance.maxAngle &&
+        it->second.tolerance.minLength == tolerance.minLength) {
+        it->second.generation = m_generation;
         return it->second.fine ? it->second.fine : mesh;
-    const int levels = levelsFor(*mesh);
-    MeshHandle fine =
-        levels == 0 ? mesh : std::make_shared<const MeshData>(subdivideUniformly(*mesh, levels));
+    }
+    MeshData fine = subdivideForWarp(*mesh, world, tolerance);
+    MeshHandle handle;
+    if (fine.triangleCount() != mesh->triangleCount())
+        handle = std::make_shared<const MeshData>(std::move(fine));
     // A copy that is the mesh itself must not keep it alive: hold it weakly through the owner only.
-    m_entries[mesh.get()] = {mesh, levels == 0 ? MeshHandle() : fine};
-    return fine;
+    m_entries[key] = {mesh, handle, world, tolerance, m_generation};
+    return handle ? handle : mesh;
 }
 
 void WarpMeshes::purge() {
-    for (auto it = m_entries.begin(); it != m_entries.end();)
-        it = it->second.owner.expired() ? m_entries.erase(it) : std::next(it);
+    std::erase_if(m_entries, [this](const auto& kv) {
+        return kv.second.owner.expired() || kv.second.generation != m_generation;
+    });
 }
 
 } // namespace speculum::render::passes

@@ -207,11 +207,19 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
                     : "resampled from a " + size + " cube: 6 scene passes + 2 resampling passes") +
                ")";
     }
+    // Mirrors in the map cost a scene draw per mirror view in each face or component they show in.
+    std::string inMap;
+    if (!input.mirrors.empty()) {
+        const int depth = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
+        inMap = depth == 0 ? "; its mirrors show their own material in it (the reflector's mirrorDepth is 0)"
+                           : "; planar mirrors reflect in it up to " + std::to_string(depth) +
+                                 (depth == 1 ? " level" : " levels") + " deep (the reflector's mirrorDepth)";
+    }
     PlannedPass pass;
     pass.kind = PassKind::Envmap;
     pass.target = reflector.name;
     pass.reason = "renders the scene around the reflector, lit and shadowed, from its centre into " + what +
-                  "; the reflector is " + where + "; " + why;
+                  inMap + "; the reflector is " + where + "; " + why;
     plan.passes.push_back(std::move(pass));
 }
 

@@ -223,6 +223,86 @@ TEST_F(ReflectorFrames, MirrorsInTheEnvironmentReflectToTheirDepthBudget) {
         << material.x << " " << material.y << " " << material.z;
 }
 
+// Two mirrors in the ball's environment, for every map and fill. The camera looks at the ball from −Z, so
+// the ball's centre reflects −Z, where mirror A faces it. A reflects the ball's surroundings towards +Z,
+// where mirror B stands behind the ball, turned 45° so that it reflects +X, where a white box stands (large:
+// it is 35 units away in the reflections). So the centre shows A's own grey at mirror depth 0, B (its orange
+// material: an object seen in A) at depth 1, the white box (seen in B seen in A) at depth 2, and still the
+// box at depth 3.
+class ReflectorMirrorDepth : public GlTest, public ::testing::WithParamInterface<Variant> {};
+
+glm::dmat4 mirrorFacing(const glm::dvec3& at, const glm::dvec3& normal) {
+    // Local +Y (the reflective side) onto `normal`; any right-handed frame around it.
+    const glm::dvec3 y = glm::normalize(normal);
+    const glm::dvec3 x =
+        glm::normalize(glm::cross(std::abs(y.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0), y));
+    const glm::dvec3 z = glm::cross(x, y);
+    return glm::dmat4(glm::dvec4(x, 0.0), glm::dvec4(y, 0.0), glm::dvec4(z, 0.0), glm::dvec4(at, 1.0));
+}
+
+TEST_P(ReflectorMirrorDepth, MirrorsInTheMapReflectToTheReflectorsBudget) {
+    FrameInput input = ballInRoom(GetParam().map, GetParam().fill);
+    Mirror a;
+    a.name = "A";
+    a.world = mirrorFacing({0.0, 0.0, -10.0}, {0.0, 0.0, 1.0});
+    a.size = {12.0, 12.0};
+    a.material = emissive({0.5, 0.5, 0.5});
+    a.hasMaterial = true;
+    Mirror b = a;
+    b.name = "B";
+    b.world = mirrorFacing({0.0, 0.0, 8.0}, {1.0, 0.0, -1.0});
+    b.size = {8.0, 8.0};
+    b.material = emissive({1.0, 0.5, 0.0});
+    input.mirrors = {a, b};
+    static const auto box = std::make_shared<const MeshData>(makeBox());
+    input.items.push_back(
+        {"White box",
+         glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(8.0, 0.0, 8.0)), glm::dvec3(1.0, 5.0, 5.0)),
+         box, emissive({1.0, 1.0, 1.0}), false});
+    input.camera.position = {0.0, 0.0, -3.2};
+    input.camera.target = {0.0, 0.0, 0.0};
+    input.camera.up = {0.0, 1.0, 0.0};
+    auto centre = [&](int depth) {
+        input.reflector->mirrorDepth = depth;
+        const glm::dvec3 c(renderImage(input, 64, 64).at(32, 32));
+        bool ranEnvmap = false;
+        for (const auto& p : lastReport().plan.passes)
+            ranEnvmap = ranEnvmap || p.kind == PassKind::Envmap;
+        EXPECT_TRUE(ranEnvmap) << "depth " << depth << ": a new mirror depth must render the map again";
+        return c;
+    };
+    const glm::dvec3 expected[] = {{0.5, 0.5, 0.5}, {1.0, 0.5, 0.0}, {1.0, 1.0, 1.0}, {1.0, 1.0, 1.0}};
+    for (int depth = 0; depth < 4; ++depth) {
+        const glm::dvec3 got = centre(depth);
+        EXPECT_LT(glm::length(got - expected[depth]), 0.1) << GetParam().name << " depth " << depth << ": ("
+                                                           << got.x << ", " << got.y << ", " << got.z << ")";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllMaps, ReflectorMirrorDepth,
+    ::testing::Values(Variant{ReflectorMap::Cube, ReflectorFill::Resampled, "cube"},
+                      Variant{ReflectorMap::DualParaboloid, ReflectorFill::Direct, "paraboloidDirect"},
+                      Variant{ReflectorMap::DualParaboloid, ReflectorFill::Resampled, "paraboloidResampled"},
+                      Variant{ReflectorMap::TennisBall, ReflectorFill::Direct, "tennisBallDirect"},
+                      Variant{ReflectorMap::TennisBall, ReflectorFill::Resampled, "tennisBallResampled"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST_F(ReflectorFrames, ClosedMeshAroundTheCapturePointKeepsItsInsideFaces) {
+    // The environment pass culls the back faces of closed meshes it sees from outside. A room made of one
+    // closed box around the ball is seen from inside, by its back faces: it must still fill the map.
+    FrameInput input = ballInRoom(ReflectorMap::DualParaboloid, ReflectorFill::Direct);
+    static const auto box = std::make_shared<const MeshData>(makeBox());
+    input.items = {
+        {"Room", glm::scale(glm::dmat4(1.0), glm::dvec3(10.0)), box, emissive({0.2, 0.6, 0.3}), false}};
+    for (ReflectorMap map : {ReflectorMap::Cube, ReflectorMap::DualParaboloid}) {
+        input.reflector->map = map;
+        const glm::dvec3 centre(renderImage(input, 64, 64).at(32, 32));
+        EXPECT_LT(glm::length(centre - glm::dvec3(0.2, 0.6, 0.3)), 0.05)
+            << centre.x << " " << centre.y << " " << centre.z;
+    }
+}
+
 TEST_F(ReflectorFrames, ParallaxCorrectionMovesNearbyReflectionsWhereTheyBelong) {
     // The ball sits off-centre in a small room (half 3): without correction the walls appear as if seen
     // from the ball's centre; with a box proxy of the room, the reflection at each pixel matches the wall

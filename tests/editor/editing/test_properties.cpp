@@ -191,6 +191,8 @@ TEST(Properties, ReflectorFresnelFillUpdateAndMirrorDepthAreEditable) {
     EXPECT_EQ(d.reflector->mirrorDepth, 3);
     EXPECT_FALSE(depth->set(d, 17).ok());
     EXPECT_EQ(d.reflector->mirrorDepth, 3);
+    EXPECT_TRUE(depth->info.tooltip.contains(QStringLiteral("mirrors seen in mirrors")))
+        << depth->info.tooltip.toStdString();
 }
 
 } // namespace

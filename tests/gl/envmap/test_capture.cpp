@@ -365,6 +365,41 @@ TEST_F(EnvMapCapture, DirectTennisBallHoldsTheSceneInEachDirection) {
     checkMap(MapType::TennisBall, FillMethod::Direct, 64);
 }
 
+TEST_F(EnvMapCapture, ResamplingLeavesTheIntermediateCubeIntact) {
+    // update() renders the six faces and then resamples them: the cube's faces must still hold the scene
+    // afterwards, update after update (resampling once cleared the face still attached to the framebuffer,
+    // which showed from the second update on).
+    for (MapType type : {MapType::DualParaboloid, MapType::TennisBall}) {
+        auto map = EnvironmentCapture::create({type, 32, FillMethod::Resampled});
+        ASSERT_TRUE(map.ok()) << map.error();
+        CaptureView view;
+        view.near = 0.05;
+        view.far = 30.0;
+        for (int update = 0; update < 3; ++update)
+            map->update(view, [&](const glm::dmat4& viewProjection, int) { draw(false, viewProjection); },
+                        {});
+        ASSERT_NE(map->intermediateCube(), 0u);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, map->intermediateCube());
+        for (int face = 0; face < 6; ++face) {
+            std::vector<glm::vec4> texels(32 * 32);
+            glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA, GL_FLOAT, texels.data());
+            int wrong = 0, tested = 0;
+            for (int y = 0; y < 32; y += 3)
+                for (int x = 0; x < 32; x += 3) {
+                    const glm::dvec3 d = cubeDirection(face, {(x + 0.5) / 32.0, (y + 0.5) / 32.0});
+                    if (!awayFromEdges(d, 0.15))
+                        continue;
+                    ++tested;
+                    if (glm::length(glm::dvec3(texels[std::size_t(y) * 32 + x]) - expectedColor(d)) > 0.01)
+                        ++wrong;
+                }
+            EXPECT_GT(tested, 10);
+            EXPECT_EQ(wrong, 0) << mapTypeName(type) << " face " << face << ": " << wrong << " of " << tested;
+        }
+        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    }
+}
+
 TEST_F(EnvMapCapture, UpdateRestoresTheCallersState) {
     GLint viewport[4] = {3, 4, 50, 60};
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);

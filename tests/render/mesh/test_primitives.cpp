@@ -1,6 +1,7 @@
 #include "MeshChecks.hpp"
 #include "render/mesh/MeshRepair.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "render/mesh/Teapot.hpp"
 
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
@@ -179,6 +180,23 @@ TEST(Bounds, EmptyAndNonFinite) {
     const Bounds b = computeBounds(mesh);
     EXPECT_EQ(b.min, glm::vec3(-1.0f, 2.0f, 0.5f));
     EXPECT_EQ(b.max, glm::vec3(1.0f, 5.0f, 3.0f));
+}
+
+TEST(Closure, ClosedMeshesAreRecognised) {
+    // Closed and consistently wound, though their vertices are duplicated for normals, uvs and seams.
+    EXPECT_TRUE(isClosed(makeBox()));
+    EXPECT_TRUE(isClosed(makeSphere(12)));
+    // Open: a plane has a rim; the teapot has the gap under its lid and open spout and handle ends.
+    EXPECT_FALSE(isClosed(makePlane(3)));
+    EXPECT_FALSE(isClosed(makeTeapot(4)));
+    // A box with one triangle turned round is closed but not consistently wound; with one missing, open.
+    MeshData flipped = makeBox();
+    std::swap(flipped.indices[0], flipped.indices[1]);
+    EXPECT_FALSE(isClosed(flipped));
+    MeshData holed = makeBox();
+    holed.indices.resize(holed.indices.size() - 3);
+    EXPECT_FALSE(isClosed(holed));
+    EXPECT_FALSE(isClosed(MeshData{}));
 }
 
 } // namespace

@@ -113,6 +113,20 @@ TEST(ReflectorPlanner, ReflectorSeenOnlyInAMirrorGetsItsEnvmap) {
         if (p.kind == PassKind::Envmap)
             EXPECT_NE(p.reason.find("seen in Mirror"), std::string::npos) << p.reason;
 
+    // The reason says how deep the mirrors reflect inside the map.
+    for (int depth : {0, 1, 3}) {
+        input.reflector->mirrorDepth = depth;
+        for (const auto& p : planFrame(input, {}, {320, 240}).passes) {
+            if (p.kind != PassKind::Envmap)
+                continue;
+            EXPECT_NE(p.reason.find(depth == 0   ? "mirrors show their own material"
+                                    : depth == 1 ? "up to 1 level deep"
+                                                 : "up to 3 levels deep"),
+                      std::string::npos)
+                << p.reason;
+        }
+    }
+
     // Turned away from the mirror's reflected view (the mirror now shows the scene to the left).
     input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 40, 4));
     plan = planFrame(input, {}, {320, 240});
