@@ -124,7 +124,11 @@ SweepApplication applySweepSettings(Scene& scene, const std::vector<std::pair<QS
     };
     std::optional<SceneSettings> sceneSettings;
 
-    for (const auto& [key, value] : settings) {
+    for (const auto& setting : settings) {
+        // Named references, not a structured binding: clang 14 (the fuzz and sanitizer builds) cannot
+        // capture structured bindings in the lambdas below.
+        const QString& key = setting.first;
+        const QString& value = setting.second;
         const QString what = key + QStringLiteral(" = ") + value;
         bool isInt = false;
         const int n = value.toInt(&isInt);
