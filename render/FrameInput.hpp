@@ -83,6 +83,19 @@ struct Mirror {
 };
 
 enum class ReflectorMap { Cube, DualParaboloid, TennisBall };
+
+// The map type's name as the scene file spells it, for messages and plan reasons.
+inline const char* reflectorMapName(ReflectorMap map) {
+    switch (map) {
+    case ReflectorMap::DualParaboloid:
+        return "dual-paraboloid";
+    case ReflectorMap::TennisBall:
+        return "tennis-ball";
+    case ReflectorMap::Cube:
+        break;
+    }
+    return "cube";
+}
 enum class ReflectorFill { Direct, Resampled };
 enum class ReflectorUpdate { Always, OnChange, Once };
 

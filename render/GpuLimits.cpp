@@ -50,18 +50,6 @@ int maxEnvmapResolution(const Reflector& reflector, const GpuLimits& limits) {
     return target;
 }
 
-std::string mapName(ReflectorMap map) {
-    switch (map) {
-    case ReflectorMap::Cube:
-        return "cube";
-    case ReflectorMap::DualParaboloid:
-        return "dual-paraboloid";
-    case ReflectorMap::TennisBall:
-        return "tennis-ball";
-    }
-    return "environment";
-}
-
 } // namespace
 
 std::optional<FrameInput> fitToGpuLimits(const FrameInput& input, const GpuLimits& limits,
@@ -96,8 +84,9 @@ std::optional<FrameInput> fitToGpuLimits(const FrameInput& input, const GpuLimit
         const std::string name = "reflector \"" + reflector.name + "\"";
         if (n > most) {
             warnings.push_back(name + ": resolution " + std::to_string(n) +
-                               " is more than this GPU can hold for a " + mapName(reflector.map) +
-                               " map (at most " + std::to_string(most) + "); using " + std::to_string(most));
+                               " is more than this GPU can hold for a " +
+                               std::string(reflectorMapName(reflector.map)) + " map (at most " +
+                               std::to_string(most) + "); using " + std::to_string(most));
             copy().reflector->resolution = most;
         } else if (n < kMinEnvmapResolution) {
             warnings.push_back(name + ": resolution " + std::to_string(n) + " is too small; using " +

@@ -14,18 +14,6 @@ namespace speculum::render {
 
 namespace {
 
-std::string mapName(ReflectorMap map) {
-    switch (map) {
-    case ReflectorMap::Cube:
-        return "cube";
-    case ReflectorMap::DualParaboloid:
-        return "dual-paraboloid";
-    case ReflectorMap::TennisBall:
-        return "tennis-ball";
-    }
-    return "cube";
-}
-
 void addMaterial(Hasher& h, const Material& m) {
     h.add(m.color);
     h.add(m.ambient);
@@ -198,7 +186,7 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     if (reflector.map == ReflectorMap::Cube)
         what = "a cube map (6 faces of " + size + ")";
     else {
-        what = "a " + mapName(reflector.map) + " map (2 components of " +
+        what = "a " + std::string(reflectorMapName(reflector.map)) + " map (2 components of " +
                (reflector.map == ReflectorMap::TennisBall ? std::to_string(n) + "×" + std::to_string(3 * n)
                                                           : size) +
                ", " +
