@@ -11,11 +11,14 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QMouseEvent>
 #include <QStandardPaths>
+#include <QTimer>
 #include <QUndoStack>
 #include <benchmark/benchmark.h>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 
@@ -24,17 +27,26 @@ namespace {
 using namespace speculum;
 
 std::unique_ptr<ui::MainWindow> g_window;
+double g_fpsWithHandles = -1.0; // the drag as the user sees it (handles drawn), for the check at the end
 
+// Sleeps in an event loop until the viewport has drawn frame `target`, as the editor waits for the next
+// mouse event: a polling loop here would take a core from llvmpipe's rasterizer threads.
 bool waitForFrame(ui::Viewport& viewport, int target, int timeoutMs = 30000) {
-    QElapsedTimer timer;
-    timer.start();
-    while (viewport.framesRendered() < target) {
-        if (timer.elapsed() > timeoutMs) {
-            return false;
-        }
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    if (viewport.framesRendered() >= target) {
+        return true;
     }
-    return true;
+    QEventLoop loop;
+    QTimer timeout;
+    timeout.setSingleShot(true);
+    QObject::connect(&timeout, &QTimer::timeout, &loop, &QEventLoop::quit);
+    QObject::connect(&viewport, &ui::Viewport::frameRendered, &loop, [&] {
+        if (viewport.framesRendered() >= target) {
+            loop.quit();
+        }
+    });
+    timeout.start(timeoutMs);
+    loop.exec();
+    return viewport.framesRendered() >= target;
 }
 
 void sendMouse(ui::Viewport& viewport, QEvent::Type type, QPointF at, Qt::MouseButton button,
@@ -65,6 +77,8 @@ void dragHandle(benchmark::State& state, bool overlay) {
     double rendererCpu = 0.0, rendererGpu = 0.0;
     std::map<std::string, double> passMs;
     std::int64_t frames = 0;
+    QElapsedTimer clock;
+    clock.start();
     for (auto _ : state) {
         // Back and forth along the handle, 60 px either way.
         const QPointF at = start + QPointF(60.0 * std::sin(double(frames + 1) * 0.3), 0.0);
@@ -83,6 +97,9 @@ void dragHandle(benchmark::State& state, bool overlay) {
     }
     sendMouse(viewport, QEvent::MouseButtonRelease, start, Qt::LeftButton, Qt::NoButton);
     state.counters["fps"] = benchmark::Counter(double(frames), benchmark::Counter::kIsRate);
+    if (overlay && frames > 0) {
+        g_fpsWithHandles = double(frames) / (double(clock.nsecsElapsed()) * 1e-9);
+    }
     state.counters["renderer_cpu_ms"] = frames ? rendererCpu / double(frames) : 0.0;
     state.counters["renderer_gpu_ms"] = frames ? rendererGpu / double(frames) : 0.0;
     for (const auto& [kind, ms] : passMs) {
@@ -140,6 +157,11 @@ int main(int argc, char** argv) {
 
     ::benchmark::RunSpecifiedBenchmarks();
     ::benchmark::Shutdown();
+    if (g_fpsWithHandles >= 0.0) {
+        std::printf("\nViewport while the teapot's move handle is dragged, 1280x720, handles drawn: %.1f fps "
+                    "(target at least 20: %s)\n",
+                    g_fpsWithHandles, g_fpsWithHandles >= 20.0 ? "met" : "NOT met");
+    }
     g_window->undoStack().setClean();
     g_window->newProject();
     g_window.reset();

@@ -2,29 +2,42 @@
 
 namespace speculum::render::gl {
 
+std::size_t GpuTimer::stamp() {
+    if (m_used == m_stamps.size())
+        m_stamps.push_back(makeQuery());
+    glQueryCounter(m_stamps[m_used].id(), GL_TIMESTAMP);
+    return m_used++;
+}
+
 void GpuTimer::begin(std::size_t index) {
-    while (m_pairs.size() <= index)
-        m_pairs.push_back({makeQuery(), makeQuery(), false});
+    if (m_spans.size() <= index)
+        m_spans.resize(index + 1);
     m_current = index;
-    glQueryCounter(m_pairs[index].start.id(), GL_TIMESTAMP);
+    m_spans[index].start = m_atBoundary ? m_used - 1 : stamp();
+    m_atBoundary = false;
 }
 
 void GpuTimer::end() {
-    glQueryCounter(m_pairs[m_current].stop.id(), GL_TIMESTAMP);
-    m_pairs[m_current].used = true;
+    m_spans[m_current].stop = stamp();
+    m_spans[m_current].timed = true;
+    m_atBoundary = true;
 }
 
 std::vector<double> GpuTimer::collect(std::size_t passCount) {
+    std::vector<GLuint64> times(m_used, 0);
+    for (std::size_t i = 0; i < m_used; ++i)
+        glGetQueryObjectui64v(m_stamps[i].id(), GL_QUERY_RESULT, &times[i]);
     std::vector<double> ms(passCount, -1.0);
-    for (std::size_t i = 0; i < passCount && i < m_pairs.size(); ++i) {
-        if (!m_pairs[i].used)
+    for (std::size_t i = 0; i < passCount && i < m_spans.size(); ++i) {
+        Span& span = m_spans[i];
+        if (!span.timed)
             continue;
-        GLuint64 start = 0, stop = 0;
-        glGetQueryObjectui64v(m_pairs[i].start.id(), GL_QUERY_RESULT, &start);
-        glGetQueryObjectui64v(m_pairs[i].stop.id(), GL_QUERY_RESULT, &stop);
+        const GLuint64 start = times[span.start], stop = times[span.stop];
         ms[i] = stop >= start ? static_cast<double>(stop - start) * 1e-6 : 0.0;
-        m_pairs[i].used = false;
+        span.timed = false;
     }
+    m_used = 0;
+    m_atBoundary = false;
     return ms;
 }
 

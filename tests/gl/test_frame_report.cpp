@@ -1,6 +1,8 @@
-// What a frame reports about its own cost: the memory of the render targets it used, and, when asked not
-// to reuse maps, a static scene rendering its shadow and environment maps on every frame.
+// What a frame reports about its own cost: the memory of the render targets it used, the GPU time of its
+// passes, and, when asked not to reuse maps, a static scene rendering its shadow and environment maps on
+// every frame.
 #include "GlTest.hpp"
+#include "render/gl/GpuTimer.hpp"
 #include "render/mesh/Primitives.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -107,6 +109,41 @@ TEST_F(FrameReportTest, MemoryCountsEachRenderTargetFromItsSizeAndFormat) {
     withMirror.mirrors.push_back(mirror);
     const FrameReport mirrored = renderFrame(renderer(), withMirror, false);
     EXPECT_GE(mirrored.memory.mirrors, std::size_t(kWidth) * kHeight * 12);
+}
+
+TEST_F(FrameReportTest, EveryPassThatRanHasAGpuTimeAndTheyAddUpToTheFrame) {
+    FrameReport report;
+    for (int frame = 0; frame < 2; ++frame) // the second frame reuses the timer's queries
+        report = renderFrame(renderer(), roomWithBall(32), false);
+    ASSERT_GE(report.plan.passes.size(), 3u);
+    double sum = 0.0;
+    for (const PlannedPass& pass : report.plan.passes) {
+        EXPECT_GE(pass.gpuMs, 0.0) << toString(pass.kind);
+        sum += pass.gpuMs;
+    }
+    EXPECT_NEAR(sum, report.gpuMs, 1e-6);
+}
+
+// Back-to-back passes share the timestamp between them; a pass after untimed work takes its own.
+TEST_F(FrameReportTest, GpuTimerTakesOneTimestampPerPassBoundary) {
+    gl::GpuTimer timer;
+    for (int frame = 0; frame < 2; ++frame) {
+        timer.begin(0);
+        timer.end();
+        timer.begin(1);
+        timer.end();
+        EXPECT_EQ(timer.queriesThisFrame(), 3u);
+        timer.begin(3); // pass 2 skipped: nothing ran in between
+        timer.end();
+        EXPECT_EQ(timer.queriesThisFrame(), 4u);
+        const std::vector<double> ms = timer.collect(4);
+        ASSERT_EQ(ms.size(), 4u);
+        EXPECT_GE(ms[0], 0.0);
+        EXPECT_GE(ms[1], 0.0);
+        EXPECT_EQ(ms[2], -1.0) << "a pass that did not run has no time";
+        EXPECT_GE(ms[3], 0.0);
+        EXPECT_EQ(timer.queriesThisFrame(), 0u);
+    }
 }
 
 } // namespace
