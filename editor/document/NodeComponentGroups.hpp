@@ -1,0 +1,22 @@
+#pragma once
+
+#include "editor/document/Properties.hpp"
+
+namespace speculum::document::groups {
+
+// The node's component groups, one function each; nodeComponents() (Properties.cpp) builds them once, in
+// the order the inspector shows them.
+
+// NodeProperties.cpp
+ComponentInfo nodeGroup();
+ComponentInfo transformGroup();
+ComponentInfo meshGroup();
+ComponentInfo materialGroup();
+ComponentInfo lightGroup();
+ComponentInfo animationGroup();
+
+// ReflectionProperties.cpp
+ComponentInfo mirrorGroup();
+ComponentInfo reflectorGroup();
+
+} // namespace speculum::document::groups

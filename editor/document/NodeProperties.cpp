@@ -1,0 +1,328 @@
+#include "editor/document/NodeComponentGroups.hpp"
+#include "editor/document/PropertyMakers.hpp"
+
+#include <algorithm>
+#include <type_traits>
+
+namespace speculum::document::groups {
+
+// What a node is and where: its name, transform, shape, surface, light and motion. The reflecting
+// components are in ReflectionProperties.cpp.
+
+using namespace makers;
+
+ComponentInfo nodeGroup() {
+    ComponentInfo c;
+    c.key = QStringLiteral("node");
+    c.title = QStringLiteral("Node");
+    c.optional = false;
+    c.present = [](const NodeData&) { return true; };
+    Property<NodeData> name;
+    name.info.key = QStringLiteral("node.name");
+    name.info.label = QStringLiteral("Name");
+    name.info.kind = PropertyKind::Text;
+    name.get = [](const NodeData& d) { return QVariant(QString::fromStdString(d.name)); };
+    name.set = [](NodeData& d, const QVariant& v) -> render::Status {
+        const QString text = v.toString().trimmed();
+        if (text.isEmpty()) {
+            return render::Error{"Name must not be empty"};
+        }
+        d.name = text.toStdString();
+        return render::Done{};
+    };
+    c.properties.push_back(name);
+    return c;
+}
+
+ComponentInfo transformGroup() {
+    ComponentInfo c;
+    c.key = QStringLiteral("transform");
+    c.title = QStringLiteral("Transform");
+    c.optional = false;
+    c.present = [](const NodeData&) { return true; };
+    using V3 = Access<NodeData, glm::dvec3>;
+    c.properties.push_back(vector<NodeData, 3>(
+        QStringLiteral("transform.translate"), QStringLiteral("Translate"),
+        V3([](NodeData& d) { return &d.transform.translate; }), {}, QStringLiteral(" u")));
+    c.properties.push_back(vector<NodeData, 3>(QStringLiteral("transform.rotate"), QStringLiteral("Rotate"),
+                                               V3([](NodeData& d) { return &d.transform.rotate; }), {},
+                                               QStringLiteral("°")));
+    c.properties.back().info.tooltip =
+        QStringLiteral("XYZ Euler angles in degrees, applied X, then Y, then Z");
+    c.properties.back().info.step = 5.0;
+    c.properties.push_back(vector<NodeData, 3>(QStringLiteral("transform.scale"), QStringLiteral("Scale"),
+                                               V3([](NodeData& d) { return &d.transform.scale; }), {}, {},
+                                               nonZeroScale));
+    return c;
+}
+
+ComponentInfo meshGroup() {
+    ComponentInfo c;
+    c.key = QStringLiteral("mesh");
+    c.title = QStringLiteral("Mesh");
+    c.present = [](const NodeData& d) { return d.mesh.has_value(); };
+    c.add = [](NodeData& d) {
+        d.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
+        return ok();
+    };
+    c.remove = [](NodeData& d) -> render::Status {
+        if (d.reflector) {
+            return render::Error{"The reflector's surface is this mesh: remove the reflector first"};
+        }
+        d.mesh.reset();
+        return ok();
+    };
+    static const std::array<BuiltinMesh, 4> kinds{BuiltinMesh::Teapot, BuiltinMesh::Sphere, BuiltinMesh::Box,
+                                                  BuiltinMesh::Plane};
+    c.properties.push_back(enumeration<NodeData>(
+        QStringLiteral("mesh.source"), QStringLiteral("Shape"),
+        {QStringLiteral("Teapot"), QStringLiteral("Sphere"), QStringLiteral("Box"), QStringLiteral("Plane"),
+         QStringLiteral("Model file")},
+        [](const NodeData& d) {
+            if (!d.mesh) {
+                return -1;
+            }
+            if (!d.mesh->builtin) {
+                return 4;
+            }
+            return static_cast<int>(std::find(kinds.begin(), kinds.end(), *d.mesh->builtin) - kinds.begin());
+        },
+        [](NodeData& d, int i) -> render::Status {
+            if (!d.mesh) {
+                return render::Error{"Shape does not apply to this node"};
+            }
+            if (i == 4) {
+                if (d.mesh->file.empty()) {
+                    return render::Error{"Shape: choose the model file in the File field"};
+                }
+                d.mesh = MeshComponent::fromFile(d.mesh->file);
+                return ok();
+            }
+            const BuiltinMesh kind = kinds[static_cast<std::size_t>(i)];
+            if (d.mesh->builtin != kind) {
+                d.mesh = MeshComponent::fromBuiltin(kind);
+            }
+            return ok();
+        }));
+    c.properties.push_back(integer<NodeData>(
+        QStringLiteral("mesh.tessellation"), QStringLiteral("Tessellation"),
+        in(&NodeData::mesh, &MeshComponent::tessellation), {1, 64}, {}, {},
+        QStringLiteral("Subdivisions of the built-in shape (teapot: per patch edge, sphere: rings)")));
+    c.properties.back().visible = [](const NodeData& d) { return d.mesh && d.mesh->builtin.has_value(); };
+    Property<NodeData> file = filePath(QStringLiteral("mesh.file"), QStringLiteral("File"),
+                                       in(&NodeData::mesh, &MeshComponent::file),
+                                       QStringLiteral("3D models (*.obj *.gltf *.glb *.fbx *.dae *.ply *.stl "
+                                                      "*.3ds *.blend *.off);;All files (*)"),
+                                       false);
+    // Choosing a file makes it the mesh's source.
+    auto setFile = file.set;
+    file.set = [setFile](NodeData& d, const QVariant& v) -> render::Status {
+        NodeData copy = d;
+        if (auto status = setFile(copy, v); !status) {
+            return status;
+        }
+        copy.mesh = MeshComponent::fromFile(copy.mesh->file);
+        d = std::move(copy);
+        return ok();
+    };
+    c.properties.push_back(file);
+    return c;
+}
+
+ComponentInfo materialGroup() {
+    ComponentInfo c;
+    c.key = QStringLiteral("material");
+    c.title = QStringLiteral("Material");
+    c.present = [](const NodeData& d) { return d.material.has_value(); };
+    c.add = [](NodeData& d) {
+        d.material = MaterialComponent{};
+        return ok();
+    };
+    c.remove = [](NodeData& d) {
+        d.material.reset();
+        return ok();
+    };
+    using M = MaterialComponent;
+    c.properties.push_back(color<NodeData>(QStringLiteral("material.color"), QStringLiteral("Colour"),
+                                           in(&NodeData::material, &M::color)));
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("material.ambient"), QStringLiteral("Ambient"),
+                                in(&NodeData::material, &M::ambient), {0.0}),
+               0.0, 2.0));
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("material.diffuse"), QStringLiteral("Diffuse"),
+                                in(&NodeData::material, &M::diffuse), {0.0}),
+               0.0, 2.0));
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("material.specular"), QStringLiteral("Specular"),
+                                in(&NodeData::material, &M::specular), {0.0}),
+               0.0, 2.0));
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("material.shininess"), QStringLiteral("Shininess"),
+                                in(&NodeData::material, &M::shininess), {0.0, 10000.0}),
+               1.0, 256.0, 1, 1.0));
+    c.properties.push_back(color<NodeData>(QStringLiteral("material.emission"), QStringLiteral("Emission"),
+                                           in(&NodeData::material, &M::emission)));
+    c.properties.push_back(filePath(
+        QStringLiteral("material.texture"), QStringLiteral("Texture"), in(&NodeData::material, &M::texture),
+        QStringLiteral("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.hdr);;All "
+                       "files (*)"),
+        true));
+    c.properties.back().info.tooltip = QStringLiteral("Empty for none");
+    return c;
+}
+
+ComponentInfo lightGroup() {
+    ComponentInfo c;
+    c.key = QStringLiteral("light");
+    c.title = QStringLiteral("Light");
+    c.present = [](const NodeData& d) { return d.light.has_value(); };
+    c.add = [](NodeData& d) {
+        d.light = LightComponent{};
+        return ok();
+    };
+    c.remove = [](NodeData& d) {
+        d.light.reset();
+        return ok();
+    };
+    using L = LightComponent;
+    c.properties.push_back(
+        enumField(QStringLiteral("light.type"), QStringLiteral("Type"),
+                  {QStringLiteral("Point"), QStringLiteral("Directional"), QStringLiteral("Spot")},
+                  std::array{LightType::Point, LightType::Directional, LightType::Spot},
+                  in(&NodeData::light, &L::type)));
+    c.properties.push_back(color<NodeData>(QStringLiteral("light.color"), QStringLiteral("Colour"),
+                                           in(&NodeData::light, &L::color)));
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("light.intensity"), QStringLiteral("Intensity"),
+                                in(&NodeData::light, &L::intensity), {0.0}),
+               0.0, 5.0));
+    const auto isSpot = [](const NodeData& d) { return d.light && d.light->type == LightType::Spot; };
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("light.spotAngle"), QStringLiteral("Spot angle"),
+                                in(&NodeData::light, &L::spotAngle), {0.0, 90.0, true, false},
+                                QStringLiteral("°"), QStringLiteral("Outer half angle of the cone")),
+               1.0, 90.0, 1, 1.0));
+    c.properties.back().visible = isSpot;
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("light.spotBlend"), QStringLiteral("Spot blend"),
+                                in(&NodeData::light, &L::spotBlend), {0.0, 1.0}, {},
+                                QStringLiteral("Fraction of the cone over which the edge fades")),
+               0.0, 1.0));
+    c.properties.back().visible = isSpot;
+    c.properties.push_back(boolean<NodeData>(
+        QStringLiteral("light.shadows"), QStringLiteral("Casts shadows"),
+        [](const NodeData& d) { return d.light && d.light->shadows.has_value(); },
+        [](NodeData& d, bool on) -> render::Status {
+            if (!d.light) {
+                return render::Error{"Casts shadows does not apply to this node"};
+            }
+            if (on && !d.light->shadows) {
+                d.light->shadows = ShadowComponent{};
+            } else if (!on) {
+                d.light->shadows.reset();
+            }
+            return ok();
+        }));
+    const auto hasShadows = [](const NodeData& d) { return d.light && d.light->shadows; };
+    const auto shadowField = [](int ShadowComponent::*field) -> Access<NodeData, int> {
+        return [field](NodeData& d) -> int* {
+            return d.light && d.light->shadows ? &((*d.light->shadows).*field) : nullptr;
+        };
+    };
+    c.properties.push_back(integer<NodeData>(
+        QStringLiteral("light.shadows.mapSize"), QStringLiteral("Shadow map size"),
+        shadowField(&ShadowComponent::mapSize), {16, 16384}, QStringLiteral(" px"),
+        [](int v) { return (v & (v - 1)) == 0 ? QString() : QStringLiteral("must be a power of two"); }));
+    c.properties.back().visible = hasShadows;
+    c.properties.push_back(integer<NodeData>(
+        QStringLiteral("light.shadows.pcf"), QStringLiteral("Shadow softness (PCF)"),
+        shadowField(&ShadowComponent::pcf), {1, 15}, QStringLiteral(" texels"),
+        [](int v) { return v % 2 == 1 ? QString() : QStringLiteral("must be an odd kernel width"); },
+        QStringLiteral("Odd filter width in shadow-map texels; 1 = hard shadows")));
+    c.properties.back().info.step = 2;
+    c.properties.back().visible = hasShadows;
+    return c;
+}
+
+ComponentInfo animationGroup() {
+    ComponentInfo c;
+    c.key = QStringLiteral("animation");
+    c.title = QStringLiteral("Animation");
+    c.present = [](const NodeData& d) { return d.animation.has_value(); };
+    c.add = [](NodeData& d) {
+        d.animation = AnimationComponent{};
+        d.animation->bounce = BounceAnimation{};
+        return ok();
+    };
+    c.remove = [](NodeData& d) {
+        d.animation.reset();
+        return ok();
+    };
+    c.properties.push_back(boolean<NodeData>(
+        QStringLiteral("animation.bounce"), QStringLiteral("Bounce"),
+        [](const NodeData& d) { return d.animation && d.animation->bounce.has_value(); },
+        [](NodeData& d, bool on) -> render::Status {
+            if (!d.animation) {
+                return render::Error{"Bounce does not apply to this node"};
+            }
+            if (on && !d.animation->bounce) {
+                d.animation->bounce = BounceAnimation{};
+            } else if (!on) {
+                d.animation->bounce.reset();
+            }
+            return ok();
+        }));
+    const auto bounce = [](double BounceAnimation::*f) -> Access<NodeData, double> {
+        return [f](NodeData& d) -> double* {
+            return d.animation && d.animation->bounce ? &((*d.animation->bounce).*f) : nullptr;
+        };
+    };
+    const auto orbit = [](auto OrbitAnimation::*f) {
+        using V = std::remove_reference_t<decltype(std::declval<OrbitAnimation&>().*f)>;
+        return Access<NodeData, V>([f](NodeData& d) -> V* {
+            return d.animation && d.animation->orbit ? &((*d.animation->orbit).*f) : nullptr;
+        });
+    };
+    const auto hasBounce = [](const NodeData& d) { return d.animation && d.animation->bounce; };
+    const auto hasOrbit = [](const NodeData& d) { return d.animation && d.animation->orbit; };
+    c.properties.push_back(number<NodeData>(QStringLiteral("animation.bounce.height"),
+                                            QStringLiteral("Bounce height"), bounce(&BounceAnimation::height),
+                                            {}, QStringLiteral(" u")));
+    c.properties.back().visible = hasBounce;
+    c.properties.push_back(number<NodeData>(QStringLiteral("animation.bounce.period"),
+                                            QStringLiteral("Bounce period"), bounce(&BounceAnimation::period),
+                                            {0.0, kInf, true}, QStringLiteral(" s")));
+    c.properties.back().visible = hasBounce;
+    c.properties.push_back(boolean<NodeData>(
+        QStringLiteral("animation.orbit"), QStringLiteral("Orbit"),
+        [](const NodeData& d) { return d.animation && d.animation->orbit.has_value(); },
+        [](NodeData& d, bool on) -> render::Status {
+            if (!d.animation) {
+                return render::Error{"Orbit does not apply to this node"};
+            }
+            if (on && !d.animation->orbit) {
+                OrbitAnimation o;
+                o.center = d.transform.translate; // orbit around where the node stands
+                d.animation->orbit = o;
+            } else if (!on) {
+                d.animation->orbit.reset();
+            }
+            return ok();
+        }));
+    c.properties.push_back(vector<NodeData, 3>(QStringLiteral("animation.orbit.center"),
+                                               QStringLiteral("Orbit centre"), orbit(&OrbitAnimation::center),
+                                               {}, QStringLiteral(" u")));
+    c.properties.back().visible = hasOrbit;
+    c.properties.push_back(number<NodeData>(QStringLiteral("animation.orbit.radius"),
+                                            QStringLiteral("Orbit radius"), orbit(&OrbitAnimation::radius),
+                                            {}, QStringLiteral(" u")));
+    c.properties.back().visible = hasOrbit;
+    c.properties.push_back(number<NodeData>(QStringLiteral("animation.orbit.period"),
+                                            QStringLiteral("Orbit period"), orbit(&OrbitAnimation::period),
+                                            {0.0, kInf, true}, QStringLiteral(" s")));
+    c.properties.back().visible = hasOrbit;
+    return c;
+}
+
+} // namespace speculum::document::groups

@@ -1,0 +1,95 @@
+#include "editor/document/PropertyMakers.hpp"
+
+#include <QFileInfo>
+
+namespace speculum::document::makers {
+
+render::Status fail(const PropertyInfo& info, const QString& why) {
+    return render::Error{QStringLiteral("%1 %2").arg(info.label, why).toStdString()};
+}
+
+std::optional<double> toNumber(const QVariant& v) {
+    bool ok = false;
+    const double d = v.toDouble(&ok);
+    if (!ok) {
+        return std::nullopt;
+    }
+    return d;
+}
+
+PropertyInfo numberInfo(QString key, QString label, PropertyKind kind, NumberRange range, QString unit,
+                        QString tooltip) {
+    PropertyInfo info;
+    info.key = std::move(key);
+    info.label = std::move(label);
+    info.kind = kind;
+    info.minimum = range.minimum;
+    info.maximum = range.maximum;
+    info.minimumExclusive = range.minimumExclusive;
+    info.maximumExclusive = range.maximumExclusive;
+    info.unit = std::move(unit);
+    info.tooltip = std::move(tooltip);
+    if (std::isfinite(range.minimum)) {
+        info.softMinimum = range.minimum;
+    }
+    if (std::isfinite(range.maximum)) {
+        info.softMaximum = range.maximum;
+    }
+    return info;
+}
+
+Property<NodeData> filePath(QString key, QString label, Access<NodeData, std::string> access, QString filter,
+                            bool allowEmpty) {
+    Property<NodeData> p;
+    p.info.key = std::move(key);
+    p.info.label = std::move(label);
+    p.info.kind = PropertyKind::FilePath;
+    p.info.fileFilter = std::move(filter);
+    p.get = [access](const NodeData& d) {
+        const std::string* s = read(access, d);
+        return s ? QVariant(QString::fromStdString(*s)) : QVariant();
+    };
+    p.set = [access, info = p.info, allowEmpty](NodeData& d, const QVariant& value) -> render::Status {
+        const QString path = value.toString().trimmed();
+        std::string* field = access(d);
+        if (!field) {
+            return fail(info, QStringLiteral("does not apply to this node"));
+        }
+        if (path.isEmpty()) {
+            if (!allowEmpty) {
+                return fail(info, QStringLiteral("needs a file"));
+            }
+            field->clear();
+            return render::Done{};
+        }
+        const QFileInfo file(path);
+        if (!file.isAbsolute()) {
+            return fail(info, QStringLiteral("needs an absolute path, got \"%1\"").arg(path));
+        }
+        if (!file.isFile()) {
+            return fail(info, QStringLiteral("file does not exist: %1").arg(path));
+        }
+        *field = file.absoluteFilePath().toStdString();
+        return render::Done{};
+    };
+    return p;
+}
+
+QString nonZeroScale(const glm::dvec3& s) {
+    for (int i = 0; i < 3; ++i) {
+        if (s[i] == 0.0) {
+            return QStringLiteral("components must be non-zero (a zero scale flattens the node)");
+        }
+    }
+    return {};
+}
+
+QString positiveExtents(const glm::dvec2& s) {
+    return s.x > 0.0 && s.y > 0.0 ? QString() : QStringLiteral("extents must be greater than 0");
+}
+
+render::Status ok() {
+    return render::Done{};
+}
+
+} // namespace speculum::document::makers
