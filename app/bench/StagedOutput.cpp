@@ -1,5 +1,8 @@
 #include "app/bench/StagedOutput.hpp"
 
+#include <cerrno>
+#include <csignal>
+#include <string_view>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
@@ -7,6 +10,40 @@
 namespace speculum::app::bench {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view kStagingPrefix = ".speculum-bench-";
+constexpr std::string_view kStagingSuffix = ".partial";
+
+// The process id in a staging folder's name, or 0 when the name is not one of ours.
+pid_t stagingOwner(const std::string& name) {
+    if (name.size() <= kStagingPrefix.size() + kStagingSuffix.size() || name.rfind(kStagingPrefix, 0) != 0 ||
+        name.compare(name.size() - kStagingSuffix.size(), kStagingSuffix.size(), kStagingSuffix) != 0)
+        return 0;
+    const std::string digits =
+        name.substr(kStagingPrefix.size(), name.size() - kStagingPrefix.size() - kStagingSuffix.size());
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+        return 0;
+    return static_cast<pid_t>(std::stol(digits));
+}
+
+// A run that was killed (Ctrl-C, a crash) could not remove its staging folder; the next run into the
+// same folder does, once no process of that id is running. A folder of a live process is left alone: it
+// may be another run writing into the same folder right now.
+void removeAbandonedStaging(const fs::path& folder) {
+    std::error_code ec;
+    std::vector<fs::path> abandoned;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
+        const pid_t owner = stagingOwner(entry.path().filename().string());
+        if (owner > 0 && entry.is_directory(ec) && ::kill(owner, 0) != 0 && errno == ESRCH)
+            abandoned.push_back(entry.path());
+    }
+    for (const fs::path& path : abandoned)
+        fs::remove_all(path, ec);
+}
+
+} // namespace
 
 render::Result<StagedOutput> StagedOutput::begin(const fs::path& folder) {
     std::error_code ec;
@@ -28,7 +65,9 @@ render::Result<StagedOutput> StagedOutput::begin(const fs::path& folder) {
         out.discard();
         return render::Error{folder.string() + ": cannot create the folder (" + ec.message() + ")"};
     }
-    out.m_staging = absolute / (".speculum-bench-" + std::to_string(::getpid()) + ".partial");
+    removeAbandonedStaging(absolute);
+    out.m_staging =
+        absolute / (std::string(kStagingPrefix) + std::to_string(::getpid()) + std::string(kStagingSuffix));
     fs::remove_all(out.m_staging, ec);
     if (!fs::create_directory(out.m_staging, ec) || ec) {
         out.discard();

@@ -11,7 +11,9 @@ namespace speculum::app::bench {
 // The output folder, written all at once: files are written into a hidden staging folder inside it and
 // moved into place by commit(), replacing only the files of the same names (a previous run's results),
 // never anything else in the folder. Without commit() (an error, an exception), the staging folder and
-// any folder begin() created are removed again, so a failed run leaves the disk as it found it.
+// any folder begin() created are removed again, so a failed run leaves the disk as it found it. A run that
+// was killed before it could clean up leaves its staging folder behind; the next run into the folder
+// removes it.
 class StagedOutput {
 public:
     // Creates the folder (and missing parents) if needed. Errors: the path names a file, or a folder
