@@ -422,6 +422,8 @@ void MainWindow::createDocks() {
     m_treePanel->setContextActions({m_renameAction, m_duplicateAction, m_deleteAction, nullptr,
                                     action(QStringLiteral("actionFrameSelected"))},
                                    m_addMenu);
+    // Ctrl+A in the tree selects the nodes (the view on its own would select the camera row too).
+    m_treePanel->addAction(action(QStringLiteral("actionSelectAll")));
 
     m_inspector = new Inspector(*m_scene, *m_undoStack, *m_selection, this);
     auto* inspectorDock = new QDockWidget(tr("Properties"), this);

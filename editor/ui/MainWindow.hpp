@@ -10,6 +10,7 @@
 #include <QStringList>
 #include <QTimer>
 #include <memory>
+#include <vector>
 
 class QAction;
 class QLabel;
@@ -77,8 +78,12 @@ public:
     // Imports a model file (any format Assimp reads) as a new node; asReflector makes it the curved
     // reflector's surface. Fails when the file cannot be read.
     render::Status importModelFile(const QString& path, bool asReflector = false);
+    // Delete and Duplicate act on every selected node (a node under a selected ancestor goes with the
+    // ancestor), as one undo step; the copies of a duplicate are selected afterwards.
     render::Status deleteSelected();
     render::Status duplicateSelected();
+    // Edit ▸ Select All: every node of the scene.
+    void selectAll();
 
     // File ▸ Export Scene as glTF 2.0.
     render::Status exportGltfFile(const QString& path);
@@ -128,6 +133,8 @@ private slots:
     void onWarningsChanged(const QStringList& warnings);
 
 private:
+    // The selected nodes without those under another selected node, in selection order.
+    std::vector<document::NodeId> selectedRoots() const;
     void createActions();
     void createAddMenu();
     void createStatusBar();

@@ -22,6 +22,8 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 #include <QUndoStack>
+#include <algorithm>
+#include <vector>
 
 namespace speculum::ui {
 
@@ -97,38 +99,89 @@ render::Status MainWindow::importModelFile(const QString& path, bool asReflector
     return status;
 }
 
+std::vector<document::NodeId> MainWindow::selectedRoots() const {
+    // A node under a selected ancestor goes with that ancestor: acting on both would act twice.
+    const std::vector<document::NodeId>& selected = m_selection->nodes();
+    std::vector<document::NodeId> roots;
+    for (document::NodeId id : selected) {
+        if (!m_scene->findNode(id)) {
+            continue;
+        }
+        const bool underAnother = std::any_of(selected.begin(), selected.end(), [&](document::NodeId other) {
+            return other != id && m_scene->isAncestor(other, id);
+        });
+        if (!underAnother) {
+            roots.push_back(id);
+        }
+    }
+    return roots;
+}
+
 render::Status MainWindow::deleteSelected() {
-    const document::Node* node = m_selection->selectedNode();
-    if (!node) {
+    const std::vector<document::NodeId> roots = selectedRoots();
+    if (roots.empty()) {
         return render::Error{"nothing is selected"};
     }
-    m_undoStack->push(new document::RemoveNodeCommand(*m_scene, node->id()));
+    // Several nodes: one undo step.
+    if (roots.size() > 1) {
+        m_undoStack->beginMacro(tr("Delete %1 nodes").arg(roots.size()));
+    }
+    for (document::NodeId id : roots) {
+        m_undoStack->push(new document::RemoveNodeCommand(*m_scene, id));
+    }
+    if (roots.size() > 1) {
+        m_undoStack->endMacro();
+    }
     return render::Done{};
 }
 
 render::Status MainWindow::duplicateSelected() {
-    const document::Node* node = m_selection->selectedNode();
-    if (!node) {
+    const std::vector<document::NodeId> roots = selectedRoots();
+    if (roots.empty()) {
         return render::Error{"nothing is selected"};
     }
+    const document::NodeId current = m_selection->node();
+    if (roots.size() > 1) {
+        m_undoStack->beginMacro(tr("Duplicate %1 nodes").arg(roots.size()));
+    }
     bool droppedReflector = false;
-    document::NodeTree copy = document::duplicateTree(*m_scene, node->id(), &droppedReflector);
-    auto* command = new document::AddNodeCommand(*m_scene, std::move(copy), m_scene->parentOf(node->id()),
-                                                 m_scene->indexOf(node->id()) + 1);
-    command->setText(tr("Duplicate %1").arg(quoted(node->name())));
-    m_undoStack->push(command);
-    m_selection->selectNode(command->nodeId());
+    std::vector<document::NodeId> copies;
+    document::NodeId currentCopy = document::kNoNode;
+    for (document::NodeId id : roots) {
+        // One at a time: each copy's name is made unique against the copies made before it.
+        bool dropped = false;
+        document::NodeTree copy = document::duplicateTree(*m_scene, id, &dropped);
+        droppedReflector = droppedReflector || dropped;
+        auto* command = new document::AddNodeCommand(*m_scene, std::move(copy), m_scene->parentOf(id),
+                                                     m_scene->indexOf(id) + 1);
+        command->setText(tr("Duplicate %1").arg(quoted(m_scene->findNode(id)->name())));
+        m_undoStack->push(command);
+        copies.push_back(command->nodeId());
+        if (m_scene->isAncestor(id, current)) { // the current node or one under it
+            currentCopy = command->nodeId();
+        }
+    }
+    if (roots.size() > 1) {
+        m_undoStack->endMacro();
+    }
+    m_selection->setNodes(copies, currentCopy);
     if (droppedReflector) {
         statusBar()->showMessage(tr("The copy is not a reflector: a scene has at most one."), 8000);
     }
     return render::Done{};
 }
 
+void MainWindow::selectAll() {
+    std::vector<document::NodeId> all;
+    m_scene->forEachNode([&](const document::Node& node) { all.push_back(node.id()); });
+    m_selection->setNodes(all, m_selection->node());
+}
+
 void MainWindow::updateEditActions() {
-    const bool hasNode = m_selection->selectedNode() != nullptr;
+    const bool hasNode = !selectedRoots().empty();
     m_deleteAction->setEnabled(hasNode);
     m_duplicateAction->setEnabled(hasNode);
-    m_renameAction->setEnabled(hasNode);
+    m_renameAction->setEnabled(m_selection->selectedNode() != nullptr);
 }
 
 // ---- export ----
@@ -323,7 +376,10 @@ void MainWindow::showControls() {
         tr("<table>"
            "<tr><td><b>Click</b></td><td>select (in a mirror: the reflected object)</td></tr>"
            "<tr><td><b>Alt+click</b></td><td>select a mirror itself</td></tr>"
-           "<tr><td><b>Drag a handle</b></td><td>move / rotate / scale the selection</td></tr>"
+           "<tr><td><b>Ctrl+click</b></td><td>add to the selection or remove from it (also in the "
+           "scene tree, where Shift+click selects a range)</td></tr>"
+           "<tr><td><b>Drag a handle</b></td><td>move / rotate / scale the current (last selected) "
+           "node only</td></tr>"
            "<tr><td><b>Q / W / E / R</b></td><td>no handles / move / rotate / scale</td></tr>"
            "<tr><td><b>Left drag</b></td><td>orbit around the camera target</td></tr>"
            "<tr><td><b>Middle drag</b> or <b>Shift+left drag</b></td><td>pan</td></tr>"
@@ -394,12 +450,16 @@ void MainWindow::createActions() {
     m_deleteAction = makeAction(edit, QStringLiteral("actionDelete"), tr("&Delete"), QKeySequence::Delete);
     connect(m_deleteAction, &QAction::triggered, this, [this] { deleteSelected(); });
     edit->addSeparator();
+    QAction* selectAll =
+        makeAction(edit, QStringLiteral("actionSelectAll"), tr("Select &All"), QKeySequence::SelectAll);
+    connect(selectAll, &QAction::triggered, this, &MainWindow::selectAll);
     connect(makeAction(edit, QStringLiteral("actionSelectNone"), tr("Select &None"),
                        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A)),
             &QAction::triggered, m_selection, &Selection::clear);
     // Shortcuts of the window must work while the viewport (or any dock) has focus, but not steal keys
     // from text fields: Delete in the inspector's name field deletes characters, not the node.
-    for (QAction* a : {m_renameAction, m_duplicateAction, m_deleteAction}) {
+    // Ctrl+A likewise: in a text field it selects the text.
+    for (QAction* a : {m_renameAction, m_duplicateAction, m_deleteAction, selectAll}) {
         a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         m_viewport->addAction(a);
     }

@@ -206,7 +206,8 @@ bool SceneTreeModel::canDropMimeData(const QMimeData* data, Qt::DropAction actio
     }
     const NodeId newParent = nodeId(parent);
     const auto ids = decode(data);
-    if (ids.empty()) {
+    // One node at a time: a drag of several selected rows is refused rather than moving only one of them.
+    if (ids.size() != 1) {
         return false;
     }
     for (NodeId id : ids) {
@@ -222,7 +223,7 @@ bool SceneTreeModel::dropMimeData(const QMimeData* data, Qt::DropAction action, 
     if (!canDropMimeData(data, action, row, column, parent)) {
         return false;
     }
-    // The tree selects one node at a time; a drag carries that one.
+    // canDropMimeData() let through a single node.
     const NodeId newParent = nodeId(parent);
     const int sceneIndex = row < 0 ? -1 : (newParent == kNoNode ? std::max(row - 1, 0) : row);
     // The rows need no removing by the view afterwards (the default removeRows() refuses): the command

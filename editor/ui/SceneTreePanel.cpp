@@ -7,6 +7,8 @@
 #include <QMenu>
 #include <QTreeView>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <vector>
 
 namespace speculum::ui {
 
@@ -18,7 +20,8 @@ SceneTreePanel::SceneTreePanel(SceneTreeModel& model, Selection& selection, QWid
     m_view->setObjectName(QStringLiteral("sceneTree"));
     m_view->setModel(&model);
     m_view->header()->hide();
-    m_view->setSelectionMode(QAbstractItemView::SingleSelection);
+    // Ctrl+click adds or removes a node, Shift+click a range, as in other editors.
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::DoubleClicked);
     m_view->setDragDropMode(QAbstractItemView::InternalMove);
     m_view->setDefaultDropAction(Qt::MoveAction);
@@ -62,7 +65,8 @@ void SceneTreePanel::setContextActions(QList<QAction*> actions, QMenu* addMenu) 
 void SceneTreePanel::editSelected() {
     const QModelIndex index = m_model.indexOf(m_selection.node());
     if (index.isValid()) {
-        m_view->setCurrentIndex(index);
+        // NoUpdate: the rest of a multiple selection stays selected.
+        m_view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::NoUpdate);
         m_view->edit(index);
     }
 }
@@ -72,20 +76,32 @@ void SceneTreePanel::syncFromSelection() {
         return;
     }
     m_syncing = true;
-    QModelIndex index;
-    if (m_selection.isCamera()) {
-        index = m_model.cameraIndex();
-    } else if (m_selection.node() != document::kNoNode) {
-        index = m_model.indexOf(m_selection.node());
-    }
-    if (index.isValid()) {
+    QItemSelection rows;
+    QModelIndex current;
+    auto add = [&](const QModelIndex& index) {
+        if (!index.isValid()) {
+            return;
+        }
         for (QModelIndex p = index.parent(); p.isValid(); p = p.parent()) {
             m_view->expand(p);
         }
-        m_view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect);
-        m_view->scrollTo(index);
+        rows.select(index, index);
+        current = index;
+    };
+    if (m_selection.isCamera()) {
+        add(m_model.cameraIndex());
     } else {
-        m_view->selectionModel()->clearSelection();
+        for (document::NodeId id : m_selection.nodes()) { // the current node is last
+            add(m_model.indexOf(id));
+        }
+    }
+    QItemSelectionModel* model = m_view->selectionModel();
+    if (current.isValid()) {
+        model->setCurrentIndex(current, QItemSelectionModel::NoUpdate);
+        model->select(rows, QItemSelectionModel::ClearAndSelect);
+        m_view->scrollTo(current);
+    } else {
+        model->clearSelection();
     }
     m_syncing = false;
 }
@@ -96,15 +112,45 @@ void SceneTreePanel::syncToSelection() {
         return;
     }
     m_syncing = true;
-    const QModelIndexList selected = m_view->selectionModel()->selectedIndexes();
-    if (selected.isEmpty()) {
-        m_selection.clear();
-    } else if (m_model.isCamera(selected.front())) {
+    const QItemSelectionModel* model = m_view->selectionModel();
+    const QModelIndex currentIndex = model->currentIndex();
+    const bool currentSelected = currentIndex.isValid() && model->isSelected(currentIndex);
+    bool camera = false;
+    std::vector<document::NodeId> ids;
+    for (const QModelIndex& index : model->selectedIndexes()) {
+        if (m_model.isCamera(index)) {
+            camera = true;
+        } else {
+            ids.push_back(m_model.nodeId(index));
+        }
+    }
+    // The camera is selected alone: clicking it (even with Ctrl) selects just the camera; adding nodes to a
+    // selected camera (Ctrl+click, Shift+click, Ctrl+A) leaves the camera out.
+    const bool cameraClicked = currentSelected && m_model.isCamera(currentIndex) && !m_selection.isCamera();
+    const bool mixed = camera && !ids.empty();
+    if (camera && (ids.empty() || cameraClicked)) {
         m_selection.selectCamera();
+    } else if (ids.empty()) {
+        m_selection.clear();
     } else {
-        m_selection.selectNode(m_model.nodeId(selected.front()));
+        // Keep the order in which the nodes were picked: those already selected first, in their order.
+        std::vector<document::NodeId> ordered;
+        for (document::NodeId id : m_selection.nodes()) {
+            if (std::find(ids.begin(), ids.end(), id) != ids.end()) {
+                ordered.push_back(id);
+            }
+        }
+        for (document::NodeId id : ids) {
+            if (std::find(ordered.begin(), ordered.end(), id) == ordered.end()) {
+                ordered.push_back(id);
+            }
+        }
+        m_selection.setNodes(ordered, currentSelected ? m_model.nodeId(currentIndex) : document::kNoNode);
     }
     m_syncing = false;
+    if (mixed) {
+        syncFromSelection(); // show what was kept
+    }
 }
 
 void SceneTreePanel::showContextMenu(const QPoint& pos) {

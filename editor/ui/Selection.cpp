@@ -1,5 +1,7 @@
 #include "editor/ui/Selection.hpp"
 
+#include <algorithm>
+
 namespace speculum::ui {
 
 Selection::Selection(document::Scene& scene, QObject* parent)
@@ -10,42 +12,75 @@ Selection::Selection(document::Scene& scene, QObject* parent)
     connect(
         &scene, &document::Scene::nodeRemoved, this,
         [this] {
-            if (m_node != document::kNoNode && !m_scene.findNode(m_node)) {
-                clear();
-            }
+            std::vector<document::NodeId> kept;
+            std::copy_if(m_nodes.begin(), m_nodes.end(), std::back_inserter(kept),
+                         [this](document::NodeId id) { return m_scene.findNode(id) != nullptr; });
+            assign(std::move(kept), m_camera);
         },
         Qt::QueuedConnection);
     connect(&scene, &document::Scene::sceneReset, this, &Selection::clear);
 }
 
-void Selection::selectNode(document::NodeId id) {
-    if (id != document::kNoNode && !m_scene.findNode(id)) {
-        id = document::kNoNode;
-    }
-    if (id == m_node && !m_camera) {
+bool Selection::contains(document::NodeId id) const {
+    return std::find(m_nodes.begin(), m_nodes.end(), id) != m_nodes.end();
+}
+
+void Selection::assign(std::vector<document::NodeId> nodes, bool camera) {
+    if (nodes == m_nodes && camera == m_camera) {
         return;
     }
-    m_node = id;
-    m_camera = false;
+    m_nodes = std::move(nodes);
+    m_camera = camera;
     emit changed();
+}
+
+void Selection::selectNode(document::NodeId id) {
+    if (id == document::kNoNode || !m_scene.findNode(id)) {
+        assign({}, false);
+    } else {
+        assign({id}, false);
+    }
+}
+
+void Selection::toggleNode(document::NodeId id) {
+    if (id == document::kNoNode || !m_scene.findNode(id)) {
+        return;
+    }
+    std::vector<document::NodeId> nodes = m_nodes;
+    if (const auto it = std::find(nodes.begin(), nodes.end(), id); it != nodes.end()) {
+        nodes.erase(it);
+    } else {
+        nodes.push_back(id);
+    }
+    assign(std::move(nodes), false);
+}
+
+void Selection::setNodes(const std::vector<document::NodeId>& ids, document::NodeId current) {
+    std::vector<document::NodeId> nodes;
+    bool hasCurrent = false;
+    for (document::NodeId id : ids) {
+        if (id == document::kNoNode || !m_scene.findNode(id) ||
+            std::find(nodes.begin(), nodes.end(), id) != nodes.end()) {
+            continue;
+        }
+        if (id == current) {
+            hasCurrent = true;
+        } else {
+            nodes.push_back(id);
+        }
+    }
+    if (hasCurrent) {
+        nodes.push_back(current);
+    }
+    assign(std::move(nodes), false);
 }
 
 void Selection::selectCamera() {
-    if (m_camera) {
-        return;
-    }
-    m_node = document::kNoNode;
-    m_camera = true;
-    emit changed();
+    assign({}, true);
 }
 
 void Selection::clear() {
-    if (isEmpty()) {
-        return;
-    }
-    m_node = document::kNoNode;
-    m_camera = false;
-    emit changed();
+    assign({}, false);
 }
 
 } // namespace speculum::ui

@@ -28,7 +28,8 @@ constexpr double kLightPickPixels = 12.0;
 
 const QColor kAxisColors[3] = {QColor(230, 70, 70), QColor(90, 200, 80), QColor(70, 130, 240)};
 const QColor kActiveColor(255, 220, 60);
-const QColor kSelectionColor(255, 150, 40);
+const QColor kSelectionColor(255, 150, 40);     // the current node's outline
+const QColor kSelectedColor(190, 105, 35, 210); // the other selected nodes' outlines
 
 } // namespace
 
@@ -128,9 +129,16 @@ void Viewport::frameSelected() {
             box.add(p + glm::dvec3(0.5));
         }
     };
-    if (m_selection && m_selection->selectedNode()) {
-        addNode(*m_selection->selectedNode());
-    } else {
+    bool any = false;
+    if (m_selection) {
+        for (document::NodeId id : m_selection->nodes()) {
+            if (const document::Node* node = m_scene.findNode(id)) {
+                addNode(*node);
+                any = true;
+            }
+        }
+    }
+    if (!any) {
         m_scene.forEachNode(addNode);
     }
     if (box.empty()) {
@@ -342,52 +350,55 @@ void Viewport::paintOverlay(QPainter& painter) {
         }
     });
 
-    const document::Node* node = m_selection ? m_selection->selectedNode() : nullptr;
-    if (!node) {
+    if (!m_selection) {
         return;
     }
-    const auto found = worlds.find(node->id());
-    if (found == worlds.end()) {
-        return;
-    }
-    const glm::dmat4& world = found->second;
-    const document::NodeData& d = node->data();
-
-    // Selection outline: the node's local box (mesh bounds, or the mirror rectangle) in world space.
-    std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
-    auto addBox = [&](glm::dvec3 lo, glm::dvec3 hi) {
-        glm::dvec3 c[8];
-        for (int i = 0; i < 8; ++i) {
-            c[i] = glm::dvec3(
-                world * glm::dvec4((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z, 1.0));
-        }
-        static const int pairs[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
-                                         {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-        for (const auto& p : pairs) {
-            edges.emplace_back(c[p[0]], c[p[1]]);
-        }
-    };
+    // Selection outlines: each selected node's local box (mesh bounds, or the mirror rectangle) in world
+    // space; the current node's is brighter and drawn last, on top.
     std::vector<std::string> ignored;
-    if (d.mesh) {
-        if (auto mesh = m_meshes.get(*d.mesh, ignored)) {
-            const render::Bounds b = render::computeBounds(**mesh);
-            addBox(glm::dvec3(b.min), glm::dvec3(b.max));
+    for (document::NodeId id : m_selection->nodes()) {
+        const document::Node* node = m_scene.findNode(id);
+        const auto found = worlds.find(id);
+        if (!node || found == worlds.end()) {
+            continue;
         }
-    }
-    if (d.mirror) {
-        const glm::dvec2 h = d.mirror->size * 0.5;
-        addBox({-h.x, 0.0, -h.y}, {h.x, 0.0, h.y});
-    }
-    painter.setPen(QPen(kSelectionColor, 1.5, Qt::DashLine));
-    painter.setBrush(Qt::NoBrush);
-    for (const auto& [a, b] : edges) {
-        const auto pa = screen.project(a), pb = screen.project(b);
-        if (pa && pb) {
-            painter.drawLine(*pa, *pb);
+        const glm::dmat4& world = found->second;
+        const document::NodeData& d = node->data();
+        std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
+        auto addBox = [&](glm::dvec3 lo, glm::dvec3 hi) {
+            glm::dvec3 c[8];
+            for (int i = 0; i < 8; ++i) {
+                c[i] = glm::dvec3(world * glm::dvec4((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y,
+                                                     (i & 4) ? hi.z : lo.z, 1.0));
+            }
+            static const int pairs[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                             {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+            for (const auto& p : pairs) {
+                edges.emplace_back(c[p[0]], c[p[1]]);
+            }
+        };
+        if (d.mesh) {
+            if (auto mesh = m_meshes.get(*d.mesh, ignored)) {
+                const render::Bounds b = render::computeBounds(**mesh);
+                addBox(glm::dvec3(b.min), glm::dvec3(b.max));
+            }
+        }
+        if (d.mirror) {
+            const glm::dvec2 h = d.mirror->size * 0.5;
+            addBox({-h.x, 0.0, -h.y}, {h.x, 0.0, h.y});
+        }
+        const bool current = id == m_selection->node();
+        painter.setPen(QPen(current ? kSelectionColor : kSelectedColor, current ? 1.5 : 1.0, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        for (const auto& [a, b] : edges) {
+            const auto pa = screen.project(a), pb = screen.project(b);
+            if (pa && pb) {
+                painter.drawLine(*pa, *pb);
+            }
         }
     }
 
-    // Handles.
+    // Handles: on the current node only; dragging them moves just that node, not the whole selection.
     if (!m_undoStack) {
         return;
     }
@@ -451,7 +462,9 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         m_drag = Drag::Pan;
     } else if (event->button() == Qt::LeftButton) {
         updateGizmo();
-        const int axis = m_selection && m_undoStack ? m_gizmo.hitTest(pos) : -1;
+        // Ctrl+click always picks (to add or remove), even over a handle.
+        const bool ctrl = event->modifiers() & Qt::ControlModifier;
+        const int axis = m_selection && m_undoStack && !ctrl ? m_gizmo.hitTest(pos) : -1;
         if (axis >= 0) {
             m_drag = Drag::Handle;
             m_dragAxis = axis;
@@ -463,6 +476,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         }
         m_pressPosition = pos;
         m_pressAlt = event->modifiers() & Qt::AltModifier;
+        m_pressCtrl = event->modifiers() & Qt::ControlModifier;
     } else {
         QOpenGLWidget::mousePressEvent(event);
         return;
@@ -532,7 +546,10 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     }
     if (m_drag == Drag::PendingClick && m_selection) {
         const std::uint64_t id = pickAt(m_pressPosition, m_pressAlt);
-        if (id) {
+        if (m_pressCtrl) {
+            // Ctrl+click adds or removes; Ctrl+click on nothing keeps the selection.
+            m_selection->toggleNode(document::NodeId(id));
+        } else if (id) {
             m_selection->selectNode(document::NodeId(id));
         } else {
             m_selection->clear();

@@ -31,8 +31,9 @@ class ViewportOverlay;
 // (created in initializeGL, freed on QOpenGLContext::aboutToBeDestroyed) and feeds it.
 //
 // Mouse: a click selects what is under the cursor (through mirrors: clicking a reflection selects the
-// reflected object; Alt+click selects the mirror itself); dragging a handle of the selected node moves,
-// rotates or scales it (one undo step per drag); left drag elsewhere orbits around the camera target,
+// reflected object; Alt+click selects the mirror itself), Ctrl+click adds it to the selection or takes it
+// out; dragging a handle of the current node moves, rotates or scales that node only (one undo step per
+// drag); left drag elsewhere orbits around the camera target,
 // middle (or Shift+left) drag pans, the wheel zooms, double-click returns to the scene camera.
 // Navigation moves the view's own free camera, unless "look through the scene camera" is on: then it
 // edits the document's camera (undoable, one step per drag).
@@ -72,7 +73,7 @@ public:
 
     // What a click at a widget position (logical pixels) would select: a node id, or 0.
     std::uint64_t pickAt(QPointF position, bool mirrorItself = false);
-    // Where a handle axis of the selected node lies on screen (for tests and benchmarks): the tip of
+    // Where a handle axis of the current node lies on screen (for tests and benchmarks): the tip of
     // `axis` (move/scale) or a point on its ring (rotate); nothing when no handles are shown.
     std::optional<QPointF> handlePoint(int axis);
     // The point the view looks at, where new nodes are placed.
@@ -85,7 +86,7 @@ public:
 public slots:
     // Back to the scene's camera after mouse navigation.
     void resetView();
-    // Moves the view so the selected node fills it (all nodes when nothing is selected).
+    // Moves the view so the selected nodes fill it (all nodes when nothing is selected).
     void frameSelected();
 
 signals:
@@ -146,6 +147,7 @@ private:
     QPoint m_lastMouse;
     QPointF m_pressPosition;
     bool m_pressAlt = false;
+    bool m_pressCtrl = false;
     int m_dragAxis = -1;
     Gizmo m_dragGizmo; // the handles as they were when the drag began
     document::NodeData m_dragStart;

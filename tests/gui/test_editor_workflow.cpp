@@ -1,7 +1,10 @@
 // The editor as a user drives it: building a scene from the Add menu and the inspector, undoing it all and
 // redoing it, saving and reopening; the scene tree's rename, reparent, delete and duplicate; refused
-// inspector values; click-to-select (also through a mirror) and handle drags; crash recovery.
+// inspector values; click-to-select (also through a mirror) and handle drags; multiple selection in the tree
+// and the viewport, with Delete and Duplicate as one undo step; crash recovery.
 #include "GuiTestSupport.hpp"
+#include "editor/document/Commands.hpp"
+#include "editor/document/PickScene.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/AnimationClock.hpp"
@@ -114,8 +117,31 @@ protected:
         return p ? p->toPoint() : QPoint();
     }
 
+    QTreeView* treeView() { return m_window->sceneTree().findChild<QTreeView*>(QStringLiteral("sceneTree")); }
+
+    // Clicks a row of the scene tree as a user does (with Ctrl or Shift for a multiple selection).
+    void clickRow(const QModelIndex& index, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+        QTreeView* view = treeView();
+        ASSERT_TRUE(index.isValid());
+        view->scrollTo(index);
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, modifiers, view->visualRect(index).center());
+    }
+
+    // The node ids the tree shows selected, in tree order.
+    std::vector<NodeId> treeSelection() {
+        std::vector<NodeId> ids;
+        QModelIndexList rows = treeView()->selectionModel()->selectedIndexes();
+        std::sort(rows.begin(), rows.end());
+        for (const QModelIndex& index : rows) {
+            ids.push_back(m_window->sceneTreeModel().nodeId(index));
+        }
+        return ids;
+    }
+
     std::unique_ptr<MainWindow> m_window;
 };
+
+using Ids = std::vector<NodeId>;
 
 TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndReopen) {
     m_window->newProject();
@@ -353,6 +379,160 @@ TEST_F(EditorWorkflow, ClickSelectsThroughMirrorsAndHandlesMoveWithOneUndoStep) 
     EXPECT_TRUE(viewport.handlePoint(2));
     viewport.setHandleMode(ui::HandleMode::Select);
     EXPECT_FALSE(viewport.handlePoint(0));
+}
+
+TEST_F(EditorWorkflow, CtrlClickInTheTreeSelectsSeveralNodesThatDeleteAndDuplicateAsOneStep) {
+    openTeapot();
+    ui::SceneTreeModel& tree = m_window->sceneTreeModel();
+    ui::Selection& selection = m_window->selection();
+    QUndoStack& undo = m_window->undoStack();
+    const NodeId teapot = *nodeNamed("Teapot");
+    const NodeId table = *nodeNamed("Table");
+    const NodeId light = *nodeNamed("Light");
+
+    clickRow(tree.indexOf(teapot));
+    clickRow(tree.indexOf(light), Qt::ControlModifier);
+    EXPECT_EQ(selection.nodes(), (Ids{teapot, light}));
+    EXPECT_EQ(selection.node(), light) << "the last one clicked is current";
+    EXPECT_NE(m_window->inspector().editor(QStringLiteral("light.intensity")), nullptr)
+        << "the inspector shows the current node";
+    // Ctrl+click again takes a node out; Shift+click selects a range.
+    clickRow(tree.indexOf(teapot), Qt::ControlModifier);
+    EXPECT_EQ(selection.nodes(), Ids{light});
+    clickRow(tree.indexOf(light));
+    clickRow(tree.indexOf(teapot), Qt::ShiftModifier); // Teapot, Table, Light
+    EXPECT_EQ(selection.nodes().size(), 3u);
+    EXPECT_EQ(selection.node(), teapot);
+
+    // The camera row is selected alone, and left out when nodes are added to it.
+    clickRow(tree.cameraIndex(), Qt::ControlModifier);
+    EXPECT_TRUE(selection.isCamera());
+    EXPECT_EQ(treeView()->selectionModel()->selectedIndexes().size(), 1);
+    clickRow(tree.indexOf(table), Qt::ControlModifier);
+    EXPECT_FALSE(selection.isCamera());
+    EXPECT_EQ(selection.nodes(), Ids{table});
+    EXPECT_EQ(treeSelection(), Ids{table});
+
+    // The tree follows a selection made elsewhere.
+    selection.setNodes({teapot, light}, teapot);
+    EXPECT_EQ(treeSelection(), (Ids{teapot, light}));
+    EXPECT_EQ(tree.nodeId(treeView()->currentIndex()), teapot);
+
+    // Delete both: one undo step; one undo brings both back.
+    const int steps = undo.count();
+    trigger("actionDelete");
+    QCoreApplication::processEvents(); // the selection lets go of removed nodes once the command is done
+    EXPECT_FALSE(m_window->scene().findNode(teapot));
+    EXPECT_FALSE(m_window->scene().findNode(light));
+    EXPECT_EQ(tree.rowCount(), 2);
+    EXPECT_TRUE(selection.isEmpty());
+    EXPECT_EQ(undo.count(), steps + 1);
+    EXPECT_EQ(undo.undoText().toStdString(), "Delete 2 nodes");
+    undo.undo();
+    EXPECT_TRUE(m_window->scene().findNode(teapot));
+    EXPECT_TRUE(m_window->scene().findNode(light));
+    EXPECT_EQ(m_window->scene().indexOf(teapot), 0);
+    EXPECT_EQ(m_window->scene().indexOf(light), 2);
+    EXPECT_EQ(tree.rowCount(), 4);
+
+    // Duplicate both: the copies are selected, right after their originals; one step to undo and redo.
+    selection.setNodes({teapot, light}, teapot);
+    trigger("actionDuplicate");
+    EXPECT_EQ(undo.undoText().toStdString(), "Duplicate 2 nodes");
+    EXPECT_EQ(undo.count(), steps + 1);
+    const Ids copies = selection.nodes();
+    ASSERT_EQ(copies.size(), 2u);
+    EXPECT_EQ(m_window->scene().findNode(copies[0])->name(), "Light 2");
+    EXPECT_EQ(m_window->scene().findNode(copies[1])->name(), "Teapot 2");
+    EXPECT_EQ(selection.node(), copies[1]) << "the copy of the current node is current";
+    EXPECT_EQ(m_window->scene().indexOf(copies[1]), m_window->scene().indexOf(teapot) + 1);
+    EXPECT_EQ(m_window->scene().indexOf(copies[0]), m_window->scene().indexOf(light) + 1);
+    EXPECT_EQ(tree.rowCount(), 6);
+    EXPECT_EQ(treeSelection().size(), 2u);
+    undo.undo();
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(m_window->scene().findNode(copies[0]));
+    EXPECT_FALSE(m_window->scene().findNode(copies[1]));
+    EXPECT_TRUE(selection.isEmpty());
+    EXPECT_EQ(tree.rowCount(), 4);
+    undo.redo();
+    EXPECT_TRUE(m_window->scene().findNode(copies[0]) && m_window->scene().findNode(copies[1]));
+    EXPECT_EQ(tree.rowCount(), 6);
+    undo.undo();
+
+    // A node under a selected ancestor goes with the ancestor: one delete, not two.
+    undo.push(new document::MoveNodeCommand(m_window->scene(), light, teapot, 0));
+    selection.setNodes({light, teapot});
+    trigger("actionDelete");
+    EXPECT_EQ(undo.undoText().toStdString(), "Delete \u201cTeapot\u201d");
+    EXPECT_FALSE(m_window->scene().findNode(light));
+    undo.undo();
+    EXPECT_EQ(m_window->scene().parentOf(light), teapot);
+
+    // Dragging several rows at once is refused (not supported), rather than moving only one of them.
+    std::unique_ptr<QMimeData> both(tree.mimeData({tree.indexOf(table), tree.indexOf(light)}));
+    EXPECT_FALSE(tree.canDropMimeData(both.get(), Qt::MoveAction, -1, 0, tree.indexOf(teapot)));
+
+    // Select All: every node, children too.
+    trigger("actionSelectAll");
+    EXPECT_EQ(selection.nodes().size(), 3u);
+    EXPECT_EQ(treeSelection().size(), 3u);
+    // Ctrl+A in the tree too, from the camera row: the nodes, without the camera.
+    selection.selectCamera();
+    treeView()->setFocus();
+    QTest::keyClick(treeView(), Qt::Key_A, Qt::ControlModifier);
+    EXPECT_FALSE(selection.isCamera());
+    EXPECT_EQ(selection.nodes().size(), 3u);
+}
+
+TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandlesMoveOnlyTheCurrentNode) {
+    openTeapot();
+    ui::Viewport& viewport = m_window->viewport();
+    ui::Selection& selection = m_window->selection();
+    const NodeId teapot = *nodeNamed("Teapot");
+    const NodeId table = *nodeNamed("Table");
+    const NodeId light = *nodeNamed("Light");
+    const glm::dvec3 body(0.0, -1.0 + 1.0 * 0.25, -3.0);
+    const glm::dvec3 reflection(0.0, -1.0 - 1.0 * 0.25, -3.0);
+    const glm::dvec3 lamp(document::worldMatrices(m_window->scene(), viewport.lastFrameTime()).at(light)[3]);
+
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, onScreen(body));
+    EXPECT_EQ(selection.nodes(), Ids{teapot});
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::ControlModifier, onScreen(lamp));
+    EXPECT_EQ(selection.nodes(), (Ids{teapot, light}));
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::ControlModifier | Qt::AltModifier, onScreen(reflection));
+    EXPECT_EQ(selection.nodes(), (Ids{teapot, light, table})) << "Ctrl+Alt+click adds the mirror itself";
+    EXPECT_EQ(selection.node(), table);
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::ControlModifier, onScreen(body));
+    EXPECT_EQ(selection.nodes(), (Ids{light, table})) << "Ctrl+click on a selected node takes it out";
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::ControlModifier, QPoint(viewport.width() / 2, 5));
+    EXPECT_EQ(selection.nodes(), (Ids{light, table})) << "Ctrl+click on nothing keeps the selection";
+    ASSERT_TRUE(waitForFrames(*m_window)); // outlines of both drawn without trouble
+
+    // Handles sit on the current node; dragging them moves it alone.
+    selection.setNodes({table, teapot}, teapot);
+    viewport.setHandleMode(ui::HandleMode::Move);
+    ASSERT_TRUE(waitForFrames(*m_window));
+    const auto handle = viewport.handlePoint(0);
+    ASSERT_TRUE(handle);
+    const double teapotX = m_window->scene().findNode(teapot)->data().transform.translate.x;
+    const double tableX = m_window->scene().findNode(table)->data().transform.translate.x;
+    const QPoint start = handle->toPoint();
+    QTest::mousePress(&viewport, Qt::LeftButton, Qt::NoModifier, start);
+    QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(40, 0)),
+                     viewport.mapToGlobal(QPointF(start + QPoint(40, 0))), Qt::NoButton, Qt::LeftButton,
+                     Qt::NoModifier);
+    QCoreApplication::sendEvent(&viewport, &move);
+    QTest::mouseRelease(&viewport, Qt::LeftButton, Qt::NoModifier, start + QPoint(40, 0));
+    EXPECT_GT(m_window->scene().findNode(teapot)->data().transform.translate.x, teapotX + 0.05);
+    EXPECT_DOUBLE_EQ(m_window->scene().findNode(table)->data().transform.translate.x, tableX);
+    EXPECT_EQ(selection.nodes(), (Ids{table, teapot})) << "a handle drag keeps the selection";
+
+    // Plain click selects only what is under the cursor; on nothing, nothing.
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, onScreen(lamp));
+    EXPECT_EQ(selection.nodes(), Ids{light});
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, QPoint(viewport.width() / 2, 5));
+    EXPECT_TRUE(selection.isEmpty());
 }
 
 TEST_F(EditorWorkflow, ImportsDroppedModelsAndOffersRecoveredWork) {

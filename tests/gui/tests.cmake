@@ -21,3 +21,7 @@ speculum_add_test(test_crash_recovery TIER gui
 speculum_add_test(test_accuracy_panel TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_accuracy_panel.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
     LIBS speculum_ui Qt6::Test)
+# The shared Selection (several nodes, a current one) without a window.
+speculum_add_test(test_selection TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_selection.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)
