@@ -513,6 +513,9 @@ TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandlesMoveOnlyThe
     selection.setNodes({table, teapot}, teapot);
     viewport.setHandleMode(ui::HandleMode::Move);
     ASSERT_TRUE(waitForFrames(*m_window));
+    // For a person to look at: both outlined (the teapot brighter), both rows selected, handles on the
+    // teapot.
+    EXPECT_TRUE(m_window->grab().save(QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-multiselect.png")));
     const auto handle = viewport.handlePoint(0);
     ASSERT_TRUE(handle);
     const double teapotX = m_window->scene().findNode(teapot)->data().transform.translate.x;
