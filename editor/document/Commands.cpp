@@ -8,7 +8,7 @@ namespace speculum::document {
 namespace {
 
 // QUndoCommand::id() values; any distinct non-negative numbers.
-enum CommandId { SetNodeDataId = 1001, SetSettingsId, SetCameraId };
+enum CommandId { SetNodeDataId = 1001, SetSettingsId, SetCameraId, SetNodesDataId };
 
 QString quoted(const std::string& name) {
     return QStringLiteral("\u201c%1\u201d").arg(QString::fromStdString(name));
@@ -53,6 +53,56 @@ int SetNodeDataCommand::id() const {
 bool SetNodeDataCommand::mergeWith(const QUndoCommand* other) {
     const auto* next = dynamic_cast<const SetNodeDataCommand*>(other);
     if (!next || next->m_node != m_node || next->m_mergeKey != m_mergeKey || m_mergeKey.isEmpty()) {
+        return false;
+    }
+    m_after = next->m_after;
+    return true;
+}
+
+// ---- SetNodesDataCommand ----
+
+SetNodesDataCommand::SetNodesDataCommand(Scene& scene, std::vector<Change> changes, const QString& text,
+                                         const QString& mergeKey, QUndoCommand* parent)
+    : QUndoCommand(parent)
+    , m_scene(scene)
+    , m_mergeKey(mergeKey) {
+    m_nodes.reserve(changes.size());
+    m_before.reserve(changes.size());
+    m_after.reserve(changes.size());
+    for (Change& change : changes) {
+        m_nodes.push_back(change.id);
+        m_before.push_back(
+            requireNode(scene, change.id, "SetNodesDataCommand::SetNodesDataCommand(): no such node").data());
+        m_after.push_back(std::move(change.data));
+    }
+    if (!text.isEmpty()) {
+        setText(text);
+    } else if (m_before.size() == 1) {
+        setText(QStringLiteral("Edit %1").arg(quoted(m_before.front().name)));
+    } else {
+        setText(QStringLiteral("Edit %1 nodes").arg(m_before.size()));
+    }
+}
+
+void SetNodesDataCommand::undo() {
+    for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+        m_scene.setNodeData(m_nodes[i], m_before[i]);
+    }
+}
+
+void SetNodesDataCommand::redo() {
+    for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+        m_scene.setNodeData(m_nodes[i], m_after[i]);
+    }
+}
+
+int SetNodesDataCommand::id() const {
+    return m_mergeKey.isEmpty() ? -1 : SetNodesDataId;
+}
+
+bool SetNodesDataCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = dynamic_cast<const SetNodesDataCommand*>(other);
+    if (!next || next->m_nodes != m_nodes || next->m_mergeKey != m_mergeKey || m_mergeKey.isEmpty()) {
         return false;
     }
     m_after = next->m_after;

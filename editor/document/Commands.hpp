@@ -4,6 +4,7 @@
 
 #include <QUndoCommand>
 #include <memory>
+#include <vector>
 
 namespace speculum::document {
 
@@ -27,6 +28,30 @@ private:
     NodeId m_node;
     NodeData m_before;
     NodeData m_after;
+    QString m_mergeKey;
+};
+
+// Replaces the data of several nodes at once, as one undo step: a handle drag on a multiple selection.
+// Consecutive commands with the same non-empty mergeKey over the same nodes (same ids, same order) merge,
+// so a whole drag stays one step however many mouse moves it takes.
+class SetNodesDataCommand : public QUndoCommand {
+public:
+    struct Change {
+        NodeId id = kNoNode;
+        NodeData data;
+    };
+    SetNodesDataCommand(Scene& scene, std::vector<Change> changes, const QString& text = {},
+                        const QString& mergeKey = {}, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    Scene& m_scene;
+    std::vector<NodeId> m_nodes;
+    std::vector<NodeData> m_before;
+    std::vector<NodeData> m_after;
     QString m_mergeKey;
 };
 

@@ -176,4 +176,30 @@ document::NodeData Gizmo::drag(const document::NodeData& start, int axis, QPoint
     return out;
 }
 
+document::NodeData followDrag(HandleMode mode, const document::NodeData& leadStart,
+                              const document::NodeData& leadNow, const glm::dmat4& leadParentWorld,
+                              const document::NodeData& start, const glm::dmat4& parentWorld) {
+    document::NodeData out = start;
+    if (mode == HandleMode::Move) {
+        const glm::dvec3 worldDelta(
+            leadParentWorld * glm::dvec4(leadNow.transform.translate - leadStart.transform.translate, 0.0));
+        const glm::dvec3 local(glm::inverse(parentWorld) * glm::dvec4(worldDelta, 0.0));
+        // A parent scaled to zero has no inverse: such a node cannot follow and stays where it is.
+        if (std::isfinite(local.x) && std::isfinite(local.y) && std::isfinite(local.z)) {
+            out.transform.translate = start.transform.translate + local;
+        }
+    } else if (mode == HandleMode::Rotate) {
+        out.transform.rotate =
+            start.transform.rotate + (leadNow.transform.rotate - leadStart.transform.rotate);
+    } else if (mode == HandleMode::Scale) {
+        for (int i = 0; i < 3; ++i) {
+            if (leadStart.transform.scale[i] != 0.0) {
+                out.transform.scale[i] =
+                    start.transform.scale[i] * (leadNow.transform.scale[i] / leadStart.transform.scale[i]);
+            }
+        }
+    }
+    return out;
+}
+
 } // namespace speculum::ui

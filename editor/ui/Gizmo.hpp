@@ -74,4 +74,13 @@ private:
     std::array<Axis, 3> m_axes;
 };
 
+// Carries a handle drag of the node the handles sit on (from `leadStart` to `leadNow`, its parent's world
+// matrix `leadParentWorld`) over to another selected node (`start`, `parentWorld`): Move shifts it by the
+// same world-space displacement, expressed in its own parent's space; Rotate adds the same Euler-angle
+// change, so it turns about its own origin; Scale multiplies each axis by the lead node's factor (an axis on
+// which the lead node started at zero scale has no factor and stays as it is). Only the transform changes.
+document::NodeData followDrag(HandleMode mode, const document::NodeData& leadStart,
+                              const document::NodeData& leadNow, const glm::dmat4& leadParentWorld,
+                              const document::NodeData& start, const glm::dmat4& parentWorld);
+
 } // namespace speculum::ui

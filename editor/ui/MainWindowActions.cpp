@@ -100,21 +100,7 @@ render::Status MainWindow::importModelFile(const QString& path, bool asReflector
 }
 
 std::vector<document::NodeId> MainWindow::selectedRoots() const {
-    // A node under a selected ancestor goes with that ancestor: acting on both would act twice.
-    const std::vector<document::NodeId>& selected = m_selection->nodes();
-    std::vector<document::NodeId> roots;
-    for (document::NodeId id : selected) {
-        if (!m_scene->findNode(id)) {
-            continue;
-        }
-        const bool underAnother = std::any_of(selected.begin(), selected.end(), [&](document::NodeId other) {
-            return other != id && m_scene->isAncestor(other, id);
-        });
-        if (!underAnother) {
-            roots.push_back(id);
-        }
-    }
-    return roots;
+    return m_selection->roots();
 }
 
 render::Status MainWindow::deleteSelected() {
@@ -378,8 +364,9 @@ void MainWindow::showControls() {
            "<tr><td><b>Alt+click</b></td><td>select a mirror itself</td></tr>"
            "<tr><td><b>Ctrl+click</b></td><td>add to the selection or remove from it (also in the "
            "scene tree, where Shift+click selects a range)</td></tr>"
-           "<tr><td><b>Drag a handle</b></td><td>move / rotate / scale the current (last selected) "
-           "node only</td></tr>"
+           "<tr><td><b>Drag a handle</b></td><td>move / rotate / scale every selected node (the handles "
+           "sit on the current, last selected one; each node turns and scales about its own origin)"
+           "</td></tr>"
            "<tr><td><b>Q / W / E / R</b></td><td>no handles / move / rotate / scale</td></tr>"
            "<tr><td><b>Left drag</b></td><td>orbit around the camera target</td></tr>"
            "<tr><td><b>Middle drag</b> or <b>Shift+left drag</b></td><td>pan</td></tr>"

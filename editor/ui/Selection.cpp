@@ -25,6 +25,22 @@ bool Selection::contains(document::NodeId id) const {
     return std::find(m_nodes.begin(), m_nodes.end(), id) != m_nodes.end();
 }
 
+std::vector<document::NodeId> Selection::roots() const {
+    std::vector<document::NodeId> roots;
+    for (document::NodeId id : m_nodes) {
+        if (!m_scene.findNode(id)) {
+            continue;
+        }
+        const bool underAnother = std::any_of(m_nodes.begin(), m_nodes.end(), [&](document::NodeId other) {
+            return other != id && m_scene.isAncestor(other, id);
+        });
+        if (!underAnother) {
+            roots.push_back(id);
+        }
+    }
+    return roots;
+}
+
 void Selection::assign(std::vector<document::NodeId> nodes, bool camera) {
     if (nodes == m_nodes && camera == m_camera) {
         return;

@@ -22,6 +22,9 @@ public:
     // All selected nodes in the order they were selected: the current node is last.
     const std::vector<document::NodeId>& nodes() const { return m_nodes; }
     bool contains(document::NodeId id) const;
+    // The selected nodes that have no selected ancestor, in selection order: what an action on the whole
+    // selection acts on (a node under a selected ancestor goes with it; acting on both would act twice).
+    std::vector<document::NodeId> roots() const;
     bool isCamera() const { return m_camera; }
     bool isEmpty() const { return m_nodes.empty() && !m_camera; }
     const document::Node* selectedNode() const { return m_scene.findNode(node()); }

@@ -398,7 +398,7 @@ void Viewport::paintOverlay(QPainter& painter) {
         }
     }
 
-    // Handles: on the current node only; dragging them moves just that node, not the whole selection.
+    // Handles: on the current node only (a drag carries over to the rest of the selection).
     if (!m_undoStack) {
         return;
     }
@@ -471,6 +471,12 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
             m_dragGizmo = m_gizmo;
             m_dragNode = m_selection->node();
             m_dragStart = m_selection->selectedNode()->data();
+            m_dragParentWorld = document::parentWorldMatrix(m_scene, m_dragNode, m_lastFrameTime);
+            m_draggedNodes.clear();
+            for (document::NodeId id : m_selection->roots()) {
+                m_draggedNodes.push_back({id, m_scene.findNode(id)->data(),
+                                          document::parentWorldMatrix(m_scene, id, m_lastFrameTime)});
+            }
         } else {
             m_drag = Drag::PendingClick;
         }
@@ -501,17 +507,32 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     if (m_drag == Drag::Handle) {
-        const document::Node* node = m_scene.findNode(m_dragNode);
-        if (node) {
-            document::NodeData data = m_dragGizmo.drag(m_dragStart, m_dragAxis, m_pressPosition, posF);
-            if (!(data == node->data())) {
+        if (m_scene.findNode(m_dragNode)) {
+            const document::NodeData lead = m_dragGizmo.drag(m_dragStart, m_dragAxis, m_pressPosition, posF);
+            std::vector<document::SetNodesDataCommand::Change> changes;
+            bool changed = false;
+            for (const DraggedNode& dragged : m_draggedNodes) {
+                const document::Node* node = m_scene.findNode(dragged.id);
+                if (!node) {
+                    continue;
+                }
+                document::NodeData data =
+                    dragged.id == m_dragNode
+                        ? lead
+                        : followDrag(m_dragGizmo.mode(), m_dragStart, lead, m_dragParentWorld, dragged.start,
+                                     dragged.parentWorld);
+                changed = changed || !(data == node->data());
+                changes.push_back({dragged.id, std::move(data)});
+            }
+            if (changed) {
                 static const char* const verbs[] = {"Select", "Move", "Rotate", "Scale"};
-                m_undoStack->push(
-                    new document::SetNodeDataCommand(m_scene, m_dragNode, data,
-                                                     tr("%1 \u201c%2\u201d")
-                                                         .arg(QLatin1String(verbs[int(m_dragGizmo.mode())]),
-                                                              QString::fromStdString(node->name())),
-                                                     QStringLiteral("handle#%1").arg(m_gestureSerial)));
+                const QLatin1String verb(verbs[int(m_dragGizmo.mode())]);
+                const QString text =
+                    changes.size() == 1
+                        ? tr("%1 \u201c%2\u201d").arg(verb, QString::fromStdString(changes.front().data.name))
+                        : tr("%1 %2 nodes").arg(verb).arg(changes.size());
+                m_undoStack->push(new document::SetNodesDataCommand(
+                    m_scene, std::move(changes), text, QStringLiteral("handle#%1").arg(m_gestureSerial)));
             }
         }
         event->accept();
@@ -580,11 +601,17 @@ void Viewport::wheelEvent(QWheelEvent* event) {
 
 void Viewport::keyPressEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Escape && m_drag == Drag::Handle) {
-        // Cancel the drag: put the node back as it was (the merged step then changes nothing).
-        if (m_scene.findNode(m_dragNode)) {
+        // Cancel the drag: put the nodes back as they were (the merged step then changes nothing).
+        std::vector<document::SetNodesDataCommand::Change> changes;
+        for (const DraggedNode& dragged : m_draggedNodes) {
+            if (m_scene.findNode(dragged.id)) {
+                changes.push_back({dragged.id, dragged.start});
+            }
+        }
+        if (!changes.empty()) {
             m_undoStack->push(
-                new document::SetNodeDataCommand(m_scene, m_dragNode, m_dragStart, tr("Cancel drag"),
-                                                 QStringLiteral("handle#%1").arg(m_gestureSerial)));
+                new document::SetNodesDataCommand(m_scene, std::move(changes), tr("Cancel drag"),
+                                                  QStringLiteral("handle#%1").arg(m_gestureSerial)));
         }
         m_drag = Drag::None;
         m_overlay->update();

@@ -32,8 +32,9 @@ class ViewportOverlay;
 //
 // Mouse: a click selects what is under the cursor (through mirrors: clicking a reflection selects the
 // reflected object; Alt+click selects the mirror itself), Ctrl+click adds it to the selection or takes it
-// out; dragging a handle of the current node moves, rotates or scales that node only (one undo step per
-// drag); left drag elsewhere orbits around the camera target,
+// out; the handles sit on the current node, and dragging one moves, rotates or scales every selected node
+// (a node under a selected ancestor goes with it) by the same displacement, angle or factor, each about its
+// own origin (one undo step per drag); left drag elsewhere orbits around the camera target,
 // middle (or Shift+left) drag pans, the wheel zooms, double-click returns to the scene camera.
 // Navigation moves the view's own free camera, unless "look through the scene camera" is on: then it
 // edits the document's camera (undoable, one step per drag).
@@ -150,8 +151,17 @@ private:
     bool m_pressCtrl = false;
     int m_dragAxis = -1;
     Gizmo m_dragGizmo; // the handles as they were when the drag began
+    // The node the handles sit on, as it was when the drag began; the drag is measured on it.
     document::NodeData m_dragStart;
     std::uint64_t m_dragNode = 0;
+    glm::dmat4 m_dragParentWorld{1.0};
+    // What the drag changes: the selection's roots, as they were when it began.
+    struct DraggedNode {
+        std::uint64_t id = 0; // a document::NodeId
+        document::NodeData start;
+        glm::dmat4 parentWorld{1.0};
+    };
+    std::vector<DraggedNode> m_draggedNodes;
     int m_gestureSerial = 0;
 };
 

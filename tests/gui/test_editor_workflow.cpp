@@ -1,7 +1,7 @@
 // The editor as a user drives it: building a scene from the Add menu and the inspector, undoing it all and
 // redoing it, saving and reopening; the scene tree's rename, reparent, delete and duplicate; refused
 // inspector values; click-to-select (also through a mirror) and handle drags; multiple selection in the tree
-// and the viewport, with Delete and Duplicate as one undo step; crash recovery.
+// and the viewport, with Delete, Duplicate and handle drags as one undo step; crash recovery.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Commands.hpp"
 #include "editor/document/PickScene.hpp"
@@ -29,6 +29,8 @@
 #include <QUndoStack>
 #include <QUrl>
 #include <QWindow>
+#include <algorithm>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <optional>
 
@@ -485,7 +487,7 @@ TEST_F(EditorWorkflow, CtrlClickInTheTreeSelectsSeveralNodesThatDeleteAndDuplica
     EXPECT_EQ(selection.nodes().size(), 3u);
 }
 
-TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandlesMoveOnlyTheCurrentNode) {
+TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandleDragsActOnTheWholeSelection) {
     openTeapot();
     ui::Viewport& viewport = m_window->viewport();
     ui::Selection& selection = m_window->selection();
@@ -509,27 +511,103 @@ TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandlesMoveOnlyThe
     EXPECT_EQ(selection.nodes(), (Ids{light, table})) << "Ctrl+click on nothing keeps the selection";
     ASSERT_TRUE(waitForFrames(*m_window)); // outlines of both drawn without trouble
 
-    // Handles sit on the current node; dragging them moves it alone.
+    // Handles sit on the current node; dragging them acts on the whole selection, as one undo step.
     selection.setNodes({table, teapot}, teapot);
     viewport.setHandleMode(ui::HandleMode::Move);
     ASSERT_TRUE(waitForFrames(*m_window));
     // For a person to look at: both outlined (the teapot brighter), both rows selected, handles on the
     // teapot.
     EXPECT_TRUE(m_window->grab().save(QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-multiselect.png")));
-    const auto handle = viewport.handlePoint(0);
+    auto transformOf = [&](NodeId id) { return m_window->scene().findNode(id)->data().transform; };
+    // Drags from a handle point to the right in several mouse moves.
+    auto dragRight = [&](QPointF handle, int pixels) {
+        const QPoint start = handle.toPoint();
+        QTest::mousePress(&viewport, Qt::LeftButton, Qt::NoModifier, start);
+        for (int dx = 10; dx <= pixels; dx += 10) {
+            QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(dx, 0)),
+                             viewport.mapToGlobal(QPointF(start + QPoint(dx, 0))), Qt::NoButton,
+                             Qt::LeftButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(&viewport, &move);
+        }
+        QTest::mouseRelease(&viewport, Qt::LeftButton, Qt::NoModifier, start + QPoint(pixels, 0));
+    };
+    const document::Transform teapot0 = transformOf(teapot), table0 = transformOf(table);
+    const int steps = m_window->undoStack().count();
+
+    // Move: both by the same world displacement (both are top-level nodes, so also the same translate
+    // change).
+    auto handle = viewport.handlePoint(0);
     ASSERT_TRUE(handle);
-    const double teapotX = m_window->scene().findNode(teapot)->data().transform.translate.x;
-    const double tableX = m_window->scene().findNode(table)->data().transform.translate.x;
-    const QPoint start = handle->toPoint();
-    QTest::mousePress(&viewport, Qt::LeftButton, Qt::NoModifier, start);
-    QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(40, 0)),
-                     viewport.mapToGlobal(QPointF(start + QPoint(40, 0))), Qt::NoButton, Qt::LeftButton,
+    dragRight(*handle, 40);
+    const glm::dvec3 teapotMoved = transformOf(teapot).translate - teapot0.translate;
+    const glm::dvec3 tableMoved = transformOf(table).translate - table0.translate;
+    EXPECT_GT(teapotMoved.x, 0.05);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(tableMoved[i], teapotMoved[i], 1e-9) << "axis " << i;
+    }
+    EXPECT_EQ(selection.nodes(), (Ids{table, teapot})) << "a handle drag keeps the selection";
+    EXPECT_EQ(m_window->undoStack().count(), steps + 1) << "the whole drag is one step";
+    EXPECT_EQ(m_window->undoStack().undoText().toStdString(), "Move 2 nodes");
+    m_window->undoStack().undo();
+    EXPECT_EQ(transformOf(teapot), teapot0);
+    EXPECT_EQ(transformOf(table), table0);
+    m_window->undoStack().redo();
+    EXPECT_NEAR(transformOf(teapot).translate.x, teapot0.translate.x + teapotMoved.x, 1e-12);
+    EXPECT_NEAR(transformOf(table).translate.x, table0.translate.x + tableMoved.x, 1e-12);
+    m_window->undoStack().undo();
+
+    // Rotate: both turn by the same Euler-angle change, each about its own origin (translates unchanged).
+    viewport.setHandleMode(ui::HandleMode::Rotate);
+    ASSERT_TRUE(waitForFrames(*m_window));
+    handle = viewport.handlePoint(2);
+    ASSERT_TRUE(handle);
+    dragRight(*handle, 40);
+    const glm::dvec3 teapotTurned = transformOf(teapot).rotate - teapot0.rotate;
+    const glm::dvec3 tableTurned = transformOf(table).rotate - table0.rotate;
+    EXPECT_GT(glm::length(teapotTurned), 1.0);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(tableTurned[i], teapotTurned[i], 1e-9) << "axis " << i;
+    }
+    EXPECT_EQ(transformOf(table).translate, table0.translate);
+    EXPECT_EQ(m_window->undoStack().count(), steps + 1);
+    EXPECT_EQ(m_window->undoStack().undoText().toStdString(), "Rotate 2 nodes");
+    m_window->undoStack().undo();
+    EXPECT_EQ(transformOf(teapot), teapot0);
+    EXPECT_EQ(transformOf(table), table0);
+
+    // Scale: each axis of both multiplied by the same factor (the teapot starts at 0.25, the table at 1).
+    viewport.setHandleMode(ui::HandleMode::Scale);
+    ASSERT_TRUE(waitForFrames(*m_window));
+    handle = viewport.handlePoint(0);
+    ASSERT_TRUE(handle);
+    dragRight(*handle, 40);
+    const glm::dvec3 teapotFactor = transformOf(teapot).scale / teapot0.scale;
+    const glm::dvec3 tableFactor = transformOf(table).scale / table0.scale;
+    EXPECT_GT(std::max({teapotFactor.x, teapotFactor.y, teapotFactor.z}), 1.05);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(tableFactor[i], teapotFactor[i], 1e-9) << "axis " << i;
+    }
+    EXPECT_EQ(m_window->undoStack().undoText().toStdString(), "Scale 2 nodes");
+    m_window->undoStack().undo();
+    EXPECT_EQ(transformOf(teapot), teapot0);
+    EXPECT_EQ(transformOf(table), table0);
+    EXPECT_EQ(m_window->undoStack().count(), steps + 1) << "undone steps stay redoable";
+
+    // Esc during a drag puts every node back.
+    viewport.setHandleMode(ui::HandleMode::Move);
+    ASSERT_TRUE(waitForFrames(*m_window));
+    handle = viewport.handlePoint(0);
+    ASSERT_TRUE(handle);
+    QTest::mousePress(&viewport, Qt::LeftButton, Qt::NoModifier, handle->toPoint());
+    QMouseEvent move(QEvent::MouseMove, *handle + QPointF(30, 0),
+                     viewport.mapToGlobal(*handle + QPointF(30, 0)), Qt::NoButton, Qt::LeftButton,
                      Qt::NoModifier);
     QCoreApplication::sendEvent(&viewport, &move);
-    QTest::mouseRelease(&viewport, Qt::LeftButton, Qt::NoModifier, start + QPoint(40, 0));
-    EXPECT_GT(m_window->scene().findNode(teapot)->data().transform.translate.x, teapotX + 0.05);
-    EXPECT_DOUBLE_EQ(m_window->scene().findNode(table)->data().transform.translate.x, tableX);
-    EXPECT_EQ(selection.nodes(), (Ids{table, teapot})) << "a handle drag keeps the selection";
+    EXPECT_NE(transformOf(table), table0);
+    QTest::keyClick(&viewport, Qt::Key_Escape);
+    QTest::mouseRelease(&viewport, Qt::LeftButton, Qt::NoModifier, (*handle + QPointF(30, 0)).toPoint());
+    EXPECT_EQ(transformOf(teapot), teapot0);
+    EXPECT_EQ(transformOf(table), table0);
 
     // Plain click selects only what is under the cursor; on nothing, nothing.
     QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, onScreen(lamp));

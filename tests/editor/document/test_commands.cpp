@@ -95,6 +95,67 @@ TEST_F(CommandsTest, ASliderDragIsOneUndoStep) {
     EXPECT_EQ(scene.toData(), original);
 }
 
+TEST_F(CommandsTest, SetNodesDataChangesSeveralNodesAsOneStep) {
+    const NodeId a = idOf("A"), b1 = idOf("B1"), c = idOf("C");
+    auto moved = [&](NodeId id, double x) {
+        NodeData data = scene.findNode(id)->data();
+        data.transform.translate.x = x;
+        return SetNodesDataCommand::Change{id, data};
+    };
+    stack.push(new SetNodesDataCommand(scene, {moved(a, 1), moved(b1, 2), moved(c, 3)}, "Move 3 nodes"));
+    EXPECT_EQ(stack.count(), 1);
+    EXPECT_EQ(stack.undoText().toStdString(), "Move 3 nodes");
+    EXPECT_EQ(scene.findNode(a)->data().transform.translate.x, 1.0);
+    EXPECT_EQ(scene.findNode(b1)->data().transform.translate.x, 2.0);
+    EXPECT_EQ(scene.findNode(c)->data().transform.translate.x, 3.0);
+    const SceneData after = scene.toData();
+    stack.undo();
+    EXPECT_EQ(scene.toData(), original) << "undo restores every node";
+    stack.redo();
+    EXPECT_EQ(scene.toData(), after) << "redo applies every node again";
+
+    // Without a text it names what it edits.
+    stack.push(new SetNodesDataCommand(scene, {moved(a, 4)}));
+    EXPECT_EQ(stack.undoText().toStdString(), "Edit \u201cA\u201d");
+    stack.push(new SetNodesDataCommand(scene, {moved(a, 5), moved(c, 6)}));
+    EXPECT_EQ(stack.undoText().toStdString(), "Edit 2 nodes");
+    EXPECT_EQ(stack.count(), 3) << "no merge key: no merging";
+}
+
+TEST_F(CommandsTest, AHandleDragOverSeveralNodesIsOneUndoStep) {
+    const NodeId a = idOf("A"), c = idOf("C");
+    auto turned = [&](NodeId id, double degrees) {
+        NodeData data = scene.findNode(id)->data();
+        data.transform.rotate.z = degrees;
+        return SetNodesDataCommand::Change{id, data};
+    };
+    for (int i = 1; i <= 10; ++i) {
+        stack.push(new SetNodesDataCommand(scene, {turned(a, i * 10.0), turned(c, i * 20.0)},
+                                           "Rotate 2 nodes", "handle#1"));
+    }
+    EXPECT_EQ(stack.count(), 1);
+    EXPECT_EQ(stack.undoText().toStdString(), "Rotate 2 nodes");
+    EXPECT_EQ(scene.findNode(a)->data().transform.rotate.z, 100.0);
+    EXPECT_EQ(scene.findNode(c)->data().transform.rotate.z, 200.0);
+    stack.undo();
+    EXPECT_EQ(scene.toData(), original) << "one undo takes the whole drag back";
+    stack.redo();
+    EXPECT_EQ(scene.findNode(a)->data().transform.rotate.z, 100.0);
+    EXPECT_EQ(scene.findNode(c)->data().transform.rotate.z, 200.0);
+
+    // Another drag (key), other nodes, the same nodes in another order, or a single-node command: separate
+    // steps.
+    stack.push(new SetNodesDataCommand(scene, {turned(a, 1), turned(c, 2)}, "Rotate 2 nodes", "handle#2"));
+    stack.push(new SetNodesDataCommand(scene, {turned(a, 3)}, "Rotate", "handle#2"));
+    stack.push(new SetNodesDataCommand(scene, {turned(c, 4), turned(a, 5)}, "Rotate", "handle#2"));
+    stack.push(new SetNodeDataCommand(scene, a, turned(a, 6).data, "Rotate", "handle#2"));
+    EXPECT_EQ(stack.count(), 5);
+    while (stack.canUndo()) {
+        stack.undo();
+    }
+    EXPECT_EQ(scene.toData(), original);
+}
+
 TEST_F(CommandsTest, RenameUndoesAndRedoes) {
     const NodeId b = idOf("B");
     stack.push(new RenameNodeCommand(scene, b, "Bee"));
