@@ -7,6 +7,8 @@
 #include <QIODevice>
 #include <QMimeData>
 #include <QUndoStack>
+#include <algorithm>
+#include <utility>
 
 namespace speculum::ui {
 
@@ -206,16 +208,11 @@ bool SceneTreeModel::canDropMimeData(const QMimeData* data, Qt::DropAction actio
     }
     const NodeId newParent = nodeId(parent);
     const auto ids = decode(data);
-    // One node at a time: a drag of several selected rows is refused rather than moving only one of them.
-    if (ids.size() != 1) {
+    if (ids.empty()) {
         return false;
     }
-    for (NodeId id : ids) {
-        if (m_scene.isAncestor(id, newParent)) {
-            return false; // into its own subtree
-        }
-    }
-    return true;
+    // Not onto a dragged node nor into one's subtree: that would be a cycle.
+    return std::none_of(ids.begin(), ids.end(), [&](NodeId id) { return m_scene.isAncestor(id, newParent); });
 }
 
 bool SceneTreeModel::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
@@ -223,18 +220,14 @@ bool SceneTreeModel::dropMimeData(const QMimeData* data, Qt::DropAction action, 
     if (!canDropMimeData(data, action, row, column, parent)) {
         return false;
     }
-    // canDropMimeData() let through a single node.
     const NodeId newParent = nodeId(parent);
     const int sceneIndex = row < 0 ? -1 : (newParent == kNoNode ? std::max(row - 1, 0) : row);
-    // The rows need no removing by the view afterwards (the default removeRows() refuses): the command
-    // moved the node already.
-    return moveNode(decode(data).front(), newParent, sceneIndex);
+    // The rows need no removing by the view afterwards (the default removeRows() refuses): the commands
+    // moved the nodes already.
+    return moveNodes(decode(data), newParent, sceneIndex);
 }
 
-bool SceneTreeModel::moveNode(NodeId id, NodeId newParent, int index) {
-    if (!m_scene.findNode(id) || m_scene.isAncestor(id, newParent)) {
-        return false;
-    }
+std::optional<int> SceneTreeModel::moveTarget(NodeId id, NodeId newParent, int index) const {
     const NodeId oldParent = m_scene.parentOf(id);
     const int oldIndex = m_scene.indexOf(id);
     int newIndex = index;
@@ -246,10 +239,81 @@ bool SceneTreeModel::moveNode(NodeId id, NodeId newParent, int index) {
         newIndex = count;
     }
     if (oldParent == newParent && oldIndex == newIndex) {
+        return std::nullopt;
+    }
+    return newIndex;
+}
+
+bool SceneTreeModel::moveNode(NodeId id, NodeId newParent, int index) {
+    if (!m_scene.findNode(id) || m_scene.isAncestor(id, newParent)) {
         return false;
     }
-    m_undoStack.push(new document::MoveNodeCommand(m_scene, id, newParent, newIndex));
+    const std::optional<int> newIndex = moveTarget(id, newParent, index);
+    if (!newIndex) {
+        return false;
+    }
+    m_undoStack.push(new document::MoveNodeCommand(m_scene, id, newParent, *newIndex));
     return true;
+}
+
+std::vector<NodeId> SceneTreeModel::outermostInTreeOrder(const std::vector<NodeId>& ids) const {
+    // A node's tree position as the scene indexes from the top level down: these compare in tree order,
+    // whatever order the view listed the dragged rows in.
+    auto path = [this](NodeId id) {
+        std::vector<int> indexes;
+        for (NodeId n = id; n != kNoNode; n = m_scene.parentOf(n)) {
+            indexes.push_back(m_scene.indexOf(n));
+        }
+        std::reverse(indexes.begin(), indexes.end());
+        return indexes;
+    };
+    std::vector<std::pair<std::vector<int>, NodeId>> sorted;
+    for (NodeId id : ids) {
+        if (m_scene.findNode(id)) {
+            sorted.emplace_back(path(id), id);
+        }
+    }
+    std::sort(sorted.begin(), sorted.end());
+    // Ancestors sort before their descendants, so each node need only be checked against those kept.
+    std::vector<NodeId> outermost;
+    for (const auto& entry : sorted) {
+        const NodeId id = entry.second;
+        const bool underKept = std::any_of(outermost.begin(), outermost.end(),
+                                           [&](NodeId kept) { return m_scene.isAncestor(kept, id); });
+        if (!underKept) {
+            outermost.push_back(id); // also drops repeats: isAncestor() holds for the node itself
+        }
+    }
+    return outermost;
+}
+
+bool SceneTreeModel::moveNodes(const std::vector<NodeId>& ids, NodeId newParent, int index) {
+    if (std::any_of(ids.begin(), ids.end(), [&](NodeId id) { return m_scene.isAncestor(id, newParent); })) {
+        return false;
+    }
+    const std::vector<NodeId> nodes = outermostInTreeOrder(ids);
+    if (nodes.size() <= 1) {
+        return !nodes.empty() && moveNode(nodes.front(), newParent, index); // keeps its "Move “name”" text
+    }
+    // One at a time, each right after the one before, with the scene's indexes as they are after the
+    // previous moves: taking a node out from above the drop position shifts the positions after it. The
+    // macro starts with the first real move, so a drop that changes nothing leaves no empty undo step.
+    bool moved = false;
+    int next = index;
+    for (NodeId id : nodes) {
+        if (const std::optional<int> newIndex = moveTarget(id, newParent, next)) {
+            if (!moved) {
+                m_undoStack.beginMacro(tr("Move %1 nodes").arg(nodes.size()));
+                moved = true;
+            }
+            m_undoStack.push(new document::MoveNodeCommand(m_scene, id, newParent, *newIndex));
+        }
+        next = m_scene.indexOf(id) + 1;
+    }
+    if (moved) {
+        m_undoStack.endMacro();
+    }
+    return moved;
 }
 
 } // namespace speculum::ui

@@ -3,6 +3,8 @@
 #include "editor/document/Scene.hpp"
 
 #include <QAbstractItemModel>
+#include <optional>
+#include <vector>
 
 class QUndoStack;
 
@@ -11,7 +13,7 @@ namespace speculum::ui {
 // The document as a tree for QTreeView: the scene camera as the first top-level row, then the nodes in file
 // order. It follows the Scene's signals, so every change from anywhere (inspector, viewport, undo) shows.
 // Edits made in the view become undoable commands: renaming in place pushes RenameNodeCommand, dragging
-// a node onto another (or between rows) pushes MoveNodeCommand.
+// nodes onto another (or between rows) pushes MoveNodeCommands, several of them as one undo step.
 class SceneTreeModel : public QAbstractItemModel {
     Q_OBJECT
 
@@ -50,6 +52,10 @@ public:
     // current children (-1 = at the end), as one undoable command. False when the move is impossible (into
     // its own subtree) or changes nothing.
     bool moveNode(document::NodeId id, document::NodeId newParent, int index);
+    // Moves several nodes the same way, one after the other from `index` on, in tree order, as one undo
+    // step. A node under another of them goes with that one. False when a move is impossible (a target in
+    // one of their subtrees) or nothing changes.
+    bool moveNodes(const std::vector<document::NodeId>& ids, document::NodeId newParent, int index);
 
 private:
     // Top-level scene index <-> model row (the camera row comes first).
@@ -58,6 +64,11 @@ private:
     }
     QModelIndex parentIndexOf(document::NodeId parent) const;
     std::vector<document::NodeId> decode(const QMimeData* data) const;
+    // The scene index `id` gets when moved under newParent before scene position `index` (-1 = at the end),
+    // counted as MoveNodeCommand wants it; nullopt when that changes nothing.
+    std::optional<int> moveTarget(document::NodeId id, document::NodeId newParent, int index) const;
+    // The given nodes without repeats and without those under another of them, in tree order.
+    std::vector<document::NodeId> outermostInTreeOrder(const std::vector<document::NodeId>& ids) const;
 
     document::Scene& m_scene;
     QUndoStack& m_undoStack;

@@ -1,7 +1,8 @@
 // The editor as a user drives it: building a scene from the Add menu and the inspector, undoing it all and
 // redoing it, saving and reopening; the scene tree's rename, reparent, delete and duplicate; refused
 // inspector values; click-to-select (also through a mirror) and handle drags; multiple selection in the tree
-// and the viewport, with Delete, Duplicate and handle drags as one undo step; crash recovery.
+// and the viewport, with Delete, Duplicate, handle drags and a drag in the tree as one undo step; crash
+// recovery.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Commands.hpp"
 #include "editor/document/PickScene.hpp"
@@ -33,6 +34,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <optional>
+#include <tuple>
 
 namespace {
 
@@ -140,10 +142,21 @@ protected:
         return ids;
     }
 
+    // Every node with its parent and its index there, in tree order.
+    std::vector<std::tuple<NodeId, NodeId, int>> layout() {
+        std::vector<std::tuple<NodeId, NodeId, int>> nodes;
+        const document::Scene& scene = m_window->scene();
+        scene.forEachNode([&](const document::Node& node) {
+            nodes.emplace_back(node.id(), scene.parentOf(node.id()), scene.indexOf(node.id()));
+        });
+        return nodes;
+    }
+
     std::unique_ptr<MainWindow> m_window;
 };
 
 using Ids = std::vector<NodeId>;
+using Layout = std::vector<std::tuple<NodeId, NodeId, int>>;
 
 TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndReopen) {
     m_window->newProject();
@@ -471,9 +484,81 @@ TEST_F(EditorWorkflow, CtrlClickInTheTreeSelectsSeveralNodesThatDeleteAndDuplica
     undo.undo();
     EXPECT_EQ(m_window->scene().parentOf(light), teapot);
 
-    // Dragging several rows at once is refused (not supported), rather than moving only one of them.
-    std::unique_ptr<QMimeData> both(tree.mimeData({tree.indexOf(table), tree.indexOf(light)}));
-    EXPECT_FALSE(tree.canDropMimeData(both.get(), Qt::MoveAction, -1, 0, tree.indexOf(teapot)));
+    // Dragging several rows: refused onto a dragged node or into one's subtree.
+    const Layout beforeDrags = layout();
+    std::unique_ptr<QMimeData> potAndTable(tree.mimeData({tree.indexOf(table), tree.indexOf(teapot)}));
+    EXPECT_FALSE(tree.canDropMimeData(potAndTable.get(), Qt::MoveAction, -1, 0, tree.indexOf(light)));
+    EXPECT_FALSE(tree.canDropMimeData(potAndTable.get(), Qt::MoveAction, -1, 0, tree.indexOf(table)));
+    EXPECT_FALSE(tree.dropMimeData(potAndTable.get(), Qt::MoveAction, -1, 0, tree.indexOf(light)));
+    EXPECT_EQ(layout(), beforeDrags);
+    EXPECT_TRUE(tree.canDropMimeData(potAndTable.get(), Qt::MoveAction, 3, 0, {}));
+    // A node under a dragged ancestor goes with it: one node moves, with the single-node text.
+    std::unique_ptr<QMimeData> potAndLight(tree.mimeData({tree.indexOf(light), tree.indexOf(teapot)}));
+    ASSERT_TRUE(tree.dropMimeData(potAndLight.get(), Qt::MoveAction, 3, 0, {})); // after the table
+    EXPECT_EQ(m_window->scene().indexOf(table), 0);
+    EXPECT_EQ(m_window->scene().indexOf(teapot), 1);
+    EXPECT_EQ(m_window->scene().parentOf(light), teapot);
+    EXPECT_EQ(undo.undoText().toStdString(), "Move \u201cTeapot\u201d");
+    undo.undo();
+    EXPECT_EQ(layout(), beforeDrags);
+    undo.undo(); // the light back to the top level: Teapot, Table, Light
+    const Layout flat = layout();
+
+    // Two nodes onto a third: its children, in tree order whatever the order of the dragged rows, as one
+    // undo step; they stay selected.
+    selection.setNodes({light, table});
+    const int dragSteps = undo.index();
+    std::unique_ptr<QMimeData> tableAndLight(tree.mimeData({tree.indexOf(light), tree.indexOf(table)}));
+    ASSERT_TRUE(tree.canDropMimeData(tableAndLight.get(), Qt::MoveAction, -1, 0, tree.indexOf(teapot)));
+    ASSERT_TRUE(tree.dropMimeData(tableAndLight.get(), Qt::MoveAction, -1, 0, tree.indexOf(teapot)));
+    const Layout underPot = layout();
+    EXPECT_EQ(m_window->scene().parentOf(table), teapot);
+    EXPECT_EQ(m_window->scene().parentOf(light), teapot);
+    EXPECT_EQ(m_window->scene().indexOf(table), 0);
+    EXPECT_EQ(m_window->scene().indexOf(light), 1);
+    EXPECT_EQ(tree.rowCount(), 2);
+    EXPECT_EQ(undo.index(), dragSteps + 1);
+    EXPECT_EQ(undo.undoText().toStdString(), "Move 2 nodes");
+    QCoreApplication::processEvents(); // the selection lets go of nodes still gone after a command
+    EXPECT_EQ(selection.nodes(), (Ids{light, table}));
+    EXPECT_EQ(treeSelection(), (Ids{table, light}));
+    undo.undo();
+    EXPECT_EQ(layout(), flat) << "one undo puts both back exactly";
+    undo.redo();
+    EXPECT_EQ(layout(), underPot);
+    undo.undo();
+
+    // Two nodes onto the top level at a row: together there, in tree order. Taking the teapot out from above
+    // the drop row shifts the rows after it.
+    std::unique_ptr<QMimeData> potAndLight2(tree.mimeData({tree.indexOf(light), tree.indexOf(teapot)}));
+    ASSERT_TRUE(tree.dropMimeData(potAndLight2.get(), Qt::MoveAction, 3, 0, {})); // before the light
+    EXPECT_EQ(layout(), (Layout{{table, document::kNoNode, 0},
+                                {teapot, document::kNoNode, 1},
+                                {light, document::kNoNode, 2}}));
+    EXPECT_EQ(undo.undoText().toStdString(), "Move 2 nodes");
+    undo.undo();
+    EXPECT_EQ(layout(), flat);
+    std::unique_ptr<QMimeData> lightAndTable(tree.mimeData({tree.indexOf(light), tree.indexOf(table)}));
+    ASSERT_TRUE(tree.dropMimeData(lightAndTable.get(), Qt::MoveAction, 1, 0, {})); // at the top
+    EXPECT_EQ(layout(), (Layout{{table, document::kNoNode, 0},
+                                {light, document::kNoNode, 1},
+                                {teapot, document::kNoNode, 2}}));
+    undo.undo();
+    EXPECT_EQ(layout(), flat);
+    ASSERT_TRUE(tree.dropMimeData(potAndTable.get(), Qt::MoveAction, 4, 0, {})); // at the end
+    const Layout atEnd{
+        {light, document::kNoNode, 0}, {teapot, document::kNoNode, 1}, {table, document::kNoNode, 2}};
+    EXPECT_EQ(layout(), atEnd);
+    undo.undo();
+    EXPECT_EQ(layout(), flat);
+    undo.redo();
+    EXPECT_EQ(layout(), atEnd);
+    undo.undo();
+    // Dropped where they already are: nothing changes, and no empty undo step (the redo stays).
+    EXPECT_FALSE(tree.dropMimeData(potAndTable.get(), Qt::MoveAction, 1, 0, {}));
+    EXPECT_EQ(layout(), flat);
+    EXPECT_EQ(undo.index(), dragSteps);
+    EXPECT_TRUE(undo.canRedo());
 
     // Select All: every node, children too.
     trigger("actionSelectAll");
