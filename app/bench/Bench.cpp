@@ -13,6 +13,7 @@
 
 #include <QGuiApplication>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -34,6 +35,44 @@ int fail(const std::string& message) {
 
 void progress(const std::string& line) {
     std::cerr << "speculum: bench: " << line << std::endl;
+}
+
+volatile std::sig_atomic_t g_stopSignal = 0;
+
+extern "C" void requestStop(int signal) {
+    g_stopSignal = signal;
+}
+
+// Ctrl-C (SIGINT) or a polite kill (SIGTERM) during a run: the run stops at its next step and, like any
+// failed run, leaves the output folder as it found it. The previous handlers return when the run ends.
+class StopOnSignal {
+public:
+    StopOnSignal() {
+        g_stopSignal = 0;
+        struct sigaction action {};
+        action.sa_handler = requestStop;
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, &m_previousInt);
+        sigaction(SIGTERM, &action, &m_previousTerm);
+    }
+    ~StopOnSignal() {
+        sigaction(SIGINT, &m_previousInt, nullptr);
+        sigaction(SIGTERM, &m_previousTerm, nullptr);
+    }
+    StopOnSignal(const StopOnSignal&) = delete;
+    StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+    static bool requested() { return g_stopSignal != 0; }
+
+private:
+    struct sigaction m_previousInt {};
+    struct sigaction m_previousTerm {};
+};
+
+// The exit status of a shell's command killed by SIGINT, which is what the user asked for.
+int interrupted() {
+    std::cerr << "speculum: bench: interrupted; nothing was written\n";
+    return 130;
 }
 
 std::string key(const Settings& settings) {
@@ -86,6 +125,7 @@ render::Result<std::map<ReferenceKind, Reference>> traceReferences(const Context
                 if (quarter > lastQuarter && quarter < 4)
                     progress("tracing the " + name + " reference: " + std::to_string(quarter * 25) + "%");
                 lastQuarter = std::max(lastQuarter, quarter);
+                return !StopOnSignal::requested();
             });
         if (!traced)
             return render::Error{traced.error()};
@@ -142,6 +182,7 @@ render::Status writeReportWithGui(const fs::path& staging, const RunInfo& run,
 
 int run(const Options& options) {
     const auto start = Clock::now();
+    const StopOnSignal stop; // before the output folder exists: a stop always finds it to clean up
     const int width = options.width > 0 ? options.width : options.quick ? 480 : 1280;
     const int height = options.height > 0 ? options.height : options.quick ? 270 : 720;
     const Timing timing = options.quick ? Timing{2, 7} : Timing{2, 9};
@@ -189,6 +230,8 @@ int run(const Options& options) {
              std::to_string(width) + "x" + std::to_string(height) + (options.quick ? " (quick)" : ""));
 
     auto references = traceReferences(ctx, configs, staging, run);
+    if (stop.requested())
+        return interrupted();
     if (!references)
         return fail(references.error());
 
@@ -211,6 +254,8 @@ int run(const Options& options) {
     std::set<std::string> warned;
     const std::string sceneKey = key(effectiveSettings(ctx.scene, ctx.traits, teapot));
     for (std::size_t i = 0; i < configs.size(); ++i) {
+        if (stop.requested())
+            return interrupted();
         const Configuration& config = configs[i];
         const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(configs.size()) + "] " +
                                  familyName(config.family) + ": " + displayName(config);
@@ -262,6 +307,8 @@ int run(const Options& options) {
         progress("timing round " + std::to_string(round) + "/" + std::to_string(timing.rounds) + ": " +
                  std::to_string(distinct.size()) + " distinct configurations");
         for (const auto& [k, input] : distinct) {
+            if (stop.requested())
+                return interrupted();
             auto cost = measureFrames(**renderer, input, width, height, 1, 1);
             if (!cost)
                 return fail(cost.error());
@@ -279,6 +326,8 @@ int run(const Options& options) {
     renderer->reset();
     context->reset();
 
+    if (stop.requested())
+        return interrupted();
     progress("writing results, plots and the report");
     if (render::Status s = writeCsv((staging / "results.csv").string(), records); !s)
         return fail(s.error());

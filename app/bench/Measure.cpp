@@ -15,7 +15,7 @@ double median(std::vector<double> values) {
 }
 
 render::Result<Reference> traceReference(const render::FrameInput& input, ReferenceKind kind, int width,
-                                         int height, const std::function<void(double)>& progress) {
+                                         int height, const std::function<bool(double)>& progress) {
     auto tracer = render::reference::Tracer::create(input);
     if (!tracer)
         return render::Error{"reference tracer: " + tracer.error()};
@@ -25,11 +25,7 @@ render::Result<Reference> traceReference(const render::FrameInput& input, Refere
     settings.ssaa = 1;
     settings.shadows = kind == ReferenceKind::HardShadows ? render::reference::ShadowMode::Hard
                                                           : render::reference::ShadowMode::PcfFootprint;
-    auto traced = tracer->render(settings, [&](double fraction) {
-        if (progress)
-            progress(fraction);
-        return true;
-    });
+    auto traced = tracer->render(settings, [&](double fraction) { return !progress || progress(fraction); });
     if (!traced)
         return render::Error{"reference tracer: " + traced.error()};
     Reference reference;

@@ -26,9 +26,9 @@ struct Reference {
 
 // Traces `input` at width × height, one sample per pixel (like the frames it is compared with), with
 // exact hard shadows for ReferenceKind::HardShadows and each light's PCF footprint otherwise. `progress`
-// gets the finished fraction; errors: the tracer cannot start.
+// gets the finished fraction and returns false to cancel; errors: the tracer cannot start, or cancelled.
 render::Result<Reference> traceReference(const render::FrameInput& input, ReferenceKind kind, int width,
-                                         int height, const std::function<void(double)>& progress = {});
+                                         int height, const std::function<bool(double)>& progress = {});
 
 // What one configuration costs: medians over the timed frames.
 struct FrameCost {

@@ -1,6 +1,6 @@
 // `speculum bench` as a user runs it, on tiny scenes made here: the files it writes, that the CSV and the
 // JSON agree, that the plots are real images, that a scene gets only the families it calls for, and that
-// bad input writes nothing.
+// bad input, or a Ctrl-C mid-run, writes nothing.
 #include "support/CliRun.hpp"
 
 #include <OpenImageIO/imageio.h>
@@ -10,12 +10,17 @@
 #include <QJsonObject>
 #include <chrono>
 #include <cmath>
+#include <csignal>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <map>
 #include <set>
+#include <spawn.h>
 #include <sstream>
+#include <sys/wait.h>
+#include <thread>
 
 namespace {
 
@@ -273,6 +278,47 @@ TEST_F(BenchCli, BadInputFailsWithOneLineAndWritesNothing) {
     EXPECT_EQ(readFile(folder / "notes.txt"), "keep me");
     EXPECT_TRUE(fs::is_regular_file(folder / "results.json"));
     EXPECT_FALSE(fs::exists(folder / "plot-envmap.png"));
+}
+
+// Ctrl-C while the sweep runs: the run stops at its next step with the shell's status for an interrupt,
+// says so, and leaves the disk as it found it (the folder it made is gone, no staging folder is left).
+TEST_F(BenchCli, InterruptedRunStopsAndWritesNothing) {
+    const fs::path scene = writeScene("scene.speculum.json", sceneJson(true));
+    const fs::path out = m_dir / "interrupted";
+    const fs::path errFile = m_dir / "interrupted.err";
+    const std::string binary = SPECULUM_BINARY;
+    const std::vector<std::string> args = {binary,       "bench",   scene.string(), "--out",
+                                           out.string(), "--quick", "--size",       "320x180"};
+    std::vector<char*> argv;
+    for (const std::string& a : args)
+        argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t files;
+    posix_spawn_file_actions_init(&files);
+    posix_spawn_file_actions_addopen(&files, 2, errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = 0;
+    ASSERT_EQ(posix_spawn(&pid, binary.c_str(), &files, nullptr, argv.data(), environ), 0);
+    posix_spawn_file_actions_destroy(&files);
+
+    // The staging folder appears once the run is under way (its signal handlers are in place by then).
+    auto staging = [&] {
+        std::error_code ec;
+        for (const fs::directory_entry& e : fs::directory_iterator(out, ec))
+            if (e.path().filename().string().rfind(".speculum-bench-", 0) == 0)
+                return true;
+        return false;
+    };
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!staging() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_TRUE(staging()) << "the run never started: " << readFile(errFile);
+    ::kill(pid, SIGINT);
+    int raw = 0;
+    ASSERT_EQ(::waitpid(pid, &raw, 0), pid);
+    ASSERT_TRUE(WIFEXITED(raw)) << "killed instead of stopping: " << readFile(errFile);
+    EXPECT_EQ(WEXITSTATUS(raw), 130) << readFile(errFile);
+    EXPECT_NE(readFile(errFile).find("interrupted"), std::string::npos) << readFile(errFile);
+    EXPECT_FALSE(fs::exists(out)) << "the folder the run made is removed again";
 }
 
 } // namespace
