@@ -26,39 +26,6 @@ const Node& requireNode(const Scene& scene, NodeId id, const char* where) {
 
 } // namespace
 
-// ---- SetNodeDataCommand ----
-
-SetNodeDataCommand::SetNodeDataCommand(Scene& scene, NodeId id, NodeData data, const QString& text,
-                                       const QString& mergeKey, QUndoCommand* parent)
-    : QUndoCommand(parent)
-    , m_scene(scene)
-    , m_node(id)
-    , m_before(requireNode(scene, id, "SetNodeDataCommand::SetNodeDataCommand(): no such node").data())
-    , m_after(std::move(data))
-    , m_mergeKey(mergeKey) {
-    setText(text.isEmpty() ? QStringLiteral("Edit %1").arg(quoted(m_before.name)) : text);
-}
-
-void SetNodeDataCommand::undo() {
-    m_scene.setNodeData(m_node, m_before);
-}
-void SetNodeDataCommand::redo() {
-    m_scene.setNodeData(m_node, m_after);
-}
-
-int SetNodeDataCommand::id() const {
-    return m_mergeKey.isEmpty() ? -1 : SetNodeDataId;
-}
-
-bool SetNodeDataCommand::mergeWith(const QUndoCommand* other) {
-    const auto* next = dynamic_cast<const SetNodeDataCommand*>(other);
-    if (!next || next->m_node != m_node || next->m_mergeKey != m_mergeKey || m_mergeKey.isEmpty()) {
-        return false;
-    }
-    m_after = next->m_after;
-    return true;
-}
-
 // ---- SetNodesDataCommand ----
 
 SetNodesDataCommand::SetNodesDataCommand(Scene& scene, std::vector<Change> changes, const QString& text,
@@ -107,6 +74,16 @@ bool SetNodesDataCommand::mergeWith(const QUndoCommand* other) {
     }
     m_after = next->m_after;
     return true;
+}
+
+// ---- SetNodeDataCommand ----
+
+SetNodeDataCommand::SetNodeDataCommand(Scene& scene, NodeId id, NodeData data, const QString& text,
+                                       const QString& mergeKey, QUndoCommand* parent)
+    : SetNodesDataCommand(scene, {{id, std::move(data)}}, text, mergeKey, parent) {}
+
+int SetNodeDataCommand::id() const {
+    return SetNodesDataCommand::id() == -1 ? -1 : SetNodeDataId;
 }
 
 // ---- RenameNodeCommand ----

@@ -11,26 +11,6 @@ namespace speculum::document {
 // Undoable edits of a Scene. Push them on a QUndoStack (push() runs redo() once). Commands refer to nodes by
 // NodeId, which survives remove/undo cycles, so a stack of commands stays valid in any order of undo/redo.
 
-// Replaces one node's whole data. Consecutive commands on the same node with the same non-empty mergeKey
-// merge into one undo step (a slider drag: use e.g. "material.specular"; start a new key, e.g. with a drag
-// serial number, when a new drag begins).
-class SetNodeDataCommand : public QUndoCommand {
-public:
-    SetNodeDataCommand(Scene& scene, NodeId id, NodeData data, const QString& text = {},
-                       const QString& mergeKey = {}, QUndoCommand* parent = nullptr);
-    void undo() override;
-    void redo() override;
-    int id() const override;
-    bool mergeWith(const QUndoCommand* other) override;
-
-private:
-    Scene& m_scene;
-    NodeId m_node;
-    NodeData m_before;
-    NodeData m_after;
-    QString m_mergeKey;
-};
-
 // Replaces the data of several nodes at once, as one undo step: a handle drag on a multiple selection.
 // Consecutive commands with the same non-empty mergeKey over the same nodes (same ids, same order) merge,
 // so a whole drag stays one step however many mouse moves it takes.
@@ -53,6 +33,17 @@ private:
     std::vector<NodeData> m_before;
     std::vector<NodeData> m_after;
     QString m_mergeKey;
+};
+
+// Replaces one node's whole data: a SetNodesDataCommand of one node. Consecutive commands on the same node
+// with the same non-empty mergeKey merge into one undo step (a slider drag: use e.g. "material.specular";
+// start a new key, e.g. with a drag serial number, when a new drag begins). It has a merge id of its own, so
+// an inspector edit never merges into a handle drag over the same node.
+class SetNodeDataCommand : public SetNodesDataCommand {
+public:
+    SetNodeDataCommand(Scene& scene, NodeId id, NodeData data, const QString& text = {},
+                       const QString& mergeKey = {}, QUndoCommand* parent = nullptr);
+    int id() const override;
 };
 
 // Changes only the name (a separate command so the undo text reads "Rename").
