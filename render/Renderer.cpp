@@ -8,6 +8,7 @@
 #include "render/gl/TextureCache.hpp"
 #include "render/math/Projection.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "render/passes/LightingVariant.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/MirrorPasses.hpp"
 #include "render/passes/ReflectorPass.hpp"
@@ -181,6 +182,26 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         restrictToTile(plan, tile, viewport);
         projection = math::tileProjection(projection, tile.x0, tile.y0, target.width, target.height,
                                           viewport.width, viewport.height);
+    }
+
+    // The lit shaders, built for this frame's lights. A variant that fails to build leaves the shaders that
+    // read the lights from uniforms: the same image, slower.
+    {
+        const std::string lighting =
+            options.lightingVariants ? passes::lightingVariant(input, plan.shadowedLights) : std::string();
+        Status selected = s.meshProgram.select(lighting);
+        if (selected)
+            selected = s.mirrorProgram.select(lighting);
+        if (selected && input.reflector) // the reflector's programs build their variants only when needed
+            selected = s.reflector.selectLighting(lighting);
+        if (!selected) {
+            report.warnings.push_back("lit shaders for this frame's lights did not build; drawn with the "
+                                      "general ones: " +
+                                      selected.error());
+            (void)s.meshProgram.select({});
+            (void)s.mirrorProgram.select({});
+            (void)s.reflector.selectLighting({});
+        }
     }
 
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring

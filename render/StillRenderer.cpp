@@ -130,6 +130,7 @@ Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, con
             if (tiled)
                 options.tile = ImageTile{settings.width, settings.height, x0, y0};
             options.reuseMaps = settings.reuseMaps || step > 0;
+            options.lightingVariants = settings.lightingVariants;
             FrameReport report = renderer.render(input, target, options);
             if (step == 0)
                 result.firstSample = std::move(report);

@@ -61,7 +61,7 @@ float cubeDepth(vec3 dir, vec2 nearFar) {
     return ndc * 0.5 + 0.5;
 }
 
-float shadowVisibility(int slot, vec3 position, vec3 normal, vec3 lightPosition) {
+float shadowVisibility(int slot, bool cube, vec3 position, vec3 normal, vec3 lightPosition) {
     int kernel = max(uShadowPcf[slot], 1);
     float halfKernel = float(kernel - 1) * 0.5;
     vec3 toLight = lightPosition - position;
@@ -75,7 +75,7 @@ float shadowVisibility(int slot, vec3 position, vec3 normal, vec3 lightPosition)
     vec3 p = position + normal * (kNormalOffsetTexels * texel) +
              (toLight / max(distanceToLight, 1e-6)) * (texel * (halfKernel + 1.0) * min(tanTheta, 8.0));
     float sum = 0.0;
-    if (uShadowIsCube[slot] != 0) {
+    if (cube) {
         vec3 dir = p - lightPosition;
         // Offsets in the plane perpendicular to the lookup direction, one texel of the face apart.
         vec3 axis = abs(dir.y) < 0.99 * length(dir) ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
@@ -129,28 +129,70 @@ struct SurfaceLight {
     vec3 specular;
 };
 
+// Light i's contribution, added to `result`. `slot` is its shadow map's slot (-1: none) and `cube` the
+// map's kind; uLightShadowSlot[i] still says whether the map is there this frame.
+void addLight(int i, int slot, bool cube, vec3 position, vec3 normal, vec3 viewDir, float shininess,
+              inout SurfaceLight result) {
+    vec3 toLight;
+    float cone = 1.0;
+    if (uLightType[i] == LIGHT_DIRECTIONAL) {
+        toLight = -uLightDirection[i];
+    } else {
+        toLight = normalize(uLightPosition[i] - position);
+        if (uLightType[i] == LIGHT_SPOT)
+            cone = smoothstep(uLightSpotCos[i].x, uLightSpotCos[i].y, dot(-toLight, uLightDirection[i]));
+    }
+    float nDotL = dot(normal, toLight);
+    if (nDotL <= 0.0 || cone <= 0.0)
+        return;
+    float visibility = cone;
+    if (slot >= 0 && uLightShadowSlot[i] >= 0)
+        visibility *= shadowVisibility(slot, cube, position, normal, uLightPosition[i]);
+    vec3 halfway = normalize(toLight + viewDir);
+    result.diffuse += uLightRadiance[i] * nDotL * visibility;
+    result.specular += uLightRadiance[i] * pow(max(dot(normal, halfway), 0.0), shininess) * visibility;
+}
+
+// A SIMD rasterizer (llvmpipe before Mesa 23) runs both sides of a branch on a uniform under a mask, and
+// a loop whose bound is a uniform one extra, masked, time. A variant built for the frame's lights
+// (render/passes/LightingVariant) therefore names them: LIGHT_COUNT, and per light LIGHT_SLOT_i and
+// LIGHT_CUBE_i. Each light's code appears once, and the other kind of shadow lookup not at all. Without
+// them, the shader reads the same from uniforms.
+#define ADD_LIGHT(i, slot, cube) addLight(i, slot, cube != 0, position, normal, viewDir, shininess, result)
+
 SurfaceLight shadeLights(vec3 position, vec3 normal, vec3 viewDir, float shininess) {
     SurfaceLight result = SurfaceLight(vec3(0.0), vec3(0.0));
+#ifdef LIGHT_COUNT
+#if LIGHT_COUNT > 0
+    ADD_LIGHT(0, LIGHT_SLOT_0, LIGHT_CUBE_0);
+#endif
+#if LIGHT_COUNT > 1
+    ADD_LIGHT(1, LIGHT_SLOT_1, LIGHT_CUBE_1);
+#endif
+#if LIGHT_COUNT > 2
+    ADD_LIGHT(2, LIGHT_SLOT_2, LIGHT_CUBE_2);
+#endif
+#if LIGHT_COUNT > 3
+    ADD_LIGHT(3, LIGHT_SLOT_3, LIGHT_CUBE_3);
+#endif
+#if LIGHT_COUNT > 4
+    ADD_LIGHT(4, LIGHT_SLOT_4, LIGHT_CUBE_4);
+#endif
+#if LIGHT_COUNT > 5
+    ADD_LIGHT(5, LIGHT_SLOT_5, LIGHT_CUBE_5);
+#endif
+#if LIGHT_COUNT > 6
+    ADD_LIGHT(6, LIGHT_SLOT_6, LIGHT_CUBE_6);
+#endif
+#if LIGHT_COUNT > 7
+    ADD_LIGHT(7, LIGHT_SLOT_7, LIGHT_CUBE_7);
+#endif
+#else
     for (int i = 0; i < uLightCount; ++i) {
-        vec3 toLight;
-        float cone = 1.0;
-        if (uLightType[i] == LIGHT_DIRECTIONAL) {
-            toLight = -uLightDirection[i];
-        } else {
-            toLight = normalize(uLightPosition[i] - position);
-            if (uLightType[i] == LIGHT_SPOT)
-                cone = smoothstep(uLightSpotCos[i].x, uLightSpotCos[i].y, dot(-toLight, uLightDirection[i]));
-        }
-        float nDotL = dot(normal, toLight);
-        if (nDotL <= 0.0 || cone <= 0.0)
-            continue;
-        float visibility = cone;
         int slot = uLightShadowSlot[i];
-        if (slot >= 0)
-            visibility *= shadowVisibility(slot, position, normal, uLightPosition[i]);
-        vec3 halfway = normalize(toLight + viewDir);
-        result.diffuse += uLightRadiance[i] * nDotL * visibility;
-        result.specular += uLightRadiance[i] * pow(max(dot(normal, halfway), 0.0), shininess) * visibility;
+        addLight(i, slot, slot >= 0 && uShadowIsCube[max(slot, 0)] != 0, position, normal, viewDir, shininess,
+                 result);
     }
+#endif
     return result;
 }

@@ -107,40 +107,76 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
     return out.str();
 }
 
-Result<Program> Program::build(std::string_view vertexFile, std::string_view fragmentFile,
-                               const std::string& defines) {
+Result<Program::Linked> Program::link(std::string_view vertexFile, std::string_view fragmentFile,
+                                      const std::string& defines) {
     auto vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
     if (!vs)
         return Error{vs.error()};
     auto fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
     if (!fs)
         return Error{fs.error()};
-    Program program;
-    program.m_program = ProgramHandle(glCreateProgram());
-    glAttachShader(program.id(), vs->id());
-    glAttachShader(program.id(), fs->id());
-    glLinkProgram(program.id());
+    Linked linked;
+    linked.program = ProgramHandle(glCreateProgram());
+    const GLuint id = linked.program.id();
+    glAttachShader(id, vs->id());
+    glAttachShader(id, fs->id());
+    glLinkProgram(id);
     GLint ok = GL_FALSE;
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    glGetProgramiv(id, GL_LINK_STATUS, &ok);
     if (!ok) {
         GLint length = 0;
-        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+        glGetProgramiv(id, GL_INFO_LOG_LENGTH, &length);
         std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-        glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+        glGetProgramInfoLog(id, length, nullptr, log.data());
         return Error{"shader link failed (shaders/" + std::string(vertexFile) + ", shaders/" +
                      std::string(fragmentFile) + "):\n" + log.c_str()};
     }
-    glDetachShader(program.id(), vs->id());
-    glDetachShader(program.id(), fs->id());
+    glDetachShader(id, vs->id());
+    glDetachShader(id, fs->id());
+    return linked;
+}
+
+Result<Program> Program::build(std::string_view vertexFile, std::string_view fragmentFile,
+                               const std::string& defines) {
+    auto linked = link(vertexFile, fragmentFile, defines);
+    if (!linked)
+        return Error{linked.error()};
+    Program program;
+    program.m_vertexFile = vertexFile;
+    program.m_fragmentFile = fragmentFile;
+    program.m_defines = defines;
+    program.m_current = &program.m_variants.emplace(std::string(), std::move(*linked)).first->second;
     return program;
 }
 
+Status Program::select(const std::string& variantDefines) {
+    if (m_current && variantDefines == m_selected)
+        return Done{};
+    if (auto failed = m_failed.find(variantDefines); failed != m_failed.end())
+        return Error{failed->second};
+    auto it = m_variants.find(variantDefines);
+    if (it == m_variants.end()) {
+        auto linked = link(m_vertexFile, m_fragmentFile, m_defines + "\n" + variantDefines);
+        if (!linked) {
+            m_failed.emplace(variantDefines, linked.error());
+            return Error{linked.error()};
+        }
+        it = m_variants.emplace(variantDefines, std::move(*linked)).first;
+    }
+    m_current = &it->second;
+    m_selected = variantDefines;
+    return Done{};
+}
+
 GLint Program::location(const std::string& name) const {
-    auto it = m_locations.find(name);
-    if (it != m_locations.end())
+    if (!m_current)
+        return -1;
+    auto& locations = m_current->locations;
+    auto it = locations.find(name);
+    if (it != locations.end())
         return it->second;
-    const GLint loc = glGetUniformLocation(m_program.id(), name.c_str());
-    m_locations.emplace(name, loc);
+    const GLint loc = glGetUniformLocation(m_current->program.id(), name.c_str());
+    locations.emplace(name, loc);
     return loc;
 }
 

@@ -117,6 +117,13 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
     return Done{};
 }
 
+Status ReflectorPass::selectLighting(const std::string& variant) {
+    for (gl::Program* program : {&m_warp, &m_warpMirror, &m_surface})
+        if (Status selected = program->select(variant); !selected)
+            return selected;
+    return Done{};
+}
+
 bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context) {
     if (!input.reflector || !hasMap(*input.reflector))
         return false;
