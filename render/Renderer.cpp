@@ -187,20 +187,20 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     // The lit shaders, built for this frame's lights. A variant that fails to build leaves the shaders that
     // read the lights from uniforms: the same image, slower.
     {
-        const std::string lighting =
-            options.lightingVariants ? passes::lightingVariant(input, plan.shadowedLights) : std::string();
-        Status selected = s.meshProgram.select(lighting);
+        const bool variants = options.lightingVariants;
+        const std::string lighting = variants ? passes::lightingVariant(input, plan.shadowedLights) : "";
+        Status selected = s.meshProgram.select(lighting, variants);
         if (selected)
-            selected = s.mirrorProgram.select(lighting);
+            selected = s.mirrorProgram.select(lighting, variants);
         if (selected && input.reflector) // the reflector's programs build their variants only when needed
-            selected = s.reflector.selectLighting(lighting);
+            selected = s.reflector.selectLighting(lighting, variants);
         if (!selected) {
             report.warnings.push_back("lit shaders for this frame's lights did not build; drawn with the "
                                       "general ones: " +
                                       selected.error());
-            (void)s.meshProgram.select({});
-            (void)s.mirrorProgram.select({});
-            (void)s.reflector.selectLighting({});
+            (void)s.meshProgram.select({}, variants);
+            (void)s.mirrorProgram.select({}, variants);
+            (void)s.reflector.selectLighting({}, variants);
         }
     }
 

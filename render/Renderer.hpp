@@ -43,8 +43,9 @@ struct RenderOptions {
     // Draw only this tile of the image (planned for the whole image, see restrictToTile); none: the
     // target is the whole image.
     std::optional<ImageTile> tile;
-    // Lit shaders built for the frame's lights (passes/LightingVariant); false: the shaders that read the
-    // lights from uniforms alone. Both draw the same image; tests and benchmarks compare them.
+    // Lit shaders built for the frame's lights (passes/LightingVariant) and, for untextured materials,
+    // without the texture lookup; false: the shaders that read both from uniforms alone. Both draw the
+    // same image; tests and benchmarks compare them.
     bool lightingVariants = true;
 };
 

@@ -2,6 +2,7 @@
 
 #include "render/gl/EmbeddedShaders.hpp"
 
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 #include <regex>
 #include <sstream>
@@ -149,23 +150,52 @@ Result<Program> Program::build(std::string_view vertexFile, std::string_view fra
     return program;
 }
 
-Status Program::select(const std::string& variantDefines) {
+const Program::Linked* Program::variant(const std::string& defines) const {
+    if (auto it = m_variants.find(defines); it != m_variants.end())
+        return &it->second;
+    if (m_failed.count(defines))
+        return nullptr;
+    auto linked = link(m_vertexFile, m_fragmentFile, m_defines + "\n" + defines);
+    if (!linked) {
+        m_failed.emplace(defines, linked.error());
+        return nullptr;
+    }
+    return &m_variants.emplace(defines, std::move(*linked)).first->second;
+}
+
+Status Program::select(const std::string& variantDefines, bool drawVariants) {
+    m_drawVariants = drawVariants;
     if (m_current && variantDefines == m_selected)
         return Done{};
-    if (auto failed = m_failed.find(variantDefines); failed != m_failed.end())
-        return Error{failed->second};
-    auto it = m_variants.find(variantDefines);
-    if (it == m_variants.end()) {
-        auto linked = link(m_vertexFile, m_fragmentFile, m_defines + "\n" + variantDefines);
-        if (!linked) {
-            m_failed.emplace(variantDefines, linked.error());
-            return Error{linked.error()};
-        }
-        it = m_variants.emplace(variantDefines, std::move(*linked)).first;
-    }
-    m_current = &it->second;
+    const Linked* chosen = variant(variantDefines);
+    if (!chosen)
+        return Error{m_failed[variantDefines]};
+    m_current = chosen;
     m_selected = variantDefines;
     return Done{};
+}
+
+void Program::useWith(const std::string& drawDefines) const {
+    const Linked* chosen = nullptr;
+    if (m_drawVariants && !drawDefines.empty())
+        chosen = variant(m_selected + drawDefines);
+    if (!chosen)
+        chosen = variant(m_selected);
+    if (chosen)
+        m_current = chosen;
+    use();
+}
+
+void Program::use() const {
+    if (!m_current)
+        return;
+    glUseProgram(m_current->program.id());
+    if (m_current->synced == m_version)
+        return;
+    for (const auto& [name, value] : m_values)
+        if (value.version > m_current->synced)
+            apply(location(name), value);
+    m_current->synced = m_version;
 }
 
 GLint Program::location(const std::string& name) const {
@@ -180,12 +210,101 @@ GLint Program::location(const std::string& name) const {
     return loc;
 }
 
+void Program::apply(GLint location, const Value& v) {
+    switch (v.kind) {
+    case Kind::Int:
+        glUniform1i(location, v.i);
+        break;
+    case Kind::Float:
+        glUniform1f(location, v.f[0]);
+        break;
+    case Kind::Vec2:
+        glUniform2fv(location, 1, v.f.data());
+        break;
+    case Kind::Vec3:
+        glUniform3fv(location, 1, v.f.data());
+        break;
+    case Kind::Vec4:
+        glUniform4fv(location, 1, v.f.data());
+        break;
+    case Kind::Mat3:
+        glUniformMatrix3fv(location, 1, GL_FALSE, v.f.data());
+        break;
+    case Kind::Mat4:
+        glUniformMatrix4fv(location, 1, GL_FALSE, v.f.data());
+        break;
+    }
+}
+
+// Applies the value to the bound (current) variant and keeps it for the others. A variant that was up to
+// date stays so.
+void Program::store(const std::string& name, Value value) const {
+    if (!m_current)
+        return;
+    const bool wasSynced = m_current->synced == m_version;
+    value.version = ++m_version;
+    apply(location(name), value);
+    if (wasSynced)
+        m_current->synced = m_version;
+    m_values[name] = value;
+}
+
+void Program::set(const std::string& name, int v) const {
+    Value value;
+    value.i = v;
+    store(name, value);
+}
+
+namespace {
+
+template <typename T>
+void copyFloats(const T& from, std::array<float, 16>& to) {
+    const float* p = glm::value_ptr(from);
+    std::copy(p, p + sizeof(T) / sizeof(float), to.begin());
+}
+
+} // namespace
+
+void Program::set(const std::string& name, float v) const {
+    Value value;
+    value.kind = Kind::Float;
+    value.f[0] = v;
+    store(name, value);
+}
+
+void Program::set(const std::string& name, const glm::vec2& v) const {
+    Value value;
+    value.kind = Kind::Vec2;
+    copyFloats(v, value.f);
+    store(name, value);
+}
+
+void Program::set(const std::string& name, const glm::vec3& v) const {
+    Value value;
+    value.kind = Kind::Vec3;
+    copyFloats(v, value.f);
+    store(name, value);
+}
+
+void Program::set(const std::string& name, const glm::vec4& v) const {
+    Value value;
+    value.kind = Kind::Vec4;
+    copyFloats(v, value.f);
+    store(name, value);
+}
+
 void Program::set(const std::string& name, const glm::mat3& m) const {
-    glUniformMatrix3fv(location(name), 1, GL_FALSE, glm::value_ptr(m));
+    Value value;
+    value.kind = Kind::Mat3;
+    copyFloats(m, value.f);
+    store(name, value);
 }
 
 void Program::set(const std::string& name, const glm::mat4& m) const {
-    glUniformMatrix4fv(location(name), 1, GL_FALSE, glm::value_ptr(m));
+    Value value;
+    value.kind = Kind::Mat4;
+    copyFloats(m, value.f);
+    store(name, value);
 }
 
 } // namespace speculum::render::gl

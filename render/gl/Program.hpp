@@ -3,6 +3,8 @@
 #include "render/Result.hpp"
 #include "render/gl/Objects.hpp"
 
+#include <array>
+#include <cstdint>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -26,9 +28,10 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
 
 // A linked GLSL program built from embedded shader files, with cached uniform locations.
 //
-// A program can hold variants: the same files compiled with more `#define` lines, each linked once, on
-// first selection. use(), id(), location() and set() act on the selected variant; uniforms are the
-// variant's own, so select before setting them.
+// A program can hold variants: the same files compiled with more `#define` lines, each linked once, the
+// first time it is asked for. select() picks one for a frame (the lights); useWith() narrows it for a draw
+// (an untextured material). Uniforms belong to the program, not to a variant: set() keeps every value,
+// and use() brings a variant it switches to up to date.
 class Program {
 public:
     Program() = default;
@@ -37,22 +40,24 @@ public:
 
     // Selects the variant built with `variantDefines` appended to the build's defines (empty: the program
     // as built), compiling and linking it the first time. On failure the selection is unchanged.
-    Status select(const std::string& variantDefines);
+    // `drawVariants` false makes useWith() keep to the selected variant.
+    Status select(const std::string& variantDefines, bool drawVariants = true);
     const std::string& selected() const { return m_selected; }
 
-    void use() const { glUseProgram(id()); }
+    // Binds the selected variant with `drawDefines` appended (empty: the selected variant), building it
+    // the first time. The defines may only specialise the shader: if that variant does not build, the
+    // selected one draws instead, the same image more slowly. Const like set(): variants are a cache.
+    void useWith(const std::string& drawDefines) const;
+
+    void use() const; // binds the current variant, with every uniform set so far
     GLuint id() const { return m_current ? m_current->program.id() : 0; }
     GLint location(const std::string& name) const;
 
-    void set(const std::string& name, int v) const { glUniform1i(location(name), v); }
-    void set(const std::string& name, float v) const { glUniform1f(location(name), v); }
-    void set(const std::string& name, const glm::vec2& v) const { glUniform2f(location(name), v.x, v.y); }
-    void set(const std::string& name, const glm::vec3& v) const {
-        glUniform3f(location(name), v.x, v.y, v.z);
-    }
-    void set(const std::string& name, const glm::vec4& v) const {
-        glUniform4f(location(name), v.x, v.y, v.z, v.w);
-    }
+    void set(const std::string& name, int v) const;
+    void set(const std::string& name, float v) const;
+    void set(const std::string& name, const glm::vec2& v) const;
+    void set(const std::string& name, const glm::vec3& v) const;
+    void set(const std::string& name, const glm::vec4& v) const;
     void set(const std::string& name, const glm::mat3& m) const;
     void set(const std::string& name, const glm::mat4& m) const;
 
@@ -60,15 +65,30 @@ private:
     struct Linked {
         ProgramHandle program;
         mutable std::unordered_map<std::string, GLint> locations;
+        mutable std::uint64_t synced = 0; // every value up to this version is applied
+    };
+    enum class Kind { Int, Float, Vec2, Vec3, Vec4, Mat3, Mat4 };
+    struct Value {
+        Kind kind = Kind::Int;
+        int i = 0;
+        std::array<float, 16> f{};
+        std::uint64_t version = 0;
     };
     static Result<Linked> link(std::string_view vertexFile, std::string_view fragmentFile,
                                const std::string& defines);
+    const Linked* variant(const std::string& defines) const; // nullptr: it does not build
+    void store(const std::string& name, Value value) const;
+    static void apply(GLint location, const Value& value);
 
     std::string m_vertexFile, m_fragmentFile, m_defines;
-    std::map<std::string, Linked> m_variants;    // by variant defines; nodes stay put when the map moves
-    std::map<std::string, std::string> m_failed; // variants that did not build, with the error: not retried
-    const Linked* m_current = nullptr;
+    // By variant defines; nodes stay put when the map moves.
+    mutable std::map<std::string, Linked> m_variants;
+    mutable std::map<std::string, std::string> m_failed; // variants that did not build: not retried
+    mutable const Linked* m_current = nullptr;
     std::string m_selected;
+    bool m_drawVariants = true;
+    mutable std::unordered_map<std::string, Value> m_values; // every uniform set, by name
+    mutable std::uint64_t m_version = 0;
 };
 
 } // namespace speculum::render::gl

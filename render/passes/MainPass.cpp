@@ -75,6 +75,7 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
 } // namespace
 
 void setMaterial(const Material& m, const gl::Program& p, const MainPassContext& ctx) {
+    p.useWith(m.texturePath.empty() ? "#define MATERIAL_TEXTURE 0\n" : "");
     p.set("uColor", glm::vec3(m.color));
     p.set("uAmbient", float(m.ambient));
     p.set("uDiffuse", float(m.diffuse));

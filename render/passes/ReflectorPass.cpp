@@ -117,9 +117,9 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
     return Done{};
 }
 
-Status ReflectorPass::selectLighting(const std::string& variant) {
+Status ReflectorPass::selectLighting(const std::string& variant, bool drawVariants) {
     for (gl::Program* program : {&m_warp, &m_warpMirror, &m_surface})
-        if (Status selected = program->select(variant); !selected)
+        if (Status selected = program->select(variant, drawVariants); !selected)
             return selected;
     return Done{};
 }

@@ -26,7 +26,7 @@ public:
     // Builds the programs. Needs a current context.
     Status init();
     // Selects the lit shaders' variant for the frame's lights (gl::Program::select) in every program.
-    Status selectLighting(const std::string& variant);
+    Status selectLighting(const std::string& variant, bool drawVariants);
 
     // Renders the map for `input.reflector` (re-creating its textures when the map settings changed).
     // `mirrors` are the cube faces' mirror programs (the warp's variants are the pass's own).

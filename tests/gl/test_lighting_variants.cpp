@@ -1,6 +1,7 @@
-// The lit shaders built for a frame's lights (passes/LightingVariant) draw the image the general shaders
-// draw from uniforms alone: every kind of light, with and without shadow maps, in the main view, in
-// mirrors of both techniques and in the curved reflector's environment map.
+// The lit shaders built for a frame's lights (passes/LightingVariant) and for untextured materials draw
+// the image the general shaders draw from uniforms alone: every kind of light, with and without shadow
+// maps, textured and untextured materials, in the main view, in mirrors of both techniques and in the
+// curved reflector's environment map.
 #include "GlTest.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/mesh/Teapot.hpp"
@@ -30,7 +31,8 @@ Light light(const std::string& name, LightType type, glm::dvec3 position, bool s
     return l;
 }
 
-// A teapot and a box on a floor before a wall with two mirrors, a chrome ball beside them, under `lights`.
+// A textured teapot and a plain box on a marble floor before a wall with two mirrors, a chrome ball beside
+// them, under `lights`.
 FrameInput litScene(std::vector<Light> lights) {
     FrameInput input;
     input.settings.ambient = 0.15;
@@ -41,7 +43,9 @@ FrameInput litScene(std::vector<Light> lights) {
     static const auto box = std::make_shared<const MeshData>(makeBox());
     static const auto teapot = std::make_shared<const MeshData>(makeTeapot(6));
     DrawItem floor{"Floor", glm::scale(glm::dmat4(1.0), glm::dvec3(4.0, 1.0, 4.0)), plane, {}, true};
-    floor.material.color = {0.7, 0.7, 0.65};
+    // Textured and untextured materials alternate in the draw order: each switch of shader variant must
+    // carry the view's uniforms along.
+    floor.material.texturePath = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/textures/marble.png";
     DrawItem wall{"Wall",
                   glm::scale(glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 2, -2)),
                                          glm::radians(90.0), glm::dvec3(1, 0, 0)),
@@ -56,6 +60,7 @@ FrameInput litScene(std::vector<Light> lights) {
                  {},
                  true};
     pot.material.color = {0.8, 0.3, 0.2};
+    pot.material.texturePath = floor.material.texturePath;
     pot.material.specular = 0.6;
     DrawItem cube{"Box",
                   glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.7, 0.3, 0.6)), glm::dvec3(0.3)),
