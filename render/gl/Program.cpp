@@ -255,56 +255,30 @@ void Program::set(const std::string& name, int v) const {
     store(name, value);
 }
 
-namespace {
-
-template <typename T>
-void copyFloats(const T& from, std::array<float, 16>& to) {
-    const float* p = glm::value_ptr(from);
-    std::copy(p, p + sizeof(T) / sizeof(float), to.begin());
+void Program::storeFloats(const std::string& name, Kind kind, const float* data, std::size_t count) const {
+    Value value;
+    value.kind = kind;
+    std::copy(data, data + count, value.f.begin());
+    store(name, value);
 }
-
-} // namespace
 
 void Program::set(const std::string& name, float v) const {
-    Value value;
-    value.kind = Kind::Float;
-    value.f[0] = v;
-    store(name, value);
+    storeFloats(name, Kind::Float, &v, 1);
 }
-
 void Program::set(const std::string& name, const glm::vec2& v) const {
-    Value value;
-    value.kind = Kind::Vec2;
-    copyFloats(v, value.f);
-    store(name, value);
+    storeFloats(name, Kind::Vec2, glm::value_ptr(v), 2);
 }
-
 void Program::set(const std::string& name, const glm::vec3& v) const {
-    Value value;
-    value.kind = Kind::Vec3;
-    copyFloats(v, value.f);
-    store(name, value);
+    storeFloats(name, Kind::Vec3, glm::value_ptr(v), 3);
 }
-
 void Program::set(const std::string& name, const glm::vec4& v) const {
-    Value value;
-    value.kind = Kind::Vec4;
-    copyFloats(v, value.f);
-    store(name, value);
+    storeFloats(name, Kind::Vec4, glm::value_ptr(v), 4);
 }
-
 void Program::set(const std::string& name, const glm::mat3& m) const {
-    Value value;
-    value.kind = Kind::Mat3;
-    copyFloats(m, value.f);
-    store(name, value);
+    storeFloats(name, Kind::Mat3, glm::value_ptr(m), 9);
 }
-
 void Program::set(const std::string& name, const glm::mat4& m) const {
-    Value value;
-    value.kind = Kind::Mat4;
-    copyFloats(m, value.f);
-    store(name, value);
+    storeFloats(name, Kind::Mat4, glm::value_ptr(m), 16);
 }
 
 } // namespace speculum::render::gl

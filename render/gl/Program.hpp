@@ -78,6 +78,7 @@ private:
                                const std::string& defines);
     const Linked* variant(const std::string& defines) const; // nullptr: it does not build
     void store(const std::string& name, Value value) const;
+    void storeFloats(const std::string& name, Kind kind, const float* data, std::size_t count) const;
     static void apply(GLint location, const Value& value);
 
     std::string m_vertexFile, m_fragmentFile, m_defines;
