@@ -10,6 +10,7 @@
 #include "render/mesh/Primitives.hpp"
 #include "render/passes/LightingVariant.hpp"
 #include "render/passes/MainPass.hpp"
+#include "render/passes/MirrorOcclusion.hpp"
 #include "render/passes/MirrorPasses.hpp"
 #include "render/passes/ReflectorPass.hpp"
 #include "render/passes/ShadowMaps.hpp"
@@ -64,7 +65,7 @@ struct Renderer::State {
     // the depth-stencil buffer the mirror passes nest in.
     gl::RenderTexture linear;
     std::vector<gl::RenderTexture> reflectionTextures; // texture-technique mirrors, one per nesting
-    gl::Query occlusion;
+    passes::MirrorOcclusion occlusion;                 // the mirror masks' occlusion tests
     gl::VertexArray emptyVao; // core profile needs a VAO bound even for attribute-less draws
     gl::Texture dummyShadow2D;
     gl::Texture dummyShadowCube;
@@ -103,7 +104,6 @@ Result<std::unique_ptr<Renderer>> Renderer::create() {
     s.mirrorProgram = std::move(*mirror);
     s.flatProgram = std::move(*flat);
     s.compositeProgram = std::move(*composite);
-    s.occlusion = gl::makeQuery();
     s.emptyVao = gl::makeVertexArray();
     s.dummyShadow2D = makeDummyDepth(GL_TEXTURE_2D);
     s.dummyShadowCube = makeDummyDepth(GL_TEXTURE_CUBE_MAP);
@@ -225,6 +225,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
                    ? s.linear.framebuffer()
                    : s.reflectionTextures[static_cast<std::size_t>(v.textureSlot)].framebuffer();
     };
+    s.occlusion.beginFrame(plan);
     std::vector<bool> ran(plan.passes.size(), true);
     std::vector<std::string> hidden; // reasons for views found fully occluded, by view
     hidden.resize(plan.views.size());
@@ -297,7 +298,17 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
             passes::scissorTo(view.rect);
             const passes::ViewSetup parent =
                 passes::viewSetup(input, plan, view.parent, projection, {target.width, target.height});
-            if (!passes::drawMirrorMask(input, view, parent, s.flatProgram, ctx, s.occlusion.id()))
+            const bool wait = s.occlusion.mustWait(pass.view);
+            const bool marked = passes::drawMirrorMask(input, view, parent, s.flatProgram, ctx,
+                                                       s.occlusion.query(pass.view), wait);
+            if (wait) {
+                s.occlusion.waited(pass.view, marked);
+                pass.reason += "; waited for its occlusion test";
+            } else {
+                s.occlusion.leftForLater(pass.view);
+                pass.reason += "; visible last frame, so not waiting for its occlusion test";
+            }
+            if (!marked)
                 hidden[static_cast<std::size_t>(pass.view)] =
                     options.tile ? "fully occluded in this tile: no pixel of it passed the depth test"
                                  : "fully occluded: no pixel of it passed the depth test";
@@ -421,6 +432,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     s.reflector.purge();
     for (std::string& warning : s.textures.takeWarnings())
         report.warnings.push_back(std::move(warning));
+    report.occlusionWaits = s.occlusion.waits();
     report.cpuMs = msSince(frameStart);
     return report;
 }

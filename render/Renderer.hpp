@@ -65,6 +65,9 @@ struct FrameReport {
     double gpuMs = -1.0;               // sum of the passes' GPU times, -1 if not measured
     std::vector<std::string> warnings; // e.g. a texture that failed to load
     TargetMemory memory;
+    // Mirror masks whose occlusion test the frame waited for before drawing on (passes/MirrorOcclusion):
+    // those no earlier frame saw, or saw hidden.
+    int occlusionWaits = 0;
 };
 
 // Draws FrameInput snapshots with OpenGL 3.3 core. Needs a current context for its whole life, from

@@ -41,7 +41,8 @@ void scissorTo(const math::PixelRect& rect) {
 }
 
 bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                    const gl::Program& maskProgram, const MainPassContext& context, GLuint query) {
+                    const gl::Program& maskProgram, const MainPassContext& context, GLuint query,
+                    bool waitForQuery) {
     const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
     maskProgram.use();
     maskProgram.set("uModelLightClip", mirrorRectangleClip(input, mirror, parent));
@@ -56,8 +57,9 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
     glBeginQuery(GL_ANY_SAMPLES_PASSED, query);
     context.meshes.get(context.unitPlane).draw();
     glEndQuery(GL_ANY_SAMPLES_PASSED);
-    GLuint anyPassed = 0;
-    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &anyPassed);
+    GLuint anyPassed = 1; // not waited for: maybe
+    if (waitForQuery)
+        glGetQueryObjectuiv(query, GL_QUERY_RESULT, &anyPassed);
     if (anyPassed && !view.ownTarget) {
         // Inside the mask, reset colour to the background and depth to the far plane: the reflected scene
         // (which lies behind the mirror) replaces whatever the parent view drew there.

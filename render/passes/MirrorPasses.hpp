@@ -12,11 +12,14 @@ ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewInde
 
 // Stencil technique, step 1: in the parent's view, marks the mirror's visible pixels (those of its parent's
 // stencil level whose depth test passes) with the view's stencil level, and counts them with an occlusion
-// query. Returns false (and marks nothing) if no pixel passed: the mirror is fully hidden. Then resets the
-// depth of the marked pixels to the far plane, so the reflected scene can be drawn there.
+// query. With `waitForQuery`, waits for its result and returns false (and marks nothing) if no pixel
+// passed: the mirror is fully hidden. Then resets the colour and depth of the marked pixels, so the
+// reflected scene can be drawn there. Without `waitForQuery`, always returns true: the query's result is
+// for the caller to read later (see MirrorOcclusion).
 // Texture technique: only counts the visible pixels.
 bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                    const gl::Program& maskProgram, const MainPassContext& context, GLuint query);
+                    const gl::Program& maskProgram, const MainPassContext& context, GLuint query,
+                    bool waitForQuery);
 
 // Step 3: the mirror's own surface over its reflection, in the parent's view (see shaders/mirror.frag);
 // stencil views also step their pixels back to the parent's stencil level and restore the mirror's depth.
