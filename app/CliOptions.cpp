@@ -49,6 +49,7 @@ std::string usageText() {
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--json]\n"
            "  speculum bench PROJECT --out DIR [--quick] [--size WxH]\n"
+           "  speculum export PROJECT -o OUT.glb|OUT.gltf\n"
            "\n"
            "render writes PNG, JPEG, TIFF or EXR (by the extension of OUT); --size defaults to 1280x720,\n"
            "--ssaa N averages NxN samples per pixel (1..16), --time evaluates animations at T seconds.\n"
@@ -58,7 +59,9 @@ std::string usageText() {
            "and\n"
            "depth, PCF, tessellation), times each and measures its error against the exact tracer; it "
            "writes\n"
-           "results.csv, results.json, plots and report.md into DIR. --quick: fewer points at 480x270.\n";
+           "results.csv, results.json, plots and report.md into DIR. --quick: fewer points at 480x270.\n"
+           "export writes the scene as glTF 2.0: .glb (one file, images inside) or .gltf (with its .bin and\n"
+           "images beside it), with the camera and the lights (KHR_lights_punctual).\n";
 }
 
 render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
@@ -81,6 +84,8 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
         o.command = Command::Explain;
     else if (first == "bench")
         o.command = Command::Bench;
+    else if (first == "export")
+        o.command = Command::Export;
     else if (!first.empty() && first[0] == '-')
         return Error{"unknown option " + first + " (see speculum --help)"};
     if (o.command == Command::Editor) {
@@ -100,7 +105,8 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
     for (; i < args.size(); ++i) {
         const std::string& a = args[i];
         const bool renderOrExplain = o.command == Command::Render || o.command == Command::Explain;
-        if ((a == "-o" || a == "--output") && o.command == Command::Render) {
+        if ((a == "-o" || a == "--output") &&
+            (o.command == Command::Render || o.command == Command::Export)) {
             auto v = needValue(a);
             if (!v)
                 return Error{v.error()};
@@ -174,6 +180,8 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
         return Error{name + ": missing PROJECT file"};
     if (o.command == Command::Render && o.output.empty())
         return Error{"render: missing -o OUT"};
+    if (o.command == Command::Export && o.output.empty())
+        return Error{"export: missing -o OUT.glb|OUT.gltf"};
     if (o.command == Command::Bench && o.outDir.empty())
         return Error{"bench: missing --out DIR"};
     return o;

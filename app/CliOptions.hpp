@@ -8,14 +8,14 @@
 
 namespace speculum::app {
 
-enum class Command { Editor, Render, Explain, Bench, Help, Version };
+enum class Command { Editor, Render, Explain, Bench, Export, Help, Version };
 
 // The parsed command line (DESIGN.md, "Command line"). Values are validated here, before any work, so
 // bad input costs nothing and writes nothing.
 struct CliOptions {
     Command command = Command::Editor;
     std::string project; // PROJECT, empty for the editor with a new scene
-    std::string output;  // render -o
+    std::string output;  // render -o, export -o
     std::string outDir;  // bench --out
     int width = 1280;
     int height = 720;

@@ -2,6 +2,7 @@
 
 #include "app/ProjectInput.hpp"
 #include "app/bench/Bench.hpp"
+#include "editor/document/GltfExport.hpp"
 #include "render/Renderer.hpp"
 #include "render/StillRenderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
@@ -11,6 +12,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -274,6 +277,39 @@ int runExplain(const CliOptions& options) {
             std::printf("  %s\n", w.c_str());
     }
     std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", still->firstSample.gpuMs, still->firstSample.cpuMs);
+    return 0;
+}
+
+int runExport(const CliOptions& options) {
+    // The output name and folder first: a bad target costs no loading.
+    const std::filesystem::path out(options.output);
+    std::string extension = out.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".glb" && extension != ".gltf") {
+        fail(options.output + ": unsupported export format (supported: .glb, .gltf)");
+        return 1;
+    }
+    const std::filesystem::path outDir = std::filesystem::absolute(out).parent_path();
+    if (!std::filesystem::is_directory(outDir)) {
+        fail(options.output + ": folder " + outDir.string() + " does not exist");
+        return 1;
+    }
+    document::Scene scene;
+    if (render::Status opened = loadProjectScene(options.project, scene); !opened) {
+        fail(opened.error());
+        return 1;
+    }
+    document::MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::Status exported =
+        document::exportGltf(scene, QString::fromStdString(options.output), meshes, warnings);
+    if (!exported) {
+        fail("export: " + exported.error()); // alone: a failure is one line
+        return 1;
+    }
+    printWarnings(warnings);
+    std::cout << options.output << "\n";
     return 0;
 }
 

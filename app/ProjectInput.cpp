@@ -13,21 +13,27 @@ void printWarnings(const std::vector<std::string>& warnings) {
         std::cerr << "speculum: warning: " << w << "\n";
 }
 
-render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time) {
+render::Status loadProjectScene(const std::string& project, document::Scene& scene) {
     const QString path = QString::fromStdString(project);
     const QFileInfo info(path);
     if (!info.exists())
         return render::Error{project + ": no such file"};
     if (!info.isFile())
         return render::Error{project + ": not a file"};
-    document::Scene scene;
     std::vector<std::string> warnings;
     if (render::Status opened = document::openProject(scene, path, warnings); !opened)
         return render::Error{project + ": " + opened.error()};
     printWarnings(warnings);
+    return render::Done{};
+}
+
+render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time) {
+    document::Scene scene;
+    if (render::Status opened = loadProjectScene(project, scene); !opened)
+        return render::Error{opened.error()};
     ProjectFrame frame;
     frame.meshes = std::make_unique<document::MeshLibrary>();
-    warnings.clear();
+    std::vector<std::string> warnings;
     frame.input = document::snapshot(scene, time, *frame.meshes, warnings);
     printWarnings(warnings);
     scene.forEachNode([&](const document::Node& node) {

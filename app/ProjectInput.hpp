@@ -1,6 +1,7 @@
 #pragma once
 
 #include "editor/document/MeshLibrary.hpp"
+#include "editor/document/Scene.hpp"
 #include "render/FrameInput.hpp"
 #include "render/Result.hpp"
 
@@ -17,6 +18,10 @@ struct ProjectFrame {
     std::unique_ptr<document::MeshLibrary> meshes;
     std::set<int> teapotTessellations; // of the built-in teapots the scene has (empty: none)
 };
+
+// Opens PROJECT into `scene`; load warnings go to stderr. Errors name the file and, for a bad file, the
+// JSON path.
+render::Status loadProjectScene(const std::string& project, document::Scene& scene);
 
 // Loads PROJECT and evaluates it at `time`; warnings go to stderr. Errors name the file and, for a bad
 // file, the JSON path.

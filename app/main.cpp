@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
         return runExplain(*options);
     case Command::Bench:
         return runBench(*options);
+    case Command::Export:
+        return runExport(*options);
     case Command::Editor:
         break;
     }

@@ -2,6 +2,7 @@
 // dragged: every mouse move pushes a (merged) undo command, the document changes, and the viewport
 // snapshots, renders and repaints its handles. One iteration = one mouse move and the frame it causes.
 // Needs a display: scripts/with-display build/release/benchmarks/speculum_bench_editor
+#include "editor/document/Picking.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/Editor.hpp"
@@ -19,6 +20,7 @@
 #include <benchmark/benchmark.h>
 #include <cmath>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <map>
 #include <memory>
 
@@ -127,6 +129,78 @@ BENCHMARK(BM_ViewportFrameWhileDraggingHandle1280x720NoOverlay)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(4.0)
     ->UseRealTime();
+
+// ---- picking on a big mesh: the hierarchy's build, a click with it cached, a click that scans ----
+
+// A height field of 1000² quads: 2 M triangles over [-1, 1]² in XZ.
+render::MeshHandle bigMesh() {
+    static const render::MeshHandle mesh = [] {
+        auto m = std::make_shared<render::MeshData>();
+        const int cells = 1000, n = cells + 1;
+        for (int j = 0; j < n; ++j) {
+            for (int i = 0; i < n; ++i) {
+                const float x = -1.0f + 2.0f * float(i) / cells, z = -1.0f + 2.0f * float(j) / cells;
+                m->positions.emplace_back(x, 0.1f * std::sin(7.0f * x) * std::cos(5.0f * z), z);
+            }
+        }
+        for (int j = 0; j < cells; ++j) {
+            for (int i = 0; i < cells; ++i) {
+                const std::uint32_t a = std::uint32_t(j * n + i), b = a + 1, c = a + std::uint32_t(n),
+                                    d = c + 1;
+                m->indices.insert(m->indices.end(), {a, c, b, b, c, d});
+            }
+        }
+        return render::MeshHandle(m);
+    }();
+    return mesh;
+}
+
+void BM_PickHierarchyBuild2MTriangles(benchmark::State& state) {
+    const render::MeshHandle mesh = bigMesh();
+    for (auto _ : state) {
+        document::MeshPickAccel accel(*mesh);
+        benchmark::DoNotOptimize(accel.nodeCount());
+    }
+}
+
+void BM_PickClick2MTrianglesCached(benchmark::State& state) {
+    document::PickScene scene;
+    scene.meshes.push_back({1, bigMesh(), glm::dmat4(1.0)});
+    document::meshPickAccel(bigMesh()); // built once, as the import worker does
+    int i = 0;
+    for (auto _ : state) {
+        const double x = -0.9 + 0.0018 * (i++ % 1000);
+        benchmark::DoNotOptimize(document::pick(scene, document::Ray{{x, 5, 0.3}, {0.05, -1, 0.02}}));
+    }
+}
+
+// What a click cost before the hierarchy: every triangle tried (Möller–Trumbore in double).
+void BM_PickClick2MTrianglesScanningEveryTriangle(benchmark::State& state) {
+    const render::MeshData& m = *bigMesh();
+    const glm::dvec3 o(0.1, 5, 0.3), d(0.05, -1, 0.02);
+    for (auto _ : state) {
+        double best = 1e300;
+        for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+            const glm::dvec3 a(m.positions[m.indices[t]]), b(m.positions[m.indices[t + 1]]),
+                c(m.positions[m.indices[t + 2]]);
+            const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+            const double det = glm::dot(e1, p);
+            if (std::abs(det) < 1e-300) {
+                continue;
+            }
+            const glm::dvec3 s = o - a, q = glm::cross(s, e1);
+            const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det, hit = glm::dot(e2, q) / det;
+            if (u >= 0 && v >= 0 && u + v <= 1 && hit > 1e-9 && hit < best) {
+                best = hit;
+            }
+        }
+        benchmark::DoNotOptimize(best);
+    }
+}
+
+BENCHMARK(BM_PickHierarchyBuild2MTriangles)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PickClick2MTrianglesCached)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_PickClick2MTrianglesScanningEveryTriangle)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
 

@@ -1,10 +1,12 @@
 #pragma once
 
+#include "render/image/Image.hpp"
 #include "render/mesh/MeshData.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +31,33 @@ struct Camera {
     double far = 10.0;
 };
 
+// How texture coordinates outside [0, 1] are read (glTF sampler wrapS / wrapT, Assimp's mapping modes).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+
+// One texture a material samples. Either a file (`path`, absolute) that the renderer loads itself, or an
+// image already decoded (`image`: a model's embedded texture), in which case `path` is only its name for
+// messages and caches ("/abs/model.glb#*0"). Both renderers read it with the same wrap modes.
+struct TextureSource {
+    std::string path;
+    std::shared_ptr<const TextureImage> image;
+    TextureWrap wrapS = TextureWrap::Repeat;
+    TextureWrap wrapT = TextureWrap::Repeat;
+
+    bool empty() const { return path.empty() && !image; }
+};
+
+// glTF's alphaMode: Opaque ignores alpha; Mask discards fragments whose alpha (opacity × texture alpha ×
+// vertex alpha) is below alphaCutoff, in both renderers and in shadows; Blend is drawn as Mask at 0.5
+// (a warned fallback: no sorted transparency yet).
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// Blinn-Phong (DESIGN.md), with the additions model files need:
+//   base     = color · baseTexture.rgb · vertexColor.rgb
+//   emitted  = emission · emissionTexture.rgb
+//   out      = emitted + base·(ambient·sceneAmbient + diffuse·Σ n·l·vis·L) + specular·specularColor·Σ
+//   (n·h)^s·vis·L
+// with n taken from the normal map (tangent space, scaled in xy by normalScale) when there is one and the
+// mesh has tangents.
 struct Material {
     glm::dvec3 color{0.8, 0.8, 0.8};
     double ambient = 1.0;
@@ -36,7 +65,14 @@ struct Material {
     double specular = 0.0;
     double shininess = 32.0;
     glm::dvec3 emission{0.0, 0.0, 0.0};
-    std::string texturePath; // absolute path, empty for none
+    glm::dvec3 specularColor{1.0, 1.0, 1.0}; // tints highlights: metals' highlights take their colour
+    TextureSource texture;                   // base colour (sRGB), alpha for Mask; empty for none
+    TextureSource emissionTexture;           // multiplies emission (sRGB)
+    TextureSource normalTexture;             // tangent-space normal map (linear)
+    double normalScale = 1.0;
+    double opacity = 1.0; // base alpha factor
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    double alphaCutoff = 0.5;
 };
 
 struct DrawItem {

@@ -251,7 +251,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
             s.timer.begin(i);
         switch (pass.kind) {
         case PassKind::Shadow:
-            s.shadows.render(input, pass.lightIndex, s.meshes, s.shadowProgram);
+            s.shadows.render(input, pass.lightIndex, s.meshes, s.shadowProgram, &s.textures);
             s.plannerState.shadowSignatures[pass.lightIndex] = shadowSignature(input, pass.lightIndex);
             break;
         case PassKind::Envmap: {

@@ -15,6 +15,8 @@ uniform vec4 uClipPlane;
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
+layout(location = 3) in vec4 aColor;   // constant white where the mesh has none (gl::GpuMesh)
+layout(location = 4) in vec4 aTangent; // constant (1, 0, 0, 1) where the mesh has none
 
 uniform mat4 uModel;        // object → camera-relative world
 uniform mat3 uNormalMatrix; // inverse transpose of uModel's upper 3×3
@@ -24,12 +26,19 @@ uniform mat4 uViewProjection;
 out vec3 vWorld;
 out vec3 vNormal;
 out vec2 vUv;
+out vec4 vColor;
+out vec4 vTangent;
 
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vWorld = world.xyz;
     vNormal = uNormalMatrix * aNormal;
     vUv = aUv;
+    vColor = aColor;
+    // A tangent is a direction in the surface: it transforms like a position. A mirroring transform turns
+    // the frame's handedness round, so the bitangent w · (n × t) still points along the mesh's own.
+    mat3 linear = mat3(uModel);
+    vTangent = vec4(linear * aTangent.xyz, determinant(linear) < 0.0 ? -aTangent.w : aTangent.w);
 #ifdef ENVMAP_WARP
     vec4 drawn = uReflection * world;
     gl_Position = envmapWarp(drawn.xyz);

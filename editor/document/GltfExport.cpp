@@ -1,181 +1,103 @@
 #include "editor/document/GltfExport.hpp"
 
-#include "editor/document/NodeMath.hpp"
+#include "editor/document/GltfBuilder.hpp"
 
 #include <QDir>
 #include <QFileInfo>
-#include <algorithm>
-#include <assimp/Exporter.hpp>
-#include <assimp/material.h>
-#include <assimp/scene.h>
-#include <cmath>
-#include <memory>
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 namespace speculum::document {
 
+namespace fs = std::filesystem;
+
 namespace {
 
-aiMatrix4x4 toAssimp(const glm::dmat4& m) {
-    // glm is column-major (m[column][row]); aiMatrix4x4 is row-major (a1..a4 = first row).
-    aiMatrix4x4 out;
-    for (int r = 0; r < 4; ++r) {
-        for (int c = 0; c < 4; ++c) {
-            out[static_cast<unsigned>(r)][static_cast<unsigned>(c)] = static_cast<ai_real>(m[c][r]);
-        }
+void append32(std::vector<unsigned char>& out, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) {
+        out.push_back(static_cast<unsigned char>(v >> (8 * i))); // GLB is little-endian
+    }
+}
+
+// The GLB container (glTF 2.0, section 4.4): a 12-byte header, the JSON chunk padded with spaces to 4
+// bytes, then the BIN chunk padded with zeros (left out when there is no binary data).
+std::vector<unsigned char> glbContainer(const QByteArray& json, const std::vector<unsigned char>& bin) {
+    const std::uint32_t jsonLength = (static_cast<std::uint32_t>(json.size()) + 3u) & ~3u;
+    const std::uint32_t binLength = (static_cast<std::uint32_t>(bin.size()) + 3u) & ~3u;
+    const std::uint32_t total = 12 + 8 + jsonLength + (bin.empty() ? 0 : 8 + binLength);
+    std::vector<unsigned char> out;
+    out.reserve(total);
+    append32(out, 0x46546C67); // "glTF"
+    append32(out, 2);
+    append32(out, total);
+    append32(out, jsonLength);
+    append32(out, 0x4E4F534A); // "JSON"
+    out.insert(out.end(), json.begin(), json.end());
+    out.resize(20 + jsonLength, ' ');
+    if (!bin.empty()) {
+        append32(out, binLength);
+        append32(out, 0x004E4942); // "BIN\0"
+        out.insert(out.end(), bin.begin(), bin.end());
+        out.resize(total, 0);
     }
     return out;
 }
 
-aiString text(const std::string& s) {
-    return aiString(s);
-}
-
-// Collects meshes and materials while the node tree is built; hands them to the aiScene at the end.
-class SceneBuilder {
-public:
-    SceneBuilder(MeshLibrary& meshes, std::vector<std::string>& warnings, const QDir& outDir)
-        : m_library(meshes)
-        , m_warnings(warnings)
-        , m_outDir(outDir) {}
-
-    aiNode* build(const Node& node) {
-        const NodeData& d = node.data();
-        auto* out = new aiNode(d.name.empty() ? std::string("node") : d.name);
-        out->mTransformation = toAssimp(localMatrix(d.transform));
-
-        std::vector<unsigned> meshIndices;
-        if (d.mesh) {
-            std::vector<std::string> importWarnings;
-            auto mesh = m_library.get(*d.mesh, importWarnings);
-            if (mesh) {
-                const unsigned material = addMaterial(d, d.reflector.has_value());
-                meshIndices.push_back(addMesh(**mesh, material, d.name));
-            } else {
-                m_warnings.push_back("node \"" + d.name + "\": mesh not exported: " + mesh.error());
-            }
-        }
-        if (d.mirror) {
-            meshIndices.push_back(addMirrorQuad(d));
-        }
-        if (!meshIndices.empty()) {
-            out->mNumMeshes = static_cast<unsigned>(meshIndices.size());
-            out->mMeshes = new unsigned[meshIndices.size()];
-            std::copy(meshIndices.begin(), meshIndices.end(), out->mMeshes);
-        }
-        if (!node.children().empty()) {
-            out->mNumChildren = static_cast<unsigned>(node.children().size());
-            out->mChildren = new aiNode*[out->mNumChildren];
-            for (unsigned i = 0; i < out->mNumChildren; ++i) {
-                out->mChildren[i] = build(*node.children()[i]);
-                out->mChildren[i]->mParent = out;
-            }
-        }
-        return out;
-    }
-
-    void finish(aiScene& scene) {
-        if (m_materials.empty()) {
-            addMaterial(NodeData{}, false); // glTF/Assimp want at least one
-        }
-        scene.mNumMeshes = static_cast<unsigned>(m_meshes.size());
-        scene.mMeshes = new aiMesh*[std::max<std::size_t>(m_meshes.size(), 1)];
-        for (std::size_t i = 0; i < m_meshes.size(); ++i) {
-            scene.mMeshes[i] = m_meshes[i].release();
-        }
-        scene.mNumMaterials = static_cast<unsigned>(m_materials.size());
-        scene.mMaterials = new aiMaterial*[m_materials.size()];
-        for (std::size_t i = 0; i < m_materials.size(); ++i) {
-            scene.mMaterials[i] = m_materials[i].release();
-        }
-    }
-
-private:
-    unsigned addMaterial(const NodeData& d, bool mirrorLike) {
-        auto material = std::make_unique<aiMaterial>();
-        const MaterialComponent m = d.material.value_or(MaterialComponent{});
-        const aiString name = text((d.name.empty() ? std::string("material") : d.name) + " material");
-        material->AddProperty(&name, AI_MATKEY_NAME);
-        const aiColor4D base(float(m.color.r), float(m.color.g), float(m.color.b), 1.0f);
-        material->AddProperty(&base, 1, AI_MATKEY_BASE_COLOR);
-        const aiColor3D diffuse(float(m.color.r), float(m.color.g), float(m.color.b));
-        material->AddProperty(&diffuse, 1, AI_MATKEY_COLOR_DIFFUSE);
-        const aiColor3D emissive(float(m.emission.r), float(m.emission.g), float(m.emission.b));
-        material->AddProperty(&emissive, 1, AI_MATKEY_COLOR_EMISSIVE);
-        // Blinn-Phong has no metalness; a shininess s maps roughly to roughness sqrt(2 / (s + 2)).
-        const float metallic = mirrorLike ? 1.0f : 0.0f;
-        const float roughness =
-            mirrorLike ? 0.0f : static_cast<float>(std::sqrt(2.0 / (std::max(m.shininess, 0.0) + 2.0)));
-        material->AddProperty(&metallic, 1, AI_MATKEY_METALLIC_FACTOR);
-        material->AddProperty(&roughness, 1, AI_MATKEY_ROUGHNESS_FACTOR);
-        if (!m.texture.empty()) {
-            const aiString texture =
-                text(m_outDir.relativeFilePath(QString::fromStdString(m.texture)).toStdString());
-            material->AddProperty(&texture, AI_MATKEY_TEXTURE(aiTextureType_DIFFUSE, 0));
-            material->AddProperty(&texture, AI_MATKEY_TEXTURE(aiTextureType_BASE_COLOR, 0));
-        }
-        m_materials.push_back(std::move(material));
-        return static_cast<unsigned>(m_materials.size() - 1);
-    }
-
-    unsigned addMesh(const render::MeshData& data, unsigned material, const std::string& name) {
-        auto mesh = std::make_unique<aiMesh>();
-        mesh->mName = text(name);
-        mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
-        mesh->mMaterialIndex = material;
-        mesh->mNumVertices = static_cast<unsigned>(data.positions.size());
-        mesh->mVertices = new aiVector3D[mesh->mNumVertices];
-        mesh->mNormals = new aiVector3D[mesh->mNumVertices];
-        const bool hasUv = data.uvs.size() == data.positions.size();
-        if (hasUv) {
-            mesh->mTextureCoords[0] = new aiVector3D[mesh->mNumVertices];
-            mesh->mNumUVComponents[0] = 2;
-        }
-        for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
-            const auto& p = data.positions[i];
-            mesh->mVertices[i] = aiVector3D(p.x, p.y, p.z);
-            const glm::vec3 n = i < data.normals.size() ? data.normals[i] : glm::vec3(0.0f, 1.0f, 0.0f);
-            mesh->mNormals[i] = aiVector3D(n.x, n.y, n.z);
-            if (hasUv) {
-                mesh->mTextureCoords[0][i] = aiVector3D(data.uvs[i].x, data.uvs[i].y, 0.0f);
-            }
-        }
-        mesh->mNumFaces = static_cast<unsigned>(data.indices.size() / 3);
-        mesh->mFaces = new aiFace[mesh->mNumFaces];
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-            aiFace& face = mesh->mFaces[f];
-            face.mNumIndices = 3;
-            face.mIndices = new unsigned[3];
-            for (unsigned k = 0; k < 3; ++k) {
-                face.mIndices[k] = data.indices[f * 3 + k];
-            }
-        }
-        m_meshes.push_back(std::move(mesh));
-        return static_cast<unsigned>(m_meshes.size() - 1);
-    }
-
-    // The mirror rectangle in the local XZ plane, facing +Y, with uvs over its area.
-    unsigned addMirrorQuad(const NodeData& d) {
-        render::MeshData quad;
-        const float hx = float(d.mirror->size.x * 0.5), hz = float(d.mirror->size.y * 0.5);
-        quad.positions = {{-hx, 0, -hz}, {-hx, 0, hz}, {hx, 0, hz}, {hx, 0, -hz}};
-        quad.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
-        quad.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
-        quad.indices = {0, 1, 2, 0, 2, 3}; // counter-clockwise seen from +Y
-        NodeData look = d;
-        if (!look.material) {
-            look.material = MaterialComponent{};
-            look.material->color = glm::dvec3(0.95);
-        }
-        const unsigned material = addMaterial(look, true);
-        return addMesh(quad, material, d.name + " (mirror)");
-    }
-
-    MeshLibrary& m_library;
-    std::vector<std::string>& m_warnings;
-    QDir m_outDir;
-    std::vector<std::unique_ptr<aiMesh>> m_meshes;
-    std::vector<std::unique_ptr<aiMaterial>> m_materials;
+struct PendingFile {
+    fs::path target;
+    const unsigned char* data;
+    std::size_t size;
+    fs::path temp;
 };
+
+// Writes every file to a temporary sibling, then renames them into place, `files.back()` last (the file
+// that refers to the others). On failure nothing new is left behind.
+render::Status writeAllOrNothing(std::vector<PendingFile>& files) {
+    static int counter = 0;
+    auto removeTemps = [&] {
+        std::error_code ignored;
+        for (const PendingFile& f : files) {
+            if (!f.temp.empty()) {
+                fs::remove(f.temp, ignored);
+            }
+        }
+    };
+    for (PendingFile& f : files) {
+        f.temp = f.target.parent_path() / ("." + f.target.filename().string() + ".tmp-" +
+                                           std::to_string(::getpid()) + "-" + std::to_string(++counter));
+        std::ofstream out(f.temp, std::ios::binary | std::ios::trunc);
+        if (out) {
+            out.write(reinterpret_cast<const char*>(f.data), static_cast<std::streamsize>(f.size));
+            out.close();
+        }
+        if (!out) {
+            const std::string reason = std::strerror(errno);
+            removeTemps();
+            return render::Error{f.target.string() + ": cannot write the file: " + reason};
+        }
+    }
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        std::error_code ec;
+        fs::rename(files[i].temp, files[i].target, ec);
+        if (ec) {
+            removeTemps();
+            // Companions already moved would point nowhere without the main file: take them back out.
+            std::error_code ignored;
+            for (std::size_t j = 0; j < i; ++j) {
+                fs::remove(files[j].target, ignored);
+            }
+            return render::Error{files[i].target.string() +
+                                 ": cannot move the finished file into place: " + ec.message()};
+        }
+        files[i].temp.clear();
+    }
+    return render::Done{};
+}
 
 } // namespace
 
@@ -190,26 +112,45 @@ render::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& 
         return render::Error{path.toStdString() + ": folder " + info.absolutePath().toStdString() +
                              " does not exist"};
     }
-
-    auto out = std::make_unique<aiScene>();
-    SceneBuilder builder(meshes, warnings, info.absoluteDir());
-    auto* root = new aiNode("Scene");
-    const auto& nodes = scene.topLevelNodes();
-    root->mNumChildren = static_cast<unsigned>(nodes.size());
-    root->mChildren = root->mNumChildren ? new aiNode*[root->mNumChildren] : nullptr;
-    for (unsigned i = 0; i < root->mNumChildren; ++i) {
-        root->mChildren[i] = builder.build(*nodes[i]);
-        root->mChildren[i]->mParent = root;
+    if (info.isDir()) {
+        return render::Error{path.toStdString() + ": is a folder"};
     }
-    out->mRootNode = root;
-    builder.finish(*out);
-
-    Assimp::Exporter exporter;
-    const char* format = suffix == QStringLiteral("glb") ? "glb2" : "gltf2";
-    if (exporter.Export(out.get(), format, info.absoluteFilePath().toStdString()) != AI_SUCCESS) {
-        return render::Error{path.toStdString() + ": glTF export failed: " + exporter.GetErrorString()};
+    const fs::path target = fs::absolute(fs::path(path.toStdString()));
+    const fs::path folder = target.parent_path();
+    // Companion names keep to letters, digits, '.', '-' and '_': their URIs then need no percent-encoding,
+    // which some readers (Assimp 5.2) do not decode.
+    std::string stem = target.stem().string();
+    for (char& c : stem) {
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') {
+            c = '_';
+        }
     }
-    return render::Done{};
+
+    GltfLayout layout;
+    layout.binary = suffix == QStringLiteral("glb");
+    layout.binUri = stem + ".bin";
+    layout.imageStem = stem;
+    const GltfAsset asset = buildGltf(scene, meshes, layout, warnings);
+
+    std::vector<PendingFile> files;
+    std::vector<unsigned char> glb;
+    if (layout.binary) {
+        glb = glbContainer(asset.json, asset.bin);
+        files.push_back({target, glb.data(), glb.size(), {}});
+    } else {
+        if (!asset.bin.empty()) {
+            files.push_back({folder / layout.binUri, asset.bin.data(), asset.bin.size(), {}});
+        }
+        for (const GltfAsset::ImageFile& image : asset.imageFiles) {
+            files.push_back(
+                {folder / image.fileName, image.image.bytes.data(), image.image.bytes.size(), {}});
+        }
+        files.push_back({target,
+                         reinterpret_cast<const unsigned char*>(asset.json.constData()),
+                         static_cast<std::size_t>(asset.json.size()),
+                         {}});
+    }
+    return writeAllOrNothing(files);
 }
 
 } // namespace speculum::document

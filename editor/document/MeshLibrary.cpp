@@ -1,6 +1,7 @@
 #include "editor/document/MeshLibrary.hpp"
 
 #include "editor/document/ModelImport.hpp"
+#include "editor/document/ModelNodes.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/mesh/Teapot.hpp"
 
@@ -30,8 +31,8 @@ render::MeshHandle MeshLibrary::builtin(BuiltinMesh kind, int tessellation) {
     return slot;
 }
 
-render::Result<render::MeshHandle> MeshLibrary::file(const std::string& absolutePath,
-                                                     std::vector<std::string>& warnings) {
+render::Result<MeshLibrary::FileEntry*> MeshLibrary::entry(const std::string& absolutePath,
+                                                           std::vector<std::string>& warnings) {
     const QFileInfo info(QString::fromStdString(absolutePath));
     if (!info.isFile()) {
         // Not cached: the file may appear later (being copied in, or the user fixes the path on disk).
@@ -42,19 +43,82 @@ render::Result<render::MeshHandle> MeshLibrary::file(const std::string& absolute
     const qint64 size = info.size();
     auto it = m_files.find(absolutePath);
     if (it == m_files.end() || it->second.modified != modified || it->second.size != size) {
-        FileEntry entry{modified, size, nullptr, {}};
-        render::Result<render::MeshData> imported = importModel(absolutePath, warnings);
+        FileEntry fresh;
+        fresh.modified = modified;
+        fresh.size = size;
+        render::Result<ImportedModel> imported = importModelFile(absolutePath, warnings);
         if (imported) {
-            entry.mesh = std::make_shared<const render::MeshData>(std::move(imported).value());
+            fresh.model = std::make_shared<const ImportedModel>(std::move(imported).value());
         } else {
-            entry.error = imported.error();
+            fresh.error = imported.error();
         }
-        it = m_files.insert_or_assign(absolutePath, std::move(entry)).first;
+        it = m_files.insert_or_assign(absolutePath, std::move(fresh)).first;
     }
-    if (!it->second.mesh) {
+    if (!it->second.model) {
         return render::Error{it->second.error};
     }
-    return it->second.mesh;
+    return &it->second;
+}
+
+render::Result<std::shared_ptr<const ImportedModel>> MeshLibrary::model(const std::string& absolutePath,
+                                                                        std::vector<std::string>& warnings) {
+    auto found = entry(absolutePath, warnings);
+    if (!found) {
+        return render::Error{found.error()};
+    }
+    return found.value()->model;
+}
+
+render::Result<render::MeshHandle> MeshLibrary::file(const std::string& absolutePath,
+                                                     std::vector<std::string>& warnings) {
+    auto found = entry(absolutePath, warnings);
+    if (!found) {
+        return render::Error{found.error()};
+    }
+    FileEntry& e = *found.value();
+    if (!e.flattened && e.flattenError.empty()) {
+        // One part drawn once, untransformed (a PLY or STL scan): the part's mesh is the whole model.
+        int placed = 0;
+        render::MeshHandle only;
+        detail::forEachPlacedPart(*e.model, [&](int part, const glm::dmat4& world) {
+            ++placed;
+            only = world == glm::dmat4(1.0) ? e.model->parts[part].mesh : nullptr;
+        });
+        if (placed == 1 && only) {
+            e.flattened = only;
+            return e.flattened;
+        }
+        auto flat = flattenModel(*e.model);
+        if (flat) {
+            e.flattened = std::make_shared<const render::MeshData>(std::move(flat).value());
+        } else {
+            e.flattenError = QFileInfo(QString::fromStdString(absolutePath)).fileName().toStdString() + ": " +
+                             flat.error();
+        }
+    }
+    if (!e.flattened) {
+        return render::Error{e.flattenError};
+    }
+    return e.flattened;
+}
+
+render::Result<render::MeshHandle> MeshLibrary::part(const std::string& absolutePath, int part,
+                                                     std::vector<std::string>& warnings) {
+    auto found = entry(absolutePath, warnings);
+    if (!found) {
+        return render::Error{found.error()};
+    }
+    const ImportedModel& model = *found.value()->model;
+    const std::string name = QFileInfo(QString::fromStdString(absolutePath)).fileName().toStdString();
+    if (part < 0 || part >= static_cast<int>(model.parts.size())) {
+        return render::Error{name + ": part " + std::to_string(part) + " does not exist (the file has " +
+                             std::to_string(model.parts.size()) + " parts, 0.." +
+                             std::to_string(static_cast<int>(model.parts.size()) - 1) + ")"};
+    }
+    if (!model.parts[part].mesh) {
+        return render::Error{name + ": part " + std::to_string(part) + " has no triangles"};
+    }
+    return model.parts[part].mesh;
 }
 
 render::Result<render::MeshHandle> MeshLibrary::get(const MeshComponent& mesh,
@@ -62,12 +126,65 @@ render::Result<render::MeshHandle> MeshLibrary::get(const MeshComponent& mesh,
     if (mesh.builtin) {
         return builtin(*mesh.builtin, mesh.tessellation);
     }
+    if (mesh.part) {
+        return part(mesh.file, *mesh.part, warnings);
+    }
     return file(mesh.file, warnings);
+}
+
+void MeshLibrary::addModel(const std::string& absolutePath, std::shared_ptr<const ImportedModel> model) {
+    const QFileInfo info(QString::fromStdString(absolutePath));
+    if (!model || !info.isFile()) {
+        return;
+    }
+    FileEntry fresh;
+    fresh.modified = info.lastModified();
+    fresh.size = info.size();
+    fresh.model = std::move(model);
+    m_files.insert_or_assign(absolutePath, std::move(fresh));
+}
+
+std::shared_ptr<const render::TextureImage> MeshLibrary::embeddedTexture(const std::string& name,
+                                                                         std::vector<std::string>& warnings) {
+    const std::size_t hash = name.rfind('#');
+    if (hash == std::string::npos || hash == 0 || hash + 1 == name.size()) {
+        return nullptr;
+    }
+    const std::string modelPath = name.substr(0, hash);
+    if (!QFileInfo(QString::fromStdString(modelPath)).isFile() ||
+        QFileInfo(QString::fromStdString(name)).isFile()) {
+        return nullptr;
+    }
+    auto found = entry(modelPath, warnings);
+    if (!found) {
+        return nullptr;
+    }
+    const auto& textures = found.value()->model->embeddedTextures;
+    const auto it = textures.find(name);
+    return it == textures.end() ? nullptr : it->second;
+}
+
+render::Bounds MeshLibrary::bounds(const render::MeshHandle& mesh) {
+    if (!mesh) {
+        return {};
+    }
+    auto it = m_bounds.find(mesh.get());
+    if (it != m_bounds.end() && it->second.mesh.lock() == mesh) {
+        return it->second.bounds;
+    }
+    // Drop entries of meshes that are gone, so the map does not grow with every re-import.
+    for (auto stale = m_bounds.begin(); stale != m_bounds.end();) {
+        stale = stale->second.mesh.expired() ? m_bounds.erase(stale) : std::next(stale);
+    }
+    const render::Bounds b = render::computeBounds(*mesh);
+    m_bounds[mesh.get()] = {mesh, b};
+    return b;
 }
 
 void MeshLibrary::clear() {
     m_builtins.clear();
     m_files.clear();
+    m_bounds.clear();
 }
 
 } // namespace speculum::document

@@ -1,8 +1,12 @@
 #include "editor/document/ModelImport.hpp"
 
+#include "editor/document/ModelMaterials.hpp"
+#include "editor/document/ModelNodes.hpp"
+#include "editor/document/ModelWeld.hpp"
 #include "render/mesh/MeshRepair.hpp"
 
 #include <assimp/Importer.hpp>
+#include <assimp/ProgressHandler.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -11,9 +15,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <glm/gtc/matrix_inverse.hpp>
-#include <glm/mat3x3.hpp>
-#include <glm/mat4x4.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <sstream>
 #include <system_error>
@@ -23,6 +25,7 @@ namespace speculum::document {
 namespace {
 
 namespace fs = std::filesystem;
+using detail::ImportNotes;
 using render::Error;
 using render::MeshData;
 
@@ -39,11 +42,6 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
     return out;
 }
 
-struct Instance {
-    const aiMesh* mesh;
-    glm::dmat4 world;
-};
-
 // A triangle mesh after SortByPType; meshes with only points or lines were removed by the importer, but
 // a format may still hand over an empty one.
 bool isTriangleMesh(const aiMesh* mesh) {
@@ -51,128 +49,173 @@ bool isTriangleMesh(const aiMesh* mesh) {
            (mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) != 0;
 }
 
-// Depth-first walk of the node tree, collecting each mesh reference with its world transform.
-render::Status collectInstances(const aiScene& scene, std::vector<Instance>& out) {
-    struct Item {
-        const aiNode* node;
-        glm::dmat4 parent;
-        int depth;
-    };
-    std::vector<Item> stack{{scene.mRootNode, glm::dmat4(1.0), 0}};
-    while (!stack.empty()) {
-        const Item item = stack.back();
-        stack.pop_back();
-        if (item.node == nullptr) {
+struct Progress {
+    const ImportControl& control;
+    bool cancelled() const { return control.cancel != nullptr && control.cancel->load(); }
+    void operator()(double fraction, const char* phase) const {
+        if (control.progress) {
+            control.progress(fraction, phase);
+        }
+    }
+};
+
+// Assimp's own reading progress (most of a big file's time) and a way to stop it early.
+class ReadProgress : public Assimp::ProgressHandler {
+public:
+    explicit ReadProgress(const Progress& progress)
+        : m_progress(progress) {}
+    bool Update(float percentage) override {
+        // Reading and Assimp's post-processing each count 0..1; only ever report forward.
+        if (percentage >= 0.0f && percentage <= 1.0f && 0.5 * percentage > m_reported) {
+            m_reported = 0.5 * percentage;
+            m_progress(m_reported, "reading");
+        }
+        return !m_progress.cancelled();
+    }
+
+private:
+    Progress m_progress;
+    double m_reported = 0.0;
+};
+
+// One aiMesh as a repaired, welded speculum mesh (tangents when `wantTangents` and it has uvs).
+render::Result<MeshData> convertPart(const aiMesh& source, bool wantTangents, ImportNotes& notes,
+                                     const Progress& progress, double fraction) {
+    if (!isTriangleMesh(&source)) {
+        return Error{"no triangles"};
+    }
+    if (source.mNumFaces > render::kMaxMeshTriangles || source.mNumVertices > render::kMaxMeshVertices) {
+        std::ostringstream out;
+        out << "too large (" << source.mNumFaces << " triangles, " << source.mNumVertices
+            << " vertices; the limit is " << render::kMaxMeshTriangles << " triangles)";
+        return Error{out.str()};
+    }
+    const unsigned n = source.mNumVertices;
+    MeshData mesh;
+    mesh.positions.resize(n);
+    for (unsigned v = 0; v < n; ++v) {
+        mesh.positions[v] = {source.mVertices[v].x, source.mVertices[v].y, source.mVertices[v].z};
+    }
+    if (source.HasNormals()) {
+        mesh.normals.resize(n);
+        for (unsigned v = 0; v < n; ++v) {
+            mesh.normals[v] = {source.mNormals[v].x, source.mNormals[v].y, source.mNormals[v].z};
+        }
+    }
+    if (source.HasTextureCoords(0)) {
+        mesh.uvs.resize(n);
+        for (unsigned v = 0; v < n; ++v) {
+            mesh.uvs[v] = {source.mTextureCoords[0][v].x, source.mTextureCoords[0][v].y};
+        }
+    }
+    if (source.GetNumUVChannels() > 1) {
+        notes.add("only the first texture coordinate set is used");
+    }
+    if (source.HasVertexColors(0)) {
+        mesh.colors.resize(n);
+        for (unsigned v = 0; v < n; ++v) {
+            const aiColor4D& c = source.mColors[0][v];
+            mesh.colors[v] = {c.r, c.g, c.b, c.a};
+        }
+    }
+    if (source.GetNumColorChannels() > 1) {
+        notes.add("only the first vertex colour set is used");
+    }
+    std::size_t skippedFaces = 0, outOfRange = 0;
+    mesh.indices.reserve(static_cast<std::size_t>(source.mNumFaces) * 3);
+    for (unsigned f = 0; f < source.mNumFaces; ++f) {
+        const aiFace& face = source.mFaces[f];
+        if (face.mNumIndices != 3 || face.mIndices == nullptr) {
+            ++skippedFaces;
             continue;
         }
-        if (item.depth > kMaxNodeDepth) {
-            return Error{"node hierarchy deeper than " + std::to_string(kMaxNodeDepth) + " levels"};
+        if (face.mIndices[0] >= n || face.mIndices[1] >= n || face.mIndices[2] >= n) {
+            ++outOfRange; // the weld needs every index in range
+            continue;
         }
-        const glm::dmat4 world = item.parent * toGlm(item.node->mTransformation);
-        for (unsigned i = 0; i < item.node->mNumMeshes; ++i) {
-            const unsigned index = item.node->mMeshes[i];
-            if (index < scene.mNumMeshes) {
-                out.push_back({scene.mMeshes[index], world});
-            }
+        mesh.indices.insert(mesh.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+    }
+    if (skippedFaces > 0) {
+        notes.add("ignored point and line primitives");
+    }
+    if (outOfRange > 0) {
+        notes.add("repaired: dropped " + std::to_string(outOfRange) + " triangles with out-of-range indices");
+    }
+    if (mesh.indices.empty()) {
+        return Error{"no triangles"};
+    }
+    progress(fraction, "welding");
+    detail::weldVertices(mesh);
+    progress(fraction, "repairing");
+    render::RepairReport report;
+    auto repaired = render::repairMesh(std::move(mesh), report);
+    if (!repaired) {
+        return Error{repaired.error()};
+    }
+    // Regenerating normals and dropping zero-area triangles (cone tips, sphere poles: what Assimp's
+    // FindDegenerates removed silently) are routine; losing geometry to bad data is worth telling.
+    if (report.droppedOutOfRange > 0 || report.droppedNonFinite > 0 || report.droppedUvs ||
+        report.fixedUvs > 0) {
+        notes.add("repaired: " + report.summary());
+    }
+    if (wantTangents) {
+        detail::computeTangents(repaired.value());
+    }
+    return repaired;
+}
+
+// The file's node tree, meshes referenced by index; deeper than kMaxNodeDepth is an error.
+render::Status convertNode(const aiNode& node, const aiScene& scene, ImportedNode& out, int depth) {
+    if (depth > kMaxNodeDepth) {
+        return Error{"node hierarchy deeper than " + std::to_string(kMaxNodeDepth) + " levels"};
+    }
+    out.name = node.mName.C_Str();
+    out.local = toGlm(node.mTransformation);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+        if (node.mMeshes != nullptr && node.mMeshes[i] < scene.mNumMeshes) {
+            out.parts.push_back(static_cast<int>(node.mMeshes[i]));
         }
-        for (unsigned i = 0; i < item.node->mNumChildren; ++i) {
-            stack.push_back({item.node->mChildren[i], world, item.depth + 1});
+    }
+    out.children.reserve(node.mNumChildren);
+    for (unsigned i = 0; i < node.mNumChildren; ++i) {
+        if (node.mChildren == nullptr || node.mChildren[i] == nullptr) {
+            continue;
+        }
+        out.children.emplace_back();
+        if (const render::Status status =
+                convertNode(*node.mChildren[i], scene, out.children.back(), depth + 1);
+            !status) {
+            return status;
         }
     }
     return render::Done{};
 }
 
-render::Result<MeshData> flatten(const std::vector<Instance>& instances, std::vector<std::string>& notes) {
-    // Count first so that an absurd model is refused before anything big is allocated.
-    std::size_t vertexCount = 0, triangleCount = 0, skippedFaces = 0;
-    bool anyUvs = false, anyMissingUvs = false, extraUvChannels = false;
-    for (const Instance& instance : instances) {
-        if (!isTriangleMesh(instance.mesh)) {
-            continue;
-        }
-        vertexCount += instance.mesh->mNumVertices;
-        triangleCount += instance.mesh->mNumFaces;
-        const bool hasUvs = instance.mesh->HasTextureCoords(0);
-        anyUvs |= hasUvs;
-        anyMissingUvs |= !hasUvs;
-        extraUvChannels |= instance.mesh->GetNumUVChannels() > 1;
+// FBX stores "UnitScaleFactor": centimetres per file unit (1 = cm, 100 = m). Assimp 5.2 reports it in
+// the scene metadata (as a float) and does not apply it; speculum's unit is the metre.
+double unitScaleOf(const aiScene& scene, const fs::path& file, ImportNotes& notes) {
+    if (scene.mMetaData == nullptr) {
+        return 1.0;
     }
-    if (triangleCount == 0) {
-        return Error{"the model contains no triangles"};
+    aiString format;
+    const bool fbx = (scene.mMetaData->Get("SourceAsset_Format", format) &&
+                      std::string(format.C_Str()).find("FBX") != std::string::npos);
+    if (!fbx) {
+        return 1.0;
     }
-    if (triangleCount > render::kMaxMeshTriangles || vertexCount > render::kMaxMeshVertices ||
-        vertexCount > std::numeric_limits<std::uint32_t>::max()) {
-        std::ostringstream out;
-        out << "the model is too large (" << triangleCount << " triangles, " << vertexCount
-            << " vertices; the limit is " << render::kMaxMeshTriangles << " triangles)";
-        return Error{out.str()};
+    double factor = 0.0;
+    float asFloat = 0.0f;
+    if (scene.mMetaData->Get("UnitScaleFactor", asFloat)) {
+        factor = asFloat;
+    } else if (!scene.mMetaData->Get("UnitScaleFactor", factor)) {
+        return 0.01; // FBX's default unit is the centimetre
     }
-
-    MeshData mesh;
-    mesh.positions.reserve(vertexCount);
-    mesh.normals.reserve(vertexCount);
-    if (anyUvs) {
-        mesh.uvs.reserve(vertexCount);
+    if (!std::isfinite(factor) || factor <= 0.0 || factor > 1e6) {
+        notes.add("invalid FBX unit scale " + std::to_string(factor) + ", centimetres assumed");
+        return 0.01;
     }
-    mesh.indices.reserve(triangleCount * 3);
-
-    for (const Instance& instance : instances) {
-        const aiMesh& source = *instance.mesh;
-        if (!isTriangleMesh(&source)) {
-            continue;
-        }
-        const glm::dmat3 linear(instance.world);
-        const double determinant = glm::determinant(linear);
-        // Normals transform by the inverse transpose; a singular transform has none (repair rebuilds them).
-        const bool invertible = std::isfinite(determinant) && std::abs(determinant) > 1e-300;
-        const glm::dmat3 normalMatrix = invertible ? glm::inverseTranspose(linear) : glm::dmat3(0.0);
-        // A mirroring transform turns counter-clockwise triangles clockwise; swap two corners to undo it.
-        const bool mirrored = determinant < 0.0;
-
-        const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-        for (unsigned v = 0; v < source.mNumVertices; ++v) {
-            const aiVector3D& p = source.mVertices[v];
-            mesh.positions.emplace_back(instance.world * glm::dvec4(p.x, p.y, p.z, 1.0));
-            glm::vec3 normal(0.0f);
-            if (source.HasNormals() && invertible) {
-                const aiVector3D& n = source.mNormals[v];
-                normal = glm::vec3(normalMatrix * glm::dvec3(n.x, n.y, n.z)); // repair normalises
-            }
-            mesh.normals.push_back(normal);
-            if (anyUvs) {
-                const aiVector3D uv =
-                    source.HasTextureCoords(0) ? source.mTextureCoords[0][v] : aiVector3D(0.0f);
-                mesh.uvs.emplace_back(uv.x, uv.y);
-            }
-        }
-        for (unsigned f = 0; f < source.mNumFaces; ++f) {
-            const aiFace& face = source.mFaces[f];
-            if (face.mNumIndices != 3) {
-                ++skippedFaces;
-                continue;
-            }
-            const std::uint32_t a = base + face.mIndices[0];
-            const std::uint32_t b = base + face.mIndices[mirrored ? 2 : 1];
-            const std::uint32_t c = base + face.mIndices[mirrored ? 1 : 2];
-            // Indices past this mesh's vertices would alias the next mesh; make them out of range instead.
-            const auto limit = static_cast<std::uint32_t>(base + source.mNumVertices);
-            const auto guard = [&](std::uint32_t i) {
-                return i < limit ? i : std::numeric_limits<std::uint32_t>::max();
-            };
-            mesh.indices.insert(mesh.indices.end(), {guard(a), guard(b), guard(c)});
-        }
-    }
-
-    if (skippedFaces > 0) {
-        notes.push_back("ignored " + std::to_string(skippedFaces) + " point and line primitives");
-    }
-    if (anyUvs && anyMissingUvs) {
-        notes.push_back("some parts have no texture coordinates; they get uv (0, 0)");
-    }
-    if (extraUvChannels) {
-        notes.push_back("only the first texture coordinate set is used");
-    }
-    return mesh;
+    (void)file;
+    return factor / 100.0;
 }
 
 // Text formats that declare their element counts up front (OFF, PLY) make some Assimp readers reserve
@@ -248,7 +291,8 @@ render::Status checkDeclaredCounts(const fs::path& file, std::uintmax_t size) {
     return render::Done{};
 }
 
-render::Result<MeshData> importChecked(const std::string& path, std::vector<std::string>& notes) {
+render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes& notes,
+                                            const Progress& progress) {
     std::error_code ec;
     const fs::path file(path);
     const fs::file_status status = fs::status(file, ec);
@@ -269,18 +313,22 @@ render::Result<MeshData> importChecked(const std::string& path, std::vector<std:
         return Error{declared.error()};
     }
 
+    progress(0.0, "reading");
     Assimp::Importer importer;
+    importer.SetProgressHandler(new ReadProgress(progress)); // the importer owns and deletes it
     // Drop points and lines entirely: the renderer and the tracer only know triangles.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // Degenerate triangles become lines/points and are then removed by SortByPType.
-    importer.SetPropertyBool(AI_CONFIG_PP_FD_REMOVE, true);
 
-    // Not aiProcess_FindInvalidData: in Assimp 5.2 one NaN position makes it delete the whole mesh, while
-    // repairMesh() drops just the triangles that touch it (and rebuilds bad normals, resets bad uvs).
-    constexpr unsigned kFlags = aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                                aiProcess_FindDegenerates | aiProcess_ValidateDataStructure;
+    // Not GenSmoothNormals, JoinIdenticalVertices or FindDegenerates: they took most of a big file's time,
+    // and repairMesh() (normals, degenerate triangles) and the meshoptimizer weld do the same in linear
+    // time. Not FindInvalidData: in Assimp 5.2 one NaN position makes it delete the whole mesh, while
+    // repairMesh() drops just the triangles that touch it.
+    constexpr unsigned kFlags =
+        aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
     const aiScene* scene = importer.ReadFile(path, kFlags);
+    if (progress.cancelled()) {
+        return Error{"cancelled"};
+    }
     if (scene == nullptr) {
         std::string reason = importer.GetErrorString();
         if (reason.empty()) {
@@ -300,44 +348,108 @@ render::Result<MeshData> importChecked(const std::string& path, std::vector<std:
     if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mRootNode == nullptr) {
         return Error{"the file contains no complete scene (no meshes)"};
     }
-    if (scene->mNumMeshes == 0) {
+    if (scene->mNumMeshes == 0 || scene->mMeshes == nullptr) {
         return Error{"the file contains no meshes"};
     }
 
-    std::vector<Instance> instances;
-    if (const render::Status walked = collectInstances(*scene, instances); !walked) {
-        return Error{walked.error()};
+    // Count first so that an absurd model is refused before anything big is allocated.
+    std::size_t triangleCount = 0, vertexCount = 0;
+    for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+        if (isTriangleMesh(scene->mMeshes[i])) {
+            triangleCount += scene->mMeshes[i]->mNumFaces;
+            vertexCount += scene->mMeshes[i]->mNumVertices;
+        }
     }
-    auto flat = flatten(instances, notes);
-    if (!flat) {
-        return flat;
+    if (triangleCount == 0) {
+        return Error{"the model contains no triangles"};
+    }
+    if (triangleCount > render::kMaxMeshTriangles || vertexCount > render::kMaxMeshVertices) {
+        std::ostringstream out;
+        out << "the model is too large (" << triangleCount << " triangles, " << vertexCount
+            << " vertices; the limit is " << render::kMaxMeshTriangles << " triangles)";
+        return Error{out.str()};
     }
 
-    render::RepairReport report;
-    auto repaired = render::repairMesh(std::move(flat).value(), report);
-    if (!repaired) {
-        return Error{repaired.error()};
+    ImportedModel model;
+    if (const render::Status walked = convertNode(*scene->mRootNode, *scene, model.root, 0); !walked) {
+        return Error{walked.error()};
     }
-    // Regenerating normals after a singular transform or for a format without them is routine, but
-    // dropping geometry is worth telling the user.
-    if (report.droppedTriangles() > 0 || report.droppedUvs || report.fixedUvs > 0) {
-        notes.push_back("repaired: " + report.summary());
+
+    progress(0.5, "materials");
+    const std::string absolutePath = fs::absolute(file, ec).lexically_normal().string();
+    detail::MaterialConverter converter(*scene, absolutePath, model, notes);
+    std::vector<int> materialIndex(scene->mNumMaterials, -1);
+    for (unsigned i = 0; i < scene->mNumMaterials && scene->mMaterials != nullptr; ++i) {
+        if (scene->mMaterials[i] == nullptr || converter.isPlaceholder(*scene->mMaterials[i])) {
+            continue;
+        }
+        materialIndex[i] = static_cast<int>(model.materials.size());
+        model.materials.push_back(converter.convert(*scene->mMaterials[i]));
     }
-    return repaired;
+
+    model.parts.resize(scene->mNumMeshes);
+    std::size_t failed = 0;
+    std::string firstFailure;
+    for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+        if (progress.cancelled()) {
+            return Error{"cancelled"};
+        }
+        const double fraction = 0.55 + 0.4 * i / scene->mNumMeshes;
+        progress(fraction, "converting");
+        const aiMesh* source = scene->mMeshes[i];
+        ImportedPart& part = model.parts[i];
+        if (source == nullptr) {
+            continue;
+        }
+        part.name = source->mName.C_Str();
+        if (source->mMaterialIndex < materialIndex.size()) {
+            part.material = materialIndex[source->mMaterialIndex];
+        }
+        const bool wantTangents = part.material >= 0 && !model.materials[part.material].normalTexture.empty();
+        auto mesh = convertPart(*source, wantTangents, notes, progress, fraction);
+        if (!mesh) {
+            if (failed++ == 0) {
+                firstFailure = "part " + std::to_string(i) + ": " + mesh.error();
+            }
+            continue;
+        }
+        part.mesh = std::make_shared<const MeshData>(std::move(mesh).value());
+    }
+    if (failed == scene->mNumMeshes) {
+        return Error{"no usable triangles (" + firstFailure + ")"};
+    }
+    if (failed > 0) {
+        notes.add(std::to_string(failed) + " of " + std::to_string(scene->mNumMeshes) + " parts skipped (" +
+                  firstFailure + ")");
+    }
+
+    model.unitScale = unitScaleOf(*scene, file, notes);
+    model.root.local = glm::scale(glm::dmat4(1.0), glm::dvec3(model.unitScale)) * model.root.local;
+    progress(0.95, "bounds");
+    model.bounds = detail::placedBounds(model);
+    progress(1.0, "done");
+    return model;
+}
+
+std::string displayName(const std::string& path) {
+    return path.empty() ? std::string("(no file name)") : fs::path(path).filename().string();
 }
 
 } // namespace
 
-render::Result<MeshData> importModel(const std::string& path, std::vector<std::string>& warnings) {
-    const std::string name =
-        path.empty() ? std::string("(no file name)") : fs::path(path).filename().string();
-    std::vector<std::string> notes;
+render::Result<ImportedModel> importModelFile(const std::string& path, std::vector<std::string>& warnings,
+                                              const ImportControl& control) {
+    const std::string name = displayName(path);
+    ImportNotes notes;
     try {
-        auto result = importChecked(path, notes);
-        for (const std::string& note : notes) {
+        auto result = importChecked(path, notes, Progress{control});
+        for (const std::string& note : notes.all()) {
             warnings.push_back(name + ": " + note);
         }
         if (!result) {
+            if (result.error() == "cancelled") {
+                return Error{"cancelled"};
+            }
             return Error{name + ": " + result.error()};
         }
         return result;
@@ -346,6 +458,18 @@ render::Result<MeshData> importModel(const std::string& path, std::vector<std::s
     } catch (const std::exception& e) {
         return Error{name + ": " + e.what()};
     }
+}
+
+render::Result<MeshData> importModel(const std::string& path, std::vector<std::string>& warnings) {
+    auto model = importModelFile(path, warnings);
+    if (!model) {
+        return Error{model.error()};
+    }
+    auto flat = flattenModel(model.value());
+    if (!flat) {
+        return Error{displayName(path) + ": " + flat.error()};
+    }
+    return flat;
 }
 
 } // namespace speculum::document

@@ -1,6 +1,11 @@
 #include "editor/document/NodeFactory.hpp"
 
+#include "editor/document/PickScene.hpp"
+#include "editor/document/Picking.hpp"
+
 #include <QFileInfo>
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace speculum::document {
@@ -141,6 +146,90 @@ NodeTree makeModelNode(const QString& absolutePath, const glm::dvec3& at, bool a
         tree.data.material = material({0.95, 0.95, 0.95}, 1.0, 96.0);
     }
     return tree;
+}
+
+glm::dvec3 placeOnGround(const render::math::Box& model, const glm::dvec3& focus,
+                         const std::vector<render::math::Box>& occupied) {
+    if (model.empty()) {
+        return focus;
+    }
+    const glm::dvec3 size = model.max - model.min;
+    const double scale = std::max({size.x, size.y, size.z, 1e-9});
+    const double eps = 1e-6 * scale;
+    // The ground: the top of the highest flat thing (a floor, a table top, a floor mirror) under the focus
+    // and not above it; y = 0 when there is none.
+    double ground = 0.0;
+    bool onSupport = false;
+    for (const auto& other : occupied) {
+        if (other.empty()) {
+            continue;
+        }
+        const glm::dvec3 e = other.max - other.min;
+        const bool flat = e.y <= 0.1 * std::max(e.x, e.z);
+        const bool under = focus.x >= other.min.x && focus.x <= other.max.x && focus.z >= other.min.z &&
+                           focus.z <= other.max.z && other.max.y <= focus.y + eps;
+        if (flat && under && (!onSupport || other.max.y > ground)) {
+            ground = other.max.y;
+            onSupport = true;
+        }
+    }
+    glm::dvec3 offset(focus.x - model.center().x, ground - model.min.y, focus.z - model.center().z);
+    // A tenth of the model's width between it and its neighbour.
+    const double gap = std::max(0.1 * size.x, 0.01 * scale);
+    auto overlaps = [&](const render::math::Box& other, const glm::dvec3& at) {
+        for (int i = 0; i < 3; ++i) {
+            if (!(model.min[i] + at[i] < other.max[i] - eps && other.min[i] < model.max[i] + at[i] - eps)) {
+                return false;
+            }
+        }
+        return true;
+    };
+    // Each step moves past the box in the way, so this ends after at most one step per box.
+    for (std::size_t step = 0; step <= occupied.size(); ++step) {
+        const render::math::Box* blocking = nullptr;
+        for (const auto& other : occupied) {
+            if (other.empty() || other.max.y <= ground + eps) {
+                continue; // the ground itself, or something lying on it flat
+            }
+            if (overlaps(other, offset) && (!blocking || other.max.x > blocking->max.x)) {
+                blocking = &other;
+            }
+        }
+        if (!blocking) {
+            break;
+        }
+        offset.x = blocking->max.x + gap - model.min.x;
+    }
+    return offset;
+}
+
+std::vector<render::math::Box> occupiedBoxes(const Scene& scene, double timeSeconds, MeshLibrary& meshes) {
+    std::vector<render::math::Box> boxes;
+    const auto worlds = worldMatrices(scene, timeSeconds);
+    std::vector<std::string> ignored; // the viewport reports load problems already
+    scene.forEachNode([&](const Node& node) {
+        const NodeData& d = node.data();
+        const auto it = worlds.find(node.id());
+        if (it == worlds.end()) {
+            return;
+        }
+        if (d.mesh) {
+            if (auto mesh = meshes.get(*d.mesh, ignored); mesh && *mesh) {
+                boxes.push_back(render::math::worldBounds(meshBounds(*mesh), it->second));
+            }
+        }
+        if (d.mirror) {
+            const glm::vec2 h = glm::vec2(d.mirror->size * 0.5);
+            boxes.push_back(
+                render::math::worldBounds(render::Bounds{{-h.x, 0.0f, -h.y}, {h.x, 0.0f, h.y}}, it->second));
+        }
+    });
+    return boxes;
+}
+
+void scaleAboutParentOrigin(NodeData& node, double factor) {
+    node.transform.translate *= factor;
+    node.transform.scale *= factor;
 }
 
 std::string uniqueName(const Scene& scene, const std::string& base) {

@@ -2,6 +2,7 @@
 #include "editor/document/PropertyMakers.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <type_traits>
 
 namespace speculum::document::groups {
@@ -126,6 +127,32 @@ ComponentInfo meshGroup() {
         return ok();
     };
     c.properties.push_back(file);
+    // One part of the model file (Assimp's scene order), or -1 for the whole file.
+    Property<NodeData> part = integer<NodeData>(
+        QStringLiteral("mesh.part"), QStringLiteral("Part"), [](NodeData&) -> int* { return nullptr; },
+        {-1, 1e9}, {}, {},
+        QStringLiteral("Which mesh of the file this node draws, in its own coordinates; -1 for all of it"));
+    part.get = [](const NodeData& d) {
+        return d.mesh && !d.mesh->builtin ? QVariant(d.mesh->part.value_or(-1)) : QVariant();
+    };
+    part.set = [](NodeData& d, const QVariant& v) -> render::Status {
+        if (!d.mesh || d.mesh->builtin) {
+            return render::Error{"Part: only model files have parts"};
+        }
+        bool parsed = false;
+        const double x = v.toDouble(&parsed);
+        if (!parsed || !std::isfinite(x) || x != std::floor(x) || x < -1.0 || x > 1e9) {
+            return render::Error{"Part expects a whole number, -1 (the whole file) or more"};
+        }
+        if (x < 0.0) {
+            d.mesh->part.reset();
+        } else {
+            d.mesh->part = static_cast<int>(x);
+        }
+        return ok();
+    };
+    part.visible = [](const NodeData& d) { return d.mesh && !d.mesh->builtin.has_value(); };
+    c.properties.push_back(part);
     return c;
 }
 
@@ -169,6 +196,44 @@ ComponentInfo materialGroup() {
                        "files (*)"),
         true));
     c.properties.back().info.tooltip = QStringLiteral("Empty for none");
+    // What imported models bring (glTF, OBJ, FBX, Collada materials).
+    c.properties.push_back(color<NodeData>(QStringLiteral("material.specularColor"),
+                                           QStringLiteral("Highlight colour"),
+                                           in(&NodeData::material, &M::specularColor)));
+    const QString images =
+        QStringLiteral("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.hdr);;All files (*)");
+    c.properties.push_back(filePath(QStringLiteral("material.emissionTexture"),
+                                    QStringLiteral("Emission texture"),
+                                    in(&NodeData::material, &M::emissionTexture), images, true));
+    c.properties.back().info.tooltip = QStringLiteral("Multiplies the emission; empty for none");
+    c.properties.push_back(filePath(QStringLiteral("material.normalTexture"), QStringLiteral("Normal map"),
+                                    in(&NodeData::material, &M::normalTexture), images, true));
+    c.properties.back().info.tooltip = QStringLiteral("Tangent-space normal map; empty for none");
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("material.normalScale"), QStringLiteral("Normal strength"),
+                                in(&NodeData::material, &M::normalScale), {-100.0, 100.0}),
+               0.0, 2.0));
+    static const std::array<TextureWrap, 3> wraps{TextureWrap::Repeat, TextureWrap::Clamp,
+                                                  TextureWrap::Mirror};
+    const QStringList wrapNames{QStringLiteral("Repeat"), QStringLiteral("Clamp"), QStringLiteral("Mirror")};
+    for (int axis = 0; axis < 2; ++axis) {
+        c.properties.push_back(enumField<TextureWrap, 3>(
+            axis == 0 ? QStringLiteral("material.wrapU") : QStringLiteral("material.wrapV"),
+            axis == 0 ? QStringLiteral("Wrap u") : QStringLiteral("Wrap v"), wrapNames, wraps,
+            [axis](NodeData& d) -> TextureWrap* { return d.material ? &d.material->wrap[axis] : nullptr; }));
+    }
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("material.opacity"), QStringLiteral("Opacity"),
+                                in(&NodeData::material, &M::opacity), {0.0, 1.0}),
+               0.0, 1.0));
+    c.properties.push_back(enumField<AlphaMode, 3>(
+        QStringLiteral("material.alphaMode"), QStringLiteral("Alpha"),
+        {QStringLiteral("Opaque"), QStringLiteral("Mask"), QStringLiteral("Blend (drawn as mask)")},
+        {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}, in(&NodeData::material, &M::alphaMode)));
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("material.alphaCutoff"), QStringLiteral("Alpha cutoff"),
+                                in(&NodeData::material, &M::alphaCutoff), {0.0, 1.0}),
+               0.0, 1.0));
     return c;
 }
 

@@ -7,6 +7,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -57,6 +58,48 @@ std::optional<PickHit> pick(const PickScene& scene, const Ray& ray);
 Ray cameraRay(const render::Camera& camera, double aspect, double ndcX, double ndcY);
 
 // The nearest intersection of a ray with one mesh in world space (parameter t along ray.direction), if any.
+// Goes through the mesh's cached bounding volume hierarchy (meshPickAccel), so a click on a
+// multi-million-triangle mesh visits a few dozen triangles, not all of them.
 std::optional<double> intersectMesh(const PickMesh& mesh, const Ray& ray);
+
+// A bounding volume hierarchy over one mesh's triangles in the mesh's own coordinates (binned SAH, a few
+// triangles per leaf). It keeps no pointer to the mesh: intersect() is given the mesh it was built for.
+class MeshPickAccel {
+public:
+    explicit MeshPickAccel(const render::MeshData& mesh);
+
+    // The nearest t > tMin along origin + t·direction (local coordinates, direction not necessarily unit)
+    // over both faces of every triangle, or nothing.
+    std::optional<double> intersect(const render::MeshData& mesh, const glm::dvec3& origin,
+                                    const glm::dvec3& direction, double tMin = 1e-9) const;
+
+    const render::Bounds& bounds() const { return m_bounds; }
+    std::size_t nodeCount() const { return m_nodes.size(); }
+    std::size_t triangleCount() const { return m_triangles.size(); }
+
+private:
+    struct BvhNode {
+        glm::vec3 min, max;
+        std::uint32_t first = 0; // leaf: first index into m_triangles; inner: index of the left child
+        std::uint32_t count = 0; // leaf: triangles; 0 for an inner node (right child = first + 1)
+    };
+    std::vector<BvhNode> m_nodes;
+    std::vector<std::uint32_t> m_triangles; // triangle numbers in leaf order
+    render::Bounds m_bounds;
+};
+
+// Per-mesh pick data, cached by mesh identity (the MeshHandle's pointer, as the GPU caches key it) for as
+// long as the mesh lives, and shared by every node that draws it. Thread-safe: the editor's import worker
+// builds the structures of a new model before the first click needs them.
+std::shared_ptr<const MeshPickAccel> meshPickAccel(const render::MeshHandle& mesh);
+// The mesh's local bounds, computed once per mesh (every overlay repaint and placement asks).
+render::Bounds meshBounds(const render::MeshHandle& mesh);
+
+struct PickCacheStats {
+    std::size_t accelBuilds = 0;  // hierarchies built since the process started
+    std::size_t boundsBuilds = 0; // bounds computed since the process started
+    std::size_t entries = 0;      // meshes cached now
+};
+PickCacheStats pickCacheStats();
 
 } // namespace speculum::document

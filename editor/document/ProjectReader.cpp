@@ -329,6 +329,7 @@ private:
         const QJsonValue builtin = o.get("builtin");
         const QJsonValue file = o.get("file");
         const QJsonValue tessellation = o.get("tessellation");
+        const QJsonValue part = o.get("part");
         MeshComponent m;
         if (!builtin.isUndefined() && !file.isUndefined()) {
             fail(path, "has both \"builtin\" and \"file\" (expected one of them)");
@@ -341,16 +342,42 @@ private:
                 m.tessellation = readInt(tessellation, o.at("tessellation"));
                 requireRange(m.tessellation, 1, 64, o.at("tessellation"));
             }
+            if (!part.isUndefined()) {
+                fail(o.at("part"), "only file meshes have a part");
+            }
         } else if (!file.isUndefined()) {
             m = MeshComponent::fromFile(readPath(file, o.at("file")));
             if (!tessellation.isUndefined()) {
                 fail(o.at("tessellation"), "only built-in meshes have a tessellation");
+            }
+            if (!part.isUndefined()) {
+                m.part = readInt(part, o.at("part"));
+                if (*m.part < 0) {
+                    fail(o.at("part"), "must not be negative, got " + std::to_string(*m.part));
+                }
             }
         } else {
             fail(path, "expected \"builtin\" or \"file\"");
         }
         m.extra = o.finish();
         return m;
+    }
+
+    // "repeat" | "clamp" | "mirror" for both directions, or [u, v].
+    static std::array<TextureWrap, 2> readWrap(const QJsonValue& v, const std::string& path) {
+        const auto one = [](const QJsonValue& value, const std::string& at) {
+            return readEnum<TextureWrap>(value, at, "wrap mode", textureWrapFromString,
+                                         "\"repeat\", \"clamp\" or \"mirror\"");
+        };
+        if (v.isString()) {
+            const TextureWrap both = one(v, path);
+            return {both, both};
+        }
+        if (!v.isArray() || v.toArray().size() != 2) {
+            fail(path, "expected a wrap mode or [u, v] wrap modes");
+        }
+        const QJsonArray a = v.toArray();
+        return {one(a[0], indexed(path, 0)), one(a[1], indexed(path, 1))};
     }
 
     MaterialComponent readMaterial(const QJsonValue& v, const std::string& path) {
@@ -369,6 +396,30 @@ private:
         if (const QJsonValue t = o.get("texture"); !t.isUndefined()) {
             m.texture = readPath(t, o.at("texture"));
         }
+        o.optional("specularColor", m.specularColor, readColor);
+        if (const QJsonValue t = o.get("emissionTexture"); !t.isUndefined()) {
+            m.emissionTexture = readPath(t, o.at("emissionTexture"));
+        }
+        if (const QJsonValue t = o.get("normalTexture"); !t.isUndefined()) {
+            m.normalTexture = readPath(t, o.at("normalTexture"));
+        }
+        o.optional("normalScale", m.normalScale, readNumber);
+        requireRange(m.normalScale, -100.0, 100.0, o.at("normalScale"));
+        if (const QJsonValue w = o.get("wrap"); !w.isUndefined()) {
+            m.wrap = readWrap(w, o.at("wrap"));
+        }
+        o.optional("opacity", m.opacity, readNumber);
+        requireRange(m.opacity, 0.0, 1.0, o.at("opacity"));
+        if (const QJsonValue a = o.get("alphaMode"); !a.isUndefined()) {
+            const std::string s = readString(a, o.at("alphaMode"));
+            const std::optional<AlphaMode> mode = alphaModeFromString(s);
+            if (!mode) {
+                fail(o.at("alphaMode"), "expected \"opaque\", \"mask\" or \"blend\", got \"" + s + "\"");
+            }
+            m.alphaMode = *mode;
+        }
+        o.optional("alphaCutoff", m.alphaCutoff, readNumber);
+        requireRange(m.alphaCutoff, 0.0, 1.0, o.at("alphaCutoff"));
         m.extra = o.finish();
         return m;
     }

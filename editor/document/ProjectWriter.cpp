@@ -2,6 +2,7 @@
 #include "editor/document/ProjectFile.hpp"
 
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QSaveFile>
 
 namespace speculum::document {
@@ -144,6 +145,9 @@ private:
             field("tessellation", m.tessellation);
         } else {
             field("file", relative(m.file));
+            if (m.part) {
+                field("part", *m.part);
+            }
         }
         writeExtra(m.extra);
         w.endObject();
@@ -159,6 +163,39 @@ private:
         vec("emission", m.emission);
         if (!m.texture.empty()) {
             field("texture", relative(m.texture));
+        }
+        // The fields imported models use; defaults are left out so older files are written unchanged.
+        const MaterialComponent defaults;
+        if (m.specularColor != defaults.specularColor) {
+            vec("specularColor", m.specularColor);
+        }
+        if (!m.emissionTexture.empty()) {
+            field("emissionTexture", relative(m.emissionTexture));
+        }
+        if (!m.normalTexture.empty()) {
+            field("normalTexture", relative(m.normalTexture));
+        }
+        if (m.normalScale != defaults.normalScale) {
+            field("normalScale", m.normalScale);
+        }
+        if (m.wrap != defaults.wrap) {
+            // One name when u and v agree, else [u, v].
+            if (m.wrap[0] == m.wrap[1]) {
+                field("wrap", toString(m.wrap[0]));
+            } else {
+                w.key("wrap");
+                w.value(QJsonValue(QJsonArray{QString::fromUtf8(toString(m.wrap[0]).data()),
+                                              QString::fromUtf8(toString(m.wrap[1]).data())}));
+            }
+        }
+        if (m.opacity != defaults.opacity) {
+            field("opacity", m.opacity);
+        }
+        if (m.alphaMode != defaults.alphaMode) {
+            field("alphaMode", toString(m.alphaMode));
+        }
+        if (m.alphaCutoff != defaults.alphaCutoff) {
+            field("alphaCutoff", m.alphaCutoff);
         }
         writeExtra(m.extra);
         w.endObject();

@@ -57,6 +57,12 @@ constexpr std::array<std::pair<ReflectorUpdate, std::string_view>, 3> kUpdateNam
 constexpr std::array<std::pair<ParallaxShape, std::string_view>, 2> kShapeNames{
     {{ParallaxShape::Sphere, "sphere"}, {ParallaxShape::Box, "box"}}};
 
+constexpr std::array<std::pair<TextureWrap, std::string_view>, 3> kWrapNames{
+    {{TextureWrap::Repeat, "repeat"}, {TextureWrap::Clamp, "clamp"}, {TextureWrap::Mirror, "mirror"}}};
+
+constexpr std::array<std::pair<AlphaMode, std::string_view>, 3> kAlphaModeNames{
+    {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}}};
+
 } // namespace
 
 int defaultTessellation(BuiltinMesh kind) {
@@ -130,6 +136,18 @@ std::optional<ReflectorUpdate> reflectorUpdateFromString(std::string_view name) 
 }
 std::optional<ParallaxShape> parallaxShapeFromString(std::string_view name) {
     return valueOf(kShapeNames, name);
+}
+std::string_view toString(TextureWrap wrap) {
+    return nameOf(kWrapNames, wrap);
+}
+std::string_view toString(AlphaMode mode) {
+    return nameOf(kAlphaModeNames, mode);
+}
+std::optional<TextureWrap> textureWrapFromString(std::string_view name) {
+    return valueOf(kWrapNames, name);
+}
+std::optional<AlphaMode> alphaModeFromString(std::string_view name) {
+    return valueOf(kAlphaModeNames, name);
 }
 
 } // namespace speculum::document

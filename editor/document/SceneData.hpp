@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QJsonObject>
+#include <array>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
@@ -56,6 +57,10 @@ struct MeshComponent {
     std::optional<BuiltinMesh> builtin = BuiltinMesh::Teapot;
     int tessellation = 8; // built-ins only; 1..64
     std::string file;     // used when builtin is empty
+    // File meshes only: which of the file's meshes (Assimp's scene order, 0-based) this node draws, in
+    // that mesh's own coordinates. Absent: every mesh of the file, flattened with the file's own node
+    // transforms into one mesh (the whole model as one part).
+    std::optional<int> part;
     QJsonObject extra;
     bool operator==(const MeshComponent&) const = default;
 
@@ -66,7 +71,13 @@ struct MeshComponent {
 // Tessellation a built-in gets when the file gives none.
 int defaultTessellation(BuiltinMesh kind);
 
-// Blinn-Phong; defaults are DESIGN.md's.
+enum class TextureWrap { Repeat, Clamp, Mirror };
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// Blinn-Phong; defaults are DESIGN.md's. render::Material documents the full formula.
+//
+// Texture paths are absolute in memory. A texture embedded in a model file is named by the model's path,
+// '#', and Assimp's name for it: "/abs/models/duck.glb#*0" (written relative like any path).
 struct MaterialComponent {
     glm::dvec3 color{0.8, 0.8, 0.8};
     double ambient = 1.0;
@@ -74,7 +85,16 @@ struct MaterialComponent {
     double specular = 0.0;
     double shininess = 32.0;
     glm::dvec3 emission{0.0};
-    std::string texture; // absolute path in memory, empty for none
+    std::string texture; // base colour texture, empty for none
+    // Fields for imported models (all optional: a file without them draws as before).
+    glm::dvec3 specularColor{1.0};
+    std::string emissionTexture; // multiplies emission
+    std::string normalTexture;   // tangent-space normal map
+    double normalScale = 1.0;
+    std::array<TextureWrap, 2> wrap{TextureWrap::Repeat, TextureWrap::Repeat}; // u, v; every texture
+    double opacity = 1.0;                                                      // base alpha, 0..1
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    double alphaCutoff = 0.5;
     QJsonObject extra;
     bool operator==(const MaterialComponent&) const = default;
 };
@@ -211,6 +231,8 @@ std::string_view toString(ReflectorMap map);
 std::string_view toString(ReflectorFill fill);
 std::string_view toString(ReflectorUpdate update);
 std::string_view toString(ParallaxShape shape);
+std::string_view toString(TextureWrap wrap);
+std::string_view toString(AlphaMode mode);
 std::optional<BuiltinMesh> builtinMeshFromString(std::string_view name);
 std::optional<LightType> lightTypeFromString(std::string_view name);
 std::optional<MirrorTechnique> mirrorTechniqueFromString(std::string_view name);
@@ -218,5 +240,7 @@ std::optional<ReflectorMap> reflectorMapFromString(std::string_view name);
 std::optional<ReflectorFill> reflectorFillFromString(std::string_view name);
 std::optional<ReflectorUpdate> reflectorUpdateFromString(std::string_view name);
 std::optional<ParallaxShape> parallaxShapeFromString(std::string_view name);
+std::optional<TextureWrap> textureWrapFromString(std::string_view name); // "repeat", "clamp", "mirror"
+std::optional<AlphaMode> alphaModeFromString(std::string_view name);     // "opaque", "mask", "blend"
 
 } // namespace speculum::document

@@ -1,5 +1,6 @@
 #include "editor/document/Snapshot.hpp"
 
+#include "editor/document/ModelNodes.hpp"
 #include "editor/document/NodeMath.hpp"
 
 #include <QDir>
@@ -25,7 +26,41 @@ render::Material toRender(const MaterialComponent& material) {
     m.specular = material.specular;
     m.shininess = material.shininess;
     m.emission = material.emission;
-    m.texturePath = material.texture; // already absolute in the model
+    m.specularColor = material.specularColor;
+    // Paths are already absolute in the model; embedded textures ("/abs/model.glb#*0") are resolved to
+    // their decoded image by the snapshot, which has the MeshLibrary.
+    m.texture.path = material.texture;
+    m.emissionTexture.path = material.emissionTexture;
+    m.normalTexture.path = material.normalTexture;
+    const auto wrap = [](TextureWrap w) {
+        switch (w) {
+        case TextureWrap::Repeat:
+            return render::TextureWrap::Repeat;
+        case TextureWrap::Clamp:
+            return render::TextureWrap::ClampToEdge;
+        case TextureWrap::Mirror:
+            return render::TextureWrap::MirroredRepeat;
+        }
+        return render::TextureWrap::Repeat;
+    };
+    for (render::TextureSource* source : {&m.texture, &m.emissionTexture, &m.normalTexture}) {
+        source->wrapS = wrap(material.wrap[0]);
+        source->wrapT = wrap(material.wrap[1]);
+    }
+    m.normalScale = material.normalScale;
+    m.opacity = material.opacity;
+    switch (material.alphaMode) {
+    case AlphaMode::Opaque:
+        m.alphaMode = render::AlphaMode::Opaque;
+        break;
+    case AlphaMode::Mask:
+        m.alphaMode = render::AlphaMode::Mask;
+        break;
+    case AlphaMode::Blend:
+        m.alphaMode = render::AlphaMode::Blend;
+        break;
+    }
+    m.alphaCutoff = material.alphaCutoff;
     return m;
 }
 
@@ -67,11 +102,15 @@ public:
     void visit(const Node& node, const glm::dmat4& parentWorld, render::FrameInput& frame) {
         const NodeData& d = node.data();
         const glm::dmat4 world = parentWorld * animatedLocalMatrix(d, m_time);
-        render::Material material = d.material ? toRender(*d.material) : render::Material{};
-        material.texturePath = absolute(material.texturePath);
+        render::Material material = d.material ? resolved(*d.material) : render::Material{};
 
         render::MeshHandle mesh;
-        if (d.mesh) {
+        // A whole model file on a plain node without a material of its own draws every part with the
+        // file's own material, where the file's node tree places it (a material on the node overrides
+        // them all, and mirrors and reflectors need the one flattened surface).
+        if (d.mesh && !d.mesh->builtin && !d.mesh->part && !d.material && !d.reflector && !d.mirror) {
+            addModelParts(d, world, frame);
+        } else if (d.mesh) {
             MeshComponent source = *d.mesh;
             source.file = absolute(source.file);
             render::Result<render::MeshHandle> loaded = m_meshes.get(source, m_warnings);
@@ -112,6 +151,44 @@ public:
     }
 
 private:
+    // The render material with its paths made absolute and embedded textures decoded.
+    render::Material resolved(const MaterialComponent& component) {
+        render::Material material = toRender(component);
+        for (render::TextureSource* source :
+             {&material.texture, &material.emissionTexture, &material.normalTexture}) {
+            if (source->path.empty()) {
+                continue;
+            }
+            source->path = absolute(source->path);
+            source->image = m_meshes.embeddedTexture(source->path, m_warnings);
+        }
+        return material;
+    }
+
+    void addModelParts(const NodeData& d, const glm::dmat4& world, render::FrameInput& frame) {
+        const std::string file = absolute(d.mesh->file);
+        const auto model = m_meshes.model(file, m_warnings);
+        if (!model) {
+            warn(d, "mesh skipped: " + model.error());
+            return;
+        }
+        const ImportedModel& m = **model;
+        detail::forEachPlacedPart(m, [&](int index, const glm::dmat4& placement) {
+            const ImportedPart& part = m.parts[static_cast<std::size_t>(index)];
+            if (!part.mesh) {
+                return;
+            }
+            const bool hasMaterial =
+                part.material >= 0 && part.material < static_cast<int>(m.materials.size());
+            render::Material material = hasMaterial
+                                            ? resolved(m.materials[static_cast<std::size_t>(part.material)])
+                                            : render::Material{};
+            const std::string name =
+                d.name + "/" + (part.name.empty() ? "part " + std::to_string(index) : part.name);
+            frame.items.push_back(render::DrawItem{name, world * placement, part.mesh, material, true});
+        });
+    }
+
     // The model holds absolute paths (the reader resolves them); a relative one set by code is taken relative
     // to the project file, as in the file format.
     std::string absolute(const std::string& path) const {

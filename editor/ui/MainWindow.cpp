@@ -120,7 +120,8 @@ render::Status MainWindow::openProjectFile(const QString& path) {
         logMessage(tr("Could not open %1: %2").arg(absolute, QString::fromStdString(status.error())));
         return status;
     }
-    // The old document's commands refer to nodes that no longer exist.
+    // The old document's commands refer to nodes that no longer exist; so would a running import's result.
+    cancelImports();
     m_undoStack->clear();
     m_undoStack->setClean();
     m_restoredUnsaved = false;
@@ -155,6 +156,7 @@ render::Status MainWindow::saveProjectFile(const QString& path) {
 }
 
 void MainWindow::newProject() {
+    cancelImports(); // what they bring was meant for the old document
     m_scene->reset(document::SceneData{});
     m_scene->setProjectPath(QString());
     m_undoStack->clear();
@@ -196,6 +198,7 @@ render::Status MainWindow::restoreRecovery(const document::RecoveryStore::Recove
     if (!data) {
         return render::Error{data.error()};
     }
+    cancelImports();
     m_scene->reset(std::move(*data));
     m_scene->setProjectPath(recovered.originalPath);
     m_undoStack->clear();
@@ -351,7 +354,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
                 }
             }
         } else if (document::isImportableModel(path)) {
-            if (auto status = importModelFile(path); !status) {
+            // On the worker, one file after the other; a file that fails there shows its own box.
+            if (auto status = startModelImport(path, false, true); !status) {
                 failures << QString::fromStdString(status.error());
             }
         }
@@ -410,6 +414,7 @@ void MainWindow::createStatusBar() {
     m_timeLabel->setMinimumWidth(90);
     statusBar()->addPermanentWidget(m_frameLabel);
     statusBar()->addPermanentWidget(m_timeLabel);
+    createImportStatus();
 }
 
 void MainWindow::createDocks() {

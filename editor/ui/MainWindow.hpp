@@ -9,6 +9,8 @@
 #include <QString>
 #include <QStringList>
 #include <QTimer>
+#include <deque>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -16,6 +18,8 @@ class QAction;
 class QLabel;
 class QMenu;
 class QPlainTextEdit;
+class QProgressBar;
+class QToolButton;
 class QUndoStack;
 
 namespace speculum::document {
@@ -30,6 +34,7 @@ namespace speculum::ui {
 class AccuracyPanel;
 class AnimationClock;
 class Inspector;
+class ModelImportJob;
 class RenderPassesPanel;
 class SceneTreeModel;
 class SceneTreePanel;
@@ -75,9 +80,27 @@ public:
 
     // Adds a node of the Add menu where the view looks, selects it; one undo step.
     render::Status addNode(document::NewNodeKind kind);
-    // Imports a model file (any format Assimp reads) as a new node; asReflector makes it the curved
-    // reflector's surface. Fails when the file cannot be read.
+    // Model import. A model file (any format Assimp reads) is read on a worker thread, with progress and
+    // a Cancel button in the status bar, while the window keeps working; then its node tree (a node per
+    // file node, a child per part with its material) is added as one undo step and selected. It keeps its
+    // real size unless "Fit imports to a unit box" is on, and lands on the ground (y = 0) where the view
+    // looks, moved along +X past what is already there. asReflector makes the whole file the curved
+    // reflector's surface instead. A failed or cancelled import leaves the document as it was.
+    //
+    // Starts an import (queued behind a running one). Fails at once only when the file does not exist.
+    // `interactive`: a failure also shows a message box (menu and drops); otherwise only the log and the
+    // status bar say it.
+    render::Status startModelImport(const QString& path, bool asReflector = false, bool interactive = false);
+    // Starts an import and waits for it (running the event loop: the window repaints meanwhile); returns
+    // its outcome ("cancelled" when cancelled). For tests and scripted use.
     render::Status importModelFile(const QString& path, bool asReflector = false);
+    bool isImporting() const;
+    // Cancels the running import and the queued ones (the status bar's Cancel).
+    void cancelImports();
+    bool fitImportsToUnitBox() const;
+    void setFitImportsToUnitBox(bool on); // remembered in QSettings
+    // Tests: called on the import worker at every progress report (e.g. to hold an import in flight).
+    void setImportWorkerHook(std::function<void(double)> hook) { m_importHook = std::move(hook); }
     // Delete and Duplicate act on every selected node (a node under a selected ancestor goes with the
     // ancestor), as one undo step; the copies of a duplicate are selected afterwards.
     render::Status deleteSelected();
@@ -112,6 +135,11 @@ public:
     void logMessage(const QString& message);
     const QStringList& logLines() const { return m_logLines; }
 
+signals:
+    // After every import request ends: ok, or the error ("cancelled" when cancelled). The added root node
+    // is the current selection when ok.
+    void importFinished(const QString& path, bool ok, const QString& message);
+
 protected:
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
@@ -142,6 +170,10 @@ private:
     void rebuildRecentMenu();
     void addRecentFile(const QString& path);
     render::Status addTree(document::NodeTree tree);
+    void createImportStatus();
+    void startNextImport();
+    void onImportDone(); // the running job's finished()
+    void showImportProgress(double fraction, const QString& phase);
     // Asks to save unsaved changes. Returns false when the user cancels (or saving fails).
     bool maybeSave();
     QString dialogFolder() const;
@@ -173,6 +205,24 @@ private:
     QLabel* m_timeLabel = nullptr;
     QPlainTextEdit* m_log = nullptr;
     QStringList m_logLines;
+
+    struct ImportRequest {
+        QString path; // absolute
+        bool asReflector = false;
+        bool interactive = false;
+        int serial = 0; // requests end in the order they were made
+    };
+    int m_importSerial = 0; // of the last request made
+    int m_doneSerial = 0;   // of the last request ended
+    std::deque<ImportRequest> m_importQueue;
+    ImportRequest m_importing;
+    ModelImportJob* m_importJob = nullptr; // the running one, owned (QObject child)
+    std::function<void(double)> m_importHook;
+    QWidget* m_importStatus = nullptr; // progress bar + Cancel in the status bar, shown while importing
+    QLabel* m_importLabel = nullptr;
+    QProgressBar* m_importProgress = nullptr;
+    QToolButton* m_importCancel = nullptr;
+    QAction* m_fitImportsAction = nullptr;
 };
 
 } // namespace speculum::ui

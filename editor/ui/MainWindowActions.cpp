@@ -69,36 +69,6 @@ render::Status MainWindow::addNode(document::NewNodeKind kind) {
     return addTree(document::makeNode(kind, m_viewport->lookAtPoint()));
 }
 
-render::Status MainWindow::importModelFile(const QString& path, bool asReflector) {
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    if (!QFileInfo(absolute).isFile()) {
-        return render::Error{absolute.toStdString() + ": no such file"};
-    }
-    document::NodeTree tree = document::makeModelNode(absolute, m_viewport->lookAtPoint(), asReflector);
-    // Import once now, so a file Assimp cannot read is an error here and not a warning on every frame.
-    std::vector<std::string> warnings;
-    auto mesh = m_viewport->meshes().get(*tree.data.mesh, warnings);
-    if (!mesh) {
-        logMessage(tr("Could not import %1: %2").arg(absolute, QString::fromStdString(mesh.error())));
-        return render::Error{mesh.error()};
-    }
-    for (const auto& w : warnings) {
-        logMessage(QString::fromStdString(w));
-    }
-    // Fit it in a unit-sized box where the view looks: models come in any units.
-    const render::Bounds b = render::computeBounds(**mesh);
-    const glm::dvec3 extent = glm::dvec3(b.max) - glm::dvec3(b.min);
-    const double size = std::max({extent.x, extent.y, extent.z});
-    if (size > 0.0 && std::isfinite(size)) {
-        tree.data.transform.scale = glm::dvec3(1.0 / size);
-    }
-    auto status = addTree(std::move(tree));
-    if (status) {
-        logMessage(tr("Imported %1 (%2 triangles)").arg(absolute).arg((*mesh)->triangleCount()));
-    }
-    return status;
-}
-
 std::vector<document::NodeId> MainWindow::selectedRoots() const {
     return m_selection->roots();
 }
@@ -291,7 +261,8 @@ void MainWindow::onImportModel(bool asReflector) {
     if (path.isEmpty()) {
         return;
     }
-    if (auto status = importModelFile(path, asReflector); !status) {
+    // The rest happens on the worker; a failure there shows its own message box.
+    if (auto status = startModelImport(path, asReflector, true); !status) {
         QMessageBox::critical(this, tr("Import Model"), QString::fromStdString(status.error()));
     }
 }
@@ -406,6 +377,13 @@ void MainWindow::createActions() {
     connect(makeAction(file, QStringLiteral("actionImportModel"), tr("&Import Model…"),
                        QKeySequence(Qt::CTRL | Qt::Key_I)),
             &QAction::triggered, this, [this] { onImportModel(false); });
+    m_fitImportsAction =
+        makeAction(file, QStringLiteral("actionFitImports"), tr("&Fit Imports to a Unit Box"));
+    m_fitImportsAction->setCheckable(true);
+    m_fitImportsAction->setChecked(fitImportsToUnitBox());
+    m_fitImportsAction->setStatusTip(tr("Scale imported models to fit a 1-unit box instead of keeping their "
+                                        "real size"));
+    connect(m_fitImportsAction, &QAction::toggled, this, &MainWindow::setFitImportsToUnitBox);
     connect(makeAction(file, QStringLiteral("actionExportGltf"), tr("Export Scene as &glTF 2.0…"),
                        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E)),
             &QAction::triggered, this, &MainWindow::onExportGltf);

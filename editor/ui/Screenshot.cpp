@@ -26,6 +26,10 @@ ScreenshotRequest screenshotRequestFromEnvironment() {
     if (match.hasMatch()) {
         request.size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
     }
+    const QString imports = qEnvironmentVariable("SPECULUM_SCREENSHOT_IMPORT");
+    if (!imports.isEmpty()) {
+        request.imports = imports.split(QLatin1Char(':'), Qt::SkipEmptyParts);
+    }
     return request;
 }
 
@@ -34,6 +38,17 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
     window.clock().setTime(request.time);
     window.resize(request.size);
     window.show();
+    for (const QString& path : request.imports) {
+        if (auto status = window.importModelFile(path); !status) {
+            qCritical("speculum: screenshot: could not import %s: %s", qPrintable(path),
+                      status.error().c_str());
+            return 1;
+        }
+    }
+    if (!request.imports.isEmpty()) {
+        window.viewport().frameSelected();
+    }
+    const int targetFrames = window.viewport().framesRendered() + request.frames;
 
     QEventLoop loop;
     QString failure;
@@ -44,7 +59,7 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
     QObject::connect(&window.viewport(), &Viewport::rendererFailed, &loop,
                      [&](const QString& message) { finishWithFailure(message); });
     QObject::connect(&window.viewport(), &Viewport::frameRendered, &loop, [&] {
-        if (window.viewport().framesRendered() < request.frames) {
+        if (window.viewport().framesRendered() < targetFrames) {
             // Paused, the viewport draws only on demand; ask for the next frame.
             window.viewport().update();
             return;

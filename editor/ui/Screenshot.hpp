@@ -2,6 +2,7 @@
 
 #include <QSize>
 #include <QString>
+#include <QStringList>
 
 namespace speculum::ui {
 
@@ -11,9 +12,12 @@ class MainWindow;
 // desktop (scripts/screenshot-editor runs it under Xvfb).
 struct ScreenshotRequest {
     bool enabled = false;
-    QString outputPath;     // SPECULUM_SCREENSHOT
-    double time = 0.0;      // SPECULUM_SCREENSHOT_TIME: animation frozen at this time
-    QSize size{1280, 800};  // SPECULUM_SCREENSHOT_SIZE=WxH
+    QString outputPath;    // SPECULUM_SCREENSHOT
+    double time = 0.0;     // SPECULUM_SCREENSHOT_TIME: animation frozen at this time
+    QSize size{1280, 800}; // SPECULUM_SCREENSHOT_SIZE=WxH
+    // SPECULUM_SCREENSHOT_IMPORT: model files (separated by ':') imported first, as File ▸ Import Model does
+    // (worker thread, placement); the view then frames the last one.
+    QStringList imports;
     int frames = 3;         // frames the viewport draws before the grab
     int timeoutMs = 120000; // give up (exit 1) if the viewport has not drawn by then
 };

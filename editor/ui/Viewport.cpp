@@ -3,6 +3,7 @@
 #include "editor/document/Commands.hpp"
 #include "editor/document/NodeMath.hpp"
 #include "editor/document/PickScene.hpp"
+#include "editor/document/Picking.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/document/Snapshot.hpp"
 #include "editor/ui/AnimationClock.hpp"
@@ -17,6 +18,7 @@
 #include <QUndoStack>
 #include <QWheelEvent>
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
 
 namespace speculum::ui {
@@ -104,17 +106,18 @@ void Viewport::frameSelected() {
     const auto worlds = document::worldMatrices(m_scene, t);
     render::math::Box box;
     std::vector<std::string> ignored;
-    auto addNode = [&](const document::Node& node) {
+    // What a node draws (its mesh, its mirror), without its children; false when it draws nothing.
+    auto addOwn = [&](const document::Node& node) {
         const auto it = worlds.find(node.id());
         if (it == worlds.end()) {
-            return;
+            return false;
         }
         const document::NodeData& d = node.data();
         const glm::dmat4& world = it->second;
         bool added = false;
         if (d.mesh) {
             if (auto mesh = m_meshes.get(*d.mesh, ignored)) {
-                box.add(render::math::worldBounds(render::computeBounds(**mesh), world));
+                box.add(render::math::worldBounds(document::meshBounds(*mesh), world));
                 added = true;
             }
         }
@@ -123,8 +126,23 @@ void Viewport::frameSelected() {
             box.add(render::math::worldBounds(render::Bounds{{-h.x, 0.0f, -h.y}, {h.x, 0.0f, h.y}}, world));
             added = true;
         }
-        if (!added) {
-            const glm::dvec3 p(world[3]);
+        return added;
+    };
+    // A selected group (an imported model's root) frames everything under it.
+    std::function<bool(const document::Node&)> addSubtree = [&](const document::Node& node) {
+        bool added = addOwn(node);
+        for (const auto& child : node.children()) {
+            added = addSubtree(*child) || added;
+        }
+        return added;
+    };
+    auto addNode = [&](const document::Node& node) {
+        if (!addSubtree(node)) {
+            const auto it = worlds.find(node.id());
+            if (it == worlds.end()) {
+                return;
+            }
+            const glm::dvec3 p(it->second[3]);
             box.add(p - glm::dvec3(0.5));
             box.add(p + glm::dvec3(0.5));
         }
@@ -139,7 +157,9 @@ void Viewport::frameSelected() {
         }
     }
     if (!any) {
-        m_scene.forEachNode(addNode);
+        for (const auto& node : m_scene.topLevelNodes()) {
+            addNode(*node);
+        }
     }
     if (box.empty()) {
         return;
@@ -379,7 +399,7 @@ void Viewport::paintOverlay(QPainter& painter) {
         };
         if (d.mesh) {
             if (auto mesh = m_meshes.get(*d.mesh, ignored)) {
-                const render::Bounds b = render::computeBounds(**mesh);
+                const render::Bounds b = document::meshBounds(*mesh);
                 addBox(glm::dvec3(b.min), glm::dvec3(b.max));
             }
         }

@@ -1,6 +1,7 @@
 #include "render/gl/GpuMesh.hpp"
 
 #include <cassert>
+#include <glm/vec4.hpp>
 #include <vector>
 
 namespace speculum::render::gl {
@@ -43,6 +44,29 @@ GpuMesh upload(const MeshData& mesh) {
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<void*>(offsetof(Vertex, uv)));
+    // Colours and tangents go in a buffer of their own, so meshes without them (most) pay nothing.
+    gpu.hasColors = mesh.colors.size() == mesh.positions.size() && !mesh.colors.empty();
+    gpu.hasTangents = mesh.tangents.size() == mesh.positions.size() && !mesh.tangents.empty();
+    if (gpu.hasColors || gpu.hasTangents) {
+        const std::size_t block = mesh.positions.size() * sizeof(glm::vec4);
+        const std::size_t colorBytes = gpu.hasColors ? block : 0;
+        gpu.extras = makeBuffer();
+        glBindBuffer(GL_ARRAY_BUFFER, gpu.extras.id());
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(colorBytes + (gpu.hasTangents ? block : 0)),
+                     nullptr, GL_STATIC_DRAW);
+        if (gpu.hasColors) {
+            glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(block), mesh.colors.data());
+            glEnableVertexAttribArray(kColorAttribute);
+            glVertexAttribPointer(kColorAttribute, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+        }
+        if (gpu.hasTangents) {
+            glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(colorBytes),
+                            static_cast<GLsizeiptr>(block), mesh.tangents.data());
+            glEnableVertexAttribArray(kTangentAttribute);
+            glVertexAttribPointer(kTangentAttribute, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
+                                  reinterpret_cast<void*>(colorBytes));
+        }
+    }
     glBindVertexArray(0);
     return gpu;
 }
@@ -50,6 +74,11 @@ GpuMesh upload(const MeshData& mesh) {
 } // namespace
 
 void GpuMesh::draw() const {
+    // A disabled attribute reads the context's current value, which is not part of the VAO: set here.
+    if (!hasColors)
+        glVertexAttrib4f(kColorAttribute, 1.0f, 1.0f, 1.0f, 1.0f);
+    if (!hasTangents)
+        glVertexAttrib4f(kTangentAttribute, 1.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(vao.id());
     glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
 }

@@ -7,11 +7,20 @@
 
 namespace speculum::render::gl {
 
+// Attribute locations: 0 position, 1 normal, 2 uv (one interleaved buffer), 3 colour and 4 tangent (a
+// second buffer, only for meshes that have them; otherwise the attributes are disabled and draw() gives
+// them the constant values white and (1, 0, 0, 1)).
+inline constexpr GLuint kColorAttribute = 3;
+inline constexpr GLuint kTangentAttribute = 4;
+
 struct GpuMesh {
     VertexArray vao;
     Buffer vertices;
+    Buffer extras; // colours then tangents, where the mesh has them; empty otherwise
     Buffer indices;
     GLsizei indexCount = 0;
+    bool hasColors = false;
+    bool hasTangents = false;
     Bounds bounds; // of the positions, in the mesh's own space: views cull with it
 
     void draw() const;

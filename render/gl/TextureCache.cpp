@@ -1,34 +1,124 @@
 #include "render/gl/TextureCache.hpp"
 
+#include "render/image/ColorSpace.hpp"
 #include "render/image/TextureLoader.hpp"
+
+#include <algorithm>
+#include <cmath>
 
 namespace speculum::render::gl {
 
-GLuint TextureCache::get(const std::string& path) {
-    if (auto it = m_textures.find(path); it != m_textures.end())
-        return it->second.id();
-    auto loaded = loadTexture(path);
-    TextureImage image;
-    if (loaded) {
-        image = std::move(*loaded);
-    } else {
-        m_warnings.push_back("texture " + path + ": " + loaded.error() + " (showing a checker instead)");
-        image = checkerTexture();
+GLint glWrap(TextureWrap wrap) {
+    switch (wrap) {
+    case TextureWrap::ClampToEdge:
+        return GL_CLAMP_TO_EDGE;
+    case TextureWrap::MirroredRepeat:
+        return GL_MIRRORED_REPEAT;
+    case TextureWrap::Repeat:
+        break;
     }
-    Texture texture = makeTexture();
-    glBindTexture(GL_TEXTURE_2D, texture.id());
+    return GL_REPEAT;
+}
+
+namespace {
+
+bool complete(const TextureImage& image) {
+    const std::size_t n = static_cast<std::size_t>(std::max(image.width, 0)) * std::max(image.height, 0) * 4;
+    return n > 0 && (image.rgba8.size() == n || image.linear.size() == n);
+}
+
+void upload(const TextureImage& image, TextureUse use) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                 image.rgba8.data());
+    if (!image.highPrecision()) {
+        glTexImage2D(GL_TEXTURE_2D, 0, use == TextureUse::Color ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width,
+                     image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba8.data());
+        return;
+    }
+    // The loader decoded integer files as colour; a data texture wants the values as stored. Half floats
+    // end at 65504: larger or non-finite values would upload as infinities, so they are clamped.
+    constexpr float kHalfMax = 65504.0f;
+    const bool encode = use == TextureUse::Data && image.decodedFromSrgb;
+    const bool clamp = std::any_of(image.linear.begin(), image.linear.end(),
+                                   [&](float v) { return !(std::abs(v) <= kHalfMax); });
+    if (!encode && !clamp) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, image.width, image.height, 0, GL_RGBA, GL_FLOAT,
+                     image.linear.data());
+        return;
+    }
+    std::vector<float> values(image.linear);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        float v = std::isfinite(values[i]) ? std::clamp(values[i], -kHalfMax, kHalfMax) : 0.0f;
+        if (encode && i % 4 != 3)
+            v = linearToSrgb(v);
+        values[i] = v;
+    }
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, image.width, image.height, 0, GL_RGBA, GL_FLOAT,
+                 values.data());
+}
+
+} // namespace
+
+TextureCache::Entry* TextureCache::entry(const TextureSource& source, TextureUse use) {
+    if (source.empty())
+        return nullptr;
+    // An image is its own identity (two embedded images may share a name); a file is its path.
+    Key key{source.image.get(), source.image ? std::string() : source.path, use == TextureUse::Data};
+    if (auto it = m_textures.find(key); it != m_textures.end()) {
+        // A new image may reuse the address of a freed one: only a live pointer to this very image counts.
+        if (!source.image || it->second.owner.lock() == source.image)
+            return &it->second;
+        m_textures.erase(it);
+    }
+    TextureImage loadedImage;
+    const TextureImage* image = source.image.get();
+    if (image && !complete(*image)) {
+        m_warnings.push_back("texture " + source.path +
+                             ": the decoded image has no pixels (showing a checker instead)");
+        image = nullptr;
+        loadedImage = checkerTexture();
+    } else if (!image) {
+        auto loaded = loadTexture(source.path);
+        if (loaded) {
+            loadedImage = std::move(*loaded);
+        } else {
+            m_warnings.push_back("texture " + source.path + ": " + loaded.error() +
+                                 " (showing a checker instead)");
+            loadedImage = checkerTexture();
+        }
+    }
+    Entry e;
+    e.owner = source.image;
+    e.texture = makeTexture();
+    glBindTexture(GL_TEXTURE_2D, e.texture.id());
+    upload(image ? *image : loadedImage, use);
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    e.wrapS = e.wrapT = GL_REPEAT;
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
     glBindTexture(GL_TEXTURE_2D, 0);
-    const GLuint id = texture.id();
-    m_textures.emplace(path, std::move(texture));
-    return id;
+    return &m_textures.emplace(std::move(key), std::move(e)).first->second;
+}
+
+GLuint TextureCache::get(const TextureSource& source, TextureUse use) {
+    Entry* e = entry(source, use);
+    return e ? e->texture.id() : 0;
+}
+
+void TextureCache::bind(const TextureSource& source, TextureUse use, int unit) {
+    Entry* e = entry(source, use);
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, e ? e->texture.id() : 0);
+    if (!e)
+        return;
+    // Wrap modes belong to the material, the texture to its source: two materials may share one image
+    // with different modes, so the modes are set when they differ from the last draw's.
+    const GLint s = glWrap(source.wrapS), t = glWrap(source.wrapT);
+    if (e->wrapS != s)
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, e->wrapS = s);
+    if (e->wrapT != t)
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, e->wrapT = t);
 }
 
 } // namespace speculum::render::gl

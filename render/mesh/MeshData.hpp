@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <string>
 #include <vector>
@@ -10,11 +11,18 @@
 namespace speculum::render {
 
 // CPU-side triangle mesh: what the GL layer uploads and the reference tracer intersects.
-// Counter-clockwise triangles seen from outside; normals unit length; uvs optional (empty or one per vertex).
+// Counter-clockwise triangles seen from outside; normals unit length. uvs, colors and tangents are
+// optional: each is empty or holds one entry per vertex.
 struct MeshData {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
+    // Linear RGBA vertex colours (glTF COLOR_0, OBJ/PLY/Collada colours); they multiply the material's
+    // base colour. Empty: white.
+    std::vector<glm::vec4> colors;
+    // Tangent-space basis for normal maps: xyz the unit tangent (direction of increasing u), w = ±1 the
+    // handedness, bitangent = w · cross(normal, tangent). Empty: the mesh cannot take a normal map.
+    std::vector<glm::vec4> tangents;
     std::vector<std::uint32_t> indices; // three per triangle
 
     std::size_t vertexCount() const { return positions.size(); }

@@ -117,6 +117,9 @@ Result<MeshData> repairMesh(MeshData mesh, RepairReport& report, std::size_t max
     const bool hasNormals = mesh.normals.size() == vertexCount;
     const bool hasUvs = mesh.uvs.size() == vertexCount;
     report.droppedUvs = !mesh.uvs.empty() && !hasUvs;
+    // Vertex colours and tangents travel with their vertices (dropped when their count does not match).
+    const bool hasColors = mesh.colors.size() == vertexCount;
+    const bool hasTangents = mesh.tangents.size() == vertexCount;
     constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
     std::vector<std::uint32_t> remap(vertexCount, kUnused);
     MeshData out;
@@ -133,6 +136,20 @@ Result<MeshData> repairMesh(MeshData mesh, RepairReport& report, std::size_t max
                     ++report.fixedUvs;
                 }
                 out.uvs.push_back(uv);
+            }
+            if (hasColors) {
+                // A non-finite colour would poison every pixel it touches: white (no tint) instead.
+                const glm::vec4 c = mesh.colors[index];
+                const bool finite =
+                    std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && std::isfinite(c.a);
+                out.colors.push_back(finite ? c : glm::vec4(1.0f));
+            }
+            if (hasTangents) {
+                // The shaders fall back to the plain normal where the tangent has no direction.
+                const glm::vec4 t = mesh.tangents[index];
+                const bool finite =
+                    std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w);
+                out.tangents.push_back(finite ? t : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
             }
         }
         index = target;

@@ -75,18 +75,48 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
 } // namespace
 
 void setMaterial(const Material& m, const gl::Program& p, const MainPassContext& ctx) {
-    p.useWith(m.texturePath.empty() ? "#define MATERIAL_TEXTURE 0\n" : "");
+    const bool texture = !m.texture.empty();
+    const bool emissionTexture = !m.emissionTexture.empty();
+    const bool normalTexture = !m.normalTexture.empty();
+    const bool mask = m.alphaMode != AlphaMode::Opaque;
+    std::string defines;
+    if (!texture)
+        defines += "#define MATERIAL_TEXTURE 0\n";
+    if (!emissionTexture)
+        defines += "#define MATERIAL_EMISSION_TEXTURE 0\n";
+    if (!normalTexture)
+        defines += "#define MATERIAL_NORMAL_TEXTURE 0\n";
+    if (!mask)
+        defines += "#define MATERIAL_ALPHA_MASK 0\n";
+    ctx.materialDefines = defines;
+    ctx.materialNormalMap = normalTexture;
+    p.useWith(defines + "#define MATERIAL_VERTEX_COLOR 0\n");
     p.set("uColor", glm::vec3(m.color));
     p.set("uAmbient", float(m.ambient));
     p.set("uDiffuse", float(m.diffuse));
     p.set("uSpecular", float(m.specular));
+    p.set("uSpecularColor", glm::vec3(m.specularColor));
     p.set("uShininess", float(std::max(m.shininess, 1e-3)));
     p.set("uEmission", glm::vec3(m.emission));
-    p.set("uHasTexture", m.texturePath.empty() ? 0 : 1);
-    if (!m.texturePath.empty()) {
-        glActiveTexture(GL_TEXTURE0 + kMaterialTextureUnit);
-        glBindTexture(GL_TEXTURE_2D, ctx.textures.get(m.texturePath));
-    }
+    p.set("uOpacity", float(m.opacity));
+    p.set("uAlphaMask", mask ? 1 : 0);
+    p.set("uAlphaCutoff", float(alphaCutoff(m)));
+    p.set("uNormalScale", float(m.normalScale));
+    p.set("uHasTexture", texture ? 1 : 0);
+    p.set("uHasEmissionTexture", emissionTexture ? 1 : 0);
+    p.set("uHasNormalTexture", normalTexture ? 1 : 0);
+    if (texture)
+        ctx.textures.bind(m.texture, gl::TextureUse::Color, kMaterialTextureUnit);
+    if (emissionTexture)
+        ctx.textures.bind(m.emissionTexture, gl::TextureUse::Color, kEmissionTextureUnit);
+    if (normalTexture)
+        ctx.textures.bind(m.normalTexture, gl::TextureUse::Data, kNormalTextureUnit);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+double alphaCutoff(const Material& m) {
+    // Blend has no sorted transparency yet: it is drawn as Mask at one half (the importer warns).
+    return m.alphaMode == AlphaMode::Blend ? 0.5 : m.alphaCutoff;
 }
 
 void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& p,
@@ -101,6 +131,8 @@ void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Prog
     p.set("uEye", glm::vec3(view.eye - input.camera.position));
     p.set("uSceneAmbient", float(input.settings.ambient));
     p.set("uTexture", kMaterialTextureUnit);
+    p.set("uEmissionTexture", kEmissionTextureUnit);
+    p.set("uNormalTexture", kNormalTextureUnit);
     setLights(input, toCameraRelative, p, ctx);
 }
 
@@ -111,9 +143,15 @@ void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInp
     // (but not both) mirrors it: negative scales and mirror views both flip the winding.
     const bool mirrored = (glm::determinant(glm::dmat3(world)) < 0.0) != ctx.mirroredView;
     glFrontFace(mirrored ? GL_CW : GL_CCW);
+    const gl::GpuMesh& gpu = ctx.meshes.get(mesh);
+    // setMaterial bound the variant for a mesh without colours; one with them needs the multiply.
+    if (gpu.hasColors)
+        p.useWith(ctx.materialDefines);
+    if (ctx.materialNormalMap)
+        p.set("uHasTangents", gpu.hasTangents ? 1 : 0);
     p.set("uModel", glm::mat4(model));
     p.set("uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(model))));
-    ctx.meshes.get(mesh).draw();
+    gpu.draw();
 }
 
 glm::dmat4 mirrorRectangle(const Mirror& mirror) {

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <glm/mat4x4.hpp>
+#include <string>
 #include <vector>
 
 namespace speculum::render::passes {
@@ -19,6 +20,8 @@ inline constexpr int kShadowCubeUnit = 5; // 5..8
 inline constexpr int kReflectionTextureUnit = 9;
 inline constexpr int kEnvCubeUnit = 10;  // the reflector's cube map
 inline constexpr int kEnvArrayUnit = 11; // the reflector's dual-paraboloid or tennis-ball map
+inline constexpr int kEmissionTextureUnit = 12;
+inline constexpr int kNormalTextureUnit = 13;
 
 struct MainPassContext;
 struct ViewSetup;
@@ -50,6 +53,11 @@ struct MainPassContext {
     }
     // Draws a mirror rectangle's depth (uModelLightClip); null: stencil mirrors lay no depth first.
     const gl::Program* depthOnlyProgram = nullptr;
+
+    // What setMaterial chose for the draws that follow: its draw-variant defines (which assume a mesh
+    // without vertex colours; drawLitMesh switches for one that has them) and whether it has a normal map.
+    mutable std::string materialDefines;
+    mutable bool materialNormalMap = false;
 };
 
 // How one view sees the scene: the camera's own, or the scene reflected in a mirror.
@@ -75,8 +83,12 @@ void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Prog
 // mirrors that got no pass of their own as surfaces of their own material (they reflect nothing).
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& context);
 
-// Sets a material's uniforms (and binds its texture) on the bound lit program.
+// Sets a material's uniforms (and binds its textures) on the lit program, and binds the program's draw
+// variant that compiles out what the material does not use (no texture, emission or normal map, no mask).
 void setMaterial(const Material& material, const gl::Program& program, const MainPassContext& context);
+
+// The alpha below which a masked material is cut away: its cutoff, or one half for Blend (drawn as Mask).
+double alphaCutoff(const Material& material);
 
 // Draws one mesh with a world matrix, in the view set by beginLitView.
 void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInput& input,

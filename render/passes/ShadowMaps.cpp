@@ -2,6 +2,7 @@
 
 #include "render/GpuLimits.hpp"
 #include "render/gl/Memory.hpp"
+#include "render/passes/MainPass.hpp"
 
 #include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -75,7 +76,7 @@ const ShadowMap* ShadowMaps::find(int lightIndex) const {
 }
 
 void ShadowMaps::render(const FrameInput& input, int lightIndex, gl::MeshCache& meshes,
-                        const gl::Program& program) {
+                        const gl::Program& program, gl::TextureCache* textures) {
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
     // The renderer already fitted the size to the GPU's limits (fitToGpuLimits).
     const int size = std::max(light.shadows.mapSize, kMinShadowMapSize);
@@ -115,8 +116,22 @@ void ShadowMaps::render(const FrameInput& input, int lightIndex, gl::MeshCache& 
         for (const DrawItem& item : input.items) {
             if (!item.castsShadows || !item.mesh)
                 continue;
+            const Material& m = item.material;
+            const bool masked = textures && m.alphaMode != AlphaMode::Opaque;
+            if (masked) {
+                // The material's alpha, as mesh.frag computes it: opacity · texture alpha · vertex alpha.
+                program.useWith("#define SHADOW_MASK 1\n");
+                program.set("uOpacity", float(m.opacity));
+                program.set("uAlphaCutoff", float(alphaCutoff(m)));
+                program.set("uHasTexture", m.texture.empty() ? 0 : 1);
+                program.set("uTexture", 0);
+                if (!m.texture.empty())
+                    textures->bind(m.texture, gl::TextureUse::Color, 0);
+            }
             program.set("uModelLightClip", glm::mat4(viewProjection * item.world));
             meshes.get(item.mesh).draw();
+            if (masked)
+                program.useWith({}); // back to the plain depth variant
         }
         if (input.reflector && input.reflector->mesh) {
             program.set("uModelLightClip", glm::mat4(viewProjection * input.reflector->world));

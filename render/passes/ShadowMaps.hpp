@@ -4,6 +4,7 @@
 #include "render/gl/GpuMesh.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/gl/Program.hpp"
+#include "render/gl/TextureCache.hpp"
 #include "render/math/ShadowFrustum.hpp"
 
 #include <unordered_map>
@@ -23,8 +24,12 @@ struct ShadowMap {
 
 class ShadowMaps {
 public:
-    // Renders the depth map of input.lights[lightIndex] from every shadow caster.
-    void render(const FrameInput& input, int lightIndex, gl::MeshCache& meshes, const gl::Program& program);
+    // Renders the depth map of input.lights[lightIndex] from every shadow caster. Casters with an alpha
+    // mask (Material::alphaMode) draw with the program's SHADOW_MASK variant, which discards where the
+    // material is cut away, so their shadows have the same holes; that needs `textures` (null: they cast
+    // whole shadows).
+    void render(const FrameInput& input, int lightIndex, gl::MeshCache& meshes, const gl::Program& program,
+                gl::TextureCache* textures = nullptr);
     // The map of a light rendered this frame or earlier, or nullptr.
     const ShadowMap* find(int lightIndex) const;
     // The light's map settings may change without re-rendering (PCF is a lookup setting).

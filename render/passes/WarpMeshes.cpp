@@ -23,11 +23,18 @@ public:
     Splitter(const MeshData& mesh, const glm::dmat4& world, const WarpTolerance& tolerance)
         : m_world(world)
         , m_tolerance(tolerance)
-        , m_hasUv(mesh.uvs.size() == mesh.positions.size()) {
+        , m_hasUv(mesh.uvs.size() == mesh.positions.size())
+        , m_hasColors(mesh.colors.size() == mesh.positions.size())
+        , m_hasTangents(mesh.tangents.size() == mesh.positions.size()) {
         m_out.positions = mesh.positions;
         m_out.normals = mesh.normals;
         if (m_hasUv)
             m_out.uvs = mesh.uvs;
+        // Vertex colours and tangents are split like the uvs (the material shades with them).
+        if (m_hasColors)
+            m_out.colors = mesh.colors;
+        if (m_hasTangents)
+            m_out.tangents = mesh.tangents;
         m_relative.reserve(mesh.positions.size());
         for (const glm::vec3& p : mesh.positions)
             m_relative.push_back(relative(p));
@@ -80,6 +87,11 @@ private:
         m_out.normals.push_back(length > 0.0f ? n / length : m_out.normals[a]);
         if (m_hasUv)
             m_out.uvs.push_back(0.5f * (m_out.uvs[a] + m_out.uvs[b]));
+        if (m_hasColors)
+            m_out.colors.push_back(0.5f * (m_out.colors[a] + m_out.colors[b]));
+        if (m_hasTangents)
+            m_out.tangents.push_back(glm::vec4(
+                0.5f * (glm::vec3(m_out.tangents[a]) + glm::vec3(m_out.tangents[b])), m_out.tangents[a].w));
         m_relative.push_back(relative(p));
         m_midpoints.emplace(key, index);
         return index;
@@ -133,6 +145,8 @@ private:
     glm::dmat4 m_world;
     WarpTolerance m_tolerance;
     bool m_hasUv;
+    bool m_hasColors;
+    bool m_hasTangents;
     MeshData m_out;
     std::vector<glm::dvec3> m_relative; // per output vertex: world position − centre
     std::unordered_map<std::uint64_t, std::uint32_t> m_midpoints;

@@ -33,8 +33,8 @@ inline constexpr double kMaxWarpEdgeAngle = 0.6; // radians, 34°: binds below n
 // tolerance.maxAngle seen from tolerance.centre, or is shorter than tolerance.minLength. Whether an edge
 // is split depends on its two end points only, so the two triangles sharing it always agree and no
 // T-junction (crack) appears; a triangle with one, two or three split edges becomes two, three or four.
-// Midpoints are shared through an edge table, normals renormalised, uvs interpolated. Gives up (and
-// returns the triangles split so far) past `maxTriangles`.
+// Midpoints are shared through an edge table, normals renormalised, uvs, colours and tangents interpolated.
+// Gives up (and returns the triangles split so far) past `maxTriangles`.
 MeshData subdivideForWarp(const MeshData& mesh, const glm::dmat4& world, const WarpTolerance& tolerance,
                           std::size_t maxTriangles = 400000);
 

@@ -14,6 +14,15 @@ namespace speculum::render {
 
 namespace {
 
+// A texture by identity: its file path, or the decoded image's address (an embedded image replaced by
+// another is a different texture), and how it wraps.
+void addTexture(Hasher& h, const TextureSource& t) {
+    h.add(std::string_view(t.path));
+    h.add(static_cast<const void*>(t.image.get()));
+    h.add(static_cast<int>(t.wrapS));
+    h.add(static_cast<int>(t.wrapT));
+}
+
 void addMaterial(Hasher& h, const Material& m) {
     h.add(m.color);
     h.add(m.ambient);
@@ -21,7 +30,14 @@ void addMaterial(Hasher& h, const Material& m) {
     h.add(m.specular);
     h.add(m.shininess);
     h.add(m.emission);
-    h.add(std::string_view(m.texturePath));
+    h.add(m.specularColor);
+    addTexture(h, m.texture);
+    addTexture(h, m.emissionTexture);
+    addTexture(h, m.normalTexture);
+    h.add(m.normalScale);
+    h.add(m.opacity);
+    h.add(static_cast<int>(m.alphaMode));
+    h.add(m.alphaCutoff);
 }
 
 // True if all eight corners lie on the negative side of one of the planes (clip-space rows): the box is

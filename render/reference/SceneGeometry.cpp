@@ -58,6 +58,15 @@ Surface makeSurface(const MeshData& mesh, const glm::dmat4& world, SurfaceKind k
     }
     if (mesh.uvs.size() == mesh.positions.size())
         s.uvs = mesh.uvs;
+    if (mesh.colors.size() == mesh.positions.size())
+        s.colors = mesh.colors;
+    if (mesh.tangents.size() == mesh.positions.size()) {
+        // A tangent is a direction in the surface: it transforms like a position (mesh.vert does the same),
+        // and a mirroring transform turns the frame's handedness round.
+        s.tangents.reserve(mesh.tangents.size());
+        for (const glm::vec4& t : mesh.tangents)
+            s.tangents.emplace_back(linear * glm::dvec3(t), s.flipped ? -double(t.w) : double(t.w));
+    }
     const std::size_t count = mesh.positions.size();
     s.indices.reserve(mesh.indices.size());
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
@@ -72,8 +81,28 @@ Surface makeSurface(const MeshData& mesh, const glm::dmat4& world, SurfaceKind k
     return s;
 }
 
+// Embree's filter for masked surfaces: a hit where the material is cut away does not count, so the ray
+// goes on to whatever lies behind (camera, mirror, reflection and shadow rays alike).
+void alphaFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* s = static_cast<const Surface*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1)
+            continue;
+        const double u = RTCHitN_u(args->hit, args->N, i);
+        const double v = RTCHitN_v(args->hit, args->N, i);
+        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+        if (s->alpha(prim, u, v) < s->mask->cutoff)
+            args->valid[i] = 0;
+    }
+}
+
 unsigned attach(RTCDevice device, RTCScene scene, const Surface& s) {
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (s.mask) {
+        rtcSetGeometryUserData(g, const_cast<Surface*>(&s));
+        rtcSetGeometryIntersectFilterFunction(g, alphaFilter);
+        rtcSetGeometryOccludedFilterFunction(g, alphaFilter);
+    }
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                           3 * sizeof(float), s.positions.size()));
     for (std::size_t i = 0; i < s.positions.size(); ++i) {
@@ -109,22 +138,58 @@ std::string deviceError(RTCDevice device) {
 
 SceneGeometry::~SceneGeometry() = default;
 
+double Surface::alpha(std::size_t triangle, double u, double v) const {
+    if (!mask)
+        return 1.0;
+    const std::size_t t = triangle * 3;
+    if (t + 2 >= indices.size())
+        return 1.0;
+    u = std::clamp(u, 0.0, 1.0);
+    v = std::clamp(v, 0.0, 1.0 - u);
+    const double w = 1.0 - u - v;
+    const std::uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+    double alpha = mask->opacity;
+    if (mask->texture) {
+        const glm::dvec2 uv = uvs.empty()
+                                  ? glm::dvec2(0.0)
+                                  : w * glm::dvec2(uvs[a]) + u * glm::dvec2(uvs[b]) + v * glm::dvec2(uvs[c]);
+        alpha *= mask->texture->sample(uv, mask->wrapS, mask->wrapT).a;
+    }
+    if (!colors.empty())
+        alpha *= w * double(colors[a].a) + u * double(colors[b].a) + v * double(colors[c].a);
+    return alpha;
+}
+
 double SceneGeometry::offset(const glm::dvec3& p) {
     const double extent = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0});
     return 2e-5 * extent;
 }
 
-Result<std::unique_ptr<SceneGeometry>> SceneGeometry::build(const FrameInput& input, const glm::dvec3& origin,
-                                                            std::vector<std::string>& warnings) {
+Result<std::unique_ptr<SceneGeometry>>
+SceneGeometry::build(const FrameInput& input, const glm::dvec3& origin, std::vector<std::string>& warnings,
+                     const TextureSet* textures, const std::vector<MaterialTextures>* itemTextures) {
     std::unique_ptr<SceneGeometry> geometry(new SceneGeometry);
     const glm::dmat4 toRelative = glm::translate(glm::dmat4(1.0), -origin);
     std::size_t dropped = 0;
     for (std::size_t i = 0; i < input.items.size(); ++i) {
         const DrawItem& item = input.items[i];
-        if (item.mesh)
-            geometry->m_surfaces.push_back(makeSurface(*item.mesh, toRelative * item.world,
-                                                       SurfaceKind::Object, static_cast<int>(i),
-                                                       item.castsShadows, dropped));
+        if (!item.mesh)
+            continue;
+        geometry->m_surfaces.push_back(makeSurface(*item.mesh, toRelative * item.world, SurfaceKind::Object,
+                                                   static_cast<int>(i), item.castsShadows, dropped));
+        const Material& m = item.material;
+        if (m.alphaMode != AlphaMode::Opaque) {
+            Surface::AlphaMask mask;
+            mask.opacity = m.opacity;
+            // Blend is drawn as Mask at one half (passes::alphaCutoff).
+            mask.cutoff = m.alphaMode == AlphaMode::Blend ? 0.5 : m.alphaCutoff;
+            const int base =
+                textures && itemTextures && i < itemTextures->size() ? (*itemTextures)[i].base : -1;
+            mask.texture = base >= 0 ? &(*textures)[base] : nullptr;
+            mask.wrapS = m.texture.wrapS;
+            mask.wrapT = m.texture.wrapT;
+            geometry->m_surfaces.back().mask = mask;
+        }
     }
     // Mirrors are the renderer's unit plane scaled to their size: the same triangles, normals and uvs.
     const MeshData plane = makePlane(1);
@@ -233,6 +298,12 @@ std::optional<Hit> SceneGeometry::intersect(const glm::dvec3& origin, const glm:
 
     if (!s.uvs.empty())
         hit.uv = w * glm::dvec2(s.uvs[a]) + u * glm::dvec2(s.uvs[b]) + v * glm::dvec2(s.uvs[c]);
+    if (!s.colors.empty())
+        hit.color = w * glm::dvec4(s.colors[a]) + u * glm::dvec4(s.colors[b]) + v * glm::dvec4(s.colors[c]);
+    if (!s.tangents.empty()) {
+        hit.tangent = w * s.tangents[a] + u * s.tangents[b] + v * s.tangents[c];
+        hit.tangent.w = hit.tangent.w < 0.0 ? -1.0 : 1.0; // as mesh.frag reads the interpolated sign
+    }
     return hit;
 }
 

@@ -2,10 +2,12 @@
 
 #include "render/FrameInput.hpp"
 #include "render/Result.hpp"
+#include "render/reference/TextureSampler.hpp"
 
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,9 +25,24 @@ struct Surface {
     bool castsShadows = false;
     bool flipped = false; // the world matrix mirrors (det < 0): CCW triangles face the other way
     std::vector<glm::dvec3> positions;
-    std::vector<glm::dvec3> normals; // world space, unnormalised; empty if the mesh has none
-    std::vector<glm::vec2> uvs;      // empty if the mesh has none
+    std::vector<glm::dvec3> normals;  // world space, unnormalised; empty if the mesh has none
+    std::vector<glm::vec2> uvs;       // empty if the mesh has none
+    std::vector<glm::vec4> colors;    // linear RGBA vertex colours; empty if the mesh has none (white)
+    std::vector<glm::dvec4> tangents; // world xyz, w the handedness signed for `flipped`; empty if none
     std::vector<std::uint32_t> indices;
+    // Objects whose material has an alpha mask: rays of every kind pass where the material's alpha
+    // (opacity · texture alpha · vertex alpha) is below the cutoff, as mesh.frag and shadow.frag discard.
+    struct AlphaMask {
+        double opacity = 1.0;
+        double cutoff = 0.5;
+        const LinearTexture* texture = nullptr; // the base colour texture, or none
+        TextureWrap wrapS = TextureWrap::Repeat;
+        TextureWrap wrapT = TextureWrap::Repeat;
+    };
+    std::optional<AlphaMask> mask;
+
+    // The material's alpha at barycentric (u, v) of triangle `triangle` (1 without a mask).
+    double alpha(std::size_t triangle, double u, double v) const;
 };
 
 // Where a ray met a surface, with everything shading needs.
@@ -37,6 +54,8 @@ struct Hit {
     glm::dvec3 normal{0.0};          // unit shading normal, turned towards the ray's origin side
     glm::dvec3 geometricNormal{0.0}; // unit geometric normal on the ray's origin side
     glm::dvec2 uv{0.0};
+    glm::dvec4 color{1.0};   // interpolated vertex colour (white where the mesh has none)
+    glm::dvec4 tangent{0.0}; // interpolated world tangent, w the handedness; w = 0 where the mesh has none
     bool frontFacing = true; // the ray met the front side (what gl_FrontFacing says)
 };
 
@@ -44,9 +63,11 @@ struct Hit {
 // (shadow rays). Thread-safe for queries once built.
 class SceneGeometry {
 public:
-    // `origin` is the world point that becomes (0,0,0): the camera position.
-    static Result<std::unique_ptr<SceneGeometry>> build(const FrameInput& input, const glm::dvec3& origin,
-                                                        std::vector<std::string>& warnings);
+    // `origin` is the world point that becomes (0,0,0): the camera position. `itemTextures` (one per item,
+    // indices into `textures`) give masked materials their alpha; without them masks are ignored.
+    static Result<std::unique_ptr<SceneGeometry>>
+    build(const FrameInput& input, const glm::dvec3& origin, std::vector<std::string>& warnings,
+          const TextureSet* textures = nullptr, const std::vector<MaterialTextures>* itemTextures = nullptr);
     ~SceneGeometry();
     SceneGeometry(const SceneGeometry&) = delete;
     SceneGeometry& operator=(const SceneGeometry&) = delete;

@@ -65,10 +65,37 @@ std::vector<ShadingLight> shadingLights(const FrameInput& input, const glm::dvec
     return lights;
 }
 
-glm::dvec3 Shader::shade(const Material& m, int texture, const Hit& hit, const glm::dvec3& viewDir) const {
-    glm::dvec3 base = m.color;
-    if (texture >= 0)
-        base *= m_textures[texture].sample(hit.uv);
+glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, const Hit& surfaceHit,
+                         const glm::dvec3& viewDir) const {
+    glm::dvec3 base = m.color * glm::dvec3(surfaceHit.color);
+    if (textures.base >= 0)
+        base *= glm::dvec3(m_textures[textures.base].sample(surfaceHit.uv, m.texture.wrapS, m.texture.wrapT));
+    glm::dvec3 emitted = m.emission;
+    if (textures.emission >= 0)
+        emitted *= glm::dvec3(m_textures[textures.emission].sample(surfaceHit.uv, m.emissionTexture.wrapS,
+                                                                   m.emissionTexture.wrapT));
+    // material.glsl's materialNormal(): the tangent made orthogonal to the viewer-side normal,
+    // B = w·(n × T), the map's xy scaled. Lighting and the shadow lookup both use the bent normal.
+    Hit hit = surfaceHit;
+    if (textures.normal >= 0 && surfaceHit.tangent.w != 0.0) {
+        const glm::dvec3 n = surfaceHit.normal;
+        glm::dvec3 t = glm::dvec3(surfaceHit.tangent) - n * glm::dot(n, glm::dvec3(surfaceHit.tangent));
+        const double tLength = glm::length(t);
+        if (tLength > 1e-8) {
+            t /= tLength;
+            const glm::dvec3 b = (surfaceHit.tangent.w < 0.0 ? -1.0 : 1.0) * glm::cross(n, t);
+            glm::dvec3 mapped = glm::dvec3(m_textures[textures.normal].sample(
+                                    surfaceHit.uv, m.normalTexture.wrapS, m.normalTexture.wrapT)) *
+                                    2.0 -
+                                1.0;
+            mapped.x *= m.normalScale;
+            mapped.y *= m.normalScale;
+            const glm::dvec3 bent = t * mapped.x + b * mapped.y + n * mapped.z;
+            const double bentLength = glm::length(bent);
+            if (bentLength > 1e-8 && std::isfinite(bentLength))
+                hit.normal = bent / bentLength;
+        }
+    }
     const glm::dvec3& n = hit.normal;
     const double shininess = std::max(m.shininess, 1e-3);
     glm::dvec3 diffuse(0.0), specular(0.0);
@@ -101,7 +128,8 @@ glm::dvec3 Shader::shade(const Material& m, int texture, const Hit& hit, const g
         diffuse += light.radiance * nDotL * visible;
         specular += light.radiance * std::pow(std::max(glm::dot(n, halfway), 0.0), shininess) * visible;
     }
-    return m.emission + base * (m.ambient * m_sceneAmbient + m.diffuse * diffuse) + m.specular * specular;
+    return emitted + base * (m.ambient * m_sceneAmbient + m.diffuse * diffuse) +
+           m.specular * m.specularColor * specular;
 }
 
 double Shader::visibility(const ShadingLight& light, const Hit& hit, const glm::dvec3& toLight,

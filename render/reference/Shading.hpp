@@ -43,10 +43,12 @@ public:
         , m_sceneAmbient(sceneAmbient)
         , m_shadows(shadows) {}
 
-    // shadeMaterial(): emission + base·(ambient·sceneAmbient + diffuse·Σ) + specular·Σ, where `viewDir`
-    // is the unit direction from the point towards the (virtual) eye and `texture` an index into the
-    // texture set (-1: none).
-    glm::dvec3 shade(const Material& material, int texture, const Hit& hit, const glm::dvec3& viewDir) const;
+    // shadeMaterial() of material.glsl: emitted + base·(ambient·sceneAmbient + diffuse·Σ) +
+    // specular·specularColor·Σ with base = color·texture·vertex colour, emitted = emission·emission
+    // texture, and the normal bent by the normal map where the hit has a tangent. `viewDir` is the unit
+    // direction from the point towards the (virtual) eye; `textures` index the texture set.
+    glm::dvec3 shade(const Material& material, const MaterialTextures& textures, const Hit& hit,
+                     const glm::dvec3& viewDir) const;
 
     // Fraction of the light that reaches `hit` (1 for an unshadowed light).
     double visibility(const ShadingLight& light, const Hit& hit, const glm::dvec3& toLight,

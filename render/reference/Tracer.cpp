@@ -35,10 +35,10 @@ struct Tracer::Impl {
     std::unique_ptr<SceneGeometry> geometry;
     TextureSet textures;
     std::vector<ShadingLight> lights;
-    std::vector<int> itemTexture;   // texture index per item (-1: none)
-    std::vector<int> mirrorTexture; // per mirror: its material's texture
+    std::vector<MaterialTextures> itemTexture;   // textures per item
+    std::vector<MaterialTextures> mirrorTexture; // per mirror: its material's textures
     std::vector<std::optional<math::Plane>> mirrorPlanes;
-    int reflectorTexture = -1;
+    MaterialTextures reflectorTexture;
     int maxMirrorDepth = 0;
     std::vector<std::string> warnings;
 
@@ -73,7 +73,7 @@ struct Tracer::Impl {
         case SurfaceKind::Mirror: {
             const std::size_t m = static_cast<std::size_t>(surface.index);
             const Mirror& mirror = input.mirrors[m];
-            const int texture = mirrorTexture[m];
+            const MaterialTextures& texture = mirrorTexture[m];
             const bool reflects =
                 hit->frontFacing && mirrorPlanes[m] && path.mirrorLevel + 1 <= path.mirrorLimit;
             if (id)
@@ -91,9 +91,10 @@ struct Tracer::Impl {
             if (r < 1.0) {
                 Hit surfaceHit = *hit;
                 surfaceHit.normal = normal;
-                result += shader.shade(mirror.hasMaterial ? mirror.material : Material{},
-                                       mirror.hasMaterial ? texture : -1, surfaceHit, viewDir) *
-                          (1.0 - r);
+                result +=
+                    shader.shade(mirror.hasMaterial ? mirror.material : Material{},
+                                 mirror.hasMaterial ? texture : MaterialTextures{}, surfaceHit, viewDir) *
+                    (1.0 - r);
             }
             Path next = path;
             next.mirrorLevel += 1;
@@ -153,22 +154,26 @@ Result<Tracer> Tracer::create(const FrameInput& input) {
     auto impl = std::make_unique<Impl>();
     impl->input = input;
     const glm::dvec3 origin = input.camera.position;
-    auto geometry = SceneGeometry::build(impl->input, origin, impl->warnings);
+    // Every texture first: masked materials' alpha decides which hits count while the rays are traced,
+    // and the geometry keeps pointers into the (then complete) set.
+    for (const DrawItem& item : impl->input.items)
+        impl->itemTexture.push_back(MaterialTextures::add(impl->textures, item.material));
+    for (const Mirror& mirror : impl->input.mirrors)
+        impl->mirrorTexture.push_back(MaterialTextures::add(impl->textures, mirror.material));
+    if (impl->input.reflector)
+        impl->reflectorTexture = MaterialTextures::add(impl->textures, impl->input.reflector->material);
+    auto geometry =
+        SceneGeometry::build(impl->input, origin, impl->warnings, &impl->textures, &impl->itemTexture);
     if (!geometry)
         return Error{geometry.error()};
     impl->geometry = std::move(*geometry);
-    for (const DrawItem& item : impl->input.items)
-        impl->itemTexture.push_back(impl->textures.add(item.material.texturePath));
     for (const Mirror& mirror : impl->input.mirrors) {
-        impl->mirrorTexture.push_back(impl->textures.add(mirror.material.texturePath));
         // The plane in camera-relative coordinates; a collapsed rectangle has none and never reflects.
         glm::dmat4 world = mirror.world;
         world[3] -= glm::dvec4(origin, 0.0);
         auto plane = math::mirrorPlane(world);
         impl->mirrorPlanes.push_back(plane ? std::optional<math::Plane>(*plane) : std::nullopt);
     }
-    if (impl->input.reflector)
-        impl->reflectorTexture = impl->textures.add(impl->input.reflector->material.texturePath);
     impl->lights = shadingLights(impl->input, origin);
     impl->maxMirrorDepth = std::clamp(impl->input.settings.mirrorDepth, 0, kStencilLevels);
     impl->warnings.insert(impl->warnings.end(), impl->textures.warnings().begin(),

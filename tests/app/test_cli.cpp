@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -212,6 +213,59 @@ TEST_F(Cli, ExplainOfASecondStaticFrameShowsTheReusedMaps) {
     EXPECT_EQ(second.out.find("\"shadow\""), std::string::npos) << "and its shadow maps";
     EXPECT_NE(second.out.find("reused"), std::string::npos);
     EXPECT_NE(speculum("explain " + chrome + " --frame 0").status, 0);
+}
+
+// `speculum export`: a self-contained .glb (the demo's marble PNG inside it, camera and light there), a
+// .gltf with its companions; bad input fails with one line and writes nothing.
+TEST_F(Cli, ExportWritesASelfContainedGlb) {
+    const fs::path out = m_dir / "teapot.glb";
+    const CliRun run = speculum("export " + demo() + " -o " + out.string());
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.out.find(out.string()), std::string::npos) << "prints the path it wrote";
+    std::ifstream in(out, std::ios::binary);
+    const std::string file((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_GT(file.size(), 20u);
+    ASSERT_EQ(file.substr(0, 4), "glTF");
+    std::uint32_t jsonLength = 0;
+    std::memcpy(&jsonLength, file.data() + 12, 4);
+    const QJsonObject json =
+        QJsonDocument::fromJson(QByteArray::fromStdString(file.substr(20, jsonLength))).object();
+    ASSERT_FALSE(json.isEmpty());
+    EXPECT_EQ(json["cameras"].toArray().size(), 1);
+    EXPECT_EQ(json["extensions"].toObject()["KHR_lights_punctual"].toObject()["lights"].toArray().size(), 1);
+    const QJsonArray images = json["images"].toArray();
+    ASSERT_EQ(images.size(), 1) << "the marble";
+    EXPECT_EQ(images[0].toObject()["mimeType"].toString(), "image/png");
+    EXPECT_FALSE(images[0].toObject().contains("uri"));
+    EXPECT_EQ(file.find("marble.png"), std::string::npos) << "no path to the source image";
+    EXPECT_EQ(std::distance(fs::directory_iterator(m_dir), fs::directory_iterator{}), 1) << "only the .glb";
+}
+
+TEST_F(Cli, ExportGltfWritesItsCompanionsBesideIt) {
+    const fs::path out = m_dir / "teapot.gltf";
+    const CliRun run = speculum("export " + demo() + " -o " + out.string());
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_TRUE(fs::exists(m_dir / "teapot.bin"));
+    EXPECT_TRUE(fs::exists(m_dir / "teapot_0.png"));
+}
+
+TEST_F(Cli, BadExportFailsWithOneLineAndWritesNothing) {
+    const fs::path glb = m_dir / "out.glb";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"export /no/such/scene.json -o " + glb.string(), "no such file"},
+        {"export " + demo() + " -o " + (m_dir / "out.obj").string(), "unsupported export format"},
+        {"export " + demo() + " -o /no/such/folder/out.glb", "does not exist"},
+        {"export " + demo(), "-o"},
+        {"export -o " + glb.string(), "PROJECT"},
+    };
+    for (const auto& [args, expected] : cases) {
+        const CliRun run = speculum(args);
+        EXPECT_NE(run.status, 0) << args;
+        EXPECT_NE(run.err.find(expected), std::string::npos) << args << " → " << run.err;
+        EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << args << " → " << run.err;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(m_dir), fs::directory_iterator{}), 0) << "nothing written";
 }
 
 } // namespace

@@ -71,7 +71,7 @@ TEST_F(GlTest, SceneFarFromTheOriginRendersLikeTheSameSceneAtTheOrigin) {
 
 TEST_F(GlTest, MissingTextureShowsACheckerAndWarns) {
     FrameInput input = teapotScene({});
-    input.items[1].material.texturePath = "/nonexistent/marble.png";
+    input.items[1].material.texture.path = "/nonexistent/marble.png";
     renderImage(input, 64, 36);
     ASSERT_EQ(lastReport().warnings.size(), 1u);
     EXPECT_NE(lastReport().warnings[0].find("/nonexistent/marble.png"), std::string::npos);

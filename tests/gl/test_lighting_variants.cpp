@@ -1,8 +1,10 @@
-// The lit shaders built for a frame's lights (passes/LightingVariant) and for untextured materials draw
-// the image the general shaders draw from uniforms alone: every kind of light, with and without shadow
-// maps, textured and untextured materials, in the main view, in mirrors of both techniques and in the
-// curved reflector's environment map.
+// The lit shaders built for a frame's lights (passes/LightingVariant) and for each material's features
+// (passes::setMaterial) draw the image the general shaders draw from uniforms alone: every kind of light,
+// with and without shadow maps, textured and untextured materials, vertex colours, masks, normal maps and
+// emission textures, in the main view, in mirrors of both techniques and in the curved reflector's
+// environment map.
 #include "GlTest.hpp"
+#include "render/MaterialScenes.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/mesh/Teapot.hpp"
 #include "render/passes/LightingVariant.hpp"
@@ -45,7 +47,7 @@ FrameInput litScene(std::vector<Light> lights) {
     DrawItem floor{"Floor", glm::scale(glm::dmat4(1.0), glm::dvec3(4.0, 1.0, 4.0)), plane, {}, true};
     // Textured and untextured materials alternate in the draw order: each switch of shader variant must
     // carry the view's uniforms along.
-    floor.material.texturePath = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/textures/marble.png";
+    floor.material.texture.path = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/textures/marble.png";
     DrawItem wall{"Wall",
                   glm::scale(glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 2, -2)),
                                          glm::radians(90.0), glm::dvec3(1, 0, 0)),
@@ -60,7 +62,7 @@ FrameInput litScene(std::vector<Light> lights) {
                  {},
                  true};
     pot.material.color = {0.8, 0.3, 0.2};
-    pot.material.texturePath = floor.material.texturePath;
+    pot.material.texture.path = floor.material.texture.path;
     pot.material.specular = 0.6;
     DrawItem cube{"Box",
                   glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.7, 0.3, 0.6)), glm::dvec3(0.3)),
@@ -152,6 +154,22 @@ TEST_F(LightingVariants, NoLightsAndMoreShadowedLightsThanSlotsDrawTheSameImage)
         many.push_back(light("Lamp " + std::to_string(i), i % 2 ? LightType::Spot : LightType::Point,
                              {std::cos(i * 1.1) * 2.5, 2.5 + 0.2 * i, std::sin(i * 1.1) * 2.5}, true, 3));
     EXPECT_LT(largestDifference(litScene(many)), 2e-3);
+}
+
+TEST_F(LightingVariants, ModelMaterialFeaturesDrawTheSameImageInEveryVariant) {
+    // Vertex colours, alpha masks, normal maps, emission textures, wrap modes and tinted highlights,
+    // each compiled out where a material does not use it, in the main view, the mirrors and the
+    // reflector's map, against the general shader that reads them all from uniforms.
+    FrameInput input = litScene({light("Point", LightType::Point, {1.5, 3.0, 1.5}, true, 3),
+                                 light("Sun", LightType::Directional, {2.0, 4.0, 3.0}, true, 1)});
+    const FrameInput features = materials::featureScene(materials::freshFolder());
+    for (DrawItem item : features.items) {
+        if (item.name == "Floor")
+            continue;
+        item.world = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, 0.3)) * item.world;
+        input.items.push_back(item);
+    }
+    EXPECT_LT(largestDifference(input), 2e-3);
 }
 
 TEST_F(LightingVariants, EachLightAddsItsLightInTheVariant) {

@@ -24,7 +24,7 @@ Material lit(glm::dvec3 color, std::string texture = {}) {
     Material m;
     m.color = color;
     m.specular = 0.2;
-    m.texturePath = std::move(texture);
+    m.texture.path = std::move(texture);
     return m;
 }
 

@@ -2,7 +2,7 @@ speculum_add_test(test_gl_shadows TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_shadows.cpp ${CMAKE_CURRENT_LIST_DIR}/test_frame.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_mirrors.cpp ${CMAKE_CURRENT_LIST_DIR}/test_lighting_variants.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_mirror_occlusion.cpp
-    LIBS speculum_render speculum_document)
+    LIBS speculum_render speculum_document PkgConfig::OIIO)
 speculum_add_test(test_gl_reflector TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_reflector.cpp ${CMAKE_CURRENT_LIST_DIR}/test_frame_report.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_reflector_fill.cpp
@@ -11,3 +11,9 @@ speculum_add_test(test_gl_reflector TIER gl
 speculum_add_test(test_gl_stills TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_tiled_stills.cpp ${CMAKE_CURRENT_LIST_DIR}/test_gpu_limits.cpp
     LIBS speculum_render speculum_document)
+# Textures (which way up, wrap modes, 16-bit) and model-file materials (vertex colours, alpha masks and
+# their shadows, normal maps, emission textures) in the rasterizer, and its agreement with the tracer.
+speculum_add_test(test_gl_materials TIER gl
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_materials.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/reference/test_material_agreement.cpp
+    LIBS speculum_render PkgConfig::OIIO)

@@ -715,11 +715,19 @@ TEST_F(EditorWorkflow, ImportsDroppedModelsAndOffersRecoveredWork) {
     EXPECT_TRUE(enter.isAccepted()) << "model files are accepted";
     QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
     QCoreApplication::sendEvent(m_window.get(), &drop);
+    EXPECT_TRUE(m_window->isImporting()) << "the file is read on a worker";
+    ASSERT_TRUE(waitFor([&] { return !m_window->isImporting(); }));
     ASSERT_EQ(m_window->scene().topLevelNodes().size(), 1u);
-    const auto& node = m_window->scene().topLevelNodes().front()->data();
-    EXPECT_EQ(node.name, "box");
-    ASSERT_TRUE(node.mesh);
-    EXPECT_EQ(node.mesh->file, box.toStdString());
+    const document::Node& root = *m_window->scene().topLevelNodes().front();
+    EXPECT_EQ(root.data().name, "box");
+    std::vector<std::string> files; // the parts under the model's root draw the dropped file
+    m_window->scene().forEachNode([&](const document::Node& n) {
+        if (n.data().mesh) {
+            files.push_back(n.data().mesh->file);
+        }
+    });
+    ASSERT_FALSE(files.empty());
+    EXPECT_EQ(files.front(), box.toStdString());
     EXPECT_FALSE(
         m_window->importModelFile(QStringLiteral("/usr/share/assimp/models/invalid/empty.obj")).ok());
 

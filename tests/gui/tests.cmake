@@ -25,3 +25,7 @@ speculum_add_test(test_accuracy_panel TIER gui
 speculum_add_test(test_selection TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_selection.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
     LIBS speculum_ui Qt6::Test)
+# Model import in the editor: worker thread, progress and cancel, one undo step, placement, pick hierarchy.
+speculum_add_test(test_model_import_gui TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_model_import.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test assimp::assimp)

@@ -208,7 +208,7 @@ TEST(Snapshot, MirrorsAndTheReflector) {
     EXPECT_EQ(m.reflectivity, 0.5);
     EXPECT_EQ(m.technique, render::MirrorTechnique::Texture);
     EXPECT_TRUE(m.hasMaterial);
-    EXPECT_EQ(m.material.texturePath, "/abs/marble.png");
+    EXPECT_EQ(m.material.texture.path, "/abs/marble.png");
     EXPECT_FALSE(frame.mirrors[1].hasMaterial);
     EXPECT_EQ(frame.mirrors[1].technique, render::MirrorTechnique::Stencil);
     ASSERT_TRUE(frame.reflector.has_value());
@@ -265,7 +265,7 @@ TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {
     EXPECT_TRUE(frame.mirrors[0].hasMaterial);
     EXPECT_EQ(frame.mirrors[0].reflectivity, 0.5);
     expectNear(glm::dvec3(frame.mirrors[0].size, 0.0), {4, 4, 0});
-    const QString texture = QString::fromStdString(frame.mirrors[0].material.texturePath);
+    const QString texture = QString::fromStdString(frame.mirrors[0].material.texture.path);
     EXPECT_TRUE(QFileInfo(texture).isAbsolute());
     EXPECT_TRUE(QFileInfo(texture).isFile()) << texture.toStdString();
     ASSERT_EQ(frame.lights.size(), 1u);
@@ -295,7 +295,7 @@ TEST(Snapshot, ARelativePathSetByCodeIsTakenRelativeToTheProject) {
     MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
-    EXPECT_EQ(frame.items.at(0).material.texturePath, "/projects/demo/textures/wood.png");
+    EXPECT_EQ(frame.items.at(0).material.texture.path, "/projects/demo/textures/wood.png");
 }
 
 TEST(Snapshot, MeshHandlesAreStableAcrossFrames) {
@@ -362,6 +362,53 @@ TEST(Snapshot, MeshFilesAreImportedOnceAndAgainWhenTheyChange) {
     ASSERT_TRUE(changed.ok()) << changed.error();
     EXPECT_NE(*changed, *first);
     EXPECT_EQ((*changed)->triangleCount(), 2u);
+}
+
+// An imported part's whole material reaches the renderer: the embedded texture as its decoded image (from
+// the MeshLibrary), wrap modes on every texture, alpha mode, and the part's own mesh.
+TEST(Snapshot, ImportedPartMaterialReachesTheRenderer) {
+    const std::string glb = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    if (!std::filesystem::is_regular_file(glb)) {
+        GTEST_SKIP() << "assimp-testmodels not installed";
+    }
+    SceneData data;
+    NodeTree node;
+    node.data.name = "box";
+    node.data.mesh = MeshComponent::fromFile(glb);
+    node.data.mesh->part = 0;
+    MaterialComponent m;
+    m.texture = glb + "#*0";
+    m.normalTexture = "/nowhere/normal.png";
+    m.specularColor = {0.5, 0.25, 1};
+    m.wrap = {TextureWrap::Clamp, TextureWrap::Mirror};
+    m.alphaMode = AlphaMode::Blend;
+    m.alphaCutoff = 0.25;
+    m.opacity = 0.75;
+    m.normalScale = 0.5;
+    node.data.material = m;
+    data.nodes.push_back(node);
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    ASSERT_EQ(frame.items.size(), 1u) << ::testing::PrintToString(warnings);
+    const render::Material& r = frame.items[0].material;
+    ASSERT_TRUE(r.texture.image);
+    EXPECT_GT(r.texture.image->width, 0);
+    EXPECT_EQ(r.texture.path, glb + "#*0");
+    EXPECT_FALSE(r.normalTexture.image); // a plain file: the renderer loads it itself
+    EXPECT_EQ(r.normalTexture.path, "/nowhere/normal.png");
+    for (const render::TextureSource* t : {&r.texture, &r.emissionTexture, &r.normalTexture}) {
+        EXPECT_EQ(t->wrapS, render::TextureWrap::ClampToEdge);
+        EXPECT_EQ(t->wrapT, render::TextureWrap::MirroredRepeat);
+    }
+    EXPECT_EQ(r.alphaMode, render::AlphaMode::Blend);
+    EXPECT_EQ(r.alphaCutoff, 0.25);
+    EXPECT_EQ(r.opacity, 0.75);
+    EXPECT_EQ(r.normalScale, 0.5);
+    EXPECT_EQ(r.specularColor, glm::dvec3(0.5, 0.25, 1));
+    auto part = meshes.part(glb, 0, warnings);
+    ASSERT_TRUE(part.ok());
+    EXPECT_EQ(frame.items[0].mesh, part.value());
 }
 
 } // namespace

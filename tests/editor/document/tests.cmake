@@ -2,6 +2,7 @@
 speculum_add_test(test_editor_document TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_project_file.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_project_errors.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_project_materials.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_snapshot.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_commands.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_sweep_results.cpp

@@ -9,8 +9,10 @@
 #include "render/mesh/Primitives.hpp"
 
 #include <QUndoStack>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <random>
 
 namespace {
 
@@ -24,6 +26,127 @@ render::MeshHandle sphere() {
 
 glm::dmat4 at(const glm::dvec3& p, double scale = 1.0) {
     return glm::scale(glm::translate(glm::dmat4(1.0), p), glm::dvec3(scale));
+}
+
+// Every triangle tried, as picking did before it had a hierarchy: the reference the hierarchy must match.
+std::optional<double> bruteForce(const render::MeshData& m, const glm::dvec3& o, const glm::dvec3& d) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + 2 < m.indices.size(); i += 3) {
+        const glm::dvec3 a(m.positions[m.indices[i]]), b(m.positions[m.indices[i + 1]]),
+            c(m.positions[m.indices[i + 2]]);
+        const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+        const double det = glm::dot(e1, p);
+        if (std::abs(det) < 1e-300) {
+            continue;
+        }
+        const glm::dvec3 s = o - a, q = glm::cross(s, e1);
+        const double u = glm::dot(s, p) / det, v = glm::dot(d, q) / det, t = glm::dot(e2, q) / det;
+        if (u >= 0 && v >= 0 && u + v <= 1 && t > 1e-9 && t < best) {
+            best = t;
+        }
+    }
+    return std::isfinite(best) ? std::optional<double>(best) : std::nullopt;
+}
+
+// A height field of `cells`² quads (2·cells² triangles) over [-1, 1]² in XZ with gentle waves.
+render::MeshHandle terrain(int cells) {
+    auto mesh = std::make_shared<render::MeshData>();
+    const int n = cells + 1;
+    mesh->positions.reserve(std::size_t(n) * n);
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            const float x = -1.0f + 2.0f * float(i) / float(cells),
+                        z = -1.0f + 2.0f * float(j) / float(cells);
+            mesh->positions.emplace_back(x, 0.1f * std::sin(7.0f * x) * std::cos(5.0f * z), z);
+        }
+    }
+    mesh->indices.reserve(std::size_t(cells) * cells * 6);
+    for (int j = 0; j < cells; ++j) {
+        for (int i = 0; i < cells; ++i) {
+            const std::uint32_t a = std::uint32_t(j * n + i), b = a + 1, c = a + std::uint32_t(n), d = c + 1;
+            mesh->indices.insert(mesh->indices.end(), {a, c, b, b, c, d});
+        }
+    }
+    return mesh;
+}
+
+TEST(Picking, HierarchyFindsTheSameNearestHitAsEveryTriangle) {
+    // A triangle soup of very different sizes (large and tiny, overlapping), plus a sphere: the hierarchy's
+    // nearest hit is the brute-force one for every ray, hits and misses alike.
+    auto soup = std::make_shared<render::MeshData>(render::makeSphere(12));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    for (int i = 0; i < 400; ++i) {
+        const glm::vec3 c(unit(rng) * 2.0f, unit(rng) * 2.0f, unit(rng) * 2.0f);
+        const float size = i % 10 == 0 ? 1.5f : 0.02f;
+        const auto base = std::uint32_t(soup->positions.size());
+        for (int k = 0; k < 3; ++k) {
+            soup->positions.push_back(c + size * glm::vec3(unit(rng), unit(rng), unit(rng)));
+        }
+        soup->indices.insert(soup->indices.end(), {base, base + 1, base + 2});
+    }
+    const MeshPickAccel accel(*soup);
+    EXPECT_EQ(accel.triangleCount(), soup->triangleCount());
+    int hits = 0;
+    for (int r = 0; r < 2000; ++r) {
+        const glm::dvec3 o(unit(rng) * 5.0, unit(rng) * 5.0, unit(rng) * 5.0);
+        // Mostly towards the soup, so many rays hit (and pass through several leaves).
+        glm::dvec3 d = glm::dvec3(unit(rng), unit(rng), unit(rng)) * 2.0 - o;
+        if (r % 7 == 0) {
+            d = glm::dvec3(0.0, 0.0, r % 2 ? 1.0 : -1.0); // axis-parallel rays take the 1/0 path
+        }
+        const auto expected = bruteForce(*soup, o, d);
+        const auto got = accel.intersect(*soup, o, d);
+        ASSERT_EQ(expected.has_value(), got.has_value()) << "ray " << r;
+        if (expected) {
+            ++hits;
+            EXPECT_NEAR(*got, *expected, 1e-9 * std::max(1.0, *expected)) << "ray " << r;
+        }
+    }
+    EXPECT_GT(hits, 600) << "the rays should test something";
+}
+
+TEST(Picking, BigMeshBuildsItsHierarchyOnceAndReusesIt) {
+    const render::MeshHandle big = terrain(1000); // 2 000 000 triangles
+    ASSERT_EQ(big->triangleCount(), 2000000u);
+    PickScene scene;
+    scene.meshes.push_back({42, big, at({0, 0, -3}, 2.0)});
+    const PickCacheStats before = pickCacheStats();
+    // The first click answers at once (scanning, while the hierarchy builds in the background) ...
+    const auto first = pick(scene, Ray{{0.3, 5, -3.2}, {0, -1, 0}});
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->id, 42u);
+    const double expectedY = 2.0 * 0.1 * std::sin(7.0 * 0.15) * std::cos(5.0 * -0.1);
+    EXPECT_NEAR(first->point.y, expectedY, 1e-4);
+    // ... and there is exactly one build of it, whoever asks while it runs.
+    const auto accel = meshPickAccel(big);
+    EXPECT_EQ(meshPickAccel(big), accel);
+    const PickCacheStats afterFirst = pickCacheStats();
+    EXPECT_EQ(afterFirst.accelBuilds, before.accelBuilds + 1) << "one build for the mesh";
+    const auto again = pick(scene, Ray{{0.3, 5, -3.2}, {0, -1, 0}});
+    ASSERT_TRUE(again);
+    EXPECT_NEAR(again->point.y, first->point.y, 1e-9) << "the hierarchy finds the same point as the scan";
+
+    // Later clicks (other rays too) reuse it, and so does a second node drawing the same mesh.
+    scene.meshes.push_back({43, big, at({10, 0, -3}, 2.0)});
+    for (int i = 0; i < 20; ++i) {
+        const auto hit = pick(scene, Ray{{-1.5 + 0.15 * i, 5, -3.5}, {0, -1, 0}});
+        ASSERT_TRUE(hit);
+        EXPECT_EQ(hit->id, 42u);
+    }
+    EXPECT_EQ(pick(scene, Ray{{10, 5, -3}, {0, -1, 0}})->id, 43u);
+    EXPECT_EQ(pickCacheStats().accelBuilds, afterFirst.accelBuilds) << "no rebuild per click";
+    const render::Bounds b = meshBounds(big);
+    EXPECT_EQ(pickCacheStats().boundsBuilds, afterFirst.boundsBuilds) << "bounds came with the hierarchy";
+    EXPECT_FLOAT_EQ(b.min.x, -1.0f);
+    EXPECT_FLOAT_EQ(b.max.z, 1.0f);
+
+    // A new mesh (even at a reused address once the old one is gone) gets its own.
+    const std::size_t entries = pickCacheStats().entries;
+    const render::MeshHandle small = terrain(4);
+    EXPECT_EQ(meshPickAccel(small)->triangleCount(), 32u);
+    EXPECT_EQ(pickCacheStats().accelBuilds, afterFirst.accelBuilds + 1);
+    EXPECT_EQ(pickCacheStats().entries, entries + 1);
 }
 
 TEST(Picking, NearestSurfaceWinsAndMissesAreEmpty) {

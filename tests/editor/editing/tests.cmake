@@ -6,4 +6,4 @@ speculum_add_test(test_editor_editing TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_picking.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_gltf_export.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_recovery.cpp
-    LIBS speculum_document assimp::assimp)
+    LIBS speculum_document assimp::assimp PkgConfig::OIIO)

@@ -9,3 +9,7 @@ speculum_add_test(test_editor_import TIER unit
 speculum_add_test(test_editor_import_corpus TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_import_corpus.cpp
     LIBS speculum_document)
+# Parts, materials, textures, node tree and units kept from the file (issue 13).
+speculum_add_test(test_editor_import_parts TIER unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_model_parts.cpp
+    LIBS speculum_document)

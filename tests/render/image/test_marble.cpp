@@ -106,9 +106,13 @@ TEST(Marble, CommittedTextureMatchesTheGenerator) {
     const TextureImage generated = generateMarble(512, kCommittedSeed);
     ASSERT_EQ(committed->width, 512);
     ASSERT_EQ(committed->height, 512);
+    // The file holds the generator's row 0 at its top (writeImage writes rows top first); the loader
+    // returns the file's bottom row first (TextureImage), so the rows compare turned over.
     std::size_t differing = 0;
+    const std::size_t row = 512u * 4u;
     for (std::size_t i = 0; i < generated.rgba8.size(); ++i) {
-        differing += committed->rgba8[i] != generated.rgba8[i];
+        const std::size_t y = i / row, rest = i % row;
+        differing += committed->rgba8[(511 - y) * row + rest] != generated.rgba8[i];
     }
     EXPECT_EQ(differing, 0u) << "regenerate with: speculum-make-marble " << path << " --size 512 --seed "
                              << kCommittedSeed;

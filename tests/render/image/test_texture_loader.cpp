@@ -1,4 +1,5 @@
 #include "TestFolder.hpp"
+#include "render/image/ColorSpace.hpp"
 #include "render/image/TextureLoader.hpp"
 
 #include <OpenImageIO/imageio.h>
@@ -6,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/lsan_interface.h>
@@ -63,19 +65,77 @@ std::vector<std::uint8_t> pixel(const TextureImage& image, int x, int y) {
 
 using Bytes = std::vector<std::uint8_t>;
 
-TEST(TextureLoader, RgbaPngKeepsExactBytesStraightAlphaAndRowOrder) {
+// The file's rows top first, as OIIO writes them: top row red, transparent green (colour must survive
+// alpha 0); bottom row blue, half grey.
+const std::vector<std::uint8_t> kTwoByTwo = {255, 0, 0,   255, 0,   200, 0,   0,
+                                             0,   0, 255, 255, 100, 100, 100, 128};
+
+// TextureImage row 0 is the BOTTOM row of the stored image (t = 0 for glTexImage2D, v = 0).
+void expectTwoByTwoBottomRowFirst(const TextureImage& texture) {
+    ASSERT_EQ(texture.width, 2);
+    ASSERT_EQ(texture.height, 2);
+    EXPECT_FALSE(texture.highPrecision());
+    EXPECT_EQ(pixel(texture, 0, 0), (Bytes{0, 0, 255, 255}));     // bottom left of the file
+    EXPECT_EQ(pixel(texture, 1, 0), (Bytes{100, 100, 100, 128})); // bottom right
+    EXPECT_EQ(pixel(texture, 0, 1), (Bytes{255, 0, 0, 255}));     // top left
+    EXPECT_EQ(pixel(texture, 1, 1), (Bytes{0, 200, 0, 0}));       // top right
+}
+
+TEST(TextureLoader, RgbaPngKeepsExactBytesStraightAlphaAndPutsTheBottomRowFirst) {
     const fs::path path = test::freshTestFolder() / "rgba.png";
-    // Top row: red, transparent green (colour must survive alpha 0). Bottom row: blue, half grey.
-    writeRaw<std::uint8_t>(path, 2, 2, 4, OIIO::TypeDesc::UINT8,
-                           {255, 0, 0, 255, 0, 200, 0, 0, 0, 0, 255, 255, 100, 100, 100, 128});
+    writeRaw<std::uint8_t>(path, 2, 2, 4, OIIO::TypeDesc::UINT8, kTwoByTwo);
     const Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_TRUE(texture.ok()) << texture.error();
-    ASSERT_EQ(texture->width, 2);
-    ASSERT_EQ(texture->height, 2);
-    EXPECT_EQ(pixel(*texture, 0, 0), (Bytes{255, 0, 0, 255}));
-    EXPECT_EQ(pixel(*texture, 1, 0), (Bytes{0, 200, 0, 0}));
-    EXPECT_EQ(pixel(*texture, 0, 1), (Bytes{0, 0, 255, 255}));
-    EXPECT_EQ(pixel(*texture, 1, 1), (Bytes{100, 100, 100, 128}));
+    expectTwoByTwoBottomRowFirst(*texture);
+}
+
+TEST(TextureLoader, TallImageRowsAreTurnedOver) {
+    // 1×3: rows 10, 20, 30 from the top of the file come out as 30, 20, 10.
+    const fs::path path = test::freshTestFolder() / "tall.png";
+    writeRaw<std::uint8_t>(path, 1, 3, 1, OIIO::TypeDesc::UINT8, {10, 20, 30});
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    EXPECT_EQ(texture->rgba8, (Bytes{30, 30, 30, 255, 20, 20, 20, 255, 10, 10, 10, 255}));
+}
+
+TEST(TextureLoader, DecodesPngAndTgaFromMemoryLikeFromTheirFiles) {
+    const fs::path folder = test::freshTestFolder();
+    for (const char* name : {"embedded.png", "embedded.tga", "embedded.bmp"}) {
+        writeRaw<std::uint8_t>(folder / name, 2, 2, 4, OIIO::TypeDesc::UINT8, kTwoByTwo);
+        const std::string bytes = contentsOf(folder / name);
+        ASSERT_FALSE(bytes.empty());
+        // The name has no extension, as an embedded texture's ("model.glb#*0"): the bytes decide.
+        const Result<TextureImage> decoded = decodeTexture(bytes.data(), bytes.size(), "/abs/model.glb#*0");
+        ASSERT_TRUE(decoded.ok()) << name << ": " << decoded.error();
+        const Result<TextureImage> loaded = loadTexture((folder / name).string());
+        ASSERT_TRUE(loaded.ok()) << loaded.error();
+        EXPECT_EQ(decoded->width, 2) << name;
+        EXPECT_EQ(decoded->rgba8, loaded->rgba8) << name;
+        if (std::string(name) == "embedded.png")
+            expectTwoByTwoBottomRowFirst(*decoded);
+    }
+}
+
+TEST(TextureLoader, GarbageInMemoryIsAnErrorNamingTheTexture) {
+    const Bytes noise = noisyBytes(4000);
+    const Result<TextureImage> texture = decodeTexture(noise.data(), noise.size(), "/abs/duck.glb#*3");
+    ASSERT_FALSE(texture.ok());
+    EXPECT_NE(texture.error().find("/abs/duck.glb#*3"), std::string::npos) << texture.error();
+    const Result<TextureImage> empty = decodeTexture(nullptr, 0, "/abs/duck.glb#*4");
+    ASSERT_FALSE(empty.ok());
+    EXPECT_NE(empty.error().find("/abs/duck.glb#*4"), std::string::npos) << empty.error();
+    // A PNG cut short in memory fails like a truncated file.
+    const fs::path path = test::freshTestFolder() / "cut.png";
+    writeRaw(path, 64, 64, 3, OIIO::TypeDesc::UINT8, noisyBytes(64 * 64 * 3));
+    const std::string whole = contentsOf(path);
+#if defined(__SANITIZE_ADDRESS__)
+    __lsan_disable(); // OIIO's PNG reader leaks its error string on a truncated read (see below)
+#endif
+    const Result<TextureImage> cut = decodeTexture(whole.data(), whole.size() / 2, "/abs/cut.glb#*0");
+#if defined(__SANITIZE_ADDRESS__)
+    __lsan_enable();
+#endif
+    EXPECT_FALSE(cut.ok());
 }
 
 TEST(TextureLoader, RgbPngGetsOpaqueAlpha) {
@@ -99,13 +159,35 @@ TEST(TextureLoader, GreyIsSpreadToRgb) {
     EXPECT_EQ(greyAlpha->rgba8, (Bytes{90, 90, 90, 30}));
 }
 
-TEST(TextureLoader, SixteenBitIsRoundedToEightBit) {
+TEST(TextureLoader, SixteenBitIsDecodedFromSrgbToLinearFloat) {
     const fs::path path = test::freshTestFolder() / "deep.png";
+    // 33024 lies between the 8-bit codes 128 and 129 (×257): it must not be rounded to either.
     writeRaw<std::uint16_t>(path, 3, 1, 3, OIIO::TypeDesc::UINT16,
-                            {0, 65535, 128 * 257, 257, 254 * 257, 32768, 65535, 0, 1000});
+                            {0, 65535, 33024, 257, 254 * 257, 32768, 65535, 0, 1000});
     const Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_TRUE(texture.ok()) << texture.error();
-    EXPECT_EQ(texture->rgba8, (Bytes{0, 255, 128, 255, 1, 254, 128, 255, 255, 0, 4, 255}));
+    ASSERT_TRUE(texture->highPrecision());
+    EXPECT_TRUE(texture->rgba8.empty());
+    EXPECT_TRUE(texture->decodedFromSrgb);
+    ASSERT_EQ(texture->linear.size(), 12u);
+    const float codes[9] = {0, 65535, 33024, 257, 254 * 257, 32768, 65535, 0, 1000};
+    for (int i = 0; i < 3; ++i) {
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(texture->linear[i * 4 + c], srgbToLinear(codes[i * 3 + c] / 65535.0f), 1e-6f)
+                << i << c;
+        EXPECT_EQ(texture->linear[i * 4 + 3], 1.0f);
+    }
+    EXPECT_GT(texture->linear[2], srgb8ToLinear(128) + 1e-3f);
+}
+
+TEST(TextureLoader, SixteenBitRowsAreTurnedOverToo) {
+    const fs::path path = test::freshTestFolder() / "deep-tall.png";
+    writeRaw<std::uint16_t>(path, 1, 2, 1, OIIO::TypeDesc::UINT16, {65535, 0});
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    ASSERT_EQ(texture->linear.size(), 8u);
+    EXPECT_EQ(texture->linear[0], 0.0f); // the file's bottom row (black) first
+    EXPECT_EQ(texture->linear[4], 1.0f);
 }
 
 TEST(TextureLoader, JpegLoadsCloseToItsColour) {
@@ -125,13 +207,28 @@ TEST(TextureLoader, JpegLoadsCloseToItsColour) {
     EXPECT_EQ(p[3], 255);
 }
 
-TEST(TextureLoader, FloatFilesAreSrgbEncoded) {
-    const fs::path path = test::freshTestFolder() / "linear.exr";
-    // Linear 0.2158605 is sRGB code 128 (128/255 decoded); 1.0 stays 255; alpha is not encoded.
-    writeRaw<float>(path, 1, 1, 4, OIIO::TypeDesc::FLOAT, {0.2158605f * 0.5f, 1.0f * 0.5f, 0.0f, 0.5f});
-    const Result<TextureImage> texture = loadTexture(path.string());
+TEST(TextureLoader, FloatFilesStayLinearAndStraight) {
+    const fs::path folder = test::freshTestFolder();
+    // EXR holds premultiplied linear values: they come out unpremultiplied, not encoded, not rounded.
+    writeRaw<float>(folder / "linear.exr", 1, 1, 4, OIIO::TypeDesc::FLOAT,
+                    {0.2158605f * 0.5f, 0.5f, 0.0f, 0.5f});
+    const Result<TextureImage> texture = loadTexture((folder / "linear.exr").string());
     ASSERT_TRUE(texture.ok()) << texture.error();
-    EXPECT_EQ(texture->rgba8, (Bytes{128, 255, 0, 128}));
+    ASSERT_TRUE(texture->highPrecision());
+    EXPECT_FALSE(texture->decodedFromSrgb);
+    ASSERT_EQ(texture->linear.size(), 4u);
+    EXPECT_NEAR(texture->linear[0], 0.2158605f, 1e-6f);
+    EXPECT_NEAR(texture->linear[1], 1.0f, 1e-6f);
+    EXPECT_EQ(texture->linear[2], 0.0f);
+    EXPECT_EQ(texture->linear[3], 0.5f);
+    // Half floats, values above 1 kept.
+    writeRaw<float>(folder / "half.exr", 1, 1, 3, OIIO::TypeDesc::HALF, {4.0f, 0.25f, 0.125f});
+    const Result<TextureImage> half = loadTexture((folder / "half.exr").string());
+    ASSERT_TRUE(half.ok()) << half.error();
+    ASSERT_EQ(half->linear.size(), 4u);
+    EXPECT_EQ(half->linear[0], 4.0f);
+    EXPECT_EQ(half->linear[1], 0.25f);
+    EXPECT_EQ(half->linear[3], 1.0f);
 }
 
 TEST(TextureLoader, MissingFileIsAnErrorNamingThePath) {
@@ -200,6 +297,22 @@ TEST(TextureLoader, FolderIsAnError) {
     const Result<TextureImage> texture = loadTexture(folder.string());
     ASSERT_FALSE(texture.ok());
     EXPECT_NE(texture.error().find("folder"), std::string::npos) << texture.error();
+}
+
+TEST(TextureLoader, FifoIsRefusedWithoutOpeningIt) {
+    // Opening a FIFO for reading blocks until a writer comes: the loader must not even try.
+    const fs::path path = test::freshTestFolder() / "pipe.png";
+    ASSERT_EQ(mkfifo(path.c_str(), 0600), 0);
+    const Result<TextureImage> texture = loadTexture(path.string());
+    ASSERT_FALSE(texture.ok());
+    EXPECT_NE(texture.error().find(path.string()), std::string::npos) << texture.error();
+    EXPECT_NE(texture.error().find("not a regular file"), std::string::npos) << texture.error();
+}
+
+TEST(TextureLoader, DeviceIsRefused) {
+    const Result<TextureImage> texture = loadTexture("/dev/zero");
+    ASSERT_FALSE(texture.ok());
+    EXPECT_NE(texture.error().find("not a regular file"), std::string::npos) << texture.error();
 }
 
 TEST(CheckerTexture, IsAMagentaAndBlackChecker) {

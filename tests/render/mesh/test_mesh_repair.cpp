@@ -146,6 +146,38 @@ TEST(MeshRepair, UvsThatDoNotFitAreDroppedAndNonFiniteOnesReset) {
     EXPECT_EQ(result->uvs[2], glm::vec2(0.0f));
 }
 
+TEST(MeshRepair, ColoursAndTangentsTravelWithTheirVertices) {
+    // Vertex 1 is used by nothing once the degenerate triangle goes: the others are renumbered, and their
+    // colours and tangents must follow them.
+    MeshData mesh;
+    mesh.positions = {{0, 0, 0}, {5, 5, 5}, {1, 0, 0}, {1, 1, 0}};
+    mesh.normals.assign(4, glm::vec3(0, 0, 1));
+    mesh.colors = {{1, 0, 0, 1}, {0, 0, 0, 0}, {0, 1, 0, 1}, {0, 0, 1, 0.5f}};
+    mesh.tangents = {{1, 0, 0, 1}, {0, 0, 0, 0}, {0, 1, 0, -1}, {kNaN, 0, 0, 1}};
+    mesh.indices = {0, 2, 3, 1, 1, 1};
+    RepairReport report;
+    auto result = repairMesh(mesh, report);
+    ASSERT_TRUE(result.ok()) << result.error();
+    ASSERT_EQ(result->positions.size(), 3u);
+    ASSERT_EQ(result->colors.size(), 3u);
+    ASSERT_EQ(result->tangents.size(), 3u);
+    EXPECT_EQ(result->colors[0], glm::vec4(1, 0, 0, 1));
+    EXPECT_EQ(result->colors[1], glm::vec4(0, 1, 0, 1));
+    EXPECT_EQ(result->colors[2], glm::vec4(0, 0, 1, 0.5f));
+    EXPECT_EQ(result->tangents[1], glm::vec4(0, 1, 0, -1));
+    // A non-finite tangent becomes one without direction (the shaders then keep the plain normal).
+    EXPECT_EQ(result->tangents[2], glm::vec4(0, 0, 0, 1));
+
+    // A non-finite colour would poison its pixels: white instead. Arrays that do not fit are dropped.
+    MeshData bad = square();
+    bad.colors = {{kInf, 0, 0, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}};
+    bad.tangents = {{1, 0, 0, 1}};
+    result = repairMesh(bad, report);
+    ASSERT_TRUE(result.ok());
+    EXPECT_EQ(result->colors[0], glm::vec4(1.0f));
+    EXPECT_TRUE(result->tangents.empty());
+}
+
 TEST(MeshRepair, FailsClearlyWhenNothingIsLeft) {
     RepairReport report;
     const auto empty = repairMesh(MeshData{}, report);

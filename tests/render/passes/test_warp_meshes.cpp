@@ -78,6 +78,28 @@ TEST(WarpMeshes, NearEdgesAreSplitToTheToleranceAngle) {
     EXPECT_EQ(fine.uvs.size(), fine.positions.size());
 }
 
+TEST(WarpMeshes, VertexColoursAndTangentsAreSplitWithTheVertices) {
+    // The direct fill draws the split copy: a model's colours and tangents must survive the split, or its
+    // reflection in the environment map would turn white and lose its normal map.
+    MeshData box = makeBox();
+    for (const glm::vec3& p : box.positions)
+        box.colors.emplace_back(0.5f * (p + glm::vec3(1.0f)), 1.0f);
+    box.tangents.assign(box.positions.size(), glm::vec4(0, 0, 1, -1));
+    const glm::dmat4 world = glm::translate(glm::dmat4(1.0), glm::dvec3(1.6, 0.2, -0.3));
+    const MeshData fine = subdivideForWarp(box, world, WarpTolerance{glm::dvec3(0.0), 0.2, 1e-4});
+    ASSERT_GT(fine.positions.size(), box.positions.size());
+    ASSERT_EQ(fine.colors.size(), fine.positions.size());
+    ASSERT_EQ(fine.tangents.size(), fine.positions.size());
+    // The colours are linear in position: every midpoint's colour is its position's.
+    for (std::size_t i = 0; i < fine.positions.size(); ++i) {
+        const glm::vec3 expected = 0.5f * (fine.positions[i] + glm::vec3(1.0f));
+        EXPECT_LT(glm::length(glm::vec3(fine.colors[i]) - expected), 1e-5f) << i;
+        EXPECT_EQ(fine.tangents[i], glm::vec4(0, 0, 1, -1)) << i;
+    }
+    // A mesh without them gets none.
+    EXPECT_TRUE(subdivideForWarp(makeBox(), world, WarpTolerance{glm::dvec3(0.0), 0.2, 1e-4}).colors.empty());
+}
+
 TEST(WarpMeshes, SplitMeshesHaveNoCracks) {
     // A closed box whose faces are split unevenly (the corner nearest the capture point much more): every
     // edge, by the positions of its end points, must still be shared by exactly two triangles running it

@@ -1,6 +1,7 @@
 // The environment pass of the curved reflector, planned without GL: it runs only when the reflector can
 // be seen (directly or in a mirror), after the shadow passes and before the main pass, and its update
 // policy reuses the map when nothing the map sees changed.
+#include "render/image/TextureLoader.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/plan/Planner.hpp"
 
@@ -160,6 +161,25 @@ TEST(ReflectorPlanner, OnChangeReusesTheMapUntilSomethingItSeesChanges) {
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflector->map = ReflectorMap::TennisBall; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflector->resolution = 128; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.settings.background = {1.0, 1.0, 1.0}; }));
+    // Every material field a model file brings, the textures by identity (file or decoded image) and
+    // their wrap modes.
+    auto image = std::make_shared<const TextureImage>(checkerTexture(4));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.specularColor = {1.0, 0.5, 0.0}; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.texture.path = "/abs/a.png"; }));
+    EXPECT_TRUE(rerenders([&](FrameInput& f) { f.items[0].material.texture.image = image; }));
+    EXPECT_TRUE(
+        rerenders([](FrameInput& f) { f.items[0].material.texture.wrapS = TextureWrap::ClampToEdge; }));
+    EXPECT_TRUE(
+        rerenders([](FrameInput& f) { f.items[0].material.texture.wrapT = TextureWrap::MirroredRepeat; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.emissionTexture.path = "/abs/e.png"; }));
+    EXPECT_TRUE(rerenders([&](FrameInput& f) { f.items[0].material.emissionTexture.image = image; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.normalTexture.path = "/abs/n.png"; }));
+    EXPECT_TRUE(
+        rerenders([](FrameInput& f) { f.items[0].material.normalTexture.wrapS = TextureWrap::ClampToEdge; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.normalScale = 0.5; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.opacity = 0.5; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.alphaMode = AlphaMode::Mask; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.alphaCutoff = 0.3; }));
     // The reflector's own material is not seen by its map.
     EXPECT_FALSE(rerenders([](FrameInput& f) { f.reflector->material.color = {1.0, 0.0, 0.0}; }));
     EXPECT_FALSE(rerenders([](FrameInput& f) { f.reflector->reflectivity = 0.5; }));

@@ -38,7 +38,7 @@ FrameInput brokenScene() {
     input.items.push_back(item("Collapsed", boxMesh(), placed({0, 0, -1}, {1, 0, 1}), m)); // zero-height box
     input.items.push_back(item("Missing", nullptr, glm::dmat4(1.0), m));
     input.items.push_back(item("Textured", planeMesh(), placed({0, -0.5, 0}, {3, 1, 3}), m));
-    input.items.back().material.texturePath = "/no/such/texture.png";
+    input.items.back().material.texture.path = "/no/such/texture.png";
 
     render::Mirror flat = mirror({0, 0, -2}, {0, 0, 1}, {0, 0}); // zero size: no plane
     input.mirrors.push_back(flat);

@@ -1,5 +1,5 @@
 # The exact reference tracer (Embree) and the error metrics: unit tier, no GL.
 speculum_add_test(test_render_reference TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_tracer.cpp ${CMAKE_CURRENT_LIST_DIR}/test_tracer_robustness.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_metrics.cpp
-    LIBS speculum_render)
+            ${CMAKE_CURRENT_LIST_DIR}/test_metrics.cpp ${CMAKE_CURRENT_LIST_DIR}/test_material_tracing.cpp
+    LIBS speculum_render PkgConfig::OIIO)

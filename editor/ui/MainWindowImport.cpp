@@ -1,0 +1,261 @@
+// MainWindow: model import on a worker thread (progress and Cancel in the status bar), placement of the
+// imported model, and adding it to the document as one undo step.
+#include "editor/document/MeshLibrary.hpp"
+#include "editor/document/ModelImport.hpp"
+#include "editor/document/NodeFactory.hpp"
+#include "editor/document/Scene.hpp"
+#include "editor/ui/AnimationClock.hpp"
+#include "editor/ui/MainWindow.hpp"
+#include "editor/ui/ModelImportJob.hpp"
+#include "editor/ui/Viewport.hpp"
+
+#include <QAction>
+#include <QEventLoop>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolButton>
+#include <algorithm>
+#include <cmath>
+
+namespace speculum::ui {
+
+namespace {
+
+const QString kFitImportsKey = QStringLiteral("import/fitToUnitBox");
+
+} // namespace
+
+bool MainWindow::fitImportsToUnitBox() const {
+    return QSettings().value(kFitImportsKey, false).toBool();
+}
+
+void MainWindow::setFitImportsToUnitBox(bool on) {
+    QSettings().setValue(kFitImportsKey, on);
+    if (m_fitImportsAction && m_fitImportsAction->isChecked() != on) {
+        m_fitImportsAction->setChecked(on);
+    }
+}
+
+bool MainWindow::isImporting() const {
+    return m_importJob != nullptr || !m_importQueue.empty();
+}
+
+void MainWindow::createImportStatus() {
+    m_importStatus = new QWidget(this);
+    m_importStatus->setObjectName(QStringLiteral("importStatus"));
+    auto* layout = new QHBoxLayout(m_importStatus);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_importLabel = new QLabel(m_importStatus);
+    m_importProgress = new QProgressBar(m_importStatus);
+    m_importProgress->setObjectName(QStringLiteral("importProgress"));
+    m_importProgress->setRange(0, 1000);
+    m_importProgress->setMaximumWidth(160);
+    m_importProgress->setTextVisible(false);
+    m_importCancel = new QToolButton(m_importStatus);
+    m_importCancel->setObjectName(QStringLiteral("importCancel"));
+    m_importCancel->setText(tr("Cancel"));
+    m_importCancel->setToolTip(tr("Stop importing; the document stays as it is"));
+    connect(m_importCancel, &QToolButton::clicked, this, &MainWindow::cancelImports);
+    layout->addWidget(m_importLabel);
+    layout->addWidget(m_importProgress);
+    layout->addWidget(m_importCancel);
+    statusBar()->addPermanentWidget(m_importStatus);
+    m_importStatus->hide();
+}
+
+render::Status MainWindow::startModelImport(const QString& path, bool asReflector, bool interactive) {
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    if (!QFileInfo(absolute).isFile()) {
+        return render::Error{absolute.toStdString() + ": no such file"};
+    }
+    m_importQueue.push_back(ImportRequest{absolute, asReflector, interactive, ++m_importSerial});
+    if (!m_importJob) {
+        startNextImport();
+    }
+    return render::Done{};
+}
+
+render::Status MainWindow::importModelFile(const QString& path, bool asReflector) {
+    if (auto started = startModelImport(path, asReflector, false); !started) {
+        logMessage(tr("Could not import %1: %2")
+                       .arg(QFileInfo(path).absoluteFilePath(), QString::fromStdString(started.error())));
+        return started;
+    }
+    const int serial = m_importSerial;
+    render::Status outcome = render::Error{"the import did not finish"};
+    QEventLoop loop;
+    const auto connection = connect(
+        this, &MainWindow::importFinished, &loop, [&](const QString&, bool ok, const QString& message) {
+            if (m_doneSerial == serial) {
+                outcome = ok ? render::Status(render::Done{})
+                             : render::Status(render::Error{message.toStdString()});
+                loop.quit();
+            }
+        });
+    if (m_doneSerial < serial) {
+        loop.exec(); // the window keeps painting and taking input meanwhile
+    }
+    disconnect(connection);
+    return outcome;
+}
+
+void MainWindow::cancelImports() {
+    while (!m_importQueue.empty()) {
+        const ImportRequest request = m_importQueue.front();
+        m_importQueue.pop_front();
+        m_doneSerial = request.serial;
+        emit importFinished(request.path, false, tr("cancelled"));
+    }
+    if (m_importJob) {
+        m_importJob->cancel(); // it ends at its next check and reports "cancelled" (onImportDone)
+        m_importLabel->setText(tr("Cancelling %1…").arg(QFileInfo(m_importing.path).fileName()));
+    }
+}
+
+void MainWindow::startNextImport() {
+    if (m_importJob || m_importQueue.empty()) {
+        return;
+    }
+    m_importing = m_importQueue.front();
+    m_importQueue.pop_front();
+    m_importJob = new ModelImportJob(m_importing.path, this);
+    if (m_importHook) {
+        m_importJob->setWorkerHook(m_importHook);
+    }
+    connect(m_importJob, &ModelImportJob::progress, this, &MainWindow::showImportProgress);
+    connect(m_importJob, &ModelImportJob::finished, this, &MainWindow::onImportDone);
+    m_importLabel->setText(tr("Importing %1…").arg(QFileInfo(m_importing.path).fileName()));
+    m_importProgress->setValue(0);
+    m_importStatus->show();
+    logMessage(tr("Importing %1…").arg(m_importing.path));
+    m_importJob->start();
+}
+
+void MainWindow::showImportProgress(double fraction, const QString& phase) {
+    if (!m_importJob || m_importJob->isCancelled()) {
+        return;
+    }
+    m_importProgress->setValue(int(std::clamp(fraction, 0.0, 1.0) * 1000.0));
+    m_importLabel->setText(tr("Importing %1 (%2)…").arg(QFileInfo(m_importing.path).fileName(), phase));
+}
+
+void MainWindow::onImportDone() {
+    ModelImportJob* job = m_importJob;
+    if (!job) {
+        return;
+    }
+    m_importJob = nullptr;
+    const ImportRequest request = m_importing;
+    const bool cancelled = job->isCancelled();
+    ModelImportJob::Output out = job->takeOutput();
+    job->deleteLater();
+    m_importStatus->hide();
+
+    auto finish = [&](bool ok, const QString& message) {
+        m_doneSerial = request.serial;
+        emit importFinished(request.path, ok, message);
+        startNextImport();
+    };
+    const QString fileName = QFileInfo(request.path).fileName();
+    if (cancelled) {
+        logMessage(tr("Import of %1 cancelled").arg(request.path));
+        statusBar()->showMessage(tr("Import of %1 cancelled; the document is unchanged.").arg(fileName),
+                                 5000);
+        finish(false, tr("cancelled"));
+        return;
+    }
+    // Warnings like the viewport's: every one in the log, the first in the status bar.
+    for (const auto& w : out.warnings) {
+        logMessage(tr("Import: %1").arg(QString::fromStdString(w)));
+    }
+    if (!out.model) {
+        const QString error = QString::fromStdString(out.model.error());
+        logMessage(tr("Could not import %1: %2").arg(request.path, error));
+        statusBar()->showMessage(tr("Could not import %1: %2").arg(fileName, error), 8000);
+        if (request.interactive) {
+            QMessageBox::critical(this, tr("Import Model"),
+                                  tr("Could not import %1:\n\n%2").arg(fileName, error));
+        }
+        finish(false, error);
+        return;
+    }
+    document::ImportedModel& model = out.model.value();
+
+    // The nodes, and the box they fill in the coordinates of where they are added (the top level).
+    document::NodeTree tree;
+    // A reflector draws the whole file flattened, which fills the same box as the node tree.
+    render::math::Box box = render::math::worldBounds(model.bounds, glm::dmat4(1.0));
+    if (request.asReflector) {
+        tree = document::makeModelNode(request.path, glm::dvec3(0.0), true);
+    } else {
+        std::vector<std::string> treeWarnings;
+        tree =
+            document::modelNodeTree(model, request.path.toStdString(),
+                                    QFileInfo(request.path).completeBaseName().toStdString(), &treeWarnings);
+        for (const auto& w : treeWarnings) {
+            logMessage(tr("Import: %1").arg(QString::fromStdString(w)));
+        }
+        out.warnings.insert(out.warnings.end(), treeWarnings.begin(), treeWarnings.end());
+    }
+    double fit = 1.0;
+    if (fitImportsToUnitBox()) {
+        const glm::dvec3 extent = box.max - box.min;
+        const double size = std::max({extent.x, extent.y, extent.z});
+        if (size > 0.0 && std::isfinite(size)) {
+            fit = 1.0 / size;
+            document::scaleAboutParentOrigin(tree.data, fit);
+            box.min *= fit;
+            box.max *= fit;
+        }
+    }
+    const glm::dvec3 offset =
+        document::placeOnGround(box, m_viewport->lookAtPoint(),
+                                document::occupiedBoxes(*m_scene, m_clock->time(), m_viewport->meshes()));
+    tree.data.transform.translate += offset;
+
+    std::size_t triangles = 0;
+    for (const auto& part : model.parts) {
+        triangles += part.mesh ? part.mesh->triangleCount() : 0;
+    }
+    const std::size_t parts = model.parts.size(), materials = model.materials.size();
+    // The viewport's mesh cache gets the model now, so its first frame does not read the file again (on
+    // the GUI thread).
+    m_viewport->meshes().addModel(request.path.toStdString(),
+                                  std::make_shared<const document::ImportedModel>(std::move(model)));
+
+    if (auto added = addTree(std::move(tree)); !added) {
+        logMessage(tr("Could not import %1: %2").arg(request.path, QString::fromStdString(added.error())));
+        if (request.interactive) {
+            QMessageBox::critical(this, tr("Import Model"), QString::fromStdString(added.error()));
+        }
+        finish(false, QString::fromStdString(added.error()));
+        return;
+    }
+    const glm::dvec3 size = (box.max - box.min);
+    logMessage(tr("Imported %1: %2 part(s), %3 material(s), %4 triangles, %5 × %6 × %7 units%8")
+                   .arg(request.path)
+                   .arg(parts)
+                   .arg(materials)
+                   .arg(triangles)
+                   .arg(size.x, 0, 'g', 3)
+                   .arg(size.y, 0, 'g', 3)
+                   .arg(size.z, 0, 'g', 3)
+                   .arg(fit != 1.0 ? tr(" (fitted to a unit box)") : QString()));
+    if (out.warnings.empty()) {
+        statusBar()->showMessage(tr("Imported %1").arg(fileName), 5000);
+    } else {
+        statusBar()->showMessage(tr("Imported %1 with %2 warning(s): %3")
+                                     .arg(fileName)
+                                     .arg(out.warnings.size())
+                                     .arg(QString::fromStdString(out.warnings.front())),
+                                 8000);
+    }
+    finish(true, QString());
+}
+
+} // namespace speculum::ui
