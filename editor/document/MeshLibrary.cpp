@@ -15,16 +15,16 @@ render::MeshHandle MeshLibrary::builtin(BuiltinMesh kind, int tessellation) {
     if (!slot) {
         switch (kind) {
         case BuiltinMesh::Teapot:
-            slot = std::make_shared<const render::MeshData>(render::makeTeapot(tessellation));
+            slot = render::freezeMesh(render::makeTeapot(tessellation));
             break;
         case BuiltinMesh::Sphere:
-            slot = std::make_shared<const render::MeshData>(render::makeSphere(tessellation));
+            slot = render::freezeMesh(render::makeSphere(tessellation));
             break;
         case BuiltinMesh::Box:
-            slot = std::make_shared<const render::MeshData>(render::makeBox());
+            slot = render::freezeMesh(render::makeBox());
             break;
         case BuiltinMesh::Plane:
-            slot = std::make_shared<const render::MeshData>(render::makePlane(tessellation));
+            slot = render::freezeMesh(render::makePlane(tessellation));
             break;
         }
     }
@@ -90,7 +90,7 @@ render::Result<render::MeshHandle> MeshLibrary::file(const std::string& absolute
         }
         auto flat = flattenModel(*e.model);
         if (flat) {
-            e.flattened = std::make_shared<const render::MeshData>(std::move(flat).value());
+            e.flattened = render::freezeMesh(std::move(flat).value());
         } else {
             e.flattenError = QFileInfo(QString::fromStdString(absolutePath)).fileName().toStdString() + ": " +
                              flat.error();

@@ -80,7 +80,8 @@ private:
 
 // One aiMesh as a repaired, welded speculum mesh (tangents when `wantTangents` and it has uvs).
 render::Result<MeshData> convertPart(const aiMesh& source, bool wantTangents, ImportNotes& notes,
-                                     const Progress& progress, double fraction) {
+                                     render::RepairReport& repairs, const Progress& progress,
+                                     double fraction) {
     if (!isTriangleMesh(&source)) {
         return Error{"no triangles"};
     }
@@ -138,9 +139,7 @@ render::Result<MeshData> convertPart(const aiMesh& source, bool wantTangents, Im
     if (skippedFaces > 0) {
         notes.add("ignored point and line primitives");
     }
-    if (outOfRange > 0) {
-        notes.add("repaired: dropped " + std::to_string(outOfRange) + " triangles with out-of-range indices");
-    }
+    repairs.droppedOutOfRange += outOfRange;
     if (mesh.indices.empty()) {
         return Error{"no triangles"};
     }
@@ -152,12 +151,11 @@ render::Result<MeshData> convertPart(const aiMesh& source, bool wantTangents, Im
     if (!repaired) {
         return Error{repaired.error()};
     }
-    // Regenerating normals and dropping zero-area triangles (cone tips, sphere poles: what Assimp's
-    // FindDegenerates removed silently) are routine; losing geometry to bad data is worth telling.
-    if (report.droppedOutOfRange > 0 || report.droppedNonFinite > 0 || report.droppedUvs ||
-        report.fixedUvs > 0) {
-        notes.add("repaired: " + report.summary());
-    }
+    // Summed over the parts and told once for the file (importChecked).
+    repairs.droppedOutOfRange += report.droppedOutOfRange;
+    repairs.droppedNonFinite += report.droppedNonFinite;
+    repairs.fixedUvs += report.fixedUvs;
+    repairs.droppedUvs = repairs.droppedUvs || report.droppedUvs;
     if (wantTangents) {
         detail::computeTangents(repaired.value());
     }
@@ -389,6 +387,7 @@ render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes
 
     model.parts.resize(scene->mNumMeshes);
     std::size_t failed = 0;
+    render::RepairReport repairs; // what bad data cost, over every part
     std::string firstFailure;
     for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
         if (progress.cancelled()) {
@@ -406,17 +405,23 @@ render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes
             part.material = materialIndex[source->mMaterialIndex];
         }
         const bool wantTangents = part.material >= 0 && !model.materials[part.material].normalTexture.empty();
-        auto mesh = convertPart(*source, wantTangents, notes, progress, fraction);
+        auto mesh = convertPart(*source, wantTangents, notes, repairs, progress, fraction);
         if (!mesh) {
             if (failed++ == 0) {
                 firstFailure = "part " + std::to_string(i) + ": " + mesh.error();
             }
             continue;
         }
-        part.mesh = std::make_shared<const MeshData>(std::move(mesh).value());
+        part.mesh = render::freezeMesh(std::move(mesh).value());
     }
     if (failed == scene->mNumMeshes) {
         return Error{"no usable triangles (" + firstFailure + ")"};
+    }
+    // Regenerating normals and dropping zero-area triangles (cone tips, sphere poles: what Assimp's
+    // FindDegenerates removed silently) are routine; losing geometry to bad data is worth telling, once
+    // for the whole file rather than once per part.
+    if (!repairs.clean()) {
+        notes.add("repaired: " + repairs.summary());
     }
     if (failed > 0) {
         notes.add(std::to_string(failed) + " of " + std::to_string(scene->mNumMeshes) + " parts skipped (" +

@@ -11,6 +11,9 @@
 namespace speculum::render {
 
 Bounds computeBounds(const MeshData& mesh) {
+    if (const Bounds* known = mesh.knownBounds.get()) {
+        return *known;
+    }
     // Non-finite positions are skipped: one NaN would otherwise poison every min/max after it.
     bool any = false;
     Bounds bounds;
@@ -27,6 +30,12 @@ Bounds computeBounds(const MeshData& mesh) {
         bounds.max = glm::max(bounds.max, p);
     }
     return bounds; // an empty mesh gives the zero box at the origin
+}
+
+MeshHandle freezeMesh(MeshData&& mesh) {
+    auto frozen = std::make_shared<MeshData>(std::move(mesh));
+    frozen->knownBounds.set(computeBounds(*frozen));
+    return frozen;
 }
 
 bool isClosed(const MeshData& mesh) {

@@ -10,6 +10,32 @@
 
 namespace speculum::render {
 
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+};
+
+// The bounds of a mesh that will not change any more (see freezeMesh). A copy or move starts empty, so
+// a mesh copied and then edited can never carry its original's bounds.
+class KnownBounds {
+public:
+    KnownBounds() = default;
+    KnownBounds(const KnownBounds&) {}
+    KnownBounds& operator=(const KnownBounds&) {
+        m_set = false;
+        return *this;
+    }
+    void set(const Bounds& bounds) {
+        m_bounds = bounds;
+        m_set = true;
+    }
+    const Bounds* get() const { return m_set ? &m_bounds : nullptr; }
+
+private:
+    Bounds m_bounds;
+    bool m_set = false;
+};
+
 // CPU-side triangle mesh: what the GL layer uploads and the reference tracer intersects.
 // Counter-clockwise triangles seen from outside; normals unit length. uvs, colors and tangents are
 // optional: each is empty or holds one entry per vertex.
@@ -24,6 +50,7 @@ struct MeshData {
     // handedness, bitangent = w · cross(normal, tangent). Empty: the mesh cannot take a normal map.
     std::vector<glm::vec4> tangents;
     std::vector<std::uint32_t> indices; // three per triangle
+    KnownBounds knownBounds;            // set by freezeMesh: computeBounds() then costs nothing
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }
@@ -32,12 +59,12 @@ struct MeshData {
 // Meshes are shared and immutable once built: the pointer is their identity for GPU caches.
 using MeshHandle = std::shared_ptr<const MeshData>;
 
-struct Bounds {
-    glm::vec3 min{0.0f};
-    glm::vec3 max{0.0f};
-};
-
+// Of the finite positions; a frozen mesh answers from its known bounds (the planner, shadow frusta and
+// culling ask every frame, and a multi-million-vertex scan each time would cost milliseconds).
 Bounds computeBounds(const MeshData& mesh);
+
+// The shared, immutable handle of a finished mesh, with its bounds computed once.
+MeshHandle freezeMesh(MeshData&& mesh);
 
 // Whether the mesh is a closed, consistently wound surface: every edge, by the positions of its end
 // points (vertices duplicated for normals or uvs count as one), is run once in each direction by exactly

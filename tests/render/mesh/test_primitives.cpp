@@ -199,5 +199,19 @@ TEST(Closure, ClosedMeshesAreRecognised) {
     EXPECT_FALSE(isClosed(MeshData{}));
 }
 
+TEST(MeshData, AFrozenMeshKnowsItsBoundsAndACopyForgetsThem) {
+    MeshData box = makeBox();
+    const MeshHandle frozen = freezeMesh(MeshData(box));
+    ASSERT_NE(frozen->knownBounds.get(), nullptr);
+    EXPECT_EQ(frozen->knownBounds.get()->min, glm::vec3(-1.0f));
+    EXPECT_EQ(frozen->knownBounds.get()->max, glm::vec3(1.0f));
+    // A copy that is then edited must measure itself again, not answer with the original's box.
+    MeshData copy = *frozen;
+    EXPECT_EQ(copy.knownBounds.get(), nullptr);
+    copy.positions[0] = glm::vec3(5.0f, 0.0f, 0.0f);
+    EXPECT_EQ(computeBounds(copy).max.x, 5.0f);
+    EXPECT_EQ(computeBounds(*frozen).max.x, 1.0f);
+}
+
 } // namespace
 } // namespace speculum::render
