@@ -17,3 +17,7 @@ speculum_add_test(test_gl_materials TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_materials.cpp
             ${CMAKE_CURRENT_LIST_DIR}/reference/test_material_agreement.cpp
     LIBS speculum_render PkgConfig::OIIO)
+# A glTF quad read through the editor's model import shows its texture upright in both renderers.
+speculum_add_test(test_gl_imported_orientation TIER gl
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_imported_orientation.cpp
+    LIBS speculum_document speculum_render PkgConfig::OIIO)
