@@ -66,6 +66,13 @@ Property<NodeData> filePath(QString key, QString label, Access<NodeData, std::st
         if (!file.isAbsolute()) {
             return fail(info, QStringLiteral("needs an absolute path, got \"%1\"").arg(path));
         }
+        // Texture fields (the ones that may be empty) may also name an image embedded in a model file,
+        // "/abs/model.glb#*0", as import writes them.
+        const qsizetype hash = path.lastIndexOf(QLatin1Char('#'));
+        if (!file.isFile() && allowEmpty && hash > 0 && QFileInfo(path.left(hash)).isFile()) {
+            *field = path.toStdString();
+            return render::Done{};
+        }
         if (!file.isFile()) {
             return fail(info, QStringLiteral("file does not exist: %1").arg(path));
         }

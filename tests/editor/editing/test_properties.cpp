@@ -109,6 +109,21 @@ TEST(Properties, InvalidValuesAreRefusedWithAMessageAndNotClamped) {
     }
 }
 
+TEST(Properties, TexturesMayNameAnImageEmbeddedInAModel) {
+    NodeData d = fullNode();
+    const std::string model = std::string(SPECULUM_SOURCE_DIR) + "/resources/models/toyset.glb";
+    const auto* texture = findNodeProperty(QStringLiteral("material.texture"));
+    ASSERT_TRUE(texture);
+    const auto status = texture->set(d, QString::fromStdString(model + "#*0"));
+    ASSERT_TRUE(status.ok()) << status.error();
+    EXPECT_EQ(d.material->texture, model + "#*0");
+    // Only a real model file before the '#': anything else is still a missing file.
+    EXPECT_FALSE(texture->set(d, QStringLiteral("/no/such/model.glb#*0")).ok());
+    // And a mesh file is never an embedded name.
+    EXPECT_FALSE(
+        findNodeProperty(QStringLiteral("mesh.file"))->set(d, QString::fromStdString(model + "#*0")).ok());
+}
+
 TEST(Properties, CameraRulesCoverTheWholeCamera) {
     CameraData camera;
     const auto* far = findCameraProperty(QStringLiteral("camera.far"));
