@@ -1,11 +1,18 @@
 #include "app/CliOptions.hpp"
 
 #include "render/StillRenderer.hpp"
+#include "render/io/Printable.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <regex>
+#include <string_view>
+#include <system_error>
 
 namespace speculum::app {
 
@@ -17,13 +24,13 @@ render::Result<int> parseInt(const std::string& option, const std::string& text,
     int value = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec == std::errc::result_out_of_range && end == text.data() + text.size())
-        return Error{option + ": " + text + " is out of range (" + std::to_string(min) + ".." +
-                     std::to_string(max) + ")"};
+        return Error{option + ": " + render::quoted(text) + " is out of range (" + std::to_string(min) +
+                     ".." + std::to_string(max) + ")"};
     if (ec != std::errc() || end != text.data() + text.size())
-        return Error{option + ": expected a whole number, got \"" + text + "\""};
+        return Error{option + ": expected a whole number, got " + render::quoted(text)};
     if (value < min || value > max)
-        return Error{option + ": " + text + " is out of range (" + std::to_string(min) + ".." +
-                     std::to_string(max) + ")"};
+        return Error{option + ": " + render::quoted(text) + " is out of range (" + std::to_string(min) +
+                     ".." + std::to_string(max) + ")"};
     return value;
 }
 
@@ -34,11 +41,62 @@ render::Result<double> parseTime(const std::string& text) {
         if (used != text.size() || !std::isfinite(value))
             throw std::invalid_argument(text);
         if (value < 0.0 || value > 1e7)
-            return Error{"--time: " + text + " is out of range (0..1e7 seconds)"};
+            return Error{"--time: " + render::quoted(text) + " is out of range (0..1e7 seconds)"};
         return value;
     } catch (const std::exception&) {
-        return Error{"--time: expected a number of seconds, got \"" + text + "\""};
+        return Error{"--time: expected a number of seconds, got " + render::quoted(text)};
     }
+}
+
+constexpr std::array<std::string_view, 5> kCommands = {"render", "explain", "bench", "export", "help"};
+
+// Edit distance (insertions, deletions, substitutions, case ignored), for "did you mean".
+std::size_t distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                              std::tolower(static_cast<unsigned char>(b[j - 1]));
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// The first word opens the editor when it names a project: anything that exists on disk, or that is
+// written as a path (a slash or a dot: "scene.speculum.json", "./new"), alone. A bare word that names
+// nothing ("rendr"), or a non-path followed by more arguments, is a mistyped command instead: refused here,
+// before Qt starts, rather than opening an editor on a file that does not exist.
+bool looksLikeCommand(const std::string& first, std::size_t argumentCount) {
+    std::error_code ec;
+    if (first.empty() ||
+        std::filesystem::symlink_status(first, ec).type() != std::filesystem::file_type::not_found)
+        return false;
+    const bool pathLike = first.find_first_of("/.") != std::string::npos;
+    return !pathLike || argumentCount > 1;
+}
+
+std::string unknownCommand(const std::string& word) {
+    std::string_view best;
+    std::size_t bestDistance = 3; // suggest only within two edits
+    for (std::string_view command : kCommands) {
+        const std::size_t d =
+            distance(word.size() > 64 ? std::string_view(word).substr(0, 64) : word, command);
+        if (d < bestDistance) {
+            best = command;
+            bestDistance = d;
+        }
+    }
+    std::string message = "unknown command " + render::quoted(word);
+    if (!best.empty())
+        return message + " (did you mean '" + std::string(best) + "'?)";
+    return message + " (commands: render, explain, bench, export; see speculum --help)";
 }
 
 } // namespace
@@ -46,10 +104,11 @@ render::Result<double> parseTime(const std::string& text) {
 std::string usageText() {
     return "usage:\n"
            "  speculum [PROJECT]                          open the editor\n"
-           "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference]\n"
+           "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference] "
+           "[--keep-going]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--json]\n"
-           "  speculum bench PROJECT --out DIR [--quick] [--size WxH]\n"
-           "  speculum export PROJECT -o OUT.glb|OUT.gltf\n"
+           "  speculum bench PROJECT --out DIR [--quick] [--size WxH] [--keep-going]\n"
+           "  speculum export PROJECT -o OUT.glb|OUT.gltf [--keep-going]\n"
            "\n"
            "render writes PNG, JPEG, TIFF or EXR (by the extension of OUT); --size defaults to 1280x720,\n"
            "--ssaa N averages NxN samples per pixel (1..16), --time evaluates animations at T seconds.\n"
@@ -61,7 +120,12 @@ std::string usageText() {
            "writes\n"
            "results.csv, results.json, plots and report.md into DIR. --quick: fewer points at 480x270.\n"
            "export writes the scene as glTF 2.0: .glb (one file, images inside) or .gltf (with its .bin and\n"
-           "images beside it), with the camera and the lights (KHR_lights_punctual).\n";
+           "images beside it), with the camera and the lights (KHR_lights_punctual).\n"
+           "A model or texture the scene names that is missing or unreadable is an error for render, bench\n"
+           "and export; --keep-going goes on without it (a warning). Everything a frame drops (lights "
+           "beyond\n"
+           "8, a mirror it cannot reflect) is a warning on stderr. An output that is an input (the project,\n"
+           "a model, a texture) is refused. Exit status: 0 done, 1 failed, 2 bad command line.\n";
 }
 
 render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
@@ -87,8 +151,10 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
     else if (first == "export")
         o.command = Command::Export;
     else if (!first.empty() && first[0] == '-')
-        return Error{"unknown option " + first + " (see speculum --help)"};
+        return Error{"unknown option " + render::quoted(first) + " (see speculum --help)"};
     if (o.command == Command::Editor) {
+        if (looksLikeCommand(first, args.size()))
+            return Error{unknownCommand(first)};
         if (args.size() > 1)
             return Error{"the editor takes one project file, got " + std::to_string(args.size())};
         o.project = first;
@@ -123,7 +189,7 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
             static const std::regex size(R"((\d+)[xX](\d+))");
             std::smatch m;
             if (!std::regex_match(*v, m, size))
-                return Error{"--size: expected WIDTHxHEIGHT such as 1280x720, got \"" + *v + "\""};
+                return Error{"--size: expected WIDTHxHEIGHT such as 1280x720, got " + render::quoted(*v)};
             // No limit per side: stills larger than the GPU's limits render in tiles. Only sizes whose
             // pixels would not fit in memory are refused, here, before any work.
             constexpr int kMaxSide = std::numeric_limits<int>::max();
@@ -166,14 +232,16 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
             o.frame = *n;
         } else if (a == "--json" && o.command == Command::Explain) {
             o.json = true;
+        } else if (a == "--keep-going" && o.command != Command::Explain) {
+            o.keepGoing = true;
         } else if (a == "--quick" && o.command == Command::Bench) {
             o.quick = true;
         } else if (!a.empty() && a[0] == '-') {
-            return Error{name + ": unknown option " + a + " (see speculum --help)"};
+            return Error{name + ": unknown option " + render::quoted(a) + " (see speculum --help)"};
         } else if (o.project.empty()) {
             o.project = a;
         } else {
-            return Error{name + ": unexpected argument \"" + a + "\""};
+            return Error{name + ": unexpected argument " + render::quoted(a)};
         }
     }
     if (o.project.empty())

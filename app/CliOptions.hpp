@@ -26,8 +26,17 @@ struct CliOptions {
     bool json = false;
     bool quick = false;
     int frame = 1; // explain: which of consecutive frames of the same scene to explain (reuse shows from 2)
+    // render, bench, export: go on without a referenced model or texture that is missing or unreadable
+    // (each is then a warning); without it such a file is an error and nothing is written.
+    bool keepGoing = false;
 };
 
+// Exit status for a command line that cannot be parsed (as for the usage errors of most tools).
+inline constexpr int kUsageError = 2;
+
+// Errors are one line without the "speculum: error: " prefix; every value from the command line in them is
+// escaped and shortened (render::quoted). A first word that is neither a command nor a path to a file is an
+// unknown command, with the nearest command word suggested.
 render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args);
 
 std::string usageText();

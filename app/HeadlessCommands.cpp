@@ -1,5 +1,6 @@
 #include "app/HeadlessCommands.hpp"
 
+#include "app/OutputPaths.hpp"
 #include "app/ProjectInput.hpp"
 #include "app/bench/Bench.hpp"
 #include "editor/document/GltfExport.hpp"
@@ -7,6 +8,8 @@
 #include "render/StillRenderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/image/ImageWriter.hpp"
+#include "render/io/Printable.hpp"
+#include "render/plan/Planner.hpp"
 #include "render/reference/Tracer.hpp"
 
 #include <QJsonArray>
@@ -29,7 +32,92 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 void fail(const std::string& message) {
-    std::cerr << "speculum: " << message << "\n";
+    printError(message);
+}
+
+MissingFiles policyOf(const CliOptions& options) {
+    if (options.command == Command::Explain)
+        return MissingFiles::Report; // explain lists what the frame lacks; it is how one finds out
+    return options.keepGoing ? MissingFiles::KeepGoing : MissingFiles::Fail;
+}
+
+std::string commandName(const CliOptions& options) {
+    switch (options.command) {
+    case Command::Explain:
+        return "explain";
+    case Command::Bench:
+        return "bench";
+    case Command::Export:
+        return "export";
+    default:
+        return "render";
+    }
+}
+
+// Skips that are the frame working as meant (nothing to do, reused, out of sight, the user's own depth
+// setting). Every other skip drops something the scene asks for and is a warning: a numeric failure, a
+// capacity limit, and whatever reason the planner adds later (unknown reasons warn).
+bool expectedSkip(const std::string& reason) {
+    static const char* const kExpected[] = {
+        "shadow pass not needed",
+        "shadow map reused",
+        "environment pass not needed",
+        "environment map reused",
+        "no reflection: outside",
+        "no reflection: the camera is behind the mirror",
+        "no reflection: the camera is on the mirror's plane",
+        "no reflection: covers less than one pixel",
+        "no reflection: the mirror depth limit",
+        "no reflection: mirrorDepth is 0",
+        "no reflection: fully occluded", // hidden behind something nearer, this frame or this tile
+    };
+    for (const char* prefix : kExpected)
+        if (reason.rfind(prefix, 0) == 0)
+            return true;
+    return false;
+}
+
+// What kind of node a plan's target names, for "mirror 'M': skipped: ...".
+std::string targetLabel(const render::FrameInput& input, const std::string& target) {
+    for (const render::Mirror& m : input.mirrors)
+        if (m.name == target)
+            return "mirror " + render::quoted(target);
+    for (const render::Light& l : input.lights)
+        if (l.name == target)
+            return "light " + render::quoted(target);
+    if (input.reflector && input.reflector->name == target)
+        return "reflector " + render::quoted(target);
+    return render::quoted(target);
+}
+
+// Lights past the ones drawn: the rasterizer and the tracer both light with the first kMaxLights.
+std::vector<std::string> lightDrops(const render::FrameInput& input) {
+    std::vector<std::string> drops;
+    for (std::size_t i = render::kMaxLights; i < input.lights.size(); ++i) {
+        const std::string& name = input.lights[i].name;
+        drops.push_back("light " + (name.empty() ? "#" + std::to_string(i + 1) : render::quoted(name)) +
+                        " ignored: at most " + std::to_string(render::kMaxLights) + " lights are drawn");
+    }
+    return drops;
+}
+
+// Every drop a rendered frame made, as warnings: lights beyond the limit and each unexpected skip.
+std::vector<std::string> frameDrops(const render::FrameInput& input, const render::FramePlan& plan) {
+    std::vector<std::string> drops = lightDrops(input);
+    const std::string lightLimit = "more than " + std::to_string(render::kMaxLights) + " lights";
+    for (const render::SkippedEffect& s : plan.skipped) {
+        if (expectedSkip(s.reason) || s.reason.rfind(lightLimit, 0) == 0)
+            continue;
+        drops.push_back((s.target.empty() ? std::string("frame") : targetLabel(input, s.target)) +
+                        ": skipped: " + render::printable(s.reason, 400));
+    }
+    return drops;
+}
+
+std::string absoluteText(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+    return ec ? path : absolute.string();
 }
 
 // Everything a headless command needs: the scene snapshot and a renderer on an EGL context.
@@ -40,11 +128,16 @@ struct HeadlessFrame {
     std::string glDescription;
 };
 
-// Loads the project and evaluates it at options.time; no GL needed.
+// Loads the project and evaluates it at options.time; no GL needed. A missing model or texture is an
+// error unless --keep-going (explain: reported by the frame). For a command that writes, the output is
+// then checked against every file the project reads, before any rendering.
 render::Result<render::FrameInput> loadFrameInput(const CliOptions& options) {
-    auto frame = loadProjectFrame(options.project, options.time);
+    auto frame = loadProjectFrame(options.project, options.time, policyOf(options));
     if (!frame)
-        return render::Error{frame.error()};
+        return render::Error{commandName(options) + ": " + frame.error()};
+    if (!options.output.empty())
+        if (render::Status distinct = checkNotAnInput(options.output, frame->inputs); !distinct)
+            return render::Error{commandName(options) + ": " + distinct.error()};
     return std::move(frame->input);
 }
 
@@ -106,6 +199,7 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
         fail("render: " + traced.error());
         return 1;
     }
+    printWarnings(lightDrops(*input));
     printWarnings(traced->warnings);
 
     std::ostringstream settingsText;
@@ -116,7 +210,7 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
         {"Software", std::string("speculum ") + SPECULUM_VERSION},
         {"ImageDescription",
          "speculum reference render of " + fileName(options.project) + " (" + settingsText.str() + ")"},
-        {"speculum:scene", std::filesystem::absolute(options.project).string()},
+        {"speculum:scene", absoluteText(options.project)},
         {"speculum:settings", settingsText.str()},
         {"speculum:renderTimeMs", std::to_string(traced->totalMs)},
         {"speculum:renderer", "reference ray tracer (Embree 3, " +
@@ -130,7 +224,7 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
     std::cerr << "speculum: traced " << sizeText(options.width, options.height) << " with " << traced->samples
               << (traced->samples == 1 ? " sample" : " samples") << " per pixel in "
               << static_cast<int>(traced->totalMs + 0.5) << " ms\n";
-    std::cout << options.output << "\n";
+    std::cout << render::printable(options.output, 4096) << "\n";
     return 0;
 }
 
@@ -140,13 +234,17 @@ int runRender(const CliOptions& options) {
     const auto start = Clock::now();
     // Validate the output before any work: an unsupported format or a missing folder costs nothing.
     if (!render::isSupportedImagePath(options.output)) {
-        fail(options.output + ": unsupported image format (supported: " + render::supportedImageFormats() +
-             ")");
+        fail(render::quoted(options.output) +
+             ": unsupported image format (supported: " + render::supportedImageFormats() + ")");
         return 1;
     }
-    const std::filesystem::path outDir = std::filesystem::absolute(options.output).parent_path();
-    if (!std::filesystem::is_directory(outDir)) {
-        fail(options.output + ": folder " + outDir.string() + " does not exist");
+    if (render::Status where = checkOutputFile(options.output); !where) {
+        fail("render: " + where.error());
+        return 1;
+    }
+    // The project itself before it is read; the models and textures it names once it is loaded.
+    if (render::Status distinct = checkNotAnInput(options.output, {options.project}); !distinct) {
+        fail("render: " + distinct.error());
         return 1;
     }
     if (render::Status target = render::checkImageTarget(options.output, options.width, options.height);
@@ -175,6 +273,7 @@ int runRender(const CliOptions& options) {
         fail("render: " + still.error());
         return 1;
     }
+    printWarnings(frameDrops(frame->input, still->firstSample.plan));
     printWarnings(still->firstSample.warnings);
 
     render::ImageMetadata metadata;
@@ -185,7 +284,7 @@ int runRender(const CliOptions& options) {
         {"Software", std::string("speculum ") + SPECULUM_VERSION},
         {"ImageDescription",
          "speculum render of " + fileName(options.project) + " (" + settingsText.str() + ")"},
-        {"speculum:scene", std::filesystem::absolute(options.project).string()},
+        {"speculum:scene", absoluteText(options.project)},
         {"speculum:settings", settingsText.str()},
         {"speculum:renderTimeMs", std::to_string(still->totalMs)},
         {"speculum:renderer", frame->glDescription},
@@ -197,7 +296,7 @@ int runRender(const CliOptions& options) {
     std::cerr << "speculum: rendered " << sizeText(options.width, options.height) << " with "
               << still->samples << (still->samples == 1 ? " sample" : " samples") << " per pixel in "
               << static_cast<int>(still->totalMs + 0.5) << " ms\n";
-    std::cout << options.output << "\n";
+    std::cout << render::printable(options.output, 4096) << "\n";
     return 0;
 }
 
@@ -263,18 +362,20 @@ int runExplain(const CliOptions& options) {
     for (const render::PlannedPass& p : plan.passes) {
         const std::string kind(render::toString(p.kind));
         std::printf("  %-11s %-14s gpu %7.2f ms  cpu %7.2f ms  %s\n", kind.c_str(),
-                    p.target.empty() ? "-" : p.target.c_str(), p.gpuMs, p.cpuMs, p.reason.c_str());
+                    p.target.empty() ? "-" : render::printable(p.target).c_str(), p.gpuMs, p.cpuMs,
+                    oneLine(p.reason).c_str());
     }
     std::printf("\nSkipped:\n");
     if (plan.skipped.empty())
         std::printf("  (nothing)\n");
     for (const render::SkippedEffect& s : plan.skipped)
-        std::printf("  %-14s %s\n", s.target.empty() ? "-" : s.target.c_str(), s.reason.c_str());
+        std::printf("  %-14s %s\n", s.target.empty() ? "-" : render::printable(s.target).c_str(),
+                    oneLine(s.reason).c_str());
     // What the frame could not do as the scene asks (a map larger than the GPU holds, a missing texture).
     if (!still->firstSample.warnings.empty()) {
         std::printf("\nWarnings:\n");
         for (const std::string& w : still->firstSample.warnings)
-            std::printf("  %s\n", w.c_str());
+            std::printf("  %s\n", oneLine(w).c_str());
     }
     std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", still->firstSample.gpuMs, still->firstSample.cpuMs);
     return 0;
@@ -287,12 +388,21 @@ int runExport(const CliOptions& options) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension != ".glb" && extension != ".gltf") {
-        fail(options.output + ": unsupported export format (supported: .glb, .gltf)");
+        fail(render::quoted(options.output) + ": unsupported export format (supported: .glb, .gltf)");
         return 1;
     }
-    const std::filesystem::path outDir = std::filesystem::absolute(out).parent_path();
-    if (!std::filesystem::is_directory(outDir)) {
-        fail(options.output + ": folder " + outDir.string() + " does not exist");
+    if (render::Status where = checkOutputFile(options.output); !where) {
+        fail("export: " + where.error());
+        return 1;
+    }
+    // A .gltf writes its buffer and images beside it: "OUT.bin", "OUT_0.png", ...
+    std::vector<std::string> companions;
+    if (extension == ".gltf") {
+        const std::filesystem::path stem = out.parent_path() / out.stem();
+        companions = {stem.string() + ".bin", stem.string() + "_"};
+    }
+    if (render::Status distinct = checkNotAnInput(options.output, {options.project}, companions); !distinct) {
+        fail("export: " + distinct.error());
         return 1;
     }
     document::Scene scene;
@@ -302,6 +412,15 @@ int runExport(const CliOptions& options) {
     }
     document::MeshLibrary meshes;
     std::vector<std::string> warnings;
+    const ProjectFiles files = checkProjectFiles(options.project, scene, meshes, warnings);
+    if (render::Status missing = applyMissingFiles(files, policyOf(options)); !missing) {
+        fail("export: " + missing.error());
+        return 1;
+    }
+    if (render::Status distinct = checkNotAnInput(options.output, files.inputs, companions); !distinct) {
+        fail("export: " + distinct.error());
+        return 1;
+    }
     const render::Status exported =
         document::exportGltf(scene, QString::fromStdString(options.output), meshes, warnings);
     if (!exported) {
@@ -309,7 +428,7 @@ int runExport(const CliOptions& options) {
         return 1;
     }
     printWarnings(warnings);
-    std::cout << options.output << "\n";
+    std::cout << render::printable(options.output, 4096) << "\n";
     return 0;
 }
 
@@ -318,6 +437,7 @@ int runBench(const CliOptions& options) {
     b.project = options.project;
     b.outDir = options.outDir;
     b.quick = options.quick;
+    b.keepGoing = options.keepGoing;
     if (options.sizeGiven) {
         b.width = options.width;
         b.height = options.height;

@@ -2,39 +2,173 @@
 
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Snapshot.hpp"
+#include "render/io/FileKind.hpp"
+#include "render/io/Printable.hpp"
 
 #include <QFileInfo>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <iostream>
+#include <unistd.h>
 
 namespace speculum::app {
 
+namespace {
+
+// Why `path` cannot be read as a texture, or empty when it can: a regular file that opens for reading.
+// O_NONBLOCK: a path swapped for a FIFO after the check still cannot block the open.
+std::string unreadable(const std::string& path) {
+    if (render::Status regular = render::requireRegularFile(path); !regular)
+        return regular.error();
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return std::string("cannot be read: ") + std::strerror(errno);
+    ::close(fd);
+    return {};
+}
+
+// Each texture in `frame` whose file is in `bad` is cleared, so the renderer draws without it (the
+// warning was already given) instead of reporting it a second time.
+void dropTextures(render::FrameInput& frame, const std::set<std::string>& bad) {
+    const auto drop = [&](render::Material& m) {
+        for (render::TextureSource* source : {&m.texture, &m.emissionTexture, &m.normalTexture})
+            if (!source->image && bad.count(source->path))
+                *source = render::TextureSource{};
+    };
+    for (render::DrawItem& item : frame.items)
+        drop(item.material);
+    for (render::Mirror& mirror : frame.mirrors)
+        drop(mirror.material);
+    if (frame.reflector)
+        drop(frame.reflector->material);
+}
+
+} // namespace
+
+std::string oneLine(std::string_view message) {
+    std::string out;
+    out.reserve(message.size());
+    for (const char ch : message) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (c >= 0x20 && c != 0x7F) {
+            out += ch;
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else {
+            char hex[5];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+        }
+    }
+    return out;
+}
+
 void printWarnings(const std::vector<std::string>& warnings) {
     for (const std::string& w : warnings)
-        std::cerr << "speculum: warning: " << w << "\n";
+        std::cerr << "speculum: warning: " << oneLine(w) << "\n";
+}
+
+void printError(const std::string& message) {
+    std::cerr << "speculum: error: " << oneLine(message) << "\n";
 }
 
 render::Status loadProjectScene(const std::string& project, document::Scene& scene) {
     const QString path = QString::fromStdString(project);
     const QFileInfo info(path);
     if (!info.exists())
-        return render::Error{project + ": no such file"};
+        return render::Error{render::quoted(project) + ": no such file"};
     if (!info.isFile())
-        return render::Error{project + ": not a file"};
+        return render::Error{render::quoted(project) + ": not a file"};
     std::vector<std::string> warnings;
     if (render::Status opened = document::openProject(scene, path, warnings); !opened)
-        return render::Error{project + ": " + opened.error()};
+        return render::Error{render::quoted(project) + ": " + opened.error()};
     printWarnings(warnings);
     return render::Done{};
 }
 
-render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time) {
+ProjectFiles checkProjectFiles(const std::string& project, const document::Scene& scene,
+                               document::MeshLibrary& meshes, std::vector<std::string>& warnings) {
+    ProjectFiles files;
+    files.inputs.push_back(project);
+    std::set<std::string> checked;
+    const auto texture = [&](const std::string& node, const std::string& path) {
+        if (path.empty() || !checked.insert(path).second)
+            return;
+        // An embedded texture ("/abs/model.glb#*0") is read with its model, which was checked already.
+        if (path.find('#') != std::string::npos && meshes.embeddedTexture(path, warnings))
+            return;
+        files.inputs.push_back(path);
+        if (const std::string why = unreadable(path); !why.empty()) {
+            files.problems.push_back("node " + render::quoted(node) + ": texture " + render::quoted(path) +
+                                     ": " + why);
+            files.textureProblems.push_back(files.problems.back());
+            files.badTextures.insert(path);
+        }
+    };
+    const auto textures = [&](const std::string& node, const document::MaterialComponent& m) {
+        texture(node, m.texture);
+        texture(node, m.emissionTexture);
+        texture(node, m.normalTexture);
+    };
+    scene.forEachNode([&](const document::Node& node) {
+        const document::NodeData& d = node.data();
+        if (d.material)
+            textures(d.name, *d.material);
+        if (!d.mesh || d.mesh->builtin)
+            return;
+        files.inputs.push_back(d.mesh->file);
+        // The same calls the snapshot makes, so each import is cached and not repeated: a whole model on a
+        // plain node draws its parts with the file's own materials; anything else draws one mesh.
+        const bool parts = !d.mesh->part && !d.material && !d.reflector && !d.mirror;
+        if (parts) {
+            auto model = meshes.model(d.mesh->file, warnings);
+            if (!model) {
+                files.problems.push_back("node " + render::quoted(d.name) + ": model " + model.error());
+                return;
+            }
+            for (const document::MaterialComponent& m : (*model)->materials)
+                textures(d.name, m);
+        } else if (auto mesh = meshes.get(*d.mesh, warnings); !mesh) {
+            files.problems.push_back("node " + render::quoted(d.name) + ": model " + mesh.error());
+        }
+    });
+    return files;
+}
+
+render::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy) {
+    if (files.problems.empty() || policy == MissingFiles::Report)
+        return render::Done{};
+    if (policy == MissingFiles::KeepGoing) {
+        // Models that failed are skipped by the snapshot, which warns of each ("mesh skipped: ...").
+        printWarnings(files.textureProblems);
+        return render::Done{};
+    }
+    std::string message = files.problems.front();
+    if (files.problems.size() > 1)
+        message += " (and " + std::to_string(files.problems.size() - 1) + " more)";
+    return render::Error{message + "; --keep-going goes on without it"};
+}
+
+render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time, MissingFiles policy) {
     document::Scene scene;
     if (render::Status opened = loadProjectScene(project, scene); !opened)
         return render::Error{opened.error()};
     ProjectFrame frame;
     frame.meshes = std::make_unique<document::MeshLibrary>();
     std::vector<std::string> warnings;
+    const ProjectFiles files = checkProjectFiles(project, scene, *frame.meshes, warnings);
+    if (render::Status missing = applyMissingFiles(files, policy); !missing)
+        return render::Error{missing.error()};
+    frame.inputs = files.inputs;
     frame.input = document::snapshot(scene, time, *frame.meshes, warnings);
+    if (policy == MissingFiles::KeepGoing)
+        dropTextures(frame.input, files.badTextures);
     printWarnings(warnings);
     scene.forEachNode([&](const document::Node& node) {
         const auto& mesh = node.data().mesh;

@@ -8,8 +8,26 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace speculum::app {
+
+// What a command does with a model or texture the scene names that is missing or cannot be read.
+enum class MissingFiles {
+    Fail,      // an error naming the node and the file (render, bench, export by default)
+    KeepGoing, // a warning per file, and the frame goes on without it (--keep-going)
+    Report,    // left to the renderer, which lists it among the frame's warnings (explain)
+};
+
+// Every file a project reads: the project itself, then the models and textures its nodes name (absolute),
+// and the problems found with them ("node 'Box': texture '/a/b.png': file not found").
+struct ProjectFiles {
+    std::vector<std::string> inputs;
+    std::vector<std::string> problems;
+    std::vector<std::string> textureProblems; // the texture ones (the snapshot itself warns of models)
+    std::set<std::string> badTextures;        // texture paths that cannot be read (dropped with KeepGoing)
+};
 
 // A project loaded for a headless command: the frame at one time, and the mesh library its meshes came
 // from (kept, so that a command can ask for other tessellations of the same built-ins).
@@ -17,17 +35,36 @@ struct ProjectFrame {
     render::FrameInput input;
     std::unique_ptr<document::MeshLibrary> meshes;
     std::set<int> teapotTessellations; // of the built-in teapots the scene has (empty: none)
+    std::vector<std::string> inputs;   // as ProjectFiles::inputs: what no output may overwrite
 };
 
 // Opens PROJECT into `scene`; load warnings go to stderr. Errors name the file and, for a bad file, the
 // JSON path.
 render::Status loadProjectScene(const std::string& project, document::Scene& scene);
 
-// Loads PROJECT and evaluates it at `time`; warnings go to stderr. Errors name the file and, for a bad
-// file, the JSON path.
-render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time);
+// The models and textures `scene` names, each imported (into `meshes`, so a later snapshot reuses it) or
+// checked to be a readable regular file. Import warnings are appended to `warnings`.
+ProjectFiles checkProjectFiles(const std::string& project, const document::Scene& scene,
+                               document::MeshLibrary& meshes, std::vector<std::string>& warnings);
 
-// Prints "speculum: warning: ..." lines on stderr.
+// Applies `policy` to the problems found: Fail gives one error line (the first problem, how many more, and
+// the option that goes on); KeepGoing prints each as a warning; Report does nothing.
+render::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy);
+
+// Loads PROJECT and evaluates it at `time`; warnings go to stderr. Errors name the file and, for a bad
+// file, the JSON path; with MissingFiles::Fail, a missing or unreadable model or texture is an error too.
+render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time,
+                                              MissingFiles policy = MissingFiles::Report);
+
+// The message made safe for one line on a terminal: control characters become visible escapes. A
+// backstop for text from deeper layers (renderer warnings, library errors) that may quote a name raw;
+// the layers themselves quote with render::quoted.
+std::string oneLine(std::string_view message);
+
+// Prints "speculum: warning: ..." lines on stderr, one line each.
 void printWarnings(const std::vector<std::string>& warnings);
+
+// Prints "speculum: error: ..." on stderr, one line.
+void printError(const std::string& message);
 
 } // namespace speculum::app

@@ -1,19 +1,37 @@
 // speculum: the editor when run with no command (or a project file), the headless commands otherwise.
 #include "app/CliOptions.hpp"
 #include "app/HeadlessCommands.hpp"
+#include "app/ProjectInput.hpp"
 #include "editor/ui/Editor.hpp"
 
+#include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
-int main(int argc, char** argv) {
+namespace {
+
+bool hasEnvironment(const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value;
+}
+
+// Qt aborts (a five-line message, exit 134) when it finds no platform to show windows on. Say it in one
+// line instead, before Qt starts: no X11 or Wayland display, and no platform chosen (QT_QPA_PLATFORM, as
+// the tests and screenshots use with "offscreen").
+bool editorHasDisplay() {
+    return hasEnvironment("DISPLAY") || hasEnvironment("WAYLAND_DISPLAY") ||
+           hasEnvironment("QT_QPA_PLATFORM");
+}
+
+int run(int argc, char** argv) {
     using namespace speculum::app;
     const std::vector<std::string> args(argv + 1, argv + argc);
     auto options = parseCommandLine(args);
     if (!options) {
-        std::cerr << "speculum: " << options.error() << "\n";
-        return 2;
+        printError(options.error());
+        return kUsageError;
     }
     switch (options->command) {
     case Command::Help:
@@ -33,5 +51,25 @@ int main(int argc, char** argv) {
     case Command::Editor:
         break;
     }
+    if (!editorHasDisplay()) {
+        printError("the editor needs a display (DISPLAY and WAYLAND_DISPLAY are unset); without one, use "
+                   "'speculum render PROJECT -o OUT.png' (see speculum --help)");
+        return 1;
+    }
     return speculum::ui::runEditor(argc, argv, options->project);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    // A backstop: every command reports its errors itself, but an exception that still escapes (a library
+    // that throws) ends in one line and status 1, not in std::terminate's abort.
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        speculum::app::printError(std::string("unexpected failure: ") + e.what());
+    } catch (...) {
+        speculum::app::printError("unexpected failure");
+    }
+    return 1;
 }

@@ -1,11 +1,13 @@
 #include "render/Renderer.hpp"
 
+#include "render/gl/Allocation.hpp"
 #include "render/gl/GpuMesh.hpp"
 #include "render/gl/GpuTimer.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/gl/Program.hpp"
 #include "render/gl/RenderTexture.hpp"
 #include "render/gl/TextureCache.hpp"
+#include "render/io/Printable.hpp"
 #include "render/math/Projection.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/passes/LightingVariant.hpp"
@@ -16,6 +18,7 @@
 #include "render/passes/ShadowMaps.hpp"
 #include "render/plan/Planner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -166,15 +169,63 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         return report;
     // Map sizes beyond the GPU's limits would fail to allocate: the frame is planned and drawn with sizes
     // it can hold, and says so.
-    const std::optional<FrameInput> fitted = fitToGpuLimits(requested, s.limits, report.warnings);
-    const FrameInput& input = fitted ? *fitted : requested;
+    std::optional<FrameInput> fitted = fitToGpuLimits(requested, s.limits, report.warnings);
     // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
     // untiled frame would, with the same sub-pixel sample positions.
     const PlanViewport viewport{options.tile ? options.tile->imageWidth : target.width,
                                 options.tile ? options.tile->imageHeight : target.height,
                                 options.jitterPixels};
+    const PlannerState freshState;
+    const PlannerState& plannerState = options.reuseMaps ? s.plannerState : freshState;
     FramePlan& plan = report.plan;
-    plan = planFrame(input, options.reuseMaps ? s.plannerState : PlannerState{}, viewport);
+    plan = planFrame(fitted ? *fitted : requested, plannerState, viewport);
+    // Maps that do not fit in GPU memory (or that the driver cannot draw into) are allocated smaller, with
+    // a warning, and the frame is planned, explained and drawn with the sizes that worked. Failed sizes
+    // are remembered by the passes, so later frames go straight to the size that works.
+    {
+        auto edit = [&]() -> FrameInput& {
+            if (!fitted)
+                fitted = requested;
+            return *fitted;
+        };
+        bool changed = false;
+        for (int lightIndex : plan.shadowedLights) {
+            const auto i = static_cast<std::size_t>(lightIndex);
+            const FrameInput& current = fitted ? *fitted : requested;
+            const int asked = std::max(current.lights[i].shadows.mapSize, kMinShadowMapSize);
+            const int size = s.shadows.allocate(current, lightIndex, report.warnings);
+            if (size == asked)
+                continue;
+            changed = true;
+            if (size == 0)
+                edit().lights[i].shadows.enabled = false;
+            else
+                edit().lights[i].shadows.mapSize = size;
+        }
+        bool reflectorDropped = false;
+        const bool capturing = std::any_of(plan.passes.begin(), plan.passes.end(),
+                                           [](const PlannedPass& p) { return p.kind == PassKind::Envmap; });
+        if (capturing) {
+            const FrameInput& current = fitted ? *fitted : requested;
+            const int asked = current.reflector->resolution;
+            const int n = s.reflector.allocate(*current.reflector, report.warnings);
+            if (n == 0)
+                reflectorDropped = true;
+            else if (n != asked) {
+                edit().reflector->resolution = n;
+                changed = true;
+            }
+        }
+        if (changed)
+            plan = planFrame(*fitted, plannerState, viewport);
+        if (reflectorDropped) {
+            const FrameInput& current = fitted ? *fitted : requested;
+            std::erase_if(plan.passes, [](const PlannedPass& p) { return p.kind == PassKind::Envmap; });
+            plan.skipped.push_back(
+                {current.reflector->name, "no environment map: none could be allocated (see the warnings)"});
+        }
+    }
+    const FrameInput& input = fitted ? *fitted : requested;
     glm::dmat4 projection = cameraProjection(input, viewport);
     if (options.tile) {
         const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,
@@ -207,7 +258,14 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
     // face instead of clamping (which would leak light or shadow along the seams).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    s.linear.ensure(target.width, target.height, GL_RGBA16F, false);
+    if (Status linear = s.linear.ensure(target.width, target.height, GL_RGBA16F, false); !linear) {
+        // Without its colour buffer the frame cannot be drawn at all: say so instead of an empty image.
+        report.error = "the frame could not be drawn: " + linear.error();
+        report.warnings.push_back(report.error);
+        plan.passes.clear();
+        report.cpuMs = msSince(frameStart);
+        return report;
+    }
     passes::MainPassContext ctx{
         s.meshProgram,          s.meshes,   s.textures, s.shadows, plan.shadowedLights, s.dummyShadow2D.id(),
         s.dummyShadowCube.id(), s.unitPlane};
@@ -320,7 +378,15 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
             if (view.ownTarget) {
                 gl::RenderTexture& texture = s.reflectionTextures[static_cast<std::size_t>(view.textureSlot)];
                 const bool blurred = input.mirrors[static_cast<std::size_t>(view.mirror)].blur > 0.0;
-                texture.ensure(target.width, target.height, GL_RGBA16F, true);
+                if (Status made = texture.ensure(target.width, target.height, GL_RGBA16F, true); !made) {
+                    // No texture to draw the reflection into: the mirror's passes (and those of views
+                    // inside it) are skipped and reported, with the reason.
+                    const std::string why = "its reflection texture: " + made.error();
+                    report.warnings.push_back("mirror " + quoted(pass.target) + ": no reflection, " + why);
+                    hidden[static_cast<std::size_t>(pass.view)] = why;
+                    ran[i] = false;
+                    break;
+                }
                 glBindFramebuffer(GL_FRAMEBUFFER, texture.framebuffer());
                 glViewport(0, 0, target.width, target.height);
                 // Blurred lookups read around the mirror's pixels too: clear the whole texture for them.
@@ -430,6 +496,8 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         report.memory.envmap = s.reflector.mapBytes(*input.reflector);
     s.meshes.purge();
     s.reflector.purge();
+    for (std::string& warning : s.meshes.takeWarnings())
+        report.warnings.push_back(std::move(warning));
     for (std::string& warning : s.textures.takeWarnings())
         report.warnings.push_back(std::move(warning));
     report.occlusionWaits = s.occlusion.waits();

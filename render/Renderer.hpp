@@ -60,10 +60,14 @@ struct TargetMemory {
 };
 
 struct FrameReport {
-    FramePlan plan;                    // the passes that ran, with their timings, and the skips with reasons
-    double cpuMs = 0.0;                // whole frame on the CPU, planning included
-    double gpuMs = -1.0;               // sum of the passes' GPU times, -1 if not measured
-    std::vector<std::string> warnings; // e.g. a texture that failed to load
+    FramePlan plan;      // the passes that ran, with their timings, and the skips with reasons
+    double cpuMs = 0.0;  // whole frame on the CPU, planning included
+    double gpuMs = -1.0; // sum of the passes' GPU times, -1 if not measured
+    // e.g. a texture that failed to load, or a map drawn smaller than asked because it did not fit in GPU
+    // memory ("light 'Lamp': the 8192² cube shadow map did not fit in GPU memory; using 4096²")
+    std::vector<std::string> warnings;
+    // Non-empty: the frame could not be drawn at all (its colour buffer did not fit); also a warning.
+    std::string error;
     TargetMemory memory;
     // Mirror masks whose occlusion test the frame waited for before drawing on (passes/MirrorOcclusion):
     // those no earlier frame saw, or saw hidden.

@@ -1,4 +1,8 @@
 // Copies the linear colour buffer to the output, sRGB-encoding it for 8-bit targets.
+// The one place the rasterizer's output is written: whatever reached the linear buffer (a NaN from a
+// blend, an over-bright value), only finite numbers leave (radiance.glsl).
+#include "radiance.glsl"
+
 in vec2 vUv;
 
 uniform sampler2D uColor;
@@ -12,6 +16,6 @@ vec3 linearToSrgb(vec3 c) {
 }
 
 void main() {
-    vec4 c = texelFetch(uColor, ivec2(gl_FragCoord.xy), 0);
+    vec4 c = storableRadiance(texelFetch(uColor, ivec2(gl_FragCoord.xy), 0));
     fragColor = vec4(uEncodeSrgb != 0 ? linearToSrgb(c.rgb) : c.rgb, 1.0);
 }

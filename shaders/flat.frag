@@ -1,6 +1,8 @@
 // A flat colour: mirror masks (colour writes off) and resetting a mirror's pixels to the background.
+#include "radiance.glsl"
+
 uniform vec4 uFlatColor;
 
 out vec4 fragColor;
 
-void main() { fragColor = uFlatColor; }
+void main() { fragColor = storableRadiance(uFlatColor); }

@@ -124,6 +124,20 @@ float shadowVisibility(int slot, bool cube, vec3 position, vec3 normal, vec3 lig
     return sum / float(kernel * kernel);
 }
 
+// GLSL's smoothstep is undefined for equal edges (a spot cone without blend): a step there, as the tracer
+// does (render/reference/Shading.cpp).
+float coneFactor(vec2 spotCos, float cosAngle) {
+    return spotCos.y > spotCos.x ? smoothstep(spotCos.x, spotCos.y, cosAngle) : step(spotCos.x, cosAngle);
+}
+
+// The unit vector along d, or zero where there is none: d is scaled by its largest component first, so a
+// light 1e19 away (|d|² would overflow a float) still has a direction; a zero d (the light sits on the
+// point) or an infinite one gives zero, which lights nothing.
+vec3 directionOf(vec3 d) {
+    float m = max(abs(d.x), max(abs(d.y), abs(d.z)));
+    return m > 0.0 && m < 3.0e38 ? normalize(d / m) : vec3(0.0);
+}
+
 struct SurfaceLight {
     vec3 diffuse;
     vec3 specular;
@@ -138,17 +152,21 @@ void addLight(int i, int slot, bool cube, vec3 position, vec3 normal, vec3 viewD
     if (uLightType[i] == LIGHT_DIRECTIONAL) {
         toLight = -uLightDirection[i];
     } else {
-        toLight = normalize(uLightPosition[i] - position);
+        toLight = directionOf(uLightPosition[i] - position);
         if (uLightType[i] == LIGHT_SPOT)
-            cone = smoothstep(uLightSpotCos[i].x, uLightSpotCos[i].y, dot(-toLight, uLightDirection[i]));
+            cone = coneFactor(uLightSpotCos[i], dot(-toLight, uLightDirection[i]));
     }
     float nDotL = dot(normal, toLight);
-    if (nDotL <= 0.0 || cone <= 0.0)
+    // Written so that a NaN (from a light no reader accepts) lights nothing either.
+    if (!(nDotL > 0.0) || !(cone > 0.0))
         return;
     float visibility = cone;
     if (slot >= 0 && uLightShadowSlot[i] >= 0)
         visibility *= shadowVisibility(slot, cube, position, normal, uLightPosition[i]);
-    vec3 halfway = normalize(toLight + viewDir);
+    // Light and eye exactly opposite have no halfway vector: the normal, as in the tracer.
+    vec3 halfway = directionOf(toLight + viewDir);
+    if (halfway == vec3(0.0))
+        halfway = normal;
     result.diffuse += uLightRadiance[i] * nDotL * visibility;
     result.specular += uLightRadiance[i] * pow(max(dot(normal, halfway), 0.0), shininess) * visibility;
 }

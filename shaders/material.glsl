@@ -5,6 +5,7 @@
 //   out      = emitted + base·(ambient·sceneAmbient + diffuse·Σ) + specular·specularColor·Σ
 // with the normal taken from a tangent-space normal map where the material has one and the mesh tangents.
 #include "lighting.glsl"
+#include "radiance.glsl"
 
 uniform vec3 uColor;
 uniform float uAmbient;

@@ -31,10 +31,11 @@ void main() {
     vec3 weight = uTint * r;
     if (uFromTexture != 0) {
         vec3 reflection = textureLod(uReflectionTexture, gl_FragCoord.xy / uTargetSize, uBlurLod).rgb;
-        fragColor = vec4(surface + weight * reflection, 1.0);
+        fragColor = vec4(storableRadiance(surface + weight * reflection), 1.0);
         reflectionWeight = vec4(0.0);
     } else {
-        fragColor = vec4(surface, 1.0);
-        reflectionWeight = vec4(weight, 0.0);
+        fragColor = vec4(storableRadiance(surface), 1.0);
+        // A NaN weight (reflectivity or tint) would make NaN of the reflection already in the buffer.
+        reflectionWeight = vec4(storableRadiance(weight), 0.0);
     }
 }

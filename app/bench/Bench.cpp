@@ -1,5 +1,6 @@
 #include "app/bench/Bench.hpp"
 
+#include "app/OutputPaths.hpp"
 #include "app/ProjectInput.hpp"
 #include "app/bench/Measure.hpp"
 #include "app/bench/Report.hpp"
@@ -29,8 +30,23 @@ using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
 
 int fail(const std::string& message) {
-    std::cerr << "speculum: bench: " << message << "\n";
+    printError("bench: " + message);
     return 1;
+}
+
+// A write into the staging folder that failed (render::AtomicFile's "<staging>/results.csv: the disk is
+// full (...); nothing was written") is told as the user sees it: the file in the output folder, whose
+// previous run is left as it was (the staging folder is discarded, nothing is committed).
+std::string outputMessage(std::string message, const StagedOutput& output) {
+    const std::string staging = output.staging().string();
+    if (!staging.empty()) {
+        for (std::size_t at = message.find(staging); at != std::string::npos; at = message.find(staging, at))
+            message.replace(at, staging.size(), output.folder().string());
+    }
+    const std::string fresh = "; nothing was written";
+    if (const std::size_t at = message.find(fresh); at != std::string::npos)
+        message.replace(at, fresh.size(), "; the previous output is unchanged");
+    return message;
 }
 
 void progress(const std::string& line) {
@@ -187,9 +203,15 @@ int run(const Options& options) {
     const int height = options.height > 0 ? options.height : options.quick ? 270 : 720;
     const Timing timing = options.quick ? Timing{2, 7} : Timing{2, 9};
 
-    auto project = loadProjectFrame(options.project, 0.0);
+    // Nothing an input is may be replaced: DIR holds neither the project nor a file it reads.
+    if (render::Status folder = checkOutputFolder(options.outDir, {options.project}); !folder)
+        return fail(folder.error());
+    auto project = loadProjectFrame(options.project, 0.0,
+                                    options.keepGoing ? MissingFiles::KeepGoing : MissingFiles::Fail);
     if (!project)
         return fail(project.error());
+    if (render::Status folder = checkOutputFolder(options.outDir, project->inputs); !folder)
+        return fail(folder.error());
     // The folder is checked (and made) before the long work, so a bad --out costs nothing.
     auto output = StagedOutput::begin(options.outDir);
     if (!output)
@@ -233,7 +255,7 @@ int run(const Options& options) {
     if (stop.requested())
         return interrupted();
     if (!references)
-        return fail(references.error());
+        return fail(outputMessage(references.error(), *output));
 
     // Warm the whole pipeline up once (shader variants, textures, meshes), so that the first configuration
     // measured is not the one that pays for it.
@@ -292,10 +314,10 @@ int run(const Options& options) {
         if (render::Status s =
                 render::metrics::writeErrorMap((staging / record.errorMap).string(), errors->difference);
             !s)
-            return fail(s.error());
+            return fail(outputMessage(s.error(), *output));
         if (config.family == Family::Scene)
             if (render::Status s = render::writeImage((staging / "render.png").string(), cost.image); !s)
-                return fail(s.error());
+                return fail(outputMessage(s.error(), *output));
         progress(summaryLine(step, record));
         records.push_back(std::move(record));
         keys.push_back(k);
@@ -330,11 +352,11 @@ int run(const Options& options) {
         return interrupted();
     progress("writing results, plots and the report");
     if (render::Status s = writeCsv((staging / "results.csv").string(), records); !s)
-        return fail(s.error());
+        return fail(outputMessage(s.error(), *output));
     if (render::Status s = writeJson((staging / "results.json").string(), run, records); !s)
-        return fail(s.error());
+        return fail(outputMessage(s.error(), *output));
     if (render::Status s = writeReportWithGui(staging, run, records); !s)
-        return fail(s.error());
+        return fail(outputMessage(s.error(), *output));
     // Plots and references of an earlier run in the same folder would mix two runs: they go too.
     auto earlierOutput = [](const std::string& name) {
         const bool png = name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0;

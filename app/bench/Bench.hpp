@@ -10,6 +10,7 @@ struct Options {
     bool quick = false;
     int width = 0; // 0: the default size (1280x720, or 480x270 with quick)
     int height = 0;
+    bool keepGoing = false; // go on without a missing or unreadable model or texture (a warning each)
 };
 
 // `speculum bench PROJECT --out DIR [--quick] [--size WxH]`: sweeps the settings the scene uses, measures

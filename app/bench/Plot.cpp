@@ -1,12 +1,15 @@
 #include "app/bench/Plot.hpp"
 
+#include "render/io/AtomicFile.hpp"
+#include "render/io/Printable.hpp"
+
+#include <QBuffer>
 #include <QFont>
 #include <QFontMetrics>
 #include <QGuiApplication>
 #include <QImage>
 #include <QPainter>
 #include <QPainterPath>
-#include <QSaveFile>
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -286,10 +289,14 @@ render::Status writePlot(const std::string& path, const PlotSpec& spec, int widt
     legendRow("the scene's own setting");
     p.end();
 
-    QSaveFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit())
-        return render::Error{path + ": cannot write the plot"};
-    return render::Done{};
+    // Encoded in memory, then staged and checked like every other file (render::AtomicFile): QSaveFile
+    // would commit a plot whose buffered write failed on a full disk.
+    QByteArray png;
+    QBuffer buffer(&png);
+    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG") || png.isEmpty())
+        return render::Error{render::printable(path, 200) + ": cannot encode the plot as PNG"};
+    return render::writeFileAtomically(
+        path, std::string_view(png.constData(), static_cast<std::size_t>(png.size())));
 }
 
 } // namespace speculum::app::bench

@@ -2,6 +2,7 @@
 
 #include "app/bench/Analysis.hpp"
 #include "app/bench/Plot.hpp"
+#include "render/io/AtomicFile.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -385,12 +386,8 @@ render::Status writeReport(const std::filesystem::path& folder, const RunInfo& r
           "none, pale yellow a quarter of the sRGB range or more).\n";
 
     const std::filesystem::path path = folder / "report.md";
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << md.str();
-    out.close();
-    if (!out)
-        return render::Error{path.string() + ": cannot write"};
-    return render::Done{};
+    // Staged and checked (render::AtomicFile): a full disk is an error, never a truncated report.
+    return render::writeFileAtomically(path.string(), md.str());
 }
 
 } // namespace speculum::app::bench

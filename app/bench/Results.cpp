@@ -1,5 +1,7 @@
 #include "app/bench/Results.hpp"
 
+#include "render/io/AtomicFile.hpp"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -42,13 +44,9 @@ QString q(const std::string& s) {
     return QString::fromStdString(s);
 }
 
+// Staged and checked (render::AtomicFile): a full disk is an error, never a truncated file.
 render::Status writeText(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out)
-        return render::Error{path + ": cannot write"};
-    return render::Done{};
+    return render::writeFileAtomically(path, text);
 }
 
 } // namespace

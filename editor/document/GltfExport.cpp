@@ -1,6 +1,8 @@
 #include "editor/document/GltfExport.hpp"
 
 #include "editor/document/GltfBuilder.hpp"
+#include "render/io/AtomicFile.hpp"
+#include "render/io/Printable.hpp"
 
 #include <QDir>
 #include <QFileInfo>
@@ -9,7 +11,6 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <unistd.h>
 
 namespace speculum::document {
@@ -52,49 +53,34 @@ struct PendingFile {
     fs::path target;
     const unsigned char* data;
     std::size_t size;
-    fs::path temp;
 };
 
-// Writes every file to a temporary sibling, then renames them into place, `files.back()` last (the file
-// that refers to the others). On failure nothing new is left behind.
-render::Status writeAllOrNothing(std::vector<PendingFile>& files) {
-    static int counter = 0;
-    auto removeTemps = [&] {
-        std::error_code ignored;
-        for (const PendingFile& f : files) {
-            if (!f.temp.empty()) {
-                fs::remove(f.temp, ignored);
-            }
+// Writes every file to its own staged temporary (render::AtomicFile) and finishes them all (fsync, close)
+// before any is renamed into place, `files.back()` last (the file that refers to the others). A full disk
+// or any other failed write stops the export while every previous file is still untouched, and no
+// temporary stays behind (AtomicFile removes its own).
+render::Status writeAllOrNothing(const std::vector<PendingFile>& files) {
+    std::vector<render::AtomicFile> staged;
+    staged.reserve(files.size());
+    for (const PendingFile& f : files) {
+        render::Result<render::AtomicFile> file = render::AtomicFile::create(f.target.string());
+        if (!file) {
+            return render::Error{file.error()};
         }
-    };
-    for (PendingFile& f : files) {
-        f.temp = f.target.parent_path() / ("." + f.target.filename().string() + ".tmp-" +
-                                           std::to_string(::getpid()) + "-" + std::to_string(++counter));
-        std::ofstream out(f.temp, std::ios::binary | std::ios::trunc);
-        if (out) {
-            out.write(reinterpret_cast<const char*>(f.data), static_cast<std::streamsize>(f.size));
-            out.close();
+        if (render::Status s = file->write(f.data, f.size); !s) {
+            return s;
         }
-        if (!out) {
-            const std::string reason = std::strerror(errno);
-            removeTemps();
-            return render::Error{f.target.string() + ": cannot write the file: " + reason};
+        if (render::Status s = file->finish(); !s) {
+            return s;
         }
+        staged.push_back(std::move(file).value());
     }
-    for (std::size_t i = 0; i < files.size(); ++i) {
-        std::error_code ec;
-        fs::rename(files[i].temp, files[i].target, ec);
-        if (ec) {
-            removeTemps();
-            // Companions already moved would point nowhere without the main file: take them back out.
-            std::error_code ignored;
-            for (std::size_t j = 0; j < i; ++j) {
-                fs::remove(files[j].target, ignored);
-            }
-            return render::Error{files[i].target.string() +
-                                 ": cannot move the finished file into place: " + ec.message()};
+    for (render::AtomicFile& file : staged) {
+        // Only a rename can fail here (in the same folder, after every byte is on disk): rare, and the
+        // companions renamed so far are complete files of this export.
+        if (render::Status s = file.commit(); !s) {
+            return s;
         }
-        files[i].temp.clear();
     }
     return render::Done{};
 }
@@ -106,14 +92,15 @@ render::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& 
     const QFileInfo info(path);
     const QString suffix = info.suffix().toLower();
     if (suffix != QStringLiteral("gltf") && suffix != QStringLiteral("glb")) {
-        return render::Error{path.toStdString() + ": expected a .gltf or .glb file name"};
+        return render::Error{render::printable(path.toStdString(), 200) +
+                             ": expected a .gltf or .glb file name"};
     }
     if (!info.absoluteDir().exists()) {
-        return render::Error{path.toStdString() + ": folder " + info.absolutePath().toStdString() +
-                             " does not exist"};
+        return render::Error{render::printable(path.toStdString(), 200) + ": folder " +
+                             render::printable(info.absolutePath().toStdString(), 200) + " does not exist"};
     }
     if (info.isDir()) {
-        return render::Error{path.toStdString() + ": is a folder"};
+        return render::Error{render::printable(path.toStdString(), 200) + ": is a folder"};
     }
     const fs::path target = fs::absolute(fs::path(path.toStdString()));
     const fs::path folder = target.parent_path();
@@ -136,19 +123,16 @@ render::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& 
     std::vector<unsigned char> glb;
     if (layout.binary) {
         glb = glbContainer(asset.json, asset.bin);
-        files.push_back({target, glb.data(), glb.size(), {}});
+        files.push_back({target, glb.data(), glb.size()});
     } else {
         if (!asset.bin.empty()) {
-            files.push_back({folder / layout.binUri, asset.bin.data(), asset.bin.size(), {}});
+            files.push_back({folder / layout.binUri, asset.bin.data(), asset.bin.size()});
         }
         for (const GltfAsset::ImageFile& image : asset.imageFiles) {
-            files.push_back(
-                {folder / image.fileName, image.image.bytes.data(), image.image.bytes.size(), {}});
+            files.push_back({folder / image.fileName, image.image.bytes.data(), image.image.bytes.size()});
         }
-        files.push_back({target,
-                         reinterpret_cast<const unsigned char*>(asset.json.constData()),
-                         static_cast<std::size_t>(asset.json.size()),
-                         {}});
+        files.push_back({target, reinterpret_cast<const unsigned char*>(asset.json.constData()),
+                         static_cast<std::size_t>(asset.json.size())});
     }
     return writeAllOrNothing(files);
 }

@@ -2,6 +2,8 @@
 
 #include "editor/document/ModelImport.hpp"
 #include "editor/document/ModelNodes.hpp"
+#include "render/io/FileKind.hpp"
+#include "render/io/Printable.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/mesh/Teapot.hpp"
 
@@ -37,7 +39,9 @@ render::Result<MeshLibrary::FileEntry*> MeshLibrary::entry(const std::string& ab
     if (!info.isFile()) {
         // Not cached: the file may appear later (being copied in, or the user fixes the path on disk).
         m_files.erase(absolutePath);
-        return render::Error{absolutePath + ": no such file"};
+        const render::Status regular = render::requireRegularFile(absolutePath);
+        return render::Error{render::quoted(absolutePath) + ": " +
+                             (regular ? std::string("no such file") : regular.error())};
     }
     const QDateTime modified = info.lastModified();
     const qint64 size = info.size();
@@ -92,8 +96,9 @@ render::Result<render::MeshHandle> MeshLibrary::file(const std::string& absolute
         if (flat) {
             e.flattened = render::freezeMesh(std::move(flat).value());
         } else {
-            e.flattenError = QFileInfo(QString::fromStdString(absolutePath)).fileName().toStdString() + ": " +
-                             flat.error();
+            e.flattenError =
+                render::quoted(QFileInfo(QString::fromStdString(absolutePath)).fileName().toStdString()) +
+                ": " + flat.error();
         }
     }
     if (!e.flattened) {
@@ -109,7 +114,8 @@ render::Result<render::MeshHandle> MeshLibrary::part(const std::string& absolute
         return render::Error{found.error()};
     }
     const ImportedModel& model = *found.value()->model;
-    const std::string name = QFileInfo(QString::fromStdString(absolutePath)).fileName().toStdString();
+    const std::string name =
+        render::quoted(QFileInfo(QString::fromStdString(absolutePath)).fileName().toStdString());
     if (part < 0 || part >= static_cast<int>(model.parts.size())) {
         return render::Error{name + ": part " + std::to_string(part) + " does not exist (the file has " +
                              std::to_string(model.parts.size()) + " parts, 0.." +

@@ -1,8 +1,11 @@
 #include "editor/document/ModelImport.hpp"
 
+#include "editor/document/ModelIoSystem.hpp"
 #include "editor/document/ModelMaterials.hpp"
 #include "editor/document/ModelNodes.hpp"
+#include "editor/document/ModelPrecheck.hpp"
 #include "editor/document/ModelWeld.hpp"
+#include "render/io/FileKind.hpp"
 #include "render/mesh/MeshRepair.hpp"
 
 #include <assimp/Importer.hpp>
@@ -10,13 +13,13 @@
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <cctype>
 #include <cmath>
 #include <exception>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
+#include <pthread.h>
 #include <sstream>
 #include <system_error>
 #include <utility>
@@ -26,11 +29,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using detail::ImportNotes;
+using detail::kMaxNodeDepth;
 using render::Error;
 using render::MeshData;
-
-// Deeper hierarchies than this are treated as broken (Assimp rejects cycles, but not absurd depth).
-constexpr int kMaxNodeDepth = 1024;
 
 glm::dmat4 toGlm(const aiMatrix4x4& m) {
     glm::dmat4 out(1.0);
@@ -162,28 +163,43 @@ render::Result<MeshData> convertPart(const aiMesh& source, bool wantTangents, Im
     return repaired;
 }
 
-// The file's node tree, meshes referenced by index; deeper than kMaxNodeDepth is an error.
-render::Status convertNode(const aiNode& node, const aiScene& scene, ImportedNode& out, int depth) {
-    if (depth > kMaxNodeDepth) {
-        return Error{"node hierarchy deeper than " + std::to_string(kMaxNodeDepth) + " levels"};
-    }
-    out.name = node.mName.C_Str();
-    out.local = toGlm(node.mTransformation);
-    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-        if (node.mMeshes != nullptr && node.mMeshes[i] < scene.mNumMeshes) {
-            out.parts.push_back(static_cast<int>(node.mMeshes[i]));
+// The file's node tree, meshes referenced by index; deeper than kMaxNodeDepth is an error. An explicit
+// stack, so that the depth costs no native stack.
+render::Status convertNode(const aiNode& root, const aiScene& scene, ImportedNode& rootOut) {
+    struct Item {
+        const aiNode* node;
+        ImportedNode* out;
+        int depth;
+    };
+    std::vector<Item> stack{{&root, &rootOut, 0}};
+    while (!stack.empty()) {
+        const Item item = stack.back();
+        stack.pop_back();
+        if (item.depth > kMaxNodeDepth) {
+            return Error{"node hierarchy deeper than " + std::to_string(kMaxNodeDepth) + " levels"};
         }
-    }
-    out.children.reserve(node.mNumChildren);
-    for (unsigned i = 0; i < node.mNumChildren; ++i) {
-        if (node.mChildren == nullptr || node.mChildren[i] == nullptr) {
+        const aiNode& node = *item.node;
+        ImportedNode& out = *item.out;
+        out.name = node.mName.C_Str();
+        out.local = toGlm(node.mTransformation);
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+            if (node.mMeshes != nullptr && node.mMeshes[i] < scene.mNumMeshes) {
+                out.parts.push_back(static_cast<int>(node.mMeshes[i]));
+            }
+        }
+        if (node.mChildren == nullptr) {
             continue;
         }
-        out.children.emplace_back();
-        if (const render::Status status =
-                convertNode(*node.mChildren[i], scene, out.children.back(), depth + 1);
-            !status) {
-            return status;
+        std::size_t valid = 0;
+        for (unsigned i = 0; i < node.mNumChildren; ++i) {
+            valid += node.mChildren[i] != nullptr ? 1 : 0;
+        }
+        out.children.resize(valid); // sized once: the pointers pushed below stay valid
+        std::size_t next = valid;
+        for (unsigned i = node.mNumChildren; i-- > 0;) { // reversed: children come off in file order
+            if (node.mChildren[i] != nullptr) {
+                stack.push_back({node.mChildren[i], &out.children[--next], item.depth + 1});
+            }
         }
     }
     return render::Done{};
@@ -216,89 +232,15 @@ double unitScaleOf(const aiScene& scene, const fs::path& file, ImportNotes& note
     return factor / 100.0;
 }
 
-// Text formats that declare their element counts up front (OFF, PLY) make some Assimp readers reserve
-// and loop over whatever the header says: invalid/OutOfMemory.off in Assimp's own test set declares
-// 353535235358 faces and keeps the 5.2 reader busy for about a minute. Every element takes at least one
-// byte, so a header that declares more elements than the file has bytes is refused before reading.
-std::string lowerExtension(const fs::path& file) {
-    std::string extension = file.extension().string();
-    for (char& c : extension) {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return extension;
-}
-
-render::Status checkDeclaredCounts(const fs::path& file, std::uintmax_t size) {
-    std::ifstream in(file, std::ios::binary);
-    std::string header(4096, '\0');
-    in.read(header.data(), static_cast<std::streamsize>(header.size()));
-    header.resize(static_cast<std::size_t>(in.gcount()));
-
-    std::vector<unsigned long long> counts;
-    const auto parseCount = [&](const std::string& token) {
-        // Digits only; anything longer than 19 digits would not fit and is absurd anyway.
-        if (token.empty() || token.size() > 19 ||
-            token.find_first_not_of("0123456789") != std::string::npos) {
-            return false;
-        }
-        counts.push_back(std::stoull(token));
-        return true;
-    };
-
-    if (header.rfind("ply", 0) == 0) {
-        // "element <name> <count>" lines up to "end_header".
-        std::istringstream lines(header);
-        std::string line;
-        while (std::getline(lines, line) && line.rfind("end_header", 0) != 0) {
-            std::istringstream words(line);
-            std::string keyword, name, count;
-            if (words >> keyword >> name >> count && keyword == "element" && !parseCount(count)) {
-                return Error{"invalid element count '" + count + "' in the PLY header"};
-            }
-        }
-    } else if (lowerExtension(file) == ".off") {
-        // [ST][C][N][4][n]OFF, an optional dimension for nOFF, then vertex, face and edge counts; '#'
-        // comments.
-        std::istringstream lines(header);
-        std::string line, all;
-        while (std::getline(lines, line)) {
-            all += line.substr(0, line.find('#')) + ' ';
-        }
-        std::istringstream words(all);
-        std::string keyword, token;
-        words >> keyword;
-        if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) {
-            return render::Done{}; // counts on the keyword line or an unusual header: let Assimp judge
-        }
-        const bool hasDimension = keyword.find('n') != std::string::npos;
-        if (hasDimension) {
-            words >> token;
-        }
-        for (int i = 0; i < 2 && words >> token; ++i) {
-            if (!parseCount(token)) {
-                return Error{"invalid element count '" + token + "' in the OFF header"};
-            }
-        }
-    }
-    for (unsigned long long count : counts) {
-        if (count > size || count > 3ull * render::kMaxMeshTriangles) {
-            return Error{"the header declares " + std::to_string(count) + " elements but the file has only " +
-                         std::to_string(size) + " bytes"};
-        }
-    }
-    return render::Done{};
-}
-
 render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes& notes,
                                             const Progress& progress) {
     std::error_code ec;
     const fs::path file(path);
-    const fs::file_status status = fs::status(file, ec);
-    if (ec || !fs::exists(status)) {
-        return Error{"file not found"};
-    }
-    if (!fs::is_regular_file(status)) {
-        return Error{"not a regular file"};
+    if (const render::Status regular = render::requireRegularFile(file); !regular) {
+        if (regular.error().find("folder") != std::string::npos) {
+            return Error{"it is a folder, not a regular file"};
+        }
+        return Error{regular.error()};
     }
     const auto size = fs::file_size(file, ec);
     if (ec) {
@@ -307,13 +249,16 @@ render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes
     if (size == 0) {
         return Error{"file is empty"};
     }
-    if (const render::Status declared = checkDeclaredCounts(file, size); !declared) {
-        return Error{declared.error()};
+    // What would exhaust memory, time or the stack inside Assimp is refused before it reads anything.
+    if (const render::Status checked = detail::precheckModel(file); !checked) {
+        return Error{checked.error()};
     }
 
     progress(0.0, "reading");
     Assimp::Importer importer;
     importer.SetProgressHandler(new ReadProgress(progress)); // the importer owns and deletes it
+    auto* io = new detail::ModelIoSystem(path);              // likewise
+    importer.SetIOHandler(io);
     // Drop points and lines entirely: the renderer and the tracer only know triangles.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
 
@@ -326,6 +271,11 @@ render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes
     const aiScene* scene = importer.ReadFile(path, kFlags);
     if (progress.cancelled()) {
         return Error{"cancelled"};
+    }
+    if (!io->refusal().empty()) {
+        // A FIFO or device among the files the model references: refused even where the reader would
+        // have gone on without it, and named rather than Assimp's "cannot open".
+        return Error{io->refusal()};
     }
     if (scene == nullptr) {
         std::string reason = importer.GetErrorString();
@@ -369,7 +319,7 @@ render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes
     }
 
     ImportedModel model;
-    if (const render::Status walked = convertNode(*scene->mRootNode, *scene, model.root, 0); !walked) {
+    if (const render::Status walked = convertNode(*scene->mRootNode, *scene, model.root); !walked) {
         return Error{walked.error()};
     }
 
@@ -436,6 +386,35 @@ render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes
     return model;
 }
 
+// Assimp's readers and its scene destructor recurse once per nesting level of the file, for formats no
+// precheck covers too (3DS and B3D chunks, AC3D kids, binary .x, ...). The whole import runs on a thread
+// with a large stack so that the nesting a file of plausible size can hold does not overflow it; the
+// stack is only reserved address space, pages are touched only as deep as a file goes.
+constexpr std::size_t kImportStackBytes = std::size_t(512) << 20;
+
+void* runBody(void* body) {
+    (*static_cast<std::function<void()>*>(body))();
+    return nullptr;
+}
+
+void runOnLargeStack(std::function<void()> body) {
+    for (const std::size_t bytes : {kImportStackBytes, kImportStackBytes / 8}) {
+        pthread_attr_t attributes;
+        if (pthread_attr_init(&attributes) != 0) {
+            break;
+        }
+        pthread_t thread;
+        const bool started = pthread_attr_setstacksize(&attributes, bytes) == 0 &&
+                             pthread_create(&thread, &attributes, &runBody, &body) == 0;
+        pthread_attr_destroy(&attributes);
+        if (started) {
+            pthread_join(thread, nullptr);
+            return;
+        }
+    }
+    body(); // no thread to be had (address space limit): the caller's stack it is
+}
+
 std::string displayName(const std::string& path) {
     return path.empty() ? std::string("(no file name)") : fs::path(path).filename().string();
 }
@@ -446,23 +425,28 @@ render::Result<ImportedModel> importModelFile(const std::string& path, std::vect
                                               const ImportControl& control) {
     const std::string name = displayName(path);
     ImportNotes notes;
-    try {
-        auto result = importChecked(path, notes, Progress{control});
-        for (const std::string& note : notes.all()) {
-            warnings.push_back(name + ": " + note);
+    render::Result<ImportedModel> result = Error{"the import did not run"};
+    runOnLargeStack([&] {
+        try {
+            result = importChecked(path, notes, Progress{control});
+        } catch (const std::bad_alloc&) {
+            result = Error{"out of memory while reading the model"};
+        } catch (const std::exception& e) {
+            result = Error{e.what()};
+        } catch (...) {
+            result = Error{"unexpected failure while reading the model"};
         }
-        if (!result) {
-            if (result.error() == "cancelled") {
-                return Error{"cancelled"};
-            }
-            return Error{name + ": " + result.error()};
-        }
-        return result;
-    } catch (const std::bad_alloc&) {
-        return Error{name + ": out of memory while reading the model"};
-    } catch (const std::exception& e) {
-        return Error{name + ": " + e.what()};
+    });
+    for (const std::string& note : notes.all()) {
+        warnings.push_back(name + ": " + note);
     }
+    if (!result) {
+        if (result.error() == "cancelled") {
+            return Error{"cancelled"};
+        }
+        return Error{name + ": " + result.error()};
+    }
+    return result;
 }
 
 render::Result<MeshData> importModel(const std::string& path, std::vector<std::string>& warnings) {

@@ -26,12 +26,27 @@ glm::dmat4 localMatrix(const Transform& transform) {
     return localMatrix(transform.translate, transform.rotate, transform.scale);
 }
 
+namespace {
+
+// Where t falls within one period, in (-1, 1): fmod keeps sin and cos accurate at large times, and a
+// period that is not a positive finite number (or a time that is not finite) means no motion rather than
+// sin(inf) = NaN.
+double phase(double timeSeconds, double period) {
+    if (!(period > 0.0) || !std::isfinite(period) || !std::isfinite(timeSeconds)) {
+        return 0.0;
+    }
+    const double fraction = std::fmod(timeSeconds, period) / period;
+    return std::isfinite(fraction) ? fraction : 0.0;
+}
+
+} // namespace
+
 double bounceOffset(const BounceAnimation& bounce, double timeSeconds) {
-    return bounce.height * std::abs(std::sin(std::numbers::pi * timeSeconds / bounce.period));
+    return bounce.height * std::abs(std::sin(std::numbers::pi * phase(timeSeconds, bounce.period)));
 }
 
 glm::dvec3 orbitPosition(const OrbitAnimation& orbit, double timeSeconds) {
-    const double angle = 2.0 * std::numbers::pi * timeSeconds / orbit.period;
+    const double angle = 2.0 * std::numbers::pi * phase(timeSeconds, orbit.period);
     return orbit.center + orbit.radius * glm::dvec3(std::cos(angle), 0.0, std::sin(angle));
 }
 

@@ -1,5 +1,6 @@
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
+#include "render/SceneLimits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,14 @@ namespace speculum::document::groups {
 // components are in ReflectionProperties.cpp.
 
 using namespace makers;
+
+// The project reader's limits (render/SceneLimits.hpp), so an edit never makes a file that does not load.
+namespace {
+const NumberRange kCoordinate{-render::kMaxCoordinate, render::kMaxCoordinate};
+const NumberRange kLength{0.0, render::kMaxCoordinate};
+const NumberRange kIntensity{0.0, render::kMaxIntensity};
+const NumberRange kPeriod{render::kMinPeriod, render::kMaxPeriod};
+} // namespace
 
 ComponentInfo nodeGroup() {
     ComponentInfo c;
@@ -44,7 +53,7 @@ ComponentInfo transformGroup() {
     using V3 = Access<NodeData, glm::dvec3>;
     c.properties.push_back(vector<NodeData, 3>(
         QStringLiteral("transform.translate"), QStringLiteral("Translate"),
-        V3([](NodeData& d) { return &d.transform.translate; }), {}, QStringLiteral(" u")));
+        V3([](NodeData& d) { return &d.transform.translate; }), kCoordinate, QStringLiteral(" u")));
     c.properties.push_back(vector<NodeData, 3>(QStringLiteral("transform.rotate"), QStringLiteral("Rotate"),
                                                V3([](NodeData& d) { return &d.transform.rotate; }), {},
                                                QStringLiteral("°")));
@@ -174,15 +183,15 @@ ComponentInfo materialGroup() {
                                            in(&NodeData::material, &M::color)));
     c.properties.push_back(
         slider(number<NodeData>(QStringLiteral("material.ambient"), QStringLiteral("Ambient"),
-                                in(&NodeData::material, &M::ambient), {0.0}),
+                                in(&NodeData::material, &M::ambient), kIntensity),
                0.0, 2.0));
     c.properties.push_back(
         slider(number<NodeData>(QStringLiteral("material.diffuse"), QStringLiteral("Diffuse"),
-                                in(&NodeData::material, &M::diffuse), {0.0}),
+                                in(&NodeData::material, &M::diffuse), kIntensity),
                0.0, 2.0));
     c.properties.push_back(
         slider(number<NodeData>(QStringLiteral("material.specular"), QStringLiteral("Specular"),
-                                in(&NodeData::material, &M::specular), {0.0}),
+                                in(&NodeData::material, &M::specular), kIntensity),
                0.0, 2.0));
     c.properties.push_back(
         slider(number<NodeData>(QStringLiteral("material.shininess"), QStringLiteral("Shininess"),
@@ -260,7 +269,7 @@ ComponentInfo lightGroup() {
                                            in(&NodeData::light, &L::color)));
     c.properties.push_back(
         slider(number<NodeData>(QStringLiteral("light.intensity"), QStringLiteral("Intensity"),
-                                in(&NodeData::light, &L::intensity), {0.0}),
+                                in(&NodeData::light, &L::intensity), kIntensity),
                0.0, 5.0));
     const auto isSpot = [](const NodeData& d) { return d.light && d.light->type == LightType::Spot; };
     c.properties.push_back(
@@ -353,11 +362,11 @@ ComponentInfo animationGroup() {
     const auto hasOrbit = [](const NodeData& d) { return d.animation && d.animation->orbit; };
     c.properties.push_back(number<NodeData>(QStringLiteral("animation.bounce.height"),
                                             QStringLiteral("Bounce height"), bounce(&BounceAnimation::height),
-                                            {}, QStringLiteral(" u")));
+                                            kCoordinate, QStringLiteral(" u")));
     c.properties.back().visible = hasBounce;
     c.properties.push_back(number<NodeData>(QStringLiteral("animation.bounce.period"),
                                             QStringLiteral("Bounce period"), bounce(&BounceAnimation::period),
-                                            {0.0, kInf, true}, QStringLiteral(" s")));
+                                            kPeriod, QStringLiteral(" s")));
     c.properties.back().visible = hasBounce;
     c.properties.push_back(boolean<NodeData>(
         QStringLiteral("animation.orbit"), QStringLiteral("Orbit"),
@@ -377,15 +386,15 @@ ComponentInfo animationGroup() {
         }));
     c.properties.push_back(vector<NodeData, 3>(QStringLiteral("animation.orbit.center"),
                                                QStringLiteral("Orbit centre"), orbit(&OrbitAnimation::center),
-                                               {}, QStringLiteral(" u")));
+                                               kCoordinate, QStringLiteral(" u")));
     c.properties.back().visible = hasOrbit;
     c.properties.push_back(number<NodeData>(QStringLiteral("animation.orbit.radius"),
                                             QStringLiteral("Orbit radius"), orbit(&OrbitAnimation::radius),
-                                            {}, QStringLiteral(" u")));
+                                            kLength, QStringLiteral(" u")));
     c.properties.back().visible = hasOrbit;
     c.properties.push_back(number<NodeData>(QStringLiteral("animation.orbit.period"),
                                             QStringLiteral("Orbit period"), orbit(&OrbitAnimation::period),
-                                            {0.0, kInf, true}, QStringLiteral(" s")));
+                                            kPeriod, QStringLiteral(" s")));
     c.properties.back().visible = hasOrbit;
     return c;
 }

@@ -1,4 +1,10 @@
+#include "editor/document/JsonDuplicateKeys.hpp"
+#include "editor/document/NodeMath.hpp"
 #include "editor/document/ProjectFile.hpp"
+#include "editor/document/SceneChecks.hpp"
+#include "render/SceneLimits.hpp"
+#include "render/io/FileKind.hpp"
+#include "render/io/Printable.hpp"
 
 #include <QFile>
 #include <QFileInfo>
@@ -29,8 +35,10 @@ std::string num(double v) {
     return QString::number(v, 'g', QLocale::FloatingPointShortest).toStdString();
 }
 
+// Keys come from the file (unknown fields are named in warnings): shown escaped, never raw.
 std::string join(const std::string& path, const QString& key) {
-    return path.empty() ? key.toStdString() : path + "." + key.toStdString();
+    const std::string shown = render::printable(key.toStdString(), 40);
+    return path.empty() ? shown : path + "." + shown;
 }
 
 std::string indexed(const std::string& path, qsizetype i) {
@@ -48,6 +56,58 @@ double readNumber(const QJsonValue& v, const std::string& path) {
         fail(path, "expected a finite number");
     }
     return d;
+}
+
+// A length or position: every coordinate within ±kMaxCoordinate (render/SceneLimits.hpp).
+void requireCoordinate(double v, const std::string& path) {
+    if (std::abs(v) > render::kMaxCoordinate) {
+        fail(path, "must be within ±" + num(render::kMaxCoordinate) +
+                       " (the largest coordinate a scene may "
+                       "hold), got " +
+                       num(v));
+    }
+}
+
+template <int N>
+void requireCoordinates(const glm::vec<N, double>& v, const std::string& path) {
+    for (int i = 0; i < N; ++i) {
+        if (std::abs(v[i]) > render::kMaxCoordinate) {
+            fail(path, "coordinates must be within ±" + num(render::kMaxCoordinate) +
+                           " (the largest coordinate a scene may hold), got " + num(v[i]));
+        }
+    }
+}
+
+// A factor that multiplies light (intensities, material coefficients): 0..kMaxIntensity.
+void requireIntensity(double v, const std::string& path) {
+    if (v < 0.0) {
+        fail(path, "must not be negative, got " + num(v));
+    }
+    if (v > render::kMaxIntensity) {
+        fail(path, "must be at most " + num(render::kMaxIntensity) + ", got " + num(v));
+    }
+}
+
+// Seconds of an animation cycle: a tiny period makes t / period overflow, a huge one stands still.
+void requirePeriod(double v, const std::string& path) {
+    if (!(v > 0.0)) {
+        fail(path, "must be greater than 0, got " + num(v));
+    }
+    if (v < render::kMinPeriod || v > render::kMaxPeriod) {
+        fail(path, "must be in " + num(render::kMinPeriod) + ".." + num(render::kMaxPeriod) +
+                       " seconds, got " + num(v));
+    }
+}
+
+// A positive extent (mirror size, proxy radius): kMinScale..kMaxCoordinate.
+void requireExtent(double v, const std::string& path, const char* what) {
+    if (!(v > 0.0)) {
+        fail(path, std::string(what) + " must be greater than 0");
+    }
+    if (v < render::kMinScale || v > render::kMaxCoordinate) {
+        fail(path, std::string(what) + " must be in " + num(render::kMinScale) + ".." +
+                       num(render::kMaxCoordinate) + ", got " + num(v));
+    }
 }
 
 int readInt(const QJsonValue& v, const std::string& path) {
@@ -88,12 +148,6 @@ void requireRange(double v, double lo, double hi, const std::string& path) {
     }
 }
 
-void requirePositive(double v, const std::string& path) {
-    if (!(v > 0.0)) {
-        fail(path, "must be greater than 0, got " + num(v));
-    }
-}
-
 void requireNonNegative(double v, const std::string& path) {
     if (v < 0.0) {
         fail(path, "must not be negative, got " + num(v));
@@ -123,7 +177,8 @@ E readEnum(const QJsonValue& v, const std::string& path, const char* what,
     const std::string s = readString(v, path);
     const std::optional<E> e = parse(s);
     if (!e) {
-        fail(path, std::string("unknown ") + what + " \"" + s + "\" (expected " + expected + ")");
+        fail(path, std::string("unknown ") + what + " \"" + render::printable(s, 40) + "\" (expected " +
+                       expected + ")");
     }
     return *e;
 }
@@ -197,11 +252,60 @@ public:
         if (const QJsonValue v = o.get("nodes"); !v.isUndefined()) {
             scene.nodes = readNodeList(v, "nodes");
         }
+        checkWorld(scene.nodes, "nodes", glm::dmat4(1.0), 1.0, 1.0);
         scene.extra = o.finish();
         return scene;
     }
 
 private:
+    // Each number is in range on its own; composed down the tree they may still not be: scales multiply
+    // (five levels of 1e9 overflow a float) and a parent's scale stretches its children's translations.
+    // Bounds in the singular values of the world matrix: between the products of the smallest and of the
+    // largest |scale| along the chain.
+    void checkWorld(const std::vector<NodeTree>& nodes, const std::string& listPath, const glm::dmat4& parent,
+                    double parentMax, double parentMin) {
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            const NodeTree& node = nodes[i];
+            const std::string path = indexed(listPath, static_cast<qsizetype>(i));
+            const Transform& t = node.data.transform;
+            const glm::dvec3 s = glm::abs(t.scale);
+            const double worldMax = parentMax * std::max({s.x, s.y, s.z});
+            const double worldMin = parentMin * std::min({s.x, s.y, s.z});
+            const std::string who = node.data.name.empty() ? std::string("the unnamed node")
+                                                           : "node " + render::quoted(node.data.name, 40);
+            if (worldMax > render::kMaxScale) {
+                fail(path, who + ": its world scale (its own scale times its parents') reaches " +
+                               num(worldMax) + ", more than " + num(render::kMaxScale));
+            }
+            if (worldMin < render::kMinScale) {
+                fail(path, who + ": its world scale (its own scale times its parents') falls to " +
+                               num(worldMin) + ", less than " + num(render::kMinScale));
+            }
+            // Where its origin can be, animations included, in the parent's space and then in the world.
+            glm::dvec3 local = t.translate;
+            double reach = 0.0;
+            if (const auto& a = node.data.animation) {
+                if (a->orbit) {
+                    local = a->orbit->center;
+                    reach += a->orbit->radius;
+                }
+                if (a->bounce) {
+                    reach += std::abs(a->bounce->height);
+                }
+            }
+            const glm::dvec3 origin = glm::dvec3(parent * glm::dvec4(local, 1.0));
+            for (int k = 0; k < 3; ++k) {
+                const double extreme = std::abs(origin[k]) + parentMax * reach;
+                if (!(extreme <= render::kMaxCoordinate)) {
+                    fail(path, who + ": its world position reaches " + num(extreme) + ", beyond ±" +
+                                   num(render::kMaxCoordinate) +
+                                   " (its parents' scales multiply its translation and animation)");
+                }
+            }
+            checkWorld(node.children, path + ".children", parent * localMatrix(t), worldMax, worldMin);
+        }
+    }
+
     // Checked (and the file upgraded to the current version) before the reader runs, by parseProject.
     void readHeader(ObjectReader& o) {
         o.get("format");
@@ -229,20 +333,10 @@ private:
         o.optional("fovY", c.fovY, readNumber);
         o.optional("near", c.near, readNumber);
         o.optional("far", c.far, readNumber);
-        if (!(c.fovY > 0.0 && c.fovY < 180.0)) {
-            fail(o.at("fovY"), "must be between 0 and 180 degrees (exclusive), got " + num(c.fovY));
-        }
-        requirePositive(c.near, o.at("near"));
-        if (!(c.far > c.near)) {
-            fail(o.at("far"), "must be greater than near (" + num(c.near) + "), got " + num(c.far));
-        }
-        const glm::dvec3 view = c.target - c.position;
-        if (glm::length(view) == 0.0) {
-            fail(o.at("target"), "must differ from the camera position");
-        }
-        const glm::dvec3 side = glm::cross(view, c.up);
-        if (glm::length(c.up) == 0.0 || glm::length(side) <= 1e-12 * glm::length(view) * glm::length(c.up)) {
-            fail(o.at("up"), "must be non-zero and not parallel to the view direction");
+        // The same rules as the inspector's (SceneChecks.hpp), computed so that they cannot overflow:
+        // the field named is the one that is wrong.
+        if (const std::optional<FieldProblem> problem = cameraProblem(c)) {
+            fail(join(o.path(), QString::fromStdString(problem->field)), problem->what);
         }
         c.extra = o.finish();
         return c;
@@ -307,9 +401,17 @@ private:
         o.optional("translate", t.translate, readVec<3>);
         o.optional("rotate", t.rotate, readVec<3>);
         o.optional("scale", t.scale, readVec<3>);
+        requireCoordinates<3>(t.translate, o.at("translate"));
+        // Rotations are turned into matrices in double (NodeMath): any finite angle gives a rotation.
         for (int i = 0; i < 3; ++i) {
             if (t.scale[i] == 0.0) {
                 fail(o.at("scale"), "components must be non-zero (a zero scale flattens the node)");
+            }
+            const double s = std::abs(t.scale[i]);
+            if (s < render::kMinScale || s > render::kMaxScale) {
+                fail(o.at("scale"), "components must be in " + num(render::kMinScale) + ".." +
+                                        num(render::kMaxScale) + " in size (negative mirrors), got " +
+                                        num(t.scale[i]));
             }
         }
         t.extra = o.finish();
@@ -385,11 +487,11 @@ private:
         MaterialComponent m;
         o.optional("color", m.color, readColor);
         o.optional("ambient", m.ambient, readNumber);
-        requireNonNegative(m.ambient, o.at("ambient"));
+        requireIntensity(m.ambient, o.at("ambient"));
         o.optional("diffuse", m.diffuse, readNumber);
-        requireNonNegative(m.diffuse, o.at("diffuse"));
+        requireIntensity(m.diffuse, o.at("diffuse"));
         o.optional("specular", m.specular, readNumber);
-        requireNonNegative(m.specular, o.at("specular"));
+        requireIntensity(m.specular, o.at("specular"));
         o.optional("shininess", m.shininess, readNumber);
         requireRange(m.shininess, 0.0, 10000.0, o.at("shininess"));
         o.optional("emission", m.emission, readColor);
@@ -414,7 +516,8 @@ private:
             const std::string s = readString(a, o.at("alphaMode"));
             const std::optional<AlphaMode> mode = alphaModeFromString(s);
             if (!mode) {
-                fail(o.at("alphaMode"), "expected \"opaque\", \"mask\" or \"blend\", got \"" + s + "\"");
+                fail(o.at("alphaMode"),
+                     "expected \"opaque\", \"mask\" or \"blend\", got \"" + render::printable(s, 40) + "\"");
             }
             m.alphaMode = *mode;
         }
@@ -449,7 +552,7 @@ private:
         });
         o.optional("color", l.color, readColor);
         o.optional("intensity", l.intensity, readNumber);
-        requireNonNegative(l.intensity, o.at("intensity"));
+        requireIntensity(l.intensity, o.at("intensity"));
         o.optional("spotAngle", l.spotAngle, readNumber);
         if (!(l.spotAngle > 0.0 && l.spotAngle <= 90.0)) {
             fail(o.at("spotAngle"), "must be in (0, 90] degrees, got " + num(l.spotAngle));
@@ -467,9 +570,8 @@ private:
         ObjectReader o(v, path, m_warnings);
         MirrorComponent m;
         o.optional("size", m.size, readVec<2>);
-        if (!(m.size.x > 0.0 && m.size.y > 0.0)) {
-            fail(o.at("size"), "extents must be greater than 0");
-        }
+        requireExtent(m.size.x, o.at("size"), "extents");
+        requireExtent(m.size.y, o.at("size"), "extents");
         o.optional("reflectivity", m.reflectivity, readNumber);
         requireRange(m.reflectivity, 0.0, 1.0, o.at("reflectivity"));
         o.optional("technique", m.technique, [](const QJsonValue& t, const std::string& p) {
@@ -524,7 +626,10 @@ private:
                                           "sphere or box");
         if (p.shape == ParallaxShape::Sphere) {
             o.optional("radius", p.radius, readNumber);
-            requirePositive(p.radius, o.at("radius"));
+            if (!(p.radius > 0.0)) {
+                fail(o.at("radius"), "must be greater than 0, got " + num(p.radius));
+            }
+            requireExtent(p.radius, o.at("radius"), "the radius");
         } else {
             o.optional("min", p.min, readVec<3>);
             o.optional("max", p.max, readVec<3>);
@@ -533,6 +638,8 @@ private:
                     fail(o.at(p.min[i] < 0.0 ? "max" : "min"),
                          "the box must contain the capture point (min < 0 < max on every axis)");
                 }
+                requireExtent(-p.min[i], o.at("min"), "the distances to the box's faces");
+                requireExtent(p.max[i], o.at("max"), "the distances to the box's faces");
             }
         }
         p.extra = o.finish();
@@ -546,8 +653,9 @@ private:
             ObjectReader bo(b, o.at("bounce"), m_warnings);
             BounceAnimation bounce;
             bo.optional("height", bounce.height, readNumber);
+            requireCoordinate(bounce.height, bo.at("height"));
             bo.optional("period", bounce.period, readNumber);
-            requirePositive(bounce.period, bo.at("period"));
+            requirePeriod(bounce.period, bo.at("period"));
             bounce.extra = bo.finish();
             a.bounce = bounce;
         }
@@ -555,10 +663,12 @@ private:
             ObjectReader ro(r, o.at("orbit"), m_warnings);
             OrbitAnimation orbit;
             ro.optional("center", orbit.center, readVec<3>);
+            requireCoordinates<3>(orbit.center, ro.at("center"));
             ro.optional("radius", orbit.radius, readNumber);
             requireNonNegative(orbit.radius, ro.at("radius"));
+            requireCoordinate(orbit.radius, ro.at("radius"));
             ro.optional("period", orbit.period, readNumber);
-            requirePositive(orbit.period, ro.at("period"));
+            requirePeriod(orbit.period, ro.at("period"));
             orbit.extra = ro.finish();
             a.orbit = orbit;
         }
@@ -607,6 +717,11 @@ render::Result<SceneData> parseProject(const QByteArray& json, const QDir& baseD
     if (!document.isObject()) {
         return render::Error{"expected a JSON object at the top level"};
     }
+    // The parser keeps one value of a repeated key and drops the other without a word; refused instead.
+    if (const std::optional<std::string> duplicate =
+            findDuplicateKey(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
+        return render::Error{*duplicate};
+    }
     QJsonObject root = document.object();
     const render::Result<int> version = readProjectHeader(root);
     if (!version) {
@@ -625,15 +740,15 @@ render::Result<SceneData> parseProject(const QByteArray& json, const QDir& baseD
 }
 
 render::Result<SceneData> loadProject(const QString& path, std::vector<std::string>& warnings) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        return render::Error{"cannot open " + path.toStdString() + ": " + file.errorString().toStdString()};
+    // Only a regular file, opened without blocking: a FIFO or /dev/stdin would hang the CLI and the
+    // editor's GUI thread for good. A project is text; 256 MiB is far beyond any real one.
+    const render::Result<std::string> bytes =
+        render::readRegularFile(QFile::encodeName(path).toStdString(), std::uintmax_t(256) << 20);
+    if (!bytes) {
+        return render::Error{render::printable(QFileInfo(path).fileName().toStdString()) + ": " +
+                             bytes.error()};
     }
-    const QByteArray bytes = file.readAll();
-    if (file.error() != QFileDevice::NoError) {
-        return render::Error{"cannot read " + path.toStdString() + ": " + file.errorString().toStdString()};
-    }
-    return parseProject(bytes, QFileInfo(path).absoluteDir(), warnings);
+    return parseProject(QByteArray::fromStdString(*bytes), QFileInfo(path).absoluteDir(), warnings);
 }
 
 render::Status openProject(Scene& scene, const QString& path, std::vector<std::string>& warnings) {

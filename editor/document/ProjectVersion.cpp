@@ -1,5 +1,7 @@
 #include "editor/document/ProjectVersion.hpp"
 
+#include "render/io/Printable.hpp"
+
 #include <QJsonDocument>
 #include <QLocale>
 #include <cassert>
@@ -15,7 +17,7 @@ std::string shown(const QJsonValue& v) {
         return QString::number(v.toDouble(), 'g', QLocale::FloatingPointShortest).toStdString();
     }
     if (v.isString()) {
-        return "\"" + v.toString().toStdString() + "\"";
+        return "\"" + render::printable(v.toString().toStdString(), 40) + "\""; // file text: escaped
     }
     if (v.isBool()) {
         return v.toBool() ? "true" : "false";

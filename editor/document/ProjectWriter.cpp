@@ -1,9 +1,10 @@
 #include "editor/document/JsonWriter.hpp"
 #include "editor/document/ProjectFile.hpp"
+#include "render/io/AtomicFile.hpp"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
-#include <QSaveFile>
 
 namespace speculum::document {
 
@@ -309,26 +310,12 @@ render::Status saveProject(const SceneData& data, const QString& path) {
         return render::Error{"cannot save " + path.toStdString() + ": " + check.error()};
     }
 
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        return render::Error{"cannot write " + path.toStdString() + ": " + file.errorString().toStdString()};
-    }
-    if (file.write(bytes) != bytes.size()) {
-        const std::string reason = file.errorString().toStdString();
-        file.cancelWriting();
-        return render::Error{"cannot write " + path.toStdString() + ": " + reason};
-    }
-    // Flush first and check it: QSaveFile (Qt 6.4) commits a file whose buffered write failed part-way
-    // (a full disk, a file-size limit), replacing the previous file with a truncated one.
-    if (!file.flush()) {
-        const std::string reason = file.errorString().toStdString();
-        file.cancelWriting();
-        return render::Error{"cannot write " + path.toStdString() + ": " + reason};
-    }
-    if (!file.commit()) {
-        return render::Error{"cannot write " + path.toStdString() + ": " + file.errorString().toStdString()};
-    }
-    return render::Done{};
+    // One mechanism for every file speculum writes (render::AtomicFile): a temporary in the same folder,
+    // every write, the fsync and the close checked, then a rename. QSaveFile (Qt 6.4) was not enough on
+    // its own: it commits a file whose buffered write failed part-way unless flush() is checked.
+    return render::writeFileAtomically(
+        QFile::encodeName(path).toStdString(),
+        std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
 }
 
 render::Status saveProject(const Scene& scene, const QString& path) {

@@ -2,9 +2,12 @@
 
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
+#include "editor/document/SceneChecks.hpp"
+#include "render/SceneLimits.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <map>
 
 namespace speculum::document {
 
@@ -43,6 +46,7 @@ std::vector<Property<SceneSettings>> makeSettingsProperties() {
 
 std::vector<Property<CameraData>> makeCameraProperties() {
     std::vector<Property<CameraData>> list;
+    const NumberRange kCoordinate{-render::kMaxCoordinate, render::kMaxCoordinate};
     // Position and target must differ and up must not be parallel to the view: checked on the whole camera.
     const auto checkCamera = [](Property<CameraData> p) {
         auto set = p.set;
@@ -51,20 +55,14 @@ std::vector<Property<CameraData>> makeCameraProperties() {
             if (auto s = set(copy, v); !s) {
                 return s;
             }
-            const glm::dvec3 view = copy.target - copy.position;
-            if (glm::length(view) == 0.0) {
-                return render::Error{"The camera target must differ from its position"};
-            }
-            const glm::dvec3 side = glm::cross(view, copy.up);
-            if (glm::length(copy.up) == 0.0 ||
-                glm::length(side) <= 1e-12 * glm::length(view) * glm::length(copy.up)) {
-                return render::Error{
-                    "The camera's up must be non-zero and not parallel to the view direction"};
-            }
-            if (!(copy.far > copy.near)) {
-                return render::Error{QStringLiteral("Far must be greater than near (%1), got %2")
-                                         .arg(formatNumber(copy.near), formatNumber(copy.far))
-                                         .toStdString()};
+            // The project reader's rule for the whole camera (SceneChecks.hpp), word for word.
+            if (const std::optional<FieldProblem> problem = cameraProblem(copy)) {
+                static const std::map<std::string, std::string> labels{
+                    {"position", "Position"},  {"target", "Target"}, {"up", "Up"},
+                    {"fovY", "Field of view"}, {"near", "Near"},     {"far", "Far"}};
+                const auto label = labels.find(problem->field);
+                return render::Error{"Camera " + (label != labels.end() ? label->second : problem->field) +
+                                     " " + problem->what};
             }
             c = std::move(copy);
             return render::Done{};
@@ -72,14 +70,14 @@ std::vector<Property<CameraData>> makeCameraProperties() {
         return p;
     };
     using V3 = Access<CameraData, glm::dvec3>;
-    list.push_back(checkCamera(
-        vector<CameraData, 3>(QStringLiteral("camera.position"), QStringLiteral("Position"),
-                              V3([](CameraData& c) { return &c.position; }), {}, QStringLiteral(" u"))));
-    list.push_back(checkCamera(
-        vector<CameraData, 3>(QStringLiteral("camera.target"), QStringLiteral("Target"),
-                              V3([](CameraData& c) { return &c.target; }), {}, QStringLiteral(" u"))));
+    list.push_back(checkCamera(vector<CameraData, 3>(
+        QStringLiteral("camera.position"), QStringLiteral("Position"),
+        V3([](CameraData& c) { return &c.position; }), kCoordinate, QStringLiteral(" u"))));
+    list.push_back(checkCamera(vector<CameraData, 3>(
+        QStringLiteral("camera.target"), QStringLiteral("Target"),
+        V3([](CameraData& c) { return &c.target; }), kCoordinate, QStringLiteral(" u"))));
     list.push_back(checkCamera(vector<CameraData, 3>(QStringLiteral("camera.up"), QStringLiteral("Up"),
-                                                     V3([](CameraData& c) { return &c.up; }), {})));
+                                                     V3([](CameraData& c) { return &c.up; }), kCoordinate)));
     list.push_back(checkCamera(slider(number<CameraData>(
                                           QStringLiteral("camera.fovY"), QStringLiteral("Field of view"),
                                           [](CameraData& c) { return &c.fovY; }, {0.0, 180.0, true, true},
@@ -87,7 +85,9 @@ std::vector<Property<CameraData>> makeCameraProperties() {
                                       10.0, 120.0, 1, 1.0)));
     list.push_back(checkCamera(number<CameraData>(
         QStringLiteral("camera.near"), QStringLiteral("Near"), [](CameraData& c) { return &c.near; },
-        {0.0, kInf, true}, QStringLiteral(" u"))));
+        {render::kMinNear, render::kMaxCoordinate}, QStringLiteral(" u"),
+        QStringLiteral("At most %1 times nearer than Far (depth-buffer precision)")
+            .arg(formatNumber(render::kMaxFarNearRatio)))));
     list.push_back(checkCamera(number<CameraData>(
         QStringLiteral("camera.far"), QStringLiteral("Far"), [](CameraData& c) { return &c.far; },
         {0.0, kInf, true}, QStringLiteral(" u"))));

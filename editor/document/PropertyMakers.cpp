@@ -1,5 +1,8 @@
 #include "editor/document/PropertyMakers.hpp"
 
+#include "editor/document/SceneChecks.hpp"
+#include "render/SceneLimits.hpp"
+
 #include <QFileInfo>
 
 namespace speculum::document::makers {
@@ -87,12 +90,30 @@ QString nonZeroScale(const glm::dvec3& s) {
         if (s[i] == 0.0) {
             return QStringLiteral("components must be non-zero (a zero scale flattens the node)");
         }
+        // The project reader's limits (render/SceneLimits.hpp): beyond them float maths overflows.
+        if (std::abs(s[i]) < render::kMinScale || std::abs(s[i]) > render::kMaxScale) {
+            return QStringLiteral("components must be in %1..%2 in size (negative mirrors), got %3")
+                .arg(QString::fromStdString(formatLimit(render::kMinScale)),
+                     QString::fromStdString(formatLimit(render::kMaxScale)),
+                     QString::fromStdString(formatLimit(s[i])));
+        }
     }
     return {};
 }
 
 QString positiveExtents(const glm::dvec2& s) {
-    return s.x > 0.0 && s.y > 0.0 ? QString() : QStringLiteral("extents must be greater than 0");
+    if (!(s.x > 0.0 && s.y > 0.0)) {
+        return QStringLiteral("extents must be greater than 0");
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (s[i] < render::kMinScale || s[i] > render::kMaxCoordinate) {
+            return QStringLiteral("extents must be in %1..%2, got %3")
+                .arg(QString::fromStdString(formatLimit(render::kMinScale)),
+                     QString::fromStdString(formatLimit(render::kMaxCoordinate)),
+                     QString::fromStdString(formatLimit(s[i])));
+        }
+    }
+    return {};
 }
 
 render::Status ok() {

@@ -1,6 +1,8 @@
 #include "editor/document/Recovery.hpp"
 
 #include "editor/document/ProjectFile.hpp"
+#include "render/io/AtomicFile.hpp"
+#include "render/io/FileKind.hpp"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -9,7 +11,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <algorithm>
 #include <cerrno>
@@ -56,22 +57,13 @@ render::Status RecoveryStore::write(const SceneData& data, const QString& origin
     if (auto saved = saveProject(data, scenePath()); !saved) {
         return saved;
     }
-    QSaveFile note(notePathFor(m_pid));
-    if (!note.open(QIODevice::WriteOnly)) {
-        return render::Error{note.errorString().toStdString()};
-    }
     const QJsonObject o{{QStringLiteral("project"), originalPath},
                         {QStringLiteral("savedAt"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
-    // A failed flush must not be committed (see saveProject): the note would be truncated.
-    if (note.write(QJsonDocument(o).toJson()) < 0 || !note.flush()) {
-        const std::string reason = note.errorString().toStdString();
-        note.cancelWriting();
-        return render::Error{reason};
-    }
-    if (!note.commit()) {
-        return render::Error{note.errorString().toStdString()};
-    }
-    return render::Done{};
+    // Staged like every other file (render::AtomicFile): a full disk leaves the previous note intact.
+    const QByteArray note = QJsonDocument(o).toJson();
+    return render::writeFileAtomically(
+        QFile::encodeName(notePathFor(m_pid)).toStdString(),
+        std::string_view(note.constData(), static_cast<std::size_t>(note.size())));
 }
 
 void RecoveryStore::discard() {
@@ -96,9 +88,11 @@ std::vector<RecoveryStore::Recovered> RecoveryStore::orphans() const {
         Recovered r;
         r.scenePath = file.absoluteFilePath();
         r.savedAt = file.lastModified();
-        QFile note(notePathFor(pid));
-        if (note.open(QIODevice::ReadOnly)) {
-            const QJsonObject o = QJsonDocument::fromJson(note.readAll()).object();
+        // Only a regular file, read without blocking: a FIFO planted in the folder must not hang startup.
+        const render::Result<std::string> note =
+            render::readRegularFile(QFile::encodeName(notePathFor(pid)).toStdString(), 1 << 20);
+        if (note) {
+            const QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(*note)).object();
             r.originalPath = o.value(QStringLiteral("project")).toString();
             const QDateTime at =
                 QDateTime::fromString(o.value(QStringLiteral("savedAt")).toString(), Qt::ISODate);

@@ -2,6 +2,7 @@
 
 #include "editor/document/ModelNodes.hpp"
 #include "editor/document/NodeMath.hpp"
+#include "render/io/Printable.hpp"
 
 #include <QDir>
 #include <QFileInfo>
@@ -199,13 +200,14 @@ private:
     }
 
     void warn(const NodeData& d, const std::string& what) {
-        m_warnings.push_back("node \"" + d.name + "\": " + what);
+        m_warnings.push_back("node " + render::quoted(d.name) + ": " + what);
     }
 
     void addReflector(const NodeData& d, const glm::dmat4& world, const render::MeshHandle& mesh,
                       const render::Material& material, render::FrameInput& frame) {
         if (frame.reflector) {
-            warn(d, "reflector skipped: the scene already has one (\"" + frame.reflector->name + "\")");
+            warn(d, "reflector skipped: the scene already has one (" + render::quoted(frame.reflector->name) +
+                        ")");
             return;
         }
         if (!mesh) {

@@ -2,6 +2,7 @@
 
 #include "editor/document/Snapshot.hpp"
 #include "render/image/ImageWriter.hpp"
+#include "render/io/Printable.hpp"
 
 #include <QDir>
 #include <QFileInfo>
@@ -26,12 +27,13 @@ render::Status validateStillExport(const StillExportSettings& settings, const QS
         return render::Error{"supersampling must be in 1..16, got " + std::to_string(settings.ssaa)};
     }
     if (!render::isSupportedImagePath(path)) {
-        return render::Error{
-            path + ": unsupported image format (supported: " + render::supportedImageFormats() + ")"};
+        return render::Error{render::printable(path, 200) + ": unsupported image format (supported: " +
+                             render::supportedImageFormats() + ")"};
     }
     const QFileInfo info(outputPath);
     if (!info.absoluteDir().exists()) {
-        return render::Error{path + ": folder " + info.absolutePath().toStdString() + " does not exist"};
+        return render::Error{render::printable(path, 200) + ": folder " +
+                             render::quoted(info.absolutePath().toStdString(), 200) + " does not exist"};
     }
     return render::checkImageTarget(path, settings.width, settings.height);
 }

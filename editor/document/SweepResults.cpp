@@ -1,7 +1,10 @@
 #include "editor/document/SweepResults.hpp"
 
 #include "editor/document/Commands.hpp"
+#include "editor/document/JsonDuplicateKeys.hpp"
 #include "editor/document/Scene.hpp"
+#include "render/io/FileKind.hpp"
+#include "render/io/Printable.hpp"
 
 #include <QFile>
 #include <QFileInfo>
@@ -27,15 +30,21 @@ std::optional<double> number(const QJsonValue& v) {
 } // namespace
 
 render::Result<SweepResults> loadSweepResults(const QString& path) {
-    const std::string name = QFileInfo(path).fileName().toStdString();
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        return render::Error{path.toStdString() + ": " + file.errorString().toStdString()};
+    // The user picks this file: named escaped in messages, read only if it is a regular file (a FIFO
+    // would block the GUI thread), and a repeated key is refused rather than half-read.
+    const std::string name = render::printable(QFileInfo(path).fileName().toStdString());
+    const render::Result<std::string> bytes =
+        render::readRegularFile(QFile::encodeName(path).toStdString(), std::uintmax_t(256) << 20);
+    if (!bytes) {
+        return render::Error{name + ": " + bytes.error()};
     }
     QJsonParseError parseError;
-    const QJsonDocument json = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QJsonDocument json = QJsonDocument::fromJson(QByteArray::fromStdString(*bytes), &parseError);
     if (json.isNull()) {
         return render::Error{name + ": not JSON (" + parseError.errorString().toStdString() + ")"};
+    }
+    if (const std::optional<std::string> duplicate = findDuplicateKey(*bytes)) {
+        return render::Error{name + ": " + *duplicate};
     }
     const QJsonObject root = json.object();
     if (root.value(QStringLiteral("format")).toString() != QStringLiteral("speculum-bench")) {
@@ -129,7 +138,9 @@ SweepApplication applySweepSettings(Scene& scene, const std::vector<std::pair<QS
         // capture structured bindings in the lambdas below.
         const QString& key = setting.first;
         const QString& value = setting.second;
-        const QString what = key + QStringLiteral(" = ") + value;
+        // Both come from the results file: shown escaped in the applied / skipped lists.
+        const QString what = QString::fromStdString(render::printable(key.toStdString(), 40) + " = " +
+                                                    render::printable(value.toStdString(), 40));
         bool isInt = false;
         const int n = value.toInt(&isInt);
         int matched = 0;

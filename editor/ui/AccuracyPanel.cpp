@@ -6,6 +6,8 @@
 #include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/SweepChart.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "render/io/FileKind.hpp"
+#include "render/io/Printable.hpp"
 #include "render/math/Projection.hpp"
 #include "render/mesh/MeshData.hpp"
 #include "render/plan/Planner.hpp"
@@ -269,6 +271,13 @@ void AccuracyPanel::comparisonFailed(const QString& text, bool cancelled) {
 }
 
 render::Status AccuracyPanel::loadSweepFile(const QString& path) {
+    // A FIFO or a device as results.json would block the GUI thread in open() or read() for good: only a
+    // regular file is handed to the reader.
+    if (auto regular = render::requireRegularFile(path.toStdString()); !regular) {
+        const std::string error = render::printable(path.toStdString()) + ": " + regular.error();
+        m_sweepMessage->setText(QString::fromStdString(error));
+        return render::Error{error};
+    }
     auto results = document::loadSweepResults(path);
     if (!results) {
         m_sweepMessage->setText(QString::fromStdString(results.error()));

@@ -11,6 +11,8 @@
 #include "editor/ui/SceneTreePanel.hpp"
 #include "editor/ui/Selection.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "render/io/FileKind.hpp"
+#include "render/io/Printable.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -61,6 +63,10 @@ int autosaveSeconds(QString& problem) {
 }
 
 } // namespace
+
+QString shown(const QString& text, std::size_t maxChars) {
+    return QString::fromStdString(render::printable(text.toStdString(), maxChars));
+}
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
@@ -115,9 +121,16 @@ bool MainWindow::isModified() const {
 render::Status MainWindow::openProjectFile(const QString& path) {
     std::vector<std::string> warnings;
     const QString absolute = QFileInfo(path).absoluteFilePath();
-    render::Status status = document::openProject(*m_scene, absolute, warnings);
+    // The project is read here, on the GUI thread: a FIFO, a device or /dev/stdin would block it (and the
+    // autosave with it) for good, so anything but a regular file is refused before it is opened. The
+    // reader checks the opened descriptor again.
+    render::Status status = render::requireRegularFile(absolute.toStdString());
+    if (status) {
+        status = document::openProject(*m_scene, absolute, warnings);
+    }
     if (!status) {
-        logMessage(tr("Could not open %1: %2").arg(absolute, QString::fromStdString(status.error())));
+        logMessage(tr("Could not open %1: %2")
+                       .arg(shown(absolute, kShownPathChars), QString::fromStdString(status.error())));
         return status;
     }
     // The old document's commands refer to nodes that no longer exist; so would a running import's result.
@@ -283,7 +296,7 @@ void MainWindow::rebuildRecentMenu() {
             if (auto status = openProjectFile(file); !status) {
                 QMessageBox::critical(
                     this, tr("Open Project"),
-                    tr("Could not open %1:\n\n%2").arg(file, QString::fromStdString(status.error())));
+                    tr("Could not open %1:\n\n%2").arg(shown(file), QString::fromStdString(status.error())));
             }
         });
     }
@@ -350,7 +363,9 @@ void MainWindow::dropEvent(QDropEvent* event) {
         if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
             if (maybeSave()) {
                 if (auto status = openProjectFile(path); !status) {
-                    failures << QString::fromStdString(status.error());
+                    failures << tr("Could not open %1: %2")
+                                    .arg(shown(QFileInfo(path).fileName()),
+                                         QString::fromStdString(status.error()));
                 }
             }
         } else if (document::isImportableModel(path)) {
@@ -362,7 +377,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     }
     event->acceptProposedAction();
     if (!failures.isEmpty()) {
-        QMessageBox::critical(this, tr("Import"), failures.join(QLatin1Char('\n')));
+        QMessageBox::critical(this, tr("Open or Import"), failures.join(QLatin1Char('\n')));
     }
 }
 
@@ -403,6 +418,9 @@ void MainWindow::onWarningsChanged(const QStringList& warnings) {
     }
     if (!warnings.isEmpty()) {
         statusBar()->showMessage(warnings.front(), 8000);
+        m_shownViewportWarning = warnings.front();
+    } else if (!m_shownViewportWarning.isEmpty() && statusBar()->currentMessage() == m_shownViewportWarning) {
+        statusBar()->clearMessage(); // no longer true ("mesh loading" once the model is in)
     }
 }
 

@@ -9,6 +9,7 @@
 #include <QString>
 #include <QStringList>
 #include <QTimer>
+#include <cstddef>
 #include <deque>
 #include <functional>
 #include <memory>
@@ -40,6 +41,11 @@ class SceneTreeModel;
 class SceneTreePanel;
 class Selection;
 class Viewport;
+
+// A path, file name or value from the user or a file, made safe for a one-line message: control
+// characters escaped, long text shortened (render::printable). Full paths in the log keep more.
+QString shown(const QString& text, std::size_t maxChars = 80);
+constexpr std::size_t kShownPathChars = 1024;
 
 // The editor's top-level window: owns the open document (Scene + its undo stack), the selection, the
 // animation clock and the viewport, with the Scene, Properties, Render passes, Accuracy and Log docks around
@@ -205,6 +211,7 @@ private:
     QLabel* m_timeLabel = nullptr;
     QPlainTextEdit* m_log = nullptr;
     QStringList m_logLines;
+    QString m_shownViewportWarning; // the last viewport warning put in the status bar
 
     struct ImportRequest {
         QString path; // absolute

@@ -144,7 +144,9 @@ void MainWindow::updateEditActions() {
 
 render::Status MainWindow::exportGltfFile(const QString& path) {
     std::vector<std::string> warnings;
+    m_viewport->waitForModels(); // read on workers: none may be missing from the file
     auto status = document::exportGltf(*m_scene, path, m_viewport->meshes(), warnings);
+    warnings = m_viewport->correctModelWarnings(std::move(warnings));
     for (const auto& w : warnings) {
         logMessage(QString::fromStdString(w));
     }
@@ -168,6 +170,8 @@ MainWindow::exportStillFile(const QString& path, const document::StillExportSett
                                  ? std::string("the viewport has no OpenGL context yet")
                                  : m_viewport->rendererError().toStdString()};
     }
+    // The scene's model files are read on workers: a still must not lack one that is still loading.
+    m_viewport->waitForModels();
     // Render on the viewport's context, with its renderer: the same renderer code the CLI uses. Anything
     // the progress callback lets run (the event loop) may make another context current: take it back.
     m_viewport->makeCurrent();
@@ -181,6 +185,7 @@ MainWindow::exportStillFile(const QString& path, const document::StillExportSett
     m_viewport->doneCurrent();
     m_viewport->update();
     if (result) {
+        result->warnings = m_viewport->correctModelWarnings(std::move(result->warnings));
         for (const auto& w : result->warnings) {
             logMessage(QString::fromStdString(w));
         }
@@ -216,9 +221,10 @@ void MainWindow::onOpen() {
     render::Status status = openProjectFile(path);
     if (!status) {
         // The error names the JSON path of the problem; the current document is unchanged.
-        QMessageBox::critical(this, tr("Open Project"),
-                              tr("Could not open %1:\n\n%2")
-                                  .arg(QFileInfo(path).fileName(), QString::fromStdString(status.error())));
+        QMessageBox::critical(
+            this, tr("Open Project"),
+            tr("Could not open %1:\n\n%2")
+                .arg(shown(QFileInfo(path).fileName()), QString::fromStdString(status.error())));
     }
 }
 

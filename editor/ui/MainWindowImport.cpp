@@ -8,6 +8,7 @@
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/ModelImportJob.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "render/io/FileKind.hpp"
 
 #include <QAction>
 #include <QEventLoop>
@@ -70,8 +71,10 @@ void MainWindow::createImportStatus() {
 
 render::Status MainWindow::startModelImport(const QString& path, bool asReflector, bool interactive) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
-    if (!QFileInfo(absolute).isFile()) {
-        return render::Error{absolute.toStdString() + ": no such file"};
+    // Only a stat here, on the GUI thread (it cannot block on a FIFO); the worker reads the file, and the
+    // reader checks the opened descriptor again. The cause is named: a FIFO is not "no such file".
+    if (auto regular = render::requireRegularFile(absolute.toStdString()); !regular) {
+        return render::Error{shown(absolute, kShownPathChars).toStdString() + ": " + regular.error()};
     }
     m_importQueue.push_back(ImportRequest{absolute, asReflector, interactive, ++m_importSerial});
     if (!m_importJob) {
@@ -82,8 +85,7 @@ render::Status MainWindow::startModelImport(const QString& path, bool asReflecto
 
 render::Status MainWindow::importModelFile(const QString& path, bool asReflector) {
     if (auto started = startModelImport(path, asReflector, false); !started) {
-        logMessage(tr("Could not import %1: %2")
-                       .arg(QFileInfo(path).absoluteFilePath(), QString::fromStdString(started.error())));
+        logMessage(tr("Could not import: %1").arg(QString::fromStdString(started.error())));
         return started;
     }
     const int serial = m_importSerial;
@@ -113,7 +115,7 @@ void MainWindow::cancelImports() {
     }
     if (m_importJob) {
         m_importJob->cancel(); // it ends at its next check and reports "cancelled" (onImportDone)
-        m_importLabel->setText(tr("Cancelling %1…").arg(QFileInfo(m_importing.path).fileName()));
+        m_importLabel->setText(tr("Cancelling %1…").arg(shown(QFileInfo(m_importing.path).fileName())));
     }
 }
 
@@ -129,10 +131,10 @@ void MainWindow::startNextImport() {
     }
     connect(m_importJob, &ModelImportJob::progress, this, &MainWindow::showImportProgress);
     connect(m_importJob, &ModelImportJob::finished, this, &MainWindow::onImportDone);
-    m_importLabel->setText(tr("Importing %1…").arg(QFileInfo(m_importing.path).fileName()));
+    m_importLabel->setText(tr("Importing %1…").arg(shown(QFileInfo(m_importing.path).fileName())));
     m_importProgress->setValue(0);
     m_importStatus->show();
-    logMessage(tr("Importing %1…").arg(m_importing.path));
+    logMessage(tr("Importing %1…").arg(shown(m_importing.path, kShownPathChars)));
     m_importJob->start();
 }
 
@@ -141,7 +143,8 @@ void MainWindow::showImportProgress(double fraction, const QString& phase) {
         return;
     }
     m_importProgress->setValue(int(std::clamp(fraction, 0.0, 1.0) * 1000.0));
-    m_importLabel->setText(tr("Importing %1 (%2)…").arg(QFileInfo(m_importing.path).fileName(), phase));
+    m_importLabel->setText(
+        tr("Importing %1 (%2)…").arg(shown(QFileInfo(m_importing.path).fileName()), phase));
 }
 
 void MainWindow::onImportDone() {
@@ -161,7 +164,7 @@ void MainWindow::onImportDone() {
         emit importFinished(request.path, ok, message);
         startNextImport();
     };
-    const QString fileName = QFileInfo(request.path).fileName();
+    const QString fileName = shown(QFileInfo(request.path).fileName());
     if (cancelled) {
         logMessage(tr("Import of %1 cancelled").arg(request.path));
         statusBar()->showMessage(tr("Import of %1 cancelled; the document is unchanged.").arg(fileName),
@@ -175,7 +178,7 @@ void MainWindow::onImportDone() {
     }
     if (!out.model) {
         const QString error = QString::fromStdString(out.model.error());
-        logMessage(tr("Could not import %1: %2").arg(request.path, error));
+        logMessage(tr("Could not import %1: %2").arg(shown(request.path, kShownPathChars), error));
         statusBar()->showMessage(tr("Could not import %1: %2").arg(fileName, error), 8000);
         if (request.interactive) {
             QMessageBox::critical(this, tr("Import Model"),
@@ -225,8 +228,8 @@ void MainWindow::onImportDone() {
     const std::size_t parts = model.parts.size(), materials = model.materials.size();
     // The viewport's mesh cache gets the model now, so its first frame does not read the file again (on
     // the GUI thread).
-    m_viewport->meshes().addModel(request.path.toStdString(),
-                                  std::make_shared<const document::ImportedModel>(std::move(model)));
+    m_viewport->adoptModel(request.path.toStdString(),
+                           std::make_shared<const document::ImportedModel>(std::move(model)));
 
     if (auto added = addTree(std::move(tree)); !added) {
         logMessage(tr("Could not import %1: %2").arg(request.path, QString::fromStdString(added.error())));
@@ -238,7 +241,7 @@ void MainWindow::onImportDone() {
     }
     const glm::dvec3 size = (box.max - box.min);
     logMessage(tr("Imported %1: %2 part(s), %3 material(s), %4 triangles, %5 × %6 × %7 units%8")
-                   .arg(request.path)
+                   .arg(shown(request.path, kShownPathChars))
                    .arg(parts)
                    .arg(materials)
                    .arg(triangles)

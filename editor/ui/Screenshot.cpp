@@ -48,6 +48,9 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
     if (!request.imports.isEmpty()) {
         window.viewport().frameSelected();
     }
+    // The project's model files are read on workers: the picture shows them, not their stand-ins.
+    window.viewport().waitForModels();
+    window.viewport().update(); // the frames it drew meanwhile showed stand-ins: draw again
     const int targetFrames = window.viewport().framesRendered() + request.frames;
 
     QEventLoop loop;

@@ -8,9 +8,11 @@
 #include "editor/document/Snapshot.hpp"
 #include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/Selection.hpp"
+#include "editor/ui/ViewportModels.hpp"
 #include "editor/ui/ViewportOverlay.hpp"
 #include "render/math/Projection.hpp"
 
+#include <QEventLoop>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -45,12 +47,15 @@ Viewport::Viewport(document::Scene& scene, AnimationClock& clock, QWidget* paren
     setObjectName(QStringLiteral("viewport"));
     m_view.reset(document::toRender(m_scene.camera()));
     m_overlay = new ViewportOverlay(*this);
+    m_models = new ViewportModels(m_meshes, this);
+    connect(m_models, &ViewportModels::changed, this, qOverload<>(&Viewport::update));
 
     connect(&m_scene, &document::Scene::changed, this, qOverload<>(&Viewport::update));
     // A camera edit or a newly opened document: show the document's camera again.
     connect(&m_scene, &document::Scene::cameraChanged, this, &Viewport::resetView);
     connect(&m_scene, &document::Scene::sceneReset, this, [this] {
         m_meshes.clear(); // meshes of the old document are not needed any more
+        m_models->clear();
         resetView();
     });
 
@@ -66,6 +71,40 @@ Viewport::Viewport(document::Scene& scene, AnimationClock& clock, QWidget* paren
 
 Viewport::~Viewport() {
     releaseGlResources();
+}
+
+document::MeshLibrary& Viewport::meshes() {
+    m_models->prepare(m_scene);
+    return m_meshes;
+}
+
+bool Viewport::modelsLoading() const {
+    return m_models->isLoading();
+}
+
+void Viewport::waitForModels() {
+    m_models->prepare(m_scene);
+    if (!m_models->isLoading()) {
+        return;
+    }
+    QEventLoop loop; // the window keeps painting and taking input meanwhile
+    const auto connection = connect(m_models, &ViewportModels::changed, &loop, [&] {
+        if (!m_models->isLoading()) {
+            loop.quit();
+        }
+    });
+    loop.exec();
+    disconnect(connection);
+}
+
+std::vector<std::string> Viewport::correctModelWarnings(std::vector<std::string> warnings) {
+    m_models->prepare(m_scene);
+    return m_models->correct(std::move(warnings), false);
+}
+
+void Viewport::adoptModel(const std::string& absolutePath,
+                          std::shared_ptr<const document::ImportedModel> model) {
+    m_models->adopt(absolutePath, std::move(model));
 }
 
 void Viewport::setEditing(Selection* selection, QUndoStack* undoStack) {
@@ -102,6 +141,7 @@ void Viewport::resetView() {
 }
 
 void Viewport::frameSelected() {
+    m_models->prepare(m_scene);
     const double t = m_clock.time();
     const auto worlds = document::worldMatrices(m_scene, t);
     render::math::Box box;
@@ -223,7 +263,10 @@ void Viewport::paintGL() {
     }
     const double time = m_clock.time();
     std::vector<std::string> warnings;
+    // Model files are read on workers (ViewportModels), never here: a file still loading draws nothing yet.
+    m_models->prepare(m_scene);
     render::FrameInput input = document::snapshot(m_scene, time, m_meshes, warnings);
+    warnings = m_models->correct(std::move(warnings));
     input.camera = m_view.camera();
 
     // The widget draws into its own FBO; framebuffer 0 is not ours.
@@ -332,6 +375,7 @@ std::uint64_t Viewport::pickAt(QPointF position, bool mirrorItself) {
     if (light) {
         return light;
     }
+    m_models->prepare(m_scene);
     document::PickScene pickScene = document::buildPickScene(m_scene, t, m_meshes);
     if (mirrorItself) {
         pickScene.mirrorDepth = 0;
@@ -344,6 +388,7 @@ std::uint64_t Viewport::pickAt(QPointF position, bool mirrorItself) {
 }
 
 void Viewport::paintOverlay(QPainter& painter) {
+    m_models->prepare(m_scene);
     if (!m_renderer) {
         return;
     }

@@ -24,6 +24,7 @@ namespace speculum::ui {
 
 class AnimationClock;
 class Selection;
+class ViewportModels;
 class ViewportOverlay;
 
 // The live 3D view: draws a snapshot of the document every frame with render::Renderer into this widget's
@@ -64,7 +65,18 @@ public:
     // The renderer, for work that must run on this widget's context (still export): call makeCurrent()
     // first. Null until the widget has been shown (or when it failed).
     render::Renderer* renderer() { return m_renderer.get(); }
-    document::MeshLibrary& meshes() { return m_meshes; }
+    // The viewport's mesh cache. Asking for it starts the reads of the scene's model files on workers
+    // (ViewportModels): a file not read yet is an empty stand-in until it is; waitForModels() waits for
+    // them (export does, so a still never lacks a model that is still loading).
+    document::MeshLibrary& meshes();
+    bool modelsLoading() const;
+    // Runs the event loop until every model file the scene references is read (or failed).
+    void waitForModels();
+    // Warnings of a snapshot of the scene made with meshes() (an export) with the ones about model files
+    // that failed on the workers put right (the stand-ins would make them say "no triangles", or nothing).
+    std::vector<std::string> correctModelWarnings(std::vector<std::string> warnings);
+    // A model read elsewhere (Import's worker), so the viewport does not read the file again.
+    void adoptModel(const std::string& absolutePath, std::shared_ptr<const document::ImportedModel> model);
     const render::Camera& viewCamera() const { return m_view.camera(); }
 
     HandleMode handleMode() const { return m_handleMode; }
@@ -129,6 +141,7 @@ private:
     ViewCamera m_view;
     QTimer m_tick; // drives repaints while the animation plays
     ViewportOverlay* m_overlay = nullptr;
+    ViewportModels* m_models = nullptr; // reads the scene's model files off the GUI thread
 
     render::FrameReport m_lastReport;
     double m_lastFrameTime = 0.0;

@@ -1,5 +1,6 @@
 #include "render/envmap/EnvironmentCapture.hpp"
 
+#include "render/gl/Allocation.hpp"
 #include "render/gl/Memory.hpp"
 
 #include <algorithm>
@@ -63,17 +64,25 @@ gl::Renderbuffer makeDepth(int width, int height) {
     return depth;
 }
 
-Status checkFramebuffer(const char* what) {
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status == GL_FRAMEBUFFER_COMPLETE)
-        return Done{};
-    return Error{std::string("environment map: the ") + what + " framebuffer is incomplete (status 0x" +
-                 [status] {
-                     char hex[16];
-                     std::snprintf(hex, sizeof hex, "%x", status);
-                     return std::string(hex);
-                 }() +
-                 ")"};
+// Runs one allocation checked (gl::beginAllocation / finishAllocation); the error names `what`.
+template <typename Allocate>
+Status checked(std::size_t bytes, const std::string& what, Allocate allocate) {
+    if (Status fits = gl::beginAllocation(bytes); !fits)
+        return Error{fits.error() + " (" + what + ")"};
+    allocate();
+    if (Status done = gl::finishAllocation(); !done)
+        return Error{done.error() + " (" + what + ")"};
+    return Done{};
+}
+
+Status complete(const std::string& what) {
+    if (Status s = gl::checkFramebuffer(); !s)
+        return Error{s.error() + " (" + what + ")"};
+    return Done{};
+}
+
+std::string sizeText(int width, int height) {
+    return std::to_string(width) + "×" + std::to_string(height);
 }
 
 // The GL state update() and resample() set or that callbacks may change, put back when they end.
@@ -145,47 +154,15 @@ void setWarpUniforms(const gl::Program& program, const WarpPass& pass) {
     program.set("uEnvWarpFar", static_cast<float>(pass.warp.far));
 }
 
-Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSettings& settings) {
+Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSettings& settings, bool* sizeFailure) {
     assert(settings.resolution >= 8 && "EnvironmentCapture::create(): resolution below 8");
+    if (sizeFailure)
+        *sizeFailure = false;
     EnvironmentCapture capture;
     capture.m_settings = settings;
     capture.m_layout = makeLayout(settings.type, settings.resolution);
     const MapLayout& layout = capture.m_layout;
-    // Seamless filtering across cube faces is a context-wide switch (core since 3.2); pass 2 and the
-    // resampling both rely on it.
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    gl::FramebufferBinding keepBinding;
-    capture.m_framebuffer = gl::makeFramebuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, capture.m_framebuffer.id());
-
-    capture.m_map = gl::makeTexture();
-    capture.m_depth = makeDepth(layout.width, layout.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              capture.m_depth.id());
-    if (settings.type == MapType::Cube) {
-        allocateCube(capture.m_map.id(), layout.width, settings.colorFormat, settings.mipmaps);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
-                               capture.m_map.id(), 0);
-    } else {
-        allocateArray(capture.m_map.id(), layout.width, layout.height, settings.colorFormat,
-                      settings.mipmaps);
-        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, capture.m_map.id(), 0, 0);
-    }
-    if (Status s = checkFramebuffer("map"); !s)
-        return Error{s.error()};
-
-    if (settings.type != MapType::Cube && settings.fill == FillMethod::Resampled) {
-        const int size = settings.cubeResolution > 0 ? settings.cubeResolution : settings.resolution;
-        capture.m_cube = gl::makeTexture();
-        allocateCube(capture.m_cube.id(), size, settings.colorFormat, settings.mipmaps);
-        capture.m_cubeDepth = makeDepth(size, size);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                  capture.m_cubeDepth.id());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
-                               capture.m_cube.id(), 0);
-        if (Status s = checkFramebuffer("intermediate cube"); !s)
-            return Error{s.error()};
-    }
+    // The resampling shader first: a shader that does not build is no reason to try a smaller map.
     if (settings.type != MapType::Cube) {
         auto program = gl::Program::build("fullscreen.vert", "envmap_resample.glsl");
         if (!program)
@@ -193,6 +170,79 @@ Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSettings& set
         capture.m_resample = std::move(*program);
         capture.m_emptyVao = gl::makeVertexArray();
     }
+    // Every allocation is checked: one that fails leaves a map every draw into silently ignores.
+    auto sizeError = [&](Status s) -> Result<EnvironmentCapture> {
+        if (sizeFailure)
+            *sizeFailure = true;
+        return Error{s.error()};
+    };
+    // Seamless filtering across cube faces is a context-wide switch (core since 3.2); pass 2 and the
+    // resampling both rely on it.
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    gl::FramebufferBinding keepBinding;
+    capture.m_framebuffer = gl::makeFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, capture.m_framebuffer.id());
+
+    const std::size_t colour = gl::bytesPerTexel(settings.colorFormat);
+    const std::size_t depthTexel = gl::bytesPerTexel(GL_DEPTH24_STENCIL8);
+    // The intermediate cube first: the largest part (six faces), so a map that does not fit fails before
+    // gigabytes of the rest were allocated (and cleared) for nothing.
+    if (settings.type != MapType::Cube && settings.fill == FillMethod::Resampled) {
+        const int size = settings.cubeResolution > 0 ? settings.cubeResolution : settings.resolution;
+        const int cubeLevels = settings.mipmaps ? mipLevels(size, size) : 1;
+        const std::string cube = "its " + sizeText(size, size) + " intermediate cube";
+        capture.m_cube = gl::makeTexture();
+        if (Status s = checked(
+                6 * gl::mipChainTexels(size, size, cubeLevels) * colour, cube,
+                [&] { allocateCube(capture.m_cube.id(), size, settings.colorFormat, settings.mipmaps); });
+            !s)
+            return sizeError(s);
+        if (Status s =
+                checked(static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * depthTexel,
+                        cube + "'s depth buffer", [&] { capture.m_cubeDepth = makeDepth(size, size); });
+            !s)
+            return sizeError(s);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  capture.m_cubeDepth.id());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
+                               capture.m_cube.id(), 0);
+        if (Status s = complete(cube); !s)
+            return sizeError(s);
+    }
+
+    const std::size_t faceTexels =
+        static_cast<std::size_t>(layout.width) * static_cast<std::size_t>(layout.height);
+    const int levels = settings.mipmaps ? mipLevels(layout.width, layout.height) : 1;
+    capture.m_map = gl::makeTexture();
+    if (Status s = checked(static_cast<std::size_t>(layout.components) *
+                               gl::mipChainTexels(layout.width, layout.height, levels) * colour,
+                           "the map's " + std::to_string(layout.components) + " × " +
+                               sizeText(layout.width, layout.height) + " colour texels",
+                           [&] {
+                               if (settings.type == MapType::Cube)
+                                   allocateCube(capture.m_map.id(), layout.width, settings.colorFormat,
+                                                settings.mipmaps);
+                               else
+                                   allocateArray(capture.m_map.id(), layout.width, layout.height,
+                                                 settings.colorFormat, settings.mipmaps);
+                           });
+        !s)
+        return sizeError(s);
+    if (Status s =
+            checked(faceTexels * depthTexel, "its " + sizeText(layout.width, layout.height) + " depth buffer",
+                    [&] { capture.m_depth = makeDepth(layout.width, layout.height); });
+        !s)
+        return sizeError(s);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              capture.m_depth.id());
+    if (settings.type == MapType::Cube)
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
+                               capture.m_map.id(), 0);
+    else
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, capture.m_map.id(), 0, 0);
+    if (Status s = complete("the map"); !s)
+        return sizeError(s);
+
     return capture;
 }
 

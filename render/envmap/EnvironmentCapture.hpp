@@ -61,8 +61,11 @@ public:
     using DrawWarped = std::function<void(const WarpPass& pass)>;
 
     EnvironmentCapture() = default;
-    // Needs a current context. Errors: a shader that does not build, an incomplete framebuffer.
-    static Result<EnvironmentCapture> create(const CaptureSettings& settings);
+    // Needs a current context. Every texture and renderbuffer is checked (GL_OUT_OF_MEMORY, framebuffer
+    // completeness, gl::setAllocationLimitForTesting). Errors: a shader that does not build, or a part of
+    // the map that did not fit ("did not fit in GPU memory (its 8192×8192 intermediate cube)"), when
+    // *sizeFailure is set: a smaller resolution may work.
+    static Result<EnvironmentCapture> create(const CaptureSettings& settings, bool* sizeFailure = nullptr);
 
     const CaptureSettings& settings() const { return m_settings; }
     const MapLayout& layout() const { return m_layout; }

@@ -1,5 +1,7 @@
 #include "render/gl/DebugOutput.hpp"
 
+#include "render/gl/Allocation.hpp"
+
 #include <cstring>
 #include <epoxy/gl.h>
 #include <utility>
@@ -48,10 +50,15 @@ void DebugOutput::uninstall() {
 void DebugOutput::callback(unsigned, unsigned type, unsigned id, unsigned severity, int length,
                            const char* message, const void* user) {
     auto* self = const_cast<DebugOutput*>(static_cast<const DebugOutput*>(user));
-    const bool isError = type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR ||
-                         severity == GL_DEBUG_SEVERITY_HIGH;
+    // An allocation that did not fit is checked and handled by its caller (gl/Allocation.hpp): reported,
+    // but not as an error.
+    const bool handled = allocationBeingChecked();
+    const bool isError =
+        !handled && (type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR ||
+                     severity == GL_DEBUG_SEVERITY_HIGH);
     std::string text =
-        std::string("GL ") + typeName(type) + " #" + std::to_string(id) + ": " +
+        std::string(handled ? "GL (handled allocation failure) " : "GL ") + typeName(type) + " #" +
+        std::to_string(id) + ": " +
         std::string(message, length > 0 ? static_cast<std::size_t>(length) : std::strlen(message));
     std::lock_guard lock(self->m_mutex);
     if (self->m_messages.size() < 1000)

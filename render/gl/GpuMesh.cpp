@@ -1,5 +1,8 @@
 #include "render/gl/GpuMesh.hpp"
 
+#include "render/gl/Allocation.hpp"
+
+#include <algorithm>
 #include <cassert>
 #include <glm/vec4.hpp>
 #include <vector>
@@ -15,7 +18,7 @@ struct Vertex {
     glm::vec2 uv;
 };
 
-GpuMesh upload(const MeshData& mesh) {
+GpuMesh upload(const MeshData& mesh, std::string& failure) {
     std::vector<Vertex> vertices(mesh.positions.size());
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         vertices[i].position = mesh.positions[i];
@@ -23,6 +26,17 @@ GpuMesh upload(const MeshData& mesh) {
         vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
     }
     GpuMesh gpu;
+    // Checked: buffers that do not fit would draw nothing, or garbage, with no word said.
+    const std::size_t extraBytes =
+        mesh.positions.size() * sizeof(glm::vec4) *
+        ((mesh.colors.size() == mesh.positions.size() && !mesh.colors.empty() ? 1 : 0) +
+         (mesh.tangents.size() == mesh.positions.size() && !mesh.tangents.empty() ? 1 : 0));
+    const std::size_t bytes =
+        std::max({vertices.size() * sizeof(Vertex), mesh.indices.size() * sizeof(std::uint32_t), extraBytes});
+    if (Status fits = beginAllocation(bytes); !fits) {
+        failure = fits.error();
+        return GpuMesh{};
+    }
     gpu.vao = makeVertexArray();
     gpu.vertices = makeBuffer();
     gpu.indices = makeBuffer();
@@ -68,12 +82,18 @@ GpuMesh upload(const MeshData& mesh) {
         }
     }
     glBindVertexArray(0);
+    if (Status done = finishAllocation(); !done) {
+        failure = done.error();
+        return GpuMesh{}; // frees what was allocated
+    }
     return gpu;
 }
 
 } // namespace
 
 void GpuMesh::draw() const {
+    if (!vao)
+        return; // its buffers did not fit (MeshCache::takeWarnings)
     // A disabled attribute reads the context's current value, which is not part of the VAO: set here.
     if (!hasColors)
         glVertexAttrib4f(kColorAttribute, 1.0f, 1.0f, 1.0f, 1.0f);
@@ -89,7 +109,12 @@ const GpuMesh& MeshCache::get(const MeshHandle& mesh) {
     // A new mesh may reuse the address of a freed one: only a live weak pointer to this very mesh counts.
     if (it != m_entries.end() && it->second.owner.lock() == mesh)
         return it->second.gpu;
-    Entry entry{mesh, upload(*mesh)};
+    std::string failure;
+    Entry entry{mesh, upload(*mesh, failure)};
+    if (!failure.empty())
+        m_warnings.push_back("a mesh of " + std::to_string(mesh->positions.size()) + " vertices and " +
+                             std::to_string(mesh->indices.size() / 3) + " triangles " + failure +
+                             "; it is not drawn");
     entry.gpu.bounds = computeBounds(*mesh);
     auto [pos, inserted] = m_entries.insert_or_assign(mesh.get(), std::move(entry));
     return pos->second.gpu;

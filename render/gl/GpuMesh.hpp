@@ -3,7 +3,10 @@
 #include "render/gl/Objects.hpp"
 #include "render/mesh/MeshData.hpp"
 
+#include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace speculum::render::gl {
 
@@ -34,6 +37,8 @@ public:
     // Frees the GPU copies of meshes nobody holds any more.
     void purge();
     std::size_t size() const { return m_entries.size(); }
+    // Meshes whose buffers did not fit in GPU memory since the last call (they draw nothing).
+    std::vector<std::string> takeWarnings() { return std::exchange(m_warnings, {}); }
 
 private:
     struct Entry {
@@ -41,6 +46,7 @@ private:
         GpuMesh gpu;
     };
     std::unordered_map<const MeshData*, Entry> m_entries;
+    std::vector<std::string> m_warnings;
 };
 
 } // namespace speculum::render::gl

@@ -1,5 +1,6 @@
 #include "render/gl/RenderTexture.hpp"
 
+#include "render/gl/Allocation.hpp"
 #include "render/gl/Memory.hpp"
 
 #include <algorithm>
@@ -7,15 +8,34 @@
 
 namespace speculum::render::gl {
 
-void RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mipmapped) {
+Status RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mipmapped) {
     const int levels = mipmapped ? 1 + static_cast<int>(std::floor(std::log2(std::max(width, height)))) : 1;
-    if (m_framebuffer && width == m_width && height == m_height && colorFormat == m_format &&
-        levels == m_levels)
-        return;
+    const bool same = width == m_width && height == m_height && colorFormat == m_format && levels == m_levels;
+    if (same && m_framebuffer)
+        return Done{};
+    if (same && !m_failure.empty())
+        return Error{m_failure};
     m_width = width;
     m_height = height;
     m_format = colorFormat;
     m_levels = levels;
+    m_failure.clear();
+    // The old target's memory first: it may be what the new one needs.
+    m_framebuffer.reset();
+    m_color.reset();
+    m_depthStencil.reset();
+    const std::string size = std::to_string(width) + "×" + std::to_string(height);
+    auto fail = [&](const std::string& what, const std::string& why) -> Status {
+        m_framebuffer.reset();
+        m_color.reset();
+        m_depthStencil.reset();
+        m_failure = "the " + size + " " + what + " " + why;
+        return Error{m_failure};
+    };
+    const auto pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    if (Status fits = beginAllocation(mipChainTexels(width, height, levels) * bytesPerTexel(colorFormat));
+        !fits)
+        return fail("colour buffer", fits.error());
     m_color = makeTexture();
     glBindTexture(GL_TEXTURE_2D, m_color.id());
     for (int level = 0, w = width, h = height; level < levels;
@@ -28,16 +48,25 @@ void RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mipma
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D, 0);
+    if (Status done = finishAllocation(); !done)
+        return fail("colour buffer", done.error());
+    if (Status fits = beginAllocation(pixels * bytesPerTexel(GL_DEPTH24_STENCIL8)); !fits)
+        return fail("depth-stencil buffer", fits.error());
     m_depthStencil = makeRenderbuffer();
     glBindRenderbuffer(GL_RENDERBUFFER, m_depthStencil.id());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    if (Status done = finishAllocation(); !done)
+        return fail("depth-stencil buffer", done.error());
     m_framebuffer = makeFramebuffer();
     FramebufferBinding keep;
     glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_color.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                               m_depthStencil.id());
+    if (Status complete = checkFramebuffer(); !complete)
+        return fail("render target", complete.error());
+    return Done{};
 }
 
 std::size_t RenderTexture::bytes() const {

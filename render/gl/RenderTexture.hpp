@@ -1,8 +1,10 @@
 #pragma once
 
+#include "render/Result.hpp"
 #include "render/gl/Objects.hpp"
 
 #include <cstddef>
+#include <string>
 
 namespace speculum::render::gl {
 
@@ -10,8 +12,10 @@ namespace speculum::render::gl {
 // drawn into, and the reflection textures of texture-technique mirrors.
 class RenderTexture {
 public:
-    // (Re)allocates when the size or format changes; `mipmapped` allows blurred lookups.
-    void ensure(int width, int height, GLenum colorFormat, bool mipmapped);
+    // (Re)allocates when the size or format changes; `mipmapped` allows blurred lookups. Checked: an
+    // error ("the 1280×720 colour buffer did not fit in GPU memory") leaves no target (framebuffer() is 0),
+    // and the same request fails again at once, without asking the driver every frame.
+    Status ensure(int width, int height, GLenum colorFormat, bool mipmapped);
     void generateMipmaps();
 
     GLuint framebuffer() const { return m_framebuffer.id(); }
@@ -27,6 +31,7 @@ private:
     int m_height = 0;
     int m_levels = 1;
     GLenum m_format = 0;
+    std::string m_failure; // why the allocation of the size and format above failed; empty: it did not
     Texture m_color;
     Renderbuffer m_depthStencil;
     Framebuffer m_framebuffer;

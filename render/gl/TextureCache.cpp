@@ -1,7 +1,10 @@
 #include "render/gl/TextureCache.hpp"
 
+#include "render/gl/Allocation.hpp"
+#include "render/gl/Memory.hpp"
 #include "render/image/ColorSpace.hpp"
 #include "render/image/TextureLoader.hpp"
+#include "render/io/Printable.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -90,8 +93,28 @@ TextureCache::Entry* TextureCache::entry(const TextureSource& source, TextureUse
     e.owner = source.image;
     e.texture = makeTexture();
     glBindTexture(GL_TEXTURE_2D, e.texture.id());
-    upload(image ? *image : loadedImage, use);
-    glGenerateMipmap(GL_TEXTURE_2D);
+    {
+        // Checked: a texture that does not fit would sample as black with no word said. It shows the
+        // checker instead, with a warning, and is not tried again while the cache holds its entry.
+        const TextureImage& uploaded = image ? *image : loadedImage;
+        const int levels =
+            1 + static_cast<int>(std::floor(std::log2(std::max({uploaded.width, uploaded.height, 1}))));
+        const std::size_t texel = uploaded.highPrecision() ? 8 : 4;
+        Status fits = beginAllocation(mipChainTexels(uploaded.width, uploaded.height, levels) * texel);
+        if (fits) {
+            upload(uploaded, use);
+            glGenerateMipmap(GL_TEXTURE_2D);
+            fits = finishAllocation();
+        }
+        if (!fits) {
+            m_warnings.push_back("texture " + quoted(source.path) + ": the " +
+                                 std::to_string(uploaded.width) + "×" + std::to_string(uploaded.height) +
+                                 " image " + fits.error() + " (showing a checker instead)");
+            upload(checkerTexture(), use);
+            glGenerateMipmap(GL_TEXTURE_2D);
+            (void)finishAllocation();
+        }
+    }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     e.wrapS = e.wrapT = GL_REPEAT;

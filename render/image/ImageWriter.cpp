@@ -1,17 +1,18 @@
 #include "render/image/ImageWriter.hpp"
 
 #include "render/image/ColorSpace.hpp"
+#include "render/io/AtomicFile.hpp"
+#include "render/io/Printable.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
-#include <atomic>
 #include <cassert>
 #include <cctype>
-#include <cstdio>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <random>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
@@ -28,6 +29,10 @@ struct Format {
     Encoding encoding;
     bool keepsAlpha;
     bool keepsCustomKeys; // PNG (tEXt) and EXR store any string attribute; TIFF and JPEG drop unknown ones
+    // Encoded in memory and written by AtomicFile. OIIO 2.4.7's TIFF writer through an IOProxy produces a
+    // file without its ImageLength field once there is metadata, so TIFF is written by name to a staged
+    // temporary instead (libtiff checks its own writes) and read back in full before it is committed.
+    bool inMemory;
 };
 
 struct Extension {
@@ -36,9 +41,9 @@ struct Extension {
 };
 
 constexpr Extension kExtensions[] = {
-    {".png", {Encoding::Srgb8, true, true}},    {".jpg", {Encoding::Srgb8, false, false}},
-    {".jpeg", {Encoding::Srgb8, false, false}}, {".tif", {Encoding::Srgb8, true, false}},
-    {".tiff", {Encoding::Srgb8, true, false}},  {".exr", {Encoding::LinearHalf, true, true}},
+    {".png", {Encoding::Srgb8, true, true, true}},    {".jpg", {Encoding::Srgb8, false, false, true}},
+    {".jpeg", {Encoding::Srgb8, false, false, true}}, {".tif", {Encoding::Srgb8, true, false, false}},
+    {".tiff", {Encoding::Srgb8, true, false, false}}, {".exr", {Encoding::LinearHalf, true, true, true}},
 };
 
 std::string lowerExtension(const std::string& path) {
@@ -46,6 +51,19 @@ std::string lowerExtension(const std::string& path) {
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext;
+}
+
+// Half floats end at 65504: OIIO would turn anything larger into Inf, and a NaN stays NaN, so one hot
+// pixel of the tracer (a caustic, a light seen in a mirror) would put Inf into the EXR and poison every
+// tool that filters or averages it. speculum's EXRs are half, always (a float EXR for the odd pixel
+// would double every file's size): values beyond +-65504, Inf included, are clamped to +-65504 and NaN
+// becomes 0, so a written EXR never holds a non-finite value.
+float halfRepresentable(float value) {
+    constexpr float kHalfMax = 65504.0f;
+    if (std::isnan(value)) {
+        return 0.0f;
+    }
+    return std::clamp(value, -kHalfMax, kHalfMax);
 }
 
 std::optional<Format> formatFor(const std::string& path) {
@@ -59,7 +77,7 @@ std::optional<Format> formatFor(const std::string& path) {
 }
 
 Error failure(const std::string& path, const std::string& reason) {
-    return Error{"cannot write '" + path + "': " + reason};
+    return Error{"cannot write " + render::quoted(path, 200) + ": " + reason};
 }
 
 // OIIO messages may span lines or end in a newline; the CLI wants one line.
@@ -70,45 +88,6 @@ std::string oneLine(std::string message) {
     }
     return message.empty() ? std::string("unknown OpenImageIO error") : message;
 }
-
-// A hidden sibling that keeps the real extension last, so OIIO picks the same format for it.
-std::optional<fs::path> temporarySibling(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    std::random_device entropy;
-    const fs::path folder = target.parent_path();
-    for (int attempt = 0; attempt < 64; ++attempt) {
-        char tag[32];
-        std::snprintf(tag, sizeof tag, "%x%x%x", static_cast<unsigned>(::getpid()), entropy(),
-                      counter.fetch_add(1));
-        const fs::path candidate =
-            folder / ("." + target.filename().string() + ".tmp-" + tag + target.extension().string());
-        std::error_code ec;
-        if (!fs::exists(candidate, ec) && !ec) {
-            return candidate;
-        }
-    }
-    return std::nullopt;
-}
-
-// Removes the temporary file on every early return; release() once it has been renamed.
-class TemporaryFile {
-public:
-    explicit TemporaryFile(fs::path path)
-        : m_path(std::move(path)) {}
-    TemporaryFile(const TemporaryFile&) = delete;
-    TemporaryFile& operator=(const TemporaryFile&) = delete;
-    ~TemporaryFile() {
-        if (!m_path.empty()) {
-            std::error_code ignored;
-            fs::remove(m_path, ignored);
-        }
-    }
-    const fs::path& path() const { return m_path; }
-    void release() { m_path.clear(); }
-
-private:
-    fs::path m_path;
-};
 
 } // namespace
 
@@ -135,13 +114,13 @@ Status checkImageTarget(const std::string& path, int width, int height) {
     std::error_code ec;
     const fs::file_status folderStatus = fs::status(folder, ec);
     if (!fs::exists(folderStatus)) {
-        return failure(path, "folder '" + folder.string() + "' does not exist");
+        return failure(path, "folder " + render::quoted(folder.string()) + " does not exist");
     }
     if (!fs::is_directory(folderStatus)) {
-        return failure(path, "'" + folder.string() + "' is not a folder");
+        return failure(path, render::quoted(folder.string()) + " is not a folder");
     }
     if (::access(folder.c_str(), W_OK | X_OK) != 0) {
-        return failure(path, "folder '" + folder.string() + "' is not writable");
+        return failure(path, "folder " + render::quoted(folder.string()) + " is not writable");
     }
     if (fs::is_directory(fs::status(target, ec))) {
         return failure(path, "a folder of that name exists");
@@ -151,22 +130,57 @@ Status checkImageTarget(const std::string& path, int width, int height) {
 
 namespace {
 
+// A file written by name is only trusted once it reads back whole: some codecs do not report a write that
+// failed (libpng ignores a failed fwrite; libtiff's final directory write is unchecked by TIFFClose).
+// Empty when the file holds a complete image of this size.
+std::string readBackError(const std::string& file, int width, int height) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file);
+    if (!in) {
+        return "the written file does not read back (" + oneLine(OIIO::geterror()) + ")";
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width != width || spec.height != height) {
+        return "the written file does not read back at its size";
+    }
+    std::vector<unsigned char> pixels(spec.image_bytes());
+    if (!in->read_image(0, 0, 0, spec.nchannels, spec.format, pixels.data()) || in->has_error()) {
+        return "the written file is incomplete (" + oneLine(in->geterror()) + ")";
+    }
+    return {};
+}
+
 // The single place that talks to OIIO for output. `pixels` are interleaved, `channels` per pixel, of
 // type `memoryType`; OIIO converts them to the file type the format calls for (uint8 or half).
+//
+// The file is encoded into memory first and written by AtomicFile: OIIO's own file output does not
+// notice a full disk (libpng ignores a failed fwrite, so a truncated PNG was renamed into place with
+// success; libjpeg's write error ends in its error_exit, which printed the codec's message and left the
+// temporary behind). In memory no codec ever sees a write fail, and AtomicFile checks every byte, the
+// fsync and the close before the rename.
 Status writeAtomically(const std::string& path, int width, int height, int channels,
                        OIIO::TypeDesc memoryType, const void* pixels, const Format& format,
                        const ImageMetadata& metadata) {
-    const fs::path target(path);
-    const std::optional<fs::path> tempPath = temporarySibling(target);
-    if (!tempPath) {
-        return failure(path, "could not choose a temporary file name");
-    }
-    TemporaryFile temp(*tempPath);
-
-    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(temp.path().string());
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path, &memory);
     if (!out) {
         return failure(path, oneLine(OIIO::geterror()));
     }
+    // A writer that cannot (or must not, see Format::inMemory) write into memory writes a file by name:
+    // it gets a staged temporary path, its errors are checked after close(), and the file is read back.
+    std::optional<StagedPath> staged;
+    if (!format.inMemory || !out->supports("ioproxy")) {
+        Result<StagedPath> created = StagedPath::create(path);
+        if (!created) {
+            return Error{created.error()};
+        }
+        staged.emplace(std::move(created).value());
+        out = OIIO::ImageOutput::create(staged->path());
+        if (!out) {
+            return staged->failure(oneLine(OIIO::geterror()));
+        }
+    }
+    const std::string openName = staged ? staged->path() : path;
 
     const bool srgb = format.encoding == Encoding::Srgb8;
     OIIO::ImageSpec spec(width, height, channels, srgb ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF);
@@ -203,26 +217,31 @@ Status writeAtomically(const std::string& path, int width, int height, int chann
         spec.attribute("Software", "speculum " SPECULUM_VERSION);
     }
 
-    if (!out->open(temp.path().string(), spec)) {
-        return failure(path, oneLine(out->geterror()));
-    }
-    if (!out->write_image(memoryType, pixels)) {
-        const std::string message = oneLine(out->geterror());
-        out->close();
-        return failure(path, message);
-    }
-    if (!out->close()) {
-        return failure(path, oneLine(out->geterror()));
+    // OIIO reports some failures only in its error state, and some (a full disk) only at close().
+    std::string writerError;
+    if (!out->open(openName, spec)) {
+        writerError = oneLine(out->geterror());
+    } else {
+        const bool written = out->write_image(memoryType, pixels);
+        const bool closed = out->close();
+        if (!written || !closed || out->has_error()) {
+            writerError = oneLine(out->geterror());
+        }
     }
     out.reset();
-
-    std::error_code ec;
-    fs::rename(temp.path(), target, ec);
-    if (ec) {
-        return failure(path, "could not move the finished file into place: " + ec.message());
+    if (staged) {
+        if (writerError.empty()) {
+            writerError = readBackError(staged->path(), width, height);
+        }
+        return staged->commit(writerError);
     }
-    temp.release();
-    return Done{};
+    if (!writerError.empty()) {
+        return failure(path, writerError);
+    }
+    if (encoded.empty()) {
+        return failure(path, "OpenImageIO produced no bytes");
+    }
+    return writeFileAtomically(path, encoded.data(), encoded.size());
 }
 
 } // namespace
@@ -252,9 +271,10 @@ Status writeImage(const std::string& path, const Image& linear, const ImageMetad
     if (format.encoding == Encoding::LinearHalf) {
         std::vector<float> premultiplied(linear.rgba);
         for (std::size_t i = 0; i < pixels; ++i) {
-            const float alpha = premultiplied[i * 4 + 3];
+            const float alpha = halfRepresentable(premultiplied[i * 4 + 3]);
+            premultiplied[i * 4 + 3] = alpha;
             for (int c = 0; c < 3; ++c) {
-                premultiplied[i * 4 + c] *= alpha;
+                premultiplied[i * 4 + c] = halfRepresentable(premultiplied[i * 4 + c] * alpha);
             }
         }
         return writeAtomically(path, linear.width, linear.height, 4, OIIO::TypeDesc::FLOAT,

@@ -9,13 +9,17 @@ namespace speculum::render {
 
 // Writes a linear frame to PNG, JPEG, TIFF or OpenEXR, chosen by the extension (case-insensitive).
 // PNG/JPEG/TIFF get 8-bit sRGB-encoded values (clamped to 0..1, rounded, alpha straight; JPEG drops
-// alpha). EXR gets linear half floats with alpha premultiplied, as the OpenEXR convention expects.
+// alpha). EXR gets linear half floats with alpha premultiplied, as the OpenEXR convention expects;
+// values beyond the half range (+-65504, Inf included) are clamped to it and NaN becomes 0, so an EXR
+// never holds Inf or NaN.
 // Metadata attributes are stored as strings (PNG tEXt, EXR header, TIFF/JPEG tags); TIFF and JPEG cannot
 // hold custom keys, so "speculum:*" entries are appended to their ImageDescription as "key=value" lines.
 // "Software" defaults to "speculum <version>".
 //
-// Atomic: the file is written to a temporary sibling and renamed over `path` only once complete, so a
-// failure never leaves a partial file and never touches an existing one.
+// Atomic: the image is encoded in memory and written through render::AtomicFile (a temporary sibling,
+// every write, the fsync and the close checked, then renamed over `path`), so a failure (a full disk
+// included) is an error with one line, never leaves a partial file or a temporary, and never touches an
+// existing file: "out.png: the disk is full (No space left on device); the previous file is unchanged".
 Status writeImage(const std::string& path, const Image& linear, const ImageMetadata& metadata = {});
 
 // Writes 8-bit sRGB-encoded RGBA bytes as they are (no second encoding) to PNG, JPEG or TIFF; EXR

@@ -8,6 +8,11 @@
 namespace speculum::render::math {
 
 Result<Plane> mirrorPlane(const glm::dmat4& world) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(world[c][r]))
+                return Error{"the mirror's transform holds a value that is not a finite number, so it has no "
+                             "plane"};
     const glm::dvec3 ex(world[0]), ey(world[1]), ez(world[2]);
     glm::dvec3 normal = glm::cross(ez, ex); // spans the rectangle whatever the local Y scale
     const double length = glm::length(normal);
@@ -111,6 +116,61 @@ Polygon clip(const Polygon& in, F f) {
 }
 
 } // namespace
+
+glm::dmat4 visibleMirrorRectangle(const glm::dmat4& rectangle, const glm::dmat4& toClip) {
+    struct Vertex {
+        glm::dvec4 clip;
+        glm::dvec2 local;
+    };
+    std::vector<Vertex> poly;
+    for (const glm::dvec2& local :
+         {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)})
+        poly.push_back({toClip * glm::dvec4(local.x, 0.0, local.y, 1.0), local});
+    for (const Vertex& v : poly)
+        for (int i = 0; i < 4; ++i)
+            if (!std::isfinite(v.clip[i]))
+                return rectangle;
+    // −w ≤ x, y, z ≤ w, one half-space at a time (Sutherland–Hodgman).
+    for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
+        const int axis = plane / 2;
+        const double sign = plane % 2 ? -1.0 : 1.0;
+        auto f = [&](const Vertex& v) { return v.clip.w + sign * v.clip[axis]; };
+        std::vector<Vertex> out;
+        for (std::size_t i = 0; i < poly.size(); ++i) {
+            const Vertex& a = poly[i];
+            const Vertex& b = poly[(i + 1) % poly.size()];
+            const double fa = f(a), fb = f(b);
+            if (fa >= 0)
+                out.push_back(a);
+            if ((fa >= 0) != (fb >= 0)) {
+                const double t = fa / (fa - fb);
+                out.push_back({a.clip + (b.clip - a.clip) * t, a.local + (b.local - a.local) * t});
+            }
+        }
+        poly = std::move(out);
+    }
+    if (poly.size() < 3)
+        return rectangle; // nothing of it in view: drawn (and culled) as it is
+    glm::dvec2 lo(1.0), hi(-1.0);
+    for (const Vertex& v : poly) {
+        lo = glm::min(lo, v.local);
+        hi = glm::max(hi, v.local);
+    }
+    const glm::dvec2 extent = hi - lo; // of 2 for the whole rectangle
+    if (!(extent.x < 2e-3 || extent.y < 2e-3))
+        return rectangle;
+    // A margin of a tenth of the part (and of 1e-9 of the rectangle, for a part seen edge-on), so the
+    // frustum's edges, where rasterization decides pixel by pixel, lie well inside what is drawn.
+    const glm::dvec2 margin = glm::max(extent, glm::dvec2(1e-9)) * 0.1;
+    lo = glm::max(lo - margin, glm::dvec2(-1.0));
+    hi = glm::min(hi + margin, glm::dvec2(1.0));
+    const glm::dvec2 centre = (lo + hi) * 0.5, half = (hi - lo) * 0.5;
+    glm::dmat4 part(1.0);
+    part[0][0] = half.x;
+    part[2][2] = half.y;
+    part[3] = glm::dvec4(centre.x, 0.0, centre.y, 1.0);
+    return rectangle * part;
+}
 
 ScreenCoverage screenCoverage(const std::vector<glm::dvec3>& polygon, const glm::dmat4& viewProjection,
                               int width, int height, const PixelRect& bounds, const glm::dvec4* keepPlane) {

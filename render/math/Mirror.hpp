@@ -41,6 +41,17 @@ glm::dvec4 transformPlane(const glm::dvec4& plane, const glm::dmat4& m);
 // which, and there is no matrix.
 Result<glm::dmat4> obliqueProjection(const glm::dmat4& projection, const glm::dvec4& clipPlane);
 
+// The part of a mirror's rectangle worth drawing in a view. `rectangle` maps the unit square [-1, 1]² of
+// local XZ to the mirror's rectangle, `toClip` maps that square to the view's clip space. A GPU draws the
+// rectangle from float vertices: a mirror 1e12 wide seen from a few metres has corners 5e11 away, whose
+// float rounding (≈ 6e4) moves its plane by tens of kilometres, so objects in front of it are cut or lost.
+// When the part inside the view frustum is under a thousandth of the rectangle along either side, this
+// returns `rectangle` narrowed to that part's bounding box (a little larger, within the rectangle), so the
+// drawn corners lie near what is seen; otherwise `rectangle` itself, which keeps the mirror's texture
+// coordinates. Computed in double: clip-space positions are affine in the local ones, so the clipped
+// polygon's local coordinates interpolate exactly.
+glm::dmat4 visibleMirrorRectangle(const glm::dmat4& rectangle, const glm::dmat4& toClip);
+
 // A rectangle of pixels [x0, x1) × [y0, y1), y up (GL window coordinates).
 struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;

@@ -1,5 +1,6 @@
 #include "render/passes/MainPass.hpp"
 
+#include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"
 
@@ -17,6 +18,30 @@ std::string indexed(const char* name, int i) {
     return std::string(name) + "[" + std::to_string(i) + "]";
 }
 
+// A double vector as a float uniform that is never Inf or NaN: values no reader accepts (an intensity of
+// 1e39 overflows a float) are clamped to ±1e30, NaN becomes 0. Accepted values (SceneLimits.hpp) pass as
+// they are.
+glm::vec3 finiteUniform(const glm::dvec3& v) {
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i)
+        out[i] = std::isnan(v[i]) ? 0.0f : float(std::clamp(v[i], -1e30, 1e30));
+    return out;
+}
+
+// The inverse transpose of a model matrix, scaled so its largest column is unit length. The shader
+// normalizes the normal anyway, and a scale of 1e-20 or 1e20 would otherwise make it overflow or vanish
+// in float (a scale of 1e-9 gives 1e9 per normal, 1e-9 per tangent plane: far from both limits, but the
+// division costs nothing).
+glm::mat3 normalMatrix(const glm::dmat4& model) {
+    glm::dmat3 n = glm::inverseTranspose(glm::dmat3(model));
+    const double largest = std::max({glm::length(n[0]), glm::length(n[1]), glm::length(n[2])});
+    if (largest > 0.0 && std::isfinite(largest))
+        n /= largest;
+    else
+        n = glm::dmat3(1.0); // a singular or non-finite transform: no triangle of it is drawn anyway
+    return glm::mat3(n);
+}
+
 void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, const gl::Program& p,
                const MainPassContext& ctx) {
     const int count = std::min<int>(static_cast<int>(input.lights.size()), kMaxLights);
@@ -25,11 +50,13 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
         const Light& light = input.lights[static_cast<std::size_t>(i)];
         const int type = light.type == LightType::Point ? 0 : light.type == LightType::Directional ? 1 : 2;
         p.set(indexed("uLightType", i), type);
-        p.set(indexed("uLightPosition", i), glm::vec3(toCameraRelative * glm::dvec4(light.position, 1.0)));
+        p.set(indexed("uLightPosition", i),
+              finiteUniform(glm::dvec3(toCameraRelative * glm::dvec4(light.position, 1.0))));
+        const double dirLength = glm::length(light.direction);
         const glm::dvec3 dir =
-            glm::length(light.direction) > 0 ? glm::normalize(light.direction) : glm::dvec3(0, -1, 0);
+            dirLength > 0.0 && std::isfinite(dirLength) ? light.direction / dirLength : glm::dvec3(0, -1, 0);
         p.set(indexed("uLightDirection", i), glm::vec3(dir));
-        p.set(indexed("uLightRadiance", i), glm::vec3(light.color * light.intensity));
+        p.set(indexed("uLightRadiance", i), finiteUniform(light.color * light.intensity));
         const double outer = glm::radians(std::clamp(light.spotAngle, 0.1, 179.0));
         const double inner = outer * (1.0 - std::clamp(light.spotBlend, 0.0, 1.0));
         p.set(indexed("uLightSpotCos", i), glm::vec2(std::cos(outer), std::cos(inner)));
@@ -150,7 +177,7 @@ void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInp
     if (ctx.materialNormalMap)
         p.set("uHasTangents", gpu.hasTangents ? 1 : 0);
     p.set("uModel", glm::mat4(model));
-    p.set("uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(model))));
+    p.set("uNormalMatrix", normalMatrix(model));
     gpu.draw();
 }
 
@@ -159,9 +186,22 @@ glm::dmat4 mirrorRectangle(const Mirror& mirror) {
            glm::scale(glm::dmat4(1.0), glm::dvec3(mirror.size.x * 0.5, 1.0, mirror.size.y * 0.5));
 }
 
+namespace {
+
+// The mirror's rectangle as drawn in `view`: only the part in view when the rest is huge (see
+// math::visibleMirrorRectangle: a 1e12 mirror's float corners would move its plane by kilometres).
+glm::dmat4 drawnMirrorRectangle(const FrameInput& input, const Mirror& mirror, const ViewSetup& view) {
+    const glm::dmat4 rectangle = mirrorRectangle(mirror);
+    const glm::dmat4 toClip = view.viewProjection * math::cameraRelative(input.camera) * view.reflection;
+    return math::visibleMirrorRectangle(rectangle, toClip * rectangle);
+}
+
+} // namespace
+
 glm::mat4 mirrorRectangleClip(const FrameInput& input, const Mirror& mirror, const ViewSetup& view) {
     const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
-    return glm::mat4(view.viewProjection * toCameraRelative * view.reflection * mirrorRectangle(mirror));
+    return glm::mat4(view.viewProjection * toCameraRelative * view.reflection *
+                     drawnMirrorRectangle(input, mirror, view));
 }
 
 namespace {
@@ -235,7 +275,11 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
             outsideView(ctx.meshes.get(ctx.unitPlane).bounds, mirrorRectangle(input.mirrors[i]), input, view))
             continue;
         setMaterial(input.mirrors[i].material, p, ctx);
-        drawLitMesh(ctx.mirrorMesh(i), mirrorRectangle(input.mirrors[i]), input, p, ctx);
+        const MeshHandle& mesh = ctx.mirrorMesh(i);
+        drawLitMesh(mesh,
+                    mesh == ctx.unitPlane ? drawnMirrorRectangle(input, input.mirrors[i], view)
+                                          : mirrorRectangle(input.mirrors[i]),
+                    input, p, ctx);
     }
     if (input.reflector && input.reflector->mesh &&
         !(ctx.drawReflector && ctx.drawReflector(input, view, ctx))) {

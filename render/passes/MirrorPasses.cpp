@@ -1,5 +1,6 @@
 #include "render/passes/MirrorPasses.hpp"
 
+#include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -145,7 +146,11 @@ void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const Vi
         glBlendFunc(GL_ONE, GL_SRC1_COLOR);
     }
     glDepthMask(GL_TRUE);
-    drawLitMesh(context.unitPlane, mirrorRectangle(mirror), input, surfaceProgram, context);
+    // The same part of the rectangle as the mask drew (math::visibleMirrorRectangle).
+    const glm::dmat4 rectangle = mirrorRectangle(mirror);
+    const glm::dmat4 toClip = parent.viewProjection * math::cameraRelative(input.camera) * parent.reflection;
+    drawLitMesh(context.unitPlane, math::visibleMirrorRectangle(rectangle, toClip * rectangle), input,
+                surfaceProgram, context);
     glDisable(GL_BLEND);
     glDepthFunc(GL_LESS);
 }

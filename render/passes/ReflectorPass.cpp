@@ -1,5 +1,8 @@
 #include "render/passes/ReflectorPass.hpp"
 
+#include "render/GpuLimits.hpp"
+#include "render/io/Printable.hpp"
+
 #include <algorithm>
 
 namespace speculum::render::passes {
@@ -14,6 +17,12 @@ envmap::CaptureSettings captureSettings(const Reflector& r) {
     s.resolution = r.resolution;
     s.fill = r.fill == ReflectorFill::Direct ? envmap::FillMethod::Direct : envmap::FillMethod::Resampled;
     return s;
+}
+
+bool sameSettings(const envmap::CaptureSettings& a, const envmap::CaptureSettings& b) {
+    return a.type == b.type && a.resolution == b.resolution && a.cubeResolution == b.cubeResolution &&
+           (a.type == envmap::MapType::Cube || a.fill == b.fill) && a.mipmaps == b.mipmaps &&
+           a.colorFormat == b.colorFormat;
 }
 
 // Pass 1 sees the scene from the capture point: it is the origin of camera-relative space, so model
@@ -65,18 +74,65 @@ bool ReflectorPass::hasMap(const Reflector& reflector) const {
     return m_capture && m_settingsKey == envmapSettingsKey(reflector);
 }
 
+int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>& warnings) {
+    const envmap::CaptureSettings wanted = captureSettings(reflector);
+    const std::pair<int, int> kind{static_cast<int>(wanted.type),
+                                   wanted.type == envmap::MapType::Cube ? 0 : static_cast<int>(wanted.fill)};
+    std::string otherError;
+    const gl::SizeFallback::Fitted fitted =
+        m_fallbacks[kind].fit(reflector.resolution, kMinEnvmapResolution, [&](int n) -> Status {
+            envmap::CaptureSettings settings = wanted;
+            settings.resolution = n;
+            if (m_capture && sameSettings(m_capture->settings(), settings))
+                return Done{};
+            m_capture.reset(); // the old map's memory first: it may be what the new one needs
+            m_settingsKey = 0;
+            bool sizeFailure = false;
+            auto created = envmap::EnvironmentCapture::create(settings, &sizeFailure);
+            if (!created) {
+                if (!sizeFailure) { // a shader: no smaller size helps, and none is remembered as failing
+                    otherError = created.error();
+                    return Done{};
+                }
+                return Error{created.error()};
+            }
+            m_capture = std::move(*created);
+            return Done{};
+        });
+    const std::string name = "reflector " + quoted(reflector.name);
+    if (!otherError.empty()) {
+        m_capture.reset();
+        warnings.push_back(name + ": " + otherError);
+        return 0;
+    }
+    if (fitted.size == reflector.resolution)
+        return fitted.size;
+    const std::string asked = std::to_string(reflector.resolution) + " " +
+                              std::string(reflectorMapName(reflector.map)) + " environment map";
+    if (fitted.size == 0)
+        warnings.push_back(name + ": the " + asked + " " + fitted.reason + ", nor did any down to " +
+                           std::to_string(kMinEnvmapResolution) + "; the reflector is drawn without it");
+    else
+        warnings.push_back(name + ": the " + asked + " " + fitted.reason + "; using " +
+                           std::to_string(fitted.size));
+    return fitted.size;
+}
+
 Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& where, MainPassContext& context,
                               const EnvironmentMirrorPrograms& mirrors) {
     const Reflector& reflector = *input.reflector;
     const std::uint64_t key = envmapSettingsKey(reflector);
-    if (!m_capture || key != m_settingsKey) {
+    // allocate() normally made the map already, at a size that fits; a caller that did not gets it made
+    // here, still checked.
+    if (!m_capture || !sameSettings(m_capture->settings(), captureSettings(reflector))) {
         m_capture.reset();
+        m_settingsKey = 0;
         auto created = envmap::EnvironmentCapture::create(captureSettings(reflector));
         if (!created)
-            return Error{"reflector \"" + reflector.name + "\": " + created.error()};
+            return Error{"reflector " + quoted(reflector.name) + ": the environment map " + created.error()};
         m_capture = std::move(*created);
-        m_settingsKey = key;
     }
+    m_settingsKey = 0; // rendered below
     m_centre = where.centre;
     const FrameInput env = environmentInput(input, where.centre);
     envmap::CaptureView view;
@@ -114,6 +170,7 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
         drawEnvironmentTarget(env, component, reflector.mirrorDepth, {&m_warpFlat, &m_warpMirror}, warped);
     };
     m_capture->update(view, drawFace, drawWarped);
+    m_settingsKey = key;
     return Done{};
 }
 

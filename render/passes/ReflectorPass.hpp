@@ -3,12 +3,17 @@
 #include "render/FrameInput.hpp"
 #include "render/Result.hpp"
 #include "render/envmap/EnvironmentCapture.hpp"
+#include "render/gl/Allocation.hpp"
 #include "render/passes/EnvironmentMirrors.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/WarpMeshes.hpp"
 #include "render/plan/Planner.hpp"
 
+#include <map>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace speculum::render::passes {
 
@@ -27,6 +32,13 @@ public:
     Status init();
     // Selects the lit shaders' variant for the frame's lights (gl::Program::select) in every program.
     Status selectLighting(const std::string& variant, bool drawVariants);
+
+    // Allocates (or keeps) the reflector's map at the largest resolution up to its own that the GPU holds
+    // (halving from there) and returns it; 0 if not even the smallest fits, or on another error (both
+    // warned). A smaller resolution than asked adds a warning naming the reflector and both sizes.
+    // Resolutions that failed are remembered per map layout. The renderer plans and draws the frame with
+    // the resolution returned; the map is rendered by capture().
+    int allocate(const Reflector& reflector, std::vector<std::string>& warnings);
 
     // Renders the map for `input.reflector` (re-creating its textures when the map settings changed).
     // `mirrors` are the cube faces' mirror programs (the warp's variants are the pass's own).
@@ -54,9 +66,10 @@ public:
 
 private:
     std::optional<envmap::EnvironmentCapture> m_capture;
-    std::uint64_t m_settingsKey = 0;
-    glm::dvec3 m_centre{0.0}; // the capture point of the map, world space
-    gl::Program m_warp;       // mesh.vert with ENVMAP_WARP + mesh.frag
+    std::uint64_t m_settingsKey = 0; // of the map last rendered into m_capture; 0: not rendered yet
+    std::map<std::pair<int, int>, gl::SizeFallback> m_fallbacks; // by map type and fill
+    glm::dvec3 m_centre{0.0};                                    // the capture point of the map, world space
+    gl::Program m_warp;                                          // mesh.vert with ENVMAP_WARP + mesh.frag
     gl::Program m_warpFlat;   // shadow.vert with ENVMAP_WARP + flat.frag: mirror masks in the warp
     gl::Program m_warpMirror; // mesh.vert with ENVMAP_WARP + mirror.frag: mirror surfaces in the warp
     gl::Program m_surface;    // mesh.vert + reflector.frag

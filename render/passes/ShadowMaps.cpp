@@ -2,6 +2,7 @@
 
 #include "render/GpuLimits.hpp"
 #include "render/gl/Memory.hpp"
+#include "render/io/Printable.hpp"
 #include "render/passes/MainPass.hpp"
 
 #include <algorithm>
@@ -21,17 +22,23 @@ void setDepthSampling(GLenum target, int pcf) {
 
 } // namespace
 
-ShadowMap& ShadowMaps::prepare(int lightIndex, bool cube, int size) {
-    ShadowMap& map = m_maps[lightIndex];
-    if (map.depth && map.cube == cube && map.size == size)
-        return map;
-    map = ShadowMap{};
+Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size) {
+    m_maps.erase(lightIndex); // the old map's memory first: it may be what the new one needs
+    ShadowMap map;
     map.cube = cube;
     map.size = size;
+    const std::size_t bytes = (cube ? 6u : 1u) * static_cast<std::size_t>(size) *
+                              static_cast<std::size_t>(size) * gl::bytesPerTexel(GL_DEPTH_COMPONENT24);
+    if (Status fits = gl::beginAllocation(bytes); !fits)
+        return fits;
     map.depth = gl::makeTexture();
     map.framebuffer = gl::makeFramebuffer();
     const GLenum target = cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
     glBindTexture(target, map.depth.id());
+    // One level, said before the upload: with the default mipmapped minification filter a driver may
+    // reserve a whole mip chain with level 0, a third more memory than the map needs.
+    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
+    setDepthSampling(target, map.pcf);
     if (cube) {
         for (int face = 0; face < 6; ++face)
             glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_DEPTH_COMPONENT24, size, size, 0,
@@ -48,7 +55,63 @@ ShadowMap& ShadowMaps::prepare(int lightIndex, bool cube, int size) {
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
     setDepthSampling(target, map.pcf);
     glBindTexture(target, 0);
-    return map;
+    if (Status allocated = gl::finishAllocation(); !allocated)
+        return allocated;
+    // Drivers may allocate only when the texture is first used: a target that cannot be drawn into is
+    // as failed as an out-of-memory error.
+    gl::FramebufferBinding keepBinding;
+    glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer.id());
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    for (int face = 0; face < (cube ? 6 : 1); ++face) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                               cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GLenum(GL_TEXTURE_2D),
+                               map.depth.id(), 0);
+        if (Status complete = gl::checkFramebuffer(); !complete)
+            return complete;
+    }
+    m_maps.emplace(lightIndex, std::move(map));
+    return Done{};
+}
+
+int ShadowMaps::allocate(const FrameInput& input, int lightIndex, std::vector<std::string>& warnings) {
+    const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
+    const int requested = std::max(light.shadows.mapSize, kMinShadowMapSize);
+    const auto frustum = math::shadowFrustum(input, light, requested);
+    if (!frustum)
+        return requested; // no map is drawn
+    const bool cube = frustum->cube;
+    gl::SizeFallback& fallback = cube ? m_fallbackCube : m_fallback2D;
+    const gl::SizeFallback::Fitted fitted =
+        fallback.fit(requested, kMinShadowMapSize, [&](int size) -> Status {
+            if (const ShadowMap* map = find(lightIndex);
+                map && map->depth && map->cube == cube && map->size == size)
+                return Done{};
+            return allocateMap(lightIndex, cube, size);
+        });
+    if (fitted.size == requested)
+        return requested;
+    const std::string name =
+        light.name.empty() ? "light " + std::to_string(lightIndex) : "light " + quoted(light.name);
+    const std::string asked = std::to_string(requested) + "²" + (cube ? " cube" : "");
+    if (fitted.size == 0)
+        warnings.push_back(name + ": the " + asked + " shadow map " + fitted.reason +
+                           ", nor did any down to " + std::to_string(kMinShadowMapSize) +
+                           "²; the light casts no shadows");
+    else
+        warnings.push_back(name + ": the " + asked + " shadow map " + fitted.reason + "; using " +
+                           std::to_string(fitted.size) + "²");
+    return fitted.size;
+}
+
+ShadowMap& ShadowMaps::prepare(int lightIndex, bool cube, int size) {
+    if (auto it = m_maps.find(lightIndex);
+        it != m_maps.end() && it->second.depth && it->second.cube == cube && it->second.size == size)
+        return it->second;
+    // allocate() normally made it already; a caller that did not still gets a checked allocation (an empty
+    // map when it fails), only without the fallback.
+    (void)allocateMap(lightIndex, cube, size);
+    return m_maps[lightIndex];
 }
 
 std::size_t ShadowMaps::bytes(int lightIndex) const {
@@ -84,6 +147,10 @@ void ShadowMaps::render(const FrameInput& input, int lightIndex, gl::MeshCache& 
     if (!frustum)
         return;
     ShadowMap& map = prepare(lightIndex, frustum->cube, size);
+    if (!map.depth) { // it did not fit: the main pass samples no map for the light
+        m_maps.erase(lightIndex);
+        return;
+    }
     setPcf(lightIndex, light.shadows.pcf);
     map.frustum = *frustum;
 

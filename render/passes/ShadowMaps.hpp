@@ -1,13 +1,16 @@
 #pragma once
 
 #include "render/FrameInput.hpp"
+#include "render/gl/Allocation.hpp"
 #include "render/gl/GpuMesh.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/gl/Program.hpp"
 #include "render/gl/TextureCache.hpp"
 #include "render/math/ShadowFrustum.hpp"
 
+#include <string>
 #include <unordered_map>
+#include <vector>
 
 namespace speculum::render::passes {
 
@@ -24,6 +27,12 @@ struct ShadowMap {
 
 class ShadowMaps {
 public:
+    // Allocates (or keeps) the depth map of input.lights[lightIndex] at the largest size up to the one
+    // asked for that the GPU holds, halving from there, and returns that size; 0 if not even the
+    // smallest map fits. A smaller size than asked adds a warning naming the light and both sizes.
+    // Sizes that failed are remembered: later frames go straight to the size that worked. The renderer
+    // plans and draws the frame with the size returned.
+    int allocate(const FrameInput& input, int lightIndex, std::vector<std::string>& warnings);
     // Renders the depth map of input.lights[lightIndex] from every shadow caster. Casters with an alpha
     // mask (Material::alphaMode) draw with the program's SHADOW_MASK variant, which discards where the
     // material is cut away, so their shadows have the same holes; that needs `textures` (null: they cast
@@ -39,8 +48,12 @@ public:
     void clear() { m_maps.clear(); }
 
 private:
+    // Allocates a new map of that size, checked; nothing is left behind when it fails.
+    Status allocateMap(int lightIndex, bool cube, int size);
     ShadowMap& prepare(int lightIndex, bool cube, int size);
     std::unordered_map<int, ShadowMap> m_maps;
+    gl::SizeFallback m_fallback2D;   // spot and directional lights' maps
+    gl::SizeFallback m_fallbackCube; // point lights' cube maps (six faces)
 };
 
 } // namespace speculum::render::passes

@@ -81,6 +81,14 @@ struct Planner {
             if (parent && parent->mirror == m)
                 continue; // a planar mirror never sees itself
             const Mirror& mirror = input.mirrors[static_cast<std::size_t>(m)];
+            // A size that is not a positive finite number has no rectangle to draw (NaN would pass every
+            // later test as "outside the view", which is not why).
+            if (!(mirror.size.x > 0.0 && mirror.size.y > 0.0 && std::isfinite(mirror.size.x) &&
+                  std::isfinite(mirror.size.y))) {
+                if (!parent)
+                    skip(parentView, m, "no reflection: the mirror's size is not a positive finite number");
+                continue;
+            }
             const auto plane = math::mirrorPlane(mirror.world);
             if (!plane) {
                 if (!parent)

@@ -121,6 +121,24 @@ unsigned attach(RTCDevice device, RTCScene scene, const Surface& s) {
     return id;
 }
 
+// The ray's hit on triangle (a, b, c) in double (Möller–Trumbore): (t, u, v) with the barycentrics of b
+// and c, whether or not they lie inside; nothing when the ray is parallel to the plane.
+std::optional<glm::dvec3> exactHit(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& a,
+                                   const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 e1 = b - a, e2 = c - a;
+    const glm::dvec3 p = glm::cross(direction, e2);
+    const double det = glm::dot(e1, p);
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det))
+        return std::nullopt;
+    const double inv = 1.0 / det;
+    const glm::dvec3 s = origin - a;
+    const glm::dvec3 q = glm::cross(s, e1);
+    const glm::dvec3 tuv(glm::dot(e2, q) * inv, glm::dot(s, p) * inv, glm::dot(direction, q) * inv);
+    if (!finite(tuv))
+        return std::nullopt;
+    return tuv;
+}
+
 std::string deviceError(RTCDevice device) {
     switch (rtcGetDeviceError(device)) {
     case RTC_ERROR_NONE:
@@ -218,10 +236,15 @@ SceneGeometry::build(const FrameInput& input, const glm::dvec3& origin, std::vec
         rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
         rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
     }
+    const bool exactMirrors = input.mirrors.size() <= kExactMirrors;
     for (std::size_t i = 0; i < geometry->m_surfaces.size(); ++i) {
         const Surface& s = geometry->m_surfaces[i];
         if (s.indices.empty())
             continue;
+        if (exactMirrors && s.kind == SurfaceKind::Mirror) { // casts no shadow either
+            geometry->m_exactSurface.push_back(static_cast<int>(i));
+            continue;
+        }
         // Each scene numbers its geometries from 0 in attach order.
         attach(embree->device, embree->all, s);
         geometry->m_allSurface.push_back(static_cast<int>(i));
@@ -257,22 +280,68 @@ std::optional<Hit> SceneGeometry::intersect(const glm::dvec3& origin, const glm:
     rh.ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_embree->all, &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.geomID >= m_allSurface.size())
+    if (!m_allSurface.empty())
+        rtcIntersect1(m_embree->all, &context, &rh);
+    const Surface* best = nullptr;
+    std::size_t bestTriangle = 0;
+    double bestT = tfar, bestU = 0.0, bestV = 0.0;
+    if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID && rh.hit.geomID < m_allSurface.size()) {
+        const Surface& s = m_surfaces[static_cast<std::size_t>(m_allSurface[rh.hit.geomID])];
+        const std::size_t tri = static_cast<std::size_t>(rh.hit.primID) * 3;
+        if (tri + 2 < s.indices.size()) {
+            best = &s;
+            bestTriangle = rh.hit.primID;
+            bestT = rh.ray.tfar;
+            bestU = rh.hit.u;
+            bestV = rh.hit.v;
+            // Embree's t, u, v come from float arithmetic on a float copy: the barycentrics of a triangle
+            // 1e9 wide are 1e-7 · 1e9 = 100 m off. Recomputed in double on the exact triangle.
+            const auto exact = exactHit(origin, direction, s.positions[s.indices[tri]],
+                                        s.positions[s.indices[tri + 1]], s.positions[s.indices[tri + 2]]);
+            if (exact && (*exact)[0] >= 0.0) {
+                bestT = (*exact)[0];
+                bestU = (*exact)[1];
+                bestV = (*exact)[2];
+            }
+        }
+    }
+    // Mirrors, exactly, in front of whatever Embree found.
+    const double from = std::max(tnear, 0.0);
+    for (const int index : m_exactSurface) {
+        const Surface& s = m_surfaces[static_cast<std::size_t>(index)];
+        for (std::size_t tri = 0; tri + 2 < s.indices.size(); tri += 3) {
+            const auto exact = exactHit(origin, direction, s.positions[s.indices[tri]],
+                                        s.positions[s.indices[tri + 1]], s.positions[s.indices[tri + 2]]);
+            if (!exact)
+                continue;
+            const double t = (*exact)[0], u = (*exact)[1], v = (*exact)[2];
+            // A hair of tolerance so no ray slips between the rectangle's two triangles.
+            constexpr double kEdge = 1e-12;
+            if (t >= from && t <= bestT && u >= -kEdge && v >= -kEdge && u + v <= 1.0 + kEdge) {
+                best = &s;
+                bestTriangle = tri / 3;
+                bestT = t;
+                bestU = u;
+                bestV = v;
+            }
+        }
+    }
+    if (!best)
         return std::nullopt;
+    return makeHit(*best, bestTriangle, bestU, bestV, bestT, direction);
+}
 
-    const Surface& s = m_surfaces[static_cast<std::size_t>(m_allSurface[rh.hit.geomID])];
-    const std::size_t tri = static_cast<std::size_t>(rh.hit.primID) * 3;
-    if (tri + 2 >= s.indices.size())
-        return std::nullopt;
+Hit SceneGeometry::makeHit(const Surface& s, std::size_t triangle, double uIn, double vIn, double t,
+                           const glm::dvec3& direction) const {
+    const std::size_t tri = triangle * 3;
     const std::uint32_t a = s.indices[tri], b = s.indices[tri + 1], c = s.indices[tri + 2];
-    const double u = std::clamp(double(rh.hit.u), 0.0, 1.0);
-    const double v = std::clamp(double(rh.hit.v), 0.0, 1.0 - u);
+    const double u = std::clamp(uIn, 0.0, 1.0);
+    const double v = std::clamp(vIn, 0.0, 1.0 - u);
     const double w = 1.0 - u - v;
 
     Hit hit;
     hit.surface = &s;
-    hit.t = rh.ray.tfar;
+    hit.t = t;
     // Interpolated in double on the exact triangle: lies on the surface, not a float step off it.
     hit.position = w * s.positions[a] + u * s.positions[b] + v * s.positions[c];
     const double dirLength = glm::length(direction);

@@ -91,6 +91,15 @@ private:
     std::vector<Surface> m_surfaces;
     std::vector<int> m_allSurface;    // scene geometry id → surface index
     std::vector<int> m_shadowSurface; // shadow scene geometry id → surface index
+    // Surfaces intersected in double here instead of by Embree: the mirrors (up to kExactMirrors). Embree
+    // holds a float copy of each triangle; a mirror 1e12 wide has corners whose rounding (≈ 6e4) tilts
+    // and moves its plane by kilometres where the camera looks at it, so its hits (and the order of hits
+    // in front of it) come out wrong.
+    std::vector<int> m_exactSurface;
+    static constexpr std::size_t kExactMirrors = 64;
+
+    Hit makeHit(const Surface& s, std::size_t triangle, double u, double v, double t,
+                const glm::dvec3& direction) const;
 };
 
 } // namespace speculum::render::reference

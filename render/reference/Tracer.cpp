@@ -24,8 +24,16 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-bool finite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+// The largest value of the rasterizer's half-float colour buffer (shaders/radiance.glsl): each sample is
+// clamped to ±65504 and NaN becomes 0, as the GPU stores it, so both renderers show an over-bright
+// surface alike and neither writes a non-finite pixel.
+constexpr double kMaxRadiance = 65504.0;
+
+glm::dvec3 storableRadiance(const glm::dvec3& c) {
+    glm::dvec3 out;
+    for (int i = 0; i < 3; ++i)
+        out[i] = std::isnan(c[i]) ? 0.0 : std::clamp(c[i], -kMaxRadiance, kMaxRadiance);
+    return out;
 }
 
 } // namespace
@@ -234,7 +242,7 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
                         const glm::dvec3 dir = rayThrough(x + (i + 0.5) / n, y + (j + 0.5) / n);
                         glm::dvec3 c = impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near,
                                                      primary, n == 1 ? &id : nullptr);
-                        sum += finite(c) ? c : glm::dvec3(0.0);
+                        sum += storableRadiance(c);
                     }
                 if (n > 1) // what the pixel's centre shows
                     impl.radiance(shader, settings, glm::dvec3(0.0), rayThrough(x + 0.5, y + 0.5),

@@ -269,3 +269,287 @@ TEST_F(Cli, BadExportFailsWithOneLineAndWritesNothing) {
 }
 
 } // namespace
+
+// Issue 14, classes 6-8: the command line's own edges, silent drops in scripts, and one-line messages.
+namespace {
+
+// Runs the binary under `env` with the given environment changes ("-u DISPLAY ..."), stdin from /dev/null.
+CliRun speculumWithEnv(const std::string& env, const std::string& arguments) {
+    static int counter = 0;
+    const fs::path errFile = fs::temp_directory_path() / ("speculum-cli-env-" + std::to_string(::getpid()) +
+                                                          "-" + std::to_string(++counter));
+    const std::string command = "env " + env + " " + std::string(SPECULUM_BINARY) + " " + arguments + " 2>" +
+                                errFile.string() + " </dev/null";
+    CliRun run;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+        run.out.append(buffer.data(), n);
+    const int raw = ::pclose(pipe);
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(errFile);
+    run.err.assign(std::istreambuf_iterator<char>(in), {});
+    fs::remove(errFile);
+    return run;
+}
+
+std::string readAll(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+std::size_t lines(const std::string& text) {
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+// Every line of stderr is one of speculum's own ("speculum: ..."): nothing forged, nothing from Qt.
+void expectOwnLines(const std::string& err, const std::string& context) {
+    std::size_t start = 0;
+    while (start < err.size()) {
+        const std::size_t end = err.find('\n', start);
+        const std::string line =
+            err.substr(start, end == std::string::npos ? std::string::npos : end - start);
+        EXPECT_EQ(line.rfind("speculum: ", 0), 0u) << context << ": " << line;
+        if (end == std::string::npos)
+            break;
+        start = end + 1;
+    }
+}
+
+// A small scene: camera at z = 3 looking at the origin, `nodes` (a JSON array body) in it.
+void writeScene(const fs::path& path, const std::string& nodes) {
+    std::ofstream(path) << R"({"format": "speculum-scene", "version": 1,
+        "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "fovY": 60, "near": 0.1,
+                   "far": 20},
+        "nodes": [)" << nodes
+                        << "]}";
+}
+
+const char* kBox = R"({"name": "Box", "mesh": {"builtin": "box"}})";
+const char* kLight =
+    R"({"name": "Light", "transform": {"translate": [0, 2, 2]}, "light": {"type": "point"}})";
+
+TEST_F(Cli, OutputPathEdgesFailWithOneLineAndAClearStatus) {
+    const fs::path loop = m_dir / "loop";
+    fs::create_directory_symlink(loop, loop); // loop -> loop
+    const fs::path file = m_dir / "plain-file";
+    std::ofstream(file) << "x";
+    const std::string longName(300, 'n');
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"render " + demo() + " -o " + (loop / "out.png").string() + " --size 64x48", "symbolic links"},
+        {"render " + demo() + " -o " + (m_dir / (longName + ".png")).string() + " --size 64x48", "255 bytes"},
+        {"render " + demo() + " -o " + (file / "out.png").string() + " --size 64x48", "not a folder"},
+        {"export " + demo() + " -o " + (loop / "out.glb").string(), "symbolic links"},
+        {"export " + demo() + " -o " + (m_dir / (longName + ".glb")).string(), "255 bytes"},
+        {"bench " + demo() + " --out " + (loop / "sub").string() + " --quick", "symbolic links"},
+        {"bench " + demo() + " --out " + (m_dir / longName).string() + " --quick", "255 bytes"},
+    };
+    for (const auto& [args, expected] : cases) {
+        const CliRun run = speculum(args);
+        EXPECT_EQ(run.status, 1) << args << " → " << run.err;
+        EXPECT_EQ(lines(run.err), 1u) << args << " → " << run.err;
+        EXPECT_EQ(run.err.rfind("speculum: error: ", 0), 0u) << run.err;
+        EXPECT_NE(run.err.find(expected), std::string::npos) << args << " → " << run.err;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(m_dir), fs::directory_iterator{}), 2) << "nothing written";
+}
+
+TEST_F(Cli, AnOutputThatIsAnInputIsRefusedAndLeftIntact) {
+    // A project whose name is also an image name, and a texture it reads, reached directly, through a
+    // symlink and through a hard link: each refused before anything is written.
+    const fs::path texture = m_dir / "tex_0.png";
+    {
+        auto out = OIIO::ImageOutput::create(texture.string());
+        ASSERT_TRUE(out);
+        const OIIO::ImageSpec spec(2, 2, 3, OIIO::TypeDesc::UINT8);
+        ASSERT_TRUE(out->open(texture.string(), spec));
+        const std::array<unsigned char, 12> pixels{255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()));
+        out->close();
+    }
+    const fs::path project = m_dir / "scene.png";
+    writeScene(project,
+               R"({"name": "Box", "mesh": {"builtin": "box"}, "material": {"texture": "tex_0.png"}})");
+    const fs::path json = m_dir / "scene.speculum.json";
+    fs::copy_file(project, json);
+    fs::create_symlink(project, m_dir / "link.png");
+    fs::create_hard_link(project, m_dir / "hard.png");
+    fs::create_symlink(texture, m_dir / "texlink.png");
+    fs::create_directory(m_dir / "sub");
+    const std::string projectBytes = readAll(project), textureBytes = readAll(texture);
+    const std::string p = project.string(), d = m_dir.string();
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"render " + json.string() + " -o " + json.string(), "unsupported image format"},
+        {"render " + p + " -o " + p + " --size 64x48", "reads"},
+        {"render " + p + " -o " + d + "/link.png --size 64x48", "reads"},
+        {"render " + p + " -o " + d + "/hard.png --size 64x48", "reads"},
+        {"render " + p + " -o " + d + "/sub/../scene.png --size 64x48 --reference", "reads"},
+        {"render " + p + " -o " + texture.string() + " --size 64x48", "tex_0.png"},
+        {"render " + p + " -o " + d + "/texlink.png --size 64x48", "tex_0.png"},
+        {"export " + p + " -o " + d + "/tex.gltf", "tex_0.png"}, // would write tex_0.png beside tex.gltf
+        {"bench " + p + " --out " + d + " --quick", "holds"},
+        {"bench " + p + " --out " + p + " --quick", "not a folder"},
+    };
+    for (const auto& [args, expected] : cases) {
+        const CliRun run = speculum(args);
+        EXPECT_EQ(run.status, 1) << args << " → " << run.err;
+        EXPECT_EQ(lines(run.err), 1u) << args << " → " << run.err;
+        EXPECT_NE(run.err.find(expected), std::string::npos) << args << " → " << run.err;
+        EXPECT_EQ(readAll(project), projectBytes) << args;
+        EXPECT_EQ(readAll(json), projectBytes) << args;
+        EXPECT_EQ(readAll(texture), textureBytes) << args;
+    }
+    EXPECT_FALSE(fs::exists(m_dir / "tex.gltf"));
+    EXPECT_FALSE(fs::exists(m_dir / "tex.bin"));
+    EXPECT_TRUE(fs::is_empty(m_dir / "sub"));
+    // The same project renders fine to a name of its own.
+    const CliRun ok = speculum("render " + p + " -o " + d + "/sub/still.png --size 64x48");
+    EXPECT_EQ(ok.status, 0) << ok.err;
+}
+
+TEST_F(Cli, AMistypedCommandIsRefusedWithASuggestion) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"rendr " + demo(), "unknown command 'rendr' (did you mean 'render'?)"},
+        {"rendr", "unknown command 'rendr' (did you mean 'render'?)"},
+        {"expoer " + demo() + " -o x.glb", "did you mean 'export'?"},
+        {"Bench " + demo(), "did you mean 'bench'?"},
+        {"frobnicate a b", "unknown command 'frobnicate' (commands:"},
+        {"\"$(printf 're\\nnder')\" " + demo(), "unknown command 're\\nnder'"}, // escaped, on one line
+    };
+    for (const auto& [args, expected] : cases) {
+        const CliRun run = speculumWithEnv("-u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM", args);
+        EXPECT_EQ(run.status, 2) << args << " → " << run.err;
+        EXPECT_EQ(lines(run.err), 1u) << args << " → " << run.err;
+        EXPECT_EQ(run.err.rfind("speculum: error: ", 0), 0u) << run.err;
+        EXPECT_NE(run.err.find(expected), std::string::npos) << args << " → " << run.err;
+    }
+}
+
+TEST_F(Cli, TheEditorWithoutADisplaySaysSoInOneLine) {
+    // A project path (existing or not) still means the editor, not an unknown command.
+    for (const std::string& args : {std::string(), demo(), (m_dir / "new.speculum.json").string()}) {
+        const CliRun run = speculumWithEnv("-u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM", args);
+        EXPECT_EQ(run.status, 1) << args << " → " << run.err;
+        EXPECT_EQ(lines(run.err), 1u) << args << " → " << run.err;
+        EXPECT_NE(run.err.find("speculum: error: the editor needs a display"), std::string::npos) << run.err;
+        EXPECT_EQ(run.err.find("qt."), std::string::npos) << run.err;
+    }
+    // The headless commands need none (scripts/run's fallback).
+    const CliRun still =
+        speculumWithEnv("-u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM",
+                        "render " + demo() + " -o " + (m_dir / "t.png").string() + " --size 64x48");
+    EXPECT_EQ(still.status, 0) << still.err;
+}
+
+TEST_F(Cli, AMissingModelOrTextureFailsUnlessKeepGoing) {
+    const fs::path project = m_dir / "missing.speculum.json";
+    writeScene(project, std::string(kBox) + "," + kLight +
+                            R"(, {"name": "Statue", "mesh": {"file": "models/statue.obj"}},
+                               {"name": "Floor", "mesh": {"builtin": "plane"},
+                                "material": {"texture": "gone/floor.png"}})");
+    const fs::path out = m_dir / "out.png";
+    const fs::path glb = m_dir / "out.glb";
+    for (const std::string& command :
+         {"render " + project.string() + " -o " + out.string() + " --size 64x48",
+          "render " + project.string() + " -o " + out.string() + " --size 64x48 --reference",
+          "export " + project.string() + " -o " + glb.string(),
+          "bench " + project.string() + " --out " + (m_dir / "b").string() + " --quick --size 64x48"}) {
+        const CliRun run = speculum(command);
+        EXPECT_EQ(run.status, 1) << command << " → " << run.err;
+        EXPECT_EQ(lines(run.err), 1u) << command << " → " << run.err;
+        EXPECT_NE(run.err.find("statue.obj"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find("and 1 more"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find("--keep-going"), std::string::npos) << run.err;
+    }
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(glb));
+    EXPECT_FALSE(fs::exists(m_dir / "b"));
+
+    const CliRun going =
+        speculum("render " + project.string() + " -o " + out.string() + " --size 64x48 --keep-going");
+    ASSERT_EQ(going.status, 0) << going.err;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_NE(going.err.find("speculum: warning: node 'Statue'"), std::string::npos) << going.err;
+    EXPECT_NE(going.err.find("statue.obj"), std::string::npos) << going.err;
+    EXPECT_NE(going.err.find("speculum: warning: node 'Floor': texture"), std::string::npos) << going.err;
+    EXPECT_EQ(going.err.find("speculum: error"), std::string::npos) << going.err;
+    const CliRun exported = speculum("export " + project.string() + " -o " + glb.string() + " --keep-going");
+    EXPECT_EQ(exported.status, 0) << exported.err;
+    EXPECT_NE(exported.err.find("floor.png"), std::string::npos) << exported.err;
+}
+
+TEST_F(Cli, EveryDropIsAWarning) {
+    // Nine lights: the ninth is not drawn. 65 small mirrors in view: a frame holds at most 64 mirror
+    // views, so the last is drawn without its reflection. A box in front hides a few (expected: no warning).
+    std::string nodes =
+        R"({"name": "Box", "mesh": {"builtin": "box"}, "transform": {"translate": [0, 0, 1.5],
+            "scale": [0.2, 0.2, 0.2]}})";
+    for (int i = 1; i <= 9; ++i)
+        nodes += R"(, {"name": "L)" + std::to_string(i) + R"(", "transform": {"translate": [)" +
+                 std::to_string(i - 5) + R"(, 2, 2]}, "light": {"type": "point", "intensity": 0.2}})";
+    for (int i = 0; i < 65; ++i)
+        nodes += R"(, {"name": "M)" + std::to_string(i) + R"(", "transform": {"translate": [)" +
+                 std::to_string((i % 13) * 0.3 - 1.8) + ", " + std::to_string((i / 13) * 0.3 - 0.6) +
+                 R"(, -1], "rotate": [90, 0, 0]}, "mirror": {"size": [0.25, 0.25]}})";
+    const fs::path project = m_dir / "drops.speculum.json";
+    writeScene(project, nodes);
+    for (const std::string& extra : {std::string(), std::string(" --reference")}) {
+        const CliRun run = speculum("render " + project.string() + " -o " + (m_dir / "d.png").string() +
+                                    " --size 64x48" + extra);
+        ASSERT_EQ(run.status, 0) << run.err;
+        EXPECT_NE(run.err.find("speculum: warning: light 'L9' ignored: at most 8 lights are drawn"),
+                  std::string::npos)
+            << run.err;
+        EXPECT_EQ(run.err.find("'L8' ignored"), std::string::npos) << run.err;
+        if (extra.empty()) {
+            EXPECT_NE(
+                run.err.find("speculum: warning: mirror 'M64': skipped: no reflection: the frame already "
+                             "has 64 mirror views"),
+                std::string::npos)
+                << run.err;
+            EXPECT_EQ(run.err.find("occluded"), std::string::npos) << "hidden mirrors are no drop";
+        }
+        expectOwnLines(run.err, extra);
+    }
+    // The demo drops nothing: no warnings at all.
+    const CliRun clean = speculum("render " + demo() + " -o " + (m_dir / "c.png").string() + " --size 64x48");
+    ASSERT_EQ(clean.status, 0) << clean.err;
+    EXPECT_EQ(clean.err.find("warning"), std::string::npos) << clean.err;
+}
+
+TEST_F(Cli, NamesInMessagesAreEscapedOnOneLine) {
+    // A node name that tries to start a line of its own, with an escape for the terminal.
+    const std::string forged = R"(Evil\n speculum: error: forged\u001b[2J)";
+    const std::string shown = "'Evil\\n speculum: error: forged\\x1b[2J'";
+    std::string lights;
+    for (int i = 1; i <= 8; ++i)
+        lights += R"(, {"name": "L)" + std::to_string(i) + R"(", "light": {"type": "point"}})";
+    const fs::path project = m_dir / "forged.speculum.json";
+    writeScene(project, std::string(kBox) + lights + R"(, {"name": ")" + forged +
+                            R"(", "light": {"type": "point"}}, {"name": ")" + forged +
+                            R"(", "mesh": {"file": "no-such-model.obj"}})");
+    const fs::path out = m_dir / "f.png";
+    const CliRun strict = speculum("render " + project.string() + " -o " + out.string() + " --size 64x48");
+    EXPECT_EQ(strict.status, 1) << strict.err;
+    EXPECT_EQ(lines(strict.err), 1u) << strict.err;
+    EXPECT_NE(strict.err.find(shown), std::string::npos) << strict.err;
+    expectOwnLines(strict.err, "strict");
+
+    const CliRun going =
+        speculum("render " + project.string() + " -o " + out.string() + " --size 64x48 --keep-going");
+    ASSERT_EQ(going.status, 0) << going.err;
+    EXPECT_NE(going.err.find("speculum: warning: light " + shown + " ignored"), std::string::npos)
+        << going.err;
+    EXPECT_NE(going.err.find("speculum: warning: node " + shown), std::string::npos) << going.err;
+    EXPECT_EQ(going.err.find('\x1b'), std::string::npos) << "no raw escape reaches the terminal";
+    expectOwnLines(going.err, "keep-going");
+
+    // Values from the command line are escaped the same way.
+    const CliRun size =
+        speculum("render " + demo() + " -o " + out.string() + " --size \"$(printf '1\\n2')\"");
+    EXPECT_EQ(size.status, 2);
+    EXPECT_EQ(lines(size.err), 1u) << size.err;
+    EXPECT_NE(size.err.find("'1\\n2'"), std::string::npos) << size.err;
+}
+
+} // namespace

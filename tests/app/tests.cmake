@@ -14,3 +14,7 @@ speculum_add_test(test_bench_cli TIER gl USES_CLI
 speculum_add_test(test_bench_demos TIER gl USES_CLI LABELS slow
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_bench_demos.cpp
     LIBS Qt6::Core)
+# Outputs onto a "full disk" (`ulimit -f`): render in each format, reference EXR, bench, export (gl tier).
+speculum_add_test(test_cli_write_failures TIER gl USES_CLI
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_cli_write_failures.cpp
+    LIBS Qt6::Core)

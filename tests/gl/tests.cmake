@@ -21,3 +21,16 @@ speculum_add_test(test_gl_materials TIER gl
 speculum_add_test(test_gl_imported_orientation TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_imported_orientation.cpp
     LIBS speculum_document speculum_render PkgConfig::OIIO)
+# Values at the limits of SceneLimits.hpp render finite and agree with the tracer; values beyond, finite.
+speculum_add_test(test_gl_extreme_values TIER gl
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_extreme_values.cpp
+    LIBS speculum_render PkgConfig::OIIO)
+# GPU allocations that do not fit (shadow maps, environment maps, render targets): drawn smaller, warned.
+speculum_add_test(test_gl_gpu_allocation TIER gl
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gpu_allocation.cpp
+    LIBS speculum_render)
+# The same with real 8192 reflectors drawn at the size the driver holds (seconds each on llvmpipe).
+speculum_add_test(test_gl_gpu_allocation_slow TIER gl LABELS slow
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gpu_allocation.cpp
+    LIBS speculum_render)
+target_compile_definitions(test_gl_gpu_allocation_slow PRIVATE SPECULUM_SLOW_ALLOCATION_TESTS=1)

@@ -29,3 +29,8 @@ speculum_add_test(test_selection TIER gui
 speculum_add_test(test_model_import_gui TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_model_import.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
     LIBS speculum_ui Qt6::Test assimp::assimp)
+# issue 14: Import and Open of hostile files (FIFOs, devices, DAG and deep node graphs, duplicate keys,
+# overflowing values) show an error, keep the event loop running and leave the open document as it was.
+speculum_add_test(test_hostile_files_gui TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_hostile_files.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)

@@ -314,3 +314,267 @@ TEST(ProjectVersion, CurrentVersionFilesPassTheHeaderAndUpgradeUnchanged) {
 
 } // namespace
 } // namespace speculum::document
+
+// ---- hostile text, repeated keys and paths that are not regular files ----
+
+#include "DocumentTestSupport.hpp"
+#include "editor/document/SweepResults.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <fcntl.h>
+#include <memory>
+#include <sys/stat.h>
+#include <thread>
+#include <unistd.h>
+
+namespace speculum::document {
+namespace {
+
+bool hasRawControl(const std::string& s) {
+    for (const char c : s) {
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::string bad(const std::string& json) {
+    std::vector<std::string> warnings;
+    auto result = parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
+    return result.ok() ? std::string("<loaded>") : result.error();
+}
+
+std::string sceneWith(const std::string& body) {
+    return R"({ "format": "speculum-scene", "version": 1, )" + body + "}";
+}
+
+TEST(ProjectMessages, ControlCharactersInANodeNameAreEscapedOnOneLine) {
+    // A name that would end the message line and forge one of its own, in a node the reader refuses.
+    const std::string m = bad(sceneWith(R"("nodes": [ { "name": "evil\n\u001b[2Kspeculum: error: forged\r",
+        "transform": { "scale": [1e9, 1, 1] },
+        "children": [ { "transform": { "scale": [1e9, 1, 1] } } ] } ])"));
+    // The child is refused; its own name is empty, so the parent's name is what a nested message names.
+    const std::string parentNamed = bad(sceneWith(R"("nodes": [ { "transform": { "scale": [1e9, 1, 1] },
+        "children": [ { "name": "evil\n\u001b[2Kspeculum: error: forged\r", "transform": { "scale": [2, 1, 1] } } ] } ])"));
+    for (const std::string& message : {m, parentNamed}) {
+        EXPECT_FALSE(hasRawControl(message)) << message;
+    }
+    EXPECT_NE(parentNamed.find("node 'evil\\n\\x1b[2Kspeculum: error: forged\\r'"), std::string::npos)
+        << parentNamed;
+    EXPECT_NE(parentNamed.find("nodes[0].children[0]:"), std::string::npos) << parentNamed;
+}
+
+TEST(ProjectMessages, ControlCharactersInStringValuesAreEscapedOnOneLine) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {sceneWith(R"("nodes": [ { "light": { "type": "lamp\nspeculum: error: x\u001b[0m" } } ])"),
+         "\"lamp\\nspeculum: error: x\\x1b[0m\""},
+        {sceneWith(R"("nodes": [ { "mesh": { "builtin": "\u0007bell\u2028" } } ])"), "\\x07bell\\u2028"},
+        {sceneWith(R"("nodes": [ { "material": { "alphaMode": "\u001b]0;title\u0007" } } ])"),
+         "\\x1b]0;title\\x07"},
+        {R"({ "format": "speculum\n\u001bscene", "version": 1 })", "speculum\\n\\x1bscene"},
+    };
+    for (const auto& [json, shown] : cases) {
+        const std::string m = bad(json);
+        EXPECT_FALSE(hasRawControl(m)) << m;
+        EXPECT_NE(m.find(shown), std::string::npos) << m << " lacks " << shown;
+    }
+    // A very long value is shortened, not echoed whole.
+    const std::string longType =
+        bad(sceneWith(R"("nodes": [ { "light": { "type": ")" + std::string(5000, 'x') + R"(" } } ])"));
+    EXPECT_LT(longType.size(), 300u) << longType.size();
+    EXPECT_NE(longType.find("..."), std::string::npos);
+}
+
+TEST(ProjectMessages, UnknownKeysInWarningsAreEscaped) {
+    std::vector<std::string> warnings;
+    auto scene = parseProject(QByteArray(R"({ "format": "speculum-scene", "version": 1,
+                                              "x\nspeculum: error: y\u001b": 1 })"),
+                              QDir("/tmp"), warnings);
+    ASSERT_TRUE(scene.ok()) << scene.error();
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_FALSE(hasRawControl(warnings[0])) << warnings[0];
+    EXPECT_NE(warnings[0].find("x\\nspeculum: error: y\\x1b: unknown field"), std::string::npos)
+        << warnings[0];
+}
+
+TEST(ProjectMessages, AnOverflowingCameraNamesTheFieldThatIsWrong) {
+    // The view direction of these overflows if computed naively: the cause is the position, not `up`.
+    const std::string m =
+        bad(sceneWith(R"("camera": { "position": [1e300, 0, 0], "target": [-1e300, 0, 0] })"));
+    EXPECT_NE(m.find("camera.position:"), std::string::npos) << m;
+    EXPECT_EQ(m.find("camera.up"), std::string::npos) << m;
+    const std::string t = bad(sceneWith(R"("camera": { "target": [0, 1e200, -1e200] })"));
+    EXPECT_NE(t.find("camera.target:"), std::string::npos) << t;
+    // In range but so close that float maths cannot tell them apart: named as the target, not `up`.
+    const std::string close =
+        bad(sceneWith(R"("camera": { "position": [1e11, 0, 0], "target": [100000000000.00002, 0, 1e-6] })"));
+    EXPECT_NE(close.find("camera.target: must differ from the camera position"), std::string::npos) << close;
+    // A tiny up is a problem of `up`, reported as such (not overflowing into "parallel").
+    const std::string up = bad(sceneWith(R"("camera": { "up": [0, 1e-300, 0] })"));
+    EXPECT_NE(up.find("camera.up: must be at least"), std::string::npos) << up;
+    // Up along the view direction, at any scale.
+    const std::string parallel = bad(sceneWith(R"("camera": { "up": [0, 0, -1e11] })"));
+    EXPECT_NE(parallel.find("camera.up: must not be parallel"), std::string::npos) << parallel;
+}
+
+TEST(ProjectDuplicateKeys, RepeatedKeysAreRefusedWithTheirPath) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {R"({ "format": "speculum-scene", "version": 1, "format": "speculum-scene" })",
+         "duplicate key 'format' at the top level"},
+        {sceneWith(
+             R"("nodes": [ { "name": "a" }, { "name": "b" }, { "name": "c", "mesh": {}, "name": "d" } ])"),
+         "nodes[2]: duplicate key 'name'"},
+        {sceneWith(
+             R"("nodes": [ { "transform": { "scale": [1, 1, 1], "translate": [0, 0, 0], "scale": [2, 2, 2] } } ])"),
+         "nodes[0].transform: duplicate key 'scale'"},
+        {sceneWith(R"("nodes": [ { "children": [ { "light": { "shadows": { "pcf": 3, "pcf": 5 } } } ] } ])"),
+         "nodes[0].children[0].light.shadows: duplicate key 'pcf'"},
+        {sceneWith(R"("camera": { "near": 1 }, "camera": { "near": 2 })"),
+         "duplicate key 'camera' at the top level"},
+        // Unknown fields are kept and written back: a repeat there would lose data on saving just the same.
+        {sceneWith(R"("future": { "list": [ { "x": 1 }, { "x": 1, "x": 2 } ] })"),
+         "future.list[1]: duplicate key 'x'"},
+        // Spelled differently, the same key once decoded.
+        {sceneWith(R"("nodes": [ { "name": "a", "n\u0061me": "b" } ])"), "nodes[0]: duplicate key 'name'"},
+        {sceneWith(R"("nodes": [ { "\u006E\u0061\u006D\u0065": "a", "name": "b" } ])"),
+         "nodes[0]: duplicate key 'name'"},
+        {sceneWith(R"("extra": { "a/b": 1, "a\/b": 2 })"), "extra: duplicate key 'a/b'"},
+        {sceneWith(R"("extra": { "caf\u00e9": 1, "café": 2 })"), "extra: duplicate key 'café'"},
+        {sceneWith(R"("extra": { "\ud83d\ude00": 1, "😀": 2 })"), "extra: duplicate key '😀'"},
+        // A key with control characters is shown escaped.
+        {sceneWith(R"("extra": { "\u001b[31m\n": 1, "\u001b[31m\u000a": 2 })"),
+         "extra: duplicate key '\\x1b[31m\\n'"},
+    };
+    for (const auto& [json, expected] : cases) {
+        const std::string m = bad(json);
+        EXPECT_NE(m.find(expected), std::string::npos) << m << "\n  expected: " << expected;
+        EXPECT_FALSE(hasRawControl(m)) << m;
+    }
+}
+
+TEST(ProjectDuplicateKeys, SimilarButDifferentKeysAndKeyLikeStringsLoad) {
+    const std::vector<std::string> fine = {
+        // Different keys that only look alike, and the same key in different objects.
+        sceneWith(
+            R"("extra": { "a": 1, "A": 2, "a ": 3, "\u00e9": 4, "e\u0301": 5, "\ud800": 6, "\udc00": 7 })"),
+        sceneWith(R"("nodes": [ { "name": "a" }, { "name": "a" } ], "extra": { "name": { "name": 1 } })"),
+        // Strings holding JSON-like text, escaped quotes and backslashes are values, not keys.
+        sceneWith(
+            R"("nodes": [ { "name": "{\"name\": 1, \"name\": 2}" }, { "name": "\\\", \"name\": \"" } ])"),
+        sceneWith(R"("extra": [ "k", "k", { "k": 1 }, { "k": 2 } ])"),
+    };
+    for (const std::string& json : fine) {
+        EXPECT_EQ(bad(json), "<loaded>") << json;
+    }
+}
+
+TEST(ProjectDuplicateKeys, DeepNestingIsScannedWithoutRecursion) {
+    // Deeper than anything real; the parser's own limit decides whether it loads, never a stack overflow.
+    std::string deep;
+    for (int i = 0; i < 5000; ++i) {
+        deep += R"({"a":)";
+    }
+    deep += "1";
+    for (int i = 0; i < 5000; ++i) {
+        deep += "}";
+    }
+    const std::string m = bad(sceneWith(R"("extra": )" + deep));
+    EXPECT_FALSE(m.empty());
+}
+
+// ---- the project path is not a regular file: refused at once, never read, never blocking ----
+
+// Runs load on another thread; a regression that blocks fails the test instead of hanging it: the FIFO's
+// other end, held open here, is closed after the timeout, which ends any blocked read.
+std::string loadWithTimeout(const std::function<std::string()>& load, int fifoWriter) {
+    auto done = std::make_shared<std::atomic<bool>>(false);
+    auto result = std::make_shared<std::string>();
+    std::thread([load, done, result] {
+        *result = load();
+        done->store(true);
+    }).detach();
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (!done->load() && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    if (fifoWriter >= 0) {
+        ::close(fifoWriter);
+    }
+    if (!done->load()) {
+        ADD_FAILURE() << "loading blocked for 5 s";
+        while (!done->load()) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+    return *result;
+}
+
+std::string projectError(const QString& path) {
+    std::vector<std::string> warnings;
+    auto result = loadProject(path, warnings);
+    return result.ok() ? std::string("<loaded>") : result.error();
+}
+
+TEST(ProjectPaths, AFifoIsRefusedWithoutBlocking) {
+    const auto folder = test::freshTestFolder();
+    const std::string fifo = (folder / "x.speculum.json").string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    // A writer that has written a valid scene and keeps the pipe open: a blocking reader would wait for EOF.
+    const int writer = ::open(fifo.c_str(), O_RDWR | O_NONBLOCK);
+    ASSERT_GE(writer, 0);
+    const std::string scene = R"({ "format": "speculum-scene", "version": 1 })";
+    ASSERT_EQ(::write(writer, scene.data(), scene.size()), static_cast<ssize_t>(scene.size()));
+    const auto start = std::chrono::steady_clock::now();
+    const std::string m = loadWithTimeout([&] { return projectError(QString::fromStdString(fifo)); }, writer);
+    EXPECT_EQ(m, "x.speculum.json: it is a FIFO (named pipe), not a regular file");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+
+    // The same for the bench results the accuracy panel opens.
+    const std::string results = (folder / "results.json").string();
+    ASSERT_EQ(::mkfifo(results.c_str(), 0600), 0);
+    const int resultsWriter = ::open(results.c_str(), O_RDWR | O_NONBLOCK);
+    ASSERT_GE(resultsWriter, 0);
+    const std::string r = loadWithTimeout(
+        [&] {
+            auto loaded = loadSweepResults(QString::fromStdString(results));
+            return loaded.ok() ? std::string("<loaded>") : loaded.error();
+        },
+        resultsWriter);
+    EXPECT_EQ(r, "results.json: it is a FIFO (named pipe), not a regular file");
+}
+
+TEST(ProjectPaths, DevicesFoldersAndMissingFilesAreRefused) {
+    const auto folder = test::freshTestFolder();
+    EXPECT_EQ(loadWithTimeout([] { return projectError(QStringLiteral("/dev/null")); }, -1),
+              "null: it is a device, not a regular file");
+    EXPECT_EQ(loadWithTimeout([] { return projectError(QStringLiteral("/dev/zero")); }, -1),
+              "zero: it is a device, not a regular file");
+    std::filesystem::create_directories(folder / "folder.speculum.json");
+    EXPECT_EQ(projectError(test::qpath(folder / "folder.speculum.json")),
+              "folder.speculum.json: it is a folder, not a file");
+    EXPECT_EQ(projectError(test::qpath(folder / "missing.speculum.json")),
+              "missing.speculum.json: file not found");
+    // A file name with control characters is named escaped.
+    EXPECT_EQ(projectError(test::qpath(folder / "a\nb\x1b.json")), "a\\nb\\x1b.json: file not found");
+    // A regular file still loads, through a symbolic link too.
+    test::writeBytes(test::qpath(folder / "ok.speculum.json"),
+                     R"({ "format": "speculum-scene", "version": 1 })");
+    std::filesystem::create_symlink(folder / "ok.speculum.json", folder / "link.speculum.json");
+    EXPECT_EQ(projectError(test::qpath(folder / "link.speculum.json")), "<loaded>");
+}
+
+TEST(ProjectPaths, BenchResultsRefuseRepeatedKeys) {
+    const auto folder = test::freshTestFolder();
+    const QString path = test::qpath(folder / "results.json");
+    test::writeBytes(path, R"({ "format": "speculum-bench", "results": [
+        { "id": "a", "family": "envmap", "cpuMs": 1, "psnr": 30, "rmse": 0.1 },
+        { "id": "b", "family": "envmap", "cpuMs": 2, "psnr": 31, "psnr": 99, "rmse": 0.1 } ] })");
+    auto loaded = loadSweepResults(path);
+    ASSERT_FALSE(loaded.ok());
+    EXPECT_EQ(loaded.error(), "results.json: results[1]: duplicate key 'psnr'");
+}
+
+} // namespace
+} // namespace speculum::document

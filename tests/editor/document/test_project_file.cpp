@@ -25,7 +25,7 @@ SceneData everythingScene(const QDir& folder) {
     scene.camera.up = {0, 0, 1};
     scene.camera.fovY = 47.5;
     scene.camera.near = 0.001;
-    scene.camera.far = 12345.678;
+    scene.camera.far = 999.875; // within render::kMaxFarNearRatio of near
 
     NodeTree ball;
     ball.data.name = "Chrome \"ball\" \u00e9\t";
@@ -144,7 +144,7 @@ TEST(ProjectFile, EveryComponentRoundTrips) {
     const QByteArray bytes = readBytes(path);
     EXPECT_TRUE(bytes.contains("\"texture\": \"textures/chrome.png\"")) << bytes.toStdString();
     EXPECT_TRUE(bytes.contains("\"file\": \"models/bunny.obj\"")) << bytes.toStdString();
-    EXPECT_TRUE(bytes.contains("\"far\": 12345.678"));
+    EXPECT_TRUE(bytes.contains("\"far\": 999.875"));
     EXPECT_TRUE(bytes.contains("\"mapSize\": 2048"));
     EXPECT_FALSE(bytes.contains(".0,")) << "integers are written without a fraction";
     EXPECT_EQ(serializeProject(*loaded, dir), bytes);
@@ -228,7 +228,7 @@ TEST(ProjectFile, NumbersRoundTripExactly) {
     node.data.name = "n";
     node.data.transform.translate = {0.1, 1.0 / 3.0, -1e-7};
     node.data.transform.rotate = {123456789.123, 2.5e-300, -0.0};
-    node.data.transform.scale = {1e20, 3e15, -7};
+    node.data.transform.scale = {1e9, 3.0000000000000004e-9, -7}; // render::kMaxScale, near kMinScale
     scene.nodes.push_back(node);
     const QString path = qpath(folder / "numbers.speculum.json");
     ASSERT_TRUE(saveProject(scene, path).ok());

@@ -6,4 +6,6 @@ speculum_add_test(test_editor_document TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_snapshot.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_commands.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_sweep_results.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_project_limits.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_printable.cpp
     LIBS speculum_document)

@@ -7,6 +7,7 @@
 #include "editor/document/NodeFactory.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Snapshot.hpp"
+#include "render/image/FillingDisk.hpp"
 #include "render/image/TextureLoader.hpp"
 
 #include <OpenImageIO/filesystem.h>
@@ -649,6 +650,47 @@ TEST(GltfExport, AFailedExportLeavesNoPartialOutput) {
         names.insert(entry.path().filename().string());
     }
     EXPECT_EQ(names, (std::set<std::string>{"checker.tga", "scene.bin", "scene.gltf"}));
+}
+
+// A disk that fills up part-way through the export (a file-size limit in a child, EFBIG as a full disk's
+// ENOSPC): the error names the file and the cause, and every file of the previous export, the .gltf and
+// each companion, stays byte-identical, with no temporary left.
+TEST(GltfExport, ADiskFillingUpKeepsEveryPreviousFile) {
+    namespace fs = std::filesystem;
+    const auto dir = folder();
+    Scene scene;
+    scene.reset(exportScene(dir));
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    for (const char* name : {"scene.gltf", "scene.glb"}) {
+        SCOPED_TRACE(name);
+        const fs::path target = dir / name;
+        ASSERT_TRUE(exportGltf(scene, QString::fromStdString(target.string()), meshes, warnings).ok());
+        std::map<std::string, std::string> before;
+        for (const auto& entry : fs::directory_iterator(dir)) {
+            std::ifstream in(entry.path(), std::ios::binary);
+            before[entry.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
+        }
+        const speculum::render::test::ChildOutcome child =
+            speculum::render::test::inChild([&](std::string& text) {
+                OIIO::attribute("threads", 1); // the parent's pool does not exist in a forked child
+                speculum::render::test::limitFileSize(1024);
+                const speculum::render::Status status =
+                    exportGltf(scene, QString::fromStdString(target.string()), meshes, warnings);
+                text = status.ok() ? std::string("(exported)") : status.error();
+                return status.ok() ? 1 : 0;
+            });
+        ASSERT_EQ(child.exitCode, 0) << child.text;
+        EXPECT_EQ(child.text.find('\n'), std::string::npos) << child.text;
+        EXPECT_NE(child.text.find("File too large"), std::string::npos) << child.text;
+        EXPECT_NE(child.text.find("the previous file is unchanged"), std::string::npos) << child.text;
+        std::map<std::string, std::string> after;
+        for (const auto& entry : fs::directory_iterator(dir)) {
+            std::ifstream in(entry.path(), std::ios::binary);
+            after[entry.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
+        }
+        EXPECT_EQ(after, before);
+    }
 }
 
 } // namespace

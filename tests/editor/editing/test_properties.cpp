@@ -94,7 +94,7 @@ TEST(Properties, InvalidValuesAreRefusedWithAMessageAndNotClamped) {
         {"light.shadows.pcf", 4, "odd"},
         {"reflector.resolution", 4, "Resolution must be in 8..8192, got 4"},
         {"mesh.tessellation", 2.5, "whole number"},
-        {"animation.bounce.period", 0.0, "Bounce period must be greater than 0"},
+        {"animation.bounce.period", 0.0, "Bounce period must be in 0.001.."},
         {"node.name", QString(), "Name must not be empty"},
         {"material.texture", QStringLiteral("/no/such/texture.png"), "does not exist"},
         {"transform.translate", QVariantList{std::nan(""), 0.0, 0.0}, "finite"},

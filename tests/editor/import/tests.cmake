@@ -13,3 +13,9 @@ speculum_add_test(test_editor_import_corpus TIER unit
 speculum_add_test(test_editor_import_parts TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_model_parts.cpp
     LIBS speculum_document)
+# Hostile model files (issue 14): node-graph DAGs and cycles, deep nesting, bogus declared counts under
+# another name, FIFOs and devices as the model or a file it references; each import in a child process
+# under a time and memory limit, so a regression fails rather than hangs.
+speculum_add_test(test_editor_import_hostile TIER unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_hostile_models.cpp
+    LIBS speculum_document)

@@ -2,6 +2,8 @@
 // up part-way through the write. Each case runs in a child process (a death test), so it can drop root
 // privileges or lower its file-size limit without affecting the other tests.
 #include "editor/document/ProjectFile.hpp"
+#include "editor/document/Recovery.hpp"
+#include "render/image/FillingDisk.hpp"
 
 #include <QDir>
 #include <QFile>
@@ -82,6 +84,109 @@ TEST_F(SaveFailures, DiskFillingUpDuringTheWriteReportsTheErrorAndKeepsThePrevio
     EXPECT_EXIT(saveOntoAFillingDisk(m_path), ::testing::ExitedWithCode(0), "");
     EXPECT_EQ(readAll(m_path), m_original);
     EXPECT_EQ(QDir(m_dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 1) << "no temporary file left";
+}
+
+// The error a user sees for a save onto a full disk: one line, the file, the cause, the reassurance.
+TEST_F(SaveFailures, DiskFullErrorIsOneLineNamingTheFileAndTheCause) {
+    const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
+        render::test::limitFileSize(256);
+        const render::Status saved = saveProject(bigScene(), m_path);
+        text = saved.ok() ? std::string("(saved)") : saved.error();
+        return saved.ok() ? 1 : 0;
+    });
+    ASSERT_EQ(child.exitCode, 0) << child.text;
+    EXPECT_EQ(child.text.find('\n'), std::string::npos) << child.text;
+    EXPECT_NE(child.text.find("scene.speculum.json: the file is larger than"), std::string::npos)
+        << child.text;
+    EXPECT_NE(child.text.find("the previous file is unchanged"), std::string::npos) << child.text;
+    EXPECT_EQ(readAll(m_path), m_original);
+    EXPECT_EQ(QDir(m_dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 1) << "no temporary file left";
+}
+
+// A real full file system (ENOSPC) where the test may mount one: root, in a private mount namespace.
+TEST(SaveFailuresOnASmallDisk, FullFileSystemKeepsThePreviousProject) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const std::string folder = QFile::encodeName(dir.path()).toStdString();
+    const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
+        if (std::string why = render::test::mountSmallFileSystem(folder, "16k"); !why.empty()) {
+            text = why;
+            return 77;
+        }
+        const QString path = dir.filePath("scene.speculum.json");
+        if (!saveProject(SceneData{}, path).ok())
+            return 2;
+        const QByteArray before = readAll(path);
+        SceneData huge;
+        for (int i = 0; i < 400; ++i) {
+            NodeTree node;
+            node.data.name = "A node with a long enough name " + std::to_string(i);
+            node.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
+            huge.nodes.push_back(node);
+        }
+        const render::Status saved = saveProject(huge, path);
+        text = saved.ok() ? std::string("(saved)") : saved.error();
+        if (saved.ok())
+            return 1;
+        if (readAll(path) != before)
+            return 4;
+        if (QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size() != 1)
+            return 5;
+        return 0;
+    });
+    if (child.exitCode == 77)
+        GTEST_SKIP() << "no small file system to fill: " << child.text;
+    EXPECT_EQ(child.exitCode, 0) << child.text;
+    EXPECT_NE(child.text.find("the disk is full (No space left on device)"), std::string::npos) << child.text;
+}
+
+// Autosave onto a filling disk: the earlier recovery copy and its note stay as they were, nothing stray.
+TEST(RecoveryFailures, AutosaveOntoAFillingDiskKeepsTheEarlierRecovery) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    RecoveryStore store(dir.path(), 4242);
+    ASSERT_TRUE(store.write(SceneData{}, QStringLiteral("/projects/room.speculum.json")).ok());
+    const QStringList before = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
+    ASSERT_EQ(before.size(), 2);
+    std::vector<QByteArray> beforeBytes;
+    for (const QString& name : before)
+        beforeBytes.push_back(readAll(dir.filePath(name)));
+
+    const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
+        render::test::limitFileSize(256);
+        const render::Status written =
+            store.write(bigScene(), QStringLiteral("/projects/room.speculum.json"));
+        text = written.ok() ? std::string("(written)") : written.error();
+        return written.ok() ? 1 : 0;
+    });
+    ASSERT_EQ(child.exitCode, 0) << child.text;
+    EXPECT_NE(child.text.find("recovery-4242.speculum.json"), std::string::npos) << child.text;
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), before) << "no temporary file left";
+    for (std::size_t i = 0; i < before.size(); ++i)
+        EXPECT_EQ(readAll(dir.filePath(before[int(i)])), beforeBytes[i]) << before[int(i)].toStdString();
+}
+
+// The note alone failing (the scene fits, the note does not): the earlier note is kept whole.
+TEST(RecoveryFailures, NoteThatDoesNotFitKeepsTheEarlierNote) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    RecoveryStore store(dir.path(), 4243);
+    ASSERT_TRUE(store.write(SceneData{}, QStringLiteral("/a.speculum.json")).ok());
+    const QString note = dir.filePath(QStringLiteral("recovery-4243.note.json"));
+    const QByteArray beforeNote = readAll(note);
+    ASSERT_FALSE(beforeNote.isEmpty());
+    const QString longOriginal =
+        QStringLiteral("/") + QString(3000, QLatin1Char('p')) + QStringLiteral(".speculum.json");
+    const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
+        render::test::limitFileSize(2048); // an empty scene fits, a 3000-byte note does not
+        const render::Status written = store.write(SceneData{}, longOriginal);
+        text = written.ok() ? std::string("(written)") : written.error();
+        return written.ok() ? 1 : 0;
+    });
+    ASSERT_EQ(child.exitCode, 0) << child.text;
+    EXPECT_NE(child.text.find("recovery-4243.note.json"), std::string::npos) << child.text;
+    EXPECT_EQ(readAll(note), beforeNote);
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 2) << "no temporary file left";
 }
 
 } // namespace

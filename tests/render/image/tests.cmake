@@ -4,4 +4,5 @@ speculum_add_test(test_render_image TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_image_writer.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_texture_loader.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_marble.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_write_failures.cpp
     LIBS speculum_render PkgConfig::OIIO)

@@ -196,3 +196,42 @@ TEST(ScreenCoverage, ClipsToTheViewAndToTheParentsPixels) {
 
 } // namespace
 } // namespace speculum::render::math
+
+namespace speculum::render::math {
+namespace {
+
+// A mirror 1e12 wide seen from 6 m: only the part in view is drawn, it lies within the rectangle and
+// covers the whole frustum's cross-section; a small mirror is drawn whole (its texture coordinates kept).
+TEST(VisibleMirrorRectangle, NarrowsAHugeMirrorToThePartInView) {
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(0.5, 0.3, 6.0), glm::dvec3(0.0), glm::dvec3(0, 1, 0));
+    const glm::dmat4 projection = glm::perspective(glm::radians(65.0), 4.0 / 3.0, 0.1, 100.0);
+    // The unit square of local XZ turned to face +Z, 1e12 across.
+    const glm::dmat4 rectangle = glm::scale(
+        glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(1, 0, 0)), glm::dvec3(5e11, 1.0, 5e11));
+    const glm::dmat4 part = visibleMirrorRectangle(rectangle, projection * view * rectangle);
+    ASSERT_TRUE(finite(part));
+    // Its corners: within a few hundred metres (far is 100), so float rounding is millimetres.
+    for (const glm::dvec2& c : {glm::dvec2(-1, -1), glm::dvec2(1, 1)}) {
+        const glm::dvec3 p(part * glm::dvec4(c.x, 0.0, c.y, 1.0));
+        EXPECT_LT(glm::length(p), 1e3);
+        EXPECT_NEAR(p.z, 0.0, 1e-6); // still in the mirror's plane
+    }
+    // Every point of the frustum on the plane z = 0 lies inside the part: the view's four corner rays.
+    const glm::dmat4 inverse = glm::inverse(projection * view);
+    const glm::dmat4 toLocal = glm::inverse(part);
+    for (const glm::dvec2& ndc :
+         {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)}) {
+        glm::dvec4 a = inverse * glm::dvec4(ndc, -1.0, 1.0), b = inverse * glm::dvec4(ndc, 1.0, 1.0);
+        const glm::dvec3 pa = glm::dvec3(a) / a.w, pb = glm::dvec3(b) / b.w;
+        const glm::dvec3 onPlane = pa + (pb - pa) * (-pa.z / (pb.z - pa.z));
+        const glm::dvec4 local = toLocal * glm::dvec4(onPlane, 1.0);
+        EXPECT_LE(std::abs(local.x), 1.0) << ndc.x << "," << ndc.y;
+        EXPECT_LE(std::abs(local.z), 1.0) << ndc.x << "," << ndc.y;
+    }
+    const glm::dmat4 small = glm::scale(glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(1, 0, 0)),
+                                        glm::dvec3(2.0, 1.0, 2.0));
+    EXPECT_EQ(visibleMirrorRectangle(small, projection * view * small), small);
+}
+
+} // namespace
+} // namespace speculum::render::math

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "editor/document/SceneData.hpp"
+
+#include <optional>
+#include <string>
+
+namespace speculum::document {
+
+// Rules over several numbers at once that both the project reader and the inspector apply, so that an
+// edit can never make a value the reader refuses. Single numbers are checked against render/SceneLimits.hpp
+// where they are read or edited.
+
+// The first problem of a camera: which field ("position", "target", "up", "fovY", "near", "far") and what
+// is wrong with it, in the reader's words ("must differ from the camera position"). Computed so that it
+// cannot overflow whatever the values (directions are scaled before lengths are taken), so the field
+// named is the real cause.
+struct FieldProblem {
+    std::string field;
+    std::string what;
+};
+std::optional<FieldProblem> cameraProblem(const CameraData& camera);
+
+// Numbers as messages show them: shortest round-trip form ("1e+12", "0.001").
+std::string formatLimit(double value);
+
+} // namespace speculum::document

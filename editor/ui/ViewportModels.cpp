@@ -1,0 +1,210 @@
+#include "editor/ui/ViewportModels.hpp"
+
+#include "editor/document/MeshLibrary.hpp"
+#include "editor/document/Scene.hpp"
+#include "editor/ui/ModelImportJob.hpp"
+#include "render/io/FileKind.hpp"
+#include "render/io/Printable.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <algorithm>
+
+namespace speculum::ui {
+
+namespace {
+
+// The snapshot's warning about a node starts like this (its name quoted, or in double quotes in older text).
+bool isAboutNode(const std::string& warning, const std::string& node) {
+    return warning.rfind("node " + render::quoted(node) + ": ", 0) == 0 ||
+           warning.rfind("node \"" + node + "\": ", 0) == 0;
+}
+
+std::string fileName(const std::string& path) {
+    return QFileInfo(QString::fromStdString(path)).fileName().toStdString();
+}
+
+} // namespace
+
+ViewportModels::ViewportModels(document::MeshLibrary& meshes, QObject* parent)
+    : QObject(parent)
+    , m_meshes(meshes) {}
+
+// The jobs are children: their destructors cancel them and wait for their workers.
+ViewportModels::~ViewportModels() = default;
+
+bool ViewportModels::isLoading() const {
+    return std::any_of(m_entries.begin(), m_entries.end(),
+                       [](const auto& e) { return e.second.state == State::Loading; });
+}
+
+void ViewportModels::retire(ModelImportJob* job) {
+    // Not waited for here (that would be the GUI thread waiting on a read): it ends on its own.
+    disconnect(job, nullptr, this, nullptr);
+    job->cancel();
+    connect(job, &ModelImportJob::finished, job, &QObject::deleteLater);
+}
+
+void ViewportModels::clear() {
+    for (auto& [path, entry] : m_entries) {
+        if (entry.job) {
+            retire(entry.job);
+        }
+    }
+    m_entries.clear();
+    m_users.clear();
+    m_pendingWarnings.clear();
+}
+
+void ViewportModels::prepare(const document::Scene& scene) {
+    m_users.clear();
+    const bool hasProject = !scene.projectPath().isEmpty();
+    const QDir projectDir = QFileInfo(scene.projectPath()).absoluteDir();
+    // As document::snapshot resolves them: relative paths (set by code) against the project's folder.
+    auto absolute = [&](const std::string& path) {
+        if (path.empty() || !hasProject || !QDir::isRelativePath(QString::fromStdString(path))) {
+            return path;
+        }
+        return QDir::cleanPath(projectDir.absoluteFilePath(QString::fromStdString(path))).toStdString();
+    };
+    scene.forEachNode([&](const document::Node& node) {
+        const document::NodeData& d = node.data();
+        if (d.mesh && !d.mesh->builtin && !d.mesh->file.empty()) {
+            need(d.name, absolute(d.mesh->file));
+        }
+        if (d.material) {
+            // "/abs/model.glb#*0": a texture embedded in a model file, which the library reads for it.
+            for (const std::string* texture :
+                 {&d.material->texture, &d.material->emissionTexture, &d.material->normalTexture}) {
+                const std::string path = absolute(*texture);
+                const std::size_t hash = path.rfind('#');
+                if (hash != std::string::npos && hash > 0 &&
+                    !QFileInfo(QString::fromStdString(path)).exists()) {
+                    need(d.name, path.substr(0, hash));
+                }
+            }
+        }
+    });
+}
+
+void ViewportModels::need(const std::string& node, const std::string& path) {
+    m_users.push_back({node, path});
+    const QFileInfo info(QString::fromStdString(path)); // a stat: it cannot block, even on a FIFO
+    auto it = m_entries.find(path);
+    if (!info.isFile()) {
+        if (it != m_entries.end() && it->second.job) {
+            retire(it->second.job);
+        }
+        const render::Status regular = render::requireRegularFile(path);
+        if (!info.exists() || regular) {
+            // Missing: the library says so itself, and reads nothing.
+            if (it != m_entries.end()) {
+                m_entries.erase(it);
+            }
+            return;
+        }
+        // A FIFO, a device, a folder: never read; the library would only say "no such file".
+        Entry& e = m_entries[path];
+        e = Entry{};
+        e.state = State::Failed;
+        e.error = regular.error();
+        return;
+    }
+    if (it != m_entries.end() && it->second.size == info.size() &&
+        it->second.modified == info.lastModified()) {
+        return; // loading, loaded or failed as the file is now
+    }
+    Entry& e = m_entries[path];
+    if (e.job) {
+        retire(e.job); // the file changed under it
+    }
+    e = Entry{};
+    e.modified = info.lastModified();
+    e.size = info.size();
+    start(path, e);
+}
+
+void ViewportModels::start(const std::string& path, Entry& entry) {
+    // The stand-in, keyed by the file as it is now, keeps the library from reading the file itself.
+    m_meshes.addModel(path, std::make_shared<const document::ImportedModel>());
+    auto* job = new ModelImportJob(QString::fromStdString(path), this);
+    connect(job, &ModelImportJob::finished, this, [this, job] { finished(job); });
+    entry.state = State::Loading;
+    entry.job = job;
+    job->start();
+}
+
+void ViewportModels::finished(ModelImportJob* job) {
+    job->deleteLater();
+    const auto it = std::find_if(m_entries.begin(), m_entries.end(),
+                                 [job](const auto& e) { return e.second.job == job; });
+    if (it == m_entries.end()) {
+        return;
+    }
+    Entry& e = it->second;
+    e.job = nullptr;
+    ModelImportJob::Output out = job->takeOutput();
+    for (const auto& w : out.warnings) {
+        m_pendingWarnings.push_back(render::quoted(fileName(it->first)) + ": " + w);
+    }
+    if (out.model) {
+        m_meshes.addModel(it->first,
+                          std::make_shared<const document::ImportedModel>(std::move(out.model).value()));
+        e.state = State::Ready;
+    } else {
+        e.state = State::Failed;
+        e.error = out.model.error();
+    }
+    emit changed();
+}
+
+void ViewportModels::adopt(const std::string& absolutePath,
+                           std::shared_ptr<const document::ImportedModel> model) {
+    const QFileInfo info(QString::fromStdString(absolutePath));
+    if (!model || !info.isFile()) {
+        return;
+    }
+    Entry& e = m_entries[absolutePath];
+    if (e.job) {
+        retire(e.job);
+    }
+    e = Entry{};
+    e.modified = info.lastModified();
+    e.size = info.size();
+    e.state = State::Ready;
+    m_meshes.addModel(absolutePath, std::move(model));
+}
+
+std::vector<std::string> ViewportModels::correct(std::vector<std::string> warnings, bool takePending) {
+    std::vector<std::string> own;
+    for (const User& user : m_users) {
+        const auto it = m_entries.find(user.path);
+        if (it == m_entries.end() || it->second.state == State::Ready) {
+            continue;
+        }
+        // What the stand-in made the snapshot say ("no triangles", "part 2 does not exist") is not true.
+        std::erase_if(warnings, [&](const std::string& w) {
+            return isAboutNode(w, user.node) && w.find("skipped") != std::string::npos;
+        });
+        const std::string name = fileName(user.path), file = render::quoted(name);
+        const std::string& error = it->second.error;
+        // The reader's errors may name the file already ("dag.gltf: the node graph ...").
+        const bool named = error.rfind(name + ": ", 0) == 0 || error.rfind(file + ": ", 0) == 0;
+        std::string line =
+            "node " + render::quoted(user.node) + ": " +
+            (it->second.state == State::Loading
+                 ? "mesh loading: " + file + "..."
+                 : "mesh skipped: " + (named ? std::string() : file + ": ") + render::printable(error, 200));
+        if (std::find(own.begin(), own.end(), line) == own.end()) {
+            own.push_back(std::move(line));
+        }
+    }
+    warnings.insert(warnings.end(), own.begin(), own.end());
+    if (takePending) {
+        warnings.insert(warnings.end(), m_pendingWarnings.begin(), m_pendingWarnings.end());
+        m_pendingWarnings.clear();
+    }
+    return warnings;
+}
+
+} // namespace speculum::ui

@@ -1,0 +1,111 @@
+#include "render/gl/Allocation.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+
+namespace speculum::render::gl {
+
+namespace {
+
+std::atomic<std::size_t> g_testLimit{0};
+thread_local bool t_checking = false;
+
+std::string hex(GLenum value) {
+    char text[16];
+    std::snprintf(text, sizeof text, "0x%x", static_cast<unsigned>(value));
+    return text;
+}
+
+void drainErrors() {
+    // glGetError returns GL_NO_ERROR once every flag is cleared; a lost context may keep answering
+    // GL_CONTEXT_LOST, so the loop is bounded.
+    for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+    }
+}
+
+} // namespace
+
+void setAllocationLimitForTesting(std::size_t bytes) {
+    g_testLimit = bytes;
+}
+
+std::size_t allocationLimitForTesting() {
+    return g_testLimit;
+}
+
+Status beginAllocation(std::size_t bytes) {
+    drainErrors();
+    const std::size_t limit = g_testLimit;
+    if (limit > 0 && bytes > limit)
+        return Error{"did not fit in GPU memory (over the test limit of " + std::to_string(limit) +
+                     " bytes)"};
+    t_checking = true;
+    return Done{};
+}
+
+bool allocationBeingChecked() {
+    return t_checking;
+}
+
+Status finishAllocation() {
+    t_checking = false;
+    bool outOfMemory = false;
+    GLenum other = GL_NO_ERROR;
+    for (int i = 0; i < 16; ++i) {
+        const GLenum e = glGetError();
+        if (e == GL_NO_ERROR)
+            break;
+        if (e == GL_OUT_OF_MEMORY)
+            outOfMemory = true;
+        else if (other == GL_NO_ERROR)
+            other = e;
+    }
+    if (outOfMemory)
+        return Error{"did not fit in GPU memory"};
+    if (other != GL_NO_ERROR)
+        return Error{"was refused by the driver (GL error " + hex(other) + ")"};
+    return Done{};
+}
+
+Status checkFramebuffer(GLenum target) {
+    const GLenum status = glCheckFramebufferStatus(target);
+    if (status == GL_FRAMEBUFFER_COMPLETE)
+        return Done{};
+    // An incomplete attachment after a silent allocation failure is the usual cause: report memory when
+    // the driver flagged it.
+    if (Status errors = finishAllocation(); !errors)
+        return errors;
+    return Error{"could not be drawn into (framebuffer incomplete, status " + hex(status) + ")"};
+}
+
+SizeFallback::Fitted SizeFallback::fit(int requested, int minimum,
+                                       const std::function<Status(int)>& allocate) {
+    Fitted fitted;
+    int size = std::max(requested, minimum);
+    if (size >= m_failedAt) {
+        fitted.reason = m_reason;
+        while (size >= m_failedAt && size > minimum)
+            size = std::max(minimum, size / 2);
+        if (size >= m_failedAt)
+            return fitted; // even the minimum failed before
+    }
+    for (;;) {
+        Status done = allocate(size);
+        if (done) {
+            fitted.size = size;
+            return fitted;
+        }
+        if (size < m_failedAt) {
+            m_failedAt = size;
+            m_reason = done.error();
+        }
+        if (fitted.reason.empty())
+            fitted.reason = done.error();
+        if (size <= minimum)
+            return fitted;
+        size = std::max(minimum, size / 2);
+    }
+}
+
+} // namespace speculum::render::gl

@@ -1,0 +1,123 @@
+#pragma once
+
+// A full disk without root: a forked child lowers its file-size limit (RLIMIT_FSIZE) and ignores
+// SIGXFSZ, so a write past the limit fails part-way with EFBIG exactly where a full disk fails with
+// ENOSPC. With root, a child in its own mount namespace can also mount a real, small tmpfs and fill it.
+// The child reports through a pipe; an alarm ends it if a regression made it hang.
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <sched.h>
+#include <string>
+#include <sys/mount.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace speculum::render::test {
+
+struct ChildOutcome {
+    int exitCode = -1; // the child's exit status; -1 when it died of a signal (see signal)
+    int signal = 0;    // what killed it, if anything
+    std::string text;  // what the child reported
+};
+
+// Runs `body` in a forked child; what it puts in `text` comes back. Exit code is body's return value.
+inline ChildOutcome inChild(const std::function<int(std::string& text)>& body, unsigned timeoutSeconds = 30) {
+    int fds[2];
+    if (::pipe(fds) != 0) {
+        return {-1, 0, "pipe() failed"};
+    }
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::close(fds[0]);
+        ::alarm(timeoutSeconds);
+        std::string text;
+        const int code = body(text);
+        const char* p = text.data();
+        std::size_t left = text.size();
+        while (left > 0) {
+            const ssize_t n = ::write(fds[1], p, left);
+            if (n <= 0) {
+                break;
+            }
+            p += n;
+            left -= static_cast<std::size_t>(n);
+        }
+        ::close(fds[1]);
+        std::_Exit(code);
+    }
+    ::close(fds[1]);
+    ChildOutcome outcome;
+    char buffer[4096];
+    for (;;) {
+        const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) {
+            continue;
+        }
+        if (n <= 0) {
+            break;
+        }
+        outcome.text.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(fds[0]);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFEXITED(status)) {
+        outcome.exitCode = WEXITSTATUS(status);
+    } else if (WIFSIGNALED(status)) {
+        outcome.signal = WTERMSIG(status);
+    }
+    return outcome;
+}
+
+// In a child: every later write past `bytes` fails with EFBIG (the signal that would kill is ignored).
+inline bool limitFileSize(rlim_t bytes) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    rlimit limit{};
+    limit.rlim_cur = limit.rlim_max = bytes;
+    return ::setrlimit(RLIMIT_FSIZE, &limit) == 0;
+}
+
+// In a child: mounts a tmpfs of `sizeOption` ("64k") over `folder` in a private mount namespace, so the
+// rest of the machine never sees it. Returns why it cannot (not root, no namespaces), empty when done.
+inline std::string mountSmallFileSystem(const std::filesystem::path& folder, const char* sizeOption) {
+    if (::geteuid() != 0) {
+        return "not running as root: no tmpfs can be mounted";
+    }
+    if (::unshare(CLONE_NEWNS) != 0) {
+        return std::string("unshare(CLONE_NEWNS) failed: ") + std::strerror(errno);
+    }
+    if (::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) {
+        return std::string("cannot make the mounts private: ") + std::strerror(errno);
+    }
+    const std::string options = std::string("size=") + sizeOption;
+    if (::mount("tmpfs", folder.c_str(), "tmpfs", 0, options.c_str()) != 0) {
+        return std::string("mount -t tmpfs failed: ") + std::strerror(errno);
+    }
+    return {};
+}
+
+inline std::string fileBytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Every entry of a folder (hidden ones included), by name.
+inline std::vector<std::string> folderEntries(const std::filesystem::path& folder) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        names.push_back(entry.path().filename().string());
+    }
+    return names;
+}
+
+} // namespace speculum::render::test
