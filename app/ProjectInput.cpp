@@ -80,11 +80,9 @@ void printError(const std::string& message) {
 
 render::Status loadProjectScene(const std::string& project, document::Scene& scene) {
     const QString path = QString::fromStdString(project);
-    const QFileInfo info(path);
-    if (!info.exists())
-        return render::Error{render::quoted(project) + ": no such file"};
-    if (!info.isFile())
-        return render::Error{render::quoted(project) + ": not a file"};
+    // Only a regular file is read: a FIFO or /dev/stdin would block the command for good.
+    if (const render::Status regular = render::requireRegularFile(project); !regular)
+        return render::Error{render::quoted(project) + ": " + regular.error()};
     std::vector<std::string> warnings;
     if (render::Status opened = document::openProject(scene, path, warnings); !opened)
         return render::Error{render::quoted(project) + ": " + opened.error()};

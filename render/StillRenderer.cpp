@@ -132,6 +132,9 @@ Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, con
             options.reuseMaps = settings.reuseMaps || step > 0;
             options.lightingVariants = settings.lightingVariants;
             FrameReport report = renderer.render(input, target, options);
+            // A frame the renderer could not draw at all (its colour buffer did not fit) is no still.
+            if (!report.error.empty())
+                return Error{report.error};
             if (step == 0)
                 result.firstSample = std::move(report);
             glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());

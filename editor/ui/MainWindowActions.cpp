@@ -11,6 +11,7 @@
 #include "editor/ui/SceneTreePanel.hpp"
 #include "editor/ui/Selection.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "render/SceneLimits.hpp"
 
 #include <QAction>
 #include <QActionGroup>
@@ -469,7 +470,7 @@ void MainWindow::createActions() {
                 camera.position = v.position;
                 camera.target = v.target;
                 camera.up = v.up;
-                camera.far = std::max(camera.far, v.far);
+                camera.far = std::min(std::max(camera.far, v.far), camera.near * render::kMaxFarNearRatio);
                 auto* command = new document::SetCameraCommand(*m_scene, camera);
                 command->setText(tr("Set scene camera from view"));
                 m_undoStack->push(command);

@@ -3,9 +3,13 @@
 #include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "render/io/AtomicFile.hpp"
+#include "render/io/Printable.hpp"
 
 #include <QApplication>
+#include <QBuffer>
 #include <QEventLoop>
+#include <QFileInfo>
 #include <QPixmap>
 #include <QRegularExpression>
 #include <QTimer>
@@ -81,8 +85,19 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
         return 1;
     }
     const QPixmap picture = window.grab();
-    if (picture.isNull() || !picture.save(request.outputPath)) {
-        qCritical("speculum: could not write %s", qPrintable(request.outputPath));
+    // Encoded in memory and written through a staged temporary: a full disk keeps the previous file.
+    QByteArray encoded;
+    QBuffer buffer(&encoded);
+    buffer.open(QIODevice::WriteOnly);
+    const QByteArray format = QFileInfo(request.outputPath).suffix().toLower().toLatin1();
+    if (picture.isNull() || !picture.save(&buffer, format.isEmpty() ? "png" : format.constData())) {
+        qCritical("speculum: could not encode %s", qPrintable(request.outputPath));
+        return 1;
+    }
+    if (const render::Status written = render::writeFileAtomically(
+            request.outputPath.toStdString(), std::string_view(encoded.constData(), encoded.size()));
+        !written) {
+        qCritical("speculum: %s", render::printable(written.error(), 400).c_str());
         return 1;
     }
     qInfo("speculum: wrote %s (%dx%d)", qPrintable(request.outputPath), picture.width(), picture.height());

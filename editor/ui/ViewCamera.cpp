@@ -1,5 +1,7 @@
 #include "editor/ui/ViewCamera.hpp"
 
+#include "render/SceneLimits.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -7,6 +9,16 @@
 #include <glm/gtx/rotate_vector.hpp>
 
 namespace speculum::ui {
+
+namespace {
+
+// Far grows as the view backs away, but never past the depth range a scene file may hold (so a view
+// made the scene camera still saves): kMaxFarNearRatio.
+double cappedFar(double near, double far) {
+    return std::min(far, near * render::kMaxFarNearRatio);
+}
+
+} // namespace
 
 namespace {
 
@@ -65,7 +77,7 @@ void ViewCamera::zoom(double factor) {
     const double newDistance = std::clamp(distance * factor, m_camera.near * 2.0, m_baseDistance * 1e3);
     m_camera.position = m_camera.target + offset * (newDistance / distance);
     // Backing away must not push the scene past the far plane.
-    m_camera.far = m_baseFar + std::max(0.0, newDistance - m_baseDistance);
+    m_camera.far = cappedFar(m_camera.near, m_baseFar + std::max(0.0, newDistance - m_baseDistance));
 }
 
 void ViewCamera::frame(const glm::dvec3& center, double radius, double aspect) {
@@ -78,7 +90,7 @@ void ViewCamera::frame(const glm::dvec3& center, double radius, double aspect) {
     const double distance = std::max(radius / std::sin(std::min(halfX, halfY)) * 1.1, m_camera.near * 2.0);
     m_camera.target = center;
     m_camera.position = center - forward * distance;
-    m_camera.far = std::max(m_camera.far, distance + radius * 2.0);
+    m_camera.far = cappedFar(m_camera.near, std::max(m_camera.far, distance + radius * 2.0));
     m_baseFar = std::max(m_baseFar, m_camera.far);
     m_baseDistance = std::max(m_baseDistance, distance);
 }

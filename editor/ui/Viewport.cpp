@@ -10,6 +10,7 @@
 #include "editor/ui/Selection.hpp"
 #include "editor/ui/ViewportModels.hpp"
 #include "editor/ui/ViewportOverlay.hpp"
+#include "render/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
 
 #include <QEventLoop>
@@ -510,7 +511,7 @@ void Viewport::navigated() {
         camera.position = v.position;
         camera.target = v.target;
         camera.up = v.up;
-        camera.far = std::max(camera.far, v.far);
+        camera.far = std::min(std::max(camera.far, v.far), camera.near * render::kMaxFarNearRatio);
         auto* command = new document::SetCameraCommand(m_scene, camera, true);
         command->setMergeKey(QStringLiteral("navigate#%1").arg(m_gestureSerial));
         m_undoStack->push(command);

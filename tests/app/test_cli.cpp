@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -76,8 +77,12 @@ TEST_F(Cli, BadInputFailsWithOneLineAndWritesNothing) {
     const fs::path broken = m_dir / "broken.speculum.json";
     std::ofstream(broken)
         << R"({"format": "speculum-scene", "version": 1, "nodes": [{"name": "A", "mesh": {"builtin": "dodecahedron"}}]})";
+    const fs::path pipe = m_dir / "pipe.speculum.json";
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
     const std::vector<std::pair<std::string, std::string>> cases = {
-        {"render /no/such/scene.json -o " + out.string(), "no such file"},
+        {"render /no/such/scene.json -o " + out.string(), "file not found"},
+        {"render " + pipe.string() + " -o " + out.string(), "it is a FIFO (named pipe), not a regular file"},
+        {"render /dev/null -o " + out.string(), "it is a device, not a regular file"},
         {"render " + broken.string() + " -o " + out.string(), "nodes[0].mesh"},
         {"render " + demo() + " -o " + (m_dir / "out.bmpx").string(), "unsupported image format"},
         {"render " + demo() + " -o /no/such/folder/out.png", "does not exist"},
@@ -253,7 +258,7 @@ TEST_F(Cli, ExportGltfWritesItsCompanionsBesideIt) {
 TEST_F(Cli, BadExportFailsWithOneLineAndWritesNothing) {
     const fs::path glb = m_dir / "out.glb";
     const std::vector<std::pair<std::string, std::string>> cases = {
-        {"export /no/such/scene.json -o " + glb.string(), "no such file"},
+        {"export /no/such/scene.json -o " + glb.string(), "file not found"},
         {"export " + demo() + " -o " + (m_dir / "out.obj").string(), "unsupported export format"},
         {"export " + demo() + " -o /no/such/folder/out.glb", "does not exist"},
         {"export " + demo(), "-o"},

@@ -71,7 +71,7 @@ TEST_F(ReferenceCli, FailuresWriteNothing) {
     run = speculum("render " + (m_dir / "no-such.speculum.json").string() + " -o " + png.string() +
                    " --reference");
     EXPECT_NE(run.status, 0);
-    EXPECT_NE(run.err.find("no such file"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("file not found"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(png));
 }
 
