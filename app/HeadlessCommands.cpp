@@ -1,8 +1,8 @@
 #include "app/HeadlessCommands.hpp"
 
+#include "app/BenchCommand.hpp"
 #include "app/OutputPaths.hpp"
 #include "app/ProjectInput.hpp"
-#include "app/bench/Bench.hpp"
 #include "editor/document/GltfExport.hpp"
 #include "render/Renderer.hpp"
 #include "render/StillRenderer.hpp"
@@ -340,7 +340,38 @@ int runExplain(const CliOptions& options) {
         QJsonArray warnings;
         for (const std::string& w : still->firstSample.warnings)
             warnings.append(QString::fromStdString(w));
+        // What the environment pass drew inside the map: the mirror views of each face, with reasons.
+        auto faceLabel = [&](int face) {
+            return face >= 0
+                       ? QString::fromStdString(plan.envmap->faces[static_cast<std::size_t>(face)].label)
+                       : QString("every face");
+        };
+        QJsonValue envmap; // null when the map was not drawn this frame
+        if (plan.envmap) {
+            QJsonArray faces, mapPasses, mapSkipped;
+            for (const render::EnvmapFace& f : plan.envmap->faces)
+                faces.append(QString::fromStdString(f.label));
+            for (const render::PlannedPass& p : plan.envmap->passes) {
+                const render::MirrorView& view = plan.envmap->views[static_cast<std::size_t>(p.view)];
+                mapPasses.append(
+                    QJsonObject{{"kind", QString::fromUtf8(render::toString(p.kind).data(),
+                                                           qsizetype(render::toString(p.kind).size()))},
+                                {"target", QString::fromStdString(p.target)},
+                                {"reason", QString::fromStdString(p.reason)},
+                                {"face", faceLabel(view.face)},
+                                {"depth", view.depth}});
+            }
+            for (const render::SkippedEffect& s : plan.envmap->skipped)
+                mapSkipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
+                                              {"reason", QString::fromStdString(s.reason)},
+                                              {"face", faceLabel(s.face)}});
+            envmap = QJsonObject{{"target", QString::fromStdString(plan.envmap->target)},
+                                 {"faces", faces},
+                                 {"passes", mapPasses},
+                                 {"skipped", mapSkipped}};
+        }
         QJsonObject root{{"passes", passes},
+                         {"envmapMirrors", envmap},
                          {"skipped", skipped},
                          {"warnings", warnings},
                          {"size", QString::fromStdString(sizeText(options.width, options.height))},
@@ -364,6 +395,18 @@ int runExplain(const CliOptions& options) {
         std::printf("  %-11s %-14s gpu %7.2f ms  cpu %7.2f ms  %s\n", kind.c_str(),
                     p.target.empty() ? "-" : render::printable(p.target).c_str(), p.gpuMs, p.cpuMs,
                     oneLine(p.reason).c_str());
+    }
+    if (plan.envmap && (!plan.envmap->passes.empty() || !plan.envmap->skipped.empty())) {
+        std::printf("\nInside the environment map of %s (drawn by its envmap pass):\n",
+                    render::printable(plan.envmap->target).c_str());
+        for (const render::PlannedPass& p : plan.envmap->passes) {
+            const std::string kind(render::toString(p.kind));
+            std::printf("  %-11s %-14s %s\n", kind.c_str(), render::printable(p.target).c_str(),
+                        oneLine(p.reason).c_str());
+        }
+        for (const render::SkippedEffect& s : plan.envmap->skipped)
+            std::printf("  %-11s %-14s %s\n", "skipped", render::printable(s.target).c_str(),
+                        oneLine(s.reason).c_str());
     }
     std::printf("\nSkipped:\n");
     if (plan.skipped.empty())

@@ -4,11 +4,11 @@
 // Needs a display: scripts/with-display build/release/benchmarks/speculum_bench_editor
 #include "editor/document/Picking.hpp"
 #include "editor/document/Scene.hpp"
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/Editor.hpp"
 #include "editor/ui/MainWindow.hpp"
-#include "editor/ui/Selection.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "editor/view/AnimationClock.hpp"
+#include "editor/view/Selection.hpp"
 
 #include <QApplication>
 #include <QElapsedTimer>

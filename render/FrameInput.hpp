@@ -75,6 +75,12 @@ struct Material {
     double alphaCutoff = 0.5;
 };
 
+// The alpha below which a masked material is cut away, in the lit passes and in shadows: its cutoff, or
+// one half for Blend (no sorted transparency yet: drawn as Mask at one half, the importer warns).
+inline double effectiveAlphaCutoff(const Material& m) {
+    return m.alphaMode == AlphaMode::Blend ? 0.5 : m.alphaCutoff;
+}
+
 struct DrawItem {
     std::string name;
     glm::dmat4 world{1.0};

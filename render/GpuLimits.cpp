@@ -1,21 +1,8 @@
 #include "render/GpuLimits.hpp"
 
-#include "render/gl/Objects.hpp"
-
 #include <algorithm>
 
 namespace speculum::render {
-
-GpuLimits queryGpuLimits() {
-    GpuLimits limits;
-    GLint viewport[2] = {0, 0};
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limits.maxTextureSize);
-    glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &limits.maxCubeMapSize);
-    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &limits.maxRenderbufferSize);
-    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
-    limits.maxViewportSize = std::min(viewport[0], viewport[1]);
-    return limits;
-}
 
 namespace {
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "render/FrameInput.hpp"
+#include "render/SceneLimits.hpp"
 
 #include <optional>
 #include <string>
@@ -16,13 +17,13 @@ struct GpuLimits {
     int maxViewportSize = 16384;     // the smaller of GL_MAX_VIEWPORT_DIMS
 };
 
-// Asks the current context.
+// Asks the current context. Defined by the GL library (render/gl/GpuLimitsQuery.cpp); the rest of this
+// header is GL-free.
 GpuLimits queryGpuLimits();
 
-// Smallest sizes the passes work with: a shadow map below 16 texels is no map, and the environment maps'
-// guard bands need a few texels each side.
-inline constexpr int kMinShadowMapSize = 16;
-inline constexpr int kMinEnvmapResolution = 8;
+// Smallest sizes the passes work with (render/SceneLimits.hpp): a shadow map below 16 texels is no map,
+// and the environment maps' guard bands need a few texels each side.
+inline constexpr int kMinEnvmapResolution = kMinEnvironmentMapSize;
 
 // The frame's shadow map sizes and reflector resolution brought within `limits` (and above the minimums
 // above): a size the GPU cannot hold would fail to allocate and make every later draw into it a GL

@@ -221,6 +221,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         if (reflectorDropped) {
             const FrameInput& current = fitted ? *fitted : requested;
             std::erase_if(plan.passes, [](const PlannedPass& p) { return p.kind == PassKind::Envmap; });
+            plan.envmap.reset();
             plan.skipped.push_back(
                 {current.reflector->name, "no environment map: none could be allocated (see the warnings)"});
         }
@@ -310,7 +311,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         switch (pass.kind) {
         case PassKind::Shadow:
             s.shadows.render(input, pass.lightIndex, s.meshes, s.shadowProgram, &s.textures);
-            s.plannerState.shadowSignatures[pass.lightIndex] = shadowSignature(input, pass.lightIndex);
+            s.plannerState.shadowSignatures[pass.lightIndex] = pass.signature;
             break;
         case PassKind::Envmap: {
             for (int lightIndex : plan.shadowedLights)
@@ -324,11 +325,11 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
                                            s.dummyShadow2D.id(),
                                            s.dummyShadowCube.id(),
                                            s.unitPlane};
-            if (Status captured = s.reflector.capture(input, envmapCapture(input), envCtx,
-                                                      {&s.flatProgram, &s.mirrorProgram});
+            if (Status captured =
+                    s.reflector.capture(input, *plan.envmap, envCtx, {&s.flatProgram, &s.mirrorProgram});
                 captured) {
-                s.plannerState.envmapSignature = envmapSignature(input);
-                s.plannerState.envmapSettings = envmapSettingsKey(*input.reflector);
+                s.plannerState.envmapSignature = plan.envmap->signature;
+                s.plannerState.envmapSettings = plan.envmap->settingsKey;
             } else {
                 report.warnings.push_back(captured.error());
             }
@@ -451,8 +452,6 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
             s.compositeProgram.set("uEncodeSrgb", target.encodeSrgb ? 1 : 0);
             glBindVertexArray(s.emptyVao.id());
             glDrawArrays(GL_TRIANGLES, 0, 3);
-            break;
-        default:
             break;
         }
         if (options.gpuTimings)

@@ -16,4 +16,26 @@ inline constexpr double kMaxPeriod = 1e9;
 inline constexpr double kMinNear = 1e-6;        // camera near plane, metres
 inline constexpr double kMaxFarNearRatio = 1e6; // depth-buffer precision: beyond it, far objects vanish
 
+// Resolutions, counts and material ranges: the one list the project reader, the inspector, the accuracy
+// sweep and the renderers' own assertions take their ranges from (a range written twice drifts apart).
+inline constexpr int kMinShadowMapSize = 16; // texels per side; a power of two
+inline constexpr int kMaxShadowMapSize = 16384;
+// Reflector resolution: texels per cube face or per side of a map's layout.
+inline constexpr int kMinEnvironmentMapSize = 8;
+inline constexpr int kMaxEnvironmentMapSize = 8192;
+inline constexpr int kMinPcfWidth = 1; // shadow filter width in texels; odd
+inline constexpr int kMaxPcfWidth = 15;
+// Reflections of reflections: the scene's, and the reflector's inside its map.
+inline constexpr int kMaxMirrorDepth = 16;
+inline constexpr int kMinTessellation = 1; // built-in meshes: subdivisions
+inline constexpr int kMaxTessellation = 64;
+inline constexpr int kMinSsaa = 1; // stills: samples per pixel along each axis
+inline constexpr int kMaxSsaa = 16;
+inline constexpr double kMaxShininess = 10000.0; // Blinn-Phong exponent (from 0)
+inline constexpr double kMaxNormalScale = 100.0; // normal-map strength, either sign
+
+constexpr bool isPowerOfTwo(int n) {
+    return n > 0 && (n & (n - 1)) == 0;
+}
+
 } // namespace speculum::render

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <new>
 
 namespace speculum::render {
@@ -50,21 +49,6 @@ int maxStillSize() {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
     return std::min({renderbuffer, texture, viewport[0], viewport[1]});
-}
-
-Status checkStillSize(int width, int height) {
-    if (width <= 0 || height <= 0)
-        return Error{"image size must be positive, got " + sizeText(width, height)};
-    const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * 4 * sizeof(float);
-    if (bytes > kMaxStillBytes) {
-        char text[160];
-        std::snprintf(text, sizeof text,
-                      "image size %s is too large: its pixels would take %.0f GiB (at most %llu GiB)",
-                      sizeText(width, height).c_str(), double(bytes) / double(1ull << 30),
-                      static_cast<unsigned long long>(kMaxStillBytes >> 30));
-        return Error{text};
-    }
-    return Done{};
 }
 
 Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, const StillSettings& settings,

@@ -3,9 +3,9 @@
 #include "render/FrameInput.hpp"
 #include "render/Renderer.hpp"
 #include "render/Result.hpp"
+#include "render/StillSize.hpp"
 #include "render/image/Image.hpp"
 
-#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -14,9 +14,6 @@ namespace speculum::render {
 // Stills larger than this (either side) render in tiles of at most this size, so the GPU memory a still
 // takes stays bounded whatever its size.
 inline constexpr int kDefaultTileSize = 2048;
-// The largest still: its linear RGBA float pixels (16 bytes each) must fit in this many bytes. Larger
-// sizes are refused before anything is allocated.
-inline constexpr std::uint64_t kMaxStillBytes = std::uint64_t(4) << 30;
 
 struct StillSettings {
     int width = 1280;
@@ -44,10 +41,6 @@ struct StillResult {
 
 // Largest still the current context can render in one piece.
 int maxStillSize();
-
-// Whether a still of this size can be rendered at all: positive, and its pixels within kMaxStillBytes.
-// The message names the size. Needs no GL; the CLI and the export dialog check before any work.
-Status checkStillSize(int width, int height);
 
 // Renders a still offscreen with the given renderer (the CLI's and the editor's export share this),
 // supersampling by averaging N×N frames each shifted by a sub-pixel offset: the same result as

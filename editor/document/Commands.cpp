@@ -1,5 +1,6 @@
 #include "editor/document/Commands.hpp"
 
+#include <QUndoStack>
 #include <QtGlobal>
 #include <cassert>
 
@@ -26,6 +27,16 @@ const Node& requireNode(const Scene& scene, NodeId id, const char* where) {
 
 } // namespace
 
+bool pushEdit(QUndoStack& stack, QUndoCommand* command) {
+    assert(command && "pushEdit(): no command");
+    if (command->isObsolete()) {
+        delete command; // changes nothing: no step, and the redo steps and the clean state stay
+        return false;
+    }
+    stack.push(command);
+    return true;
+}
+
 // ---- SetNodesDataCommand ----
 
 SetNodesDataCommand::SetNodesDataCommand(Scene& scene, std::vector<Change> changes, const QString& text,
@@ -49,6 +60,7 @@ SetNodesDataCommand::SetNodesDataCommand(Scene& scene, std::vector<Change> chang
     } else {
         setText(QStringLiteral("Edit %1 nodes").arg(m_before.size()));
     }
+    setObsolete(m_after == m_before);
 }
 
 void SetNodesDataCommand::undo() {
@@ -73,6 +85,8 @@ bool SetNodesDataCommand::mergeWith(const QUndoCommand* other) {
         return false;
     }
     m_after = next->m_after;
+    // Back where it started (a drag that returned, or was cancelled): the step changes nothing.
+    setObsolete(m_after == m_before);
     return true;
 }
 
@@ -95,6 +109,7 @@ RenameNodeCommand::RenameNodeCommand(Scene& scene, NodeId id, std::string name, 
     , m_before(requireNode(scene, id, "RenameNodeCommand::RenameNodeCommand(): no such node").name())
     , m_after(std::move(name)) {
     setText(QStringLiteral("Rename %1 to %2").arg(quoted(m_before), quoted(m_after)));
+    setObsolete(m_after == m_before);
 }
 
 void RenameNodeCommand::undo() {
@@ -168,6 +183,17 @@ MoveNodeCommand::MoveNodeCommand(Scene& scene, NodeId id, NodeId newParent, int 
            "MoveNodeCommand::MoveNodeCommand(): cannot move a node into its own subtree");
     setText(QStringLiteral("Move %1").arg(
         quoted(requireNode(scene, id, "MoveNodeCommand::MoveNodeCommand(): no such node").name())));
+    setObsolete(movesNothing());
+}
+
+bool MoveNodeCommand::movesNothing() const {
+    if (m_newParent != m_oldParent) {
+        return false;
+    }
+    // Where insertNode() would put it once taken out: the index clamped to the siblings left, -1 = last.
+    const int siblings = m_scene.childCount(m_newParent) - 1;
+    const int landing = m_newIndex < 0 || m_newIndex > siblings ? siblings : m_newIndex;
+    return landing == m_oldIndex;
 }
 
 void MoveNodeCommand::move(NodeId parent, int index) {
@@ -191,6 +217,7 @@ SetSettingsCommand::SetSettingsCommand(Scene& scene, SceneSettings settings, boo
     , m_after(std::move(settings))
     , m_mergeable(mergeable) {
     setText(QStringLiteral("Change scene settings"));
+    setObsolete(m_after == m_before);
 }
 
 void SetSettingsCommand::undo() {
@@ -209,6 +236,7 @@ bool SetSettingsCommand::mergeWith(const QUndoCommand* other) {
         return false;
     }
     m_after = next->m_after;
+    setObsolete(m_after == m_before); // a slider dragged back to where it started
     return true;
 }
 
@@ -221,6 +249,7 @@ SetCameraCommand::SetCameraCommand(Scene& scene, CameraData camera, bool mergeab
     , m_after(std::move(camera))
     , m_mergeable(mergeable) {
     setText(QStringLiteral("Move camera"));
+    setObsolete(m_after == m_before);
 }
 
 void SetCameraCommand::undo() {
@@ -239,6 +268,7 @@ bool SetCameraCommand::mergeWith(const QUndoCommand* other) {
         return false;
     }
     m_after = next->m_after;
+    setObsolete(m_after == m_before); // an orbit back to where it started
     return true;
 }
 

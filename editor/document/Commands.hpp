@@ -6,10 +6,25 @@
 #include <memory>
 #include <vector>
 
+class QUndoStack;
+
 namespace speculum::document {
 
-// Undoable edits of a Scene. Push them on a QUndoStack (push() runs redo() once). Commands refer to nodes by
-// NodeId, which survives remove/undo cycles, so a stack of commands stays valid in any order of undo/redo.
+// Undoable edits of a Scene. Push them on a QUndoStack (push() runs redo() once), preferably through
+// pushEdit() below. Commands refer to nodes by NodeId, which survives remove/undo cycles, so a stack of
+// commands stays valid in any order of undo/redo.
+//
+// Exact undo: a command whose net effect is nothing is obsolete (QUndoCommand::isObsolete) and never stays
+// on a stack. Each command knows at construction whether it changes anything (a property set to the value
+// it has, a rename to the same name, a move to where the node is); a merge that brings a mergeable command
+// back to where it started (a drag that returns, a drag cancelled with Esc) makes it obsolete, and
+// QUndoStack then removes the step and restores the clean state it had.
+
+// Pushes `command` (taking ownership) unless it is obsolete from the start. QUndoStack::push drops an
+// obsolete command too, but only after it has thrown away the redo steps, and a clean state among them;
+// this leaves the stack exactly as it was. Returns whether the command ran (as a step of its own or merged
+// into the previous one).
+bool pushEdit(QUndoStack& stack, QUndoCommand* command);
 
 // Replaces the data of several nodes at once, as one undo step: a handle drag on a multiple selection.
 // Consecutive commands with the same non-empty mergeKey over the same nodes (same ids, same order) merge,
@@ -105,6 +120,7 @@ public:
 
 private:
     void move(NodeId parent, int index);
+    bool movesNothing() const;
     Scene& m_scene;
     NodeId m_node;
     NodeId m_oldParent;

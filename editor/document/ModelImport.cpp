@@ -1,13 +1,16 @@
 #include "editor/document/ModelImport.hpp"
 
+#include "editor/document/ModelImportProcess.hpp"
 #include "editor/document/ModelIoSystem.hpp"
 #include "editor/document/ModelMaterials.hpp"
 #include "editor/document/ModelNodes.hpp"
 #include "editor/document/ModelPrecheck.hpp"
+#include "editor/document/ModelSerialization.hpp"
 #include "editor/document/ModelWeld.hpp"
 #include "render/io/FileKind.hpp"
 #include "render/mesh/MeshRepair.hpp"
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <assimp/ProgressHandler.hpp>
 #include <assimp/config.h>
@@ -19,6 +22,7 @@
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
+#include <map>
 #include <pthread.h>
 #include <sstream>
 #include <system_error>
@@ -232,10 +236,9 @@ double unitScaleOf(const aiScene& scene, const fs::path& file, ImportNotes& note
     return factor / 100.0;
 }
 
-render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes& notes,
-                                            const Progress& progress) {
+// What the editor process checks itself before any reader runs.
+render::Status checkBeforeReading(const fs::path& file) {
     std::error_code ec;
-    const fs::path file(path);
     if (const render::Status regular = render::requireRegularFile(file); !regular) {
         if (regular.error().find("folder") != std::string::npos) {
             return Error{"it is a folder, not a regular file"};
@@ -253,7 +256,16 @@ render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes
     if (const render::Status checked = detail::precheckModel(file); !checked) {
         return Error{checked.error()};
     }
+    return render::Done{};
+}
 
+// The Assimp read and the conversion, after checkBeforeReading. With `compressedOut` (the import child),
+// compressed embedded textures are handed over undecoded.
+render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes& notes,
+                                            const Progress& progress,
+                                            std::map<std::string, detail::EmbeddedBytes>* compressedOut) {
+    std::error_code ec;
+    const fs::path file(path);
     progress(0.0, "reading");
     Assimp::Importer importer;
     importer.SetProgressHandler(new ReadProgress(progress)); // the importer owns and deletes it
@@ -325,7 +337,7 @@ render::Result<ImportedModel> importChecked(const std::string& path, ImportNotes
 
     progress(0.5, "materials");
     const std::string absolutePath = fs::absolute(file, ec).lexically_normal().string();
-    detail::MaterialConverter converter(*scene, absolutePath, model, notes);
+    detail::MaterialConverter converter(*scene, absolutePath, model, notes, compressedOut);
     std::vector<int> materialIndex(scene->mNumMaterials, -1);
     for (unsigned i = 0; i < scene->mNumMaterials && scene->mMaterials != nullptr; ++i) {
         if (scene->mMaterials[i] == nullptr || converter.isPlaceholder(*scene->mMaterials[i])) {
@@ -419,16 +431,16 @@ std::string displayName(const std::string& path) {
     return path.empty() ? std::string("(no file name)") : fs::path(path).filename().string();
 }
 
-} // namespace
+std::atomic<int> g_cpuLimitSeconds{kDefaultModelImportCpuSeconds};
 
-render::Result<ImportedModel> importModelFile(const std::string& path, std::vector<std::string>& warnings,
-                                              const ImportControl& control) {
-    const std::string name = displayName(path);
-    ImportNotes notes;
-    render::Result<ImportedModel> result = Error{"the import did not run"};
+// `body` on the large stack (the readers and the prechecks recurse per nesting level of the file), every
+// exception an error.
+template <typename R, typename Body>
+R onLargeStackGuarded(Body body) {
+    R result = Error{"the import did not run"};
     runOnLargeStack([&] {
         try {
-            result = importChecked(path, notes, Progress{control});
+            result = body();
         } catch (const std::bad_alloc&) {
             result = Error{"out of memory while reading the model"};
         } catch (const std::exception& e) {
@@ -437,16 +449,125 @@ render::Result<ImportedModel> importModelFile(const std::string& path, std::vect
             result = Error{"unexpected failure while reading the model"};
         }
     });
-    for (const std::string& note : notes.all()) {
-        warnings.push_back(name + ": " + note);
-    }
-    if (!result) {
-        if (result.error() == "cancelled") {
-            return Error{"cancelled"};
-        }
+    return result;
+}
+
+render::Result<ImportedModel> importGuarded(const std::string& path, ImportNotes& notes,
+                                            const ImportControl& control,
+                                            std::map<std::string, detail::EmbeddedBytes>* compressedOut) {
+    return onLargeStackGuarded<render::Result<ImportedModel>>(
+        [&] { return importChecked(path, notes, Progress{control}, compressedOut); });
+}
+
+// checkBeforeReading as the read was run before the child existed.
+render::Status checkGuarded(const std::string& path) {
+    return onLargeStackGuarded<render::Status>([&] { return checkBeforeReading(path); });
+}
+
+render::Result<ImportedModel> named(const std::string& name, render::Result<ImportedModel> result) {
+    if (!result && result.error() != "cancelled") {
         return Error{name + ": " + result.error()};
     }
     return result;
+}
+
+void tell(const std::string& name, const std::vector<std::string>& notes,
+          std::vector<std::string>& warnings) {
+    for (const std::string& note : notes) {
+        warnings.push_back(name + ": " + note);
+    }
+}
+
+// The child's answer as the model importModelFile returns: notes told, embedded textures decoded here.
+render::Result<ImportedModel> receive(const std::string& name, std::string& bytes,
+                                      std::vector<std::string>& warnings) {
+    auto answer = detail::deserializeChildImport(bytes);
+    bytes = {};
+    if (!answer) {
+        return Error{name + ": " + answer.error()};
+    }
+    detail::ChildImport& child = answer.value();
+    ImportNotes notes;
+    for (const std::string& note : child.notes) {
+        notes.add(note);
+    }
+    if (child.ok) {
+        detail::decodeEmbeddedTextures(child.compressedTextures, child.model, notes);
+    }
+    tell(name, notes.all(), warnings);
+    if (!child.ok) {
+        return named(name, Error{child.error});
+    }
+    return std::move(child.model);
+}
+
+} // namespace
+
+void setModelImportCpuLimit(int seconds) {
+    g_cpuLimitSeconds.store(std::max(1, seconds));
+}
+
+int modelImportCpuLimit() {
+    return g_cpuLimitSeconds.load();
+}
+
+namespace detail {
+
+render::Result<ImportedModel> importModelFileInProcess(const std::string& path,
+                                                       std::vector<std::string>& warnings,
+                                                       const ImportControl& control) {
+    const std::string name = displayName(path);
+    if (const render::Status checked = checkGuarded(path); !checked) {
+        return Error{name + ": " + checked.error()};
+    }
+    ImportNotes notes;
+    auto result = importGuarded(path, notes, control, nullptr);
+    tell(name, notes.all(), warnings);
+    return named(name, std::move(result));
+}
+
+} // namespace detail
+
+// The checks here; the read in a child process (ModelImportProcess), so that a crash, a hang or a memory
+// blow-up inside Assimp costs the child, not the editor and its open document.
+render::Result<ImportedModel> importModelFile(const std::string& path, std::vector<std::string>& warnings,
+                                              const ImportControl& control) {
+    const std::string name = displayName(path);
+    if (const render::Status checked = checkGuarded(path); !checked) {
+        return Error{name + ": " + checked.error()};
+    }
+    const auto body = [&path](const detail::ChildProgress& progress) {
+        detail::ChildImport answer;
+        ImportNotes notes;
+        ImportControl childControl;
+        childControl.progress = progress;
+        auto result = importGuarded(path, notes, childControl, &answer.compressedTextures);
+        answer.notes = notes.all();
+        answer.ok = result.ok();
+        if (result) {
+            answer.model = std::move(result).value();
+        } else {
+            answer.error = result.error();
+        }
+        return detail::serializeChildImport(answer);
+    };
+    const int cpuSeconds = modelImportCpuLimit();
+    detail::ChildRun run = detail::runInChildProcess(body, control, cpuSeconds);
+    switch (run.outcome) {
+    case detail::ChildRun::Outcome::NotStarted:
+        return detail::importModelFileInProcess(path, warnings, control); // no process to be had
+    case detail::ChildRun::Outcome::Cancelled:
+        return Error{"cancelled"};
+    case detail::ChildRun::Outcome::Failed:
+        return Error{name + ": " + run.error};
+    case detail::ChildRun::Outcome::Answered:
+        break;
+    }
+    try {
+        return receive(name, run.answer, warnings);
+    } catch (const std::bad_alloc&) {
+        return Error{name + ": out of memory while reading the model"};
+    }
 }
 
 render::Result<MeshData> importModel(const std::string& path, std::vector<std::string>& warnings) {

@@ -56,8 +56,18 @@ struct ImportControl {
 // cannot show (a second uv set, clearcoat, metallic-roughness textures, ...) is named once in `warnings`,
 // each prefixed with the file name. Errors name the file and the reason ("model.obj: file is empty").
 // Only regular files are read. Never throws; safe to call from a worker thread.
+// The file checks run here; Assimp's read and the conversion run in a child process limited to
+// modelImportCpuLimit() seconds of CPU, so that a reader that crashes, hangs or exhausts memory ends in a
+// one-line refusal ("model.ply: the model reader crashed on this file (SIGSEGV); ...") and the editor
+// keeps running.
 render::Result<ImportedModel> importModelFile(const std::string& path, std::vector<std::string>& warnings,
                                               const ImportControl& control = {});
+
+// CPU seconds one model read may take before it is stopped (default kDefaultModelImportCpuSeconds,
+// generous: a multi-million-triangle FBX takes a few). Tests and the fuzzer set a low one.
+inline constexpr int kDefaultModelImportCpuSeconds = 600;
+void setModelImportCpuLimit(int seconds);
+int modelImportCpuLimit();
 
 // Every part placed by the node tree (unit scale included) as one mesh: what a mesh component with a file
 // and no `part` draws.

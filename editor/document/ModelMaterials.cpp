@@ -115,12 +115,14 @@ void ImportNotes::add(const std::string& note) {
 }
 
 MaterialConverter::MaterialConverter(const aiScene& scene, std::string absoluteModelPath,
-                                     ImportedModel& model, ImportNotes& notes)
+                                     ImportedModel& model, ImportNotes& notes,
+                                     std::map<std::string, EmbeddedBytes>* compressedOut)
     : m_scene(scene)
     , m_modelPath(std::move(absoluteModelPath))
     , m_modelDir(fs::path(m_modelPath).parent_path().string())
     , m_model(model)
-    , m_notes(notes) {}
+    , m_notes(notes)
+    , m_compressed(compressedOut) {}
 
 bool MaterialConverter::isPlaceholder(const aiMaterial& material) const {
     aiString name;
@@ -292,7 +294,8 @@ std::string MaterialConverter::texture(const aiMaterial& material, int type, con
 
 std::string MaterialConverter::embedded(const std::string& reference) {
     const std::string key = m_modelPath + "#" + reference;
-    if (m_model.embeddedTextures.count(key) != 0) {
+    if (m_model.embeddedTextures.count(key) != 0 ||
+        (m_compressed != nullptr && m_compressed->count(key) != 0)) {
         return key;
     }
     const aiTexture* texture = m_scene.GetEmbeddedTexture(reference.c_str());
@@ -301,6 +304,12 @@ std::string MaterialConverter::embedded(const std::string& reference) {
         return {};
     }
     auto image = std::make_shared<render::TextureImage>();
+    if (texture->mHeight == 0 && m_compressed != nullptr) {
+        const char* bytes = reinterpret_cast<const char*>(texture->pcData);
+        (*m_compressed)[key] = {reference,
+                                bytes != nullptr ? std::string(bytes, texture->mWidth) : std::string()};
+        return key;
+    }
     if (texture->mHeight == 0) {
         // Compressed (PNG, JPEG, ...): mWidth is the byte count.
         auto decoded = render::decodeTexture(texture->pcData, texture->mWidth, key);
@@ -351,6 +360,36 @@ std::string MaterialConverter::external(const std::string& reference) {
     }
     m_notes.add("texture '" + reference + "' not found");
     return {};
+}
+
+void decodeEmbeddedTextures(const std::map<std::string, EmbeddedBytes>& compressed, ImportedModel& model,
+                            ImportNotes& notes) {
+    for (const auto& [key, texture] : compressed) {
+        auto decoded = render::decodeTexture(texture.bytes.data(), texture.bytes.size(), key);
+        if (decoded) {
+            model.embeddedTextures[key] = std::make_shared<render::TextureImage>(std::move(decoded).value());
+            continue;
+        }
+        notes.add("embedded texture '" + texture.reference + "' unreadable: " + decoded.error());
+        for (MaterialComponent& material : model.materials) {
+            for (std::string* field :
+                 {&material.texture, &material.emissionTexture, &material.normalTexture}) {
+                if (*field == key) {
+                    field->clear();
+                }
+            }
+        }
+    }
+    // Tangents were computed for parts whose material had a normal map; one that did not decode leaves none.
+    for (ImportedPart& part : model.parts) {
+        const bool normalMapped = part.material >= 0 && part.material < int(model.materials.size()) &&
+                                  !model.materials[part.material].normalTexture.empty();
+        if (part.mesh && !part.mesh->tangents.empty() && !normalMapped) {
+            render::MeshData copy = *part.mesh;
+            copy.tangents.clear();
+            part.mesh = render::freezeMesh(std::move(copy));
+        }
+    }
 }
 
 } // namespace speculum::document::detail

@@ -2,6 +2,7 @@
 
 #include "editor/document/ModelImport.hpp"
 
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -10,6 +11,13 @@ struct aiMaterial;
 struct aiScene;
 
 namespace speculum::document::detail {
+
+// A compressed embedded texture as the file holds it, and the name the file gives it ("*0").
+struct EmbeddedBytes {
+    std::string reference;
+    std::string bytes;
+    bool operator==(const EmbeddedBytes&) const = default;
+};
 
 // Notes for the user, each text kept once ("KHR_materials_clearcoat ignored" for twenty materials is one
 // line). ModelImport prefixes them with the file name.
@@ -27,10 +35,13 @@ private:
 // relative to the model's folder (absolute, regular files only; a missing one is a note, the material
 // keeps no texture), embedded ones decoded once into model.embeddedTextures under
 // "<modelPath>#<Assimp's name>". The conversion is documented in ModelMaterials.cpp.
+// Given `compressedOut`, compressed embedded textures (PNG, JPEG, ...) are not decoded but handed over as
+// their file bytes under the same key: the import child leaves decoding (OpenImageIO, whose thread pool is
+// not fork-safe) to the editor process, see decodeEmbeddedTextures.
 class MaterialConverter {
 public:
     MaterialConverter(const aiScene& scene, std::string absoluteModelPath, ImportedModel& model,
-                      ImportNotes& notes);
+                      ImportNotes& notes, std::map<std::string, EmbeddedBytes>* compressedOut = nullptr);
 
     MaterialComponent convert(const aiMaterial& material);
     // Whether Assimp's material `index` is its placeholder for "the file gave no material" (PLY, STL):
@@ -47,6 +58,13 @@ private:
     std::string m_modelDir;
     ImportedModel& m_model;
     ImportNotes& m_notes;
+    std::map<std::string, EmbeddedBytes>* m_compressed;
 };
+
+// Decodes what a MaterialConverter with `compressedOut` handed over into model.embeddedTextures. A texture
+// that cannot be decoded is a note and leaves the materials that named it without that texture (and a part
+// whose normal map went without its tangents), as an in-process conversion would have.
+void decodeEmbeddedTextures(const std::map<std::string, EmbeddedBytes>& compressed, ImportedModel& model,
+                            ImportNotes& notes);
 
 } // namespace speculum::document::detail

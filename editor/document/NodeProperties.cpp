@@ -116,7 +116,8 @@ ComponentInfo meshGroup() {
         }));
     c.properties.push_back(integer<NodeData>(
         QStringLiteral("mesh.tessellation"), QStringLiteral("Tessellation"),
-        in(&NodeData::mesh, &MeshComponent::tessellation), {1, 64}, {}, {},
+        in(&NodeData::mesh, &MeshComponent::tessellation),
+        {render::kMinTessellation, render::kMaxTessellation}, {}, {},
         QStringLiteral("Subdivisions of the built-in shape (teapot: per patch edge, sphere: rings)")));
     c.properties.back().visible = [](const NodeData& d) { return d.mesh && d.mesh->builtin.has_value(); };
     Property<NodeData> file = filePath(QStringLiteral("mesh.file"), QStringLiteral("File"),
@@ -195,7 +196,7 @@ ComponentInfo materialGroup() {
                0.0, 2.0));
     c.properties.push_back(
         slider(number<NodeData>(QStringLiteral("material.shininess"), QStringLiteral("Shininess"),
-                                in(&NodeData::material, &M::shininess), {0.0, 10000.0}),
+                                in(&NodeData::material, &M::shininess), {0.0, render::kMaxShininess}),
                1.0, 256.0, 1, 1.0));
     c.properties.push_back(color<NodeData>(QStringLiteral("material.emission"), QStringLiteral("Emission"),
                                            in(&NodeData::material, &M::emission)));
@@ -220,7 +221,8 @@ ComponentInfo materialGroup() {
     c.properties.back().info.tooltip = QStringLiteral("Tangent-space normal map; empty for none");
     c.properties.push_back(
         slider(number<NodeData>(QStringLiteral("material.normalScale"), QStringLiteral("Normal strength"),
-                                in(&NodeData::material, &M::normalScale), {-100.0, 100.0}),
+                                in(&NodeData::material, &M::normalScale),
+                                {-render::kMaxNormalScale, render::kMaxNormalScale}),
                0.0, 2.0));
     static const std::array<TextureWrap, 3> wraps{TextureWrap::Repeat, TextureWrap::Clamp,
                                                   TextureWrap::Mirror};
@@ -260,11 +262,8 @@ ComponentInfo lightGroup() {
         return ok();
     };
     using L = LightComponent;
-    c.properties.push_back(
-        enumField(QStringLiteral("light.type"), QStringLiteral("Type"),
-                  {QStringLiteral("Point"), QStringLiteral("Directional"), QStringLiteral("Spot")},
-                  std::array{LightType::Point, LightType::Directional, LightType::Spot},
-                  in(&NodeData::light, &L::type)));
+    c.properties.push_back(namedField<LightType>(QStringLiteral("light.type"), QStringLiteral("Type"),
+                                                 render::names::kLightTypes, in(&NodeData::light, &L::type)));
     c.properties.push_back(color<NodeData>(QStringLiteral("light.color"), QStringLiteral("Colour"),
                                            in(&NodeData::light, &L::color)));
     c.properties.push_back(
@@ -306,12 +305,15 @@ ComponentInfo lightGroup() {
     };
     c.properties.push_back(integer<NodeData>(
         QStringLiteral("light.shadows.mapSize"), QStringLiteral("Shadow map size"),
-        shadowField(&ShadowComponent::mapSize), {16, 16384}, QStringLiteral(" px"),
-        [](int v) { return (v & (v - 1)) == 0 ? QString() : QStringLiteral("must be a power of two"); }));
+        shadowField(&ShadowComponent::mapSize), {render::kMinShadowMapSize, render::kMaxShadowMapSize},
+        QStringLiteral(" px"), [](int v) {
+            return render::isPowerOfTwo(v) ? QString() : QStringLiteral("must be a power of two");
+        }));
     c.properties.back().visible = hasShadows;
     c.properties.push_back(integer<NodeData>(
         QStringLiteral("light.shadows.pcf"), QStringLiteral("Shadow softness (PCF)"),
-        shadowField(&ShadowComponent::pcf), {1, 15}, QStringLiteral(" texels"),
+        shadowField(&ShadowComponent::pcf), {render::kMinPcfWidth, render::kMaxPcfWidth},
+        QStringLiteral(" texels"),
         [](int v) { return v % 2 == 1 ? QString() : QStringLiteral("must be an odd kernel width"); },
         QStringLiteral("Odd filter width in shadow-map texels; 1 = hard shadows")));
     c.properties.back().info.step = 2;

@@ -3,6 +3,7 @@
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/SceneChecks.hpp"
 #include "render/SceneLimits.hpp"
+#include "render/SceneNames.hpp"
 #include "render/io/FileKind.hpp"
 #include "render/io/Printable.hpp"
 
@@ -13,6 +14,7 @@
 #include <QJsonParseError>
 #include <QSet>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
@@ -183,6 +185,27 @@ E readEnum(const QJsonValue& v, const std::string& path, const char* what,
     return *e;
 }
 
+// The document's enums list their values in the order of the name tables (the index is the value).
+static_assert(int(LightType::Spot) + 1 == render::names::kLightTypes.size());
+static_assert(int(MirrorTechnique::Texture) + 1 == render::names::kMirrorTechniques.size());
+static_assert(int(ReflectorMap::TennisBall) + 1 == render::names::kReflectorMaps.size());
+static_assert(int(ReflectorFill::Resampled) + 1 == render::names::kReflectorFills.size());
+static_assert(int(ReflectorUpdate::Once) + 1 == render::names::kReflectorUpdates.size());
+
+// A choice spelled as in render/SceneNames.hpp: the one list the writer, the inspector and the sweep use.
+template <typename E, std::size_t N>
+E readNamed(const QJsonValue& v, const std::string& path, const char* what,
+            const std::array<render::names::Name, N>& names) {
+    static_assert(N > 0);
+    const std::string s = readString(v, path);
+    const std::optional<E> e = render::names::fromFileName<E>(names, s);
+    if (!e) {
+        fail(path, std::string("unknown ") + what + " \"" + render::printable(s, 40) + "\" (expected " +
+                       render::names::choices(names) + ")");
+    }
+    return *e;
+}
+
 // ---- objects: tracks which keys were read so the rest become warnings and `extra` ----
 
 class ObjectReader {
@@ -317,7 +340,7 @@ private:
         SceneSettings s;
         o.optional("background", s.background, readColor);
         o.optional("mirrorDepth", s.mirrorDepth, readInt);
-        requireRange(s.mirrorDepth, 0, 16, o.at("mirrorDepth"));
+        requireRange(s.mirrorDepth, 0, render::kMaxMirrorDepth, o.at("mirrorDepth"));
         o.optional("ambient", s.ambient, readNumber);
         requireRange(s.ambient, 0.0, 1.0, o.at("ambient"));
         s.extra = o.finish();
@@ -442,7 +465,8 @@ private:
                                                                  "teapot, sphere, box or plane"));
             if (!tessellation.isUndefined()) {
                 m.tessellation = readInt(tessellation, o.at("tessellation"));
-                requireRange(m.tessellation, 1, 64, o.at("tessellation"));
+                requireRange(m.tessellation, render::kMinTessellation, render::kMaxTessellation,
+                             o.at("tessellation"));
             }
             if (!part.isUndefined()) {
                 fail(o.at("part"), "only file meshes have a part");
@@ -493,7 +517,7 @@ private:
         o.optional("specular", m.specular, readNumber);
         requireIntensity(m.specular, o.at("specular"));
         o.optional("shininess", m.shininess, readNumber);
-        requireRange(m.shininess, 0.0, 10000.0, o.at("shininess"));
+        requireRange(m.shininess, 0.0, render::kMaxShininess, o.at("shininess"));
         o.optional("emission", m.emission, readColor);
         if (const QJsonValue t = o.get("texture"); !t.isUndefined()) {
             m.texture = readPath(t, o.at("texture"));
@@ -506,7 +530,7 @@ private:
             m.normalTexture = readPath(t, o.at("normalTexture"));
         }
         o.optional("normalScale", m.normalScale, readNumber);
-        requireRange(m.normalScale, -100.0, 100.0, o.at("normalScale"));
+        requireRange(m.normalScale, -render::kMaxNormalScale, render::kMaxNormalScale, o.at("normalScale"));
         if (const QJsonValue w = o.get("wrap"); !w.isUndefined()) {
             m.wrap = readWrap(w, o.at("wrap"));
         }
@@ -531,14 +555,19 @@ private:
         ObjectReader o(v, path, m_warnings);
         ShadowComponent s;
         o.optional("mapSize", s.mapSize, readInt);
-        // Shadow maps are square power-of-two textures; 16384 is the GL_MAX_TEXTURE_SIZE of large GPUs.
-        if (s.mapSize < 16 || s.mapSize > 16384 || (s.mapSize & (s.mapSize - 1)) != 0) {
-            fail(o.at("mapSize"), "must be a power of two in 16..16384, got " + std::to_string(s.mapSize));
+        // Shadow maps are square power-of-two textures; the largest is the GL_MAX_TEXTURE_SIZE of large GPUs.
+        if (s.mapSize < render::kMinShadowMapSize || s.mapSize > render::kMaxShadowMapSize ||
+            !render::isPowerOfTwo(s.mapSize)) {
+            fail(o.at("mapSize"), "must be a power of two in " + std::to_string(render::kMinShadowMapSize) +
+                                      ".." + std::to_string(render::kMaxShadowMapSize) + ", got " +
+                                      std::to_string(s.mapSize));
         }
         o.optional("pcf", s.pcf, readInt);
         // An odd kernel is centred on the looked-up texel.
-        if (s.pcf < 1 || s.pcf > 15 || s.pcf % 2 == 0) {
-            fail(o.at("pcf"), "must be an odd kernel width in 1..15, got " + std::to_string(s.pcf));
+        if (s.pcf < render::kMinPcfWidth || s.pcf > render::kMaxPcfWidth || s.pcf % 2 == 0) {
+            fail(o.at("pcf"), "must be an odd kernel width in " + std::to_string(render::kMinPcfWidth) +
+                                  ".." + std::to_string(render::kMaxPcfWidth) + ", got " +
+                                  std::to_string(s.pcf));
         }
         s.extra = o.finish();
         return s;
@@ -548,7 +577,7 @@ private:
         ObjectReader o(v, path, m_warnings);
         LightComponent l;
         o.optional("type", l.type, [](const QJsonValue& t, const std::string& p) {
-            return readEnum<LightType>(t, p, "light type", lightTypeFromString, "point, directional or spot");
+            return readNamed<LightType>(t, p, "light type", render::names::kLightTypes);
         });
         o.optional("color", l.color, readColor);
         o.optional("intensity", l.intensity, readNumber);
@@ -575,8 +604,7 @@ private:
         o.optional("reflectivity", m.reflectivity, readNumber);
         requireRange(m.reflectivity, 0.0, 1.0, o.at("reflectivity"));
         o.optional("technique", m.technique, [](const QJsonValue& t, const std::string& p) {
-            return readEnum<MirrorTechnique>(t, p, "mirror technique", mirrorTechniqueFromString,
-                                             "stencil or texture");
+            return readNamed<MirrorTechnique>(t, p, "mirror technique", render::names::kMirrorTechniques);
         });
         o.optional("tint", m.tint, readColor);
         o.optional("fresnel", m.fresnel, readBool);
@@ -590,27 +618,25 @@ private:
         ObjectReader o(v, path, m_warnings);
         ReflectorComponent r;
         o.optional("map", r.map, [](const QJsonValue& t, const std::string& p) {
-            return readEnum<ReflectorMap>(t, p, "reflector map", reflectorMapFromString,
-                                          "cube, dual-paraboloid or tennis-ball");
+            return readNamed<ReflectorMap>(t, p, "reflector map", render::names::kReflectorMaps);
         });
         o.optional("resolution", r.resolution, readInt);
-        requireRange(r.resolution, 8, 8192, o.at("resolution"));
+        requireRange(r.resolution, render::kMinEnvironmentMapSize, render::kMaxEnvironmentMapSize,
+                     o.at("resolution"));
         o.optional("reflectivity", r.reflectivity, readNumber);
         requireRange(r.reflectivity, 0.0, 1.0, o.at("reflectivity"));
         o.optional("fresnel", r.fresnel, readBool);
         o.optional("fill", r.fill, [](const QJsonValue& t, const std::string& p) {
-            return readEnum<ReflectorFill>(t, p, "reflector fill", reflectorFillFromString,
-                                           "direct or resampled");
+            return readNamed<ReflectorFill>(t, p, "reflector fill", render::names::kReflectorFills);
         });
         if (const QJsonValue p = o.get("parallax"); !p.isUndefined()) {
             r.parallax = readParallax(p, o.at("parallax"));
         }
         o.optional("update", r.update, [](const QJsonValue& t, const std::string& p) {
-            return readEnum<ReflectorUpdate>(t, p, "reflector update", reflectorUpdateFromString,
-                                             "always, on-change or once");
+            return readNamed<ReflectorUpdate>(t, p, "reflector update", render::names::kReflectorUpdates);
         });
         o.optional("mirrorDepth", r.mirrorDepth, readInt);
-        requireRange(r.mirrorDepth, 0, 16, o.at("mirrorDepth"));
+        requireRange(r.mirrorDepth, 0, render::kMaxMirrorDepth, o.at("mirrorDepth"));
         r.extra = o.finish();
         return r;
     }

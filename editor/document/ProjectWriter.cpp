@@ -1,5 +1,6 @@
 #include "editor/document/JsonWriter.hpp"
 #include "editor/document/ProjectFile.hpp"
+#include "render/SceneNames.hpp"
 #include "render/io/AtomicFile.hpp"
 
 #include <QFile>
@@ -205,7 +206,7 @@ private:
     void writeLight(const LightComponent& l) {
         const LightComponent defaults;
         w.beginObject();
-        field("type", toString(l.type));
+        field("type", render::names::fileName(render::names::kLightTypes, l.type));
         vec("color", l.color);
         field("intensity", l.intensity);
         // The cone only means something for spots; other lights carry it only when someone changed it (so
@@ -231,7 +232,7 @@ private:
         w.beginObject();
         vec("size", m.size);
         field("reflectivity", m.reflectivity);
-        field("technique", toString(m.technique));
+        field("technique", render::names::fileName(render::names::kMirrorTechniques, m.technique));
         vec("tint", m.tint);
         field("fresnel", QJsonValue(m.fresnel));
         field("blur", m.blur);
@@ -241,11 +242,11 @@ private:
 
     void writeReflector(const ReflectorComponent& r) {
         w.beginObject();
-        field("map", toString(r.map));
+        field("map", render::names::fileName(render::names::kReflectorMaps, r.map));
         field("resolution", r.resolution);
         field("reflectivity", r.reflectivity);
         field("fresnel", QJsonValue(r.fresnel));
-        field("fill", toString(r.fill));
+        field("fill", render::names::fileName(render::names::kReflectorFills, r.fill));
         if (r.parallax) {
             w.key("parallax");
             w.beginObject();
@@ -259,7 +260,7 @@ private:
             writeExtra(r.parallax->extra);
             w.endObject();
         }
-        field("update", toString(r.update));
+        field("update", render::names::fileName(render::names::kReflectorUpdates, r.update));
         field("mirrorDepth", r.mirrorDepth);
         writeExtra(r.extra);
         w.endObject();

@@ -36,7 +36,7 @@ std::vector<Property<SceneSettings>> makeSettingsProperties() {
                                         [](SceneSettings& s) { return &s.background; }));
     list.push_back(integer<SceneSettings>(
         QStringLiteral("settings.mirrorDepth"), QStringLiteral("Mirror depth"),
-        [](SceneSettings& s) { return &s.mirrorDepth; }, {0, 16}, {}, {},
+        [](SceneSettings& s) { return &s.mirrorDepth; }, {0, render::kMaxMirrorDepth}, {}, {},
         QStringLiteral("How many reflections of reflections are drawn")));
     list.push_back(slider(number<SceneSettings>(QStringLiteral("settings.ambient"), QStringLiteral("Ambient"),
                                                 [](SceneSettings& s) { return &s.ambient; }, {0.0, 1.0}),

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "editor/document/Properties.hpp"
+#include "render/SceneNames.hpp"
 
 #include <array>
 #include <cmath>
@@ -251,6 +252,19 @@ Property<NodeData> enumField(QString key, QString label, QStringList options, st
             *e = values[static_cast<std::size_t>(i)];
             return render::Done{};
         });
+}
+
+// An enum property whose options are the labels of a render/SceneNames.hpp table, in enum order.
+template <typename E, std::size_t N>
+Property<NodeData> namedField(QString key, QString label, const std::array<render::names::Name, N>& names,
+                              Access<NodeData, E> access) {
+    QStringList options;
+    std::array<E, N> values{};
+    for (std::size_t i = 0; i < N; ++i) {
+        options << QString::fromUtf8(names[i].label.data(), qsizetype(names[i].label.size()));
+        values[i] = static_cast<E>(i);
+    }
+    return enumField(std::move(key), std::move(label), std::move(options), values, std::move(access));
 }
 
 // A path to an existing file, stored absolute; allowEmpty accepts "" for none.

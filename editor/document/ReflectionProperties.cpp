@@ -1,5 +1,6 @@
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
+#include "render/SceneLimits.hpp"
 
 namespace speculum::document::groups {
 
@@ -30,10 +31,9 @@ ComponentInfo mirrorGroup() {
                                 in(&NodeData::mirror, &Mi::reflectivity), {0.0, 1.0}, {},
                                 QStringLiteral("1 = perfect mirror")),
                0.0, 1.0));
-    c.properties.push_back(enumField(QStringLiteral("mirror.technique"), QStringLiteral("Technique"),
-                                     {QStringLiteral("Stencil"), QStringLiteral("Texture")},
-                                     std::array{MirrorTechnique::Stencil, MirrorTechnique::Texture},
-                                     in(&NodeData::mirror, &Mi::technique)));
+    c.properties.push_back(
+        namedField<MirrorTechnique>(QStringLiteral("mirror.technique"), QStringLiteral("Technique"),
+                                    render::names::kMirrorTechniques, in(&NodeData::mirror, &Mi::technique)));
     c.properties.push_back(color<NodeData>(QStringLiteral("mirror.tint"), QStringLiteral("Tint"),
                                            in(&NodeData::mirror, &Mi::tint)));
     c.properties.push_back(boolean<NodeData>(
@@ -74,13 +74,12 @@ ComponentInfo reflectorGroup() {
     };
     using R = ReflectorComponent;
     c.properties.push_back(
-        enumField(QStringLiteral("reflector.map"), QStringLiteral("Environment map"),
-                  {QStringLiteral("Cube"), QStringLiteral("Dual paraboloid"), QStringLiteral("Tennis ball")},
-                  std::array{ReflectorMap::Cube, ReflectorMap::DualParaboloid, ReflectorMap::TennisBall},
-                  in(&NodeData::reflector, &R::map)));
-    c.properties.push_back(
-        integer<NodeData>(QStringLiteral("reflector.resolution"), QStringLiteral("Resolution"),
-                          in(&NodeData::reflector, &R::resolution), {8, 8192}, QStringLiteral(" px")));
+        namedField<ReflectorMap>(QStringLiteral("reflector.map"), QStringLiteral("Environment map"),
+                                 render::names::kReflectorMaps, in(&NodeData::reflector, &R::map)));
+    c.properties.push_back(integer<NodeData>(
+        QStringLiteral("reflector.resolution"), QStringLiteral("Resolution"),
+        in(&NodeData::reflector, &R::resolution),
+        {render::kMinEnvironmentMapSize, render::kMaxEnvironmentMapSize}, QStringLiteral(" px")));
     c.properties.back().info.step = 32;
     c.properties.push_back(
         slider(number<NodeData>(QStringLiteral("reflector.reflectivity"), QStringLiteral("Reflectivity"),
@@ -96,20 +95,17 @@ ComponentInfo reflectorGroup() {
             d.reflector->fresnel = on;
             return ok();
         }));
-    c.properties.push_back(enumField(
-        QStringLiteral("reflector.fill"), QStringLiteral("Fill"),
-        {QStringLiteral("Direct (vertex warp)"), QStringLiteral("Resampled cube")},
-        std::array{ReflectorFill::Direct, ReflectorFill::Resampled}, in(&NodeData::reflector, &R::fill)));
+    c.properties.push_back(namedField<ReflectorFill>(QStringLiteral("reflector.fill"), QStringLiteral("Fill"),
+                                                     render::names::kReflectorFills,
+                                                     in(&NodeData::reflector, &R::fill)));
     c.properties.back().info.tooltip =
         QStringLiteral("How dual-paraboloid and tennis-ball maps are filled; the cube map ignores it");
-    c.properties.push_back(enumField(
-        QStringLiteral("reflector.update"), QStringLiteral("Update"),
-        {QStringLiteral("Always"), QStringLiteral("When something it sees changes"), QStringLiteral("Once")},
-        std::array{ReflectorUpdate::Always, ReflectorUpdate::OnChange, ReflectorUpdate::Once},
-        in(&NodeData::reflector, &R::update)));
+    c.properties.push_back(
+        namedField<ReflectorUpdate>(QStringLiteral("reflector.update"), QStringLiteral("Update"),
+                                    render::names::kReflectorUpdates, in(&NodeData::reflector, &R::update)));
     c.properties.push_back(integer<NodeData>(
         QStringLiteral("reflector.mirrorDepth"), QStringLiteral("Mirror depth in the map"),
-        in(&NodeData::reflector, &R::mirrorDepth), {0, 16}, {}, {},
+        in(&NodeData::reflector, &R::mirrorDepth), {0, render::kMaxMirrorDepth}, {}, {},
         QStringLiteral(
             "How many levels of planar mirrors reflect inside the environment map, mirrors seen in "
             "mirrors included (every fill); 0 shows them with their own material")));

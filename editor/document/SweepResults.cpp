@@ -1,5 +1,6 @@
 #include "editor/document/SweepResults.hpp"
 
+#include "accuracy/Sweep.hpp"
 #include "editor/document/Commands.hpp"
 #include "editor/document/JsonDuplicateKeys.hpp"
 #include "editor/document/Scene.hpp"
@@ -11,23 +12,9 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <algorithm>
-#include <cmath>
-#include <limits>
 #include <map>
 
 namespace speculum::document {
-
-namespace {
-
-std::optional<double> number(const QJsonValue& v) {
-    if (v.isDouble() && std::isfinite(v.toDouble())) {
-        return v.toDouble();
-    }
-    return std::nullopt;
-}
-
-} // namespace
 
 render::Result<SweepResults> loadSweepResults(const QString& path) {
     // The user picks this file: named escaped in messages, read only if it is a regular file (a FIFO
@@ -46,79 +33,22 @@ render::Result<SweepResults> loadSweepResults(const QString& path) {
     if (const std::optional<std::string> duplicate = findDuplicateKey(*bytes)) {
         return render::Error{name + ": " + *duplicate};
     }
-    const QJsonObject root = json.object();
-    if (root.value(QStringLiteral("format")).toString() != QStringLiteral("speculum-bench")) {
-        return render::Error{name + ": not a speculum bench result (format is not \"speculum-bench\")"};
-    }
-    SweepResults out;
-    out.scene = root.value(QStringLiteral("scene")).toString();
-    const QJsonValue size = root.value(QStringLiteral("size"));
-    out.size =
-        size.isArray()
-            ? QStringLiteral("%1x%2").arg(size.toArray().at(0).toInt()).arg(size.toArray().at(1).toInt())
-            : size.toString();
-    const QJsonArray results = root.value(QStringLiteral("results")).toArray();
-    for (qsizetype i = 0; i < results.size(); ++i) {
-        const QJsonObject r = results.at(i).toObject();
-        const std::string where = name + ": results[" + std::to_string(i) + "].";
-        SweepRecord record;
-        record.id = r.value(QStringLiteral("id")).toString();
-        record.family = r.value(QStringLiteral("family")).toString();
-        record.label = r.value(QStringLiteral("label")).toString();
-        record.series = r.value(QStringLiteral("series")).toString();
-        record.sceneSetting = r.value(QStringLiteral("sceneSetting")).toBool();
-        const QJsonObject settings = r.value(QStringLiteral("settings")).toObject();
-        for (auto it = settings.begin(); it != settings.end(); ++it) {
-            const QString value = it->isDouble() ? QString::number(it->toDouble()) : it->toString();
-            record.settings.emplace_back(it.key(), value);
-        }
-        record.gpuMs = number(r.value(QStringLiteral("gpuMs")));
-        const auto cpu = number(r.value(QStringLiteral("cpuMs")));
-        const auto psnr = number(r.value(QStringLiteral("psnr")));
-        const auto rmse = number(r.value(QStringLiteral("rmse")));
-        if (!cpu || !psnr || !rmse) {
-            return render::Error{where + (!cpu ? "cpuMs" : !psnr ? "psnr" : "rmse") + ": expected a number"};
-        }
-        if (record.family.isEmpty()) {
-            return render::Error{where + "family: expected a name"};
-        }
-        record.cpuMs = *cpu;
-        record.psnr = *psnr;
-        record.rmse = *rmse;
-        record.memoryBytes = number(r.value(QStringLiteral("memoryBytes"))).value_or(0.0);
-        record.psnrMirrors = number(r.value(QStringLiteral("psnrMirrors")));
-        record.psnrReflector = number(r.value(QStringLiteral("psnrReflector")));
-        out.gpuTimes = out.gpuTimes || record.gpuMs.has_value();
-        out.records.push_back(std::move(record));
-    }
-    if (out.records.empty()) {
-        return render::Error{name + ": no results"};
-    }
-    return out;
+    return accuracy::readJson(json.object(), name);
 }
 
-std::vector<std::size_t> paretoFront(const std::vector<SweepRecord>& records) {
-    std::vector<std::size_t> order(records.size());
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        order[i] = i;
+std::optional<ReflectorParallax> sweepParallaxProxy(const render::FrameInput& scene) {
+    const accuracy::SceneTraits traits = accuracy::sceneTraits(scene, std::nullopt);
+    if (!traits.proxyMakesSense || traits.ownProxy) {
+        return std::nullopt;
     }
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return records[a].ms() != records[b].ms() ? records[a].ms() < records[b].ms()
-                                                  : records[a].psnr > records[b].psnr;
-    });
-    std::vector<std::size_t> front;
-    double best = -std::numeric_limits<double>::infinity();
-    for (std::size_t i : order) {
-        if (records[i].psnr > best) { // better than everything at least as fast
-            front.push_back(i);
-            best = records[i].psnr;
-        }
-    }
-    return front;
+    ReflectorParallax proxy;
+    proxy.shape = ParallaxShape::Box;
+    proxy.min = traits.proxy.min;
+    proxy.max = traits.proxy.max;
+    return proxy;
 }
 
-SweepApplication applySweepSettings(Scene& scene, const std::vector<std::pair<QString, QString>>& settings,
-                                    const QString& text,
+SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& settings, const QString& text,
                                     const std::optional<ReflectorParallax>& derivedProxy) {
     SweepApplication out;
     // Edited copies of the nodes that change, in file order; settings.mirrorDepth separately.
@@ -134,10 +64,10 @@ SweepApplication applySweepSettings(Scene& scene, const std::vector<std::pair<QS
     std::optional<SceneSettings> sceneSettings;
 
     for (const auto& setting : settings) {
-        // Named references, not a structured binding: clang 14 (the fuzz and sanitizer builds) cannot
+        // Named copies, not a structured binding: clang 14 (the fuzz and sanitizer builds) cannot
         // capture structured bindings in the lambdas below.
-        const QString& key = setting.first;
-        const QString& value = setting.second;
+        const QString key = QString::fromStdString(setting.first);
+        const QString value = QString::fromStdString(setting.second);
         // Both come from the results file: shown escaped in the applied / skipped lists.
         const QString what = QString::fromStdString(render::printable(key.toStdString(), 40) + " = " +
                                                     render::printable(value.toStdString(), 40));

@@ -1,18 +1,18 @@
 #include "editor/ui/AccuracyPanel.hpp"
 
+#include "accuracy/Report.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/document/Snapshot.hpp"
 #include "editor/document/SweepResults.hpp"
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/SweepChart.hpp"
+#include "editor/ui/SweepRunJob.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "editor/view/AnimationClock.hpp"
 #include "render/io/FileKind.hpp"
 #include "render/io/Printable.hpp"
-#include "render/math/Projection.hpp"
-#include "render/mesh/MeshData.hpp"
-#include "render/plan/Planner.hpp"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -23,10 +23,10 @@
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QUndoStack>
 #include <QVBoxLayout>
-#include <glm/glm.hpp>
 
 namespace speculum::ui {
 
@@ -79,38 +79,24 @@ QString decibels(const std::optional<double>& db) {
     return db ? QStringLiteral("%1 dB").arg(*db, 0, 'f', 2) : QObject::tr("— (no such pixels)");
 }
 
-// "Parallax on" of the bench for a reflector without a proxy of its own: a box around everything but the
-// reflector, relative to the capture point, when that box encloses the reflector (app/bench/Sweep.cpp's
-// sceneTraits; the same rule, so the applied setting is the one that was measured).
-std::optional<document::ReflectorParallax> derivedProxy(const render::FrameInput& scene) {
-    if (!scene.reflector || !scene.reflector->mesh) {
-        return std::nullopt;
+// The findings of accuracy::findings as Markdown for a label: a heading per family, a bullet per finding.
+QString findingsMarkdown(const std::vector<accuracy::FamilyFindings>& findings) {
+    QString md;
+    for (const auto& family : findings) {
+        md += QStringLiteral("**%1** (judged by %2)\n\n")
+                  .arg(QString::fromStdString(family.title), QString::fromStdString(family.judgedBy));
+        for (const std::string& line : family.lines) {
+            md += QStringLiteral("- %1\n").arg(QString::fromStdString(line));
+        }
+        md += QLatin1Char('\n');
     }
-    render::FrameInput environment = scene;
-    environment.reflector.reset();
-    const render::math::Box around = render::math::sceneBounds(environment);
-    const render::math::Box own =
-        render::math::worldBounds(render::computeBounds(*scene.reflector->mesh), scene.reflector->world);
-    if (around.empty() || own.empty()) {
-        return std::nullopt;
-    }
-    const double tolerance = 1e-6 * std::max(1.0, glm::length(around.max - around.min));
-    if (!glm::all(glm::lessThanEqual(around.min, own.min + tolerance)) ||
-        !glm::all(glm::greaterThanEqual(around.max, own.max - tolerance))) {
-        return std::nullopt;
-    }
-    const glm::dvec3 centre = render::envmapCapture(scene).centre;
-    document::ReflectorParallax proxy;
-    proxy.shape = document::ParallaxShape::Box;
-    proxy.min = around.min - centre;
-    proxy.max = around.max - centre;
-    return proxy;
+    return md;
 }
 
 } // namespace
 
 AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, Viewport& viewport,
-                             AnimationClock& clock, QWidget* parent)
+                             view::AnimationClock& clock, QWidget* parent)
     : QWidget(parent)
     , m_scene(scene)
     , m_undoStack(undoStack)
@@ -180,20 +166,66 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
     compareLayout->addWidget(m_errorMap);
     compareLayout->addWidget(m_overlay);
 
-    auto* sweepBox = new QGroupBox(tr("Last sweep (speculum bench)"), this);
-    auto* load = new QPushButton(tr("Load sweep…"), sweepBox);
-    load->setObjectName(QStringLiteral("loadSweep"));
-    load->setToolTip(tr("Open the results.json that `speculum bench PROJECT --out DIR` wrote"));
+    auto* sweepBox = new QGroupBox(tr("Sweep of the settings (speculum bench)"), this);
+    m_sweep = new SweepRunJob(this);
+    m_runSweep = new QPushButton(tr("Run sweep…"), sweepBox);
+    m_runSweep->setObjectName(QStringLiteral("runSweep"));
+    m_runSweep->setToolTip(tr("Measure every setting the scene uses against the exact tracer, as "
+                              "`speculum bench` does: the scene's camera at t = 0, in this process"));
+    m_sweepSize = new QComboBox(sweepBox);
+    m_sweepSize->setObjectName(QStringLiteral("sweepSize"));
+    for (bool quick : {true, false}) {
+        const accuracy::SweepSize size = accuracy::defaultSweepSize(quick);
+        m_sweepSize->addItem(
+            (quick ? tr("Quick, %1×%2") : tr("Full, %1×%2")).arg(size.width).arg(size.height), quick);
+    }
+    m_cancelSweep = new QPushButton(tr("Cancel"), sweepBox);
+    m_cancelSweep->setObjectName(QStringLiteral("cancelSweep"));
+    m_cancelSweep->setEnabled(false);
+    m_loadSweep = new QPushButton(tr("Load sweep…"), sweepBox);
+    m_loadSweep->setObjectName(QStringLiteral("loadSweep"));
+    m_loadSweep->setToolTip(tr("Open the results.json that `speculum bench PROJECT --out DIR` wrote"));
+    auto* sweepButtons = new QHBoxLayout;
+    sweepButtons->addWidget(m_runSweep, 1);
+    sweepButtons->addWidget(m_sweepSize);
+    sweepButtons->addWidget(m_cancelSweep);
+    sweepButtons->addWidget(m_loadSweep);
+    m_sweepProgress = new QProgressBar(sweepBox);
+    m_sweepProgress->setObjectName(QStringLiteral("sweepProgress"));
+    m_sweepProgress->setFormat(QStringLiteral("%v / %m"));
+    m_sweepProgress->hide();
+    m_sweepStatus = new QLabel(sweepBox);
+    m_sweepStatus->setObjectName(QStringLiteral("sweepStatus"));
+    m_sweepStatus->setWordWrap(true);
+    m_sweepStatus->hide();
     m_chart = new SweepChart(sweepBox);
     m_sweepMessage = new QLabel(tr("Click a point to give the document that configuration's settings "
                                    "(one undo step)."),
                                 sweepBox);
     m_sweepMessage->setObjectName(QStringLiteral("sweepMessage"));
     m_sweepMessage->setWordWrap(true);
+    m_findings = new QLabel(sweepBox);
+    m_findings->setObjectName(QStringLiteral("sweepFindings"));
+    m_findings->setTextFormat(Qt::MarkdownText);
+    m_findings->setWordWrap(true);
+    m_findings->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_findings->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     auto* sweepLayout = new QVBoxLayout(sweepBox);
-    sweepLayout->addWidget(load);
-    sweepLayout->addWidget(m_chart, 1);
+    sweepLayout->addLayout(sweepButtons);
+    sweepLayout->addWidget(m_sweepProgress);
+    sweepLayout->addWidget(m_sweepStatus);
+    // The findings run to a few paragraphs per family: they scroll, under the chart.
+    m_findingsScroll = new QScrollArea(sweepBox);
+    m_findingsScroll->setObjectName(QStringLiteral("sweepFindingsScroll"));
+    m_findingsScroll->setWidgetResizable(true);
+    m_findingsScroll->setFrameShape(QFrame::NoFrame);
+    m_findingsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_findingsScroll->setWidget(m_findings);
+    m_findingsScroll->setMinimumHeight(160);
+    m_findingsScroll->hide();
+    sweepLayout->addWidget(m_chart, 3);
     sweepLayout->addWidget(m_sweepMessage);
+    sweepLayout->addWidget(m_findingsScroll, 2);
 
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(compareBox);
@@ -206,12 +238,25 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
     connect(m_comparison, &ExactComparison::finished, this, &AccuracyPanel::showResult);
     connect(m_comparison, &ExactComparison::failed, this, &AccuracyPanel::comparisonFailed);
     connect(m_overlay, &QCheckBox::toggled, m_overlayWidget, &QWidget::setVisible);
-    connect(load, &QPushButton::clicked, this, &AccuracyPanel::loadSweepDialog);
+    connect(m_loadSweep, &QPushButton::clicked, this, &AccuracyPanel::loadSweepDialog);
+    connect(m_runSweep, &QPushButton::clicked, this,
+            [this] { runSweep(m_sweepSize->currentData().toBool()); });
+    connect(m_cancelSweep, &QPushButton::clicked, this, &AccuracyPanel::cancelSweep);
+    connect(m_sweep, &SweepRunJob::progress, this, &AccuracyPanel::sweepProgress);
+    connect(m_sweep, &SweepRunJob::recordsChanged, this,
+            [this](const std::vector<accuracy::Record>& records) {
+                accuracy::ResultsFile partial;
+                partial.records = records;
+                m_chart->setResults(partial);
+            });
+    connect(m_sweep, &SweepRunJob::finished, this, &AccuracyPanel::sweepFinished);
+    connect(m_sweep, &SweepRunJob::failed, this, &AccuracyPanel::sweepFailed);
     connect(m_chart, &SweepChart::recordChosen, this, &AccuracyPanel::applyRecord);
     connect(&m_scene, &document::Scene::changed, this, [this] {
         if (m_last && !m_comparison->running()) {
             m_status->setText(tr("The scene changed since these numbers: compare again."));
         }
+        m_sceneChangedDuringSweep = m_sceneChangedDuringSweep || m_sweep->running();
     });
 }
 
@@ -278,15 +323,23 @@ render::Status AccuracyPanel::loadSweepFile(const QString& path) {
         m_sweepMessage->setText(QString::fromStdString(error));
         return render::Error{error};
     }
+    if (m_sweep->running()) {
+        const std::string error = "a sweep is running: cancel it first";
+        m_sweepMessage->setText(QString::fromStdString(error));
+        return render::Error{error};
+    }
     auto results = document::loadSweepResults(path);
     if (!results) {
         m_sweepMessage->setText(QString::fromStdString(results.error()));
         return render::Error{results.error()};
     }
     m_chart->setResults(*results);
+    m_findingsScroll->hide();
+    m_findings->clear();
     m_sweepMessage->setText(tr("%1 configurations of %2 at %3 (%4). Click a point to apply its settings.")
                                 .arg(results->records.size())
-                                .arg(results->scene, results->size, QFileInfo(path).fileName()));
+                                .arg(QString::fromStdString(results->run.scene),
+                                     QString::fromStdString(results->size()), QFileInfo(path).fileName()));
     return render::Done{};
 }
 
@@ -303,25 +356,34 @@ QString AccuracyPanel::applyRecord(int index) {
     if (index < 0 || std::size_t(index) >= records.size()) {
         return {};
     }
+    if (m_sweep->running()) {
+        // The document does not change while a sweep measures it.
+        const QString busy = tr("A sweep is running: its points apply once it is done.");
+        m_sweepMessage->setText(busy);
+        return busy;
+    }
     const auto& record = records[std::size_t(index)];
     std::optional<document::ReflectorParallax> proxy;
     if (m_last) {
-        proxy = derivedProxy(m_last->input);
+        proxy = document::sweepParallaxProxy(m_last->input);
     } else {
         std::vector<std::string> ignored;
-        proxy = derivedProxy(document::snapshot(m_scene, m_clock.time(), m_viewport.meshes(), ignored));
+        proxy = document::sweepParallaxProxy(
+            document::snapshot(m_scene, m_clock.time(), m_viewport.meshes(), ignored));
     }
-    const QString text = tr("Apply Sweep Setting %1 %2").arg(record.family, record.label);
+    const QString family = QString::fromStdString(accuracy::familyName(record.config.family));
+    const QString label = QString::fromStdString(record.config.label);
+    const QString text = tr("Apply Sweep Setting %1 %2").arg(family, label);
     auto application = document::applySweepSettings(m_scene, record.settings, text, proxy);
     QString summary;
     if (application.command) {
         m_undoStack.push(application.command.release());
         summary = tr("Applied %1 %2 (%3 ms, PSNR %4 dB).")
-                      .arg(record.family, record.label)
-                      .arg(record.ms(), 0, 'f', 2)
+                      .arg(family, label)
+                      .arg(accuracy::frameMs(record), 0, 'f', 2)
                       .arg(record.psnr, 0, 'f', 2);
     } else {
-        summary = tr("%1 %2: the document already has these settings.").arg(record.family, record.label);
+        summary = tr("%1 %2: the document already has these settings.").arg(family, label);
     }
     if (!application.skipped.isEmpty()) {
         summary +=
@@ -331,6 +393,96 @@ QString AccuracyPanel::applyRecord(int index) {
     m_sweepMessage->setText(summary);
     emit message(summary);
     return summary;
+}
+
+bool AccuracyPanel::sweeping() const {
+    return m_sweep->running();
+}
+
+QString AccuracyPanel::findingsText() const {
+    return m_findings->text();
+}
+
+void AccuracyPanel::setSweeping(bool sweeping) {
+    m_runSweep->setEnabled(!sweeping);
+    m_sweepSize->setEnabled(!sweeping);
+    m_loadSweep->setEnabled(!sweeping);
+    m_cancelSweep->setEnabled(sweeping);
+    m_sweepProgress->setVisible(sweeping);
+    m_sweepStatus->setVisible(sweeping);
+    if (sweeping) {
+        m_sweepProgress->setRange(0, 0); // busy until the first step is counted
+        m_findingsScroll->hide();
+    }
+}
+
+void AccuracyPanel::runSweep(bool quick) {
+    if (m_sweep->running()) {
+        return;
+    }
+    std::vector<std::string> warnings;
+    const QString name =
+        m_scene.projectPath().isEmpty() ? tr("untitled") : QFileInfo(m_scene.projectPath()).fileName();
+    accuracy::SweepInput input = SweepRunJob::inputFor(m_scene, m_viewport.meshes(), name, quick, warnings);
+    for (const std::string& w : warnings) {
+        emit message(tr("Sweep: %1").arg(QString::fromStdString(w)));
+    }
+    m_chartBefore = m_chart->results();
+    m_sceneChangedDuringSweep = false;
+    m_chart->setResults({});
+    m_sweepStatus->setText(tr("Starting the sweep…"));
+    setSweeping(true);
+    const accuracy::SweepSize size = accuracy::defaultSweepSize(quick);
+    m_sweepMessage->setText(tr("Sweeping %1 at %2×%3: the scene's camera at t = 0, as `speculum bench` "
+                               "measures it. Times are of one frame until the timing rounds are done.")
+                                .arg(name)
+                                .arg(size.width)
+                                .arg(size.height));
+    if (!m_sweep->start(std::move(input))) {
+        setSweeping(false);
+    }
+}
+
+void AccuracyPanel::cancelSweep() {
+    m_sweep->cancel();
+    m_sweepStatus->setText(tr("Cancelling…"));
+}
+
+void AccuracyPanel::sweepProgress(int done, int total, const QString& line) {
+    m_sweepProgress->setRange(0, std::max(1, total));
+    m_sweepProgress->setValue(std::min(done, total));
+    m_sweepStatus->setText(line);
+}
+
+void AccuracyPanel::sweepFinished(const accuracy::ResultsFile& results) {
+    setSweeping(false);
+    m_chartBefore.reset();
+    m_chart->setResults(results);
+    const QString findings = findingsMarkdown(accuracy::findings(results.records));
+    m_findings->setText(findings.isEmpty() ? tr("The scene has nothing to sweep: no curved reflector, no "
+                                                "planar mirror, no shadowed light and no built-in teapot.")
+                                           : findings);
+    m_findingsScroll->show();
+    QString text =
+        tr("%1 configurations of %2 at %3. Click a point to apply its settings.")
+            .arg(results.records.size())
+            .arg(QString::fromStdString(results.run.sceneName), QString::fromStdString(results.size()));
+    if (m_sceneChangedDuringSweep) {
+        text += QLatin1Char(' ') + tr("The scene changed during the sweep: these figures are of the scene as "
+                                      "it was when the sweep started.");
+    }
+    m_sweepMessage->setText(text);
+    emit message(tr("Sweep done: %1 configurations").arg(results.records.size()));
+}
+
+void AccuracyPanel::sweepFailed(const QString& text, bool cancelled) {
+    setSweeping(false);
+    // Nothing half-done stays: the chart shows what it showed before the sweep.
+    m_chart->setResults(m_chartBefore.value_or(accuracy::ResultsFile{}));
+    m_chartBefore.reset();
+    m_sweepMessage->setText(cancelled ? tr("Sweep cancelled; nothing changed.")
+                                      : tr("The sweep failed: %1").arg(text));
+    emit message(m_sweepMessage->text());
 }
 
 } // namespace speculum::ui

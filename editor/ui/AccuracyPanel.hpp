@@ -1,5 +1,6 @@
 #pragma once
 
+#include "accuracy/Results.hpp"
 #include "editor/ui/ExactComparison.hpp"
 #include "render/Result.hpp"
 
@@ -7,8 +8,10 @@
 #include <optional>
 
 class QCheckBox;
+class QComboBox;
 class QLabel;
 class QProgressBar;
+class QScrollArea;
 class QPushButton;
 class QSpinBox;
 class QUndoStack;
@@ -17,22 +20,29 @@ namespace speculum::document {
 class Scene;
 }
 
+namespace speculum::view {
+class AnimationClock;
+}
+
 namespace speculum::ui {
 
-class AnimationClock;
 class ErrorMapOverlay;
 class SweepChart;
+class SweepRunJob;
 class Viewport;
 
 // The Accuracy dock: "Compare with exact" measures the current view's raster frame against the exact tracer
-// (numbers, error map, optionally over the viewport), and the chart of a bench run (results.json) applies
-// a configuration's settings to the document, as one undoable step, when a point is clicked.
+// (numbers, error map, optionally over the viewport). "Run sweep…" runs the bench's sweep on the document's
+// scene in-process (accuracy::runSweep on a worker thread, with progress and cancel), filling the chart as
+// points arrive and showing the report's findings when done; "Load sweep…" charts a results.json that
+// `speculum bench` wrote. Clicking a point applies that configuration's settings to the document, as one
+// undoable step.
 class AccuracyPanel : public QWidget {
     Q_OBJECT
 
 public:
-    AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, Viewport& viewport, AnimationClock& clock,
-                  QWidget* parent = nullptr);
+    AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, Viewport& viewport,
+                  view::AnimationClock& clock, QWidget* parent = nullptr);
 
     const std::optional<ComparisonResult>& lastComparison() const { return m_last; }
     bool comparing() const { return m_comparison->running(); }
@@ -40,6 +50,9 @@ public:
     // Loads a bench results.json into the chart; the error names the file and the problem.
     render::Status loadSweepFile(const QString& path);
     SweepChart& chart() { return *m_chart; }
+    bool sweeping() const;
+    // The findings of the last finished sweep, as shown (Markdown); empty before one finished.
+    QString findingsText() const;
 
 public slots:
     void compareWithExact();
@@ -47,6 +60,9 @@ public slots:
     // Applies the settings of results record `index` (what clicking its point does). Returns the message
     // shown under the chart.
     QString applyRecord(int index);
+    // Runs the bench's sweep on the document's scene at the bench's quick or full size.
+    void runSweep(bool quick = true);
+    void cancelSweep();
 
 signals:
     void message(const QString& text); // for the status bar and the log
@@ -56,11 +72,15 @@ private:
     void comparisonFailed(const QString& text, bool cancelled);
     void setBusy(bool busy);
     void loadSweepDialog();
+    void setSweeping(bool sweeping);
+    void sweepProgress(int done, int total, const QString& line);
+    void sweepFinished(const accuracy::ResultsFile& results);
+    void sweepFailed(const QString& text, bool cancelled);
 
     document::Scene& m_scene;
     QUndoStack& m_undoStack;
     Viewport& m_viewport;
-    AnimationClock& m_clock;
+    view::AnimationClock& m_clock;
     ExactComparison* m_comparison = nullptr;
     std::optional<ComparisonResult> m_last;
 
@@ -80,6 +100,19 @@ private:
     ErrorMapOverlay* m_overlayWidget = nullptr;
     SweepChart* m_chart = nullptr;
     QLabel* m_sweepMessage = nullptr;
+
+    SweepRunJob* m_sweep = nullptr;
+    QPushButton* m_runSweep = nullptr;
+    QPushButton* m_cancelSweep = nullptr;
+    QPushButton* m_loadSweep = nullptr;
+    QComboBox* m_sweepSize = nullptr;
+    QProgressBar* m_sweepProgress = nullptr;
+    QLabel* m_sweepStatus = nullptr;
+    QLabel* m_findings = nullptr;
+    QScrollArea* m_findingsScroll = nullptr;
+    // What the chart showed before the running sweep: shown again if it is cancelled or fails.
+    std::optional<accuracy::ResultsFile> m_chartBefore;
+    bool m_sceneChangedDuringSweep = false;
 };
 
 } // namespace speculum::ui

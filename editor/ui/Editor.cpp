@@ -1,8 +1,8 @@
 #include "editor/ui/Editor.hpp"
 
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Screenshot.hpp"
+#include "editor/view/AnimationClock.hpp"
 
 #include <QApplication>
 #include <QMessageBox>

@@ -1,11 +1,10 @@
 #include "editor/ui/ExactComparison.hpp"
 
+#include "accuracy/Measure.hpp"
 #include "editor/document/Snapshot.hpp"
 #include "editor/ui/Viewport.hpp"
-#include "render/StillRenderer.hpp"
 #include "render/image/ColorSpace.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
-#include "render/reference/Tracer.hpp"
 
 #include <QTimer>
 #include <algorithm>
@@ -78,19 +77,15 @@ bool ExactComparison::start(int width, double time) {
     // The raster frame: the second of two, so shader compilation and first-use costs are not timed; every
     // map is rendered again (as the bench times them), not reused from the viewport's last frame.
     m_viewport.makeCurrent();
-    render::StillSettings still{w, h, 1};
-    still.reuseMaps = false;
-    auto first = render::renderStill(*m_viewport.renderer(), result->input, still);
-    auto raster =
-        first ? render::renderStill(*m_viewport.renderer(), result->input, still) : std::move(first);
+    auto raster = accuracy::measureFrames(*m_viewport.renderer(), result->input, w, h, 1, 1);
     m_viewport.doneCurrent();
     m_viewport.update();
     if (!raster) {
         emit failed(QString::fromStdString(raster.error()), false);
         return false;
     }
-    result->rasterCpuMs = raster->firstSample.cpuMs;
-    result->rasterGpuMs = raster->firstSample.gpuMs;
+    result->rasterCpuMs = raster->cpuMs;
+    result->rasterGpuMs = raster->gpuMs;
     for (const auto& text : warnings) {
         result->warnings << QString::fromStdString(text);
     }
@@ -101,49 +96,38 @@ bool ExactComparison::start(int width, double time) {
     m_error.clear();
     m_cancelled = false;
     m_result.reset();
-    // The tracer is thread-safe and needs no GL; the worker owns copies of everything it reads.
+    // The tracer is thread-safe and needs no GL; the worker owns copies of everything it reads. The bench's
+    // scene reference: shadows traced with each light's PCF footprint.
     m_thread = std::thread([this, result = std::move(result), image = std::move(raster->image)]() mutable {
-        auto tracer = render::reference::Tracer::create(result->input);
-        if (!tracer) {
-            m_error = QString::fromStdString(tracer.error());
-            m_done = true;
-            return;
-        }
-        render::reference::TraceSettings settings;
-        settings.width = result->width;
-        settings.height = result->height;
-        settings.shadows = render::reference::ShadowMode::PcfFootprint;
-        auto traced = tracer->render(settings, [this](double fraction) {
-            m_fraction = fraction;
-            return !m_cancel.load();
-        });
-        if (!traced) {
+        auto reference = accuracy::traceReference(result->input, accuracy::ReferenceKind::Scene,
+                                                  result->width, result->height, [this](double fraction) {
+                                                      m_fraction = fraction;
+                                                      return !m_cancel.load();
+                                                  });
+        if (!reference) {
             m_cancelled = m_cancel;
-            m_error = QString::fromStdString(traced.error());
+            m_error = QString::fromStdString(reference.error());
             m_done = true;
             return;
         }
-        result->traceMs = traced->totalMs;
-        for (const auto& text : traced->warnings) {
+        result->traceMs = reference->traced.totalMs;
+        for (const auto& text : reference->traced.warnings) {
             result->warnings << QString::fromStdString(text);
         }
-        namespace metrics = render::metrics;
-        auto overall = metrics::compare(image, traced->image);
-        auto difference = metrics::absoluteDifference(image, traced->image);
-        if (!overall || !difference) {
-            m_error = QString::fromStdString(!overall ? overall.error() : difference.error());
+        auto errors = accuracy::compareWithReference(image, *reference);
+        if (!errors) {
+            m_error = QString::fromStdString(errors.error());
             m_done = true;
             return;
         }
-        result->rmse = overall->rmse;
-        result->psnr = overall->psnr;
-        auto masked = [&](const std::vector<std::uint8_t>& mask) -> std::optional<double> {
-            auto stats = metrics::compare(image, traced->image, &mask);
-            return stats && stats->pixels > 0 ? std::optional<double>(stats->psnr) : std::nullopt;
+        result->rmse = errors->overall.rmse;
+        result->psnr = errors->overall.psnr;
+        auto psnrOf = [](const std::optional<render::metrics::ErrorStats>& stats) {
+            return stats ? std::optional<double>(stats->psnr) : std::nullopt;
         };
-        result->psnrMirrors = masked(render::reference::mirrorMask(traced->ids));
-        result->psnrReflector = masked(render::reference::reflectorMask(traced->ids));
-        result->errorMap = toQImage(metrics::errorColorMap(*difference));
+        result->psnrMirrors = psnrOf(errors->mirrors);
+        result->psnrReflector = psnrOf(errors->reflector);
+        result->errorMap = toQImage(render::metrics::errorColorMap(errors->difference));
         m_result = std::move(result);
         m_done = true;
     });

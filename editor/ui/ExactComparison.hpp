@@ -37,9 +37,10 @@ struct ComparisonResult {
 
 // Renders the current view with the rasterizer (on the viewport's context, synchronously: a small frame
 // takes milliseconds) and with the exact tracer on a worker thread (seconds on llvmpipe machines), then
-// measures the raster frame's error against the exact one as `speculum bench` does: sRGB RMSE and PSNR
-// overall and on the pixels showing mirrors and the reflector, shadows traced with each light's PCF
-// footprint (the bench's scene reference) so that PCF does not count as error here.
+// measures the raster frame's error against the exact one with the bench's own functions
+// (accuracy::measureFrames, traceReference, compareWithReference): sRGB RMSE and PSNR overall and on the
+// pixels showing mirrors and the reflector, against the bench's scene reference (shadows traced with each
+// light's PCF footprint, so that PCF does not count as error here).
 class ExactComparison : public QObject {
     Q_OBJECT
 

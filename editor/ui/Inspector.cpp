@@ -4,7 +4,7 @@
 #include "editor/document/NodeFactory.hpp"
 #include "editor/ui/Icons.hpp"
 #include "editor/ui/PropertyEditors.hpp"
-#include "editor/ui/Selection.hpp"
+#include "editor/view/Selection.hpp"
 
 #include <QFormLayout>
 #include <QGroupBox>
@@ -29,7 +29,8 @@ QString quoted(const std::string& name) {
 
 } // namespace
 
-Inspector::Inspector(document::Scene& scene, QUndoStack& undoStack, Selection& selection, QWidget* parent)
+Inspector::Inspector(document::Scene& scene, QUndoStack& undoStack, view::Selection& selection,
+                     QWidget* parent)
     : QWidget(parent)
     , m_scene(scene)
     , m_undoStack(undoStack)
@@ -57,7 +58,7 @@ Inspector::Inspector(document::Scene& scene, QUndoStack& undoStack, Selection& s
     m_scroll->setFrameShape(QFrame::NoFrame);
     layout->addWidget(m_scroll, 1);
 
-    connect(&selection, &Selection::changed, this, [this] {
+    connect(&selection, &view::Selection::changed, this, [this] {
         clearError();
         rebuild();
     });
@@ -255,7 +256,7 @@ void Inspector::changeComponent(const QString& key, bool add) {
     clearError();
     const QString text = add ? tr("Add %1 to %2").arg(c->title, quoted(node->name()))
                              : tr("Remove %1 from %2").arg(c->title, quoted(node->name()));
-    m_undoStack.push(new document::SetNodeDataCommand(m_scene, node->id(), data, text));
+    document::pushEdit(m_undoStack, new document::SetNodeDataCommand(m_scene, node->id(), data, text));
 }
 
 render::Status Inspector::applyValue(const QString& key, const QVariant& value) {
@@ -292,7 +293,8 @@ render::Status Inspector::commitNode(const QString& key, const QVariant& value) 
                              ? tr("Rename %1 to %2").arg(quoted(node->name()), quoted(data.name))
                              : tr("Change %1 of %2").arg(p->info.label, quoted(node->name()));
     m_committing = true;
-    m_undoStack.push(new document::SetNodeDataCommand(m_scene, node->id(), data, text, mergeKey(key)));
+    document::pushEdit(m_undoStack,
+                       new document::SetNodeDataCommand(m_scene, node->id(), data, text, mergeKey(key)));
     m_committing = false;
     return render::Done{};
 }
@@ -313,7 +315,7 @@ render::Status Inspector::commitSettings(const QString& key, const QVariant& val
     command->setText(tr("Change %1").arg(p->info.label));
     command->setMergeKey(mergeKey(key));
     m_committing = true;
-    m_undoStack.push(command);
+    document::pushEdit(m_undoStack, command);
     m_committing = false;
     return render::Done{};
 }
@@ -334,7 +336,7 @@ render::Status Inspector::commitCamera(const QString& key, const QVariant& value
     command->setText(tr("Change camera %1").arg(p->info.label.toLower()));
     command->setMergeKey(mergeKey(key));
     m_committing = true;
-    m_undoStack.push(command);
+    document::pushEdit(m_undoStack, command);
     m_committing = false;
     return render::Done{};
 }

@@ -11,10 +11,13 @@ class QScrollArea;
 class QUndoStack;
 class QVBoxLayout;
 
+namespace speculum::view {
+class Selection;
+}
+
 namespace speculum::ui {
 
 class PropertyEditor;
-class Selection;
 
 // The Properties dock. Its editors are generated from the property descriptions (document/Properties.hpp)
 // of the selected node's components; with nothing selected it shows the scene settings and the camera,
@@ -25,7 +28,8 @@ class Inspector : public QWidget {
     Q_OBJECT
 
 public:
-    Inspector(document::Scene& scene, QUndoStack& undoStack, Selection& selection, QWidget* parent = nullptr);
+    Inspector(document::Scene& scene, QUndoStack& undoStack, view::Selection& selection,
+              QWidget* parent = nullptr);
 
     // The editor of a property key ("mirror.reflectivity"), if shown.
     PropertyEditor* editor(const QString& key) const { return m_editors.value(key); }
@@ -56,7 +60,7 @@ private:
 
     document::Scene& m_scene;
     QUndoStack& m_undoStack;
-    Selection& m_selection;
+    view::Selection& m_selection;
     QLabel* m_header = nullptr;
     QLabel* m_error = nullptr;
     QScrollArea* m_scroll = nullptr;

@@ -1,16 +1,15 @@
 #include "editor/ui/MainWindow.hpp"
 
 #include "editor/document/ModelFormats.hpp"
-#include "editor/document/ProjectFile.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/RenderPassesPanel.hpp"
 #include "editor/ui/SceneTreeModel.hpp"
 #include "editor/ui/SceneTreePanel.hpp"
-#include "editor/ui/Selection.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "editor/view/AnimationClock.hpp"
+#include "editor/view/Selection.hpp"
 #include "render/io/FileKind.hpp"
 #include "render/io/Printable.hpp"
 
@@ -70,13 +69,12 @@ QString shown(const QString& text, std::size_t maxChars) {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
-    , m_scene(new document::Scene(this))
-    , m_undoStack(new QUndoStack(this))
-    , m_clock(new AnimationClock(this))
+    , m_session(new document::DocumentSession(this))
+    , m_clock(new view::AnimationClock(this))
     , m_recovery(std::make_unique<document::RecoveryStore>(document::RecoveryStore::forThisProcess())) {
-    m_selection = new Selection(*m_scene, this);
-    m_viewport = new Viewport(*m_scene, *m_clock, this);
-    m_viewport->setEditing(m_selection, m_undoStack);
+    m_selection = new view::Selection(scene(), this);
+    m_viewport = new Viewport(scene(), m_session->meshes(), *m_clock, this);
+    m_viewport->setEditing(m_selection, &undoStack());
     setCentralWidget(m_viewport);
     setAcceptDrops(true);
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks |
@@ -86,9 +84,9 @@ MainWindow::MainWindow(QWidget* parent)
     createDocks();
     createStatusBar();
 
-    connect(m_undoStack, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-    connect(m_scene, &document::Scene::projectPathChanged, this, &MainWindow::updateTitle);
-    connect(m_selection, &Selection::changed, this, &MainWindow::updateEditActions);
+    connect(&undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(&scene(), &document::Scene::projectPathChanged, this, &MainWindow::updateTitle);
+    connect(m_selection, &view::Selection::changed, this, &MainWindow::updateEditActions);
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::onFrameRendered);
     connect(m_viewport, &Viewport::warningsChanged, this, &MainWindow::onWarningsChanged);
     connect(m_viewport, &Viewport::rendererFailed, this, &MainWindow::logMessage);
@@ -113,7 +111,7 @@ QAction* MainWindow::action(const QString& objectName) const {
 }
 
 bool MainWindow::isModified() const {
-    return !m_undoStack->isClean() || m_restoredUnsaved;
+    return m_session->isModified();
 }
 
 // ---- document operations without dialogs ----
@@ -126,18 +124,15 @@ render::Status MainWindow::openProjectFile(const QString& path) {
     // reader checks the opened descriptor again.
     render::Status status = render::requireRegularFile(absolute.toStdString());
     if (status) {
-        status = document::openProject(*m_scene, absolute, warnings);
+        status = m_session->open(absolute, warnings);
     }
     if (!status) {
         logMessage(tr("Could not open %1: %2")
                        .arg(shown(absolute, kShownPathChars), QString::fromStdString(status.error())));
         return status;
     }
-    // The old document's commands refer to nodes that no longer exist; so would a running import's result.
+    // A running import's result was meant for the old document.
     cancelImports();
-    m_undoStack->clear();
-    m_undoStack->setClean();
-    m_restoredUnsaved = false;
     m_recovery->discard();
     for (const auto& w : warnings) {
         logMessage(QString::fromStdString(w));
@@ -152,14 +147,11 @@ render::Status MainWindow::openProjectFile(const QString& path) {
 
 render::Status MainWindow::saveProjectFile(const QString& path) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
-    render::Status status = document::saveProject(*m_scene, absolute);
+    render::Status status = m_session->save(absolute);
     if (!status) {
         logMessage(tr("Could not save %1: %2").arg(absolute, QString::fromStdString(status.error())));
         return status;
     }
-    m_scene->setProjectPath(absolute);
-    m_undoStack->setClean();
-    m_restoredUnsaved = false;
     m_recovery->discard(); // saved: nothing left to recover
     QSettings().setValue(kLastFolderKey, QFileInfo(absolute).absolutePath());
     addRecentFile(absolute);
@@ -170,11 +162,7 @@ render::Status MainWindow::saveProjectFile(const QString& path) {
 
 void MainWindow::newProject() {
     cancelImports(); // what they bring was meant for the old document
-    m_scene->reset(document::SceneData{});
-    m_scene->setProjectPath(QString());
-    m_undoStack->clear();
-    m_undoStack->setClean();
-    m_restoredUnsaved = false;
+    m_session->replace(document::SceneData{}, QString());
     m_recovery->discard();
     m_clock->setTime(0.0);
     updateTitle();
@@ -198,7 +186,7 @@ render::Status MainWindow::autosaveNow() {
     if (!isModified()) {
         return render::Done{};
     }
-    render::Status status = m_recovery->write(m_scene->toData(), m_scene->projectPath());
+    render::Status status = m_recovery->write(scene().toData(), scene().projectPath());
     if (!status) {
         logMessage(tr("Autosave failed: %1").arg(QString::fromStdString(status.error())));
     }
@@ -212,11 +200,7 @@ render::Status MainWindow::restoreRecovery(const document::RecoveryStore::Recove
         return render::Error{data.error()};
     }
     cancelImports();
-    m_scene->reset(std::move(*data));
-    m_scene->setProjectPath(recovered.originalPath);
-    m_undoStack->clear();
-    m_undoStack->setClean();
-    m_restoredUnsaved = true;
+    m_session->replace(std::move(*data), recovered.originalPath, true); // modified until saved
     document::RecoveryStore::remove(recovered);
     autosaveNow(); // this session now owns the unsaved document
     logMessage(
@@ -382,8 +366,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 QString MainWindow::dialogFolder() const {
-    if (!m_scene->projectPath().isEmpty()) {
-        return QFileInfo(m_scene->projectPath()).absolutePath();
+    if (!scene().projectPath().isEmpty()) {
+        return QFileInfo(scene().projectPath()).absolutePath();
     }
     const QString last = QSettings().value(kLastFolderKey).toString();
     return last.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) : last;
@@ -391,7 +375,7 @@ QString MainWindow::dialogFolder() const {
 
 void MainWindow::updateTitle() {
     const QString name =
-        m_scene->projectPath().isEmpty() ? tr("Untitled") : QFileInfo(m_scene->projectPath()).fileName();
+        scene().projectPath().isEmpty() ? tr("Untitled") : QFileInfo(scene().projectPath()).fileName();
     // "[*]" is where Qt shows the modified marker.
     setWindowTitle(tr("%1[*] — speculum").arg(name));
     setWindowModified(isModified());
@@ -436,7 +420,7 @@ void MainWindow::createStatusBar() {
 }
 
 void MainWindow::createDocks() {
-    m_treeModel = new SceneTreeModel(*m_scene, *m_undoStack, this);
+    m_treeModel = new SceneTreeModel(scene(), undoStack(), this);
     m_treePanel = new SceneTreePanel(*m_treeModel, *m_selection, this);
     auto* treeDock = new QDockWidget(tr("Scene"), this);
     treeDock->setObjectName(QStringLiteral("sceneDock"));
@@ -448,7 +432,7 @@ void MainWindow::createDocks() {
     // Ctrl+A in the tree selects the nodes (the view on its own would select the camera row too).
     m_treePanel->addAction(action(QStringLiteral("actionSelectAll")));
 
-    m_inspector = new Inspector(*m_scene, *m_undoStack, *m_selection, this);
+    m_inspector = new Inspector(scene(), undoStack(), *m_selection, this);
     auto* inspectorDock = new QDockWidget(tr("Properties"), this);
     inspectorDock->setObjectName(QStringLiteral("inspectorDock"));
     inspectorDock->setWidget(m_inspector);
@@ -462,7 +446,7 @@ void MainWindow::createDocks() {
     splitDockWidget(treeDock, passesDock, Qt::Vertical);
 
     // Hidden at first: it is for the moments a user asks what an approximation costs, not for editing.
-    m_accuracyPanel = new AccuracyPanel(*m_scene, *m_undoStack, *m_viewport, *m_clock, this);
+    m_accuracyPanel = new AccuracyPanel(scene(), undoStack(), *m_viewport, *m_clock, this);
     auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
     accuracyDock->setObjectName(QStringLiteral("accuracyDock"));
     accuracyDock->setWidget(m_accuracyPanel);

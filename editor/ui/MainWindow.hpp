@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editor/document/DocumentSession.hpp"
 #include "editor/document/NodeFactory.hpp"
 #include "editor/document/Recovery.hpp"
 #include "editor/document/StillExport.hpp"
@@ -23,23 +24,22 @@ class QProgressBar;
 class QToolButton;
 class QUndoStack;
 
-namespace speculum::document {
-class Scene;
-}
 namespace speculum::render {
 struct FrameReport;
 }
+namespace speculum::view {
+class AnimationClock;
+class Selection;
+} // namespace speculum::view
 
 namespace speculum::ui {
 
 class AccuracyPanel;
-class AnimationClock;
 class Inspector;
 class ModelImportJob;
 class RenderPassesPanel;
 class SceneTreeModel;
 class SceneTreePanel;
-class Selection;
 class Viewport;
 
 // A path, file name or value from the user or a file, made safe for a one-line message: control
@@ -47,12 +47,14 @@ class Viewport;
 QString shown(const QString& text, std::size_t maxChars = 80);
 constexpr std::size_t kShownPathChars = 1024;
 
-// The editor's top-level window: owns the open document (Scene + its undo stack), the selection, the
-// animation clock and the viewport, with the Scene, Properties, Render passes, Accuracy and Log docks around
-// it and the File/Edit/Add/View/Help menus.
+// The editor's top-level window: holds the open document (a DocumentSession: the scene, its undo stack and
+// its mesh library), the selection, the animation clock and the viewport, with the Scene, Properties,
+// Render passes, Accuracy and Log docks around it and the File/Edit/Add/View/Help menus.
 //
-// Operations come in two layers: the public functions below do the work and return a Status without any
-// dialog (for tests and scripted use); the menu actions add file dialogs, prompts and error boxes.
+// Operations come in two layers: the public functions below return a Status without any dialog (for tests
+// and scripted use), and change the document only through the document layer's operations
+// (document/EditOperations.hpp, DocumentSession); the menu actions add file dialogs, prompts and error
+// boxes.
 // Every menu action has an objectName ("actionSave", "addMirror", ...) so tests can trigger it.
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -61,11 +63,13 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    document::Scene& scene() { return *m_scene; }
-    QUndoStack& undoStack() { return *m_undoStack; }
+    document::DocumentSession& session() { return *m_session; }
+    document::Scene& scene() { return m_session->scene(); }
+    const document::Scene& scene() const { return m_session->scene(); }
+    QUndoStack& undoStack() { return m_session->undoStack(); }
     Viewport& viewport() { return *m_viewport; }
-    AnimationClock& clock() { return *m_clock; }
-    Selection& selection() { return *m_selection; }
+    view::AnimationClock& clock() { return *m_clock; }
+    view::Selection& selection() { return *m_selection; }
     Inspector& inspector() { return *m_inspector; }
     SceneTreePanel& sceneTree() { return *m_treePanel; }
     SceneTreeModel& sceneTreeModel() { return *m_treeModel; }
@@ -167,8 +171,6 @@ private slots:
     void onWarningsChanged(const QStringList& warnings);
 
 private:
-    // The selected nodes without those under another selected node, in selection order.
-    std::vector<document::NodeId> selectedRoots() const;
     void createActions();
     void createAddMenu();
     void createStatusBar();
@@ -186,10 +188,9 @@ private:
     QAction* makeAction(QMenu* menu, const QString& name, const QString& text,
                         const QKeySequence& shortcut = {});
 
-    document::Scene* m_scene = nullptr;
-    QUndoStack* m_undoStack = nullptr;
-    AnimationClock* m_clock = nullptr;
-    Selection* m_selection = nullptr;
+    document::DocumentSession* m_session = nullptr; // QObject child
+    view::AnimationClock* m_clock = nullptr;
+    view::Selection* m_selection = nullptr;
     Viewport* m_viewport = nullptr;
     SceneTreeModel* m_treeModel = nullptr;
     SceneTreePanel* m_treePanel = nullptr;
@@ -198,7 +199,6 @@ private:
     AccuracyPanel* m_accuracyPanel = nullptr;
     std::unique_ptr<document::RecoveryStore> m_recovery;
     QTimer m_autosave;
-    bool m_restoredUnsaved = false; // a recovered document counts as modified until saved
 
     QMenu* m_viewMenu = nullptr;
     QMenu* m_addMenu = nullptr;

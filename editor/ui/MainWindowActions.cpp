@@ -1,17 +1,15 @@
-// MainWindow: menus and the edit operations behind them (add, import, delete, duplicate, export).
-#include "editor/document/Commands.hpp"
+// MainWindow: menus and what runs behind them (the edit operations of the document layer, export).
+#include "editor/document/EditOperations.hpp"
 #include "editor/document/GltfExport.hpp"
 #include "editor/document/ModelFormats.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/ProjectFile.hpp"
 #include "editor/document/Scene.hpp"
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/ExportStillDialog.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/SceneTreePanel.hpp"
-#include "editor/ui/Selection.hpp"
 #include "editor/ui/Viewport.hpp"
-#include "render/SceneLimits.hpp"
+#include "editor/view/AnimationClock.hpp"
+#include "editor/view/Selection.hpp"
 
 #include <QAction>
 #include <QActionGroup>
@@ -33,10 +31,6 @@ namespace {
 const QString kProjectSuffix = QStringLiteral(".speculum.json");
 const QString kProjectFilter = QObject::tr("speculum projects (*.speculum.json);;JSON files (*.json)");
 
-QString quoted(const std::string& name) {
-    return QStringLiteral("\u201c%1\u201d").arg(QString::fromStdString(name));
-}
-
 } // namespace
 
 QAction* MainWindow::makeAction(QMenu* menu, const QString& name, const QString& text,
@@ -55,14 +49,12 @@ QAction* MainWindow::makeAction(QMenu* menu, const QString& name, const QString&
 // ---- editing ----
 
 render::Status MainWindow::addTree(document::NodeTree tree) {
-    if (auto ok = document::canAdd(*m_scene, tree); !ok) {
-        statusBar()->showMessage(QString::fromStdString(ok.error()), 8000);
-        return ok;
+    auto added = document::addNodeTree(scene(), undoStack(), std::move(tree));
+    if (!added) {
+        statusBar()->showMessage(QString::fromStdString(added.error()), 8000);
+        return render::Error{added.error()};
     }
-    tree.data.name = document::uniqueName(*m_scene, tree.data.name);
-    auto* command = new document::AddNodeCommand(*m_scene, std::move(tree));
-    m_undoStack->push(command);
-    m_selection->selectNode(command->nodeId());
+    m_selection->selectNode(*added);
     return render::Done{};
 }
 
@@ -70,59 +62,18 @@ render::Status MainWindow::addNode(document::NewNodeKind kind) {
     return addTree(document::makeNode(kind, m_viewport->lookAtPoint()));
 }
 
-std::vector<document::NodeId> MainWindow::selectedRoots() const {
-    return m_selection->roots();
-}
-
 render::Status MainWindow::deleteSelected() {
-    const std::vector<document::NodeId> roots = selectedRoots();
-    if (roots.empty()) {
-        return render::Error{"nothing is selected"};
-    }
-    // Several nodes: one undo step.
-    if (roots.size() > 1) {
-        m_undoStack->beginMacro(tr("Delete %1 nodes").arg(roots.size()));
-    }
-    for (document::NodeId id : roots) {
-        m_undoStack->push(new document::RemoveNodeCommand(*m_scene, id));
-    }
-    if (roots.size() > 1) {
-        m_undoStack->endMacro();
-    }
-    return render::Done{};
+    return document::deleteNodes(scene(), undoStack(), m_selection->roots());
 }
 
 render::Status MainWindow::duplicateSelected() {
-    const std::vector<document::NodeId> roots = selectedRoots();
-    if (roots.empty()) {
-        return render::Error{"nothing is selected"};
+    auto duplicated =
+        document::duplicateNodes(scene(), undoStack(), m_selection->roots(), m_selection->node());
+    if (!duplicated) {
+        return render::Error{duplicated.error()};
     }
-    const document::NodeId current = m_selection->node();
-    if (roots.size() > 1) {
-        m_undoStack->beginMacro(tr("Duplicate %1 nodes").arg(roots.size()));
-    }
-    bool droppedReflector = false;
-    std::vector<document::NodeId> copies;
-    document::NodeId currentCopy = document::kNoNode;
-    for (document::NodeId id : roots) {
-        // One at a time: each copy's name is made unique against the copies made before it.
-        bool dropped = false;
-        document::NodeTree copy = document::duplicateTree(*m_scene, id, &dropped);
-        droppedReflector = droppedReflector || dropped;
-        auto* command = new document::AddNodeCommand(*m_scene, std::move(copy), m_scene->parentOf(id),
-                                                     m_scene->indexOf(id) + 1);
-        command->setText(tr("Duplicate %1").arg(quoted(m_scene->findNode(id)->name())));
-        m_undoStack->push(command);
-        copies.push_back(command->nodeId());
-        if (m_scene->isAncestor(id, current)) { // the current node or one under it
-            currentCopy = command->nodeId();
-        }
-    }
-    if (roots.size() > 1) {
-        m_undoStack->endMacro();
-    }
-    m_selection->setNodes(copies, currentCopy);
-    if (droppedReflector) {
+    m_selection->setNodes(duplicated->copies, duplicated->currentCopy);
+    if (duplicated->droppedReflector) {
         statusBar()->showMessage(tr("The copy is not a reflector: a scene has at most one."), 8000);
     }
     return render::Done{};
@@ -130,12 +81,12 @@ render::Status MainWindow::duplicateSelected() {
 
 void MainWindow::selectAll() {
     std::vector<document::NodeId> all;
-    m_scene->forEachNode([&](const document::Node& node) { all.push_back(node.id()); });
+    scene().forEachNode([&](const document::Node& node) { all.push_back(node.id()); });
     m_selection->setNodes(all, m_selection->node());
 }
 
 void MainWindow::updateEditActions() {
-    const bool hasNode = !selectedRoots().empty();
+    const bool hasNode = !m_selection->roots().empty();
     m_deleteAction->setEnabled(hasNode);
     m_duplicateAction->setEnabled(hasNode);
     m_renameAction->setEnabled(m_selection->selectedNode() != nullptr);
@@ -146,7 +97,7 @@ void MainWindow::updateEditActions() {
 render::Status MainWindow::exportGltfFile(const QString& path) {
     std::vector<std::string> warnings;
     m_viewport->waitForModels(); // read on workers: none may be missing from the file
-    auto status = document::exportGltf(*m_scene, path, m_viewport->meshes(), warnings);
+    auto status = document::exportGltf(scene(), path, m_viewport->meshes(), warnings);
     warnings = m_viewport->correctModelWarnings(std::move(warnings));
     for (const auto& w : warnings) {
         logMessage(QString::fromStdString(w));
@@ -181,7 +132,7 @@ MainWindow::exportStillFile(const QString& path, const document::StillExportSett
         m_viewport->makeCurrent();
         return goOn;
     };
-    auto result = document::exportStill(*m_viewport->renderer(), *m_scene, m_viewport->meshes(), settings,
+    auto result = document::exportStill(*m_viewport->renderer(), scene(), m_viewport->meshes(), settings,
                                         path, keepContext, "editor viewport context");
     m_viewport->doneCurrent();
     m_viewport->update();
@@ -230,10 +181,10 @@ void MainWindow::onOpen() {
 }
 
 bool MainWindow::onSave() {
-    if (m_scene->projectPath().isEmpty()) {
+    if (scene().projectPath().isEmpty()) {
         return onSaveAs();
     }
-    render::Status status = saveProjectFile(m_scene->projectPath());
+    render::Status status = saveProjectFile(scene().projectPath());
     if (!status) {
         QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
         return false;
@@ -242,7 +193,7 @@ bool MainWindow::onSave() {
 }
 
 bool MainWindow::onSaveAs() {
-    QString suggestion = m_scene->projectPath();
+    QString suggestion = scene().projectPath();
     if (suggestion.isEmpty()) {
         suggestion = dialogFolder() + QStringLiteral("/untitled") + kProjectSuffix;
     }
@@ -275,7 +226,7 @@ void MainWindow::onImportModel(bool asReflector) {
 }
 
 void MainWindow::onExportGltf() {
-    QString base = m_scene->projectPath();
+    QString base = scene().projectPath();
     base = base.isEmpty()
                ? dialogFolder() + QStringLiteral("/scene.gltf")
                : QFileInfo(base).absolutePath() + QLatin1Char('/') +
@@ -295,7 +246,7 @@ void MainWindow::onExportGltf() {
 }
 
 void MainWindow::onExportStill() {
-    QString base = m_scene->projectPath();
+    QString base = scene().projectPath();
     base = base.isEmpty()
                ? dialogFolder() + QStringLiteral("/render.png")
                : QFileInfo(base).absolutePath() + QLatin1Char('/') +
@@ -404,10 +355,10 @@ void MainWindow::createActions() {
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     // Undo/redo texts follow the command on top of the stack: "Undo Change Reflectivity of “Mirror”".
-    QAction* undo = m_undoStack->createUndoAction(this, tr("&Undo"));
+    QAction* undo = undoStack().createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("actionUndo"));
     undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = m_undoStack->createRedoAction(this, tr("&Redo"));
+    QAction* redo = undoStack().createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("actionRedo"));
     redo->setShortcut(QKeySequence::Redo);
     edit->addAction(undo);
@@ -427,7 +378,7 @@ void MainWindow::createActions() {
     connect(selectAll, &QAction::triggered, this, &MainWindow::selectAll);
     connect(makeAction(edit, QStringLiteral("actionSelectNone"), tr("Select &None"),
                        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A)),
-            &QAction::triggered, m_selection, &Selection::clear);
+            &QAction::triggered, m_selection, &view::Selection::clear);
     // Shortcuts of the window must work while the viewport (or any dock) has focus, but not steal keys
     // from text fields: Delete in the inspector's name field deletes characters, not the node.
     // Ctrl+A likewise: in a text field it selects the text.
@@ -445,8 +396,8 @@ void MainWindow::createActions() {
     m_playAction->setCheckable(true);
     // The viewport has focus most of the time; the shortcut must work from anywhere in the window.
     m_playAction->setShortcutContext(Qt::WindowShortcut);
-    connect(m_playAction, &QAction::toggled, m_clock, &AnimationClock::setPlaying);
-    connect(m_clock, &AnimationClock::playingChanged, m_playAction, &QAction::setChecked);
+    connect(m_playAction, &QAction::toggled, m_clock, &view::AnimationClock::setPlaying);
+    connect(m_clock, &view::AnimationClock::playingChanged, m_playAction, &QAction::setChecked);
     connect(
         makeAction(view, QStringLiteral("actionRewind"), tr("&Rewind Animation"), QKeySequence(Qt::Key_Home)),
         &QAction::triggered, m_clock, [this] { m_clock->setTime(0.0); });
@@ -464,17 +415,8 @@ void MainWindow::createActions() {
         tr("Navigation moves the scene camera (undoable) instead of a free editor camera"));
     connect(throughCamera, &QAction::toggled, m_viewport, &Viewport::setLookThroughSceneCamera);
     connect(makeAction(view, QStringLiteral("actionCameraFromView"), tr("Set Scene &Camera from View")),
-            &QAction::triggered, this, [this] {
-                document::CameraData camera = m_scene->camera();
-                const render::Camera& v = m_viewport->viewCamera();
-                camera.position = v.position;
-                camera.target = v.target;
-                camera.up = v.up;
-                camera.far = std::min(std::max(camera.far, v.far), camera.near * render::kMaxFarNearRatio);
-                auto* command = new document::SetCameraCommand(*m_scene, camera);
-                command->setText(tr("Set scene camera from view"));
-                m_undoStack->push(command);
-            });
+            &QAction::triggered, this,
+            [this] { document::setCameraFromView(scene(), undoStack(), m_viewport->viewCamera()); });
     view->addSeparator();
     auto* handles = new QActionGroup(this);
     const std::pair<HandleMode, std::pair<const char*, QString>> modes[] = {
@@ -492,7 +434,7 @@ void MainWindow::createActions() {
         a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         m_viewport->addAction(a);
         handles->addAction(a);
-        connect(a, &QAction::triggered, m_viewport, [this, mode] { m_viewport->setHandleMode(mode); });
+        connect(a, &QAction::triggered, m_viewport, [this, mode = mode] { m_viewport->setHandleMode(mode); });
     }
     m_viewMenu = view;
 

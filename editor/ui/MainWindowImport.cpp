@@ -1,13 +1,12 @@
-// MainWindow: model import on a worker thread (progress and Cancel in the status bar), placement of the
-// imported model, and adding it to the document as one undo step.
-#include "editor/document/MeshLibrary.hpp"
+// MainWindow: model import on a worker thread (progress and Cancel in the status bar); the document layer
+// places the imported model (placeImportedModel) and adds it as one undo step (addNodeTree).
+#include "editor/document/EditOperations.hpp"
 #include "editor/document/ModelImport.hpp"
-#include "editor/document/NodeFactory.hpp"
 #include "editor/document/Scene.hpp"
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/ModelImportJob.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "editor/view/AnimationClock.hpp"
 #include "render/io/FileKind.hpp"
 
 #include <QAction>
@@ -21,7 +20,6 @@
 #include <QStatusBar>
 #include <QToolButton>
 #include <algorithm>
-#include <cmath>
 
 namespace speculum::ui {
 
@@ -189,49 +187,29 @@ void MainWindow::onImportDone() {
     }
     document::ImportedModel& model = out.model.value();
 
-    // The nodes, and the box they fill in the coordinates of where they are added (the top level).
-    document::NodeTree tree;
-    // A reflector draws the whole file flattened, which fills the same box as the node tree.
-    render::math::Box box = render::math::worldBounds(model.bounds, glm::dmat4(1.0));
-    if (request.asReflector) {
-        tree = document::makeModelNode(request.path, glm::dvec3(0.0), true);
-    } else {
-        std::vector<std::string> treeWarnings;
-        tree =
-            document::modelNodeTree(model, request.path.toStdString(),
-                                    QFileInfo(request.path).completeBaseName().toStdString(), &treeWarnings);
-        for (const auto& w : treeWarnings) {
-            logMessage(tr("Import: %1").arg(QString::fromStdString(w)));
-        }
-        out.warnings.insert(out.warnings.end(), treeWarnings.begin(), treeWarnings.end());
+    document::ImportPlacement placement;
+    placement.asReflector = request.asReflector;
+    placement.fitToUnitBox = fitImportsToUnitBox();
+    placement.focus = m_viewport->lookAtPoint();
+    placement.timeSeconds = m_clock->time();
+    document::PlacedModel placed = document::placeImportedModel(scene(), m_viewport->meshes(), model,
+                                                                request.path.toStdString(), placement);
+    for (const auto& w : placed.warnings) {
+        logMessage(tr("Import: %1").arg(QString::fromStdString(w)));
     }
-    double fit = 1.0;
-    if (fitImportsToUnitBox()) {
-        const glm::dvec3 extent = box.max - box.min;
-        const double size = std::max({extent.x, extent.y, extent.z});
-        if (size > 0.0 && std::isfinite(size)) {
-            fit = 1.0 / size;
-            document::scaleAboutParentOrigin(tree.data, fit);
-            box.min *= fit;
-            box.max *= fit;
-        }
-    }
-    const glm::dvec3 offset =
-        document::placeOnGround(box, m_viewport->lookAtPoint(),
-                                document::occupiedBoxes(*m_scene, m_clock->time(), m_viewport->meshes()));
-    tree.data.transform.translate += offset;
+    out.warnings.insert(out.warnings.end(), placed.warnings.begin(), placed.warnings.end());
 
     std::size_t triangles = 0;
     for (const auto& part : model.parts) {
         triangles += part.mesh ? part.mesh->triangleCount() : 0;
     }
     const std::size_t parts = model.parts.size(), materials = model.materials.size();
-    // The viewport's mesh cache gets the model now, so its first frame does not read the file again (on
-    // the GUI thread).
+    // The document's mesh library gets the model now (through the viewport, which tracks the reads of its
+    // files), so the first frame does not read the file again (on the GUI thread).
     m_viewport->adoptModel(request.path.toStdString(),
                            std::make_shared<const document::ImportedModel>(std::move(model)));
 
-    if (auto added = addTree(std::move(tree)); !added) {
+    if (auto added = addTree(std::move(placed.tree)); !added) {
         logMessage(tr("Could not import %1: %2").arg(request.path, QString::fromStdString(added.error())));
         if (request.interactive) {
             QMessageBox::critical(this, tr("Import Model"), QString::fromStdString(added.error()));
@@ -239,7 +217,7 @@ void MainWindow::onImportDone() {
         finish(false, QString::fromStdString(added.error()));
         return;
     }
-    const glm::dvec3 size = (box.max - box.min);
+    const glm::dvec3 size = placed.size;
     logMessage(tr("Imported %1: %2 part(s), %3 material(s), %4 triangles, %5 × %6 × %7 units%8")
                    .arg(shown(request.path, kShownPathChars))
                    .arg(parts)
@@ -248,7 +226,7 @@ void MainWindow::onImportDone() {
                    .arg(size.x, 0, 'g', 3)
                    .arg(size.y, 0, 'g', 3)
                    .arg(size.z, 0, 'g', 3)
-                   .arg(fit != 1.0 ? tr(" (fitted to a unit box)") : QString()));
+                   .arg(placed.fit != 1.0 ? tr(" (fitted to a unit box)") : QString()));
     if (out.warnings.empty()) {
         statusBar()->showMessage(tr("Imported %1").arg(fileName), 5000);
     } else {

@@ -1,6 +1,6 @@
 #include "editor/ui/SceneTreeModel.hpp"
 
-#include "editor/document/Commands.hpp"
+#include "editor/document/EditOperations.hpp"
 #include "editor/ui/Icons.hpp"
 
 #include <QDataStream>
@@ -149,12 +149,8 @@ bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, in
     if (role != Qt::EditRole || !node) {
         return false;
     }
-    const QString name = value.toString().trimmed();
-    if (name.isEmpty() || name.toStdString() == node->name()) {
-        return false; // an empty name is refused; the old one stays
-    }
-    m_undoStack.push(new document::RenameNodeCommand(m_scene, id, name.toStdString()));
-    return true;
+    // An empty name is refused; the old one stays.
+    return bool(document::renameNode(m_scene, m_undoStack, id, value.toString().toStdString()));
 }
 
 Qt::ItemFlags SceneTreeModel::flags(const QModelIndex& index) const {
@@ -227,93 +223,8 @@ bool SceneTreeModel::dropMimeData(const QMimeData* data, Qt::DropAction action, 
     return moveNodes(decode(data), newParent, sceneIndex);
 }
 
-std::optional<int> SceneTreeModel::moveTarget(NodeId id, NodeId newParent, int index) const {
-    const NodeId oldParent = m_scene.parentOf(id);
-    const int oldIndex = m_scene.indexOf(id);
-    int newIndex = index;
-    if (newIndex >= 0 && oldParent == newParent && oldIndex < newIndex) {
-        --newIndex; // counted after the node has been taken out
-    }
-    const int count = m_scene.childCount(newParent) - (oldParent == newParent ? 1 : 0);
-    if (newIndex < 0 || newIndex > count) {
-        newIndex = count;
-    }
-    if (oldParent == newParent && oldIndex == newIndex) {
-        return std::nullopt;
-    }
-    return newIndex;
-}
-
-bool SceneTreeModel::moveNode(NodeId id, NodeId newParent, int index) {
-    if (!m_scene.findNode(id) || m_scene.isAncestor(id, newParent)) {
-        return false;
-    }
-    const std::optional<int> newIndex = moveTarget(id, newParent, index);
-    if (!newIndex) {
-        return false;
-    }
-    m_undoStack.push(new document::MoveNodeCommand(m_scene, id, newParent, *newIndex));
-    return true;
-}
-
-std::vector<NodeId> SceneTreeModel::outermostInTreeOrder(const std::vector<NodeId>& ids) const {
-    // A node's tree position as the scene indexes from the top level down: these compare in tree order,
-    // whatever order the view listed the dragged rows in.
-    auto path = [this](NodeId id) {
-        std::vector<int> indexes;
-        for (NodeId n = id; n != kNoNode; n = m_scene.parentOf(n)) {
-            indexes.push_back(m_scene.indexOf(n));
-        }
-        std::reverse(indexes.begin(), indexes.end());
-        return indexes;
-    };
-    std::vector<std::pair<std::vector<int>, NodeId>> sorted;
-    for (NodeId id : ids) {
-        if (m_scene.findNode(id)) {
-            sorted.emplace_back(path(id), id);
-        }
-    }
-    std::sort(sorted.begin(), sorted.end());
-    // Ancestors sort before their descendants, so each node need only be checked against those kept.
-    std::vector<NodeId> outermost;
-    for (const auto& entry : sorted) {
-        const NodeId id = entry.second;
-        const bool underKept = std::any_of(outermost.begin(), outermost.end(),
-                                           [&](NodeId kept) { return m_scene.isAncestor(kept, id); });
-        if (!underKept) {
-            outermost.push_back(id); // also drops repeats: isAncestor() holds for the node itself
-        }
-    }
-    return outermost;
-}
-
 bool SceneTreeModel::moveNodes(const std::vector<NodeId>& ids, NodeId newParent, int index) {
-    if (std::any_of(ids.begin(), ids.end(), [&](NodeId id) { return m_scene.isAncestor(id, newParent); })) {
-        return false;
-    }
-    const std::vector<NodeId> nodes = outermostInTreeOrder(ids);
-    if (nodes.size() <= 1) {
-        return !nodes.empty() && moveNode(nodes.front(), newParent, index); // keeps its "Move “name”" text
-    }
-    // One at a time, each right after the one before, with the scene's indexes as they are after the
-    // previous moves: taking a node out from above the drop position shifts the positions after it. The
-    // macro starts with the first real move, so a drop that changes nothing leaves no empty undo step.
-    bool moved = false;
-    int next = index;
-    for (NodeId id : nodes) {
-        if (const std::optional<int> newIndex = moveTarget(id, newParent, next)) {
-            if (!moved) {
-                m_undoStack.beginMacro(tr("Move %1 nodes").arg(nodes.size()));
-                moved = true;
-            }
-            m_undoStack.push(new document::MoveNodeCommand(m_scene, id, newParent, *newIndex));
-        }
-        next = m_scene.indexOf(id) + 1;
-    }
-    if (moved) {
-        m_undoStack.endMacro();
-    }
-    return moved;
+    return bool(document::moveNodes(m_scene, m_undoStack, ids, newParent, index));
 }
 
 } // namespace speculum::ui

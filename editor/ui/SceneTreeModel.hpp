@@ -3,7 +3,6 @@
 #include "editor/document/Scene.hpp"
 
 #include <QAbstractItemModel>
-#include <optional>
 #include <vector>
 
 class QUndoStack;
@@ -12,8 +11,8 @@ namespace speculum::ui {
 
 // The document as a tree for QTreeView: the scene camera as the first top-level row, then the nodes in file
 // order. It follows the Scene's signals, so every change from anywhere (inspector, viewport, undo) shows.
-// Edits made in the view become undoable commands: renaming in place pushes RenameNodeCommand, dragging
-// nodes onto another (or between rows) pushes MoveNodeCommands, several of them as one undo step.
+// Edits made in the view are the document's operations (document/EditOperations.hpp): renaming in place is
+// renameNode, dragging nodes onto another (or between rows) moveNodes, each one undo step.
 class SceneTreeModel : public QAbstractItemModel {
     Q_OBJECT
 
@@ -48,13 +47,10 @@ public:
     bool dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
                       const QModelIndex& parent) override;
 
-    // Moves a node under newParent (kNoNode = top level) before scene position `index` of the new parent's
-    // current children (-1 = at the end), as one undoable command. False when the move is impossible (into
-    // its own subtree) or changes nothing.
-    bool moveNode(document::NodeId id, document::NodeId newParent, int index);
-    // Moves several nodes the same way, one after the other from `index` on, in tree order, as one undo
-    // step. A node under another of them goes with that one. False when a move is impossible (a target in
-    // one of their subtrees) or nothing changes.
+    // Moves nodes under newParent (kNoNode = top level) before scene position `index` of the new parent's
+    // current children (-1 = at the end), one after the other in tree order, as one undo step
+    // (document::moveNodes). False when a move is impossible (a target in one of their subtrees) or
+    // nothing changes.
     bool moveNodes(const std::vector<document::NodeId>& ids, document::NodeId newParent, int index);
 
 private:
@@ -64,11 +60,6 @@ private:
     }
     QModelIndex parentIndexOf(document::NodeId parent) const;
     std::vector<document::NodeId> decode(const QMimeData* data) const;
-    // The scene index `id` gets when moved under newParent before scene position `index` (-1 = at the end),
-    // counted as MoveNodeCommand wants it; nullopt when that changes nothing.
-    std::optional<int> moveTarget(document::NodeId id, document::NodeId newParent, int index) const;
-    // The given nodes without repeats and without those under another of them, in tree order.
-    std::vector<document::NodeId> outermostInTreeOrder(const std::vector<document::NodeId>& ids) const;
 
     document::Scene& m_scene;
     QUndoStack& m_undoStack;

@@ -1,7 +1,7 @@
 #include "editor/ui/SceneTreePanel.hpp"
 
 #include "editor/ui/SceneTreeModel.hpp"
-#include "editor/ui/Selection.hpp"
+#include "editor/view/Selection.hpp"
 
 #include <QHeaderView>
 #include <QMenu>
@@ -12,7 +12,7 @@
 
 namespace speculum::ui {
 
-SceneTreePanel::SceneTreePanel(SceneTreeModel& model, Selection& selection, QWidget* parent)
+SceneTreePanel::SceneTreePanel(SceneTreeModel& model, view::Selection& selection, QWidget* parent)
     : QWidget(parent)
     , m_model(model)
     , m_selection(selection) {
@@ -40,7 +40,7 @@ SceneTreePanel::SceneTreePanel(SceneTreeModel& model, Selection& selection, QWid
             &SceneTreePanel::syncToSelection);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &SceneTreePanel::syncToSelection);
-    connect(&selection, &Selection::changed, this, &SceneTreePanel::syncFromSelection);
+    connect(&selection, &view::Selection::changed, this, &SceneTreePanel::syncFromSelection);
     connect(m_view, &QTreeView::customContextMenuRequested, this, &SceneTreePanel::showContextMenu);
     // Rows come back after a move or an undo: show the selection again, and new rows' parents open.
     connect(&model, &QAbstractItemModel::rowsInserted, this, [this](const QModelIndex& parent) {

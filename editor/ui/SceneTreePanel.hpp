@@ -7,10 +7,13 @@ class QAction;
 class QTreeView;
 class QMenu;
 
+namespace speculum::view {
+class Selection;
+}
+
 namespace speculum::ui {
 
 class SceneTreeModel;
-class Selection;
 
 // The Scene dock: the tree of nodes (SceneTreeModel) kept in step with the shared Selection both ways,
 // with in-place rename (F2 or double-click), drag-and-drop reparenting and a context menu with the
@@ -19,7 +22,7 @@ class SceneTreePanel : public QWidget {
     Q_OBJECT
 
 public:
-    SceneTreePanel(SceneTreeModel& model, Selection& selection, QWidget* parent = nullptr);
+    SceneTreePanel(SceneTreeModel& model, view::Selection& selection, QWidget* parent = nullptr);
 
     QTreeView& view() { return *m_view; }
     // The actions shown in the context menu (null entries become separators); the Add menu is appended.
@@ -33,7 +36,7 @@ private:
     void showContextMenu(const QPoint& pos);
 
     SceneTreeModel& m_model;
-    Selection& m_selection;
+    view::Selection& m_selection;
     QTreeView* m_view = nullptr;
     QList<QAction*> m_actions;
     QMenu* m_addMenu = nullptr;

@@ -1,8 +1,8 @@
 #include "editor/ui/Screenshot.hpp"
 
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "editor/view/AnimationClock.hpp"
 #include "render/io/AtomicFile.hpp"
 #include "render/io/Printable.hpp"
 

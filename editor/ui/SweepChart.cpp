@@ -1,5 +1,7 @@
 #include "editor/ui/SweepChart.hpp"
 
+#include "accuracy/Analysis.hpp"
+
 #include <QChart>
 #include <QCursor>
 #include <QFont>
@@ -18,7 +20,7 @@ SweepChart::SweepChart(QWidget* parent)
     : QChartView(new QChart, parent) {
     setObjectName(QStringLiteral("sweepChart"));
     setRenderHint(QPainter::Antialiasing);
-    chart()->setTitle(tr("Load a bench results.json to compare settings"));
+    chart()->setTitle(placeholder());
     chart()->legend()->setAlignment(Qt::AlignBottom);
     chart()->setMargins(QMargins(2, 2, 2, 2));
     setMinimumHeight(300);
@@ -35,6 +37,20 @@ int SweepChart::seriesCount() const {
     return n;
 }
 
+QString SweepChart::placeholder() {
+    return tr("Run a sweep, or load a bench results.json, to compare settings");
+}
+
+int SweepChart::pointCount() const {
+    int n = 0;
+    for (QAbstractSeries* s : chart()->series()) {
+        if (auto* scatter = qobject_cast<QScatterSeries*>(s); scatter && s != m_highlight) {
+            n += int(scatter->count());
+        }
+    }
+    return n;
+}
+
 void SweepChart::setResults(const document::SweepResults& results) {
     m_results = results;
     QChart* c = chart();
@@ -47,35 +63,40 @@ void SweepChart::setResults(const document::SweepResults& results) {
     const auto& records = m_results.records;
 
     auto* axisX = new QValueAxis;
-    axisX->setTitleText(m_results.gpuTimes ? tr("GPU ms per frame") : tr("CPU ms per frame"));
+    axisX->setTitleText(m_results.gpuTimes() ? tr("GPU ms per frame") : tr("CPU ms per frame"));
     auto* axisY = new QValueAxis;
     axisY->setTitleText(tr("PSNR (dB)"));
     c->addAxis(axisX, Qt::AlignBottom);
     c->addAxis(axisY, Qt::AlignLeft);
     // The panel names the run under the chart; a title here would squeeze the plot in a narrow dock.
-    c->setTitle(QString());
+    c->setTitle(records.empty() ? placeholder() : QString());
 
     // Families in the order of the file, so colours follow the bench's own order.
     std::vector<QString> families;
     std::map<QString, QScatterSeries*> byFamily;
+    auto familyOf = [](const accuracy::Record& r) {
+        return QString::fromStdString(accuracy::familyName(r.config.family));
+    };
     double lowMs = std::numeric_limits<double>::infinity(), highMs = 0.0;
     double lowDb = std::numeric_limits<double>::infinity(), highDb = 0.0;
     for (const auto& r : records) {
-        if (!byFamily.count(r.family)) {
+        const QString family = familyOf(r);
+        if (!byFamily.count(family)) {
             auto* series = new QScatterSeries;
-            series->setName(r.family);
+            series->setName(family);
             series->setMarkerSize(9);
-            byFamily[r.family] = series;
-            families.push_back(r.family);
+            byFamily[family] = series;
+            families.push_back(family);
         }
-        byFamily[r.family]->append(r.ms(), r.psnr);
-        lowMs = std::min(lowMs, r.ms()), highMs = std::max(highMs, r.ms());
+        const double ms = accuracy::frameMs(r);
+        byFamily[family]->append(ms, r.psnr);
+        lowMs = std::min(lowMs, ms), highMs = std::max(highMs, ms);
         lowDb = std::min(lowDb, r.psnr), highDb = std::max(highDb, r.psnr);
     }
     auto* front = new QLineSeries;
     front->setName(tr("Pareto front"));
-    for (std::size_t i : document::paretoFront(records)) {
-        front->append(records[i].ms(), records[i].psnr);
+    for (std::size_t i : accuracy::paretoFront(records)) {
+        front->append(accuracy::frameMs(records[i]), records[i].psnr);
     }
     c->addSeries(front);
     front->attachAxis(axisX);
@@ -93,13 +114,14 @@ void SweepChart::setResults(const document::SweepResults& results) {
                 const auto& r = m_results.records[std::size_t(index)];
                 QStringList settings;
                 for (const auto& [key, value] : r.settings) {
-                    settings << key + QStringLiteral(" ") + value;
+                    settings << QString::fromStdString(key + " " + value).toHtmlEscaped();
                 }
-                QToolTip::showText(QCursor::pos(), tr("<b>%1 %2</b><br>%3 ms · PSNR %4 dB<br>%5")
-                                                       .arg(r.family, r.label)
-                                                       .arg(r.ms(), 0, 'f', 2)
-                                                       .arg(r.psnr, 0, 'f', 2)
-                                                       .arg(settings.join(QStringLiteral(", "))));
+                QToolTip::showText(QCursor::pos(),
+                                   tr("<b>%1 %2</b><br>%3 ms · PSNR %4 dB<br>%5")
+                                       .arg(family, QString::fromStdString(r.config.label).toHtmlEscaped())
+                                       .arg(accuracy::frameMs(r), 0, 'f', 2)
+                                       .arg(r.psnr, 0, 'f', 2)
+                                       .arg(settings.join(QStringLiteral(", "))));
             } else {
                 QToolTip::hideText();
             }
@@ -137,7 +159,7 @@ void SweepChart::highlight(int index) {
     m_highlight->clear();
     if (index >= 0 && std::size_t(index) < m_results.records.size()) {
         const auto& r = m_results.records[std::size_t(index)];
-        m_highlight->append(r.ms(), r.psnr);
+        m_highlight->append(accuracy::frameMs(r), r.psnr);
     }
 }
 
@@ -154,10 +176,10 @@ int SweepChart::nearest(const QString& family, const QPointF& point) const {
     double bestDistance = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < m_results.records.size(); ++i) {
         const auto& r = m_results.records[i];
-        if (r.family != family) {
+        if (QString::fromStdString(accuracy::familyName(r.config.family)) != family) {
             continue;
         }
-        const QPointF p = chart()->mapToPosition(QPointF(r.ms(), r.psnr));
+        const QPointF p = chart()->mapToPosition(QPointF(accuracy::frameMs(r), r.psnr));
         const double d = QLineF(p, at).length();
         if (d < bestDistance) {
             bestDistance = d;

@@ -6,10 +6,10 @@
 #include "editor/document/Picking.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/document/Snapshot.hpp"
-#include "editor/ui/AnimationClock.hpp"
-#include "editor/ui/Selection.hpp"
 #include "editor/ui/ViewportModels.hpp"
 #include "editor/ui/ViewportOverlay.hpp"
+#include "editor/view/AnimationClock.hpp"
+#include "editor/view/Selection.hpp"
 #include "render/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
 
@@ -26,6 +26,9 @@
 
 namespace speculum::ui {
 
+using view::AnimationClock;
+using view::Selection;
+
 namespace {
 
 constexpr double kClickSlopPixels = 4.0; // a press that moves less than this is a click, not a drag
@@ -38,10 +41,12 @@ const QColor kSelectedColor(190, 105, 35, 210); // the other selected nodes' out
 
 } // namespace
 
-Viewport::Viewport(document::Scene& scene, AnimationClock& clock, QWidget* parent)
+Viewport::Viewport(document::Scene& scene, document::MeshLibrary& meshes, AnimationClock& clock,
+                   QWidget* parent)
     : QOpenGLWidget(parent)
     , m_scene(scene)
-    , m_clock(clock) {
+    , m_clock(clock)
+    , m_meshes(meshes) {
     setMinimumSize(160, 120);
     setFocusPolicy(Qt::ClickFocus);
     setMouseTracking(true); // handle hover highlight
@@ -54,8 +59,9 @@ Viewport::Viewport(document::Scene& scene, AnimationClock& clock, QWidget* paren
     connect(&m_scene, &document::Scene::changed, this, qOverload<>(&Viewport::update));
     // A camera edit or a newly opened document: show the document's camera again.
     connect(&m_scene, &document::Scene::cameraChanged, this, &Viewport::resetView);
+    // The session has replaced its mesh library by then (on aboutToReset): the reads running for the old
+    // document are of no use.
     connect(&m_scene, &document::Scene::sceneReset, this, [this] {
-        m_meshes.clear(); // meshes of the old document are not needed any more
         m_models->clear();
         resetView();
     });
@@ -111,6 +117,7 @@ void Viewport::adoptModel(const std::string& absolutePath,
 void Viewport::setEditing(Selection* selection, QUndoStack* undoStack) {
     m_selection = selection;
     m_undoStack = undoStack;
+    m_handleDrag = undoStack ? std::make_unique<HandleDrag>(m_scene, *undoStack) : nullptr;
     if (selection) {
         connect(selection, &Selection::changed, this, [this] {
             m_hoverAxis = -1;
@@ -469,11 +476,12 @@ void Viewport::paintOverlay(QPainter& painter) {
         return;
     }
     updateGizmo();
-    const Gizmo& gizmo = m_drag == Drag::Handle ? m_dragGizmo : m_gizmo;
+    const bool dragging = m_drag == Drag::Handle && m_handleDrag;
+    const Gizmo& gizmo = dragging ? m_handleDrag->gizmo() : m_gizmo;
     if (!gizmo.isValid()) {
         return;
     }
-    const int active = m_drag == Drag::Handle ? m_dragAxis : m_hoverAxis;
+    const int active = dragging ? m_handleDrag->axis() : m_hoverAxis;
     for (const auto& axis : gizmo.axes()) {
         const QColor color = axis.index == active ? kActiveColor : kAxisColors[axis.index];
         painter.setPen(QPen(color, axis.index == active ? 3.5 : 2.5, Qt::SolidLine, Qt::RoundCap));
@@ -514,7 +522,7 @@ void Viewport::navigated() {
         camera.far = std::min(std::max(camera.far, v.far), camera.near * render::kMaxFarNearRatio);
         auto* command = new document::SetCameraCommand(m_scene, camera, true);
         command->setMergeKey(QStringLiteral("navigate#%1").arg(m_gestureSerial));
-        m_undoStack->push(command);
+        document::pushEdit(*m_undoStack, command); // an orbit that ends where it began is no step
     }
     update();
 }
@@ -531,18 +539,9 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         // Ctrl+click always picks (to add or remove), even over a handle.
         const bool ctrl = event->modifiers() & Qt::ControlModifier;
         const int axis = m_selection && m_undoStack && !ctrl ? m_gizmo.hitTest(pos) : -1;
-        if (axis >= 0) {
+        if (axis >= 0 && m_handleDrag->press(m_gizmo, axis, pos, m_selection->node(), m_selection->roots(),
+                                             m_lastFrameTime)) {
             m_drag = Drag::Handle;
-            m_dragAxis = axis;
-            m_dragGizmo = m_gizmo;
-            m_dragNode = m_selection->node();
-            m_dragStart = m_selection->selectedNode()->data();
-            m_dragParentWorld = document::parentWorldMatrix(m_scene, m_dragNode, m_lastFrameTime);
-            m_draggedNodes.clear();
-            for (document::NodeId id : m_selection->roots()) {
-                m_draggedNodes.push_back({id, m_scene.findNode(id)->data(),
-                                          document::parentWorldMatrix(m_scene, id, m_lastFrameTime)});
-            }
         } else {
             m_drag = Drag::PendingClick;
         }
@@ -573,34 +572,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     if (m_drag == Drag::Handle) {
-        if (m_scene.findNode(m_dragNode)) {
-            const document::NodeData lead = m_dragGizmo.drag(m_dragStart, m_dragAxis, m_pressPosition, posF);
-            std::vector<document::SetNodesDataCommand::Change> changes;
-            bool changed = false;
-            for (const DraggedNode& dragged : m_draggedNodes) {
-                const document::Node* node = m_scene.findNode(dragged.id);
-                if (!node) {
-                    continue;
-                }
-                document::NodeData data =
-                    dragged.id == m_dragNode
-                        ? lead
-                        : followDrag(m_dragGizmo.mode(), m_dragStart, lead, m_dragParentWorld, dragged.start,
-                                     dragged.parentWorld);
-                changed = changed || !(data == node->data());
-                changes.push_back({dragged.id, std::move(data)});
-            }
-            if (changed) {
-                static const char* const verbs[] = {"Select", "Move", "Rotate", "Scale"};
-                const QLatin1String verb(verbs[int(m_dragGizmo.mode())]);
-                const QString text =
-                    changes.size() == 1
-                        ? tr("%1 \u201c%2\u201d").arg(verb, QString::fromStdString(changes.front().data.name))
-                        : tr("%1 %2 nodes").arg(verb).arg(changes.size());
-                m_undoStack->push(new document::SetNodesDataCommand(
-                    m_scene, std::move(changes), text, QStringLiteral("handle#%1").arg(m_gestureSerial)));
-            }
-        }
+        m_handleDrag->move(posF);
         event->accept();
         return;
     }
@@ -642,8 +614,10 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
             m_selection->clear();
         }
     }
+    if (m_drag == Drag::Handle) {
+        m_handleDrag->release();
+    }
     m_drag = Drag::None;
-    m_dragAxis = -1;
     m_overlay->update();
     event->accept();
 }
@@ -667,18 +641,8 @@ void Viewport::wheelEvent(QWheelEvent* event) {
 
 void Viewport::keyPressEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Escape && m_drag == Drag::Handle) {
-        // Cancel the drag: put the nodes back as they were (the merged step then changes nothing).
-        std::vector<document::SetNodesDataCommand::Change> changes;
-        for (const DraggedNode& dragged : m_draggedNodes) {
-            if (m_scene.findNode(dragged.id)) {
-                changes.push_back({dragged.id, dragged.start});
-            }
-        }
-        if (!changes.empty()) {
-            m_undoStack->push(
-                new document::SetNodesDataCommand(m_scene, std::move(changes), tr("Cancel drag"),
-                                                  QStringLiteral("handle#%1").arg(m_gestureSerial)));
-        }
+        // Cancel the drag: every node back as it was, and no undo step left behind.
+        m_handleDrag->cancel();
         m_drag = Drag::None;
         m_overlay->update();
         event->accept();

@@ -3,7 +3,8 @@
 #include "editor/document/MeshLibrary.hpp"
 #include "editor/document/SceneData.hpp"
 #include "editor/ui/Gizmo.hpp"
-#include "editor/ui/ViewCamera.hpp"
+#include "editor/ui/HandleDrag.hpp"
+#include "editor/view/ViewCamera.hpp"
 #include "render/Renderer.hpp"
 
 #include <QElapsedTimer>
@@ -19,11 +20,13 @@ class QUndoStack;
 namespace speculum::document {
 class Scene;
 }
+namespace speculum::view {
+class AnimationClock;
+class Selection;
+} // namespace speculum::view
 
 namespace speculum::ui {
 
-class AnimationClock;
-class Selection;
 class ViewportModels;
 class ViewportOverlay;
 
@@ -47,11 +50,14 @@ class Viewport : public QOpenGLWidget {
     Q_OBJECT
 
 public:
-    Viewport(document::Scene& scene, AnimationClock& clock, QWidget* parent = nullptr);
+    // `meshes` is the document session's mesh library: the viewport draws and picks with it, and hands it
+    // the models its workers read.
+    Viewport(document::Scene& scene, document::MeshLibrary& meshes, view::AnimationClock& clock,
+             QWidget* parent = nullptr);
     ~Viewport() override;
 
     // Enables selection and handles; without it the viewport only views.
-    void setEditing(Selection* selection, QUndoStack* undoStack);
+    void setEditing(view::Selection* selection, QUndoStack* undoStack);
 
     // Frames drawn since the widget was created (tests wait on this).
     int framesRendered() const { return m_framesRendered; }
@@ -65,7 +71,7 @@ public:
     // The renderer, for work that must run on this widget's context (still export): call makeCurrent()
     // first. Null until the widget has been shown (or when it failed).
     render::Renderer* renderer() { return m_renderer.get(); }
-    // The viewport's mesh cache. Asking for it starts the reads of the scene's model files on workers
+    // The document's mesh library. Asking for it starts the reads of the scene's model files on workers
     // (ViewportModels): a file not read yet is an empty stand-in until it is; waitForModels() waits for
     // them (export does, so a still never lacks a model that is still loading).
     document::MeshLibrary& meshes();
@@ -132,13 +138,13 @@ private:
     ScreenProjection projection() const;
 
     document::Scene& m_scene;
-    AnimationClock& m_clock;
-    Selection* m_selection = nullptr;
+    view::AnimationClock& m_clock;
+    view::Selection* m_selection = nullptr;
     QUndoStack* m_undoStack = nullptr;
-    document::MeshLibrary m_meshes; // kept across frames: the renderer keys GPU meshes on the handles
+    document::MeshLibrary& m_meshes; // kept across frames: the renderer keys GPU meshes on the handles
     std::unique_ptr<render::Renderer> m_renderer;
     QString m_rendererError;
-    ViewCamera m_view;
+    view::ViewCamera m_view;
     QTimer m_tick; // drives repaints while the animation plays
     ViewportOverlay* m_overlay = nullptr;
     ViewportModels* m_models = nullptr; // reads the scene's model files off the GUI thread
@@ -156,25 +162,14 @@ private:
     Gizmo m_gizmo;
     int m_hoverAxis = -1;
 
+    // A press on a handle hands the gesture to m_handleDrag; the rest (click, orbit, pan) is the widget's.
     enum class Drag { None, PendingClick, Orbit, Pan, Handle };
     Drag m_drag = Drag::None;
     QPoint m_lastMouse;
     QPointF m_pressPosition;
     bool m_pressAlt = false;
     bool m_pressCtrl = false;
-    int m_dragAxis = -1;
-    Gizmo m_dragGizmo; // the handles as they were when the drag began
-    // The node the handles sit on, as it was when the drag began; the drag is measured on it.
-    document::NodeData m_dragStart;
-    std::uint64_t m_dragNode = 0;
-    glm::dmat4 m_dragParentWorld{1.0};
-    // What the drag changes: the selection's roots, as they were when it began.
-    struct DraggedNode {
-        std::uint64_t id = 0; // a document::NodeId
-        document::NodeData start;
-        glm::dmat4 parentWorld{1.0};
-    };
-    std::vector<DraggedNode> m_draggedNodes;
+    std::unique_ptr<HandleDrag> m_handleDrag; // with editing on
     int m_gestureSerial = 0;
 };
 

@@ -1,5 +1,6 @@
 #include "render/envmap/EnvironmentCapture.hpp"
 
+#include "render/SceneLimits.hpp"
 #include "render/gl/Allocation.hpp"
 #include "render/gl/Memory.hpp"
 
@@ -155,7 +156,8 @@ void setWarpUniforms(const gl::Program& program, const WarpPass& pass) {
 }
 
 Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSettings& settings, bool* sizeFailure) {
-    assert(settings.resolution >= 8 && "EnvironmentCapture::create(): resolution below 8");
+    assert(settings.resolution >= kMinEnvironmentMapSize &&
+           "EnvironmentCapture::create(): resolution below the scene limit");
     if (sizeFailure)
         *sizeFailure = false;
     EnvironmentCapture capture;

@@ -1,5 +1,7 @@
 #include "render/envmap/Layout.hpp"
 
+#include "render/SceneLimits.hpp"
+
 #include <algorithm>
 #include <cassert>
 
@@ -13,7 +15,7 @@ int defaultGuard(int resolution) {
 }
 
 MapLayout makeLayout(MapType type, int resolution, int guard) {
-    assert(resolution >= 8 && "envmap::makeLayout(): resolution below 8");
+    assert(resolution >= kMinEnvironmentMapSize && "envmap::makeLayout(): resolution below the scene limit");
     MapLayout layout;
     layout.type = type;
     layout.resolution = resolution;

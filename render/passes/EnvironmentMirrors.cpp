@@ -6,6 +6,7 @@
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <optional>
 
@@ -26,9 +27,10 @@ void MeshFacts::purge() {
 
 namespace {
 
-// One view of the environment: the capture point's own (mirror −1), or the scene reflected in a chain of
-// mirrors ending with `mirror`.
+// One view of the environment: the capture point's own (view −1), or the scene reflected in a chain of
+// mirrors ending with `mirror`, as the planner planned it (EnvmapPlan::views[view]).
 struct Level {
+    int view = -1;
     int mirror = -1;
     int depth = 0;
     glm::dmat4 reflection{1.0};     // world → drawn (reflected) world
@@ -47,24 +49,21 @@ struct LevelScene {
     const FrameInput& input() const { return split ? *split : *env; }
 };
 
-// The side of mirror m that is reflected, a constant world distance off its plane (as the main pass keeps).
-std::optional<glm::dvec4> keptPlane(const Mirror& mirror) {
-    const auto plane = math::mirrorPlane(mirror.world);
-    if (!plane)
-        return std::nullopt;
-    return glm::dvec4(plane->normal, plane->d - kMirrorClipOffset);
-}
-
 class TargetDrawer {
 public:
-    TargetDrawer(const FrameInput& env, const EnvironmentTarget& target, int mirrorDepth,
+    TargetDrawer(const FrameInput& env, const EnvironmentTarget& target,
                  const EnvironmentMirrorPrograms& programs, MainPassContext& ctx)
         : m_env(env)
         , m_target(target)
-        , m_mirrorDepth(programs.flat && programs.mirror ? std::clamp(mirrorDepth, 0, kStencilLevels) : 0)
+        , m_plan(programs.flat && programs.mirror ? target.plan : nullptr)
         , m_programs(programs)
         , m_ctx(ctx)
-        , m_toRelative(math::cameraRelative(env.camera)) {}
+        , m_toRelative(math::cameraRelative(env.camera)) {
+        assert((!m_plan ||
+                (target.face >= 0 && target.face < static_cast<int>(m_plan->faces.size()) &&
+                 m_plan->faces[static_cast<std::size_t>(target.face)].warped == (target.warp != nullptr))) &&
+               "drawEnvironmentTarget(): the target is not the planned face");
+    }
 
     void draw() {
         Level root;
@@ -147,88 +146,29 @@ private:
         return setup;
     }
 
-    // Mirror m seen in `parent`, or nothing when it cannot be seen there: the parent's capture point is
-    // behind or on it, it lies wholly behind the parent's mirror or outside the target, or no oblique
-    // projection exists.
-    std::optional<Level> child(const Level& parent, int m) const {
-        if (m == parent.mirror)
-            return std::nullopt; // a planar mirror never sees itself
-        const Mirror& mirror = m_env.mirrors[static_cast<std::size_t>(m)];
-        const auto plane = math::mirrorPlane(mirror.world);
-        const auto kept = keptPlane(mirror);
-        if (!plane || !kept || plane->distance(parent.eye) <= 1e-9)
-            return std::nullopt;
-        const auto reflection = math::reflectionMatrix(*plane);
-        if (!reflection)
-            return std::nullopt;
-        const auto corners = math::mirrorCorners(mirror);
-        // The parent mirror's kept side (unreflected world), all zero at the top level.
-        glm::dvec4 parentKept(0.0);
-        if (parent.mirror >= 0) {
-            parentKept =
-                keptPlane(m_env.mirrors[static_cast<std::size_t>(parent.mirror)]).value_or(parentKept);
-            const bool behind = std::all_of(corners.begin(), corners.end(), [&](const glm::dvec3& c) {
-                return glm::dot(parentKept, glm::dvec4(c, 1.0)) <= 0.0;
-            });
-            if (behind)
-                return std::nullopt;
-        }
-        std::vector<glm::dvec3> drawn; // camera-relative, as the parent draws them
-        for (const glm::dvec3& c : corners)
-            drawn.push_back(glm::dvec3(parent.reflection * glm::dvec4(c, 1.0)) - m_env.camera.position);
-
+    // The planned view `index` as this target draws it.
+    Level levelOf(int index) const {
+        const MirrorView& view = m_plan->views[static_cast<std::size_t>(index)];
         Level level;
-        level.mirror = m;
-        level.depth = parent.depth + 1;
-        level.reflection = parent.reflection * *reflection;
-        level.eye = glm::dvec3(glm::inverse(level.reflection) * glm::dvec4(m_env.camera.position, 1.0));
-        // The kept side in camera-relative drawn coordinates: the plane carried through the whole reflection.
-        const glm::dvec4 keptDrawn =
-            math::transformPlane(math::transformPlane(*kept, level.reflection), m_toRelative);
-        if (m_target.warp) {
-            if (!inWarp(drawn))
-                return std::nullopt;
-            level.clipPlane = keptDrawn;
-            return level;
-        }
-        const glm::dvec4 parentKeptDrawn =
-            math::transformPlane(math::transformPlane(parentKept, parent.reflection), m_toRelative);
-        const math::PixelRect whole{0, 0, m_target.size, m_target.size};
-        const math::ScreenCoverage coverage =
-            math::screenCoverage(drawn, parent.viewProjection, m_target.size, m_target.size, whole,
-                                 parent.mirror >= 0 ? &parentKeptDrawn : nullptr);
-        if (coverage.rect.empty() || coverage.pixelArea < 1.0)
-            return std::nullopt;
-        const auto oblique = math::obliqueProjection(projection(level.depth),
-                                                     math::transformPlane(keptDrawn, m_target.faceView));
-        if (!oblique)
-            return std::nullopt;
-        level.viewProjection = *oblique * m_target.faceView;
+        level.view = index;
+        level.mirror = view.mirror;
+        level.depth = view.depth;
+        level.reflection = view.reflection;
+        level.eye = view.eye;
+        if (!m_target.warp)
+            level.viewProjection = view.projection * m_target.faceView;
+        level.clipPlane = view.clipPlane;
         return level;
-    }
-
-    // False when a paraboloid component cannot show the rectangle: every corner lies in the cone behind it
-    // that its near plane clips (a convex cone, so the whole rectangle does). The tennis ball's components
-    // wrap all round: any rectangle may show.
-    bool inWarp(const std::vector<glm::dvec3>& drawn) const {
-        const envmap::WarpParameters& w = m_target.warp->warp;
-        if (w.type != envmap::MapType::DualParaboloid)
-            return true;
-        return std::any_of(drawn.begin(), drawn.end(), [&](const glm::dvec3& c) {
-            const glm::dvec3 d = glm::dmat3(m_target.warp->view) * c;
-            const double s = (w.component == 0 ? -d.z : d.z) / std::max(glm::length(d), 1e-300);
-            return s >= -w.rimSine;
-        });
     }
 
     void drawLevel(const Level& level, int stencil) {
         std::vector<Level> children;
-        if (level.depth < m_mirrorDepth)
-            for (int m = 0; m < static_cast<int>(m_env.mirrors.size()) && m_views < kMaxMirrorViews; ++m)
-                if (auto c = child(level, m)) {
-                    children.push_back(std::move(*c));
-                    ++m_views;
-                }
+        if (m_plan)
+            for (int v = 0; v < static_cast<int>(m_plan->views.size()); ++v) {
+                const MirrorView& view = m_plan->views[static_cast<std::size_t>(v)];
+                if (view.face == m_target.face && view.parent == level.view)
+                    children.push_back(levelOf(v));
+            }
         const LevelScene scene = sceneFor(level);
         ViewSetup setup = setupFor(level);
         for (const Level& c : children)
@@ -320,18 +260,17 @@ private:
 
     const FrameInput& m_env;
     const EnvironmentTarget& m_target;
-    int m_mirrorDepth;
+    const EnvmapPlan* m_plan; // null: no mirror reflects
     EnvironmentMirrorPrograms m_programs;
     MainPassContext& m_ctx;
     glm::dmat4 m_toRelative;
-    int m_views = 0;
 };
 
 } // namespace
 
-void drawEnvironmentTarget(const FrameInput& env, const EnvironmentTarget& target, int mirrorDepth,
+void drawEnvironmentTarget(const FrameInput& env, const EnvironmentTarget& target,
                            const EnvironmentMirrorPrograms& programs, MainPassContext& context) {
-    TargetDrawer(env, target, mirrorDepth, programs, context).draw();
+    TargetDrawer(env, target, programs, context).draw();
 }
 
 } // namespace speculum::render::passes

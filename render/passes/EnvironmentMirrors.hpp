@@ -5,6 +5,7 @@
 #include "render/gl/Program.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/WarpMeshes.hpp"
+#include "render/plan/FramePlan.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <unordered_map>
@@ -52,12 +53,17 @@ struct EnvironmentTarget {
     WarpMeshes* warpMeshes = nullptr;
     double warpAngle = 0.3;
     MeshFacts* meshFacts = nullptr; // null: every face of every item is drawn
+    // The mirror views the planner planned in this face or component (planEnvmapMirrors): `face` indexes
+    // plan->faces. No plan: no mirror reflects (every mirror shows its own material).
+    const EnvmapPlan* plan = nullptr;
+    int face = -1;
 };
 
 // Draws the environment `env` (the scene without the reflector, camera at the capture point) into the
-// bound target, with the planar mirrors it sees reflecting the scene up to `mirrorDepth` levels deep
-// (mirrors in mirrors included; deeper mirrors, and every mirror when it is 0, show their own material).
-// context.program draws the scene: mesh.vert + mesh.frag, or its ENVMAP_WARP variant for a warp.
+// bound target, with the mirror views the planner planned for it (target.plan, target.face) reflecting
+// the scene (mirrors in mirrors included; mirrors without a view show their own material). Decides
+// nothing: which mirrors reflect, how deep, their reflections, oblique projections and clip planes are
+// the plan's. context.program draws the scene: mesh.vert + mesh.frag, or its ENVMAP_WARP variant.
 //
 // The stencil technique of the main pass, nested the same way: a mirror's visible pixels (those of its
 // parent's stencil level whose depth test passes) are marked one level deeper and reset to the background
@@ -65,8 +71,8 @@ struct EnvironmentTarget {
 // blended over its reflection, restoring its depth and stepping its pixels back to the parent's level.
 // A cube face cuts a reflection at its mirror with Lengyel's oblique near plane; the warp, which has no
 // projection matrix, with clip distance 0. Reflected points lie up to (2·depth + 1)·far away, so each level
-// gets a far distance that deep. At most kMaxMirrorViews mirror views per target.
-void drawEnvironmentTarget(const FrameInput& env, const EnvironmentTarget& target, int mirrorDepth,
+// gets a far distance that deep.
+void drawEnvironmentTarget(const FrameInput& env, const EnvironmentTarget& target,
                            const EnvironmentMirrorPrograms& programs, MainPassContext& context);
 
 } // namespace speculum::render::passes

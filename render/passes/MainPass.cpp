@@ -142,8 +142,7 @@ void setMaterial(const Material& m, const gl::Program& p, const MainPassContext&
 }
 
 double alphaCutoff(const Material& m) {
-    // Blend has no sorted transparency yet: it is drawn as Mask at one half (the importer warns).
-    return m.alphaMode == AlphaMode::Blend ? 0.5 : m.alphaCutoff;
+    return effectiveAlphaCutoff(m);
 }
 
 void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& p,

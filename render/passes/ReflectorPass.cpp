@@ -118,8 +118,9 @@ int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>
     return fitted.size;
 }
 
-Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& where, MainPassContext& context,
+Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
                               const EnvironmentMirrorPrograms& mirrors) {
+    const EnvmapCapture& where = plan.capture;
     const Reflector& reflector = *input.reflector;
     const std::uint64_t key = envmapSettingsKey(reflector);
     // allocate() normally made the map already, at a size that fits; a caller that did not gets it made
@@ -149,9 +150,11 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
     const envmap::CaptureSettings& settings = m_capture->settings();
     face.size = settings.cubeResolution > 0 ? settings.cubeResolution : settings.resolution;
     face.meshFacts = &m_meshFacts;
+    face.plan = &plan;
     auto drawFace = [&](const glm::dmat4&, int index) {
         face.faceView = envmap::cubeFaceView(index);
-        drawEnvironmentTarget(env, face, reflector.mirrorDepth, mirrors, faces);
+        face.face = index; // the plan lists the six faces in GL's order
+        drawEnvironmentTarget(env, face, mirrors, faces);
     };
 
     // The direct fill draws copies of the meshes split until no edge spans more than a few degrees seen
@@ -167,7 +170,9 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapCapture& wher
         component.warpMeshes = &m_warpMeshes;
         component.warpAngle = warpEdgeAngle(m_capture->layout());
         component.meshFacts = &m_meshFacts;
-        drawEnvironmentTarget(env, component, reflector.mirrorDepth, {&m_warpFlat, &m_warpMirror}, warped);
+        component.plan = &plan;
+        component.face = pass.warp.component;
+        drawEnvironmentTarget(env, component, {&m_warpFlat, &m_warpMirror}, warped);
     };
     m_capture->update(view, drawFace, drawWarped);
     m_settingsKey = key;

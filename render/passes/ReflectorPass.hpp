@@ -40,9 +40,10 @@ public:
     // the resolution returned; the map is rendered by capture().
     int allocate(const Reflector& reflector, std::vector<std::string>& warnings);
 
-    // Renders the map for `input.reflector` (re-creating its textures when the map settings changed).
+    // Renders the map for `input.reflector` (re-creating its textures when the map settings changed) as
+    // `plan` says: from its capture point, with the mirror views planned in each face or component.
     // `mirrors` are the cube faces' mirror programs (the warp's variants are the pass's own).
-    Status capture(const FrameInput& input, const EnvmapCapture& where, MainPassContext& context,
+    Status capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
                    const EnvironmentMirrorPrograms& mirrors = {});
 
     // Whether a map made with the reflector's current settings exists.

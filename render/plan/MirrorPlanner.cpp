@@ -1,7 +1,9 @@
 // Plans the views of planar mirrors: which mirrors are seen (directly or in other mirrors, to the depth
-// the scene allows), the reflected camera of each, its oblique projection and its pixels, and the passes
-// that draw them. Everything is derived in double precision; a mirror that cannot be drawn correctly is
-// skipped with a reason, never given a NaN matrix.
+// the scene allows), the reflected eye of each, its oblique projection and its pixels, and the passes
+// that draw them. One planner for every place mirrors are seen from: the camera's image, and each face or
+// component of the reflector's environment map (seen from its capture point). Everything is derived in
+// double precision; a mirror that cannot be drawn correctly is skipped with a reason, never given a NaN
+// matrix.
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <optional>
 
@@ -23,52 +26,82 @@ std::string label(const FrameInput& input, int mirror) {
     return name;
 }
 
-// "seen directly" or "seen in Left → Right (depth 3)"
-std::string where(const FrameInput& input, const FramePlan& plan, int parentView) {
-    if (parentView < 0)
-        return "seen directly";
-    std::string chain;
-    for (int v = parentView; v >= 0; v = plan.views[static_cast<std::size_t>(v)].parent) {
-        const std::string& name =
-            input.mirrors[static_cast<std::size_t>(plan.views[static_cast<std::size_t>(v)].mirror)].name;
-        chain = chain.empty() ? name : name + " → " + chain;
-    }
-    return "seen in " + chain + " (depth " +
-           std::to_string(plan.views[static_cast<std::size_t>(parentView)].depth + 1) + ")";
-}
-
 std::string pixels(double area) {
     char text[32];
     std::snprintf(text, sizeof text, "%.0f", area);
     return text;
 }
 
+// Where mirror views are planned: the camera's image, or one face or component of the environment map.
+struct ViewSpace {
+    glm::dvec3 eye{0.0};      // the camera or the capture point: the origin of relative coordinates
+    glm::dmat4 rotation{1.0}; // relative world → view: the camera's rotation, or the face's view
+    std::function<glm::dmat4(int depth)> projection; // of a view `depth` mirrors deep (0: the space's own)
+    int width = 1;
+    int height = 1;
+    int maxDepth = 0;
+    int face = -1;                                // index into EnvmapPlan::faces; -1: the camera
+    const envmap::WarpParameters* warp = nullptr; // a direct-fill component: no projection, no pixels
+    bool mirrorTextures = true;                   // texture-technique mirrors get a texture (the camera)
+    std::string viewer;                           // "the camera", "the capture point"
+    std::string in;                               // "" or ", in Ball's map, +X face": for reasons
+    std::string unit;                             // "px" or "texels"
+};
+
 struct Planner {
     const FrameInput& input;
-    const PlanViewport& viewport;
-    FramePlan& plan;
-    glm::dmat4 projection;
-    glm::dmat4 viewProjection; // camera-relative world → clip
-    glm::dmat4 toCameraRelative;
-    int maxDepth;
+    const ViewSpace& space;
+    std::vector<MirrorView>& views;
+    std::vector<PlannedPass>& passes;
+    std::vector<SkippedEffect>& skipped;
+    glm::dmat4 toRelative;
+    int spaceViews = 0; // views planned in this space
 
-    void skip(int parentView, int mirror, const std::string& reason) {
-        plan.skipped.push_back({label(input, mirror), reason + " (" + where(input, plan, parentView) + ")"});
+    // "seen directly" or "seen in Left → Right (depth 3)"
+    std::string where(int parentView) const {
+        if (parentView < 0)
+            return "seen directly" + space.in;
+        std::string chain;
+        for (int v = parentView; v >= 0; v = views[static_cast<std::size_t>(v)].parent) {
+            const std::string& name =
+                input.mirrors[static_cast<std::size_t>(views[static_cast<std::size_t>(v)].mirror)].name;
+            chain = chain.empty() ? name : name + " → " + chain;
+        }
+        return "seen in " + chain + " (depth " +
+               std::to_string(views[static_cast<std::size_t>(parentView)].depth + 1) + ")" + space.in;
     }
 
-    // Plans every mirror seen from `parentView` (-1: the camera) and recurses.
+    void skip(int parentView, int mirror, const std::string& reason) {
+        skipped.push_back({label(input, mirror), reason + " (" + where(parentView) + ")", space.face});
+    }
+
+    // False when a paraboloid component cannot show the polygon: every corner lies in the cone behind it
+    // that its near plane clips (a convex cone, so the whole polygon does). The tennis ball's components
+    // wrap all round: any polygon may show.
+    bool inWarp(const std::vector<glm::dvec3>& relative) const {
+        const envmap::WarpParameters& w = *space.warp;
+        if (w.type != envmap::MapType::DualParaboloid)
+            return true;
+        return std::any_of(relative.begin(), relative.end(), [&](const glm::dvec3& c) {
+            const glm::dvec3 d = glm::dmat3(space.rotation) * c;
+            const double s = (w.component == 0 ? -d.z : d.z) / std::max(glm::length(d), 1e-300);
+            return s >= -w.rimSine;
+        });
+    }
+
+    // Plans every mirror seen from `parentView` (-1: the space's own view) and recurses.
     void planChildren(int parentView) {
-        // A copy, not a pointer: planning the children appends to plan.views, which may reallocate it.
+        // A copy, not a pointer: planning the children appends to views, which may reallocate it.
         const std::optional<MirrorView> parentCopy =
-            parentView >= 0 ? std::optional<MirrorView>(plan.views[static_cast<std::size_t>(parentView)])
+            parentView >= 0 ? std::optional<MirrorView>(views[static_cast<std::size_t>(parentView)])
                             : std::nullopt;
         const MirrorView* parent = parentCopy ? &*parentCopy : nullptr;
         const int depth = parent ? parent->depth + 1 : 1;
         const glm::dmat4 parentReflection = parent ? parent->reflection : glm::dmat4(1.0);
-        const glm::dvec3 parentEye = parent ? parent->eye : input.camera.position;
+        const glm::dvec3 parentEye = parent ? parent->eye : space.eye;
         const math::PixelRect bounds =
-            parent ? parent->rect : math::PixelRect{0, 0, viewport.width, viewport.height};
-        const glm::dmat4 parentProjection = parent ? parent->projection : projection;
+            parent ? parent->rect : math::PixelRect{0, 0, space.width, space.height};
+        const glm::dmat4 parentProjection = parent ? parent->projection : space.projection(0);
         // The parent's kept side, in reflected (drawn) world coordinates: only what lies beyond its mirror.
         glm::dvec4 keepPlane(0.0);
         if (parent) {
@@ -99,45 +132,61 @@ struct Planner {
             const double scale = std::max({1.0, glm::length(parentEye), std::abs(plane->d)});
             if (std::abs(side) <= 1e-12 * scale) {
                 skip(parentView, m,
-                     "no reflection: the camera is on the mirror's plane, which it sees edge-on");
+                     "no reflection: " + space.viewer + " is on the mirror's plane, which it sees edge-on");
                 continue;
             }
             if (side < 0.0) {
-                skip(parentView, m, "no reflection: the camera is behind the mirror (it sees its back)");
+                skip(parentView, m,
+                     "no reflection: " + space.viewer + " is behind the mirror (it sees its back)");
                 continue;
             }
-            // Where the mirror lands on screen, as drawn in the parent's view (its reflection applied).
+            // Where the mirror lands in the target, as drawn in the parent's view (its reflection applied).
             std::vector<glm::dvec3> corners;
             for (const glm::dvec3& c : math::mirrorCorners(mirror))
-                corners.push_back(glm::dvec3(parentReflection * glm::dvec4(c, 1.0)) - input.camera.position);
+                corners.push_back(glm::dvec3(parentReflection * glm::dvec4(c, 1.0)) - space.eye);
             glm::dvec4 keepRelative = keepPlane;
-            if (parent) // the keep plane in camera-relative coordinates
-                keepRelative = math::transformPlane(keepPlane, toCameraRelative);
-            const glm::dmat4 parentViewProjection = parentProjection * math::viewRotation(input.camera);
-            const math::ScreenCoverage coverage =
-                math::screenCoverage(corners, parentViewProjection, viewport.width, viewport.height, bounds,
-                                     parent ? &keepRelative : nullptr);
-            if (coverage.rect.empty() || coverage.pixelArea <= 0.0) {
-                skip(parentView, m,
-                     parent ? "no reflection: outside the parent mirror's reflected view"
-                            : "no reflection: outside the view");
-                continue;
+            if (parent) // the keep plane in relative coordinates
+                keepRelative = math::transformPlane(keepPlane, toRelative);
+            const std::string outside = parent ? "no reflection: outside the parent mirror's reflected view"
+                                               : "no reflection: outside the view";
+            math::ScreenCoverage coverage;
+            if (space.warp) {
+                // No projection to measure pixels with: the mirror is kept if any of it lies beyond the
+                // parent's mirror and in front of the component's rim.
+                const bool beyondParent =
+                    !parent || std::any_of(corners.begin(), corners.end(), [&](const glm::dvec3& c) {
+                        return glm::dot(keepRelative, glm::dvec4(c, 1.0)) > 0.0;
+                    });
+                if (!beyondParent || !inWarp(corners)) {
+                    skip(parentView, m, outside);
+                    continue;
+                }
+                coverage.rect = bounds;
+            } else {
+                coverage = math::screenCoverage(corners, parentProjection * space.rotation, space.width,
+                                                space.height, bounds, parent ? &keepRelative : nullptr);
+                if (coverage.rect.empty() || coverage.pixelArea <= 0.0) {
+                    skip(parentView, m, outside);
+                    continue;
+                }
+                if (coverage.pixelArea < 1.0) {
+                    skip(parentView, m,
+                         "no reflection: covers less than one " +
+                             std::string(space.face < 0 ? "pixel" : "texel") + " (" +
+                             pixels(coverage.pixelArea * 100) + "% of one)");
+                    continue;
+                }
             }
-            if (coverage.pixelArea < 1.0) {
+            if (depth > space.maxDepth) {
                 skip(parentView, m,
-                     "no reflection: covers less than one pixel (" + pixels(coverage.pixelArea * 100) +
-                         "% of one)");
-                continue;
-            }
-            if (depth > maxDepth) {
-                skip(parentView, m,
-                     "no reflection: the mirror depth limit (" + std::to_string(maxDepth) +
+                     "no reflection: the mirror depth limit (" + std::to_string(space.maxDepth) +
                          ") is reached; drawn with its own material");
                 continue;
             }
-            if (static_cast<int>(plan.views.size()) >= kMaxMirrorViews) {
+            if (spaceViews >= kMaxMirrorViews) {
                 skip(parentView, m,
-                     "no reflection: the frame already has " + std::to_string(kMaxMirrorViews) +
+                     "no reflection: " + std::string(space.face < 0 ? "the frame" : "this face") +
+                         " already has " + std::to_string(kMaxMirrorViews) +
                          " mirror views; drawn with its own material");
                 continue;
             }
@@ -150,23 +199,26 @@ struct Planner {
             view.mirror = m;
             view.parent = parentView;
             view.depth = depth;
+            view.face = space.face;
             view.reflection = parentReflection * *reflection;
-            view.eye = glm::dvec3(glm::inverse(view.reflection) * glm::dvec4(input.camera.position, 1.0));
+            view.eye = glm::dvec3(glm::inverse(view.reflection) * glm::dvec4(space.eye, 1.0));
             // Keep only what lies on the mirror's reflective side, a constant world distance off the plane;
             // in drawn coordinates that is the plane carried through the whole reflection.
             const glm::dvec4 kept(plane->normal, plane->d - kMirrorClipOffset);
             const glm::dvec4 drawn = math::transformPlane(kept, view.reflection);
-            const glm::dvec4 inView =
-                math::transformPlane(drawn, math::viewRotation(input.camera) * toCameraRelative);
-            auto oblique = math::obliqueProjection(projection, inView);
-            if (!oblique) {
-                skip(parentView, m, "no reflection: " + oblique.error());
-                continue;
+            view.clipPlane = math::transformPlane(drawn, toRelative);
+            if (!space.warp) {
+                auto oblique = math::obliqueProjection(
+                    space.projection(depth), math::transformPlane(drawn, space.rotation * toRelative));
+                if (!oblique) {
+                    skip(parentView, m, "no reflection: " + oblique.error());
+                    continue;
+                }
+                view.projection = *oblique;
             }
-            view.projection = *oblique;
             view.rect = coverage.rect;
             view.pixelArea = coverage.pixelArea;
-            view.ownTarget = mirror.technique == MirrorTechnique::Texture;
+            view.ownTarget = space.mirrorTextures && mirror.technique == MirrorTechnique::Texture;
             // A texture view starts a fresh stencil space in a render texture of its own, one slot deeper
             // than the texture its parent draws into; a stencil view nests one level inside its parent's.
             const int parentLevel = parent ? parent->stencilLevel : 0;
@@ -178,33 +230,38 @@ struct Planner {
                 skip(parentView, m, "no reflection: the stencil buffer cannot nest deeper");
                 continue;
             }
-            const int index = static_cast<int>(plan.views.size());
-            plan.views.push_back(view);
+            const int index = static_cast<int>(views.size());
+            views.push_back(view);
+            ++spaceViews;
 
             const std::string name = label(input, m);
-            const std::string context = where(input, plan, parentView);
-            const std::string area = pixels(view.pixelArea) + " px";
+            const std::string context = where(parentView);
+            const std::string area =
+                space.warp ? std::string() : ", " + pixels(view.pixelArea) + " " + space.unit;
             if (!view.ownTarget)
-                plan.passes.push_back({PassKind::MirrorMask, name,
-                                       "marks the mirror's visible pixels in the stencil buffer (" + context +
-                                           ", " + area + ")",
-                                       -1, index});
+                passes.push_back({PassKind::MirrorMask, name,
+                                  "marks the mirror's visible " +
+                                      std::string(space.face < 0 ? "pixels" : "texels") +
+                                      " in the stencil buffer (" + context + area + ")",
+                                  -1, index});
             else
-                plan.passes.push_back(
+                passes.push_back(
                     {PassKind::MirrorMask, name,
                      "counts the mirror's visible pixels, so a hidden mirror costs nothing (" + context + ")",
                      -1, index});
-            plan.passes.push_back(
+            passes.push_back(
                 {PassKind::Mirror, name,
                  std::string("draws the scene reflected in the mirror ") +
                      (view.ownTarget ? "into its reflection texture" : "inside its stencil mask") +
-                     " with an oblique near plane on the mirror (" + context + ", " + area + ")",
+                     (space.warp ? " with a clip plane on the mirror ("
+                                 : " with an oblique near plane on the mirror (") +
+                     context + area + ")",
                  -1, index});
             planChildren(index);
-            plan.passes.push_back(
+            passes.push_back(
                 {PassKind::MirrorSurface, name,
                  std::string("blends the mirror's own surface over the reflection (reflectivity ") +
-                     pixels(mirror.reflectivity * 100) + "%)",
+                     pixels(mirror.reflectivity * 100) + "%" + space.in + ")",
                  -1, index});
         }
     }
@@ -215,20 +272,63 @@ struct Planner {
 void planMirrors(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {
     if (input.mirrors.empty())
         return;
-    Planner planner{input,
-                    viewport,
-                    plan,
-                    cameraProjection(input, viewport),
-                    {},
-                    math::cameraRelative(input.camera),
-                    std::clamp(input.settings.mirrorDepth, 0, kStencilLevels)};
-    planner.viewProjection = planner.projection * math::viewRotation(input.camera);
-    if (planner.maxDepth == 0) {
+    ViewSpace space;
+    space.eye = input.camera.position;
+    space.rotation = math::viewRotation(input.camera);
+    const glm::dmat4 projection = cameraProjection(input, viewport);
+    space.projection = [projection](int) { return projection; };
+    space.width = viewport.width;
+    space.height = viewport.height;
+    space.maxDepth = std::clamp(input.settings.mirrorDepth, 0, kStencilLevels);
+    space.viewer = "the camera";
+    space.unit = "px";
+    Planner planner{input, space, plan.views, plan.passes, plan.skipped, math::cameraRelative(input.camera)};
+    if (space.maxDepth == 0) {
         for (int m = 0; m < static_cast<int>(input.mirrors.size()); ++m)
             planner.skip(-1, m, "no reflection: mirrorDepth is 0; drawn with its own material");
         return;
     }
     planner.planChildren(-1);
+}
+
+void planEnvmapMirrors(const FrameInput& input, EnvmapPlan& map) {
+    if (input.mirrors.empty() || !input.reflector)
+        return;
+    const Reflector& reflector = *input.reflector;
+    const std::string name = reflector.name.empty() ? std::string("the reflector") : reflector.name;
+    const int maxDepth = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
+    if (maxDepth == 0) {
+        for (int m = 0; m < static_cast<int>(input.mirrors.size()); ++m)
+            map.skipped.push_back({label(input, m), "no reflection in " + name +
+                                                        "'s map: the reflector's mirrorDepth is 0; drawn "
+                                                        "with its own material (every face)"});
+        return;
+    }
+    Camera capturePoint; // the map's views are drawn relative to the capture point
+    capturePoint.position = map.capture.centre;
+    const glm::dmat4 toRelative = math::cameraRelative(capturePoint);
+    for (int f = 0; f < static_cast<int>(map.faces.size()); ++f) {
+        const EnvmapFace& face = map.faces[static_cast<std::size_t>(f)];
+        ViewSpace space;
+        space.eye = map.capture.centre;
+        space.rotation = face.view;
+        const double near = map.capture.near, far = map.capture.far;
+        // Reflected points lie up to (2·depth + 1)·far away: each level sees that deep.
+        space.projection = [near, far](int depth) {
+            return envmap::cubeFaceProjection(near, (2.0 * depth + 1.0) * far);
+        };
+        space.width = face.width;
+        space.height = face.height;
+        space.maxDepth = maxDepth;
+        space.face = f;
+        space.warp = face.warped ? &face.warp : nullptr;
+        space.mirrorTextures = false; // the map nests every mirror with the stencil technique
+        space.viewer = "the capture point";
+        space.in = ", in " + name + "'s map, " + face.label;
+        space.unit = "texels";
+        Planner planner{input, space, map.views, map.passes, map.skipped, toRelative};
+        planner.planChildren(-1);
+    }
 }
 
 } // namespace speculum::render

@@ -2,7 +2,7 @@
 
 #include "render/math/Projection.hpp"
 #include "render/math/ShadowFrustum.hpp"
-#include "render/plan/Hasher.hpp"
+#include "render/plan/FrameHashing.hpp"
 
 #include <bit>
 #include <cstring>
@@ -68,6 +68,7 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
             continue;
         h.add(item.mesh.get());
         h.add(item.world);
+        addShadowAlpha(h, item.material); // masked casters cut holes into their shadows
     }
     if (input.reflector) {
         h.add(input.reflector->mesh.get());
@@ -136,6 +137,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         pass.target = name;
         pass.reason = std::move(reason);
         pass.lightIndex = i;
+        pass.signature = signature;
         plan.passes.push_back(std::move(pass));
     }
 

@@ -48,15 +48,11 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex);
 // effects got no pass and why. Needs no GL.
 FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport = {});
 
-// Where the reflector's environment map is captured from: the centre of the reflector's world bounds
-// (a teapot's node origin is its base), with a near distance that clips nothing outside the reflector
-// and a far distance that reaches every corner of the scene. Needs a reflector with a mesh.
-struct EnvmapCapture {
-    glm::dvec3 centre{0.0};
-    double near = 0.01;
-    double far = 100.0;
-};
+// Where the reflector's environment map is captured from (EnvmapCapture). Needs a reflector with a mesh.
 EnvmapCapture envmapCapture(const FrameInput& input);
+
+// The faces (or direct-fill components) pass 1 draws for the reflector's map settings.
+std::vector<EnvmapFace> envmapFaces(const Reflector& reflector, const EnvmapCapture& capture);
 
 // Hash of the map's settings (type, resolution, fill): a change needs new textures and a new map.
 std::uint64_t envmapSettingsKey(const Reflector& reflector);
@@ -93,5 +89,10 @@ void restrictToTile(FramePlan& plan, const math::PixelRect& tile, const PlanView
 // The mirror part of planning: the views of every mirror seen directly or through other mirrors, and the
 // passes that draw them, appended to `plan` in execution order (depth first).
 void planMirrors(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan);
+
+// The same planner for the environment map: the mirror views (to the reflector's own mirrorDepth, all
+// with the stencil technique) seen from the capture point in each of map.faces, their passes and skips.
+// Every view of a face is planned within that face: kMaxMirrorViews per face.
+void planEnvmapMirrors(const FrameInput& input, EnvmapPlan& map);
 
 } // namespace speculum::render

@@ -2,8 +2,9 @@
 // a planned mirror view), and whether its map must be rendered again under its update policy. The
 // signature of what the map sees is camera-independent, so a camera moving around a static scene reuses
 // the map.
+#include "render/envmap/Layout.hpp"
 #include "render/math/Projection.hpp"
-#include "render/plan/Hasher.hpp"
+#include "render/plan/FrameHashing.hpp"
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
@@ -13,32 +14,6 @@
 namespace speculum::render {
 
 namespace {
-
-// A texture by identity: its file path, or the decoded image's address (an embedded image replaced by
-// another is a different texture), and how it wraps.
-void addTexture(Hasher& h, const TextureSource& t) {
-    h.add(std::string_view(t.path));
-    h.add(static_cast<const void*>(t.image.get()));
-    h.add(static_cast<int>(t.wrapS));
-    h.add(static_cast<int>(t.wrapT));
-}
-
-void addMaterial(Hasher& h, const Material& m) {
-    h.add(m.color);
-    h.add(m.ambient);
-    h.add(m.diffuse);
-    h.add(m.specular);
-    h.add(m.shininess);
-    h.add(m.emission);
-    h.add(m.specularColor);
-    addTexture(h, m.texture);
-    addTexture(h, m.emissionTexture);
-    addTexture(h, m.normalTexture);
-    h.add(m.normalScale);
-    h.add(m.opacity);
-    h.add(static_cast<int>(m.alphaMode));
-    h.add(m.alphaCutoff);
-}
 
 // True if all eight corners lie on the negative side of one of the planes (clip-space rows): the box is
 // outside. Conservative: a box near a frustum edge may be reported inside.
@@ -86,6 +61,41 @@ EnvmapCapture envmapCapture(const FrameInput& input) {
     return capture;
 }
 
+std::vector<EnvmapFace> envmapFaces(const Reflector& reflector, const EnvmapCapture& capture) {
+    std::vector<EnvmapFace> faces;
+    if (reflector.map == ReflectorMap::Cube || reflector.fill == ReflectorFill::Resampled) {
+        // Cube maps and the resampled fill draw six faces of the reflector's resolution.
+        static const char* const names[6] = {"+X face", "−X face", "+Y face",
+                                             "−Y face", "+Z face", "−Z face"};
+        for (int f = 0; f < 6; ++f) {
+            EnvmapFace face;
+            face.label = names[f];
+            face.index = f;
+            face.view = envmap::cubeFaceView(f);
+            face.width = face.height = reflector.resolution;
+            faces.push_back(face);
+        }
+        return faces;
+    }
+    const envmap::MapType type = reflector.map == ReflectorMap::DualParaboloid
+                                     ? envmap::MapType::DualParaboloid
+                                     : envmap::MapType::TennisBall;
+    const envmap::MapLayout layout = envmap::makeLayout(type, reflector.resolution);
+    for (int c = 0; c < 2; ++c) {
+        EnvmapFace face;
+        // Paraboloid component 0 looks down −Z (envmap/Mapping.cpp); the tennis ball's parts wrap round.
+        face.label = type == envmap::MapType::DualParaboloid ? (c == 0 ? "−Z half" : "+Z half")
+                                                             : (c == 0 ? "part 1" : "part 2");
+        face.index = c;
+        face.warped = true;
+        face.warp = envmap::warpParameters(layout, c, capture.far);
+        face.width = layout.width;
+        face.height = layout.height;
+        faces.push_back(face);
+    }
+    return faces;
+}
+
 std::uint64_t envmapSettingsKey(const Reflector& reflector) {
     Hasher h;
     h.add(reflector.map);
@@ -94,18 +104,23 @@ std::uint64_t envmapSettingsKey(const Reflector& reflector) {
     return h.value;
 }
 
+// Field by field, what the map draws (tests/render/plan/test_signatures.cpp holds the fields left out and
+// why: the camera, names, the reflector's own surface, the mirrors' technique and blur, which the map's
+// stencil mirrors do not use).
 std::uint64_t envmapSignature(const FrameInput& input) {
+    const Reflector& reflector = *input.reflector;
     Hasher h;
-    h.add(envmapSettingsKey(*input.reflector));
+    h.add(envmapSettingsKey(reflector));
     const EnvmapCapture capture = envmapCapture(input);
     h.add(capture.centre);
     h.add(capture.near);
     h.add(capture.far);
-    h.add(input.reflector->world); // its shadows on the scene
-    h.add(input.reflector->mirrorDepth);
+    // Not drawn into its own map, but its shadows fall on the scene the map sees.
+    h.add(reflector.world);
+    h.add(static_cast<const void*>(reflector.mesh.get()));
+    h.add(reflector.mirrorDepth);
     h.add(input.settings.background);
     h.add(input.settings.ambient);
-    h.add(input.settings.mirrorDepth);
     for (const Light& light : input.lights) {
         h.add(light.type);
         h.add(light.position);
@@ -119,16 +134,19 @@ std::uint64_t envmapSignature(const FrameInput& input) {
         h.add(light.shadows.pcf);
     }
     for (const DrawItem& item : input.items) {
-        h.add(item.mesh.get());
+        h.add(static_cast<const void*>(item.mesh.get()));
         h.add(item.world);
         h.add(item.castsShadows);
         addMaterial(h, item.material);
     }
+    // The map's mirrors are drawn with the stencil technique and no blur (passes/EnvironmentMirrors.cpp),
+    // their surfaces with reflectivity, tint, Fresnel and material, as the main pass's stencil mirrors.
     for (const Mirror& mirror : input.mirrors) {
         h.add(mirror.world);
         h.add(mirror.size);
         h.add(mirror.reflectivity);
         h.add(mirror.tint);
+        h.add(mirror.fresnel);
         h.add(mirror.hasMaterial);
         addMaterial(h, mirror.material);
     }
@@ -225,6 +243,15 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     pass.reason = "renders the scene around the reflector, lit and shadowed, from its centre into " + what +
                   inMap + "; the reflector is " + where + "; " + why;
     plan.passes.push_back(std::move(pass));
+
+    EnvmapPlan map;
+    map.target = reflector.name;
+    map.capture = envmapCapture(input);
+    map.signature = envmapSignature(input);
+    map.settingsKey = envmapSettingsKey(reflector);
+    map.faces = envmapFaces(reflector, map.capture);
+    planEnvmapMirrors(input, map);
+    plan.envmap = std::move(map);
 }
 
 } // namespace speculum::render

@@ -1,6 +1,6 @@
 #include "render/reference/Tracer.hpp"
 
-#include "render/StillRenderer.hpp"
+#include "render/StillSize.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"

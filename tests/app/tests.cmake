@@ -2,10 +2,7 @@
 speculum_add_test(test_app_cli TIER gl USES_CLI
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_cli.cpp
     LIBS Qt6::Core PkgConfig::OIIO speculum_render)
-# The bench command's sweep planning and analysis, without GL.
-speculum_add_test(test_bench_sweep TIER unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_bench_sweep.cpp ${CMAKE_CURRENT_LIST_DIR}/test_bench_staging.cpp
-    LIBS speculum_bench Qt6::Core)
+# The sweep's planning and analysis without GL: tests/accuracy.
 # `speculum bench --quick` on tiny scenes made by the test (the binary renders on EGL: gl tier).
 speculum_add_test(test_bench_cli TIER gl USES_CLI
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_bench_cli.cpp

@@ -3,6 +3,8 @@
 // overflow the stack or exhaust memory (run with -rss_limit_mb and -timeout, see scripts/fuzz). For a
 // glTF input the buffers and images it names are written next to it (a triangle's floats, a 1x1 PNG) so
 // the fuzzer gets past "file not found" into the readers; an OBJ's mtllib gets a small material library.
+// The read runs in a child process (ModelImportProcess): a crash or hang inside Assimp is a refusal, not
+// a finding, and the CPU limit is set low so that a hang ends well inside libFuzzer's -timeout.
 #include "editor/document/ModelImport.hpp"
 #include "editor/document/ModelPrecheck.hpp"
 
@@ -138,6 +140,7 @@ const char* extensionFor(ModelContent content) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace speculum::document;
+    setModelImportCpuLimit(5);
     const std::string bytes(reinterpret_cast<const char*>(data), size);
     const ModelContent content = detail::identifyModelContent(bytes.data(), bytes.size());
     const fs::path model = folder() / (std::string("model") + extensionFor(content));

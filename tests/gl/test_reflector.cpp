@@ -223,6 +223,37 @@ TEST_F(ReflectorFrames, MirrorsInTheEnvironmentReflectToTheirDepthBudget) {
         << material.x << " " << material.y << " " << material.z;
 }
 
+// A mirror's Fresnel is drawn into the map (its surface in pass 1), so with update on-change toggling it
+// draws the map again instead of keeping the old reflection; an unchanged frame reuses it.
+TEST_F(ReflectorFrames, TogglingAMirrorsFresnelRedrawsAnOnChangeMap) {
+    FrameInput input = ballInRoom(ReflectorMap::Cube, ReflectorFill::Resampled);
+    input.reflector->update = ReflectorUpdate::OnChange;
+    Mirror mirror;
+    mirror.name = "Mirror";
+    mirror.world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(10, 0, 0)), glm::radians(90.0),
+                               glm::dvec3(0, 0, 1));
+    mirror.size = {30.0, 30.0};
+    mirror.reflectivity = 0.3;
+    input.mirrors.push_back(mirror);
+    auto envmapReason = [](const FrameReport& report) -> std::string {
+        for (const auto& p : report.plan.passes)
+            if (p.kind == PassKind::Envmap)
+                return p.reason;
+        return {};
+    };
+    renderImage(input, 64, 64);
+    ASSERT_FALSE(envmapReason(lastReport()).empty()) << "the first frame draws the map";
+    renderImage(input, 64, 64);
+    EXPECT_TRUE(envmapReason(lastReport()).empty()) << "nothing changed: the map is reused";
+    input.mirrors[0].fresnel = true;
+    renderImage(input, 64, 64);
+    EXPECT_NE(envmapReason(lastReport()).find("something it sees changed (update on-change)"),
+              std::string::npos)
+        << envmapReason(lastReport());
+    renderImage(input, 64, 64);
+    EXPECT_TRUE(envmapReason(lastReport()).empty()) << "redrawn once, then reused again";
+}
+
 // Two mirrors in the ball's environment, for every map and fill. The camera looks at the ball from −Z, so
 // the ball's centre reflects −Z, where mirror A faces it. A reflects the ball's surroundings towards +Z,
 // where mirror B stands behind the ball, turned 45° so that it reflects +X, where a white box stands (large:

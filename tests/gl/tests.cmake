@@ -6,7 +6,7 @@ speculum_add_test(test_gl_shadows TIER gl
 speculum_add_test(test_gl_reflector TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_reflector.cpp ${CMAKE_CURRENT_LIST_DIR}/test_frame_report.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_reflector_fill.cpp
-    LIBS speculum_render speculum_document)
+    LIBS speculum_render)
 # Stills in tiles (compared with untiled stills) and the GPU's size limits.
 speculum_add_test(test_gl_stills TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_tiled_stills.cpp ${CMAKE_CURRENT_LIST_DIR}/test_gpu_limits.cpp

@@ -1,7 +1,9 @@
 // The Accuracy dock on the chrome-ball demo: Compare with exact measures the current view against the
 // tracer and shows finite numbers and an error map (also over the viewport); a cancelled comparison leaves
 // the last numbers alone; a bench results.json loads into the chart, and clicking a point gives the
-// document that configuration's settings in one undo step that undo takes back.
+// document that configuration's settings in one undo step that undo takes back. Run sweep runs the bench's
+// sweep in-process: points fill the chart while it runs, the report's findings show when it is done,
+// Cancel stops it within about a second and leaves the chart as it was, and the document never changes.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
@@ -11,8 +13,10 @@
 #include <QChart>
 #include <QCheckBox>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScatterSeries>
 #include <QTemporaryDir>
@@ -73,6 +77,20 @@ QString writeResults(const QTemporaryDir& dir) {
     file.write(kResults);
     return path;
 }
+
+// A floor, a box and one shadowed light: the sweep has the scene and the PCF family only (five
+// configurations, two references), seconds on a software rasterizer.
+const char* kTinyScene = R"({
+  "format": "speculum-scene", "version": 1,
+  "settings": {"background": [0.2, 0.2, 0.25], "mirrorDepth": 1, "ambient": 0.2},
+  "camera": {"position": [0, 2, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fovY": 50, "near": 0.1, "far": 30},
+  "nodes": [
+    {"name": "Floor", "transform": {"scale": [4, 1, 4]}, "mesh": {"builtin": "plane"}},
+    {"name": "Box", "transform": {"translate": [0, 0.5, 0], "scale": [0.5, 0.5, 0.5]}, "mesh": {"builtin": "box"}},
+    {"name": "Light", "transform": {"translate": [1, 4, 2]},
+     "light": {"type": "point", "shadows": {"mapSize": 256, "pcf": 3}}}
+  ]
+})";
 
 const document::ReflectorComponent* reflectorOf(const document::Scene& scene) {
     const document::ReflectorComponent* found = nullptr;
@@ -219,6 +237,127 @@ TEST_F(AccuracyPanelTest, ClickingASweepPointAppliesItsSettingsAsOneUndoStep) {
     const QString message = panel().applyRecord(0);
     EXPECT_TRUE(message.contains(QStringLiteral("Not applied")) == false) << message.toStdString();
     EXPECT_EQ(m_window->scene().toData(), before); // the scene's own settings: nothing to change
+}
+
+TEST_F(AccuracyPanelTest, RunSweepFillsTheChartAsItGoesAndShowsTheFindings) {
+    QTemporaryDir dir;
+    const QString scene = dir.filePath(QStringLiteral("tiny.speculum.json"));
+    {
+        QFile file(scene);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(kTinyScene);
+    }
+    ASSERT_TRUE(m_window->openProjectFile(scene).ok());
+    ASSERT_TRUE(waitForFrames(*m_window, 2));
+    const document::SceneData before = m_window->scene().toData();
+    ASSERT_EQ(m_window->undoStack().count(), 0);
+
+    panel().findChild<QPushButton*>(QStringLiteral("runSweep"))->click();
+    ASSERT_TRUE(panel().sweeping());
+    EXPECT_FALSE(panel().findChild<QPushButton*>(QStringLiteral("runSweep"))->isEnabled());
+    EXPECT_TRUE(panel().findChild<QPushButton*>(QStringLiteral("cancelSweep"))->isEnabled());
+    EXPECT_TRUE(panel().findChild<QProgressBar*>(QStringLiteral("sweepProgress"))->isVisible());
+    // Points arrive before the sweep is done (the timing rounds come after every point is measured).
+    int seenWhileRunning = 0;
+    QString statusWhileRunning;
+    ASSERT_TRUE(waitFor(
+        [&] {
+            if (panel().sweeping() && panel().chart().pointCount() > 0 && seenWhileRunning == 0) {
+                seenWhileRunning = panel().chart().pointCount();
+                statusWhileRunning = text("sweepStatus");
+            }
+            return !panel().sweeping();
+        },
+        300000));
+    EXPECT_GT(seenWhileRunning, 0) << "no point in the chart before the sweep finished";
+    EXPECT_TRUE(statusWhileRunning.contains(QStringLiteral(" of "))) << statusWhileRunning.toStdString();
+    EXPECT_TRUE(text("sweepMessage").startsWith(QStringLiteral("5 configurations of tiny.speculum.json")))
+        << text("sweepMessage").toStdString();
+    EXPECT_EQ(panel().chart().pointCount(), 5);
+    EXPECT_EQ(panel().chart().seriesCount(), 2); // scene, shadows
+    const auto& records = panel().chart().results().records;
+    ASSERT_EQ(records.size(), 5u);
+    for (const auto& r : records) {
+        EXPECT_TRUE(std::isfinite(r.psnr)) << r.config.id;
+        EXPECT_GT(r.cpuMs, 0.0) << r.config.id;
+    }
+    // The report's findings, in plain words, in the panel.
+    const QString findings = panel().findingsText();
+    EXPECT_TRUE(findings.contains(QStringLiteral("Shadow filtering"))) << findings.toStdString();
+    EXPECT_TRUE(findings.contains(QStringLiteral("Best: **pcf "))) << findings.toStdString();
+    EXPECT_TRUE(findings.contains(QStringLiteral("Cheapest within 1 dB of the best")))
+        << findings.toStdString();
+    EXPECT_TRUE(panel().findChild<QWidget*>(QStringLiteral("sweepFindingsScroll"))->isVisible());
+    EXPECT_FALSE(panel().findChild<QProgressBar*>(QStringLiteral("sweepProgress"))->isVisible());
+    // The sweep measured the document; it changed nothing in it.
+    EXPECT_EQ(m_window->undoStack().count(), 0);
+    EXPECT_TRUE(m_window->undoStack().isClean());
+    EXPECT_EQ(m_window->scene().toData(), before);
+    // Its points apply like a loaded run's: pcf 1 is one undo step.
+    int pcf1 = -1;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        if (records[i].config.id == "pcf-1") {
+            pcf1 = int(i);
+        }
+    }
+    ASSERT_GE(pcf1, 0);
+    panel().applyRecord(pcf1);
+    EXPECT_EQ(m_window->undoStack().count(), 1);
+}
+
+TEST_F(AccuracyPanelTest, CancelStopsTheSweepAndLeavesEverythingAsItWas) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
+    const int pointsBefore = panel().chart().pointCount();
+    ASSERT_EQ(pointsBefore, 5);
+    const document::SceneData before = m_window->scene().toData();
+
+    panel().runSweep(true);
+    ASSERT_TRUE(panel().sweeping());
+    // Cancel in the middle: once the tracer has started (or points come in).
+    ASSERT_TRUE(waitFor(
+        [&] {
+            return text("sweepStatus").contains(QStringLiteral("%")) || panel().chart().pointCount() > 0 ||
+                   !panel().sweeping();
+        },
+        120000));
+    ASSERT_TRUE(panel().sweeping()) << "the chrome sweep ended before it could be cancelled";
+    QElapsedTimer stopping;
+    stopping.start();
+    panel().findChild<QPushButton*>(QStringLiteral("cancelSweep"))->click();
+    ASSERT_TRUE(waitFor([&] { return !panel().sweeping(); }, 30000));
+    const qint64 ms = stopping.elapsed();
+    std::printf("the sweep stopped %lld ms after Cancel\n", static_cast<long long>(ms));
+    EXPECT_LT(ms, 2000) << "Cancel should stop the sweep within about a second";
+    // Idle again, the chart as it was, the document untouched.
+    EXPECT_EQ(text("sweepMessage"), QStringLiteral("Sweep cancelled; nothing changed."));
+    EXPECT_TRUE(panel().findChild<QPushButton*>(QStringLiteral("runSweep"))->isEnabled());
+    EXPECT_FALSE(panel().findChild<QPushButton*>(QStringLiteral("cancelSweep"))->isEnabled());
+    EXPECT_FALSE(panel().findChild<QProgressBar*>(QStringLiteral("sweepProgress"))->isVisible());
+    EXPECT_EQ(panel().chart().pointCount(), pointsBefore);
+    EXPECT_TRUE(panel().findingsText().isEmpty());
+    EXPECT_EQ(m_window->undoStack().count(), 0);
+    EXPECT_EQ(m_window->scene().toData(), before);
+}
+
+// Pictures of the panel during and after a quick sweep of the chrome demo, when SPECULUM_SHOTS_DIR names
+// a folder for them (minutes on a software rasterizer, so not part of the usual run).
+TEST_F(AccuracyPanelTest, ScreenshotsOfAChromeSweep) {
+    const QString shots = qEnvironmentVariable("SPECULUM_SHOTS_DIR");
+    if (shots.isEmpty()) {
+        GTEST_SKIP() << "set SPECULUM_SHOTS_DIR to take the screenshots";
+    }
+    m_window->resize(1600, 1000);
+    panel().runSweep(true);
+    ASSERT_TRUE(waitFor([&] { return panel().chart().pointCount() >= 12 || !panel().sweeping(); }, 600000));
+    ASSERT_TRUE(panel().sweeping());
+    QApplication::processEvents();
+    ASSERT_TRUE(m_dock->grab().save(shots + QStringLiteral("/accuracy-during.png")));
+    ASSERT_TRUE(waitFor([&] { return !panel().sweeping(); }, 1200000));
+    ASSERT_FALSE(panel().findingsText().isEmpty()) << text("sweepMessage").toStdString();
+    QApplication::processEvents();
+    ASSERT_TRUE(m_dock->grab().save(shots + QStringLiteral("/accuracy-after.png")));
+    ASSERT_TRUE(m_window->grab().save(shots + QStringLiteral("/accuracy-window.png")));
 }
 
 } // namespace

@@ -3,12 +3,12 @@
 // and settings (and a cancel writes nothing), and pictures of the window with each demo scene.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Scene.hpp"
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/Gizmo.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/PropertyEditors.hpp"
 #include "editor/ui/RenderPassesPanel.hpp"
-#include "editor/ui/Selection.hpp"
+#include "editor/view/AnimationClock.hpp"
+#include "editor/view/Selection.hpp"
 
 #include <QDir>
 #include <QDoubleSpinBox>

@@ -8,13 +8,13 @@
 #include "editor/document/PickScene.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Scene.hpp"
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/Gizmo.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/PropertyEditors.hpp"
 #include "editor/ui/SceneTreeModel.hpp"
 #include "editor/ui/SceneTreePanel.hpp"
-#include "editor/ui/Selection.hpp"
+#include "editor/view/AnimationClock.hpp"
+#include "editor/view/Selection.hpp"
 
 #include <QAction>
 #include <QDir>
@@ -399,7 +399,7 @@ TEST_F(EditorWorkflow, ClickSelectsThroughMirrorsAndHandlesMoveWithOneUndoStep) 
 TEST_F(EditorWorkflow, CtrlClickInTheTreeSelectsSeveralNodesThatDeleteAndDuplicateAsOneStep) {
     openTeapot();
     ui::SceneTreeModel& tree = m_window->sceneTreeModel();
-    ui::Selection& selection = m_window->selection();
+    view::Selection& selection = m_window->selection();
     QUndoStack& undo = m_window->undoStack();
     const NodeId teapot = *nodeNamed("Teapot");
     const NodeId table = *nodeNamed("Table");
@@ -575,7 +575,7 @@ TEST_F(EditorWorkflow, CtrlClickInTheTreeSelectsSeveralNodesThatDeleteAndDuplica
 TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandleDragsActOnTheWholeSelection) {
     openTeapot();
     ui::Viewport& viewport = m_window->viewport();
-    ui::Selection& selection = m_window->selection();
+    view::Selection& selection = m_window->selection();
     const NodeId teapot = *nodeNamed("Teapot");
     const NodeId table = *nodeNamed("Table");
     const NodeId light = *nodeNamed("Light");

@@ -13,7 +13,7 @@
 #include "editor/document/NodeFactory.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
-#include "editor/ui/AnimationClock.hpp"
+#include "editor/view/AnimationClock.hpp"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -3,10 +3,9 @@
 // file leaves the open document alone.
 #include "editor/document/Commands.hpp"
 #include "editor/document/Scene.hpp"
-#include "editor/ui/AnimationClock.hpp"
 #include "editor/ui/MainWindow.hpp"
-#include "editor/ui/ViewCamera.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "editor/view/AnimationClock.hpp"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -376,36 +375,6 @@ TEST_F(MainWindowTest, MouseOrbitMovesOnlyTheView) {
     EXPECT_LT(patch(reset, {reset.width() / 2, reset.height() / 2}, 20)
                   .distance(patch(before, {before.width() / 2, before.height() / 2}, 20)),
               2.0);
-}
-
-TEST(ViewCamera, OrbitKeepsDistanceZoomScalesItPanMovesBoth) {
-    speculum::render::Camera scene;
-    scene.position = {0.0, 0.0, 1.0};
-    scene.target = {0.0, 0.0, -3.0};
-    speculum::ui::ViewCamera view;
-    view.reset(scene);
-
-    view.orbit(90.0, 0.0);
-    EXPECT_NEAR(glm::length(view.camera().position - view.camera().target), 4.0, 1e-9);
-    EXPECT_NEAR(view.camera().position.y, 0.0, 1e-9);
-    EXPECT_NEAR(std::abs(view.camera().position.x), 4.0, 1e-9); // a quarter turn around the target
-    view.orbit(0.0, 500.0);                                     // far past the pole: clamped, never flips
-    const glm::dvec3 offset = glm::normalize(view.camera().position - view.camera().target);
-    EXPECT_LT(std::abs(offset.y), 1.0);
-    EXPECT_GT(std::abs(offset.y), 0.99);
-
-    view.reset(scene);
-    view.zoom(0.5);
-    EXPECT_NEAR(glm::length(view.camera().position - view.camera().target), 2.0, 1e-9);
-    view.zoom(10.0);
-    EXPECT_NEAR(glm::length(view.camera().position - view.camera().target), 20.0, 1e-9);
-    EXPECT_GE(view.camera().far, scene.far + 16.0 - 1e-9); // the scene stays inside the far plane
-
-    view.reset(scene);
-    view.pan(0.25, 0.0);
-    EXPECT_GT(view.camera().position.x, 0.0);
-    EXPECT_DOUBLE_EQ(view.camera().position.x, view.camera().target.x);
-    EXPECT_NEAR(view.camera().target.z, -3.0, 1e-12);
 }
 
 } // namespace

@@ -10,8 +10,8 @@
 #include "editor/document/PickScene.hpp"
 #include "editor/document/Picking.hpp"
 #include "editor/document/Scene.hpp"
-#include "editor/ui/AnimationClock.hpp"
-#include "editor/ui/Selection.hpp"
+#include "editor/view/AnimationClock.hpp"
+#include "editor/view/Selection.hpp"
 
 #include <QFile>
 #include <QProgressBar>

@@ -21,10 +21,10 @@ speculum_add_test(test_crash_recovery TIER gui
 speculum_add_test(test_accuracy_panel TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_accuracy_panel.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
     LIBS speculum_ui Qt6::Test)
-# The shared Selection (several nodes, a current one) without a window.
-speculum_add_test(test_selection TIER gui
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_selection.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
-    LIBS speculum_ui Qt6::Test)
+# How a handle drag carries over to the other selected nodes (the Selection itself: tests/editor/view).
+speculum_add_test(test_follow_drag TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_follow_drag.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui)
 # Model import in the editor: worker thread, progress and cancel, one undo step, placement, pick hierarchy.
 speculum_add_test(test_model_import_gui TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_model_import.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
@@ -33,4 +33,8 @@ speculum_add_test(test_model_import_gui TIER gui
 # overflowing values) show an error, keep the event loop running and leave the open document as it was.
 speculum_add_test(test_hostile_files_gui TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_hostile_files.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)
+# issue 15: Esc during a handle drag restores the node and leaves no undo step and a clean document.
+speculum_add_test(test_handle_cancel TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_handle_cancel.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
     LIBS speculum_ui Qt6::Test)

@@ -86,6 +86,10 @@ TEST_F(CommandsTest, ASliderDragIsOneUndoStep) {
     NodeData c = scene.findNode(idOf("C"))->data();
     c.transform.scale.x = 3;
     stack.push(new SetNodeDataCommand(scene, idOf("C"), c, "Scale", "transform.scale#2"));
+    // Without a key each edit is a step of its own (an edit that changes nothing is none: exact undo).
+    c.transform.scale.x = 4;
+    stack.push(new SetNodeDataCommand(scene, idOf("C"), c));
+    c.transform.scale.x = 5;
     stack.push(new SetNodeDataCommand(scene, idOf("C"), c));
     stack.push(new SetNodeDataCommand(scene, idOf("C"), c));
     EXPECT_EQ(stack.count(), 5);

@@ -85,7 +85,7 @@ TEST(ProjectMaterials, DefaultsAreNotWritten) {
 
 TEST(ProjectMaterials, DemoScenesStillRoundTripByteForByte) {
     // The scenes written before the new fields existed (in canonical form).
-    for (const QString name :
+    for (const QString& name :
          {QStringLiteral("teapot.speculum.json"), QStringLiteral("mirrors.speculum.json"),
           QStringLiteral("chrome.speculum.json")}) {
         const QString path = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/") + name;

@@ -1,10 +1,13 @@
 // Reading a bench results.json and giving a document one configuration's settings: the Pareto front the
-// Accuracy chart draws, the errors a broken file gives, and an applied record that is one undo step and
-// names the settings the scene has no place for.
+// Accuracy chart draws and the parallax proxy it applies (both the accuracy library's), a results.json
+// the bench writes read back into the same records, the errors a broken file gives, and an applied record
+// that is one undo step and names the settings the scene has no place for.
 #include "DocumentTestSupport.hpp"
+#include "accuracy/Analysis.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/document/SweepResults.hpp"
+#include "render/mesh/Primitives.hpp"
 
 #include <QUndoStack>
 #include <gtest/gtest.h>
@@ -12,19 +15,72 @@
 namespace speculum::document {
 namespace {
 
-SweepRecord record(double ms, double psnr) {
-    SweepRecord r;
-    r.family = QStringLiteral("envmap");
+accuracy::Record record(double ms, double psnr) {
+    accuracy::Record r;
+    r.config.family = accuracy::Family::Envmap;
     r.gpuMs = ms;
     r.psnr = psnr;
     return r;
 }
 
+// The chart's front is the library's: frame time against whole-frame PSNR across every record.
 TEST(SweepResults, ParetoFrontKeepsWhatNothingFasterBeats) {
-    const std::vector<SweepRecord> records = {record(1, 20), record(2, 25), record(3, 22),
-                                              record(4, 30), record(4, 28), record(0.5, 18)};
-    EXPECT_EQ(paretoFront(records), (std::vector<std::size_t>{5, 0, 1, 3}));
-    EXPECT_TRUE(paretoFront({}).empty());
+    const std::vector<accuracy::Record> records = {record(1, 20), record(2, 25), record(3, 22),
+                                                   record(4, 30), record(4, 28), record(0.5, 18)};
+    EXPECT_EQ(accuracy::paretoFront(records), (std::vector<std::size_t>{5, 0, 1, 3}));
+    EXPECT_TRUE(accuracy::paretoFront(std::vector<accuracy::Record>{}).empty());
+}
+
+// What the bench writes is what the editor reads: one record type, through results.json and back.
+TEST(SweepResults, WhatTheBenchWritesTheEditorReads) {
+    const auto folder = test::freshTestFolder();
+    const std::string path = (folder / "results.json").string();
+    accuracy::RunInfo run;
+    run.scene = "chrome.speculum.json";
+    run.width = 480;
+    run.height = 270;
+    std::vector<accuracy::Record> records = {record(2.5, 31.0), record(3.5, 33.0)};
+    records[0].config.id = "envmap-cube-64";
+    records[0].config.label = "64";
+    records[0].config.series = "cube";
+    records[0].settings = {{"map", "cube"}, {"resolution", "64"}, {"parallax", "on"}};
+    records[1].config.family = accuracy::Family::Scene;
+    records[1].sceneSetting = true;
+    records[1].gpuMs = -1.0;
+    records[1].cpuMs = 7.25;
+    records[1].psnrReflector = 29.5;
+    ASSERT_TRUE(accuracy::writeJson(path, run, records).ok());
+    auto loaded = loadSweepResults(QString::fromStdString(path));
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_EQ(loaded->size(), "480x270");
+    ASSERT_EQ(loaded->records.size(), 2u);
+    EXPECT_EQ(loaded->records[0].settings, records[0].settings);
+    EXPECT_EQ(loaded->records[0].config.id, "envmap-cube-64");
+    EXPECT_DOUBLE_EQ(accuracy::frameMs(loaded->records[0]), 2.5);
+    EXPECT_DOUBLE_EQ(accuracy::frameMs(loaded->records[1]), 7.25);
+    EXPECT_EQ(loaded->records[1].psnrReflector, std::optional<double>(29.5));
+    EXPECT_EQ(accuracy::paretoFront(loaded->records), accuracy::paretoFront(records));
+}
+
+// "Parallax on" for a reflector without a proxy of its own is the sweep's box around the scene.
+TEST(SweepResults, TheParallaxProxyIsTheSweeps) {
+    render::FrameInput frame;
+    const auto box = std::make_shared<const render::MeshData>(render::makeBox());
+    frame.items.push_back({"Room", glm::dmat4(glm::dmat3(5.0)), box, {}, true});
+    render::Reflector ball;
+    ball.mesh = std::make_shared<const render::MeshData>(render::makeSphere(8));
+    ball.world = glm::dmat4(glm::dmat3(0.5));
+    frame.reflector = ball;
+    const accuracy::SceneTraits traits = accuracy::sceneTraits(frame, std::nullopt);
+    ASSERT_TRUE(traits.proxyMakesSense);
+    const auto proxy = sweepParallaxProxy(frame);
+    ASSERT_TRUE(proxy.has_value());
+    EXPECT_EQ(proxy->shape, ParallaxShape::Box);
+    EXPECT_EQ(proxy->min, traits.proxy.min);
+    EXPECT_EQ(proxy->max, traits.proxy.max);
+    // Outside the room there is nothing around the ball for a box to stand for.
+    frame.reflector->world[3] = glm::dvec4(0.0, 40.0, 0.0, 1.0);
+    EXPECT_FALSE(sweepParallaxProxy(frame).has_value());
 }
 
 TEST(SweepResults, BrokenFilesSayWhatIsWrong) {
@@ -51,12 +107,9 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
         openProject(scene, test::demoScenePath(), warnings).ok()); // teapot, marble mirror, no reflector
     const SceneData before = scene.toData();
     QUndoStack stack;
-    auto application = applySweepSettings(scene,
-                                          {{QStringLiteral("map"), QStringLiteral("cube")},
-                                           {QStringLiteral("technique"), QStringLiteral("texture")},
-                                           {QStringLiteral("mirrorDepth"), QStringLiteral("1")},
-                                           {QStringLiteral("tessellation"), QStringLiteral("4")}},
-                                          QStringLiteral("Apply Sweep Setting mirror-technique texture"));
+    auto application = applySweepSettings(
+        scene, {{"map", "cube"}, {"technique", "texture"}, {"mirrorDepth", "1"}, {"tessellation", "4"}},
+        QStringLiteral("Apply Sweep Setting mirror-technique texture"));
     ASSERT_TRUE(application.command);
     ASSERT_EQ(application.skipped.size(), 1);
     EXPECT_EQ(application.skipped.front(), QStringLiteral("map = cube: the scene has no curved reflector"));
@@ -81,9 +134,8 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
     EXPECT_EQ(scene.toData(), before);
 
     // Nothing to change: no command.
-    auto same = applySweepSettings(
-        scene, {{QStringLiteral("mirrorDepth"), QString::number(scene.settings().mirrorDepth)}},
-        QStringLiteral("same"));
+    auto same = applySweepSettings(scene, {{"mirrorDepth", std::to_string(scene.settings().mirrorDepth)}},
+                                   QStringLiteral("same"));
     EXPECT_FALSE(same.command);
     EXPECT_TRUE(same.skipped.isEmpty());
 }

@@ -313,7 +313,7 @@ TEST_F(HostileModels, PlyWithoutEndOfHeaderIsRefused) {
                         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                         "property float y\nproperty float z\nenc_header\n0 0 0\n1 0 0\n0 1 0\n"),
                   "the PLY header has no end_header line");
-    expectRefused(write("garbled.ply", "ply\nformat ascii 1\x9a0\n<blendervertex 3\nproperty float x\n"
+    expectRefused(write("garbled.ply", "ply\nformat ascii 1\xa0\n<blendervertex 3\nproperty float x\n"
                                        "end_header\n0 0 0\n"),
                   "the PLY header line 4 is not understood: 'property float x'");
 }

@@ -19,3 +19,9 @@ speculum_add_test(test_editor_import_parts TIER unit
 speculum_add_test(test_editor_import_hostile TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_hostile_models.cpp
     LIBS speculum_document)
+# The read in a child process: Assimp crashing, hanging (CPU limit) or cancelled mid-read is a one-line
+# refusal naming the file and leaves no child behind; what the child sends equals the in-process import;
+# the stream between them round-trips every field and refuses a truncated one.
+speculum_add_test(test_editor_import_child TIER unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_import_child.cpp
+    LIBS speculum_document)

@@ -162,8 +162,8 @@ TEST(RecoveryFailures, AutosaveOntoAFillingDiskKeepsTheEarlierRecovery) {
     ASSERT_EQ(child.exitCode, 0) << child.text;
     EXPECT_NE(child.text.find("recovery-4242.speculum.json"), std::string::npos) << child.text;
     EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), before) << "no temporary file left";
-    for (std::size_t i = 0; i < before.size(); ++i)
-        EXPECT_EQ(readAll(dir.filePath(before[int(i)])), beforeBytes[i]) << before[int(i)].toStdString();
+    for (qsizetype i = 0; i < before.size(); ++i)
+        EXPECT_EQ(readAll(dir.filePath(before[i])), beforeBytes[std::size_t(i)]) << before[i].toStdString();
 }
 
 // The note alone failing (the scene fits, the note does not): the earlier note is kept whole.

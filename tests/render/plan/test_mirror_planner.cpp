@@ -106,10 +106,12 @@ TEST(MirrorPlanner, NearlyEdgeOnMirrorIsSkippedOrFiniteNeverNan) {
         const FramePlan plan = planFrame(input, {}, kViewport);
         for (const auto& v : plan.views)
             for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 4; ++r)
+                for (int r = 0; r < 4; ++r) {
                     ASSERT_TRUE(std::isfinite(v.projection[c][r])) << angle;
-        if (plan.views.empty())
+                }
+        if (plan.views.empty()) {
             EXPECT_FALSE(skipReason(plan, "M").empty()) << angle;
+        }
     }
 }
 

@@ -110,9 +110,11 @@ TEST(ReflectorPlanner, ReflectorSeenOnlyInAMirrorGetsItsEnvmap) {
     input.mirrors.push_back(mirror);
     FramePlan plan = planFrame(input, {}, {320, 240});
     ASSERT_TRUE(hasEnvmap(plan)) << skipReason(plan, "Ball");
-    for (const auto& p : plan.passes)
-        if (p.kind == PassKind::Envmap)
+    for (const auto& p : plan.passes) {
+        if (p.kind == PassKind::Envmap) {
             EXPECT_NE(p.reason.find("seen in Mirror"), std::string::npos) << p.reason;
+        }
+    }
 
     // The reason says how deep the mirrors reflect inside the map.
     for (int depth : {0, 1, 3}) {

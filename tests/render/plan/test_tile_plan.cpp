@@ -21,10 +21,10 @@ TEST(TileProjection, PutsPointsOnTheSamePixelsOfTheTileAtTheSameDepth) {
     const glm::dmat4 image =
         math::jitter(math::perspective(60.0, 301.0 / 173.0, 0.1, 50.0), 0.25, -0.25, 301, 173);
     // A tile reaching past the image's top-right corner and one starting left of and below it.
-    for (const glm::ivec4 tile : {glm::ivec4(248, 116, 62, 58), glm::ivec4(-10, -6, 64, 40)}) {
+    for (const glm::ivec4& tile : {glm::ivec4(248, 116, 62, 58), glm::ivec4(-10, -6, 64, 40)}) {
         const glm::dmat4 cropped = math::tileProjection(image, tile.x, tile.y, tile.z, tile.w, 301, 173);
-        for (const glm::dvec4 p : {glm::dvec4(0.3, -0.2, -2.0, 1.0), glm::dvec4(-4.0, 1.5, -9.0, 1.0),
-                                   glm::dvec4(0.01, 0.02, -0.5, 1.0)}) {
+        for (const glm::dvec4& p : {glm::dvec4(0.3, -0.2, -2.0, 1.0), glm::dvec4(-4.0, 1.5, -9.0, 1.0),
+                                    glm::dvec4(0.01, 0.02, -0.5, 1.0)}) {
             const glm::dvec3 a = window(image * p, 301, 173);
             const glm::dvec3 b = window(cropped * p, tile.z, tile.w);
             EXPECT_NEAR(b.x, a.x - tile.x, 1e-9);

@@ -1,5 +1,6 @@
 speculum_add_test(test_render_plan TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_planner.cpp ${CMAKE_CURRENT_LIST_DIR}/test_mirror_planner.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_reflector_planner.cpp ${CMAKE_CURRENT_LIST_DIR}/test_tile_plan.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_gpu_limits.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_gpu_limits.cpp ${CMAKE_CURRENT_LIST_DIR}/test_signatures.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_envmap_mirrors.cpp
     LIBS speculum_render)

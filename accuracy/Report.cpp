@@ -1,0 +1,415 @@
+#include "accuracy/Report.hpp"
+
+#include "accuracy/Analysis.hpp"
+#include "accuracy/Plot.hpp"
+#include "render/io/AtomicFile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace speculum::accuracy {
+
+namespace {
+
+const std::vector<Family> kFamilies = {Family::Envmap,      Family::Parallax, Family::MirrorTechnique,
+                                       Family::MirrorDepth, Family::Shadows,  Family::Tessellation};
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+std::string ms(double value) {
+    return format(value < 10.0 ? "%.2f ms" : "%.1f ms", value);
+}
+
+std::string db(double value) {
+    return format("%.2f dB", value);
+}
+
+std::string mib(std::size_t bytes) {
+    return format("%.2f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+}
+
+std::string familyTitle(Family family) {
+    switch (family) {
+    case Family::Envmap:
+        return "Environment map: type, fill and resolution";
+    case Family::Parallax:
+        return "Parallax correction of the reflector";
+    case Family::MirrorTechnique:
+        return "Planar mirror technique";
+    case Family::MirrorDepth:
+        return "Planar mirror recursion depth";
+    case Family::Shadows:
+        return "Shadow filtering (PCF kernel)";
+    case Family::Tessellation:
+        return "Teapot tessellation";
+    default:
+        return "The scene as saved";
+    }
+}
+
+std::string familyIntro(Family family) {
+    switch (family) {
+    case Family::Envmap:
+        return "Each map type (the cube; the dual paraboloid and the tennis ball, each filled directly "
+               "through "
+               "the vertex warp or resampled from a cube) at each resolution n, everything else as saved.";
+    case Family::Parallax:
+        return "The scene's map without and with parallax correction (the scene's own proxy, or a box around "
+               "everything the map sees), at each resolution.";
+    case Family::MirrorTechnique:
+        return "Every planar mirror drawn with the stencil technique, then with the texture technique. The "
+               "reference is the sharp reflection, so a mirror's blur (which only the texture technique "
+               "draws) "
+               "counts as error.";
+    case Family::MirrorDepth:
+        return "settings.mirrorDepth from 1 up; the reference recurses 16 levels, so what a shallower depth "
+               "cuts off counts as error.";
+    case Family::Shadows:
+        return "The PCF kernel of every shadowed light, against exact hard shadows: how close each kernel "
+               "comes to the true shadow, aliasing and softening included.";
+    case Family::Tessellation:
+        return "The built-in teapots' tessellation, against a reference traced with them at tessellation "
+               "64: the error of the coarser meshes' facets and silhouettes.";
+    default:
+        return {};
+    }
+}
+
+// A family's rows with everything the report and the plot need to know about them.
+struct FamilyView {
+    Family family = Family::Scene;
+    std::vector<const Record*> rows;
+    Metric metric = Metric::Psnr;
+    bool gpu = true;
+    std::vector<Point> points;
+    std::vector<std::size_t> front;
+    std::size_t best = 0;
+    std::optional<std::size_t> cheapest;
+    std::optional<std::size_t> own;
+    std::vector<std::string> series; // in order of first appearance
+};
+
+FamilyView analyse(Family family, const std::vector<Record>& records) {
+    FamilyView v;
+    v.family = family;
+    for (const Record& r : records)
+        if (r.config.family == family)
+            v.rows.push_back(&r);
+    v.metric = effectiveMetric(v.rows, focusMetric(family));
+    v.gpu = allGpuTimed(v.rows);
+    for (std::size_t i = 0; i < v.rows.size(); ++i) {
+        const Record& r = *v.rows[i];
+        v.points.push_back({costOf(r, v.gpu), focusValue(r, v.metric)});
+        if (r.sceneSetting && !v.own)
+            v.own = i;
+        if (std::find(v.series.begin(), v.series.end(), r.config.series) == v.series.end())
+            v.series.push_back(r.config.series);
+        const Point& p = v.points.back();
+        const Point& b = v.points[v.best];
+        if (p.psnr > b.psnr || (p.psnr == b.psnr && p.cost < b.cost))
+            v.best = i;
+    }
+    v.front = paretoFront(v.points);
+    v.cheapest = cheapestWithin(v.points, 1.0);
+    return v;
+}
+
+std::string costName(bool gpu) {
+    return gpu ? "GPU" : "CPU";
+}
+
+PlotSpec plotOf(const FamilyView& v, const RunInfo& run) {
+    PlotSpec spec;
+    spec.title = familyTitle(v.family) + ": error against frame time";
+    spec.subtitle = run.sceneName + " at " + std::to_string(run.width) + "x" + std::to_string(run.height) +
+                    ", median of " + std::to_string(run.timedFrames) +
+                    " rounds, every map re-rendered each frame";
+    spec.xLabel = costName(v.gpu) + " time per frame (ms, lower is better)";
+    spec.yLabel = metricAxisLabel(v.metric);
+    spec.series = v.series;
+    for (std::size_t i = 0; i < v.rows.size(); ++i) {
+        const Record& r = *v.rows[i];
+        PlotPoint pt;
+        pt.x = v.points[i].cost;
+        pt.y = v.points[i].psnr;
+        pt.label = r.config.label;
+        pt.series =
+            static_cast<int>(std::find(v.series.begin(), v.series.end(), r.config.series) - v.series.begin());
+        pt.sceneSetting = r.sceneSetting;
+        spec.points.push_back(pt);
+    }
+    spec.front = v.front;
+    return spec;
+}
+
+std::string describe(const FamilyView& v, std::size_t i) {
+    const Record& r = *v.rows[i];
+    return "**" + displayName(r.config) + "**: " + db(v.points[i].psnr) + " at " + ms(v.points[i].cost) +
+           " " + costName(v.gpu) + ", " + mib(r.memory.total()) + " of render targets";
+}
+
+// The envmap family's cost of each map type at one error level: the best level every type reaches.
+void equalError(std::ostringstream& md, const FamilyView& v) {
+    std::vector<std::vector<Point>> series(v.series.size());
+    std::vector<std::vector<std::size_t>> rowsOf(v.series.size());
+    for (std::size_t i = 0; i < v.rows.size(); ++i) {
+        const auto s = static_cast<std::size_t>(
+            std::find(v.series.begin(), v.series.end(), v.rows[i]->config.series) - v.series.begin());
+        series[s].push_back(v.points[i]);
+        rowsOf[s].push_back(i);
+    }
+    const double target = commonTarget(series);
+    md << "**Cost at equal error.** Every map type reaches " << db(target)
+       << " on the reflector (the best the weakest type manages). What that error costs with each type "
+          "(interpolated linearly in PSNR between the two resolutions around it; \"needs\" is the first "
+          "swept "
+          "resolution that reaches it):\n\n";
+    md << "| map type | " << costName(v.gpu) << " time at " << db(target)
+       << " | needs | its time | its memory |\n|---|---|---|---|---|\n";
+    std::optional<double> cheapest;
+    std::string cheapestName;
+    for (std::size_t s = 0; s < series.size(); ++s) {
+        const CostAtError at = costAtError(series[s], target);
+        md << "| " << v.series[s] << " | ";
+        if (!at.firstReaching) {
+            md << "not reached | | | |\n";
+            continue;
+        }
+        const std::size_t row = rowsOf[s][*at.firstReaching];
+        const Record& r = *v.rows[row];
+        md << ms(*at.interpolatedCost) << " | n = " << r.config.label << " | " << ms(v.points[row].cost)
+           << " | " << mib(r.memory.total()) << " |\n";
+        if (!cheapest || *at.interpolatedCost < *cheapest) {
+            cheapest = *at.interpolatedCost;
+            cheapestName = v.series[s];
+        }
+    }
+    if (cheapest)
+        md << "\nAt this error the cheapest map type is **" << cheapestName << "** (" << ms(*cheapest)
+           << ").\n";
+    md << "\n";
+}
+
+// What a family's sweep found, one sentence (or a few) per line, in Markdown.
+std::vector<std::string> findingLines(const FamilyView& v, const std::string& note) {
+    std::vector<std::string> lines;
+    lines.push_back("Best: " + describe(v, v.best) + ".");
+    if (v.cheapest) {
+        std::string line = "Cheapest within 1 dB of the best: " + describe(v, *v.cheapest);
+        if (*v.cheapest != v.best) {
+            const Record& c = *v.rows[*v.cheapest];
+            const Record& b = *v.rows[v.best];
+            line += " (" + ms(v.points[v.best].cost - v.points[*v.cheapest].cost) + " less";
+            if (b.memory.total() > c.memory.total())
+                line += ", " + mib(b.memory.total() - c.memory.total()) + " less memory";
+            line += " than the best)";
+        }
+        lines.push_back(line + ".");
+    }
+    if (v.own)
+        lines.push_back("The scene's own setting: " + describe(v, *v.own) + ".");
+    if (v.front.size() >= 2) {
+        std::string line = "Each step along the Pareto front (cheapest first): ";
+        for (std::size_t k = 1; k < v.front.size(); ++k) {
+            const std::size_t a = v.front[k - 1], b = v.front[k];
+            line += (k > 1 ? "; " : "") + displayName(v.rows[a]->config) + " → " +
+                    displayName(v.rows[b]->config) + " costs +" + ms(v.points[b].cost - v.points[a].cost) +
+                    " for +" + db(v.points[b].psnr - v.points[a].psnr);
+        }
+        lines.push_back(line + ".");
+    }
+    const auto [low, high] = std::minmax_element(
+        v.points.begin(), v.points.end(), [](const Point& a, const Point& b) { return a.psnr < b.psnr; });
+    if (v.rows.size() >= 2 && high->psnr - low->psnr < 1.0)
+        lines.push_back(
+            "Across this family the error changes by only " + db(high->psnr - low->psnr) +
+            ": an error these settings do not touch dominates here (the error maps show where), so "
+            "the cheapest setting loses almost nothing.");
+    if (!note.empty())
+        lines.push_back(note);
+    return lines;
+}
+
+void familySection(std::ostringstream& md, const FamilyView& v, const std::string& note) {
+    const std::string plot = "plot-" + familyName(v.family) + ".png";
+    md << "## " << familyTitle(v.family) << "\n\n"
+       << familyIntro(v.family) << " Judged by "
+       << metricAxisLabel(v.metric).substr(0, metricAxisLabel(v.metric).find(" (")) << " against the **"
+       << referenceName(v.rows.front()->config.reference) << "** reference.\n\n";
+    if (v.rows.size() >= 2)
+        md << "![" << familyTitle(v.family) << "](" << plot << ")\n\n";
+    for (const std::string& line : findingLines(v, note))
+        md << "- " << line << "\n";
+    md << "\n";
+    if (v.family == Family::Envmap && v.series.size() >= 2)
+        equalError(md, v);
+    md << "| setting | " << costName(v.gpu)
+       << " ms | CPU ms | memory | PSNR | PSNR mirrors | PSNR reflector |"
+       << " error map |\n|---|---|---|---|---|---|---|---|\n";
+    for (const Record* r : v.rows) {
+        md << "| " << displayName(r->config) << (r->sceneSetting ? " (scene)" : "") << " | "
+           << format("%.2f", costOf(*r, v.gpu)) << " | " << format("%.2f", r->cpuMs) << " | "
+           << mib(r->memory.total()) << " | " << format("%.2f", r->psnr) << " | "
+           << (r->psnrMirrors ? format("%.2f", *r->psnrMirrors) : "–") << " | "
+           << (r->psnrReflector ? format("%.2f", *r->psnrReflector) : "–") << " | [map](" << r->errorMap
+           << ") |\n";
+    }
+    md << "\n";
+}
+
+// When parallax correction gains more than resolution does, resolution is not what limits the reflector:
+// worth saying next to the map sweep, whose flat curves would otherwise puzzle.
+std::string parallaxNote(const std::vector<FamilyView>& views) {
+    const FamilyView* envmap = nullptr;
+    const FamilyView* parallax = nullptr;
+    for (const FamilyView& v : views) {
+        envmap = v.family == Family::Envmap ? &v : envmap;
+        parallax = v.family == Family::Parallax ? &v : parallax;
+    }
+    if (!envmap || !parallax || !envmap->own || !parallax->own)
+        return {};
+    const std::string ownSeries = envmap->rows[*envmap->own]->config.series;
+    double low = 1e300, high = -1e300;
+    for (std::size_t i = 0; i < envmap->rows.size(); ++i)
+        if (envmap->rows[i]->config.series == ownSeries) {
+            low = std::min(low, envmap->points[i].psnr);
+            high = std::max(high, envmap->points[i].psnr);
+        }
+    const double gain = parallax->points[parallax->best].psnr - parallax->points[*parallax->own].psnr;
+    if (gain <= 2.0 * (high - low) || gain < 1.0)
+        return {};
+    return "Resolution moves the scene's map type (" + ownSeries + ") by only " + db(high - low) +
+           " here, while parallax correction gains " + db(gain) +
+           " (next section): looking the map up from its centre, not from the surface, is the error that "
+           "dominates, so more texels buy little until it is corrected.";
+}
+
+std::vector<FamilyView> analyseAll(const std::vector<Record>& records) {
+    std::vector<FamilyView> views;
+    for (Family f : kFamilies)
+        if (FamilyView v = analyse(f, records); !v.rows.empty())
+            views.push_back(std::move(v));
+    return views;
+}
+
+} // namespace
+
+std::vector<FamilyFindings> findings(const std::vector<Record>& records) {
+    const std::vector<FamilyView> views = analyseAll(records);
+    std::vector<FamilyFindings> out;
+    for (const FamilyView& v : views)
+        out.push_back({v.family, familyTitle(v.family),
+                       metricAxisLabel(v.metric).substr(0, metricAxisLabel(v.metric).find(" (")),
+                       findingLines(v, v.family == Family::Envmap ? parallaxNote(views) : std::string())});
+    return out;
+}
+
+std::string displayName(const Configuration& c) {
+    switch (c.family) {
+    case Family::Envmap:
+    case Family::Parallax:
+        return c.series + " " + c.label;
+    case Family::Tessellation:
+        return "tessellation " + c.label;
+    default:
+        return c.label;
+    }
+}
+
+render::Status writeReport(const std::filesystem::path& folder, const RunInfo& run,
+                           const std::vector<Record>& records) {
+    const std::vector<FamilyView> views = analyseAll(records);
+    for (const FamilyView& v : views)
+        if (v.rows.size() >= 2) {
+            const std::string plot = (folder / ("plot-" + familyName(v.family) + ".png")).string();
+            if (render::Status s = writePlot(plot, plotOf(v, run)); !s)
+                return s;
+        }
+
+    std::ostringstream md;
+    md << "# speculum bench: " << run.sceneName << "\n\n";
+    md << "Frame " << run.width << "x" << run.height << " of `" << run.scene << "` on " << run.renderer
+       << ". " << (run.quick ? "Quick sweep. " : "") << "Times are medians over " << run.timedFrames
+       << " rounds; each round renders every distinct configuration once, after one untimed frame that "
+          "absorbs the switch, so load from other processes spreads over all configurations alike (still, "
+          "compare times within one run, not across runs on a busy machine). Every frame renders all of its "
+          "shadow and environment maps again, so the times are what the settings cost an animated scene (a "
+          "static one reuses them). "
+          "GPU time is the sum of the passes' timer queries, CPU time the renderer's own clock for the "
+          "frame. "
+          "Memory counts the render targets the frame uses (colour and depth buffers, reflection textures, "
+          "shadow maps, the environment map with its mip chain), from their sizes and formats. Errors are "
+          "measured on sRGB values, as a viewer sees them; PSNR has a peak of 1.\n\n";
+
+    const Record* scene = nullptr;
+    for (const Record& r : records)
+        if (r.config.family == Family::Scene)
+            scene = &r;
+    md << "## References\n\nEvery configuration is compared with an exact ray-traced image of the same "
+          "frame, "
+          "traced once per run at the same size with one sample per pixel (so edges alias alike in both). "
+          "The "
+          "tracer does not depend on map type, resolution, fill, parallax or mirror technique, so those "
+          "share the scene's reference; the settings it does depend on get their own:\n\n";
+    md << "| reference | what it is | traced in | image |\n|---|---|---|---|\n";
+    for (const ReferenceInfo& ref : run.references)
+        md << "| " << referenceName(ref.kind) << " | " << referenceDescription(ref.kind) << " | "
+           << ms(ref.traceMs) << " (" << ref.threads << " threads) | [" << ref.image << "](" << ref.image
+           << ") |\n";
+    md << "\n";
+    for (const ReferenceInfo& ref : run.references)
+        if (ref.kind == ReferenceKind::Scene && scene) {
+            const bool gpu = scene->gpuMs >= 0.0;
+            const double raster = gpu ? scene->gpuMs : scene->cpuMs;
+            const double ratio = ref.traceMs / std::max(raster, 1e-3);
+            md << "**The tracer's time for the same frame:** " << ms(ref.traceMs) << " on " << ref.threads
+               << " CPU threads, " << format(ratio < 10.0 ? "%.1f" : "%.0f", ratio)
+               << " times the rasterizer's " << ms(raster) << " (" << costName(gpu)
+               << ") with the scene's own settings, which come within " << db(scene->psnr)
+               << " PSNR of it over the whole frame";
+            if (scene->psnrReflector)
+                md << " (" << db(*scene->psnrReflector) << " on the reflector)";
+            if (scene->psnrMirrors)
+                md << " (" << db(*scene->psnrMirrors) << " on the mirrors)";
+            md << ".\n\n";
+        }
+
+    md << "## Summary\n\n| family | judged by | scene's own setting | best | cheapest within 1 dB of the "
+          "best |\n"
+          "|---|---|---|---|---|\n";
+    for (const FamilyView& v : views) {
+        auto cell = [&](std::optional<std::size_t> i) {
+            if (!i)
+                return std::string("–");
+            return displayName(v.rows[*i]->config) + ": " + db(v.points[*i].psnr) + ", " +
+                   ms(v.points[*i].cost);
+        };
+        md << "| " << familyName(v.family) << " | " << metricField(v.metric) << " | " << cell(v.own) << " | "
+           << cell(v.best) << " | " << cell(v.cheapest) << " |\n";
+    }
+    if (views.empty())
+        md << "| – | | | | |\n\nThe scene has nothing to sweep: no curved reflector, no planar mirror, no "
+              "shadowed light and no built-in teapot.\n";
+    md << "\n";
+    for (const FamilyView& v : views)
+        familySection(md, v, v.family == Family::Envmap ? parallaxNote(views) : std::string());
+
+    md << "## Files\n\n`results.csv` and `results.json` hold one record per configuration (the same fields); "
+          "`render.png` is the frame with the scene's own settings; `reference*.png` the exact images; "
+          "`errors/<id>.png` the error map of each configuration (per-pixel error on a fixed scale: black "
+          "none, pale yellow a quarter of the sRGB range or more).\n";
+
+    const std::filesystem::path path = folder / "report.md";
+    // Staged and checked (render::AtomicFile): a full disk is an error, never a truncated report.
+    return render::writeFileAtomically(path.string(), md.str());
+}
+
+} // namespace speculum::accuracy

@@ -1,0 +1,248 @@
+#include "accuracy/Results.hpp"
+
+#include "render/io/AtomicFile.hpp"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace speculum::accuracy {
+
+namespace {
+
+// Enough digits that a value read back from the CSV equals the JSON's to 1e-9.
+std::string number(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.10g", value);
+    return text;
+}
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos)
+        return text;
+    std::string quoted = "\"";
+    for (char c : text)
+        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+std::string settingOf(const Record& r, const std::string& name) {
+    for (const auto& [key, value] : r.settings)
+        if (key == name)
+            return value;
+    return {};
+}
+
+QJsonValue orNull(const std::optional<double>& v) {
+    return v ? QJsonValue(*v) : QJsonValue(QJsonValue::Null);
+}
+
+QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+// Staged and checked (render::AtomicFile): a full disk is an error, never a truncated file.
+render::Status writeText(const std::string& path, const std::string& text) {
+    return render::writeFileAtomically(path, text);
+}
+
+std::optional<double> finite(const QJsonValue& v) {
+    if (v.isDouble() && std::isfinite(v.toDouble()))
+        return v.toDouble();
+    return std::nullopt;
+}
+
+std::size_t bytes(const QJsonValue& v) {
+    const std::optional<double> n = finite(v);
+    return n && *n > 0.0 ? static_cast<std::size_t>(*n) : 0;
+}
+
+// The settings in the order effectiveSettings gives them (the file's object is unordered), then any this
+// version does not know, which applying the record names as such.
+Settings settingsOf(const QJsonObject& object) {
+    Settings settings;
+    auto text = [](const QJsonValue& v) {
+        return (v.isDouble() ? QString::number(v.toDouble()) : v.toString()).toStdString();
+    };
+    for (const std::string& name : kSettingNames)
+        if (object.contains(q(name)))
+            settings.emplace_back(name, text(object.value(q(name))));
+    for (auto it = object.begin(); it != object.end(); ++it)
+        if (std::find(kSettingNames.begin(), kSettingNames.end(), it.key().toStdString()) ==
+            kSettingNames.end())
+            settings.emplace_back(it.key().toStdString(), text(*it));
+    return settings;
+}
+
+} // namespace
+
+double frameMs(const Record& record) {
+    return record.gpuMs >= 0.0 ? record.gpuMs : record.cpuMs;
+}
+
+bool ResultsFile::gpuTimes() const {
+    return std::any_of(records.begin(), records.end(), [](const Record& r) { return r.gpuMs >= 0.0; });
+}
+
+std::string ResultsFile::size() const {
+    return run.width > 0 && run.height > 0 ? std::to_string(run.width) + "x" + std::to_string(run.height)
+                                           : "?";
+}
+
+render::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& name) {
+    if (root.value("format").toString() != QStringLiteral("speculum-bench"))
+        return render::Error{name + ": not a speculum bench result (format is not \"speculum-bench\")"};
+    ResultsFile out;
+    RunInfo& run = out.run;
+    run.scene = root.value("scene").toString().toStdString();
+    run.sceneName = QString::fromStdString(run.scene).section(QLatin1Char('/'), -1).toStdString();
+    const QJsonValue size = root.value("size");
+    if (size.isArray()) {
+        run.width = size.toArray().at(0).toInt();
+        run.height = size.toArray().at(1).toInt();
+    } else {
+        const QStringList parts = size.toString().split(QLatin1Char('x'));
+        if (parts.size() == 2) {
+            run.width = parts[0].toInt();
+            run.height = parts[1].toInt();
+        }
+    }
+    run.quick = root.value("quick").toBool();
+    run.warmUpFrames = root.value("warmUpFrames").toInt();
+    run.timedFrames = root.value("timedFrames").toInt();
+    run.renderer = root.value("renderer").toString().toStdString();
+    for (const QJsonValue& value : root.value("references").toArray()) {
+        const QJsonObject ref = value.toObject();
+        const auto kind = referenceFromName(ref.value("name").toString().toStdString());
+        if (!kind)
+            continue; // a reference of a newer version: nothing here refers to it
+        run.references.push_back({*kind, finite(ref.value("traceMs")).value_or(0.0),
+                                  ref.value("threads").toInt(1),
+                                  ref.value("image").toString().toStdString()});
+    }
+    const QJsonArray results = root.value("results").toArray();
+    for (qsizetype i = 0; i < results.size(); ++i) {
+        const QJsonObject r = results.at(i).toObject();
+        const std::string where = name + ": results[" + std::to_string(i) + "].";
+        const std::string family = r.value("family").toString().toStdString();
+        if (family.empty())
+            return render::Error{where + "family: expected a name"};
+        const auto cpu = finite(r.value("cpuMs"));
+        const auto psnr = finite(r.value("psnr"));
+        const auto rmse = finite(r.value("rmse"));
+        if (!cpu || !psnr || !rmse)
+            return render::Error{where + (!cpu ? "cpuMs" : !psnr ? "psnr" : "rmse") + ": expected a number"};
+        const std::optional<Family> known = familyFromName(family);
+        if (!known) {
+            ++out.unknownFamilies;
+            continue;
+        }
+        Record record;
+        record.config.family = *known;
+        record.config.id = r.value("id").toString().toStdString();
+        record.config.label = r.value("label").toString().toStdString();
+        record.config.series = r.value("series").toString().toStdString();
+        record.config.reference =
+            referenceFromName(r.value("reference").toString().toStdString()).value_or(ReferenceKind::Scene);
+        record.sceneSetting = r.value("sceneSetting").toBool();
+        record.settings = settingsOf(r.value("settings").toObject());
+        record.gpuMs = finite(r.value("gpuMs")).value_or(-1.0);
+        record.cpuMs = *cpu;
+        record.psnr = *psnr;
+        record.rmse = *rmse;
+        if (r.value("memory").isObject()) {
+            const QJsonObject memory = r.value("memory").toObject();
+            record.memory = {bytes(memory.value("main")), bytes(memory.value("mirrors")),
+                             bytes(memory.value("shadows")), bytes(memory.value("envmap"))};
+        } else {
+            record.memory.main = bytes(r.value("memoryBytes"));
+        }
+        record.psnrMirrors = finite(r.value("psnrMirrors"));
+        record.psnrReflector = finite(r.value("psnrReflector"));
+        record.errorMap = r.value("errorMap").toString().toStdString();
+        out.records.push_back(std::move(record));
+    }
+    if (out.records.empty())
+        return render::Error{name + (out.unknownFamilies > 0 ? ": no results of a family this version knows"
+                                                             : ": no results")};
+    return out;
+}
+
+render::Status writeCsv(const std::string& path, const std::vector<Record>& records) {
+    std::ostringstream csv;
+    csv << "id,family,label,series,reference,sceneSetting";
+    for (const std::string& name : kSettingNames)
+        csv << "," << name;
+    csv << ",gpuMs,cpuMs,memoryBytes,rmse,psnr,psnrMirrors,psnrReflector,errorMap\n";
+    for (const Record& r : records) {
+        csv << csvField(r.config.id) << "," << familyName(r.config.family) << "," << csvField(r.config.label)
+            << "," << csvField(r.config.series) << "," << referenceName(r.config.reference) << ","
+            << (r.sceneSetting ? "true" : "false");
+        for (const std::string& name : kSettingNames)
+            csv << "," << csvField(settingOf(r, name));
+        csv << "," << (r.gpuMs >= 0.0 ? number(r.gpuMs) : "") << "," << number(r.cpuMs) << ","
+            << r.memory.total() << "," << number(r.rmse) << "," << number(r.psnr) << ","
+            << (r.psnrMirrors ? number(*r.psnrMirrors) : "") << ","
+            << (r.psnrReflector ? number(*r.psnrReflector) : "") << "," << csvField(r.errorMap) << "\n";
+    }
+    return writeText(path, csv.str());
+}
+
+render::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records) {
+    QJsonArray references;
+    for (const ReferenceInfo& ref : run.references)
+        references.append(QJsonObject{{"name", q(referenceName(ref.kind))},
+                                      {"description", q(referenceDescription(ref.kind))},
+                                      {"traceMs", ref.traceMs},
+                                      {"threads", ref.threads},
+                                      {"image", q(ref.image)}});
+    QJsonArray results;
+    for (const Record& r : records) {
+        QJsonObject settings;
+        for (const auto& [key, value] : r.settings) {
+            bool isNumber = false;
+            const int n = QString::fromStdString(value).toInt(&isNumber);
+            settings[q(key)] = isNumber ? QJsonValue(n) : QJsonValue(q(value));
+        }
+        results.append(QJsonObject{
+            {"id", q(r.config.id)},
+            {"family", q(familyName(r.config.family))},
+            {"label", q(r.config.label)},
+            {"series", q(r.config.series)},
+            {"reference", q(referenceName(r.config.reference))},
+            {"sceneSetting", r.sceneSetting},
+            {"settings", settings},
+            {"gpuMs", r.gpuMs >= 0.0 ? QJsonValue(r.gpuMs) : QJsonValue(QJsonValue::Null)},
+            {"cpuMs", r.cpuMs},
+            {"memoryBytes", static_cast<double>(r.memory.total())},
+            {"memory", QJsonObject{{"main", static_cast<double>(r.memory.main)},
+                                   {"mirrors", static_cast<double>(r.memory.mirrors)},
+                                   {"shadows", static_cast<double>(r.memory.shadows)},
+                                   {"envmap", static_cast<double>(r.memory.envmap)}}},
+            {"rmse", r.rmse},
+            {"psnr", r.psnr},
+            {"psnrMirrors", orNull(r.psnrMirrors)},
+            {"psnrReflector", orNull(r.psnrReflector)},
+            {"errorMap", q(r.errorMap)},
+        });
+    }
+    const QJsonObject root{
+        {"format", "speculum-bench"},
+        {"version", 1},
+        {"scene", q(run.scene)},
+        {"size", q(std::to_string(run.width) + "x" + std::to_string(run.height))},
+        {"quick", run.quick},
+        {"warmUpFrames", run.warmUpFrames},
+        {"timedFrames", run.timedFrames},
+        {"renderer", q(run.renderer)},
+        {"references", references},
+        {"results", results},
+    };
+    return writeText(path, QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString());
+}
+
+} // namespace speculum::accuracy

@@ -1,0 +1,110 @@
+#pragma once
+
+#include "render/FrameInput.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace speculum::accuracy {
+
+// The families of settings the bench sweeps, one at a time around the scene's own settings.
+enum class Family {
+    Scene,           // the scene exactly as saved: the anchor every family is compared with
+    Envmap,          // reflector map type (and fill, for the non-linear maps) × resolution
+    Parallax,        // reflector parallax correction off / on
+    MirrorTechnique, // every planar mirror with the stencil, then the texture technique
+    MirrorDepth,     // settings.mirrorDepth 1 .. cap
+    Shadows,         // PCF kernel of every shadowed light
+    Tessellation,    // tessellation of the built-in teapots
+};
+
+// Stable names, used in file names, CSV and JSON: "envmap", "mirror-depth", ...
+std::string familyName(Family family);
+std::optional<Family> familyFromName(const std::string& name); // none for a name this version lacks
+
+// Which exact image a configuration is measured against. The tracer does not depend on map type,
+// resolution, fill, parallax or mirror technique, so those share the scene's reference; the settings it
+// does depend on get a reference of their own (see referenceDescription).
+enum class ReferenceKind {
+    Scene,       // the scene as saved; shadows with each light's PCF footprint
+    HardShadows, // exact hard shadows (one shadow ray): what every PCF kernel approximates
+    DeepMirrors, // planar mirrors recursing to depth 16 (the file format's maximum)
+    FineMesh,    // built-in teapots at tessellation 64 (the file format's maximum)
+};
+
+std::string referenceName(ReferenceKind kind); // "scene", "hard-shadows", "deep-mirrors", "fine-mesh"
+std::optional<ReferenceKind> referenceFromName(const std::string& name);
+std::string referenceDescription(ReferenceKind kind);
+
+// What a configuration changes; fields left empty keep the scene's value.
+struct Variation {
+    std::optional<render::ReflectorMap> map;
+    std::optional<int> resolution;
+    std::optional<render::ReflectorFill> fill;
+    std::optional<bool> parallax;
+    std::optional<render::MirrorTechnique> technique;
+    std::optional<int> mirrorDepth;
+    std::optional<int> pcf;
+    std::optional<int> tessellation;
+};
+
+struct Configuration {
+    Family family = Family::Scene;
+    std::string id;     // unique and safe as a file name: "envmap-cube-128"
+    std::string label;  // short, for plot labels: "128", "pcf 5"
+    std::string series; // points of one series are joined in the plots: "cube", "tennis-ball direct"
+    Variation variation;
+    ReferenceKind reference = ReferenceKind::Scene;
+};
+
+// What the sweep knows about the scene, derived from its frame.
+struct SceneTraits {
+    bool reflector = false;
+    bool ownProxy = false;        // the scene's reflector has a parallax proxy of its own
+    render::ParallaxProxy proxy;  // the proxy "parallax on" uses (own or derived from the scene)
+    bool proxyMakesSense = false; // own, or the scene's bounds enclose the reflector
+    std::size_t mirrors = 0;
+    std::size_t shadowedLights = 0;        // lights with shadows on
+    std::optional<int> teapotTessellation; // of the (first) built-in teapot
+};
+
+SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int>& teapotTessellation);
+
+struct SweepOptions {
+    bool quick = false;
+};
+
+// The configurations to measure: the scene's own first, then each family the scene calls for, varied one
+// at a time around the scene's settings (a scene without a reflector gets no map rows, and so on). The
+// scene's own value of each swept setting is always among the values.
+std::vector<Configuration> planSweep(const render::FrameInput& scene, const SceneTraits& traits,
+                                     const SweepOptions& options);
+
+// Replaces a built-in teapot's mesh by the same teapot at another tessellation; returns other meshes as
+// they are.
+using TessellateTeapot = std::function<render::MeshHandle(const render::MeshHandle& mesh, int tessellation)>;
+
+// The scene with a variation applied.
+render::FrameInput applyVariation(const render::FrameInput& scene, const SceneTraits& traits,
+                                  const Variation& variation, const TessellateTeapot& tessellate);
+
+// The frame each reference traces: the scene, changed as the reference kind says.
+render::FrameInput referenceInput(const render::FrameInput& scene, ReferenceKind kind,
+                                  const TessellateTeapot& tessellate);
+
+// The effective value of every setting the scene has (whether swept in this configuration or not), in a
+// fixed order with the stable names of kSettingNames: ("map", "cube"), ("resolution", "128"), ...
+using Settings = std::vector<std::pair<std::string, std::string>>;
+Settings effectiveSettings(const render::FrameInput& applied, const SceneTraits& traits,
+                           const std::optional<int>& teapotTessellation);
+
+inline const std::vector<std::string> kSettingNames = {"map",       "resolution",  "fill", "parallax",
+                                                       "technique", "mirrorDepth", "pcf",  "tessellation"};
+
+std::string mapName(render::ReflectorMap map);    // "cube", "dual-paraboloid", "tennis-ball"
+std::string fillName(render::ReflectorFill fill); // "direct", "resampled"
+
+} // namespace speculum::accuracy

@@ -1,0 +1,226 @@
+#include "accuracy/SweepRun.hpp"
+
+#include "accuracy/Report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <thread>
+
+namespace speculum::accuracy {
+
+namespace {
+
+std::string key(const Settings& settings) {
+    std::string k;
+    for (const auto& [name, value] : settings)
+        k += name + "=" + value + ";";
+    return k;
+}
+
+std::string referenceFile(ReferenceKind kind) {
+    return kind == ReferenceKind::Scene ? "reference.png" : "reference-" + referenceName(kind) + ".png";
+}
+
+class Run {
+public:
+    Run(render::Renderer& renderer, const SweepInput& input, const SweepObserver& observer)
+        : m_renderer(renderer)
+        , m_input(input)
+        , m_observer(observer)
+        , m_traits(sceneTraits(input.scene, input.teapotTessellation)) {
+        const SweepSize size = defaultSweepSize(input.quick);
+        m_width = input.width > 0 ? input.width : size.width;
+        m_height = input.height > 0 ? input.height : size.height;
+    }
+
+    render::Result<SweepOutcome> operator()() {
+        const SweepTiming timing = sweepTiming(m_input.quick);
+        const std::vector<Configuration> configs = planSweep(m_input.scene, m_traits, {m_input.quick});
+        SweepOutcome out;
+        out.run.sceneName = m_input.sceneName;
+        out.run.width = m_width;
+        out.run.height = m_height;
+        out.run.quick = m_input.quick;
+        out.run.warmUpFrames = timing.warmUp;
+        out.run.timedFrames = timing.rounds;
+        progress(std::to_string(configs.size()) + " configurations of " + m_input.sceneName + " at " +
+                 std::to_string(m_width) + "x" + std::to_string(m_height) +
+                 (m_input.quick ? " (quick)" : ""));
+
+        auto references = traceReferences(configs, out.run);
+        if (!references)
+            return render::Error{references.error()};
+
+        // Warm the whole pipeline up once (shader variants, textures, meshes), so that the first
+        // configuration measured is not the one that pays for it.
+        progress("warming up");
+        if (auto warm = measureFrames(m_renderer, m_input.scene, m_width, m_height, 2, 0, m_observer.stop);
+            !warm)
+            return render::Error{warm.error()};
+
+        // Images, memory and errors, one configuration at a time. Configurations with the same settings
+        // (the scene's own recur in every family) are rendered once and timed once.
+        std::vector<std::string> keys;                      // per record
+        std::map<std::string, render::FrameInput> distinct; // the frame of each distinct setting
+        std::map<std::string, FrameCost> costs;
+        const std::string sceneKey =
+            key(effectiveSettings(m_input.scene, m_traits, m_input.teapotTessellation));
+        for (std::size_t i = 0; i < configs.size(); ++i) {
+            if (stopped())
+                return render::Error{kSweepStopped};
+            const Configuration& config = configs[i];
+            const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(configs.size()) +
+                                     "] " + familyName(config.family) + ": " + displayName(config);
+            render::FrameInput applied =
+                applyVariation(m_input.scene, m_traits, config.variation, m_input.tessellate);
+            Record record;
+            record.config = config;
+            record.settings = effectiveSettings(applied, m_traits,
+                                                config.variation.tessellation ? config.variation.tessellation
+                                                                              : m_input.teapotTessellation);
+            const std::string k = key(record.settings);
+            record.sceneSetting = k == sceneKey;
+            if (!costs.count(k)) {
+                progress(step + ": rendering");
+                auto cost =
+                    measureFrames(m_renderer, applied, m_width, m_height, timing.warmUp, 1, m_observer.stop);
+                if (!cost)
+                    return render::Error{cost.error() == kSweepStopped
+                                             ? cost.error()
+                                             : displayName(config) + ": " + cost.error()};
+                costs.emplace(k, std::move(*cost));
+                distinct.emplace(k, std::move(applied));
+            }
+            const FrameCost& cost = costs.at(k);
+            auto errors = compareWithReference(cost.image, references->at(config.reference));
+            if (!errors)
+                return render::Error{displayName(config) + ": " + errors.error()};
+            record.gpuMs = cost.gpuMs;
+            record.cpuMs = cost.cpuMs;
+            record.memory = cost.memory;
+            record.rmse = errors->overall.rmse;
+            record.psnr = errors->overall.psnr;
+            if (errors->mirrors)
+                record.psnrMirrors = errors->mirrors->psnr;
+            if (errors->reflector)
+                record.psnrReflector = errors->reflector->psnr;
+            record.errorMap = "errors/" + config.id + ".png";
+            if (m_observer.measured)
+                if (render::Status s = m_observer.measured(i, configs.size(), record, cost, *errors); !s)
+                    return render::Error{s.error()};
+            progress(summaryLine(step, record));
+            out.records.push_back(std::move(record));
+            keys.push_back(k);
+        }
+        costs.clear(); // the images are compared and handed on: free them before the timing rounds
+
+        std::map<std::string, std::vector<double>> gpu, cpu;
+        for (int round = 1; round <= timing.rounds; ++round) {
+            progress("timing round " + std::to_string(round) + "/" + std::to_string(timing.rounds) + ": " +
+                     std::to_string(distinct.size()) + " distinct configurations");
+            for (const auto& [k, frame] : distinct) {
+                auto cost = measureFrames(m_renderer, frame, m_width, m_height, 1, 1, m_observer.stop);
+                if (!cost)
+                    return render::Error{cost.error()};
+                gpu[k].push_back(cost->gpuMs);
+                cpu[k].push_back(cost->cpuMs);
+            }
+            for (std::size_t i = 0; i < out.records.size(); ++i) {
+                const std::vector<double>& g = gpu[keys[i]];
+                out.records[i].gpuMs =
+                    std::all_of(g.begin(), g.end(), [](double ms) { return ms >= 0.0; }) ? median(g) : -1.0;
+                out.records[i].cpuMs = median(cpu[keys[i]]);
+            }
+            if (m_observer.timed)
+                m_observer.timed(round, timing.rounds, out.records);
+        }
+        return out;
+    }
+
+private:
+    void progress(const std::string& line) const {
+        if (m_observer.progress)
+            m_observer.progress(line);
+    }
+    bool stopped() const { return m_observer.stop && m_observer.stop(); }
+
+    // Traces each reference the configurations need.
+    render::Result<std::map<ReferenceKind, Reference>>
+    traceReferences(const std::vector<Configuration>& configs, RunInfo& run) {
+        std::vector<ReferenceKind> kinds;
+        for (const Configuration& c : configs)
+            if (std::find(kinds.begin(), kinds.end(), c.reference) == kinds.end())
+                kinds.push_back(c.reference);
+        std::map<ReferenceKind, Reference> references;
+        const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        for (ReferenceKind kind : kinds) {
+            const std::string name = referenceName(kind);
+            progress("tracing the " + name + " reference on " + std::to_string(threads) + " threads");
+            int lastQuarter = 0;
+            auto traced = traceReference(
+                referenceInput(m_input.scene, kind, m_input.tessellate), kind, m_width, m_height,
+                [&](double f) {
+                    const int quarter = static_cast<int>(f * 4.0);
+                    if (quarter > lastQuarter && quarter < 4)
+                        progress("tracing the " + name + " reference: " + std::to_string(quarter * 25) + "%");
+                    lastQuarter = std::max(lastQuarter, quarter);
+                    return !stopped();
+                });
+            if (stopped())
+                return render::Error{kSweepStopped};
+            if (!traced)
+                return render::Error{traced.error()};
+            progress("traced the " + name + " reference in " +
+                     std::to_string(static_cast<int>(traced->traced.totalMs + 0.5)) + " ms");
+            const ReferenceInfo info{kind, traced->traced.totalMs, threads, referenceFile(kind)};
+            if (m_observer.referenceTraced)
+                if (render::Status s = m_observer.referenceTraced(*traced, info); !s)
+                    return render::Error{s.error()};
+            run.references.push_back(info);
+            references.emplace(kind, std::move(*traced));
+        }
+        return references;
+    }
+
+    render::Renderer& m_renderer;
+    const SweepInput& m_input;
+    const SweepObserver& m_observer;
+    const SceneTraits m_traits;
+    int m_width = 0;
+    int m_height = 0;
+};
+
+} // namespace
+
+SweepTiming sweepTiming(bool quick) {
+    return quick ? SweepTiming{2, 7} : SweepTiming{2, 9};
+}
+
+SweepSize defaultSweepSize(bool quick) {
+    return quick ? SweepSize{480, 270} : SweepSize{1280, 720};
+}
+
+std::string summaryLine(const std::string& step, const Record& r) {
+    char text[200];
+    std::snprintf(text, sizeof text, "%s: PSNR %.2f dB", step.c_str(), r.psnr);
+    std::string line = text;
+    if (r.psnrReflector) {
+        std::snprintf(text, sizeof text, ", reflector %.2f dB", *r.psnrReflector);
+        line += text;
+    }
+    if (r.psnrMirrors) {
+        std::snprintf(text, sizeof text, ", mirrors %.2f dB", *r.psnrMirrors);
+        line += text;
+    }
+    std::snprintf(text, sizeof text, ", %.1f MiB", static_cast<double>(r.memory.total()) / (1024.0 * 1024.0));
+    return line + text;
+}
+
+render::Result<SweepOutcome> runSweep(render::Renderer& renderer, const SweepInput& input,
+                                      const SweepObserver& observer) {
+    return Run(renderer, input, observer)();
+}
+
+} // namespace speculum::accuracy

@@ -1,0 +1,219 @@
+#include "app/BenchCommand.hpp"
+
+#include "accuracy/Report.hpp"
+#include "accuracy/Results.hpp"
+#include "accuracy/StagedOutput.hpp"
+#include "accuracy/SweepRun.hpp"
+#include "app/OutputPaths.hpp"
+#include "app/ProjectInput.hpp"
+#include "render/Renderer.hpp"
+#include "render/gl/HeadlessContext.hpp"
+#include "render/image/ImageWriter.hpp"
+#include "render/metrics/ErrorMetrics.hpp"
+
+#include <QGuiApplication>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <set>
+
+namespace speculum::app::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+namespace fs = std::filesystem;
+using accuracy::StagedOutput;
+
+int fail(const std::string& message) {
+    printError("bench: " + message);
+    return 1;
+}
+
+// A write into the staging folder that failed (render::AtomicFile's "<staging>/results.csv: the disk is
+// full (...); nothing was written") is told as the user sees it: the file in the output folder, whose
+// previous run is left as it was (the staging folder is discarded, nothing is committed).
+std::string outputMessage(std::string message, const StagedOutput& output) {
+    const std::string staging = output.staging().string();
+    if (!staging.empty()) {
+        for (std::size_t at = message.find(staging); at != std::string::npos; at = message.find(staging, at))
+            message.replace(at, staging.size(), output.folder().string());
+    }
+    const std::string fresh = "; nothing was written";
+    if (const std::size_t at = message.find(fresh); at != std::string::npos)
+        message.replace(at, fresh.size(), "; the previous output is unchanged");
+    return message;
+}
+
+void progress(const std::string& line) {
+    std::cerr << "speculum: bench: " << line << std::endl;
+}
+
+volatile std::sig_atomic_t g_stopSignal = 0;
+
+extern "C" void requestStop(int signal) {
+    g_stopSignal = signal;
+}
+
+// Ctrl-C (SIGINT) or a polite kill (SIGTERM) during a run: the run stops at its next step and, like any
+// failed run, leaves the output folder as it found it. The previous handlers return when the run ends.
+class StopOnSignal {
+public:
+    StopOnSignal() {
+        g_stopSignal = 0;
+        struct sigaction action {};
+        action.sa_handler = requestStop;
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, &m_previousInt);
+        sigaction(SIGTERM, &action, &m_previousTerm);
+    }
+    ~StopOnSignal() {
+        sigaction(SIGINT, &m_previousInt, nullptr);
+        sigaction(SIGTERM, &m_previousTerm, nullptr);
+    }
+    StopOnSignal(const StopOnSignal&) = delete;
+    StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+    static bool requested() { return g_stopSignal != 0; }
+
+private:
+    struct sigaction m_previousInt {};
+    struct sigaction m_previousTerm {};
+};
+
+// The exit status of a shell's command killed by SIGINT, which is what the user asked for.
+int interrupted() {
+    std::cerr << "speculum: bench: interrupted; nothing was written\n";
+    return 130;
+}
+
+// Writes the report and the plots; QPainter needs a QGuiApplication, the offscreen platform will do.
+render::Status writeReportWithGui(const fs::path& staging, const accuracy::RunInfo& run,
+                                  const std::vector<accuracy::Record>& records) {
+    int argc = 3;
+    char arg0[] = "speculum", arg1[] = "-platform", arg2[] = "offscreen";
+    char* argv[] = {arg0, arg1, arg2, nullptr};
+    std::optional<QGuiApplication> app;
+    // Qt's own chatter (no XDG_RUNTIME_DIR on a server) is not the user's business here.
+    const QtMessageHandler previous =
+        qInstallMessageHandler([](QtMsgType type, const QMessageLogContext&, const QString& message) {
+            if (type == QtCriticalMsg || type == QtFatalMsg)
+                std::cerr << "speculum: bench: " << message.toStdString() << "\n";
+        });
+    if (!QCoreApplication::instance())
+        app.emplace(argc, argv);
+    render::Status written = accuracy::writeReport(staging, run, records);
+    app.reset();
+    qInstallMessageHandler(previous);
+    return written;
+}
+
+} // namespace
+
+int run(const Options& options) {
+    const auto start = Clock::now();
+    const StopOnSignal stop; // before the output folder exists: a stop always finds it to clean up
+
+    // Nothing an input is may be replaced: DIR holds neither the project nor a file it reads.
+    if (render::Status folder = checkOutputFolder(options.outDir, {options.project}); !folder)
+        return fail(folder.error());
+    auto project = loadProjectFrame(options.project, 0.0,
+                                    options.keepGoing ? MissingFiles::KeepGoing : MissingFiles::Fail);
+    if (!project)
+        return fail(project.error());
+    if (render::Status folder = checkOutputFolder(options.outDir, project->inputs); !folder)
+        return fail(folder.error());
+    // The folder is checked (and made) before the long work, so a bad --out costs nothing.
+    auto output = StagedOutput::begin(options.outDir);
+    if (!output)
+        return fail(output.error());
+    const fs::path staging = output->staging();
+    std::error_code ec;
+    fs::create_directory(staging / "errors", ec);
+    if (ec)
+        return fail((staging / "errors").string() + ": " + ec.message());
+    auto context = render::gl::HeadlessContext::create();
+    if (!context)
+        return fail("no OpenGL: " + context.error());
+    auto renderer = render::Renderer::create();
+    if (!renderer)
+        return fail(renderer.error());
+
+    accuracy::SweepInput input;
+    input.sceneName = fs::path(options.project).filename().string();
+    input.scene = project->input;
+    input.quick = options.quick;
+    input.width = options.width;
+    input.height = options.height;
+    if (!project->teapotTessellations.empty())
+        input.teapotTessellation = *project->teapotTessellations.begin();
+    // Built-in teapots are the mesh library's, one shared mesh per tessellation: swap them by identity.
+    std::set<const render::MeshData*> teapotMeshes;
+    for (int t : project->teapotTessellations)
+        teapotMeshes.insert(project->meshes->builtin(document::BuiltinMesh::Teapot, t).get());
+    input.tessellate = [&](const render::MeshHandle& mesh, int tessellation) {
+        return teapotMeshes.count(mesh.get())
+                   ? project->meshes->builtin(document::BuiltinMesh::Teapot, tessellation)
+                   : mesh;
+    };
+
+    std::set<std::string> warned;
+    accuracy::SweepObserver observer;
+    observer.progress = progress;
+    observer.stop = [] { return StopOnSignal::requested(); };
+    observer.referenceTraced = [&](const accuracy::Reference& reference,
+                                   const accuracy::ReferenceInfo& info) {
+        printWarnings(reference.traced.warnings);
+        return render::writeImage((staging / info.image).string(), reference.traced.image);
+    };
+    observer.measured = [&](std::size_t, std::size_t, const accuracy::Record& record,
+                            const accuracy::FrameCost& cost,
+                            const accuracy::ErrorFigures& errors) -> render::Status {
+        for (const std::string& w : cost.warnings)
+            if (warned.insert(w).second)
+                printWarnings({w});
+        if (render::Status s =
+                render::metrics::writeErrorMap((staging / record.errorMap).string(), errors.difference);
+            !s)
+            return s;
+        if (record.config.family == accuracy::Family::Scene)
+            return render::writeImage((staging / "render.png").string(), cost.image);
+        return render::Done{};
+    };
+    auto swept = accuracy::runSweep(**renderer, input, observer);
+    if (stop.requested())
+        return interrupted();
+    if (!swept)
+        return fail(outputMessage(swept.error(), *output));
+    // The GL work is done: free it before the plots.
+    renderer->reset();
+    accuracy::RunInfo run = std::move(swept->run);
+    run.scene = options.project;
+    run.renderer = (*context)->description();
+    context->reset();
+    const std::vector<accuracy::Record>& records = swept->records;
+
+    progress("writing results, plots and the report");
+    if (render::Status s = accuracy::writeCsv((staging / "results.csv").string(), records); !s)
+        return fail(outputMessage(s.error(), *output));
+    if (render::Status s = accuracy::writeJson((staging / "results.json").string(), run, records); !s)
+        return fail(outputMessage(s.error(), *output));
+    if (render::Status s = writeReportWithGui(staging, run, records); !s)
+        return fail(outputMessage(s.error(), *output));
+    // Plots and references of an earlier run in the same folder would mix two runs: they go too.
+    auto earlierOutput = [](const std::string& name) {
+        const bool png = name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0;
+        return png && (name.rfind("plot-", 0) == 0 || name.rfind("reference", 0) == 0);
+    };
+    if (render::Status s = output->commit(earlierOutput); !s)
+        return fail(s.error());
+    const fs::path report = output->folder() / "report.md";
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    progress("done in " + std::to_string(static_cast<int>(seconds + 0.5)) + " s: " + report.string());
+    std::cout << report.string() << "\n";
+    return 0;
+}
+
+} // namespace speculum::app::bench

@@ -1,0 +1,58 @@
+#include "editor/document/DocumentSession.hpp"
+
+#include "editor/document/ProjectFile.hpp"
+
+#include <QUndoStack>
+
+namespace speculum::document {
+
+DocumentSession::DocumentSession(QObject* parent)
+    : QObject(parent)
+    , m_scene(new Scene(this))
+    , m_undoStack(new QUndoStack(this)) {
+    // Every reset is a new document (New, Open, Restore): its meshes start from nothing, and before the
+    // scene's sceneReset, so whoever draws the new scene finds no mesh of the old one.
+    connect(m_scene, &Scene::aboutToReset, this, [this] { m_meshes = MeshLibrary(); });
+}
+
+DocumentSession::~DocumentSession() {
+    // The commands refer to the scene: they go first.
+    delete m_undoStack;
+    m_undoStack = nullptr;
+}
+
+bool DocumentSession::isModified() const {
+    return !m_undoStack->isClean() || m_restoredUnsaved;
+}
+
+void DocumentSession::clearHistory(bool unsaved) {
+    m_undoStack->clear();
+    m_undoStack->setClean();
+    m_restoredUnsaved = unsaved;
+}
+
+void DocumentSession::replace(SceneData data, const QString& projectPath, bool unsaved) {
+    m_scene->reset(std::move(data));
+    m_scene->setProjectPath(projectPath);
+    clearHistory(unsaved);
+}
+
+render::Status DocumentSession::open(const QString& absolutePath, std::vector<std::string>& warnings) {
+    render::Status status = openProject(*m_scene, absolutePath, warnings);
+    if (status) {
+        clearHistory(false); // the old document's commands refer to nodes that no longer exist
+    }
+    return status;
+}
+
+render::Status DocumentSession::save(const QString& absolutePath) {
+    render::Status status = saveProject(*m_scene, absolutePath);
+    if (status) {
+        m_scene->setProjectPath(absolutePath);
+        m_undoStack->setClean();
+        m_restoredUnsaved = false;
+    }
+    return status;
+}
+
+} // namespace speculum::document

@@ -1,0 +1,230 @@
+#include "editor/document/EditOperations.hpp"
+
+#include "editor/document/Commands.hpp"
+#include "editor/document/EditTransaction.hpp"
+#include "editor/document/NodeFactory.hpp"
+#include "render/SceneLimits.hpp"
+#include "render/math/Projection.hpp"
+
+#include <QFileInfo>
+#include <QString>
+#include <QUndoStack>
+#include <algorithm>
+#include <cmath>
+#include <glm/mat4x4.hpp>
+
+namespace speculum::document {
+
+namespace {
+
+QString quoted(const std::string& name) {
+    return QStringLiteral("\u201c%1\u201d").arg(QString::fromStdString(name));
+}
+
+std::vector<NodeId> existing(const Scene& scene, const std::vector<NodeId>& ids) {
+    std::vector<NodeId> kept;
+    std::copy_if(ids.begin(), ids.end(), std::back_inserter(kept),
+                 [&](NodeId id) { return scene.findNode(id) != nullptr; });
+    return kept;
+}
+
+// The scene index `id` gets when moved under newParent before scene position `index` (-1: at the end),
+// counted as MoveNodeCommand wants it (after the node has been taken out); nothing when that changes
+// nothing.
+std::optional<int> moveTarget(const Scene& scene, NodeId id, NodeId newParent, int index) {
+    const NodeId oldParent = scene.parentOf(id);
+    const int oldIndex = scene.indexOf(id);
+    int newIndex = index;
+    if (newIndex >= 0 && oldParent == newParent && oldIndex < newIndex) {
+        --newIndex;
+    }
+    const int count = scene.childCount(newParent) - (oldParent == newParent ? 1 : 0);
+    if (newIndex < 0 || newIndex > count) {
+        newIndex = count;
+    }
+    if (oldParent == newParent && oldIndex == newIndex) {
+        return std::nullopt;
+    }
+    return newIndex;
+}
+
+} // namespace
+
+render::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree) {
+    if (auto ok = canAdd(scene, tree); !ok) {
+        return render::Error{ok.error()};
+    }
+    tree.data.name = uniqueName(scene, tree.data.name);
+    EditTransaction edit(undo);
+    auto* command = new AddNodeCommand(scene, std::move(tree));
+    edit.push(command);
+    const NodeId id = command->nodeId();
+    edit.commit();
+    return id;
+}
+
+render::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots) {
+    const std::vector<NodeId> nodes = existing(scene, roots);
+    if (nodes.empty()) {
+        return render::Error{"nothing is selected"};
+    }
+    EditTransaction edit(undo,
+                         nodes.size() > 1 ? QStringLiteral("Delete %1 nodes").arg(nodes.size()) : QString());
+    for (NodeId id : nodes) {
+        edit.push(new RemoveNodeCommand(scene, id));
+    }
+    edit.commit();
+    return render::Done{};
+}
+
+render::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
+                                          NodeId current) {
+    const std::vector<NodeId> nodes = existing(scene, roots);
+    if (nodes.empty()) {
+        return render::Error{"nothing is selected"};
+    }
+    EditTransaction edit(undo, nodes.size() > 1 ? QStringLiteral("Duplicate %1 nodes").arg(nodes.size())
+                                                : QString());
+    Duplicates result;
+    for (NodeId id : nodes) {
+        // One at a time: each copy's name is made unique against the copies made before it.
+        bool dropped = false;
+        NodeTree copy = duplicateTree(scene, id, &dropped);
+        result.droppedReflector = result.droppedReflector || dropped;
+        auto* command = new AddNodeCommand(scene, std::move(copy), scene.parentOf(id), scene.indexOf(id) + 1);
+        command->setText(QStringLiteral("Duplicate %1").arg(quoted(scene.findNode(id)->name())));
+        edit.push(command);
+        result.copies.push_back(command->nodeId());
+        if (scene.isAncestor(id, current)) { // the current node or one under it
+            result.currentCopy = command->nodeId();
+        }
+    }
+    edit.commit();
+    return result;
+}
+
+render::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name) {
+    const Node* node = scene.findNode(id);
+    if (!node) {
+        return render::Error{"no such node"};
+    }
+    const std::string trimmed = QString::fromStdString(name).trimmed().toStdString();
+    if (trimmed.empty()) {
+        return render::Error{"a name cannot be empty"};
+    }
+    if (trimmed == node->name()) {
+        return render::Error{"the name is unchanged"};
+    }
+    EditTransaction edit(undo);
+    edit.push(new RenameNodeCommand(scene, id, trimmed));
+    edit.commit();
+    return render::Done{};
+}
+
+std::vector<NodeId> outermostInTreeOrder(const Scene& scene, const std::vector<NodeId>& ids) {
+    // A node's tree position as the scene indexes from the top level down: these compare in tree order,
+    // whatever order the ids came in.
+    auto path = [&scene](NodeId id) {
+        std::vector<int> indexes;
+        for (NodeId n = id; n != kNoNode; n = scene.parentOf(n)) {
+            indexes.push_back(scene.indexOf(n));
+        }
+        std::reverse(indexes.begin(), indexes.end());
+        return indexes;
+    };
+    std::vector<std::pair<std::vector<int>, NodeId>> sorted;
+    for (NodeId id : ids) {
+        if (scene.findNode(id)) {
+            sorted.emplace_back(path(id), id);
+        }
+    }
+    std::sort(sorted.begin(), sorted.end());
+    // Ancestors sort before their descendants, so each node need only be checked against those kept.
+    std::vector<NodeId> outermost;
+    for (const auto& entry : sorted) {
+        const NodeId id = entry.second;
+        const bool underKept = std::any_of(outermost.begin(), outermost.end(),
+                                           [&](NodeId kept) { return scene.isAncestor(kept, id); });
+        if (!underKept) {
+            outermost.push_back(id); // also drops repeats: isAncestor() holds for the node itself
+        }
+    }
+    return outermost;
+}
+
+render::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& ids, NodeId newParent,
+                         int index) {
+    if (newParent != kNoNode && !scene.findNode(newParent)) {
+        return render::Error{"no such parent node"};
+    }
+    if (std::any_of(ids.begin(), ids.end(), [&](NodeId id) { return scene.isAncestor(id, newParent); })) {
+        return render::Error{"a node cannot go into its own subtree"};
+    }
+    const std::vector<NodeId> nodes = outermostInTreeOrder(scene, ids);
+    if (nodes.empty()) {
+        return render::Error{"nothing to move"};
+    }
+    // One at a time, each right after the one before, with the scene's indexes as they are after the
+    // previous moves: taking a node out from above the drop position shifts the positions after it.
+    // One node keeps its own "Move “name”" text.
+    EditTransaction edit(undo,
+                         nodes.size() > 1 ? QStringLiteral("Move %1 nodes").arg(nodes.size()) : QString());
+    int next = index;
+    for (NodeId id : nodes) {
+        if (const std::optional<int> newIndex = moveTarget(scene, id, newParent, next)) {
+            edit.push(new MoveNodeCommand(scene, id, newParent, *newIndex));
+        }
+        next = scene.indexOf(id) + 1;
+    }
+    if (edit.empty()) {
+        return render::Error{"the nodes are there already"};
+    }
+    edit.commit();
+    return render::Done{};
+}
+
+render::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Camera& view) {
+    CameraData camera = scene.camera();
+    camera.position = view.position;
+    camera.target = view.target;
+    camera.up = view.up;
+    camera.far = std::min(std::max(camera.far, view.far), camera.near * render::kMaxFarNearRatio);
+    if (camera == scene.camera()) {
+        return render::Done{}; // already so: no step
+    }
+    EditTransaction edit(undo, QStringLiteral("Set scene camera from view"));
+    edit.push(new SetCameraCommand(scene, camera));
+    edit.commit();
+    return render::Done{};
+}
+
+PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const ImportedModel& model,
+                               const std::string& absolutePath, const ImportPlacement& placement) {
+    PlacedModel placed;
+    const QString path = QString::fromStdString(absolutePath);
+    // The box the nodes fill in the coordinates they are added in (the top level). A reflector draws the
+    // whole file flattened, which fills the same box as the node tree.
+    render::math::Box box = render::math::worldBounds(model.bounds, glm::dmat4(1.0));
+    if (placement.asReflector) {
+        placed.tree = makeModelNode(path, glm::dvec3(0.0), true);
+    } else {
+        placed.tree = modelNodeTree(model, absolutePath, QFileInfo(path).completeBaseName().toStdString(),
+                                    &placed.warnings);
+    }
+    if (placement.fitToUnitBox) {
+        const glm::dvec3 extent = box.max - box.min;
+        const double size = std::max({extent.x, extent.y, extent.z});
+        if (size > 0.0 && std::isfinite(size)) {
+            placed.fit = 1.0 / size;
+            scaleAboutParentOrigin(placed.tree.data, placed.fit);
+            box.min *= placed.fit;
+            box.max *= placed.fit;
+        }
+    }
+    placed.tree.data.transform.translate +=
+        placeOnGround(box, placement.focus, occupiedBoxes(scene, placement.timeSeconds, meshes));
+    placed.size = box.max - box.min;
+    return placed;
+}
+
+} // namespace speculum::document

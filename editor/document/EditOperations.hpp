@@ -1,0 +1,77 @@
+#pragma once
+
+#include "editor/document/MeshLibrary.hpp"
+#include "editor/document/ModelImport.hpp"
+#include "editor/document/Scene.hpp"
+#include "render/FrameInput.hpp"
+#include "render/Result.hpp"
+
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+class QUndoStack;
+
+namespace speculum::document {
+
+// The editor's editing operations (Edit, Add and Import, a rename or a drag in the scene tree, Set Scene
+// Camera from View): each checks what it is asked, changes the scene through commands inside one
+// EditTransaction and so leaves exactly one undo step with the label the Undo menu shows, or, when it is
+// refused or would change nothing, no step and the scene as it was. The widgets call these and build no
+// commands of their own.
+
+// Adds `tree` at the top level, its name made unique ("Sphere 2"): "Add “Sphere 2”". Refused when the scene
+// would get a second curved reflector (the message names the node that has it). Returns the new node.
+render::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree);
+
+// Deletes the nodes with their subtrees: "Delete “Box”", or "Delete 3 nodes". `roots` are outermost nodes
+// (view::Selection::roots()): none under another. Unknown ids are skipped; none left is an error.
+render::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots);
+
+struct Duplicates {
+    std::vector<NodeId> copies;    // one per root, in the same order
+    NodeId currentCopy = kNoNode;  // the copy of `current`, or of the root it lies under
+    bool droppedReflector = false; // a copy lost its reflector: a scene holds at most one
+};
+// Copies each root (with its subtree) right after itself under the same parent, each copy's name unique
+// against the copies made before it: "Duplicate “Box”", or "Duplicate 3 nodes".
+render::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
+                                          NodeId current = kNoNode);
+
+// "Rename “A” to “B”". The name is trimmed; an empty or unchanged name is refused.
+render::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name);
+
+// Moves the nodes under newParent (kNoNode: the top level) before scene position `index` of its current
+// children (-1: at the end), one after the other in tree order; a node under another of them goes with
+// that one. "Move “A”", or "Move 3 nodes". Refused when a node would go into its own subtree; a move that
+// changes no position leaves no step (and is an error).
+render::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& ids, NodeId newParent,
+                         int index);
+// Of `ids`, those that exist and lie under no other of them, sorted in tree order (repeats dropped).
+std::vector<NodeId> outermostInTreeOrder(const Scene& scene, const std::vector<NodeId>& ids);
+
+// Makes the scene camera look like `view` (position, target, up; far kept within the depth range the
+// renderer allows): "Set scene camera from view". A view that already is the scene camera leaves no step.
+render::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Camera& view);
+
+// How an imported model lands in the scene.
+struct ImportPlacement {
+    bool asReflector = false;  // the whole file is the curved reflector's surface
+    bool fitToUnitBox = false; // scaled to fit a 1-unit box instead of its real size
+    glm::dvec3 focus{0.0};     // where the view looks: the model stands on the ground there, moved along +X
+                               // past what is already there
+    double timeSeconds = 0.0;  // the animation time at which "what is already there" is measured
+};
+struct PlacedModel {
+    NodeTree tree;                     // ready for addNodeTree
+    double fit = 1.0;                  // the scale fitting applied (1: real size)
+    glm::dvec3 size{0.0};              // of the placed model, scene units
+    std::vector<std::string> warnings; // about the node tree (transforms that had to be approximated)
+};
+// The nodes for an imported model, placed (nothing changes yet): a node tree like the file's, or one
+// reflector node for the whole file. `meshes` gives the boxes of the nodes already in the scene.
+PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const ImportedModel& model,
+                               const std::string& absolutePath, const ImportPlacement& placement);
+
+} // namespace speculum::document

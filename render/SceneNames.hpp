@@ -1,0 +1,73 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace speculum::render::names {
+
+// How each choice a scene makes is spelled: `file` in project files, on the command line and in bench
+// results ("dual-paraboloid"), `label` for people (the inspector's options, reports: "Dual paraboloid").
+// Each table is in the order of its enum, here (FrameInput.hpp) and in editor/document/SceneData.hpp
+// alike: the index is the enum's value. Qt-free and GL-free, so every layer reads the same list.
+struct Name {
+    std::string_view file;
+    std::string_view label;
+};
+
+inline constexpr std::array<Name, 3> kReflectorMaps{{
+    {"cube", "Cube"},
+    {"dual-paraboloid", "Dual paraboloid"},
+    {"tennis-ball", "Tennis ball"},
+}};
+inline constexpr std::array<Name, 2> kReflectorFills{{
+    {"direct", "Direct (vertex warp)"},
+    {"resampled", "Resampled cube"},
+}};
+inline constexpr std::array<Name, 3> kReflectorUpdates{{
+    {"always", "Always"},
+    {"on-change", "When something it sees changes"},
+    {"once", "Once"},
+}};
+inline constexpr std::array<Name, 2> kMirrorTechniques{{
+    {"stencil", "Stencil"},
+    {"texture", "Texture"},
+}};
+inline constexpr std::array<Name, 3> kLightTypes{{
+    {"point", "Point"},
+    {"directional", "Directional"},
+    {"spot", "Spot"},
+}};
+
+// The file spelling of an enum value (an out-of-range value is a programmer error: "?").
+template <typename E, std::size_t N>
+constexpr std::string_view fileName(const std::array<Name, N>& names, E value) {
+    const auto i = static_cast<std::size_t>(value);
+    return i < N ? names[i].file : std::string_view("?");
+}
+
+// The enum value a file spelling names, or nothing.
+template <typename E, std::size_t N>
+constexpr std::optional<E> fromFileName(const std::array<Name, N>& names, std::string_view file) {
+    for (std::size_t i = 0; i < N; ++i) {
+        if (names[i].file == file) {
+            return static_cast<E>(i);
+        }
+    }
+    return std::nullopt;
+}
+
+// "cube, dual-paraboloid or tennis-ball": the file spellings for a message.
+template <std::size_t N>
+std::string choices(const std::array<Name, N>& names) {
+    std::string out;
+    for (std::size_t i = 0; i < N; ++i) {
+        out += i == 0 ? "" : i + 1 == N ? " or " : ", ";
+        out += names[i].file;
+    }
+    return out;
+}
+
+} // namespace speculum::render::names

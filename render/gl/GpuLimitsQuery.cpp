@@ -1,0 +1,21 @@
+// The one GL call behind GpuLimits: the struct and fitToGpuLimits belong to the GL-free core, so that
+// the planner's tests fit sizes without a context.
+#include "render/GpuLimits.hpp"
+#include "render/gl/Objects.hpp"
+
+#include <algorithm>
+
+namespace speculum::render {
+
+GpuLimits queryGpuLimits() {
+    GpuLimits limits;
+    GLint viewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limits.maxTextureSize);
+    glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &limits.maxCubeMapSize);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &limits.maxRenderbufferSize);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    limits.maxViewportSize = std::min(viewport[0], viewport[1]);
+    return limits;
+}
+
+} // namespace speculum::render

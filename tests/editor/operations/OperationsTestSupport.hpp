@@ -1,0 +1,73 @@
+#pragma once
+
+#include "editor/document/Commands.hpp"
+#include "editor/document/Scene.hpp"
+
+#include <QUndoStack>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace speculum::document::test {
+
+inline NodeTree named(const std::string& name, std::vector<NodeTree> children = {}) {
+    NodeTree node;
+    node.data.name = name;
+    node.children = std::move(children);
+    return node;
+}
+
+// Scene: A, B (with children B1, B2), C; a clean undo stack.
+class OperationsTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        SceneData data;
+        data.nodes = {named("A"), named("B", {named("B1"), named("B2")}), named("C")};
+        scene.reset(data);
+        original = scene.toData();
+        QObject::connect(&scene, &Scene::changed, [this] { ++changes; });
+    }
+
+    NodeId idOf(const std::string& name) const {
+        NodeId found = kNoNode;
+        scene.forEachNode([&](const Node& node) {
+            if (node.name() == name) {
+                found = node.id();
+            }
+        });
+        return found;
+    }
+
+    std::vector<std::string> namesUnder(NodeId parent) const {
+        std::vector<std::string> names;
+        if (parent == kNoNode) {
+            for (const auto& node : scene.topLevelNodes()) {
+                names.push_back(node->name());
+            }
+        } else {
+            for (const auto& node : scene.findNode(parent)->children()) {
+                names.push_back(node->name());
+            }
+        }
+        return names;
+    }
+    std::vector<std::string> topLevelNames() const { return namesUnder(kNoNode); }
+
+    // One undo step labelled `label`; undoing it gives back the scene as it was before.
+    void expectOneStepThatUndoesExactly(const std::string& label, const SceneData& before) {
+        EXPECT_EQ(undo.count(), 1);
+        EXPECT_EQ(undo.undoText().toStdString(), label);
+        const SceneData after = scene.toData();
+        undo.undo();
+        EXPECT_EQ(scene.toData(), before) << "undo restores exactly";
+        undo.redo();
+        EXPECT_EQ(scene.toData(), after) << "redo does it again";
+    }
+
+    Scene scene;
+    QUndoStack undo;
+    SceneData original;
+    int changes = 0;
+};
+
+} // namespace speculum::document::test

@@ -1,0 +1,31 @@
+# cmake -DNM=nm -DARCHIVE=lib.a -DFORBIDDEN=<regex> [-DEXPECT_FORBIDDEN=ON] -P CheckSymbols.cmake
+# Fails when the archive needs (has undefined) a symbol matching FORBIDDEN, naming the first few; with
+# EXPECT_FORBIDDEN, fails when it needs none (the check's own test: the GL library does need GL).
+cmake_minimum_required(VERSION 3.25) # IN_LIST, in script mode too
+execute_process(COMMAND ${NM} --undefined-only --demangle ${ARCHIVE}
+                OUTPUT_VARIABLE symbols RESULT_VARIABLE status ERROR_VARIABLE errors)
+if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${NM} failed on ${ARCHIVE}: ${errors}")
+endif()
+string(REPLACE "\n" ";" lines "${symbols}")
+set(found "")
+foreach(line IN LISTS lines)
+    string(REGEX REPLACE "^ *U " "" name "${line}")
+    if(name MATCHES "${FORBIDDEN}")
+        list(APPEND found "${name}")
+    endif()
+endforeach()
+list(REMOVE_DUPLICATES found)
+list(LENGTH found count)
+if(EXPECT_FORBIDDEN)
+    if(count EQUAL 0)
+        message(FATAL_ERROR "${ARCHIVE} needs no symbol matching ${FORBIDDEN}: the check sees nothing")
+    endif()
+    message(STATUS "${ARCHIVE} needs ${count} symbols matching the pattern, as expected")
+elseif(count GREATER 0)
+    list(SUBLIST found 0 10 first)
+    list(JOIN first "\n  " shown)
+    message(FATAL_ERROR "${ARCHIVE} needs ${count} symbols it must not use, such as:\n  ${shown}")
+else()
+    message(STATUS "${ARCHIVE}: no undefined symbol matches ${FORBIDDEN}")
+endif()
