@@ -7,10 +7,12 @@
 #include "editor/document/ModelImport.hpp"
 #include "editor/document/ModelPrecheck.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +25,14 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define SPECULUM_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SPECULUM_TEST_ASAN 1
+#endif
+#endif
 
 namespace speculum::document {
 namespace {
@@ -55,12 +65,21 @@ Outcome importInChild(const fs::path& file) {
         ::close(fds[0]);
         const rlimit noCore{0, 0};
         ::setrlimit(RLIMIT_CORE, &noCore);
+#if !defined(SPECULUM_TEST_ASAN)
+        // AddressSanitizer has terabytes of shadow memory mapped already: under an address-space limit its
+        // next mapping fails and it aborts. Its builds rely on the alarm and on the peak asserted below.
         const rlimit memory{rlim_t(4) << 30, rlim_t(4) << 30};
         ::setrlimit(RLIMIT_AS, &memory);
+#endif
         ::alarm(kLimitSeconds);
         std::vector<std::string> warnings;
         const auto model = importModelFile(file.string(), warnings);
-        std::string report = model ? std::string("I") : "R" + model.error();
+        // The reader runs in a process of its own (ModelImportProcess): its peak, reaped by now, is this
+        // process's largest child's.
+        rusage reader{};
+        ::getrusage(RUSAGE_CHILDREN, &reader);
+        std::string report =
+            std::to_string(reader.ru_maxrss) + " " + (model ? std::string("I") : "R" + model.error());
         report.resize(std::min<std::size_t>(report.size(), PIPE_BUF));
         const ssize_t written = ::write(fds[1], report.data(), report.size());
         ::_exit(written == ssize_t(report.size()) ? 0 : 3);
@@ -94,6 +113,12 @@ Outcome importInChild(const fs::path& file) {
     } else if (report.empty()) {
         outcome.message = "exited with status " + std::to_string(WEXITSTATUS(status));
     } else {
+        // "<reader's peak kB> I" or "<reader's peak kB> R<message>"
+        const std::size_t space = report.find(' ');
+        if (space != std::string::npos && space + 1 < report.size()) {
+            outcome.peakKb = std::max(outcome.peakKb, std::atol(report.substr(0, space).c_str()));
+            report.erase(0, space + 1);
+        }
         outcome.finished = true;
         outcome.imported = report[0] == 'I';
         outcome.message = report.substr(1);
