@@ -1,4 +1,5 @@
 #include "editor/document/Commands.hpp"
+#include "support/ThreeNodeScene.hpp"
 
 #include <QUndoStack>
 #include <gtest/gtest.h>
@@ -6,33 +7,18 @@
 namespace speculum::document {
 namespace {
 
-NodeTree named(const std::string& name, std::vector<NodeTree> children = {}) {
-    NodeTree node;
-    node.data.name = name;
-    node.children = std::move(children);
-    return node;
-}
+using test::named;
 
 // Scene: A, B (with children B1, B2), C.
 class CommandsTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        SceneData data;
-        data.nodes = {named("A"), named("B", {named("B1"), named("B2")}), named("C")};
-        scene.reset(data);
+        scene.reset(test::threeNodeScene());
         original = scene.toData();
         QObject::connect(&scene, &Scene::changed, [this] { ++changes; });
     }
 
-    NodeId idOf(const std::string& name) const {
-        NodeId found = kNoNode;
-        scene.forEachNode([&](const Node& node) {
-            if (node.name() == name) {
-                found = node.id();
-            }
-        });
-        return found;
-    }
+    NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
 
     std::vector<std::string> topLevelNames() const {
         std::vector<std::string> names;

@@ -3,6 +3,7 @@
 // merge chain that comes back to where it started leaves no step; a real edit still undoes and redoes.
 #include "editor/document/Commands.hpp"
 #include "editor/document/EditTransaction.hpp"
+#include "support/ThreeNodeScene.hpp"
 
 #include <QSignalSpy>
 #include <QUndoStack>
@@ -12,30 +13,13 @@
 namespace speculum::document {
 namespace {
 
-NodeTree named(const std::string& name, std::vector<NodeTree> children = {}) {
-    NodeTree node;
-    node.data.name = name;
-    node.children = std::move(children);
-    return node;
-}
+using test::named;
 
 class ExactUndo : public ::testing::Test {
 protected:
-    void SetUp() override {
-        SceneData data;
-        data.nodes = {named("A"), named("B", {named("B1"), named("B2")}), named("C")};
-        scene.reset(data);
-    }
+    void SetUp() override { scene.reset(test::threeNodeScene()); }
 
-    NodeId idOf(const std::string& name) const {
-        NodeId found = kNoNode;
-        scene.forEachNode([&](const Node& node) {
-            if (node.name() == name) {
-                found = node.id();
-            }
-        });
-        return found;
-    }
+    NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
 
     NodeData dataOf(const std::string& name) const { return scene.findNode(idOf(name))->data(); }
 

@@ -2,6 +2,7 @@
 
 #include "editor/document/Commands.hpp"
 #include "editor/document/Scene.hpp"
+#include "support/ThreeNodeScene.hpp"
 
 #include <QUndoStack>
 #include <gtest/gtest.h>
@@ -10,33 +11,16 @@
 
 namespace speculum::document::test {
 
-inline NodeTree named(const std::string& name, std::vector<NodeTree> children = {}) {
-    NodeTree node;
-    node.data.name = name;
-    node.children = std::move(children);
-    return node;
-}
-
 // Scene: A, B (with children B1, B2), C; a clean undo stack.
 class OperationsTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        SceneData data;
-        data.nodes = {named("A"), named("B", {named("B1"), named("B2")}), named("C")};
-        scene.reset(data);
+        scene.reset(test::threeNodeScene());
         original = scene.toData();
         QObject::connect(&scene, &Scene::changed, [this] { ++changes; });
     }
 
-    NodeId idOf(const std::string& name) const {
-        NodeId found = kNoNode;
-        scene.forEachNode([&](const Node& node) {
-            if (node.name() == name) {
-                found = node.id();
-            }
-        });
-        return found;
-    }
+    NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
 
     std::vector<std::string> namesUnder(NodeId parent) const {
         std::vector<std::string> names;
