@@ -1,5 +1,6 @@
 #include "app/CliOptions.hpp"
 
+#include "render/SceneLimits.hpp"
 #include "render/StillRenderer.hpp"
 #include "render/io/Printable.hpp"
 
@@ -48,7 +49,8 @@ render::Result<double> parseTime(const std::string& text) {
     }
 }
 
-constexpr std::array<std::string_view, 5> kCommands = {"render", "explain", "bench", "export", "help"};
+constexpr std::array<std::string_view, 6> kCommands = {"render", "explain", "bench",
+                                                       "time",   "export",  "help"};
 
 // Edit distance (insertions, deletions, substitutions, case ignored), for "did you mean".
 std::size_t distance(std::string_view a, std::string_view b) {
@@ -96,7 +98,7 @@ std::string unknownCommand(const std::string& word) {
     std::string message = "unknown command " + render::quoted(word);
     if (!best.empty())
         return message + " (did you mean '" + std::string(best) + "'?)";
-    return message + " (commands: render, explain, bench, export; see speculum --help)";
+    return message + " (commands: render, explain, bench, time, export; see speculum --help)";
 }
 
 } // namespace
@@ -108,6 +110,8 @@ std::string usageText() {
            "[--keep-going]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--json]\n"
            "  speculum bench PROJECT --out DIR [--quick] [--size WxH] [--keep-going]\n"
+           "  speculum time PROJECT [--size WxH] [--frames N] [--animated] [--time T] [--half-float] "
+           "[--json]\n"
            "  speculum export PROJECT -o OUT.glb|OUT.gltf [--keep-going]\n"
            "\n"
            "render writes PNG, JPEG, TIFF or EXR (by the extension of OUT); --size defaults to 1280x720,\n"
@@ -119,6 +123,11 @@ std::string usageText() {
            "depth, PCF, tessellation), times each and measures its error against the exact tracer; it "
            "writes\n"
            "results.csv, results.json, plots and report.md into DIR. --quick: fewer points at 480x270.\n"
+           "time draws N frames (default 100, after 5 warm-up frames) into an 8-bit target like a window's\n"
+           "and prints the median, minimum and maximum wall-clock frame time, each frame timed until its\n"
+           "pixels can be read, and each pass kind's share; a static scene reuses its shadow and\n"
+           "environment maps as the editor does, --animated plays the animation at 60 frames a second.\n"
+           "--half-float draws every frame through the half-float buffer and its composite, to compare.\n"
            "export writes the scene as glTF 2.0: .glb (one file, images inside) or .gltf (with its .bin and\n"
            "images beside it), with the camera and the lights (KHR_lights_punctual).\n"
            "A model or texture the scene names that is missing or unreadable is an error for render, bench\n"
@@ -150,6 +159,8 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
         o.command = Command::Bench;
     else if (first == "export")
         o.command = Command::Export;
+    else if (first == "time")
+        o.command = Command::Time;
     else if (!first.empty() && first[0] == '-')
         return Error{"unknown option " + render::quoted(first) + " (see speculum --help)"};
     if (o.command == Command::Editor) {
@@ -171,6 +182,7 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
     for (; i < args.size(); ++i) {
         const std::string& a = args[i];
         const bool renderOrExplain = o.command == Command::Render || o.command == Command::Explain;
+        const bool timed = o.command == Command::Time;
         if ((a == "-o" || a == "--output") &&
             (o.command == Command::Render || o.command == Command::Export)) {
             auto v = needValue(a);
@@ -182,7 +194,7 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
             if (!v)
                 return Error{v.error()};
             o.outDir = *v;
-        } else if (a == "--size" && (renderOrExplain || o.command == Command::Bench)) {
+        } else if (a == "--size" && (renderOrExplain || timed || o.command == Command::Bench)) {
             auto v = needValue(a);
             if (!v)
                 return Error{v.error()};
@@ -208,11 +220,11 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
             auto v = needValue(a);
             if (!v)
                 return Error{v.error()};
-            auto n = parseInt("--ssaa", *v, 1, 16);
+            auto n = parseInt("--ssaa", *v, render::kMinSsaa, render::kMaxSsaa);
             if (!n)
                 return Error{n.error()};
             o.ssaa = *n;
-        } else if (a == "--time" && renderOrExplain) {
+        } else if (a == "--time" && (renderOrExplain || timed)) {
             auto v = needValue(a);
             if (!v)
                 return Error{v.error()};
@@ -230,8 +242,20 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
             if (!n)
                 return Error{n.error()};
             o.frame = *n;
-        } else if (a == "--json" && o.command == Command::Explain) {
+        } else if (a == "--json" && (o.command == Command::Explain || timed)) {
             o.json = true;
+        } else if (a == "--frames" && timed) {
+            auto v = needValue(a);
+            if (!v)
+                return Error{v.error()};
+            auto n = parseInt("--frames", *v, 1, 100000);
+            if (!n)
+                return Error{n.error()};
+            o.frames = *n;
+        } else if (a == "--animated" && timed) {
+            o.animated = true;
+        } else if (a == "--half-float" && timed) {
+            o.halfFloat = true;
         } else if (a == "--keep-going" && o.command != Command::Explain) {
             o.keepGoing = true;
         } else if (a == "--quick" && o.command == Command::Bench) {

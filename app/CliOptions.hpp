@@ -8,7 +8,7 @@
 
 namespace speculum::app {
 
-enum class Command { Editor, Render, Explain, Bench, Export, Help, Version };
+enum class Command { Editor, Render, Explain, Bench, Time, Export, Help, Version };
 
 // The parsed command line (DESIGN.md, "Command line"). Values are validated here, before any work, so
 // bad input costs nothing and writes nothing.
@@ -29,6 +29,9 @@ struct CliOptions {
     // render, bench, export: go on without a referenced model or texture that is missing or unreadable
     // (each is then a warning); without it such a file is an error and nothing is written.
     bool keepGoing = false;
+    int frames = 100;       // time: frames timed after the warm-up
+    bool animated = false;  // time: the scene's animation plays (1/60 s a frame), maps re-rendered as needed
+    bool halfFloat = false; // time: the camera's view always in half float with its composite (to compare)
 };
 
 // Exit status for a command line that cannot be parsed (as for the usage errors of most tools).

@@ -4,6 +4,7 @@
 #include "app/OutputPaths.hpp"
 #include "app/ProjectInput.hpp"
 #include "editor/document/GltfExport.hpp"
+#include "render/FrameReport.hpp"
 #include "render/Renderer.hpp"
 #include "render/StillRenderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
@@ -101,11 +102,12 @@ std::vector<std::string> lightDrops(const render::FrameInput& input) {
     return drops;
 }
 
-// Every drop a rendered frame made, as warnings: lights beyond the limit and each unexpected skip.
-std::vector<std::string> frameDrops(const render::FrameInput& input, const render::FramePlan& plan) {
+// Every drop a rendered frame made, as warnings: lights beyond the limit and each unexpected skip, the
+// plan's and those found while running it.
+std::vector<std::string> frameDrops(const render::FrameInput& input, const render::FrameReport& report) {
     std::vector<std::string> drops = lightDrops(input);
     const std::string lightLimit = "more than " + std::to_string(render::kMaxLights) + " lights";
-    for (const render::SkippedEffect& s : plan.skipped) {
+    for (const render::SkippedEffect& s : report.skipped) {
         if (expectedSkip(s.reason) || s.reason.rfind(lightLimit, 0) == 0)
             continue;
         drops.push_back((s.target.empty() ? std::string("frame") : targetLabel(input, s.target)) +
@@ -273,7 +275,7 @@ int runRender(const CliOptions& options) {
         fail("render: " + still.error());
         return 1;
     }
-    printWarnings(frameDrops(frame->input, still->firstSample.plan));
+    printWarnings(frameDrops(frame->input, still->firstSample));
     printWarnings(still->firstSample.warnings);
 
     render::ImageMetadata metadata;
@@ -320,39 +322,44 @@ int runExplain(const CliOptions& options) {
         fail("explain: " + still.error());
         return 1;
     }
-    const render::FramePlan& plan = still->firstSample.plan;
+    const render::FrameReport& report = still->firstSample;
+    // The map's mirrors are those its envmap pass drew: none when the pass did not run (no map could be
+    // allocated), though the plan still holds them.
+    const render::EnvmapPlan* drawnEnvmap =
+        report.plan.envmap && report.countRan(render::PassKind::Envmap) > 0 ? &*report.plan.envmap : nullptr;
     if (options.json) {
         QJsonArray passes;
-        for (const render::PlannedPass& p : plan.passes) {
+        for (const render::PassRun& run : report.ran) {
+            const render::PlannedPass& p = report.planned(run);
             QJsonObject o;
             o["kind"] = QString::fromUtf8(render::toString(p.kind).data(),
                                           qsizetype(render::toString(p.kind).size()));
             o["target"] = QString::fromStdString(p.target);
-            o["reason"] = QString::fromStdString(p.reason);
-            o["gpuMs"] = p.gpuMs;
-            o["cpuMs"] = p.cpuMs;
+            o["reason"] = QString::fromStdString(report.reason(run));
+            o["gpuMs"] = run.gpuMs;
+            o["cpuMs"] = run.cpuMs;
             passes.append(o);
         }
         QJsonArray skipped;
-        for (const render::SkippedEffect& s : plan.skipped)
+        for (const render::SkippedEffect& s : report.skipped)
             skipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
                                        {"reason", QString::fromStdString(s.reason)}});
         QJsonArray warnings;
-        for (const std::string& w : still->firstSample.warnings)
+        for (const std::string& w : report.warnings)
             warnings.append(QString::fromStdString(w));
         // What the environment pass drew inside the map: the mirror views of each face, with reasons.
         auto faceLabel = [&](int face) {
             return face >= 0
-                       ? QString::fromStdString(plan.envmap->faces[static_cast<std::size_t>(face)].label)
+                       ? QString::fromStdString(drawnEnvmap->faces[static_cast<std::size_t>(face)].label)
                        : QString("every face");
         };
         QJsonValue envmap; // null when the map was not drawn this frame
-        if (plan.envmap) {
+        if (drawnEnvmap) {
             QJsonArray faces, mapPasses, mapSkipped;
-            for (const render::EnvmapFace& f : plan.envmap->faces)
+            for (const render::EnvmapFace& f : drawnEnvmap->faces)
                 faces.append(QString::fromStdString(f.label));
-            for (const render::PlannedPass& p : plan.envmap->passes) {
-                const render::MirrorView& view = plan.envmap->views[static_cast<std::size_t>(p.view)];
+            for (const render::PlannedPass& p : drawnEnvmap->passes) {
+                const render::MirrorView& view = drawnEnvmap->views[static_cast<std::size_t>(p.view)];
                 mapPasses.append(
                     QJsonObject{{"kind", QString::fromUtf8(render::toString(p.kind).data(),
                                                            qsizetype(render::toString(p.kind).size()))},
@@ -361,11 +368,11 @@ int runExplain(const CliOptions& options) {
                                 {"face", faceLabel(view.face)},
                                 {"depth", view.depth}});
             }
-            for (const render::SkippedEffect& s : plan.envmap->skipped)
+            for (const render::SkippedEffect& s : drawnEnvmap->skipped)
                 mapSkipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
                                               {"reason", QString::fromStdString(s.reason)},
                                               {"face", faceLabel(s.face)}});
-            envmap = QJsonObject{{"target", QString::fromStdString(plan.envmap->target)},
+            envmap = QJsonObject{{"target", QString::fromStdString(drawnEnvmap->target)},
                                  {"faces", faces},
                                  {"passes", mapPasses},
                                  {"skipped", mapSkipped}};
@@ -378,8 +385,8 @@ int runExplain(const CliOptions& options) {
                          {"time", options.time},
                          {"frame", options.frame},
                          {"tiles", still->tiles},
-                         {"frameGpuMs", still->firstSample.gpuMs},
-                         {"frameCpuMs", still->firstSample.cpuMs},
+                         {"frameGpuMs", report.gpuMs},
+                         {"frameCpuMs", report.cpuMs},
                          {"renderer", QString::fromStdString(frame->glDescription)}};
         std::cout << QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString();
         return 0;
@@ -390,37 +397,38 @@ int runExplain(const CliOptions& options) {
         std::printf("Larger than this GPU renders in one piece: the passes of the first of %d tiles.\n\n",
                     still->tiles);
     std::printf("Passes (in order):\n");
-    for (const render::PlannedPass& p : plan.passes) {
+    for (const render::PassRun& run : report.ran) {
+        const render::PlannedPass& p = report.planned(run);
         const std::string kind(render::toString(p.kind));
         std::printf("  %-11s %-14s gpu %7.2f ms  cpu %7.2f ms  %s\n", kind.c_str(),
-                    p.target.empty() ? "-" : render::printable(p.target).c_str(), p.gpuMs, p.cpuMs,
-                    oneLine(p.reason).c_str());
+                    p.target.empty() ? "-" : render::printable(p.target).c_str(), run.gpuMs, run.cpuMs,
+                    oneLine(report.reason(run)).c_str());
     }
-    if (plan.envmap && (!plan.envmap->passes.empty() || !plan.envmap->skipped.empty())) {
+    if (drawnEnvmap && (!drawnEnvmap->passes.empty() || !drawnEnvmap->skipped.empty())) {
         std::printf("\nInside the environment map of %s (drawn by its envmap pass):\n",
-                    render::printable(plan.envmap->target).c_str());
-        for (const render::PlannedPass& p : plan.envmap->passes) {
+                    render::printable(drawnEnvmap->target).c_str());
+        for (const render::PlannedPass& p : drawnEnvmap->passes) {
             const std::string kind(render::toString(p.kind));
             std::printf("  %-11s %-14s %s\n", kind.c_str(), render::printable(p.target).c_str(),
                         oneLine(p.reason).c_str());
         }
-        for (const render::SkippedEffect& s : plan.envmap->skipped)
+        for (const render::SkippedEffect& s : drawnEnvmap->skipped)
             std::printf("  %-11s %-14s %s\n", "skipped", render::printable(s.target).c_str(),
                         oneLine(s.reason).c_str());
     }
     std::printf("\nSkipped:\n");
-    if (plan.skipped.empty())
+    if (report.skipped.empty())
         std::printf("  (nothing)\n");
-    for (const render::SkippedEffect& s : plan.skipped)
+    for (const render::SkippedEffect& s : report.skipped)
         std::printf("  %-14s %s\n", s.target.empty() ? "-" : render::printable(s.target).c_str(),
                     oneLine(s.reason).c_str());
     // What the frame could not do as the scene asks (a map larger than the GPU holds, a missing texture).
-    if (!still->firstSample.warnings.empty()) {
+    if (!report.warnings.empty()) {
         std::printf("\nWarnings:\n");
-        for (const std::string& w : still->firstSample.warnings)
+        for (const std::string& w : report.warnings)
             std::printf("  %s\n", oneLine(w).c_str());
     }
-    std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", still->firstSample.gpuMs, still->firstSample.cpuMs);
+    std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", report.gpuMs, report.cpuMs);
     return 0;
 }
 

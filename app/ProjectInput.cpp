@@ -154,7 +154,8 @@ render::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy)
 }
 
 render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time, MissingFiles policy) {
-    document::Scene scene;
+    auto owned = std::make_unique<document::Scene>();
+    document::Scene& scene = *owned;
     if (render::Status opened = loadProjectScene(project, scene); !opened)
         return render::Error{opened.error()};
     ProjectFrame frame;
@@ -173,6 +174,7 @@ render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double
         if (mesh && mesh->builtin == document::BuiltinMesh::Teapot)
             frame.teapotTessellations.insert(mesh->tessellation);
     });
+    frame.scene = std::move(owned);
     return frame;
 }
 

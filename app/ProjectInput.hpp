@@ -36,6 +36,8 @@ struct ProjectFrame {
     std::unique_ptr<document::MeshLibrary> meshes;
     std::set<int> teapotTessellations; // of the built-in teapots the scene has (empty: none)
     std::vector<std::string> inputs;   // as ProjectFiles::inputs: what no output may overwrite
+    // The scene itself, for commands that evaluate it at other times too (`time --animated`).
+    std::unique_ptr<document::Scene> scene;
 };
 
 // Opens PROJECT into `scene`; load warnings go to stderr. Errors name the file and, for a bad file, the

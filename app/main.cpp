@@ -2,6 +2,7 @@
 #include "app/CliOptions.hpp"
 #include "app/HeadlessCommands.hpp"
 #include "app/ProjectInput.hpp"
+#include "app/TimeCommand.hpp"
 #include "editor/ui/Editor.hpp"
 
 #include <cstdlib>
@@ -46,6 +47,8 @@ int run(int argc, char** argv) {
         return runExplain(*options);
     case Command::Bench:
         return runBench(*options);
+    case Command::Time:
+        return runTime(*options);
     case Command::Export:
         return runExport(*options);
     case Command::Editor:

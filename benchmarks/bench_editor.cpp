@@ -2,6 +2,7 @@
 // dragged: every mouse move pushes a (merged) undo command, the document changes, and the viewport
 // snapshots, renders and repaints its handles. One iteration = one mouse move and the frame it causes.
 // Needs a display: scripts/with-display build/release/benchmarks/speculum_bench_editor
+#include "BenchViewport.hpp"
 #include "editor/document/Picking.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/Editor.hpp"
@@ -27,35 +28,11 @@
 namespace {
 
 using namespace speculum;
+using bench::sendMouse;
+using bench::waitForFrame;
 
 std::unique_ptr<ui::MainWindow> g_window;
 double g_fpsWithHandles = -1.0; // the drag as the user sees it (handles drawn), for the check at the end
-
-// Sleeps in an event loop until the viewport has drawn frame `target`, as the editor waits for the next
-// mouse event: a polling loop here would take a core from llvmpipe's rasterizer threads.
-bool waitForFrame(ui::Viewport& viewport, int target, int timeoutMs = 30000) {
-    if (viewport.framesRendered() >= target) {
-        return true;
-    }
-    QEventLoop loop;
-    QTimer timeout;
-    timeout.setSingleShot(true);
-    QObject::connect(&timeout, &QTimer::timeout, &loop, &QEventLoop::quit);
-    QObject::connect(&viewport, &ui::Viewport::frameRendered, &loop, [&] {
-        if (viewport.framesRendered() >= target) {
-            loop.quit();
-        }
-    });
-    timeout.start(timeoutMs);
-    loop.exec();
-    return viewport.framesRendered() >= target;
-}
-
-void sendMouse(ui::Viewport& viewport, QEvent::Type type, QPointF at, Qt::MouseButton button,
-               Qt::MouseButtons buttons) {
-    QMouseEvent event(type, at, viewport.mapToGlobal(at), button, buttons, Qt::NoModifier);
-    QCoreApplication::sendEvent(&viewport, &event);
-}
 
 // overlay = false hides the QPainter overlay (handles, outline) to show what it costs.
 void dragHandle(benchmark::State& state, bool overlay) {
@@ -92,8 +69,9 @@ void dragHandle(benchmark::State& state, bool overlay) {
         }
         rendererCpu += viewport.lastReport().cpuMs;
         rendererGpu += std::max(viewport.lastReport().gpuMs, 0.0);
-        for (const auto& pass : viewport.lastReport().plan.passes) {
-            passMs[std::string(render::toString(pass.kind))] += std::max(pass.gpuMs, 0.0);
+        const render::FrameReport& report = viewport.lastReport();
+        for (const render::PassRun& run : report.ran) {
+            passMs[std::string(render::toString(report.planned(run).kind))] += std::max(run.gpuMs, 0.0);
         }
         ++frames;
     }

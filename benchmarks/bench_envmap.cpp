@@ -138,9 +138,9 @@ void update(benchmark::State& state, ReflectorMap map, ReflectorFill fill) {
         g->renderer->render(reuse, target);
         updates.push_back(t1 - t0);
         reuses.push_back(processCpuMs() - t1);
-        for (const PlannedPass& p : report.plan.passes)
-            if (p.kind == PassKind::Envmap)
-                timer += p.gpuMs;
+        for (const PassRun& run : report.ran)
+            if (report.planned(run).kind == PassKind::Envmap)
+                timer += run.gpuMs;
     };
     for (auto _ : state)
         pair();

@@ -68,8 +68,8 @@ void frame(benchmark::State& state, bool animated) {
         // Timer queries wait for the GPU at the end of the frame, so wall time includes the GPU's work.
         const render::FrameReport report =
             f->renderer->render(input, {f->framebuffer.id(), width, height, true}, {});
-        for (const auto& pass : report.plan.passes)
-            passMs[std::string(render::toString(pass.kind))] += std::max(pass.gpuMs, 0.0);
+        for (const render::PassRun& run : report.ran)
+            passMs[std::string(render::toString(report.planned(run).kind))] += std::max(run.gpuMs, 0.0);
         gpuTotal += std::max(report.gpuMs, 0.0);
         ++frames;
         if (animated)

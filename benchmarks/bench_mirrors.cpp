@@ -159,8 +159,7 @@ void compare(benchmark::State& state, const std::string& name, const FrameInput&
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallStart).count();
         if (!record)
             return;
-        for (const PlannedPass& pass : report.plan.passes)
-            shadowFrames += pass.kind == PassKind::Shadow ? 1 : 0;
+        shadowFrames += static_cast<int>(report.countRan(PassKind::Shadow));
         if (timed) {
             gpu[side].push_back(report.gpuMs);
             return;

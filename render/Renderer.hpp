@@ -1,6 +1,7 @@
 #pragma once
 
 #include "render/FrameInput.hpp"
+#include "render/FrameReport.hpp"
 #include "render/GpuLimits.hpp"
 #include "render/Result.hpp"
 #include "render/plan/FramePlan.hpp"
@@ -33,6 +34,9 @@ struct ImageTile {
     int y = 0;
 };
 
+// The smallest RenderOptions::resolutionScale; less is drawn at this.
+inline constexpr double kMinResolutionScale = 0.125;
+
 struct RenderOptions {
     glm::dvec2 jitterPixels{0.0}; // sub-pixel image offset, for supersampling
     bool gpuTimings = true;       // timer queries per pass (waits for the GPU at the end of the frame)
@@ -47,31 +51,14 @@ struct RenderOptions {
     // without the texture lookup; false: the shaders that read both from uniforms alone. Both draw the
     // same image; tests and benchmarks compare them.
     bool lightingVariants = true;
-};
-
-// GPU memory of the render targets a frame used, from their sizes and internal formats (24-bit depth
-// counts 4 bytes). The caller's own target (the window, or the still's buffer) is not included.
-struct TargetMemory {
-    std::size_t main = 0;    // the linear colour buffer and its depth-stencil buffer
-    std::size_t mirrors = 0; // reflection textures of texture-technique mirrors (mip chains included)
-    std::size_t shadows = 0; // depth maps of the lights the main pass samples
-    std::size_t envmap = 0;  // the reflector's environment map, its depth and its intermediate cube
-    std::size_t total() const { return main + mirrors + shadows + envmap; }
-};
-
-struct FrameReport {
-    FramePlan plan;      // the passes that ran, with their timings, and the skips with reasons
-    double cpuMs = 0.0;  // whole frame on the CPU, planning included
-    double gpuMs = -1.0; // sum of the passes' GPU times, -1 if not measured
-    // e.g. a texture that failed to load, or a map drawn smaller than asked because it did not fit in GPU
-    // memory ("light 'Lamp': the 8192² cube shadow map did not fit in GPU memory; using 4096²")
-    std::vector<std::string> warnings;
-    // Non-empty: the frame could not be drawn at all (its colour buffer did not fit); also a warning.
-    std::string error;
-    TargetMemory memory;
-    // Mirror masks whose occlusion test the frame waited for before drawing on (passes/MirrorOcclusion):
-    // those no earlier frame saw, or saw hidden.
-    int occlusionWaits = 0;
+    // Draws the frame at this fraction of the target's width and height (at least one pixel) and scales
+    // it up to the whole target in the composite pass (bilinear): an interactive preview costs about the
+    // square of it. In [1/8, 1]; 1 (the default) draws every pixel of the target. Ignored for tiles.
+    double resolutionScale = 1.0;
+    // Draws the camera's view in half float and resolves it in the composite pass even where the plan
+    // would draw it in 8-bit sRGB (FramePlan::cameraBuffer): the reference the tests and `speculum time
+    // --half-float` compare the cheaper path with.
+    bool halfFloatCameraBuffer = false;
 };
 
 // Draws FrameInput snapshots with OpenGL 3.3 core. Needs a current context for its whole life, from

@@ -40,6 +40,28 @@ inline constexpr std::array<Name, 3> kLightTypes{{
     {"directional", "Directional"},
     {"spot", "Spot"},
 }};
+inline constexpr std::array<Name, 3> kTextureWraps{{
+    {"repeat", "Repeat"},
+    {"clamp", "Clamp"},
+    {"mirror", "Mirror"},
+}};
+inline constexpr std::array<Name, 3> kAlphaModes{{
+    {"opaque", "Opaque"},
+    {"mask", "Mask"},
+    {"blend", "Blend (drawn as mask)"},
+}};
+// The document's own enums (editor/document/SceneData.hpp): the built-in meshes, and a reflector's parallax
+// proxy, which the frame input spells with a None first (FrameInput's ParallaxProxy::Shape).
+inline constexpr std::array<Name, 4> kBuiltinMeshes{{
+    {"teapot", "Teapot"},
+    {"sphere", "Sphere"},
+    {"box", "Box"},
+    {"plane", "Plane"},
+}};
+inline constexpr std::array<Name, 2> kParallaxShapes{{
+    {"sphere", "Sphere"},
+    {"box", "Box"},
+}};
 
 // The file spelling of an enum value (an out-of-range value is a programmer error: "?").
 template <typename E, std::size_t N>

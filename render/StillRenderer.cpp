@@ -1,5 +1,6 @@
 #include "render/StillRenderer.hpp"
 
+#include "render/SceneLimits.hpp"
 #include "render/gl/Objects.hpp"
 
 #include <algorithm>
@@ -56,7 +57,7 @@ Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, con
     const auto start = std::chrono::steady_clock::now();
     if (Status size = checkStillSize(settings.width, settings.height); !size)
         return Error{size.error()};
-    const int n = std::clamp(settings.ssaa, 1, 16);
+    const int n = std::clamp(settings.ssaa, kMinSsaa, kMaxSsaa);
     const int limit = maxStillSize();
     const int tileSize = std::min(settings.tileSize > 0 ? settings.tileSize : kDefaultTileSize, limit);
     if (tileSize < 1)

@@ -31,8 +31,9 @@ using ProgressCallback = std::function<bool(double fraction, const std::string& 
 
 struct StillResult {
     Image image; // linear RGBA, row 0 at the top
-    // The plan and timings of the first sample of the first tile (the one that renders shadows and the
-    // environment map). A tile's plan holds only the passes that draw in that tile.
+    // The report of the first sample of the first tile (the one that renders shadows and the environment
+    // map): its plan, the passes that ran with their timings, and the skips. A tile's plan holds only the
+    // passes that draw in that tile.
     FrameReport firstSample;
     double totalMs = 0.0;
     int samples = 1;

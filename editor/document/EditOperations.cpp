@@ -3,6 +3,9 @@
 #include "editor/document/Commands.hpp"
 #include "editor/document/EditTransaction.hpp"
 #include "editor/document/NodeFactory.hpp"
+#include "editor/document/NodeMath.hpp"
+#include "editor/document/PickScene.hpp"
+#include "editor/document/Picking.hpp"
 #include "render/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
 
@@ -11,7 +14,12 @@
 #include <QUndoStack>
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
+#include <unordered_map>
 
 namespace speculum::document {
 
@@ -48,6 +56,86 @@ std::optional<int> moveTarget(const Scene& scene, NodeId id, NodeId newParent, i
     return newIndex;
 }
 
+// What a node draws itself (its mesh, its mirror), in world space; empty when it draws nothing or its
+// mesh is a model file and `files` is null (a duplicate must not read files on the GUI thread).
+render::math::Box ownWorldBox(const NodeData& d, const glm::dmat4& world, MeshLibrary& builtins,
+                              MeshLibrary* files) {
+    render::math::Box box;
+    std::vector<std::string> ignored;
+    if (d.mesh) {
+        MeshLibrary* library = d.mesh->builtin ? (files ? files : &builtins) : files;
+        if (library) {
+            if (auto mesh = library->get(*d.mesh, ignored); mesh && *mesh) {
+                box.add(render::math::worldBounds(meshBounds(*mesh), world));
+            }
+        }
+    }
+    if (d.mirror) {
+        const glm::vec2 h = glm::vec2(d.mirror->size * 0.5);
+        box.add(render::math::worldBounds(render::Bounds{{-h.x, 0.0f, -h.y}, {h.x, 0.0f, h.y}}, world));
+    }
+    return box;
+}
+
+// A node's subtree as a world box: what it draws, or a half-unit box around its origin when it draws
+// nothing measurable (an empty, a light, a model not read yet), so that even those step aside.
+render::math::Box subtreeWorldBox(const Node& node, const std::unordered_map<NodeId, glm::dmat4>& worlds,
+                                  MeshLibrary& builtins, MeshLibrary* files) {
+    render::math::Box box;
+    std::function<void(const Node&)> add = [&](const Node& n) {
+        if (const auto it = worlds.find(n.id()); it != worlds.end()) {
+            box.add(ownWorldBox(n.data(), it->second, builtins, files));
+        }
+        for (const auto& child : n.children()) {
+            add(*child);
+        }
+    };
+    add(node);
+    if (box.empty()) {
+        if (const auto it = worlds.find(node.id()); it != worlds.end()) {
+            const glm::dvec3 p(it->second[3]);
+            box.add(p - glm::dvec3(0.25));
+            box.add(p + glm::dvec3(0.25));
+        }
+    }
+    return box;
+}
+
+bool boxesOverlap(const render::math::Box& a, const render::math::Box& b, double eps) {
+    for (int i = 0; i < 3; ++i) {
+        if (!(a.min[i] < b.max[i] - eps && b.min[i] < a.max[i] - eps)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// How far along world +X a copy of `box` goes: past the original by its width and a gap, then on past
+// every box of `occupied` it would overlap there.
+double duplicateShift(const render::math::Box& box, const std::vector<render::math::Box>& occupied) {
+    const glm::dvec3 size = box.max - box.min;
+    const double scale = std::max({size.x, size.y, size.z, 1e-6});
+    const double gap = std::max(0.1 * size.x, 0.05 * scale);
+    const double eps = 1e-6 * scale;
+    double shift = size.x + gap;
+    for (std::size_t step = 0; step <= occupied.size(); ++step) {
+        render::math::Box moved = box;
+        moved.min.x += shift;
+        moved.max.x += shift;
+        double past = -1e300;
+        for (const auto& other : occupied) {
+            if (!other.empty() && boxesOverlap(moved, other, eps)) {
+                past = std::max(past, other.max.x);
+            }
+        }
+        if (past == -1e300) {
+            break;
+        }
+        shift = past + gap - box.min.x;
+    }
+    return shift;
+}
+
 } // namespace
 
 render::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree) {
@@ -78,7 +166,7 @@ render::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<Nod
 }
 
 render::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
-                                          NodeId current) {
+                                          NodeId current, MeshLibrary* meshes, double timeSeconds) {
     const std::vector<NodeId> nodes = existing(scene, roots);
     if (nodes.empty()) {
         return render::Error{"nothing is selected"};
@@ -86,10 +174,35 @@ render::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const 
     EditTransaction edit(undo, nodes.size() > 1 ? QStringLiteral("Duplicate %1 nodes").arg(nodes.size())
                                                 : QString());
     Duplicates result;
+    // What is already there, measured once; each copy placed joins it, so copies do not land in each other.
+    MeshLibrary builtins; // built-in shapes only: cheap, and never a file read
+    const auto worlds = worldMatrices(scene, timeSeconds);
+    std::vector<render::math::Box> occupied;
+    scene.forEachNode([&](const Node& n) {
+        if (const auto it = worlds.find(n.id()); it != worlds.end()) {
+            if (auto box = ownWorldBox(n.data(), it->second, builtins, meshes); !box.empty()) {
+                occupied.push_back(box);
+            }
+        }
+    });
     for (NodeId id : nodes) {
         // One at a time: each copy's name is made unique against the copies made before it.
         bool dropped = false;
         NodeTree copy = duplicateTree(scene, id, &dropped);
+        const render::math::Box box = subtreeWorldBox(*scene.findNode(id), worlds, builtins, meshes);
+        if (!box.empty()) {
+            const double shift = duplicateShift(box, occupied);
+            // The world +X shift in the parent's space (its rotation and scale undone).
+            const glm::dmat4 parent = parentWorldMatrix(scene, id, timeSeconds);
+            const glm::dvec3 local = glm::dvec3(glm::inverse(parent) * glm::dvec4(shift, 0.0, 0.0, 0.0));
+            if (std::isfinite(local.x) && std::isfinite(local.y) && std::isfinite(local.z)) {
+                copy.data.transform.translate += local;
+                render::math::Box placed = box;
+                placed.min.x += shift;
+                placed.max.x += shift;
+                occupied.push_back(placed);
+            }
+        }
         result.droppedReflector = result.droppedReflector || dropped;
         auto* command = new AddNodeCommand(scene, std::move(copy), scene.parentOf(id), scene.indexOf(id) + 1);
         command->setText(QStringLiteral("Duplicate %1").arg(quoted(scene.findNode(id)->name())));
@@ -225,6 +338,51 @@ PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const Im
         placeOnGround(box, placement.focus, occupiedBoxes(scene, placement.timeSeconds, meshes));
     placed.size = box.max - box.min;
     return placed;
+}
+
+NodeTree placeNewNode(const Scene& scene, MeshLibrary& meshes, NewNodeKind kind,
+                      const NewNodePlacement& placement) {
+    const bool light = kind == NewNodeKind::PointLight || kind == NewNodeKind::DirectionalLight ||
+                       kind == NewNodeKind::SpotLight;
+    NodeTree tree = makeNode(kind, glm::dvec3(0.0));
+    NodeData& d = tree.data;
+    bool flat = kind == NewNodeKind::Plane;
+    if (d.mirror) {
+        const glm::dvec3 toView = placement.viewPosition - placement.focus;
+        const double horizontal = std::hypot(toView.x, toView.z);
+        // Looking down by more than 60°: a mirror lying on the ground faces the camera better than a
+        // standing one, which the view would see almost edge-on from above.
+        if (horizontal > 1e-9 && std::atan2(toView.y, horizontal) < glm::radians(60.0)) {
+            // Rotate X by 90° turns the mirror's +Y normal to +Z; the yaw then points it at the view.
+            d.transform.rotate = {90.0, glm::degrees(std::atan2(toView.x, toView.z)), 0.0};
+        } else {
+            flat = true;
+        }
+    }
+    const glm::dmat4 local = localMatrix(d.transform);
+    render::math::Box box;
+    if (light) {
+        box.add(glm::dvec3(-0.1));
+        box.add(glm::dvec3(0.1));
+    } else {
+        box = ownWorldBox(d, local, meshes, &meshes);
+        if (box.empty()) { // an empty: a small box, so that empties added in a row step aside
+            box.add(glm::dvec3(-0.25));
+            box.add(glm::dvec3(0.25));
+        }
+    }
+    const std::vector<render::math::Box> occupied = occupiedBoxes(scene, placement.timeSeconds, meshes);
+    glm::dvec3 offset = placeOnGround(box, placement.focus, occupied);
+    if (light) {
+        // makeNode put it 2 units up: over the ground under the focus, whatever stands there.
+        offset = {placement.focus.x, offset.y + box.min.y, placement.focus.z};
+    }
+    if (flat) {
+        const glm::dvec3 size = box.max - box.min;
+        offset.y += 0.005 * std::max({size.x, size.z, 1e-3});
+    }
+    d.transform.translate += offset;
+    return tree;
 }
 
 } // namespace speculum::document

@@ -2,6 +2,7 @@
 
 #include "editor/document/MeshLibrary.hpp"
 #include "editor/document/ModelImport.hpp"
+#include "editor/document/NodeFactory.hpp"
 #include "editor/document/Scene.hpp"
 #include "render/FrameInput.hpp"
 #include "render/Result.hpp"
@@ -35,9 +36,14 @@ struct Duplicates {
     bool droppedReflector = false; // a copy lost its reflector: a scene holds at most one
 };
 // Copies each root (with its subtree) right after itself under the same parent, each copy's name unique
-// against the copies made before it: "Duplicate “Box”", or "Duplicate 3 nodes".
+// against the copies made before it: "Duplicate “Box”", or "Duplicate 3 nodes". Each copy is moved along
+// world +X past its original (its width and a gap) and past whatever else is there at that height, so it
+// never lands exactly on the original. `meshes` gives the boxes of model files (without it only built-in
+// shapes and mirrors are measured: a file is never read here); `timeSeconds` is the animation time at
+// which they are measured.
 render::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
-                                          NodeId current = kNoNode);
+                                          NodeId current = kNoNode, MeshLibrary* meshes = nullptr,
+                                          double timeSeconds = 0.0);
 
 // "Rename “A” to “B”". The name is trimmed; an empty or unchanged name is refused.
 render::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name);
@@ -73,5 +79,18 @@ struct PlacedModel {
 // reflector node for the whole file. `meshes` gives the boxes of the nodes already in the scene.
 PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const ImportedModel& model,
                                const std::string& absolutePath, const ImportPlacement& placement);
+
+// Where Add ▸ … puts a new node: on the ground at the view's focus, moved along +X past what is there
+// (placeOnGround, as an import). A new mirror stands upright facing the view (turned about Y toward the
+// camera), or lies flat facing up when the view looks down steeply (more than 60°), so the first mirror is
+// never edge-on; flat things (a plane, a lying mirror) sit a hair above the ground so they do not fight a
+// floor for depth. Lights go 2 units above the ground there.
+struct NewNodePlacement {
+    glm::dvec3 focus{0.0};                  // the point the view looks at
+    glm::dvec3 viewPosition{0.0, 0.0, 1.0}; // the view's camera: a new mirror faces it
+    double timeSeconds = 0.0;               // when "what is already there" is measured
+};
+NodeTree placeNewNode(const Scene& scene, MeshLibrary& meshes, NewNodeKind kind,
+                      const NewNodePlacement& placement);
 
 } // namespace speculum::document

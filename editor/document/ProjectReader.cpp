@@ -272,6 +272,9 @@ public:
         if (const QJsonValue v = o.get("camera"); !v.isUndefined()) {
             scene.camera = readCamera(v, "camera");
         }
+        if (const QJsonValue v = o.get("editorView"); !v.isUndefined()) {
+            scene.editorView = readEditorView(v, "editorView");
+        }
         if (const QJsonValue v = o.get("nodes"); !v.isUndefined()) {
             scene.nodes = readNodeList(v, "nodes");
         }
@@ -363,6 +366,26 @@ private:
         }
         c.extra = o.finish();
         return c;
+    }
+
+    // Both points are required: the struct's defaults are those of a new scene's camera, not this scene's,
+    // so a view with one of them missing is no view the editor saved.
+    EditorView readEditorView(const QJsonValue& v, const std::string& path) {
+        ObjectReader o(v, path, m_warnings);
+        EditorView view;
+        for (const char* key : {"position", "target"}) {
+            if (!o.has(key)) {
+                fail(o.at(key), "missing");
+            }
+        }
+        o.optional("position", view.position, readVec<3>);
+        o.optional("target", view.target, readVec<3>);
+        // The camera's rules for these two points (SceneChecks.hpp); the scene keeps no view they refuse.
+        if (const std::optional<FieldProblem> problem = editorViewProblem(view)) {
+            fail(join(o.path(), QString::fromStdString(problem->field)), problem->what);
+        }
+        view.extra = o.finish();
+        return view;
     }
 
     std::vector<NodeTree> readNodeList(const QJsonValue& v, const std::string& path) {

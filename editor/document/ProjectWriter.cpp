@@ -11,7 +11,8 @@ namespace speculum::document {
 
 namespace {
 
-// Field order is DESIGN.md's; unknown fields kept from the file follow the known ones.
+// Field order is DESIGN.md's, a field added since beside its kin (editorView after camera); unknown
+// fields kept from the file follow the known ones.
 class ProjectWriter {
 public:
     explicit ProjectWriter(const QDir& baseDir)
@@ -27,6 +28,10 @@ public:
         writeSettings(scene.settings);
         w.key("camera");
         writeCamera(scene.camera);
+        if (scene.editorView) {
+            w.key("editorView");
+            writeEditorView(*scene.editorView);
+        }
         w.key("nodes");
         writeNodes(scene.nodes);
         writeExtra(scene.extra);
@@ -82,6 +87,14 @@ private:
         field("near", c.near);
         field("far", c.far);
         writeExtra(c.extra);
+        w.endObject();
+    }
+
+    void writeEditorView(const EditorView& v) {
+        w.beginObject();
+        vec("position", v.position);
+        vec("target", v.target);
+        writeExtra(v.extra);
         w.endObject();
     }
 

@@ -2,6 +2,9 @@
 #include "editor/document/PropertyMakers.hpp"
 #include "render/SceneLimits.hpp"
 
+#include <type_traits>
+#include <utility>
+
 namespace speculum::document::groups {
 
 // The two reflecting components: the planar mirror and the curved reflector with its environment map.
@@ -56,6 +59,89 @@ ComponentInfo mirrorGroup() {
     return c;
 }
 
+namespace {
+
+// The parallax proxy: off, a sphere or a box around the capture point, with the same rules as the project
+// reader (a positive radius; a box that contains the capture point, min < 0 < max on every axis).
+void addParallaxProperties(ComponentInfo& c) {
+    using P = ReflectorParallax;
+    static const QStringList shapes{QStringLiteral("Off"), QStringLiteral("Sphere"), QStringLiteral("Box")};
+    c.properties.push_back(enumeration<NodeData>(
+        QStringLiteral("reflector.parallax"), QStringLiteral("Parallax proxy"), shapes,
+        [](const NodeData& d) {
+            if (!d.reflector) {
+                return -1;
+            }
+            if (!d.reflector->parallax) {
+                return 0;
+            }
+            return d.reflector->parallax->shape == ParallaxShape::Sphere ? 1 : 2;
+        },
+        [](NodeData& d, int i) -> render::Status {
+            if (!d.reflector) {
+                return render::Error{"Parallax proxy does not apply to this node"};
+            }
+            if (i == 0) {
+                d.reflector->parallax.reset();
+                return ok();
+            }
+            if (!d.reflector->parallax) {
+                d.reflector->parallax = P{};
+            }
+            d.reflector->parallax->shape = i == 1 ? ParallaxShape::Sphere : ParallaxShape::Box;
+            return ok();
+        }));
+    c.properties.back().info.tooltip = QStringLiteral(
+        "Corrects the environment map's lookups for the distance to what it shows: each reflected ray is "
+        "intersected with this sphere or box around the reflector's centre (world axes). Off treats "
+        "everything as infinitely far away; a proxy that fits the room makes near walls reflect in the "
+        "right place");
+    const auto parallaxIs = [](ParallaxShape shape) {
+        return [shape](const NodeData& d) {
+            return d.reflector && d.reflector->parallax && d.reflector->parallax->shape == shape;
+        };
+    };
+    const auto field = [](auto P::*member) {
+        using V = std::remove_reference_t<decltype(std::declval<P&>().*member)>;
+        return Access<NodeData, V>([member](NodeData& d) -> V* {
+            return d.reflector && d.reflector->parallax ? &((*d.reflector->parallax).*member) : nullptr;
+        });
+    };
+    c.properties.push_back(
+        number<NodeData>(QStringLiteral("reflector.parallax.radius"), QStringLiteral("Proxy radius"),
+                         field(&P::radius), {render::kMinScale, render::kMaxCoordinate}, QStringLiteral(" u"),
+                         QStringLiteral("Radius of the proxy sphere around the reflector's "
+                                        "centre")));
+    c.properties.back().visible = parallaxIs(ParallaxShape::Sphere);
+    const auto faces = [](double sign) {
+        return [sign](const glm::dvec3& v) -> QString {
+            for (int i = 0; i < 3; ++i) {
+                const double distance = sign * v[i];
+                if (!(distance >= render::kMinScale && distance <= render::kMaxCoordinate)) {
+                    return QStringLiteral("the box must contain the capture point (min < 0 < max on every "
+                                          "axis, at most %1 away)")
+                        .arg(formatNumber(render::kMaxCoordinate));
+                }
+            }
+            return {};
+        };
+    };
+    c.properties.push_back(vector<NodeData, 3>(QStringLiteral("reflector.parallax.min"),
+                                               QStringLiteral("Proxy box min"), field(&P::min), {},
+                                               QStringLiteral(" u"), faces(-1.0)));
+    c.properties.back().info.tooltip =
+        QStringLiteral("The box's lower corner relative to the reflector's centre: every component below 0");
+    c.properties.back().visible = parallaxIs(ParallaxShape::Box);
+    c.properties.push_back(vector<NodeData, 3>(QStringLiteral("reflector.parallax.max"),
+                                               QStringLiteral("Proxy box max"), field(&P::max), {},
+                                               QStringLiteral(" u"), faces(1.0)));
+    c.properties.back().info.tooltip =
+        QStringLiteral("The box's upper corner relative to the reflector's centre: every component above 0");
+    c.properties.back().visible = parallaxIs(ParallaxShape::Box);
+}
+
+} // namespace
+
 ComponentInfo reflectorGroup() {
     ComponentInfo c;
     c.key = QStringLiteral("reflector");
@@ -100,6 +186,7 @@ ComponentInfo reflectorGroup() {
                                                      in(&NodeData::reflector, &R::fill)));
     c.properties.back().info.tooltip =
         QStringLiteral("How dual-paraboloid and tennis-ball maps are filled; the cube map ignores it");
+    addParallaxProperties(c);
     c.properties.push_back(
         namedField<ReflectorUpdate>(QStringLiteral("reflector.update"), QStringLiteral("Update"),
                                     render::names::kReflectorUpdates, in(&NodeData::reflector, &R::update)));

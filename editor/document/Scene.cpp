@@ -1,5 +1,7 @@
 #include "editor/document/Scene.hpp"
 
+#include "editor/document/SceneChecks.hpp"
+
 #include <algorithm>
 #include <cassert>
 
@@ -30,6 +32,7 @@ void Scene::reset(SceneData data) {
     m_nodes.clear();
     m_settings = std::move(data.settings);
     m_camera = std::move(data.camera);
+    setEditorView(std::move(data.editorView));
     m_extra = std::move(data.extra);
     for (const NodeTree& tree : data.nodes) {
         auto node = createNode(tree);
@@ -44,6 +47,7 @@ SceneData Scene::toData() const {
     SceneData data;
     data.settings = m_settings;
     data.camera = m_camera;
+    data.editorView = m_editorView;
     data.extra = m_extra;
     data.nodes.reserve(m_nodes.size());
     for (const auto& node : m_nodes) {
@@ -107,6 +111,13 @@ void Scene::setCamera(const CameraData& camera) {
     m_camera = camera;
     emit cameraChanged();
     emit changed();
+}
+
+void Scene::setEditorView(std::optional<EditorView> view) {
+    if (view && editorViewProblem(*view)) {
+        view.reset();
+    }
+    m_editorView = std::move(view);
 }
 
 void Scene::setNodeData(NodeId id, const NodeData& data) {

@@ -6,6 +6,7 @@
 #include <QString>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -52,8 +53,9 @@ public:
     explicit Scene(QObject* parent = nullptr);
     ~Scene() override;
 
-    // Replaces everything (used after a successful load). Fresh ids are assigned; emits aboutToReset and
-    // sceneReset. The undo stack of the old document must be cleared by the caller.
+    // Replaces everything (used after a successful load), the editor view included, which is in place when
+    // sceneReset is emitted. Fresh ids are assigned; emits aboutToReset and sceneReset. The undo stack of
+    // the old document must be cleared by the caller.
     void reset(SceneData data);
     SceneData toData() const;
 
@@ -65,6 +67,16 @@ public:
     const SceneSettings& settings() const { return m_settings; }
     const CameraData& camera() const { return m_camera; }
     const QJsonObject& extraFields() const { return m_extra; }
+
+    // The editor's own view, saved with the project (EditorView.hpp): reset() takes it from the data and
+    // toData() gives it back, so saves and recovery files carry it. It is not part of the scene's content:
+    // setting it pushes no undo step, leaves the undo stack's clean state alone (the document does not
+    // become modified) and emits nothing, so that views do not redraw and the editor, which is its only
+    // writer (before each save), does not hear its own change back. A view the project reader would refuse
+    // (editorViewProblem(), SceneChecks.hpp: the points out of range or too close) is dropped, leaving no
+    // view, so that a saved file always opens.
+    const std::optional<EditorView>& editorView() const { return m_editorView; }
+    void setEditorView(std::optional<EditorView> view);
 
     const std::vector<std::unique_ptr<Node>>& topLevelNodes() const { return m_nodes; }
     int childCount(NodeId parent) const;                 // parent = kNoNode: top level
@@ -122,6 +134,7 @@ private:
 
     SceneSettings m_settings;
     CameraData m_camera;
+    std::optional<EditorView> m_editorView;
     QJsonObject m_extra;
     std::vector<std::unique_ptr<Node>> m_nodes;
     QString m_projectPath;

@@ -37,6 +37,22 @@ std::optional<FieldProblem> coordinates(const glm::dvec3& v, const char* field) 
     return std::nullopt;
 }
 
+// Both within kMaxCoordinate: the difference is finite. Too close for the renderers' float maths to tell
+// them apart is as bad as equal. `from` names the point the target must differ from.
+std::optional<FieldProblem> targetDistance(const glm::dvec3& position, const glm::dvec3& target,
+                                           const std::string& from) {
+    const double distance = glm::length(target - position);
+    const double minimum =
+        std::max(render::kMinScale, 1e-6 * std::max(largestMagnitude(position), largestMagnitude(target)));
+    if (!(distance >= minimum)) {
+        return FieldProblem{"target", distance == 0.0 ? "must differ from " + from
+                                                      : "must differ from " + from + " by at least " +
+                                                            formatLimit(minimum) + ", got a distance of " +
+                                                            formatLimit(distance)};
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 std::string formatLimit(double value) {
@@ -75,18 +91,10 @@ std::optional<FieldProblem> cameraProblem(const CameraData& c) {
                                        " times near (" + formatLimit(c.near) +
                                        ") for the depth buffer's precision, got " + formatLimit(c.far)};
     }
-    // Both within kMaxCoordinate: the difference is finite. Too close for the renderers' float maths to
-    // tell them apart is as bad as equal.
-    const glm::dvec3 view = c.target - c.position;
-    const double distance = glm::length(view);
-    const double minimum = std::max(
-        render::kMinScale, 1e-6 * std::max(largestMagnitude(c.position), largestMagnitude(c.target)));
-    if (!(distance >= minimum)) {
-        return FieldProblem{"target", distance == 0.0 ? std::string("must differ from the camera position")
-                                                      : "must differ from the camera position by at least " +
-                                                            formatLimit(minimum) + ", got a distance of " +
-                                                            formatLimit(distance)};
+    if (auto p = targetDistance(c.position, c.target, "the camera position")) {
+        return p;
     }
+    const glm::dvec3 view = c.target - c.position;
     if (largestMagnitude(c.up) < render::kMinScale) {
         return FieldProblem{"up", largestMagnitude(c.up) == 0.0
                                       ? std::string("must be non-zero")
@@ -97,6 +105,16 @@ std::optional<FieldProblem> cameraProblem(const CameraData& c) {
         return FieldProblem{"up", "must not be parallel to the view direction (from position to target)"};
     }
     return std::nullopt;
+}
+
+std::optional<FieldProblem> editorViewProblem(const EditorView& view) {
+    if (auto p = coordinates(view.position, "position")) {
+        return p;
+    }
+    if (auto p = coordinates(view.target, "target")) {
+        return p;
+    }
+    return targetDistance(view.position, view.target, "the view position");
 }
 
 } // namespace speculum::document

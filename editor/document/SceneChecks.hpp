@@ -21,6 +21,13 @@ struct FieldProblem {
 };
 std::optional<FieldProblem> cameraProblem(const CameraData& camera);
 
+// The first problem of a saved editor view ("position" or "target"), by the camera's rules for those two
+// points: coordinates within range, and apart by at least what the renderers can tell apart. The rest of
+// the view is the scene camera's, so no other rule applies (a view straight down along the camera's up is
+// fine). The reader refuses what this names, and the scene keeps no view that it names, so that a saved
+// file always opens.
+std::optional<FieldProblem> editorViewProblem(const EditorView& view);
+
 // Numbers as messages show them: shortest round-trip form ("1e+12", "0.001").
 std::string formatLimit(double value);
 

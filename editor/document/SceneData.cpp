@@ -1,67 +1,26 @@
 #include "editor/document/SceneData.hpp"
 
-#include <array>
+#include "render/SceneNames.hpp"
+
 #include <utility>
 
 namespace speculum::document {
 
 namespace {
 
-template <typename E>
-using NameTable = std::array<std::pair<E, std::string_view>, 4>;
+namespace names = render::names;
 
-constexpr NameTable<BuiltinMesh> kBuiltinNames{{{BuiltinMesh::Teapot, "teapot"},
-                                                {BuiltinMesh::Sphere, "sphere"},
-                                                {BuiltinMesh::Box, "box"},
-                                                {BuiltinMesh::Plane, "plane"}}};
-
-template <typename E, std::size_t N>
-std::string_view nameOf(const std::array<std::pair<E, std::string_view>, N>& table, E value) {
-    for (const auto& [e, name] : table) {
-        if (e == value) {
-            return name;
-        }
-    }
-    return "?";
-}
-
-template <typename E, std::size_t N>
-std::optional<E> valueOf(const std::array<std::pair<E, std::string_view>, N>& table, std::string_view name) {
-    for (const auto& [e, n] : table) {
-        if (n == name) {
-            return e;
-        }
-    }
-    return std::nullopt;
-}
-
-constexpr std::array<std::pair<LightType, std::string_view>, 3> kLightNames{
-    {{LightType::Point, "point"}, {LightType::Directional, "directional"}, {LightType::Spot, "spot"}}};
-
-constexpr std::array<std::pair<MirrorTechnique, std::string_view>, 2> kTechniqueNames{
-    {{MirrorTechnique::Stencil, "stencil"}, {MirrorTechnique::Texture, "texture"}}};
-
-constexpr std::array<std::pair<ReflectorMap, std::string_view>, 3> kMapNames{
-    {{ReflectorMap::Cube, "cube"},
-     {ReflectorMap::DualParaboloid, "dual-paraboloid"},
-     {ReflectorMap::TennisBall, "tennis-ball"}}};
-
-constexpr std::array<std::pair<ReflectorFill, std::string_view>, 2> kFillNames{
-    {{ReflectorFill::Direct, "direct"}, {ReflectorFill::Resampled, "resampled"}}};
-
-constexpr std::array<std::pair<ReflectorUpdate, std::string_view>, 3> kUpdateNames{
-    {{ReflectorUpdate::Always, "always"},
-     {ReflectorUpdate::OnChange, "on-change"},
-     {ReflectorUpdate::Once, "once"}}};
-
-constexpr std::array<std::pair<ParallaxShape, std::string_view>, 2> kShapeNames{
-    {{ParallaxShape::Sphere, "sphere"}, {ParallaxShape::Box, "box"}}};
-
-constexpr std::array<std::pair<TextureWrap, std::string_view>, 3> kWrapNames{
-    {{TextureWrap::Repeat, "repeat"}, {TextureWrap::Clamp, "clamp"}, {TextureWrap::Mirror, "mirror"}}};
-
-constexpr std::array<std::pair<AlphaMode, std::string_view>, 3> kAlphaModeNames{
-    {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}}};
+// The spellings are render/SceneNames.hpp's, indexed by the enum's value: each table has one name per
+// value, in the enum's order.
+static_assert(int(BuiltinMesh::Plane) + 1 == names::kBuiltinMeshes.size());
+static_assert(int(LightType::Spot) + 1 == names::kLightTypes.size());
+static_assert(int(MirrorTechnique::Texture) + 1 == names::kMirrorTechniques.size());
+static_assert(int(ReflectorMap::TennisBall) + 1 == names::kReflectorMaps.size());
+static_assert(int(ReflectorFill::Resampled) + 1 == names::kReflectorFills.size());
+static_assert(int(ReflectorUpdate::Once) + 1 == names::kReflectorUpdates.size());
+static_assert(int(ParallaxShape::Box) + 1 == names::kParallaxShapes.size());
+static_assert(int(TextureWrap::Mirror) + 1 == names::kTextureWraps.size());
+static_assert(int(AlphaMode::Blend) + 1 == names::kAlphaModes.size());
 
 } // namespace
 
@@ -95,59 +54,59 @@ MeshComponent MeshComponent::fromFile(std::string absolutePath) {
 }
 
 std::string_view toString(BuiltinMesh kind) {
-    return nameOf(kBuiltinNames, kind);
+    return names::fileName(names::kBuiltinMeshes, kind);
 }
 std::string_view toString(LightType type) {
-    return nameOf(kLightNames, type);
+    return names::fileName(names::kLightTypes, type);
 }
 std::string_view toString(MirrorTechnique technique) {
-    return nameOf(kTechniqueNames, technique);
+    return names::fileName(names::kMirrorTechniques, technique);
 }
 std::string_view toString(ReflectorMap map) {
-    return nameOf(kMapNames, map);
+    return names::fileName(names::kReflectorMaps, map);
 }
 
 std::optional<BuiltinMesh> builtinMeshFromString(std::string_view name) {
-    return valueOf(kBuiltinNames, name);
+    return names::fromFileName<BuiltinMesh>(names::kBuiltinMeshes, name);
 }
 std::optional<LightType> lightTypeFromString(std::string_view name) {
-    return valueOf(kLightNames, name);
+    return names::fromFileName<LightType>(names::kLightTypes, name);
 }
 std::optional<MirrorTechnique> mirrorTechniqueFromString(std::string_view name) {
-    return valueOf(kTechniqueNames, name);
+    return names::fromFileName<MirrorTechnique>(names::kMirrorTechniques, name);
 }
 std::optional<ReflectorMap> reflectorMapFromString(std::string_view name) {
-    return valueOf(kMapNames, name);
+    return names::fromFileName<ReflectorMap>(names::kReflectorMaps, name);
 }
 std::string_view toString(ReflectorFill fill) {
-    return nameOf(kFillNames, fill);
+    return names::fileName(names::kReflectorFills, fill);
 }
 std::string_view toString(ReflectorUpdate update) {
-    return nameOf(kUpdateNames, update);
+    return names::fileName(names::kReflectorUpdates, update);
 }
 std::string_view toString(ParallaxShape shape) {
-    return nameOf(kShapeNames, shape);
+    return names::fileName(names::kParallaxShapes, shape);
 }
 std::optional<ReflectorFill> reflectorFillFromString(std::string_view name) {
-    return valueOf(kFillNames, name);
+    return names::fromFileName<ReflectorFill>(names::kReflectorFills, name);
 }
 std::optional<ReflectorUpdate> reflectorUpdateFromString(std::string_view name) {
-    return valueOf(kUpdateNames, name);
+    return names::fromFileName<ReflectorUpdate>(names::kReflectorUpdates, name);
 }
 std::optional<ParallaxShape> parallaxShapeFromString(std::string_view name) {
-    return valueOf(kShapeNames, name);
+    return names::fromFileName<ParallaxShape>(names::kParallaxShapes, name);
 }
 std::string_view toString(TextureWrap wrap) {
-    return nameOf(kWrapNames, wrap);
+    return names::fileName(names::kTextureWraps, wrap);
 }
 std::string_view toString(AlphaMode mode) {
-    return nameOf(kAlphaModeNames, mode);
+    return names::fileName(names::kAlphaModes, mode);
 }
 std::optional<TextureWrap> textureWrapFromString(std::string_view name) {
-    return valueOf(kWrapNames, name);
+    return names::fromFileName<TextureWrap>(names::kTextureWraps, name);
 }
 std::optional<AlphaMode> alphaModeFromString(std::string_view name) {
-    return valueOf(kAlphaModeNames, name);
+    return names::fromFileName<AlphaMode>(names::kAlphaModes, name);
 }
 
 } // namespace speculum::document

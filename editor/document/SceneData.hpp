@@ -1,5 +1,7 @@
 #pragma once
 
+#include "editor/document/EditorView.hpp"
+
 #include <QJsonObject>
 #include <array>
 #include <glm/vec2.hpp>
@@ -217,7 +219,9 @@ struct NodeTree {
 // A whole project as a value.
 struct SceneData {
     SceneSettings settings;
-    CameraData camera;
+    CameraData camera; // what `speculum render`, the exports and the sweep see
+    // Where the editor last looked from: the editor's alone, never the scene camera. Absent in older files.
+    std::optional<EditorView> editorView;
     std::vector<NodeTree> nodes;
     QJsonObject extra; // unknown top-level fields
     bool operator==(const SceneData&) const = default;

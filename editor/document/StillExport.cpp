@@ -1,8 +1,10 @@
 #include "editor/document/StillExport.hpp"
 
 #include "editor/document/Snapshot.hpp"
+#include "render/SceneLimits.hpp"
 #include "render/image/ImageWriter.hpp"
 #include "render/io/Printable.hpp"
+#include "render/reference/Tracer.hpp"
 
 #include <QDir>
 #include <QFileInfo>
@@ -12,19 +14,15 @@ namespace speculum::document {
 
 render::Status validateStillExport(const StillExportSettings& settings, const QString& outputPath) {
     const std::string path = outputPath.toStdString();
-    if (settings.reference) {
-        return render::Error{
-            "the exact reference needs the ray-traced reference, which this version does not "
-            "have yet"};
-    }
     if (settings.width < 1 || settings.height < 1) {
         return render::Error{"the image size must be at least 1×1"};
     }
     if (auto size = render::checkStillSize(settings.width, settings.height); !size) {
         return size;
     }
-    if (settings.ssaa < 1 || settings.ssaa > 16) {
-        return render::Error{"supersampling must be in 1..16, got " + std::to_string(settings.ssaa)};
+    if (settings.ssaa < render::kMinSsaa || settings.ssaa > render::kMaxSsaa) {
+        return render::Error{"supersampling must be in " + std::to_string(render::kMinSsaa) + ".." +
+                             std::to_string(render::kMaxSsaa) + ", got " + std::to_string(settings.ssaa)};
     }
     if (!render::isSupportedImagePath(path)) {
         return render::Error{render::printable(path, 200) + ": unsupported image format (supported: " +
@@ -42,7 +40,7 @@ render::ImageMetadata stillMetadata(const QString& projectPath, const StillExpor
                                     double renderMs, const std::string& rendererDescription) {
     std::ostringstream text;
     text << "size " << settings.width << "x" << settings.height << ", ssaa " << settings.ssaa << ", time "
-         << settings.time << " s";
+         << settings.time << " s" << (settings.reference ? ", reference" : "");
     const std::string name = projectPath.isEmpty() ? std::string("an untitled scene")
                                                    : QFileInfo(projectPath).fileName().toStdString();
     render::ImageMetadata metadata;
@@ -59,6 +57,28 @@ render::ImageMetadata stillMetadata(const QString& projectPath, const StillExpor
     return metadata;
 }
 
+namespace {
+
+// `speculum render --reference`'s path: the exact tracer on the CPU (no GL), on the calling thread, which
+// the progress callback keeps responsive and can stop.
+render::Result<render::reference::TraceResult> traceStill(const render::FrameInput& input,
+                                                          const StillExportSettings& settings,
+                                                          const render::ProgressCallback& progress) {
+    auto tracer = render::reference::Tracer::create(input);
+    if (!tracer) {
+        return render::Error{tracer.error()};
+    }
+    render::reference::TraceSettings trace;
+    trace.width = settings.width;
+    trace.height = settings.height;
+    trace.ssaa = settings.ssaa;
+    return tracer->render(trace, [&](double fraction) {
+        return !progress || progress(fraction, "exact reference, ray tracing");
+    });
+}
+
+} // namespace
+
 render::Result<StillExportResult> exportStill(render::Renderer& renderer, const Scene& scene,
                                               MeshLibrary& meshes, const StillExportSettings& settings,
                                               const QString& outputPath,
@@ -72,16 +92,28 @@ render::Result<StillExportResult> exportStill(render::Renderer& renderer, const 
     if (settings.camera) {
         input.camera = *settings.camera;
     }
-    const render::StillSettings still{settings.width, settings.height, settings.ssaa};
-    auto rendered = render::renderStill(renderer, input, still, progress);
-    if (!rendered) {
-        return render::Error{rendered.error()};
+    std::string description = rendererDescription;
+    if (settings.reference) {
+        auto traced = traceStill(input, settings, progress);
+        if (!traced) {
+            return render::Error{traced.error()};
+        }
+        result.warnings.insert(result.warnings.end(), traced->warnings.begin(), traced->warnings.end());
+        result.still.image = std::move(traced->image);
+        result.still.totalMs = traced->totalMs;
+        result.still.samples = traced->samples;
+        description = "reference ray tracer (Embree 3)";
+    } else {
+        const render::StillSettings still{settings.width, settings.height, settings.ssaa};
+        auto rendered = render::renderStill(renderer, input, still, progress);
+        if (!rendered) {
+            return render::Error{rendered.error()};
+        }
+        result.still = std::move(*rendered);
+        result.warnings.insert(result.warnings.end(), result.still.firstSample.warnings.begin(),
+                               result.still.firstSample.warnings.end());
     }
-    result.still = std::move(*rendered);
-    result.warnings.insert(result.warnings.end(), result.still.firstSample.warnings.begin(),
-                           result.still.firstSample.warnings.end());
-    const auto metadata =
-        stillMetadata(scene.projectPath(), settings, result.still.totalMs, rendererDescription);
+    const auto metadata = stillMetadata(scene.projectPath(), settings, result.still.totalMs, description);
     if (auto written = render::writeImage(outputPath.toStdString(), result.still.image, metadata); !written) {
         return render::Error{written.error()};
     }

@@ -21,7 +21,9 @@ struct StillExportSettings {
     int height = 720;
     int ssaa = 1;
     double time = 0.0;
-    bool reference = false; // the exact ray-traced reference; not available in this version
+    // The exact ray-traced reference (`speculum render --reference`): the CPU tracer, no GL; the renderer
+    // passed to exportStill is not used.
+    bool reference = false;
     // Render through this camera instead of the scene's (the editor's "current view" option).
     std::optional<render::Camera> camera;
 };

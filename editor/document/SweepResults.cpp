@@ -61,6 +61,11 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
         }
         return it->second;
     };
+    // What a node holds so far: earlier keys of the record may have edited it already.
+    auto sofar = [&](const Node& node) -> const NodeData& {
+        const auto it = edited.find(node.id());
+        return it != edited.end() ? it->second : node.data();
+    };
     std::optional<SceneSettings> sceneSettings;
 
     for (const auto& setting : settings) {
@@ -82,10 +87,7 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
                     return; // at most one reflector; the first is the one the snapshot draws
                 }
                 ++matched;
-                // Earlier keys of this record may have edited it already.
-                const auto done = edited.find(node.id());
-                const ReflectorComponent& current =
-                    done != edited.end() ? *done->second.reflector : *node.data().reflector;
+                const ReflectorComponent& current = *sofar(node).reflector;
                 ReflectorComponent r = current;
                 if (key == QStringLiteral("map")) {
                     const auto map = reflectorMapFromString(value.toStdString());
@@ -121,7 +123,7 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
             scene.forEachNode([&](const Node& node) {
                 if (node.data().mirror) {
                     ++matched;
-                    if (technique && node.data().mirror->technique != *technique) {
+                    if (technique && sofar(node).mirror->technique != *technique) {
                         edit(node).mirror->technique = *technique;
                     }
                 }
@@ -131,11 +133,9 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
                                      : QString();
         } else if (key == QStringLiteral("mirrorDepth")) {
             if (isInt && n >= 0 && n <= 16) {
-                SceneSettings s = scene.settings();
+                SceneSettings s = sceneSettings.value_or(scene.settings());
                 s.mirrorDepth = n;
-                if (!(s == scene.settings())) {
-                    sceneSettings = s;
-                }
+                sceneSettings = s;
             } else {
                 problem = QStringLiteral("not a depth in 0..16");
             }
@@ -144,7 +144,7 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
             scene.forEachNode([&](const Node& node) {
                 if (node.data().light && node.data().light->shadows) {
                     ++matched;
-                    if (valid && node.data().light->shadows->pcf != n) {
+                    if (valid && sofar(node).light->shadows->pcf != n) {
                         edit(node).light->shadows->pcf = n;
                     }
                 }
@@ -158,7 +158,7 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
                 const auto& mesh = node.data().mesh;
                 if (mesh && mesh->builtin == BuiltinMesh::Teapot) {
                     ++matched;
-                    if (valid && mesh->tessellation != n) {
+                    if (valid && sofar(node).mesh->tessellation != n) {
                         edit(node).mesh->tessellation = n;
                     }
                 }
@@ -173,6 +173,15 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
             << (problem.isEmpty() ? what : what + QStringLiteral(": ") + problem);
     }
 
+    // A later key of the record can undo an earlier one (map = cube, then map = the current type): a node
+    // edited back to what it holds is no change, and an application of nothing gets no command.
+    std::erase_if(order, [&](NodeId id) {
+        const Node* node = scene.findNode(id);
+        return node && edited.at(id) == node->data();
+    });
+    if (sceneSettings && *sceneSettings == scene.settings()) {
+        sceneSettings.reset();
+    }
     if (order.empty() && !sceneSettings) {
         return out;
     }

@@ -1,6 +1,7 @@
 #include "editor/ui/AccuracyPanel.hpp"
 
 #include "accuracy/Report.hpp"
+#include "editor/document/Commands.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/document/Snapshot.hpp"
 #include "editor/document/SweepResults.hpp"
@@ -17,13 +18,16 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -72,6 +76,86 @@ protected:
 private:
     QImage m_image;
 };
+
+// An image scaled to fit the space it has, keeping its aspect (at most twice its own size); the pixmap
+// it holds is the image at full size, so the layout is not forced as wide as the image.
+ImageTile::ImageTile(QWidget* parent)
+    : QLabel(parent) {
+    setAlignment(Qt::AlignCenter);
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+}
+
+void ImageTile::setImage(const QImage& image) {
+    m_image = image;
+    if (image.isNull()) {
+        QLabel::clear();
+    } else {
+        setPixmap(QPixmap::fromImage(image));
+    }
+    updateGeometry();
+    update();
+}
+
+void ImageTile::setImageHeights(int minimum, int maximum) {
+    m_minimumHeight = minimum;
+    m_maximumHeight = maximum;
+    updateGeometry();
+}
+
+QSize ImageTile::sizeHint() const {
+    if (m_image.isNull()) {
+        return minimumSizeHint();
+    }
+    // As wide as the image at its largest allowed height, no wider.
+    const int width =
+        std::min(m_image.width(), std::max(1, m_maximumHeight * m_image.width() / m_image.height()));
+    return {width, heightForWidth(width)};
+}
+
+QSize ImageTile::minimumSizeHint() const {
+    // Never shrunk to a thumbnail nobody can read: at least m_minimumHeight tall (or the image's height).
+    return {48, m_image.isNull() ? 27 : std::min(m_image.height(), m_minimumHeight)};
+}
+
+bool ImageTile::hasHeightForWidth() const {
+    return !m_image.isNull();
+}
+
+int ImageTile::heightForWidth(int width) const {
+    if (m_image.isNull() || m_image.width() <= 0) {
+        return minimumSizeHint().height();
+    }
+    const int shown = std::min(width, m_image.width());
+    const int lowest = minimumSizeHint().height();
+    return std::clamp(shown * m_image.height() / m_image.width(), lowest, std::max(lowest, m_maximumHeight));
+}
+
+QRect ImageTile::imageRect() const {
+    if (m_image.isNull()) {
+        return {};
+    }
+    const QSize fitted =
+        m_image.size().scaled(contentsRect().size().boundedTo(m_image.size() * 2), Qt::KeepAspectRatio);
+    QRect r(QPoint(0, 0), fitted);
+    r.moveCenter(contentsRect().center());
+    return r;
+}
+
+void ImageTile::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    if (m_image.isNull()) {
+        return;
+    }
+    painter.setRenderHint(QPainter::SmoothPixmapTransform);
+    painter.drawImage(imageRect(), m_image);
+}
+
+void ImageTile::mousePressEvent(QMouseEvent* event) {
+    if (event->button() == Qt::LeftButton && !m_image.isNull()) {
+        emit clicked();
+    }
+    QLabel::mousePressEvent(event);
+}
 
 namespace {
 
@@ -149,10 +233,80 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
     numbers->addRow(tr("Raster frame"), m_rasterMs);
     numbers->addRow(tr("Exact tracer"), m_traceMs);
 
-    m_errorMap = new QLabel(compareBox);
-    m_errorMap->setObjectName(QStringLiteral("accuracyErrorMap"));
-    m_errorMap->setAlignment(Qt::AlignCenter);
-    m_errorMap->setMinimumHeight(80);
+    m_explanation = new QLabel(
+        tr("<b>RMSE</b> is the typical difference of a pixel's colour between the two images (sRGB, 0 = "
+           "identical, 1 = black against white); <b>PSNR</b> says the same in decibels, 20·log10(1 / RMSE), "
+           "so higher is better: above 40 dB the differences are invisible, 30–40 dB they show on a close "
+           "look, below 30 dB they are obvious."),
+        compareBox);
+    m_explanation->setObjectName(QStringLiteral("accuracyExplanation"));
+    m_explanation->setWordWrap(true);
+    m_explanation->setTextFormat(Qt::RichText);
+
+    // What the numbers measured, two ways: the exact image, the raster image and their difference side by
+    // side, or one larger view that flips between the exact and the raster image (differences jump out
+    // when the eye stays in one place).
+    m_imageMode = new QComboBox(compareBox);
+    m_imageMode->setObjectName(QStringLiteral("accuracyImageMode"));
+    m_imageMode->addItem(tr("Side by side"));
+    m_imageMode->addItem(tr("Flip exact / raster"));
+    m_imageMode->setToolTip(tr("Show the three images next to each other, or one image that alternates "
+                               "between the exact and the raster one"));
+    m_flipButton = new QPushButton(tr("Flip"), compareBox);
+    m_flipButton->setObjectName(QStringLiteral("accuracyFlipButton"));
+    m_flipButton->setToolTip(tr("Alternate the view between the exact and the raster image (or click "
+                                "the image)"));
+    m_flipButton->hide();
+    auto* modeRow = new QHBoxLayout;
+    modeRow->addWidget(m_imageMode, 1);
+    modeRow->addWidget(m_flipButton);
+
+    m_images = new QWidget(compareBox);
+    m_images->setObjectName(QStringLiteral("accuracyImages"));
+    auto* imagesLayout = new QVBoxLayout(m_images);
+    imagesLayout->setContentsMargins(0, 0, 0, 0);
+    imagesLayout->addLayout(modeRow);
+    m_sideBySide = new QWidget(m_images);
+    auto* imagesRow = new QHBoxLayout(m_sideBySide);
+    imagesRow->setContentsMargins(0, 0, 0, 0);
+    auto tile = [&](const char* name, const QString& caption, const QString& tooltip) {
+        auto* column = new QVBoxLayout;
+        auto* image = new ImageTile(m_sideBySide);
+        image->setObjectName(QString::fromLatin1(name));
+        image->setToolTip(tooltip);
+        auto* text = new QLabel(caption, m_sideBySide);
+        text->setAlignment(Qt::AlignCenter);
+        text->setWordWrap(true);
+        text->setToolTip(tooltip);
+        column->addWidget(image, 1);
+        column->addWidget(text);
+        imagesRow->addLayout(column, 1);
+        return image;
+    };
+    m_reference = tile("accuracyReference", tr("Exact (ray traced)"),
+                       tr("The reference: the exact tracer's image of this view"));
+    m_raster = tile("accuracyRaster", tr("Raster (what the editor draws)"),
+                    tr("The rasterizer's image with the scene's settings"));
+    m_errorMap = tile("accuracyErrorMap", tr("Error map"),
+                      tr("Brighter = larger difference; 64/255 or more is the top of the ramp"));
+    m_flipPage = new QWidget(m_images);
+    auto* flipLayout = new QVBoxLayout(m_flipPage);
+    flipLayout->setContentsMargins(0, 0, 0, 0);
+    m_flipView = new ImageTile(m_flipPage);
+    m_flipView->setObjectName(QStringLiteral("accuracyFlipView"));
+    m_flipView->setImageHeights(200, 320);
+    m_flipView->setToolTip(tr("Click to flip between the exact and the raster image"));
+    m_flipView->setCursor(Qt::PointingHandCursor);
+    m_flipCaption = new QLabel(m_flipPage);
+    m_flipCaption->setObjectName(QStringLiteral("accuracyFlipCaption"));
+    m_flipCaption->setAlignment(Qt::AlignCenter);
+    m_flipCaption->setWordWrap(true);
+    flipLayout->addWidget(m_flipView, 1);
+    flipLayout->addWidget(m_flipCaption);
+    m_flipPage->hide();
+    imagesLayout->addWidget(m_sideBySide);
+    imagesLayout->addWidget(m_flipPage);
+    m_images->hide();
     m_overlay = new QCheckBox(tr("Show the error map over the viewport"), compareBox);
     m_overlay->setObjectName(QStringLiteral("accuracyOverlay"));
     m_overlay->setEnabled(false);
@@ -163,7 +317,8 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
     compareLayout->addWidget(m_progress);
     compareLayout->addWidget(m_status);
     compareLayout->addLayout(numbers);
-    compareLayout->addWidget(m_errorMap);
+    compareLayout->addWidget(m_explanation);
+    compareLayout->addWidget(m_images, 1);
     compareLayout->addWidget(m_overlay);
 
     auto* sweepBox = new QGroupBox(tr("Sweep of the settings (speculum bench)"), this);
@@ -185,11 +340,12 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
     m_loadSweep = new QPushButton(tr("Load sweep…"), sweepBox);
     m_loadSweep->setObjectName(QStringLiteral("loadSweep"));
     m_loadSweep->setToolTip(tr("Open the results.json that `speculum bench PROJECT --out DIR` wrote"));
-    auto* sweepButtons = new QHBoxLayout;
-    sweepButtons->addWidget(m_runSweep, 1);
-    sweepButtons->addWidget(m_sweepSize);
-    sweepButtons->addWidget(m_cancelSweep);
-    sweepButtons->addWidget(m_loadSweep);
+    // Two rows, so that the panel fits a dock beside the Properties one.
+    auto* sweepButtons = new QGridLayout;
+    sweepButtons->addWidget(m_runSweep, 0, 0);
+    sweepButtons->addWidget(m_sweepSize, 0, 1);
+    sweepButtons->addWidget(m_cancelSweep, 1, 0);
+    sweepButtons->addWidget(m_loadSweep, 1, 1);
     m_sweepProgress = new QProgressBar(sweepBox);
     m_sweepProgress->setObjectName(QStringLiteral("sweepProgress"));
     m_sweepProgress->setFormat(QStringLiteral("%v / %m"));
@@ -227,9 +383,24 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
     sweepLayout->addWidget(m_sweepMessage);
     sweepLayout->addWidget(m_findingsScroll, 2);
 
+    // In a scroll area: the images and the chart keep a useful size in a short dock.
+    auto* content = new QWidget;
+    content->setObjectName(QStringLiteral("accuracyContent"));
+    auto* contentLayout = new QVBoxLayout(content);
+    contentLayout->addWidget(compareBox);
+    contentLayout->addWidget(sweepBox, 1);
+    auto* scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("accuracyScroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(content);
+    // As wide as the content needs (its buttons), so that nothing is cut off at the right.
+    scroll->setMinimumWidth(content->minimumSizeHint().width() +
+                            scroll->verticalScrollBar()->sizeHint().width());
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(compareBox);
-    layout->addWidget(sweepBox, 1);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(scroll);
 
     connect(m_compare, &QPushButton::clicked, this, &AccuracyPanel::compareWithExact);
     connect(m_cancel, &QPushButton::clicked, this, &AccuracyPanel::cancelComparison);
@@ -238,6 +409,13 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
     connect(m_comparison, &ExactComparison::finished, this, &AccuracyPanel::showResult);
     connect(m_comparison, &ExactComparison::failed, this, &AccuracyPanel::comparisonFailed);
     connect(m_overlay, &QCheckBox::toggled, m_overlayWidget, &QWidget::setVisible);
+    connect(m_imageMode, &QComboBox::currentIndexChanged, this, [this](int mode) {
+        m_sideBySide->setVisible(mode == 0);
+        m_flipPage->setVisible(mode == 1);
+        m_flipButton->setVisible(mode == 1);
+    });
+    connect(m_flipButton, &QPushButton::clicked, this, &AccuracyPanel::flip);
+    connect(m_flipView, &ImageTile::clicked, this, &AccuracyPanel::flip);
     connect(m_loadSweep, &QPushButton::clicked, this, &AccuracyPanel::loadSweepDialog);
     connect(m_runSweep, &QPushButton::clicked, this,
             [this] { runSweep(m_sweepSize->currentData().toBool()); });
@@ -258,6 +436,65 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
         }
         m_sceneChangedDuringSweep = m_sceneChangedDuringSweep || m_sweep->running();
     });
+    // A measurement of the previous document says nothing about the new one.
+    connect(&m_scene, &document::Scene::sceneReset, this, &AccuracyPanel::clear);
+}
+
+QString AccuracyPanel::explanationText() const {
+    return m_explanation->text();
+}
+
+void AccuracyPanel::clear() {
+    m_comparison->cancel();
+    if (m_sweep->running()) {
+        cancelSweep();
+    }
+    m_last.reset();
+    for (QLabel* l : {m_rmse, m_psnr, m_psnrMirrors, m_psnrReflector, m_rasterMs, m_traceMs}) {
+        l->setText(QStringLiteral("—"));
+    }
+    for (ImageTile* tile : {m_reference, m_raster, m_errorMap, m_flipView}) {
+        tile->setImage({});
+    }
+    m_flipCaption->clear();
+    m_flipShowsReference = true;
+    m_images->hide();
+    m_status->setText(tr("Renders the current view both ways and measures the difference."));
+    m_overlay->setChecked(false);
+    m_overlay->setEnabled(false);
+    m_overlayWidget->setImage({});
+    m_overlayWidget->hide();
+    m_chartBefore.reset();
+    m_chart->setResults({});
+    m_findings->clear();
+    m_findingsScroll->hide();
+    m_sweepMessage->setText(
+        tr("Click a point to give the document that configuration's settings (one undo step)."));
+}
+
+bool AccuracyPanel::flipShowsReference() const {
+    return m_flipShowsReference;
+}
+
+void AccuracyPanel::setImageMode(ImageMode mode) {
+    m_imageMode->setCurrentIndex(mode == ImageMode::Flip ? 1 : 0);
+}
+
+void AccuracyPanel::flip() {
+    m_flipShowsReference = !m_flipShowsReference;
+    showFlipImage();
+}
+
+void AccuracyPanel::showFlipImage() {
+    if (!m_last) {
+        m_flipView->setImage({});
+        m_flipCaption->clear();
+        return;
+    }
+    m_flipView->setImage(m_flipShowsReference ? m_last->reference : m_last->raster);
+    m_flipCaption->setText(m_flipShowsReference
+                               ? tr("Exact (ray traced) — Flip for the raster image")
+                               : tr("Raster (what the editor draws) — Flip for the exact image"));
 }
 
 void AccuracyPanel::setPreviewWidth(int pixels) {
@@ -299,8 +536,11 @@ void AccuracyPanel::showResult(const ComparisonResult& result) {
                           .arg(result.width)
                           .arg(result.height)
                           .arg(m_clock.time(), 0, 'f', 2));
-    m_errorMap->setPixmap(QPixmap::fromImage(
-        result.errorMap.scaledToWidth(std::min(result.errorMap.width(), 320), Qt::SmoothTransformation)));
+    m_reference->setImage(result.reference);
+    m_raster->setImage(result.raster);
+    m_errorMap->setImage(result.errorMap);
+    showFlipImage();
+    m_images->show();
     m_overlayWidget->setImage(result.errorMap);
     m_overlay->setEnabled(true);
     for (const QString& w : result.warnings) {
@@ -376,8 +616,9 @@ QString AccuracyPanel::applyRecord(int index) {
     const QString text = tr("Apply Sweep Setting %1 %2").arg(family, label);
     auto application = document::applySweepSettings(m_scene, record.settings, text, proxy);
     QString summary;
-    if (application.command) {
-        m_undoStack.push(application.command.release());
+    // pushEdit: a record whose settings the document already has leaves no step, and keeps the redo steps
+    // and the clean state.
+    if (application.command && document::pushEdit(m_undoStack, application.command.release())) {
         summary = tr("Applied %1 %2 (%3 ms, PSNR %4 dB).")
                       .arg(family, label)
                       .arg(accuracy::frameMs(record), 0, 'f', 2)

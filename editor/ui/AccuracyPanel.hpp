@@ -4,12 +4,13 @@
 #include "editor/ui/ExactComparison.hpp"
 #include "render/Result.hpp"
 
+#include <QImage>
+#include <QLabel>
 #include <QWidget>
 #include <optional>
 
 class QCheckBox;
 class QComboBox;
-class QLabel;
 class QProgressBar;
 class QScrollArea;
 class QPushButton;
@@ -31,12 +32,46 @@ class SweepChart;
 class SweepRunJob;
 class Viewport;
 
+// One of the Accuracy panel's images: drawn scaled down to the space it has, keeping its aspect, so a
+// 480-pixel comparison fits a narrow dock; pixmap() is the whole image. Emits clicked() on a left click.
+class ImageTile : public QLabel {
+    Q_OBJECT
+
+public:
+    explicit ImageTile(QWidget* parent = nullptr);
+    void setImage(const QImage& image); // a null image empties it
+    const QImage& image() const { return m_image; }
+    // The height it takes: at least `minimum` (a short dock scrolls), at most `maximum`.
+    void setImageHeights(int minimum, int maximum);
+
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+    bool hasHeightForWidth() const override;
+    int heightForWidth(int width) const override;
+
+signals:
+    void clicked();
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+
+private:
+    QRect imageRect() const;
+
+    QImage m_image;
+    int m_minimumHeight = 96;
+    int m_maximumHeight = 160;
+};
+
 // The Accuracy dock: "Compare with exact" measures the current view's raster frame against the exact tracer
-// (numbers, error map, optionally over the viewport). "Run sweep…" runs the bench's sweep on the document's
-// scene in-process (accuracy::runSweep on a worker thread, with progress and cancel), filling the chart as
-// points arrive and showing the report's findings when done; "Load sweep…" charts a results.json that
-// `speculum bench` wrote. Clicking a point applies that configuration's settings to the document, as one
-// undoable step.
+// (numbers explained in a sentence; the exact image, the raster image and the error map side by side, or a
+// flip view that alternates the exact and the raster image in one place; the error map optionally over the
+// viewport). A new or opened document clears it (Scene::sceneReset, or clear()). "Run sweep…" runs the
+// bench's sweep on the document's scene in-process (accuracy::runSweep on a worker thread, with progress and
+// cancel), filling the chart as points arrive and showing the report's findings when done; "Load sweep…"
+// charts a results.json that `speculum bench` wrote. Clicking a point applies that configuration's settings
+// to the document, as one undoable step.
 class AccuracyPanel : public QWidget {
     Q_OBJECT
 
@@ -53,8 +88,21 @@ public:
     bool sweeping() const;
     // The findings of the last finished sweep, as shown (Markdown); empty before one finished.
     QString findingsText() const;
+    // The sentence under the numbers that says what RMSE and PSNR measure and what a good value is.
+    QString explanationText() const;
+
+    // How the compared images show: the three side by side, or one view that flips exact / raster.
+    enum class ImageMode { SideBySide, Flip };
+    void setImageMode(ImageMode mode);
+    // Whether the flip view shows the exact image (else the raster one).
+    bool flipShowsReference() const;
 
 public slots:
+    // Forgets the comparison and the sweep of the previous document (New, Open, Restore): numbers, images,
+    // the overlay and the chart; a running comparison or sweep is cancelled.
+    void clear();
+    // The flip view changes to the other image (exact ↔ raster).
+    void flip();
     void compareWithExact();
     void cancelComparison();
     // Applies the settings of results record `index` (what clicking its point does). Returns the message
@@ -69,6 +117,7 @@ signals:
 
 private:
     void showResult(const ComparisonResult& result);
+    void showFlipImage();
     void comparisonFailed(const QString& text, bool cancelled);
     void setBusy(bool busy);
     void loadSweepDialog();
@@ -95,7 +144,18 @@ private:
     QLabel* m_psnrReflector = nullptr;
     QLabel* m_rasterMs = nullptr;
     QLabel* m_traceMs = nullptr;
-    QLabel* m_errorMap = nullptr;
+    QLabel* m_explanation = nullptr;
+    QWidget* m_images = nullptr;
+    QComboBox* m_imageMode = nullptr;
+    QWidget* m_sideBySide = nullptr;
+    ImageTile* m_reference = nullptr;
+    ImageTile* m_raster = nullptr;
+    ImageTile* m_errorMap = nullptr;
+    QWidget* m_flipPage = nullptr;
+    ImageTile* m_flipView = nullptr;
+    QLabel* m_flipCaption = nullptr;
+    QPushButton* m_flipButton = nullptr;
+    bool m_flipShowsReference = true;
     QCheckBox* m_overlay = nullptr;
     ErrorMapOverlay* m_overlayWidget = nullptr;
     SweepChart* m_chart = nullptr;

@@ -1,5 +1,6 @@
 #include "editor/ui/Editor.hpp"
 
+#include "editor/document/SceneAnimation.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Screenshot.hpp"
 #include "editor/view/AnimationClock.hpp"
@@ -51,7 +52,9 @@ int runEditor(int& argc, char** argv, const std::string& projectPath) {
     }
 
     window.restoreLayout();
-    window.clock().setPlaying(true); // a live view; Space pauses
+    // A live view where something moves (Space pauses); a static scene stays paused and draws nothing
+    // until something changes.
+    window.clock().setPlaying(document::sceneHasAnimation(window.scene()));
     window.show();
     if (openError.isEmpty() && projectPath.empty()) {
         // A previous session that crashed left unsaved work: offer it (only when no file was asked for).

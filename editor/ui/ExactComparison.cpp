@@ -128,6 +128,8 @@ bool ExactComparison::start(int width, double time) {
         result->psnrMirrors = psnrOf(errors->mirrors);
         result->psnrReflector = psnrOf(errors->reflector);
         result->errorMap = toQImage(render::metrics::errorColorMap(errors->difference));
+        result->reference = toQImage(reference->traced.image);
+        result->raster = toQImage(image);
         m_result = std::move(result);
         m_done = true;
     });

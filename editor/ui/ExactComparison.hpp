@@ -30,7 +30,9 @@ struct ComparisonResult {
     double rasterCpuMs = 0.0;
     double rasterGpuMs = -1.0; // -1: no GPU timer on this context
     double traceMs = 0.0;
-    QImage errorMap; // the error ramp (render::metrics), sRGB, width × height
+    QImage errorMap;  // the error ramp (render::metrics), sRGB, width × height
+    QImage reference; // the exact tracer's image, sRGB, width × height
+    QImage raster;    // the rasterizer's image that was measured, sRGB, width × height
     QStringList warnings;
     render::FrameInput input; // what was compared (for the parallax proxy the sweep derives)
 };

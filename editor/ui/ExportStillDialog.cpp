@@ -1,5 +1,7 @@
 #include "editor/ui/ExportStillDialog.hpp"
 
+#include "render/SceneLimits.hpp"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -80,19 +82,41 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
 
     m_ssaa = new QSpinBox(this);
     m_ssaa->setObjectName(QStringLiteral("stillSsaa"));
-    m_ssaa->setRange(1, 16);
+    m_ssaa->setRange(render::kMinSsaa, render::kMaxSsaa);
     m_ssaa->setPrefix(tr("N = "));
     m_ssaa->setToolTip(tr("Supersampling: N×N samples per pixel (the CLI's --ssaa N)"));
     form->addRow(tr("Supersampling"), m_ssaa);
 
+    // The scene's own start by default, as `speculum render` renders without --time (the clock may be
+    // anywhere while it plays); the time slider's time is one choice away, and the dialog says which.
+    m_clockTime = time;
+    m_timeSource = new QComboBox(this);
+    m_timeSource->setObjectName(QStringLiteral("stillTimeSource"));
+    m_timeSource->addItem(tr("Scene start"));
+    m_timeSource->addItem(tr("Time slider (t = %1 s)").arg(time, 0, 'f', 3));
+    m_timeSource->addItem(tr("Other"));
     m_time = new QDoubleSpinBox(this);
     m_time->setObjectName(QStringLiteral("stillTime"));
     m_time->setRange(0.0, 1e6);
     m_time->setDecimals(3);
     m_time->setSuffix(tr(" s"));
-    m_time->setValue(time);
+    m_time->setValue(0.0);
     m_time->setToolTip(tr("Animation time (the CLI's --time T)"));
-    form->addRow(tr("Time"), m_time);
+    auto* timeRow = new QHBoxLayout;
+    timeRow->addWidget(m_timeSource, 1);
+    timeRow->addWidget(m_time);
+    form->addRow(tr("Time"), timeRow);
+    m_timeNote = new QLabel(this);
+    m_timeNote->setObjectName(QStringLiteral("stillTimeNote"));
+    m_timeNote->setWordWrap(true);
+    form->addRow(QString(), m_timeNote);
+    connect(m_timeSource, &QComboBox::activated, this, [this](int index) {
+        if (index < 2) {
+            m_time->setValue(index == 0 ? 0.0 : m_clockTime);
+        }
+        timeChanged();
+    });
+    connect(m_time, &QDoubleSpinBox::valueChanged, this, &ExportStillDialog::timeChanged);
 
     m_camera = new QComboBox(this);
     m_camera->setObjectName(QStringLiteral("stillCamera"));
@@ -102,8 +126,10 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
 
     m_reference = new QCheckBox(tr("Exact reference (ray traced)"), this);
     m_reference->setObjectName(QStringLiteral("stillReference"));
-    m_reference->setEnabled(false);
-    m_reference->setToolTip(tr("needs the reference tracer"));
+    m_reference->setToolTip(tr("The CPU ray tracer, as `speculum render --reference`: exact mirrors, "
+                               "reflections and shadows, for comparing with the raster image. Seconds to "
+                               "minutes; the progress dialog can cancel it, and a cancelled export writes "
+                               "nothing."));
     form->addRow(QString(), m_reference);
 
     m_error = new QLabel(this);
@@ -121,6 +147,24 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
     layout->addWidget(m_error);
     layout->addWidget(buttons);
     formatChanged();
+    timeChanged();
+}
+
+void ExportStillDialog::timeChanged() {
+    const double t = m_time->value();
+    const int source = t == 0.0 ? 0 : (t == m_clockTime ? 1 : 2);
+    m_timeSource->setCurrentIndex(source);
+    const QString at = tr("Renders the scene at t = %1 s").arg(t, 0, 'f', 3);
+    m_timeNote->setText(source == 0 ? tr("%1, its start (as `speculum render` without --time); the time "
+                                         "slider is at %2 s.")
+                                          .arg(at)
+                                          .arg(m_clockTime, 0, 'f', 3)
+                        : source == 1 ? tr("%1, the time slider's time.").arg(at)
+                                      : tr("%1 (the CLI's --time %2).").arg(at).arg(t));
+}
+
+QString ExportStillDialog::timeNote() const {
+    return m_timeNote->text();
 }
 
 void ExportStillDialog::formatChanged() {

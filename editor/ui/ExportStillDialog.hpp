@@ -14,8 +14,10 @@ class QSpinBox;
 namespace speculum::ui {
 
 // File ▸ Export Still: output file, size, format, supersampling, animation time, camera, and the exact
-// reference (disabled until the reference tracer exists). The rendering itself is MainWindow's
-// exportStillFile(), the same code path as `speculum render`.
+// reference (the CPU tracer, as `speculum render --reference`). The time defaults to the scene's start
+// (t = 0, as the CLI); the time slider's (`time`, the animation clock's) is one choice away, and a note
+// says which the still uses. The rendering itself is MainWindow's exportStillFile(), the same code path
+// as `speculum render`.
 class ExportStillDialog : public QDialog {
     Q_OBJECT
 
@@ -25,12 +27,14 @@ public:
     QString outputPath() const;
     document::StillExportSettings settings() const; // camera: scene camera (set by the caller for "view")
     bool useCurrentView() const;
+    QString timeNote() const; // "Renders the scene at t = 0.000 s, its start …"
 
     void accept() override; // refuses invalid settings with a message
 
 private:
     void formatChanged();
     void browse();
+    void timeChanged();
 
     QLineEdit* m_path = nullptr;
     QComboBox* m_format = nullptr;
@@ -38,6 +42,9 @@ private:
     QSpinBox* m_height = nullptr;
     QSpinBox* m_ssaa = nullptr;
     QDoubleSpinBox* m_time = nullptr;
+    QComboBox* m_timeSource = nullptr;
+    QLabel* m_timeNote = nullptr;
+    double m_clockTime = 0.0;
     QComboBox* m_camera = nullptr;
     QCheckBox* m_reference = nullptr;
     QLabel* m_error = nullptr;

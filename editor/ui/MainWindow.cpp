@@ -1,6 +1,7 @@
 #include "editor/ui/MainWindow.hpp"
 
 #include "editor/document/ModelFormats.hpp"
+#include "editor/document/NewScene.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
 #include "editor/ui/Inspector.hpp"
@@ -28,7 +29,9 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUndoStack>
+#include <algorithm>
 
 namespace speculum::ui {
 
@@ -83,6 +86,8 @@ MainWindow::MainWindow(QWidget* parent)
     createActions();
     createDocks();
     createStatusBar();
+    createTimeline();
+    createViewPlacement();
 
     connect(&undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&scene(), &document::Scene::projectPathChanged, this, &MainWindow::updateTitle);
@@ -147,6 +152,7 @@ render::Status MainWindow::openProjectFile(const QString& path) {
 
 render::Status MainWindow::saveProjectFile(const QString& path) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
+    rememberEditorView(); // the file reopens where the editor looks now
     render::Status status = m_session->save(absolute);
     if (!status) {
         logMessage(tr("Could not save %1: %2").arg(absolute, QString::fromStdString(status.error())));
@@ -161,11 +167,10 @@ render::Status MainWindow::saveProjectFile(const QString& path) {
 }
 
 void MainWindow::newProject() {
-    cancelImports(); // what they bring was meant for the old document
-    m_session->replace(document::SceneData{}, QString());
+    cancelImports();                                         // what they bring was meant for the old document
+    m_session->replace(document::newSceneData(), QString()); // a floor, a sun, a raised camera
     m_recovery->discard();
-    m_clock->setTime(0.0);
-    updateTitle();
+    updateTitle(); // the clock starts over on the scene's reset (createTimeline)
 }
 
 void MainWindow::logMessage(const QString& message) {
@@ -186,6 +191,7 @@ render::Status MainWindow::autosaveNow() {
     if (!isModified()) {
         return render::Done{};
     }
+    rememberEditorView();
     render::Status status = m_recovery->write(scene().toData(), scene().projectPath());
     if (!status) {
         logMessage(tr("Autosave failed: %1").arg(QString::fromStdString(status.error())));
@@ -392,7 +398,7 @@ void MainWindow::onFrameRendered(const render::FrameReport& report, double anima
         text += tr(" · %1 fps").arg(m_viewport->framesPerSecond(), 0, 'f', 1);
     }
     m_frameLabel->setText(text);
-    m_timeLabel->setText(tr("t = %1 s").arg(animationTime, 0, 'f', 2));
+    Q_UNUSED(animationTime); // the timeline's readout shows the clock (MainWindowTime.cpp)
     m_passesPanel->showReport(report);
 }
 
@@ -411,11 +417,8 @@ void MainWindow::onWarningsChanged(const QStringList& warnings) {
 void MainWindow::createStatusBar() {
     m_frameLabel = new QLabel(this);
     m_frameLabel->setObjectName(QStringLiteral("frameLabel"));
-    m_timeLabel = new QLabel(this);
     m_frameLabel->setMinimumWidth(260);
-    m_timeLabel->setMinimumWidth(90);
     statusBar()->addPermanentWidget(m_frameLabel);
-    statusBar()->addPermanentWidget(m_timeLabel);
     createImportStatus();
 }
 
@@ -450,10 +453,27 @@ void MainWindow::createDocks() {
     auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
     accuracyDock->setObjectName(QStringLiteral("accuracyDock"));
     accuracyDock->setWidget(m_accuracyPanel);
+    // Beside the Properties, not tabbed behind them: comparing and then editing a setting needs both in
+    // sight. View ▸ Accuracy brings it to the front even where a saved layout tabbed it.
     addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
-    tabifyDockWidget(inspectorDock, accuracyDock);
-    inspectorDock->raise();
+    splitDockWidget(inspectorDock, accuracyDock, Qt::Horizontal);
     accuracyDock->hide();
+    connect(accuracyDock->toggleViewAction(), &QAction::toggled, accuracyDock,
+            [this, accuracyDock, inspectorDock](bool shown) {
+                if (shown) {
+                    accuracyDock->raise();
+                    // Room for both: the Properties keep a readable width, the images get theirs. After
+                    // the dock is laid out (a resize before that is undone by its first layout), and
+                    // taken from the viewport, which can spare it.
+                    QTimer::singleShot(0, this, [this, accuracyDock, inspectorDock] {
+                        const int properties = std::max(inspectorDock->width(), 300);
+                        const int spare = std::max(m_viewport->width() - 480, 0);
+                        const int docks = inspectorDock->width() + accuracyDock->width() + spare;
+                        const int accuracy = std::clamp(docks - properties, 320, 480);
+                        resizeDocks({inspectorDock, accuracyDock}, {properties, accuracy}, Qt::Horizontal);
+                    });
+                }
+            });
     connect(m_accuracyPanel, &AccuracyPanel::message, this, [this](const QString& text) {
         logMessage(text);
         statusBar()->showMessage(text, 8000);

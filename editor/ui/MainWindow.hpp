@@ -230,6 +230,26 @@ private:
     QProgressBar* m_importProgress = nullptr;
     QToolButton* m_importCancel = nullptr;
     QAction* m_fitImportsAction = nullptr;
+
+    // ---- issue 16, time (MainWindowTime.cpp): the timeline toolbar (Play, Rewind, the time slider and
+    // its "t = … s" readout) and the clock back to 0, paused, whenever the document is replaced (New, Open,
+    // Restore). The slider's range is one loop of the scene's animation, kept up to date on every edit.
+    void createTimeline();
+    void updateTimelineRange();
+    void resetClock();
+    // MainWindowView.cpp: view presets and guides, and the project's saved editor view.
+    void createViewPlacement();
+    void rememberEditorView(); // the viewport's view into the document, for the next save
+    class TimeSlider* m_timeSlider = nullptr;
+
+    // ---- issue 16, input (MainWindowActions.cpp): View ▸ Invert Vertical Orbit, remembered in QSettings.
+    // Off (the default): dragging down raises the view, as in Blender and three.js (ViewCamera::orbitByDrag).
+public:
+    bool invertsVerticalOrbit() const;
+    void setInvertVerticalOrbit(bool on);
+
+private:
+    QAction* m_invertOrbitAction = nullptr;
 };
 
 } // namespace speculum::ui

@@ -19,6 +19,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QSettings>
 #include <QStatusBar>
 #include <QUndoStack>
 #include <algorithm>
@@ -46,6 +47,26 @@ QAction* MainWindow::makeAction(QMenu* menu, const QString& name, const QString&
     return a;
 }
 
+// ---- view preferences ----
+
+namespace {
+
+const QString kInvertVerticalOrbitKey = QStringLiteral("view/invertVerticalOrbit");
+
+} // namespace
+
+bool MainWindow::invertsVerticalOrbit() const {
+    return QSettings().value(kInvertVerticalOrbitKey, false).toBool();
+}
+
+void MainWindow::setInvertVerticalOrbit(bool on) {
+    QSettings().setValue(kInvertVerticalOrbitKey, on);
+    if (m_invertOrbitAction && m_invertOrbitAction->isChecked() != on) {
+        m_invertOrbitAction->setChecked(on); // toggles back into here once, with nothing left to do
+    }
+    m_viewport->setInvertVerticalOrbit(on);
+}
+
 // ---- editing ----
 
 render::Status MainWindow::addTree(document::NodeTree tree) {
@@ -59,7 +80,11 @@ render::Status MainWindow::addTree(document::NodeTree tree) {
 }
 
 render::Status MainWindow::addNode(document::NewNodeKind kind) {
-    return addTree(document::makeNode(kind, m_viewport->lookAtPoint()));
+    document::NewNodePlacement placement;
+    placement.focus = m_viewport->lookAtPoint();
+    placement.viewPosition = m_viewport->viewCamera().position;
+    placement.timeSeconds = m_clock->time();
+    return addTree(document::placeNewNode(scene(), m_viewport->meshes(), kind, placement));
 }
 
 render::Status MainWindow::deleteSelected() {
@@ -67,8 +92,8 @@ render::Status MainWindow::deleteSelected() {
 }
 
 render::Status MainWindow::duplicateSelected() {
-    auto duplicated =
-        document::duplicateNodes(scene(), undoStack(), m_selection->roots(), m_selection->node());
+    auto duplicated = document::duplicateNodes(scene(), undoStack(), m_selection->roots(),
+                                               m_selection->node(), &m_viewport->meshes(), m_clock->time());
     if (!duplicated) {
         return render::Error{duplicated.error()};
     }
@@ -379,12 +404,13 @@ void MainWindow::createActions() {
     connect(makeAction(edit, QStringLiteral("actionSelectNone"), tr("Select &None"),
                        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A)),
             &QAction::triggered, m_selection, &view::Selection::clear);
-    // Shortcuts of the window must work while the viewport (or any dock) has focus, but not steal keys
-    // from text fields: Delete in the inspector's name field deletes characters, not the node.
-    // Ctrl+A likewise: in a text field it selects the text.
+    // Editing shortcuts work wherever the focus is in the window, the scene tree and the docks as well as
+    // the viewport (issue 16), as in Blender, Godot and Unity. They do not steal keys from text fields:
+    // before a shortcut fires Qt sends the focus widget a ShortcutOverride, which line edits, spin boxes
+    // and the tree's rename editor accept for the keys they type with (Delete, Ctrl+A, letters), so
+    // Delete in a name field deletes characters and Ctrl+A selects its text.
     for (QAction* a : {m_renameAction, m_duplicateAction, m_deleteAction, selectAll}) {
-        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-        m_viewport->addAction(a);
+        a->setShortcutContext(Qt::WindowShortcut);
     }
     updateEditActions();
 
@@ -431,11 +457,21 @@ void MainWindow::createActions() {
             makeAction(view, QString::fromLatin1(names.first), names.second, QKeySequence(keys[k++]));
         a->setCheckable(true);
         a->setChecked(mode == m_viewport->handleMode());
-        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-        m_viewport->addAction(a);
+        // From anywhere in the window, like the edit actions above (a name field still types Q).
+        a->setShortcutContext(Qt::WindowShortcut);
         handles->addAction(a);
         connect(a, &QAction::triggered, m_viewport, [this, mode = mode] { m_viewport->setHandleMode(mode); });
     }
+    view->addSeparator();
+    m_invertOrbitAction =
+        makeAction(view, QStringLiteral("actionInvertVerticalOrbit"), tr("&Invert Vertical Orbit"));
+    m_invertOrbitAction->setCheckable(true);
+    m_invertOrbitAction->setChecked(invertsVerticalOrbit());
+    m_invertOrbitAction->setStatusTip(
+        tr("Dragging the mouse down lowers the view instead of raising it (the default "
+           "follows Blender and three.js: the scene follows the mouse)"));
+    connect(m_invertOrbitAction, &QAction::toggled, this, &MainWindow::setInvertVerticalOrbit);
+    setInvertVerticalOrbit(invertsVerticalOrbit()); // the viewport starts with the remembered choice
     m_viewMenu = view;
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));

@@ -9,13 +9,16 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
 #include <QToolButton>
+#include <QWheelEvent>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace speculum::ui {
 
@@ -27,11 +30,86 @@ namespace {
 constexpr double kWide = 1e12; // spin boxes take anything; validation decides
 constexpr int kSliderSteps = 1000;
 
+// Stored precision of every number field: QDoubleSpinBox rounds each value to decimals(), so with the 3
+// shown decimals an FBX scale of 5e-5 became 0 (shown as 0.000, every edit refused as a zero scale).
+constexpr int kStoredDecimals = 15;
+
+// A spin box that keeps the full value and shows it with the precision it needs: `shown` decimals when they
+// carry the value to a part in a thousand, else the shortest scientific form ("5e-05"). Typing accepts
+// either form.
+class NumberSpin : public QDoubleSpinBox {
+public:
+    NumberSpin(int shownDecimals, QWidget* parent)
+        : QDoubleSpinBox(parent)
+        , m_shown(shownDecimals) {
+        m_locale.setNumberOptions(QLocale::OmitGroupSeparator);
+        setDecimals(kStoredDecimals);
+    }
+
+    QString textFromValue(double value) const override { return fieldText(value, m_shown, m_locale); }
+
+    double valueFromText(const QString& text) const override { return parse(text).value_or(value()); }
+
+    QValidator::State validate(QString& input, int&) const override {
+        const QString bare = stripped(input);
+        // What a number looks like while it is being typed: "-", ".", "-.", "5e", "5e-".
+        QString start = bare;
+        if (start.startsWith(QLatin1Char('-')) || start.startsWith(QLatin1Char('+'))) {
+            start.remove(0, 1);
+        }
+        if (start.isEmpty() || start == m_locale.decimalPoint() || start == QLatin1String(".") ||
+            bare.endsWith(QLatin1Char('e'), Qt::CaseInsensitive) ||
+            bare.endsWith(QLatin1String("e-"), Qt::CaseInsensitive) ||
+            bare.endsWith(QLatin1String("e+"), Qt::CaseInsensitive)) {
+            return QValidator::Intermediate;
+        }
+        return parse(input) ? QValidator::Acceptable : QValidator::Invalid;
+    }
+
+    void fixup(QString&) const override {}
+
+    static QString fieldText(double value, int shown, const QLocale& locale) {
+        const QString fixed = locale.toString(value, 'f', shown);
+        const double back = locale.toDouble(fixed);
+        if (value == 0.0 || std::abs(back - value) <= 1e-3 * std::abs(value)) {
+            return fixed;
+        }
+        return locale.toString(value, 'g', 4);
+    }
+
+private:
+    QString stripped(const QString& text) const {
+        QString t = text;
+        if (!prefix().isEmpty() && t.startsWith(prefix())) {
+            t.remove(0, prefix().size());
+        }
+        if (!suffix().isEmpty() && t.endsWith(suffix())) {
+            t.chop(suffix().size());
+        }
+        return t.trimmed();
+    }
+
+    std::optional<double> parse(const QString& text) const {
+        const QString bare = stripped(text);
+        bool ok = false;
+        double v = m_locale.toDouble(bare, &ok);
+        if (!ok) {
+            v = bare.toDouble(&ok); // "5e-5" typed in a locale with a decimal comma
+        }
+        if (!ok || !std::isfinite(v) || v < minimum() || v > maximum()) {
+            return std::nullopt;
+        }
+        return v;
+    }
+
+    int m_shown;
+    QLocale m_locale;
+};
+
 QDoubleSpinBox* makeSpin(const PropertyInfo& info, QWidget* parent, const QString& name) {
-    auto* spin = new QDoubleSpinBox(parent);
+    auto* spin = new NumberSpin(info.kind == PropertyKind::Integer ? 0 : std::max(info.decimals, 3), parent);
     spin->setObjectName(name);
     spin->setRange(-kWide, kWide);
-    spin->setDecimals(info.kind == PropertyKind::Integer ? 0 : std::max(info.decimals, 3));
     spin->setSingleStep(info.step);
     spin->setKeyboardTracking(false); // typing commits on Enter or focus-out, not per keystroke
     spin->setAccelerated(true);
@@ -65,6 +143,8 @@ public:
             m_slider->setObjectName(info.key + QStringLiteral(".slider"));
             m_slider->setRange(0, kSliderSteps);
             m_slider->setToolTip(info.tooltip);
+            m_slider->setFocusPolicy(Qt::StrongFocus);
+            guardWheel(m_slider);
             layout->addWidget(m_slider, 1);
             // A drag is one gesture: it begins on press and ends on release, so the next edit is a new step.
             connect(m_slider, &QSlider::sliderPressed, this, &PropertyEditor::interactionStarted);
@@ -249,6 +329,8 @@ public:
         m_combo->setObjectName(info.key);
         m_combo->addItems(info.options);
         m_combo->setToolTip(info.tooltip);
+        m_combo->setFocusPolicy(Qt::StrongFocus); // WheelFocus would let a passing wheel focus and edit it
+        guardWheel(m_combo);
         layout->addWidget(m_combo, 1);
         connect(m_combo, &QComboBox::activated, this, [this](int i) {
             emit interactionStarted();
@@ -347,6 +429,10 @@ void PropertyEditor::setInvalid(bool invalid) {
 }
 
 void PropertyEditor::watchFocus(QWidget* widget) {
+    widget->installEventFilter(this); // also guards the wheel
+}
+
+void PropertyEditor::guardWheel(QWidget* widget) {
     widget->installEventFilter(this);
 }
 
@@ -354,7 +440,21 @@ bool PropertyEditor::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() == QEvent::FocusIn) {
         emit interactionStarted();
     }
+    // A wheel merely passing over a field must not edit it (an undo step nobody asked for): without focus
+    // the event is withheld from the field and, ignored, travels on to the Properties panel, which scrolls.
+    if (event->type() == QEvent::Wheel) {
+        if (auto* widget = qobject_cast<QWidget*>(watched); widget && !widget->hasFocus()) {
+            event->ignore();
+            return true;
+        }
+    }
     return QWidget::eventFilter(watched, event);
+}
+
+QString PropertyEditor::numberText(double value, int decimals) {
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return NumberSpin::fieldText(value, decimals, locale);
 }
 
 } // namespace speculum::ui

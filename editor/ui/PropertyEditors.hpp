@@ -15,6 +15,9 @@ namespace speculum::ui {
 // Child widgets are named after the property key so tests and scripts can find them:
 // "<key>" (spin box, line edit, combo, check box), "<key>.slider", "<key>.x|y|z" (vectors),
 // "<key>.r|g|b" and "<key>.swatch" (colours), "<key>.browse" (files).
+//
+// The mouse wheel edits a spin box, slider or combo box only once it has focus (clicked or tabbed into);
+// over an unfocused one it scrolls the panel instead.
 class PropertyEditor : public QWidget {
     Q_OBJECT
 
@@ -26,6 +29,9 @@ public:
     virtual void setValue(const QVariant& value) = 0;
     // Marks the editor as holding a refused value (red frame) or clears the mark.
     void setInvalid(bool invalid);
+    // How a number field shows `value` with `decimals` decimals: fixed when that carries it to a part in a
+    // thousand, else scientific ("5e-05"), so a tiny value never shows as 0.000.
+    static QString numberText(double value, int decimals);
 
 signals:
     void edited(const QVariant& value);
@@ -35,7 +41,9 @@ signals:
 
 protected:
     explicit PropertyEditor(const document::PropertyInfo& info, QWidget* parent);
-    void watchFocus(QWidget* widget); // emits interactionStarted() when it gains focus
+    void watchFocus(QWidget* widget); // emits interactionStarted() when it gains focus; guards the wheel
+    // The wheel edits `widget` only while it has focus; otherwise it scrolls the panel around it.
+    void guardWheel(QWidget* widget);
     bool eventFilter(QObject* watched, QEvent* event) override;
 
     document::PropertyInfo m_info;

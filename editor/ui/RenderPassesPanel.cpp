@@ -50,27 +50,27 @@ void RenderPassesPanel::showReport(const render::FrameReport& report) {
 
 void RenderPassesPanel::showReportNow(const render::FrameReport& report) {
     m_sinceUpdate.start();
-    const render::FramePlan& plan = report.plan;
     m_summary->setText(tr("%1 passes, %2 skipped · CPU %3 ms · GPU %4 ms")
-                           .arg(plan.passes.size())
-                           .arg(plan.skipped.size())
+                           .arg(report.ran.size())
+                           .arg(report.skipped.size())
                            .arg(ms(report.cpuMs), ms(report.gpuMs)));
 
     QString layout;
-    for (const auto& p : plan.passes) {
+    for (const render::PassRun& run : report.ran) {
+        const render::PlannedPass& p = report.planned(run);
         layout += text(render::toString(p.kind)) + QLatin1Char('/') + QString::fromStdString(p.target) +
-                  QLatin1Char('/') + QString::fromStdString(p.reason) + QLatin1Char('\n');
+                  QLatin1Char('/') + QString::fromStdString(report.reason(run)) + QLatin1Char('\n');
     }
     layout += QStringLiteral("--\n");
-    for (const auto& s : plan.skipped) {
+    for (const auto& s : report.skipped) {
         layout += QString::fromStdString(s.target) + QLatin1Char('/') + QString::fromStdString(s.reason) +
                   QLatin1Char('\n');
     }
     if (layout == m_lastLayout && m_tree->topLevelItemCount() == 2) {
-        // Same plan: only the timings change.
+        // Same passes: only the timings change.
         QTreeWidgetItem* passes = m_tree->topLevelItem(0);
-        for (int i = 0; i < passes->childCount() && i < int(plan.passes.size()); ++i) {
-            passes->child(i)->setText(2, ms(plan.passes[std::size_t(i)].gpuMs));
+        for (int i = 0; i < passes->childCount() && i < int(report.ran.size()); ++i) {
+            passes->child(i)->setText(2, ms(report.ran[std::size_t(i)].gpuMs));
         }
         passes->setText(2, ms(report.gpuMs));
         return;
@@ -78,16 +78,17 @@ void RenderPassesPanel::showReportNow(const render::FrameReport& report) {
     m_lastLayout = layout;
     m_tree->clear();
     auto* passes =
-        new QTreeWidgetItem(m_tree, {tr("Passes (%1)").arg(plan.passes.size()), QString(), ms(report.gpuMs)});
-    for (const auto& p : plan.passes) {
-        auto* item =
-            new QTreeWidgetItem(passes, {text(render::toString(p.kind)), QString::fromStdString(p.target),
-                                         ms(p.gpuMs), QString::fromStdString(p.reason)});
-        item->setToolTip(3, QString::fromStdString(p.reason));
+        new QTreeWidgetItem(m_tree, {tr("Passes (%1)").arg(report.ran.size()), QString(), ms(report.gpuMs)});
+    for (const render::PassRun& run : report.ran) {
+        const render::PlannedPass& p = report.planned(run);
+        const QString reason = QString::fromStdString(report.reason(run));
+        auto* item = new QTreeWidgetItem(passes, {text(render::toString(p.kind)),
+                                                  QString::fromStdString(p.target), ms(run.gpuMs), reason});
+        item->setToolTip(3, reason);
         item->setTextAlignment(2, Qt::AlignRight | Qt::AlignVCenter);
     }
-    auto* skipped = new QTreeWidgetItem(m_tree, {tr("Skipped effects (%1)").arg(plan.skipped.size())});
-    for (const auto& s : plan.skipped) {
+    auto* skipped = new QTreeWidgetItem(m_tree, {tr("Skipped effects (%1)").arg(report.skipped.size())});
+    for (const auto& s : report.skipped) {
         auto* item = new QTreeWidgetItem(skipped, {tr("skipped"), QString::fromStdString(s.target), QString(),
                                                    QString::fromStdString(s.reason)});
         item->setToolTip(3, QString::fromStdString(s.reason));

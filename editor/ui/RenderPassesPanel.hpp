@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Renderer.hpp"
+#include "render/FrameReport.hpp"
 
 #include <QElapsedTimer>
 #include <QWidget>
@@ -10,8 +10,9 @@ class QTreeWidget;
 
 namespace speculum::ui {
 
-// The Render passes dock: the live frame plan — every pass in order with its target, GPU time and the
-// reason it ran — and the effects that got no pass, with the reason. Updated from the viewport's frame
+// The Render passes dock: the live frame — every pass that ran, in order, with its target, GPU time and
+// the reason it ran (the plan's, then what running it found) — and the effects that got no pass, with
+// the reason. Updated from the viewport's frame
 // reports at most a few times per second so a playing animation does not spend its time on this list.
 class RenderPassesPanel : public QWidget {
     Q_OBJECT
@@ -30,7 +31,7 @@ private:
     QLabel* m_summary = nullptr;
     QTreeWidget* m_tree = nullptr;
     QElapsedTimer m_sinceUpdate;
-    QString m_lastLayout; // kinds/targets/reasons of the shown plan: only timings change most frames
+    QString m_lastLayout; // kinds/targets/reasons of the shown passes: only timings change most frames
 };
 
 } // namespace speculum::ui

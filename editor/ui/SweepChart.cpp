@@ -3,10 +3,12 @@
 #include "accuracy/Analysis.hpp"
 
 #include <QChart>
-#include <QCursor>
 #include <QFont>
+#include <QGraphicsRectItem>
+#include <QGraphicsTextItem>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QPen>
 #include <QScatterSeries>
 #include <QToolTip>
 #include <QValueAxis>
@@ -55,19 +57,24 @@ void SweepChart::setResults(const document::SweepResults& results) {
     m_results = results;
     QChart* c = chart();
     c->removeAllSeries();
-    for (QAbstractAxis* axis : c->axes()) {
-        c->removeAxis(axis);
-        delete axis;
-    }
     m_highlight = nullptr;
+    hoverRecord(-1);
     const auto& records = m_results.records;
 
-    auto* axisX = new QValueAxis;
+    // The same two axes for every run: a removed and deleted axis can stay drawn (Qt Charts 6.4), so a
+    // cleared chart that then loads a run would show two sets of ticks over each other.
+    if (!m_axisX) {
+        m_axisX = new QValueAxis(this);
+        m_axisY = new QValueAxis(this);
+        m_axisY->setTitleText(tr("PSNR (dB)"));
+        c->addAxis(m_axisX, Qt::AlignBottom);
+        c->addAxis(m_axisY, Qt::AlignLeft);
+    }
+    QValueAxis* axisX = m_axisX;
+    QValueAxis* axisY = m_axisY;
     axisX->setTitleText(m_results.gpuTimes() ? tr("GPU ms per frame") : tr("CPU ms per frame"));
-    auto* axisY = new QValueAxis;
-    axisY->setTitleText(tr("PSNR (dB)"));
-    c->addAxis(axisX, Qt::AlignBottom);
-    c->addAxis(axisY, Qt::AlignLeft);
+    axisX->setRange(0.0, 1.0);
+    axisY->setRange(0.0, 1.0);
     // The panel names the run under the chart; a title here would squeeze the plot in a narrow dock.
     c->setTitle(records.empty() ? placeholder() : QString());
 
@@ -109,22 +116,7 @@ void SweepChart::setResults(const document::SweepResults& results) {
         connect(series, &QScatterSeries::clicked, this,
                 [this, family](const QPointF& p) { pointClicked(family, p); });
         connect(series, &QScatterSeries::hovered, this, [this, family](const QPointF& p, bool entered) {
-            const int index = nearest(family, p);
-            if (entered && index >= 0) {
-                const auto& r = m_results.records[std::size_t(index)];
-                QStringList settings;
-                for (const auto& [key, value] : r.settings) {
-                    settings << QString::fromStdString(key + " " + value).toHtmlEscaped();
-                }
-                QToolTip::showText(QCursor::pos(),
-                                   tr("<b>%1 %2</b><br>%3 ms · PSNR %4 dB<br>%5")
-                                       .arg(family, QString::fromStdString(r.config.label).toHtmlEscaped())
-                                       .arg(accuracy::frameMs(r), 0, 'f', 2)
-                                       .arg(r.psnr, 0, 'f', 2)
-                                       .arg(settings.join(QStringLiteral(", "))));
-            } else {
-                QToolTip::hideText();
-            }
+            hoverRecord(entered ? nearest(family, p) : -1);
         });
     }
     m_highlight = new QScatterSeries;
@@ -150,6 +142,57 @@ void SweepChart::setResults(const document::SweepResults& results) {
             break;
         }
     }
+}
+
+QString SweepChart::pointLabel(int index) const {
+    if (index < 0 || std::size_t(index) >= m_results.records.size()) {
+        return {};
+    }
+    const auto& r = m_results.records[std::size_t(index)];
+    QStringList settings;
+    for (const auto& [key, value] : r.settings) {
+        settings << QString::fromStdString(key + " " + value);
+    }
+    return tr("%1 %2\n%3 ms · PSNR %4 dB\n%5")
+        .arg(QString::fromStdString(accuracy::familyName(r.config.family)),
+             QString::fromStdString(r.config.label))
+        .arg(accuracy::frameMs(r), 0, 'f', 2)
+        .arg(r.psnr, 0, 'f', 2)
+        .arg(settings.join(QStringLiteral(", ")));
+}
+
+void SweepChart::hoverRecord(int index) {
+    m_hoverText = pointLabel(index);
+    if (!m_callout) {
+        m_callout = new QGraphicsRectItem(chart());
+        m_callout->setBrush(QColor(255, 255, 225, 235));
+        m_callout->setPen(QPen(QColor(120, 120, 120)));
+        m_callout->setZValue(100);
+        m_calloutText = new QGraphicsTextItem(m_callout);
+    }
+    if (m_hoverText.isEmpty()) {
+        m_callout->hide();
+        QToolTip::hideText();
+        return;
+    }
+    const auto& r = m_results.records[std::size_t(index)];
+    m_calloutText->setTextWidth(-1);
+    m_calloutText->setPlainText(m_hoverText);
+    const QRectF plot = chart()->plotArea();
+    m_calloutText->setTextWidth(std::min(m_calloutText->boundingRect().width(), plot.width() * 0.9));
+    const QRectF box = m_calloutText->boundingRect();
+    m_callout->setRect(box);
+    // Beside the point, kept inside the plot: right of it and below where there is room, else mirrored.
+    const QPointF at = chart()->mapToPosition(QPointF(accuracy::frameMs(r), r.psnr));
+    double x = at.x() + 10, y = at.y() + 10;
+    if (x + box.width() > plot.right()) {
+        x = std::max(plot.left(), at.x() - 10 - box.width());
+    }
+    if (y + box.height() > plot.bottom()) {
+        y = std::max(plot.top(), at.y() - 10 - box.height());
+    }
+    m_callout->setPos(x, y);
+    m_callout->show();
 }
 
 void SweepChart::highlight(int index) {

@@ -5,6 +5,7 @@
 #include "editor/document/PickScene.hpp"
 #include "editor/document/Picking.hpp"
 #include "editor/document/Scene.hpp"
+#include "editor/document/SceneAnimation.hpp"
 #include "editor/document/Snapshot.hpp"
 #include "editor/ui/ViewportModels.hpp"
 #include "editor/ui/ViewportOverlay.hpp"
@@ -20,6 +21,7 @@
 #include <QPainter>
 #include <QUndoStack>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
@@ -31,7 +33,8 @@ using view::Selection;
 
 namespace {
 
-constexpr double kClickSlopPixels = 4.0; // a press that moves less than this is a click, not a drag
+constexpr int kMinPreviewShadowMap = 256; // texels a side: smaller shadows of a dragged object blur away
+constexpr double kClickSlopPixels = 4.0;  // a press that moves less than this is a click, not a drag
 constexpr double kLightPickPixels = 12.0;
 
 const QColor kAxisColors[3] = {QColor(230, 70, 70), QColor(90, 200, 80), QColor(70, 130, 240)};
@@ -56,15 +59,30 @@ Viewport::Viewport(document::Scene& scene, document::MeshLibrary& meshes, Animat
     m_models = new ViewportModels(m_meshes, this);
     connect(m_models, &ViewportModels::changed, this, qOverload<>(&Viewport::update));
 
-    connect(&m_scene, &document::Scene::changed, this, qOverload<>(&Viewport::update));
+    // The viewport draws only when what it shows changes (issue 16: a static scene costs nothing at idle):
+    // an edit, a new document, navigation, a time jump, a model read in, a resize, or the clock running
+    // over a scene where something moves. Nothing the frame reports leads back to another frame.
+    connect(&m_scene, &document::Scene::changed, this, [this] {
+        updateTicking(); // an edit may add or remove the scene's only animation
+        update();
+    });
     // A camera edit or a newly opened document: show the document's camera again.
     connect(&m_scene, &document::Scene::cameraChanged, this, &Viewport::resetView);
     // The session has replaced its mesh library by then (on aboutToReset): the reads running for the old
     // document are of no use.
+    // Connected here, in the constructor, so it runs before any connection made to sceneReset once the
+    // viewport exists: viewReset() is emitted when the view is back on the new scene camera.
     connect(&m_scene, &document::Scene::sceneReset, this, [this] {
         m_models->clear();
+        updateTicking();
         resetView();
+        emit viewReset();
     });
+
+    m_rest.setSingleShot(true);
+    m_rest.setInterval(kRestMs);
+    connect(&m_rest, &QTimer::timeout, this, &Viewport::rested);
+    connect(this, &QOpenGLWidget::frameSwapped, this, &Viewport::frameOnScreen);
 
     // ~60 fps while playing. A timer rather than update() from paintGL: Xvfb and some drivers do not
     // throttle swaps, and an unthrottled loop would starve the rest of the UI.
@@ -72,7 +90,7 @@ Viewport::Viewport(document::Scene& scene, document::MeshLibrary& meshes, Animat
     m_tick.setTimerType(Qt::PreciseTimer);
     connect(&m_tick, &QTimer::timeout, this, qOverload<>(&Viewport::update));
     connect(&m_clock, &AnimationClock::playingChanged, this, &Viewport::updateTicking);
-    connect(&m_clock, &AnimationClock::timeChanged, this, qOverload<>(&Viewport::update));
+    connect(&m_clock, &AnimationClock::timeChanged, this, qOverload<>(&Viewport::update)); // jumps only
     updateTicking();
 }
 
@@ -148,6 +166,81 @@ void Viewport::resetView() {
     update();
 }
 
+render::Camera Viewport::sceneCamera() const {
+    return document::toRender(m_scene.camera());
+}
+
+void Viewport::setViewCamera(const render::Camera& camera) {
+    ++m_gestureSerial; // a step of its own when it edits the scene camera
+    m_view.place(camera.position, camera.target, camera.up);
+    navigated();
+}
+
+std::pair<glm::dvec3, glm::dvec3> Viewport::viewPositionTarget() const {
+    return {m_view.camera().position, m_view.camera().target};
+}
+
+void Viewport::placeView(const glm::dvec3& position, const glm::dvec3& target) {
+    m_view.place(position, target);
+    update();
+}
+
+void Viewport::setGuidesVisible(bool visible) {
+    m_overlay->setGuidesVisible(visible);
+}
+
+bool Viewport::guidesVisible() const {
+    return m_overlay->guidesVisible();
+}
+
+void Viewport::setAdaptiveResolution(bool on) {
+    if (on == m_adaptive) {
+        return;
+    }
+    m_adaptive = on;
+    if (!on && lastFrameReduced()) {
+        update(); // what is shown was a preview: draw it whole now
+    }
+}
+
+void Viewport::setPreviewFrameBudget(double milliseconds) {
+    m_resolution.setBudget(milliseconds);
+}
+
+void Viewport::interacted() {
+    if (!m_interacting) {
+        m_interacting = true;
+        // A gesture starts at the level the last one ended at, unless the widget has changed size since.
+        if (m_previewSizeFor != size()) {
+            m_resolution.forget();
+            m_previewSizeFor = size();
+        }
+        m_resolution.begin(m_fullFrameMs);
+    }
+    m_rest.start();
+}
+
+void Viewport::rested() {
+    m_interacting = false;
+    if (lastFrameReduced()) {
+        update(); // the frame at full quality
+    }
+}
+
+void Viewport::frameOnScreen() {
+    if (!m_timingFrame) {
+        return;
+    }
+    m_timingFrame = false;
+    // From the start of paintGL until the window has shown the frame: drawing and composition.
+    const double totalMs = double(m_frameClock.nsecsElapsed()) * 1e-6;
+    if (m_learning) {
+        m_resolution.learn(m_lastFrameMs, totalMs, m_maxDepthCut);
+    } else {
+        m_fullFrameMs = totalMs;
+    }
+}
+
 void Viewport::frameSelected() {
     m_models->prepare(m_scene);
     const double t = m_clock.time();
@@ -218,7 +311,9 @@ void Viewport::frameSelected() {
 }
 
 void Viewport::updateTicking() {
-    if (m_clock.isPlaying()) {
+    m_sceneAnimated = document::sceneHasAnimation(m_scene);
+    // A clock running over a scene where nothing moves draws nothing new: no frames then.
+    if (m_clock.isPlaying() && m_sceneAnimated) {
         m_tick.start();
     } else {
         m_tick.stop();
@@ -269,6 +364,8 @@ void Viewport::paintGL() {
         paintError();
         return;
     }
+    frameOnScreen(); // the last frame, when its composition was never reported: timed by its drawing
+    m_frameClock.start();
     const double time = m_clock.time();
     std::vector<std::string> warnings;
     // Model files are read on workers (ViewportModels), never here: a file still loading draws nothing yet.
@@ -277,12 +374,46 @@ void Viewport::paintGL() {
     warnings = m_models->correct(std::move(warnings));
     input.camera = m_view.camera();
 
+    // A preview while navigating: fewer pixels, scaled up by the renderer, then fewer mirror levels; the
+    // environment map keeps what it has (an orbit never changes it; a handle drag would redraw it every
+    // frame). The frame at rest draws everything.
+    const bool previewing = m_adaptive && m_interacting;
+    const int depth = input.settings.mirrorDepth;
+    m_maxDepthCut = std::max(0, depth - 1);
+    view::PreviewLevel level = previewing ? m_resolution.level() : view::PreviewLevel{};
+    level.mirrorDepthCut = std::clamp(level.mirrorDepthCut, 0, m_maxDepthCut);
+    if (level.reduced()) {
+        input.settings.mirrorDepth = depth - level.mirrorDepthCut;
+        if (input.reflector && input.reflector->update != render::ReflectorUpdate::Once) {
+            input.reflector->update = render::ReflectorUpdate::Once; // drawn only when there is no map yet
+        }
+        // A handle drag changes what casts shadows every frame, so each shadow map is drawn again anyway:
+        // at a size that goes with the preview's (a power of two less, never under 256²). Orbiting reuses
+        // the maps as they are.
+        if (m_drag == Drag::Handle) {
+            for (render::Light& light : input.lights) {
+                int size = light.shadows.mapSize;
+                for (double s = level.scale; s <= 0.5 && size > kMinPreviewShadowMap; s *= 2.0) {
+                    size /= 2;
+                }
+                light.shadows.mapSize = std::min(light.shadows.mapSize, std::max(size, kMinPreviewShadowMap));
+            }
+        }
+    }
+
     // The widget draws into its own FBO; framebuffer 0 is not ours.
     const qreal dpr = devicePixelRatioF();
     const render::RenderTarget target{defaultFramebufferObject(), qRound(width() * dpr),
                                       qRound(height() * dpr), true};
-    m_lastReport = m_renderer->render(input, target);
+    render::RenderOptions options;
+    options.resolutionScale = level.scale;
+    m_lastReport = m_renderer->render(input, target, options);
+    m_lastFrameMs = double(m_frameClock.nsecsElapsed()) * 1e-6;
     m_lastFrameTime = time;
+    m_lastLevel = level;
+    m_lastDrawnSize = QSize(m_lastReport.drawnWidth, m_lastReport.drawnHeight);
+    m_learning = previewing;
+    m_timingFrame = true; // until frameSwapped
     ++m_framesRendered;
 
     if (!m_fpsTimer.isValid()) {
@@ -572,6 +703,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     if (m_drag == Drag::Handle) {
+        interacted();
         m_handleDrag->move(posF);
         event->accept();
         return;
@@ -587,13 +719,13 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const QPoint delta = pos - m_lastMouse;
     m_lastMouse = pos;
     if (m_drag == Drag::Orbit) {
-        // A drag across the full height turns the view by 180°.
-        const double degreesPerPixel = 180.0 / std::max(height(), 1);
-        m_view.orbit(delta.x() * degreesPerPixel, delta.y() * degreesPerPixel);
+        // The scene follows the mouse (Blender, three.js), unless View ▸ Invert Vertical Orbit is on.
+        m_view.orbitByDrag(delta.x(), delta.y(), double(height()));
     } else {
         const double perPixel = 1.0 / std::max(height(), 1);
         m_view.pan(-delta.x() * perPixel, delta.y() * perPixel);
     }
+    interacted();
     navigated();
     event->accept();
 }
@@ -634,6 +766,7 @@ void Viewport::wheelEvent(QWheelEvent* event) {
     const double notches = event->angleDelta().y() / 120.0;
     if (notches != 0.0) {
         m_view.zoom(std::pow(0.85, notches));
+        interacted();
         navigated();
     }
     event->accept();

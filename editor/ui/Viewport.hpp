@@ -4,6 +4,7 @@
 #include "editor/document/SceneData.hpp"
 #include "editor/ui/Gizmo.hpp"
 #include "editor/ui/HandleDrag.hpp"
+#include "editor/view/AdaptiveResolution.hpp"
 #include "editor/view/ViewCamera.hpp"
 #include "render/Renderer.hpp"
 
@@ -13,6 +14,7 @@
 #include <QStringList>
 #include <QTimer>
 #include <memory>
+#include <utility>
 
 class QPainter;
 class QUndoStack;
@@ -38,10 +40,16 @@ class ViewportOverlay;
 // reflected object; Alt+click selects the mirror itself), Ctrl+click adds it to the selection or takes it
 // out; the handles sit on the current node, and dragging one moves, rotates or scales every selected node
 // (a node under a selected ancestor goes with it) by the same displacement, angle or factor, each about its
-// own origin (one undo step per drag); left drag elsewhere orbits around the camera target,
-// middle (or Shift+left) drag pans, the wheel zooms, double-click returns to the scene camera.
+// own origin (one undo step per drag); left drag elsewhere orbits around the camera target (the scene
+// follows the mouse, setInvertVerticalOrbit), middle (or Shift+left) drag pans, the wheel zooms,
+// double-click returns to the scene camera. While navigating or dragging a handle, frames are previews
+// drawn at a reduced resolution when full frames would be slow (adaptive resolution, below); the full
+// frame follows when the view rests.
 // Navigation moves the view's own free camera, unless "look through the scene camera" is on: then it
 // edits the document's camera (undoable, one step per drag).
+//
+// It draws only when what it shows changes: an edit, a new document, navigation, a time jump, a model
+// read in, a resize, or the clock playing over a scene where something is animated.
 //
 // Handles, the selection outline and light markers are painted with QPainter on a transparent child
 // widget over the GL frame, projected with the renderer's matrices; they are not part of the frame
@@ -59,8 +67,10 @@ public:
     // Enables selection and handles; without it the viewport only views.
     void setEditing(view::Selection* selection, QUndoStack* undoStack);
 
-    // Frames drawn since the widget was created (tests wait on this).
+    // Frames drawn since the widget was created (tests wait on this, and count that none is drawn idle).
     int framesRendered() const { return m_framesRendered; }
+    // Whether frames keep coming on their own: the clock plays and something in the scene moves.
+    bool isAnimating() const { return m_tick.isActive(); }
     const render::FrameReport& lastReport() const { return m_lastReport; }
     double lastFrameTime() const { return m_lastFrameTime; }
     // Frames per second over the last second of drawing (0 before that).
@@ -84,6 +94,54 @@ public:
     // A model read elsewhere (Import's worker), so the viewport does not read the file again.
     void adoptModel(const std::string& absolutePath, std::shared_ptr<const document::ImportedModel> model);
     const render::Camera& viewCamera() const { return m_view.camera(); }
+    // The document's camera (what `speculum render` draws), as the renderer takes it.
+    render::Camera sceneCamera() const;
+    // Moves the view to `camera`'s position, target and up (a view preset); the field of view and near
+    // plane stay the view's. Looking through the scene camera, it is an edit of that camera, as
+    // navigation is. Repaints.
+    void setViewCamera(const render::Camera& camera);
+    // Where the view looks from and at, for the project's saved editor view (document::EditorView).
+    std::pair<glm::dvec3, glm::dvec3> viewPositionTarget() const;
+    // Puts the view at `position` looking at `target` (a saved editor view: view::ViewCamera::place),
+    // keeping the view's up, field of view and near plane (the scene camera's right after a reset);
+    // nothing happens when the two points coincide. Not an edit, even looking through the scene camera.
+    // Repaints.
+    void placeView(const glm::dvec3& position, const glm::dvec3& target);
+
+    // View ▸ Invert Vertical Orbit. By default dragging down raises the camera (the scene follows the
+    // mouse, as in Blender and three.js); inverted, it lowers it. Not remembered here: the window keeps
+    // the preference.
+    void setInvertVerticalOrbit(bool inverted) { m_view.setInvertedVertical(inverted); }
+    bool invertsVerticalOrbit() const { return m_view.invertedVertical(); }
+    // View ▸ Show Guides: the ground grid, the scene camera's wireframe, the pivot and the axis gizmo,
+    // painted over the frame (ViewportOverlay; remembered in QSettings there).
+    void setGuidesVisible(bool visible);
+    bool guidesVisible() const;
+
+    // Adaptive resolution (issue 16): while the view is navigated (orbit, pan, zoom, the wheel) or a
+    // handle is dragged, frames are drawn at a reduced resolution, scaled up, chosen from the measured
+    // frame time so a frame takes about previewFrameBudget() (never below a quarter of the width and
+    // height), then with fewer levels of mirror nesting when that is not enough; meanwhile the environment
+    // map keeps what it has and, during a handle drag, shadow maps are drawn smaller. kRestMs after the
+    // last such input, one frame at full quality follows. Off: every frame at full quality.
+    static constexpr int kRestMs = 250;
+    static constexpr double kMinPreviewScale = view::AdaptiveResolution::kMinScale;
+    void setAdaptiveResolution(bool on);
+    bool adaptiveResolution() const { return m_adaptive; }
+    // Milliseconds a preview frame should take until it is on screen (view::AdaptiveResolution; 40 by
+    // default).
+    void setPreviewFrameBudget(double milliseconds);
+    double previewFrameBudget() const { return m_resolution.budget(); }
+    // Whether input came within the last kRestMs (the next frame is a preview if it needs to be).
+    bool isInteracting() const { return m_interacting; }
+    // The last frame: a preview (reduced resolution or mirror depth)? Its level, the fraction of the
+    // width and height it was drawn at (1: full), and how many device pixels were drawn.
+    bool lastFrameReduced() const { return m_lastLevel.reduced(); }
+    const view::PreviewLevel& lastFrameLevel() const { return m_lastLevel; }
+    double lastFrameScale() const { return m_lastLevel.scale; }
+    QSize lastFrameDrawnSize() const { return m_lastDrawnSize; }
+    // Wall time of the last frame's drawing (paintGL up to the end of rendering), in milliseconds.
+    double lastFrameMs() const { return m_lastFrameMs; }
 
     HandleMode handleMode() const { return m_handleMode; }
     void setHandleMode(HandleMode mode);
@@ -115,6 +173,10 @@ signals:
     void warningsChanged(const QStringList& warnings);
     void rendererFailed(const QString& message);
     void handleModeChanged(speculum::ui::HandleMode mode);
+    // A new or opened document has put the view back on its scene camera (Scene::sceneReset; the
+    // viewport's own connection runs first, so this comes after the reset). Connect here to put a
+    // saved editor view in its place with placeView().
+    void viewReset();
 
 protected:
     void initializeGL() override;
@@ -133,7 +195,10 @@ private:
     void paintError();
     void updateTicking();
     void reportWarnings(QStringList warnings);
-    void navigated(); // after orbit/pan/zoom
+    void navigated();  // after orbit/pan/zoom
+    void interacted(); // navigation or a handle drag: previews until kRestMs after the last one
+    void rested();
+    void frameOnScreen(); // frameSwapped: the frame's whole cost is known
     void updateGizmo();
     ScreenProjection projection() const;
 
@@ -145,7 +210,8 @@ private:
     std::unique_ptr<render::Renderer> m_renderer;
     QString m_rendererError;
     view::ViewCamera m_view;
-    QTimer m_tick; // drives repaints while the animation plays
+    QTimer m_tick;                // drives repaints while the animation plays over a scene that moves
+    bool m_sceneAnimated = false; // document::sceneHasAnimation, kept up to date on every change
     ViewportOverlay* m_overlay = nullptr;
     ViewportModels* m_models = nullptr; // reads the scene's model files off the GUI thread
 
@@ -171,6 +237,21 @@ private:
     bool m_pressCtrl = false;
     std::unique_ptr<HandleDrag> m_handleDrag; // with editing on
     int m_gestureSerial = 0;
+
+    // Adaptive resolution.
+    bool m_adaptive = true;
+    bool m_interacting = false;
+    QTimer m_rest; // single shot: kRestMs after the last navigation or handle move
+    view::AdaptiveResolution m_resolution;
+    QSize m_previewSizeFor;     // the widget size m_resolution learnt at
+    double m_fullFrameMs = 0.0; // the last full-quality frame until on screen, to start a gesture from
+    view::PreviewLevel m_lastLevel;
+    QSize m_lastDrawnSize;
+    double m_lastFrameMs = 0.0;
+    QElapsedTimer m_frameClock; // from the start of the last paintGL
+    bool m_timingFrame = false; // the last frame's frameSwapped has not come yet
+    bool m_learning = false;    // the last frame was drawn at m_resolution's level
+    int m_maxDepthCut = 0;      // mirror levels of the scene beyond the first
 };
 
 } // namespace speculum::ui

@@ -48,10 +48,39 @@ void ViewCamera::orbit(double yawDegrees, double pitchDegrees) {
     const double current = std::acos(std::clamp(glm::dot(offset / distance, up), -1.0, 1.0));
     const double limit = glm::radians(2.0);
     const double wanted = std::clamp(current - glm::radians(pitchDegrees), limit, glm::pi<double>() - limit);
+    // A positive turn about up × offset carries offset away from up (it increases the angle to up): turn
+    // by wanted − current to land on `wanted`.
     const glm::dvec3 right = safeNormalize(glm::cross(up, offset), {1.0, 0.0, 0.0});
-    offset = glm::rotate(offset, current - wanted, right);
+    offset = glm::rotate(offset, wanted - current, right);
 
     m_camera.position = m_camera.target + offset;
+}
+
+void ViewCamera::orbitByDrag(double dx, double dy, double viewHeight) {
+    const double degreesPerPixel = 180.0 / std::max(viewHeight, 1.0);
+    // Down (dy > 0) raises the camera: a positive pitch (see the header for three.js' rule).
+    const double vertical = m_invertedVertical ? -dy : dy;
+    orbit(dx * degreesPerPixel, vertical * degreesPerPixel);
+}
+
+void ViewCamera::place(const glm::dvec3& position, const glm::dvec3& target) {
+    const double distance = glm::length(position - target);
+    if (!(distance > 1e-12) || !std::isfinite(distance)) {
+        return;
+    }
+    m_camera.position = position;
+    m_camera.target = target;
+    m_camera.far = cappedFar(m_camera.near, m_baseFar + std::max(0.0, distance - m_baseDistance));
+}
+
+void ViewCamera::place(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up) {
+    place(position, target);
+    const double upLength = glm::length(up);
+    const glm::dvec3 forward = safeNormalize(m_camera.target - m_camera.position, {0.0, 0.0, -1.0});
+    if (std::isfinite(upLength) && upLength > 1e-12 &&
+        glm::length(glm::cross(forward, up / upLength)) > 1e-9) {
+        m_camera.up = up / upLength;
+    }
 }
 
 void ViewCamera::pan(double rightFraction, double upFraction) {

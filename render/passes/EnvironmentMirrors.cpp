@@ -61,16 +61,20 @@ public:
         , m_toRelative(math::cameraRelative(env.camera)) {
         assert((!m_plan ||
                 (target.face >= 0 && target.face < static_cast<int>(m_plan->faces.size()) &&
-                 m_plan->faces[static_cast<std::size_t>(target.face)].warped == (target.warp != nullptr))) &&
+                 m_plan->faces[static_cast<std::size_t>(target.face)].warped == (target.warp != nullptr) &&
+                 m_plan->faces[static_cast<std::size_t>(target.face)].warp.mirrored == warpMirrored())) &&
                "drawEnvironmentTarget(): the target is not the planned face");
+        m_scenes.resize(m_plan ? m_plan->views.size() + 1 : 1);
     }
 
+    // The face's own view over the whole target, then the plan's passes for this face in plan order: for
+    // each mirror view its mask, its reflection, the views inside it, its surface.
     void draw() {
-        Level root;
-        root.eye = m_env.camera.position;
-        if (!m_target.warp)
-            root.viewProjection = projection(0) * m_target.faceView;
-        drawLevel(root, 0);
+        drawOwnView();
+        if (m_plan)
+            for (const PlannedPass& pass : m_plan->passes)
+                if (viewOf(pass).face == m_target.face)
+                    run(pass);
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_CLIP_DISTANCE0);
         m_ctx.mirrorMeshes.clear();
@@ -78,9 +82,40 @@ public:
     }
 
 private:
+    const MirrorView& viewOf(const PlannedPass& pass) const {
+        return m_plan->views[static_cast<std::size_t>(pass.view)];
+    }
+
+    void run(const PlannedPass& pass) {
+        const MirrorView& view = viewOf(pass);
+        switch (pass.kind) {
+        case PassKind::MirrorMask:
+            drawMask(levelOf(view.parent), sceneOf(view.parent), view.mirror, pass.writes);
+            break;
+        case PassKind::Mirror:
+            drawView(levelOf(pass.view), sceneOf(pass.view), pass.writes);
+            break;
+        case PassKind::MirrorSurface:
+            drawSurface(levelOf(view.parent), sceneOf(view.parent), view.mirror, pass.writes);
+            // Every pass that draws in this view (its own, its children's masks and surfaces) has run.
+            m_scenes[static_cast<std::size_t>(pass.view + 1)].reset();
+            break;
+        default:
+            assert(false && "drawEnvironmentTarget(): only mirror passes draw inside a face");
+            break;
+        }
+    }
+
     glm::dmat4 projection(int depth) const {
         return envmap::cubeFaceProjection(m_target.near, (2.0 * depth + 1.0) * m_target.far);
     }
+
+    // A direct-fill component whose warp mirrors the image (paraboloid component 1) flips every triangle
+    // of the target, the face's own view's as every mirror's. That is how the capture projects the face,
+    // not a reflection: PassWrites::clockwise declares the views' reflections only (render/plan/
+    // PassWrites.cpp), and the flip of the warp this target is drawn with is composed with it here, once.
+    bool warpMirrored() const { return m_target.warp && m_target.warp->warp.mirrored; }
+    bool clockwise(const PassWrites& writes) const { return writes.clockwise != warpMirrored(); }
 
     // The warp of a level: its far distance grows with its depth like the cube faces' projections.
     envmap::WarpPass warpFor(const Level& level) const {
@@ -97,6 +132,15 @@ private:
         envmap::setWarpUniforms(program, warpFor(level));
         program.set("uClipPlane", glm::vec4(level.clipPlane));
         (level.mirror >= 0 ? glEnable : glDisable)(GL_CLIP_DISTANCE0);
+    }
+
+    // What the level of view `index` (-1: the face's own) draws, made on first use and kept until the
+    // view's surface pass, the last to draw in it.
+    const LevelScene& sceneOf(int index) {
+        std::optional<LevelScene>& scene = m_scenes[static_cast<std::size_t>(index + 1)];
+        if (!scene)
+            scene = sceneFor(levelOf(index));
+        return *scene;
     }
 
     LevelScene sceneFor(const Level& level) const {
@@ -136,20 +180,33 @@ private:
         return cull;
     }
 
-    ViewSetup setupFor(const Level& level) const {
+    // The level's view, drawn with `frontClockwise` as its winding (the winding of a view with no
+    // reflection, for the face's own). The mirrors the plan gives views of their own in it are left to
+    // their passes.
+    ViewSetup setupFor(const Level& level, bool frontClockwise) const {
         ViewSetup setup;
         setup.viewProjection = level.viewProjection;
         setup.reflection = level.reflection;
         setup.eye = level.eye;
         setup.skipMirror.assign(m_env.mirrors.size(), false);
-        setup.flipWinding = m_target.warp && m_target.warp->warp.mirrored;
+        if (m_plan)
+            for (const MirrorView& view : m_plan->views)
+                if (view.face == m_target.face && view.parent == level.view)
+                    setup.skipMirror[static_cast<std::size_t>(view.mirror)] = true;
+        setup.clockwise = frontClockwise;
         return setup;
     }
 
-    // The planned view `index` as this target draws it.
+    // The planned view `index` as this target draws it; -1: the face's own view.
     Level levelOf(int index) const {
-        const MirrorView& view = m_plan->views[static_cast<std::size_t>(index)];
         Level level;
+        if (index < 0) {
+            level.eye = m_env.camera.position;
+            if (!m_target.warp)
+                level.viewProjection = projection(0) * m_target.faceView;
+            return level;
+        }
+        const MirrorView& view = m_plan->views[static_cast<std::size_t>(index)];
         level.view = index;
         level.mirror = view.mirror;
         level.depth = view.depth;
@@ -161,61 +218,52 @@ private:
         return level;
     }
 
-    void drawLevel(const Level& level, int stencil) {
-        std::vector<Level> children;
-        if (m_plan)
-            for (int v = 0; v < static_cast<int>(m_plan->views.size()); ++v) {
-                const MirrorView& view = m_plan->views[static_cast<std::size_t>(v)];
-                if (view.face == m_target.face && view.parent == level.view)
-                    children.push_back(levelOf(v));
-            }
-        const LevelScene scene = sceneFor(level);
-        ViewSetup setup = setupFor(level);
-        for (const Level& c : children)
-            setup.skipMirror[static_cast<std::size_t>(c.mirror)] = true;
+    // The face's own view: the whole target, where no stencil test is needed, with no reflection.
+    void drawOwnView() {
+        const Level root = levelOf(-1);
+        drawScene(root, sceneOf(-1), setupFor(root, clockwise(PassWrites{})));
+    }
 
-        // The level's scene, on its own pixels (the whole target at the top, where the test is not needed).
-        if (stencil > 0) {
-            glEnable(GL_STENCIL_TEST);
-            glStencilMask(0xFF);
-            glStencilFunc(GL_EQUAL, stencil, 0xFF);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        }
+    // The scene reflected in the level's mirror, on the pixels of the stencil level its mask marked.
+    void drawView(const Level& level, const LevelScene& scene, const PassWrites& writes) {
+        glEnable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+        glStencilFunc(GL_EQUAL, writes.stencilEqual, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        drawScene(level, scene, setupFor(level, clockwise(writes)));
+    }
+
+    void drawScene(const Level& level, const LevelScene& scene, const ViewSetup& setup) {
         m_ctx.mirrorMeshes = scene.mirrorMeshes;
         m_ctx.cullBackFaces = cullFor(level);
         prepareWarp(m_ctx.program, level);
         drawMainPass(scene.input(), setup, m_ctx);
         m_ctx.cullBackFaces.clear();
-
-        for (const Level& c : children) {
-            drawMask(level, scene, c, stencil);
-            drawLevel(c, stencil + 1);
-            drawSurface(level, scene, setup, c, stencil + 1);
-        }
     }
 
-    // In the parent's view: marks the mirror's visible pixels of the parent's level one level deeper, then
-    // resets their colour to the background and their depth to the far plane.
-    void drawMask(const Level& parent, const LevelScene& scene, const Level& mirrorLevel, int stencil) {
-        const Mirror& mirror = m_env.mirrors[static_cast<std::size_t>(mirrorLevel.mirror)];
+    // In the parent's view: marks the mirror's visible pixels of the parent's stencil level
+    // (writes.stencilEqual) one level deeper, then resets their colour to the background and their depth
+    // to the far plane.
+    void drawMask(const Level& parent, const LevelScene& scene, int mirrorIndex, const PassWrites& writes) {
+        const Mirror& mirror = m_env.mirrors[static_cast<std::size_t>(mirrorIndex)];
         const gl::Program& p = *m_programs.flat;
         p.use();
         prepareWarp(p, parent);
         const glm::dmat4 drawn = m_toRelative * parent.reflection * mirrorRectangle(mirror);
         p.set("uModelLightClip", glm::mat4(m_target.warp ? drawn : parent.viewProjection * drawn));
-        const gl::GpuMesh& mesh =
-            m_ctx.meshes.get(m_target.warp ? scene.mirrorMeshes[static_cast<std::size_t>(mirrorLevel.mirror)]
-                                           : m_ctx.unitPlane);
+        const gl::GpuMesh& mesh = m_ctx.meshes.get(
+            m_target.warp ? scene.mirrorMeshes[static_cast<std::size_t>(mirrorIndex)] : m_ctx.unitPlane);
+        glFrontFace(clockwise(writes) ? GL_CW : GL_CCW);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glEnable(GL_DEPTH_TEST);
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);
         glEnable(GL_STENCIL_TEST);
         glStencilMask(0xFF);
-        glStencilFunc(GL_EQUAL, stencil, 0xFF);
+        glStencilFunc(GL_EQUAL, writes.stencilEqual, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
         mesh.draw();
-        glStencilFunc(GL_EQUAL, stencil + 1, 0xFF);
+        glStencilFunc(GL_EQUAL, writes.stencilEqual + 1, 0xFF); // the level GL_INCR just marked
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         p.set("uFlatColor", glm::vec4(glm::vec3(m_env.settings.background), 1.0f));
@@ -228,14 +276,15 @@ private:
     }
 
     // In the parent's view: the mirror's surface blended over its reflection (dual-source, as
-    // shaders/mirror.frag does for the stencil technique); restores its depth and steps its pixels back.
-    void drawSurface(const Level& parent, const LevelScene& scene, const ViewSetup& setup,
-                     const Level& mirrorLevel, int stencil) {
-        const std::size_t index = static_cast<std::size_t>(mirrorLevel.mirror);
+    // shaders/mirror.frag does for the stencil technique), on the mirror's stencil level
+    // (writes.stencilEqual); restores its depth and steps its pixels back.
+    void drawSurface(const Level& parent, const LevelScene& scene, int mirrorIndex,
+                     const PassWrites& writes) {
+        const std::size_t index = static_cast<std::size_t>(mirrorIndex);
         const Mirror& mirror = m_env.mirrors[index];
         const gl::Program& p = *m_programs.mirror;
         m_ctx.mirrorMeshes = scene.mirrorMeshes;
-        beginLitView(scene.input(), setup, p, m_ctx);
+        beginLitView(scene.input(), setupFor(parent, clockwise(writes)), p, m_ctx);
         prepareWarp(p, parent);
         setMaterial(mirror.hasMaterial ? mirror.material : Material{}, p, m_ctx);
         p.set("uReflectivity", float(mirror.reflectivity));
@@ -247,7 +296,7 @@ private:
         p.set("uBlurLod", 0.0f);
         glEnable(GL_STENCIL_TEST);
         glStencilMask(0xFF);
-        glStencilFunc(GL_EQUAL, stencil, 0xFF);
+        glStencilFunc(GL_EQUAL, writes.stencilEqual, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_DECR);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_ALWAYS);
@@ -264,6 +313,7 @@ private:
     EnvironmentMirrorPrograms m_programs;
     MainPassContext& m_ctx;
     glm::dmat4 m_toRelative;
+    std::vector<std::optional<LevelScene>> m_scenes; // by view + 1: what each level draws, while needed
 };
 
 } // namespace

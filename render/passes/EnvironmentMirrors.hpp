@@ -63,7 +63,11 @@ struct EnvironmentTarget {
 // bound target, with the mirror views the planner planned for it (target.plan, target.face) reflecting
 // the scene (mirrors in mirrors included; mirrors without a view show their own material). Decides
 // nothing: which mirrors reflect, how deep, their reflections, oblique projections and clip planes are
-// the plan's. context.program draws the scene: mesh.vert + mesh.frag, or its ENVMAP_WARP variant.
+// the plan's, and after the face's own view it runs the plan's passes for this face (EnvmapPlan::passes
+// whose view lies in target.face) in plan order, each through the stencil level and with the winding its
+// PassWrites declare. The one thing it adds is what the capture alone knows: a direct-fill warp that
+// mirrors the image flips every winding. context.program draws the scene: mesh.vert + mesh.frag, or its
+// ENVMAP_WARP variant.
 //
 // The stencil technique of the main pass, nested the same way: a mirror's visible pixels (those of its
 // parent's stencil level whose depth test passes) are marked one level deeper and reset to the background

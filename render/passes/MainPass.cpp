@@ -74,8 +74,9 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
         p.set(indexed("uShadowIsCube", slot), 0);
     }
     const glm::dmat4 fromCameraRelative = glm::inverse(toCameraRelative);
-    for (int slot = 0; slot < static_cast<int>(ctx.shadowedLights.size()); ++slot) {
-        const int lightIndex = ctx.shadowedLights[static_cast<std::size_t>(slot)];
+    for (int slot = 0; slot < static_cast<int>(ctx.shadowPlans.size()); ++slot) {
+        const ShadowPlan& shadow = ctx.shadowPlans[static_cast<std::size_t>(slot)];
+        const int lightIndex = shadow.light;
         const ShadowMap* map = ctx.shadows.find(lightIndex);
         if (!map || lightIndex >= count)
             continue;
@@ -88,13 +89,14 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
             glBindTexture(GL_TEXTURE_2D, map->depth.id());
         }
         p.set(indexed("uShadowIsCube", slot), map->cube ? 1 : 0);
-        p.set(indexed("uShadowPerspective", slot), map->frustum.perspective ? 1 : 0);
+        p.set(indexed("uShadowPerspective", slot), shadow.frustum.perspective ? 1 : 0);
         // World → light clip composed with camera-relative → world, in double, then rounded once.
-        p.set(indexed("uShadowMatrix", slot), glm::mat4(map->frustum.viewProjection[0] * fromCameraRelative));
-        p.set(indexed("uShadowNearFar", slot), glm::vec2(map->frustum.near, map->frustum.far));
-        p.set(indexed("uShadowTexelSize", slot), float(map->frustum.texelSize));
+        p.set(indexed("uShadowMatrix", slot),
+              glm::mat4(shadow.frustum.viewProjection[0] * fromCameraRelative));
+        p.set(indexed("uShadowNearFar", slot), glm::vec2(shadow.frustum.near, shadow.frustum.far));
+        p.set(indexed("uShadowTexelSize", slot), float(shadow.frustum.texelSize));
         p.set(indexed("uShadowMapSize", slot), map->size);
-        p.set(indexed("uShadowPcf", slot), map->pcf);
+        p.set(indexed("uShadowPcf", slot), shadow.pcf);
     }
     glActiveTexture(GL_TEXTURE0);
 }
@@ -147,7 +149,7 @@ double alphaCutoff(const Material& m) {
 
 void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& p,
                   MainPassContext& ctx) {
-    ctx.mirroredView = (glm::determinant(glm::dmat3(view.reflection)) < 0.0) != view.flipWinding;
+    ctx.mirroredView = view.clockwise;
     const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
     const glm::dmat4 fromCameraRelative = glm::inverse(toCameraRelative);
     p.use();

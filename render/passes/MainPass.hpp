@@ -35,11 +35,13 @@ struct MainPassContext {
     gl::MeshCache& meshes;
     gl::TextureCache& textures;
     const ShadowMaps& shadows;
-    const std::vector<int>& shadowedLights; // light index per shadow slot
+    // The frame's shadow maps, by slot (FramePlan::shadows): which light, where its map looks from, how
+    // its lookups filter.
+    const std::vector<ShadowPlan>& shadowPlans;
     GLuint dummyShadow2D;
     GLuint dummyShadowCube;
     MeshHandle unitPlane;        // the mirror rectangle: [-1,1]² in XZ
-    bool mirroredView = false;   // set by beginLitView: the view's reflection flips the winding
+    bool mirroredView = false;   // set by beginLitView from ViewSetup::clockwise
     DrawReflector drawReflector; // empty: the reflector is drawn with its material
     // Per mirror (by index), a mesh drawn instead of unitPlane where set: the environment's direct fill
     // splits each rectangle for the capture point it is seen from.
@@ -67,7 +69,9 @@ struct ViewSetup {
     glm::dvec3 eye{0.0};             // world position of the (virtual) eye: lighting and specular use it
     std::vector<bool> skipMirror;    // mirrors drawn by passes of their own in this view (by mirror index)
     std::vector<bool> stencilMirror; // of those, the ones drawn through the stencil (their depth goes first)
-    bool flipWinding = false;        // the projection mirrors the image (a warped environment component)
+    // Front faces wind clockwise in this view: the plan's PassWrites::clockwise (an odd number of
+    // reflections), flipped once more where a warped environment component mirrors the image.
+    bool clockwise = false;
     // The part of clip space the view can draw into (x0, y0, x1, y1 in normalized device coordinates):
     // a mirror's view only shows through its mirror's pixels. Objects wholly outside are not drawn.
     glm::dvec4 ndcBounds{-1.0, -1.0, 1.0, 1.0};

@@ -8,9 +8,10 @@
 namespace speculum::render::passes {
 
 ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewIndex,
-                    const glm::dmat4& cameraProjection, glm::ivec2 targetSize) {
+                    const glm::dmat4& cameraProjection, glm::ivec2 targetSize, bool clockwise) {
     ViewSetup setup;
     setup.cullOutside = true;
+    setup.clockwise = clockwise;
     const glm::dmat4 rotation = math::viewRotation(input.camera);
     if (viewIndex < 0) {
         setup.viewProjection = cameraProjection * rotation;

@@ -7,8 +7,9 @@
 namespace speculum::render::passes {
 
 // The view a mirror view is drawn from: its parent's, or the camera's for index −1.
+// `clockwise`: the winding the pass drawing in it declares (PassWrites::clockwise).
 ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewIndex,
-                    const glm::dmat4& cameraProjection, glm::ivec2 targetSize);
+                    const glm::dmat4& cameraProjection, glm::ivec2 targetSize, bool clockwise);
 
 // Stencil technique, step 1: in the parent's view, marks the mirror's visible pixels (those of its parent's
 // stencil level whose depth test passes) with the view's stencil level, and counts them with an occlusion

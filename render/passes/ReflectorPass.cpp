@@ -38,14 +38,8 @@ FrameInput environmentInput(const FrameInput& input, const glm::dvec3& centre) {
 }
 
 MainPassContext withProgram(const gl::Program& program, MainPassContext& base, MeshHandle unitPlane) {
-    return MainPassContext{program,
-                           base.meshes,
-                           base.textures,
-                           base.shadows,
-                           base.shadowedLights,
-                           base.dummyShadow2D,
-                           base.dummyShadowCube,
-                           std::move(unitPlane)};
+    return MainPassContext{program,          base.meshes,        base.textures,        base.shadows,
+                           base.shadowPlans, base.dummyShadow2D, base.dummyShadowCube, std::move(unitPlane)};
 }
 
 } // namespace

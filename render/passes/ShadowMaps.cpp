@@ -12,6 +12,10 @@ namespace speculum::render::passes {
 
 namespace {
 
+GLenum textureTarget(const ShadowMap& map) {
+    return map.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+}
+
 void setDepthSampling(GLenum target, int pcf) {
     // PCF kernels > 1 also get the hardware's bilinear 2×2 comparison per tap; a kernel of 1 is a
     // single unfiltered comparison, i.e. a hard shadow.
@@ -20,13 +24,24 @@ void setDepthSampling(GLenum target, int pcf) {
     glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
 }
 
+// Sets the map's filtering for a lookup filter width, unless it has it already.
+void useFilter(ShadowMap& map, int pcf) {
+    if (map.filterPcf == pcf || !map.depth)
+        return;
+    map.filterPcf = pcf;
+    glBindTexture(textureTarget(map), map.depth.id());
+    setDepthSampling(textureTarget(map), pcf);
+    glBindTexture(textureTarget(map), 0);
+}
+
 } // namespace
 
-Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size) {
+Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size, int pcf) {
     m_maps.erase(lightIndex); // the old map's memory first: it may be what the new one needs
     ShadowMap map;
     map.cube = cube;
     map.size = size;
+    map.filterPcf = pcf;
     const std::size_t bytes = (cube ? 6u : 1u) * static_cast<std::size_t>(size) *
                               static_cast<std::size_t>(size) * gl::bytesPerTexel(GL_DEPTH_COMPONENT24);
     if (Status fits = gl::beginAllocation(bytes); !fits)
@@ -38,7 +53,7 @@ Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size) {
     // One level, said before the upload: with the default mipmapped minification filter a driver may
     // reserve a whole mip chain with level 0, a third more memory than the map needs.
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
-    setDepthSampling(target, map.pcf);
+    setDepthSampling(target, map.filterPcf);
     if (cube) {
         for (int face = 0; face < 6; ++face)
             glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_DEPTH_COMPONENT24, size, size, 0,
@@ -53,7 +68,7 @@ Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size) {
     glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
-    setDepthSampling(target, map.pcf);
+    setDepthSampling(target, map.filterPcf);
     glBindTexture(target, 0);
     if (Status allocated = gl::finishAllocation(); !allocated)
         return allocated;
@@ -74,21 +89,22 @@ Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size) {
     return Done{};
 }
 
-int ShadowMaps::allocate(const FrameInput& input, int lightIndex, std::vector<std::string>& warnings) {
+int ShadowMaps::allocate(const FrameInput& input, const ShadowPlan& shadow,
+                         std::vector<std::string>& warnings) {
+    const int lightIndex = shadow.light;
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
-    const int requested = std::max(light.shadows.mapSize, kMinShadowMapSize);
-    const auto frustum = math::shadowFrustum(input, light, requested);
-    if (!frustum)
-        return requested; // no map is drawn
-    const bool cube = frustum->cube;
+    const int requested = shadow.mapSize;
+    const bool cube = shadow.frustum.cube;
     gl::SizeFallback& fallback = cube ? m_fallbackCube : m_fallback2D;
     const gl::SizeFallback::Fitted fitted =
         fallback.fit(requested, kMinShadowMapSize, [&](int size) -> Status {
             if (const ShadowMap* map = find(lightIndex);
                 map && map->depth && map->cube == cube && map->size == size)
                 return Done{};
-            return allocateMap(lightIndex, cube, size);
+            return allocateMap(lightIndex, cube, size, shadow.pcf);
         });
+    if (auto it = m_maps.find(lightIndex); it != m_maps.end())
+        useFilter(it->second, shadow.pcf);
     if (fitted.size == requested)
         return requested;
     const std::string name =
@@ -104,14 +120,17 @@ int ShadowMaps::allocate(const FrameInput& input, int lightIndex, std::vector<st
     return fitted.size;
 }
 
-ShadowMap& ShadowMaps::prepare(int lightIndex, bool cube, int size) {
-    if (auto it = m_maps.find(lightIndex);
-        it != m_maps.end() && it->second.depth && it->second.cube == cube && it->second.size == size)
+ShadowMap& ShadowMaps::prepare(const ShadowPlan& shadow) {
+    const bool cube = shadow.frustum.cube;
+    if (auto it = m_maps.find(shadow.light); it != m_maps.end() && it->second.depth &&
+                                             it->second.cube == cube && it->second.size == shadow.mapSize) {
+        useFilter(it->second, shadow.pcf);
         return it->second;
+    }
     // allocate() normally made it already; a caller that did not still gets a checked allocation (an empty
     // map when it fails), only without the fallback.
-    (void)allocateMap(lightIndex, cube, size);
-    return m_maps[lightIndex];
+    (void)allocateMap(shadow.light, cube, shadow.mapSize, shadow.pcf);
+    return m_maps[shadow.light];
 }
 
 std::size_t ShadowMaps::bytes(int lightIndex) const {
@@ -122,37 +141,21 @@ std::size_t ShadowMaps::bytes(int lightIndex) const {
            gl::bytesPerTexel(GL_DEPTH_COMPONENT24);
 }
 
-void ShadowMaps::setPcf(int lightIndex, int pcf) {
-    auto it = m_maps.find(lightIndex);
-    if (it == m_maps.end() || it->second.pcf == pcf)
-        return;
-    it->second.pcf = pcf;
-    const GLenum target = it->second.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
-    glBindTexture(target, it->second.depth.id());
-    setDepthSampling(target, pcf);
-    glBindTexture(target, 0);
-}
-
 const ShadowMap* ShadowMaps::find(int lightIndex) const {
     auto it = m_maps.find(lightIndex);
     return it == m_maps.end() ? nullptr : &it->second;
 }
 
-void ShadowMaps::render(const FrameInput& input, int lightIndex, gl::MeshCache& meshes,
+void ShadowMaps::render(const FrameInput& input, const ShadowPlan& shadow, gl::MeshCache& meshes,
                         const gl::Program& program, gl::TextureCache* textures) {
-    const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
-    // The renderer already fitted the size to the GPU's limits (fitToGpuLimits).
-    const int size = std::max(light.shadows.mapSize, kMinShadowMapSize);
-    auto frustum = math::shadowFrustum(input, light, size);
-    if (!frustum)
-        return;
-    ShadowMap& map = prepare(lightIndex, frustum->cube, size);
+    // The renderer already fitted the size to the GPU's limits (fitToGpuLimits, allocate).
+    const int size = shadow.mapSize;
+    const math::ShadowFrustum& frustum = shadow.frustum;
+    ShadowMap& map = prepare(shadow);
     if (!map.depth) { // it did not fit: the main pass samples no map for the light
-        m_maps.erase(lightIndex);
+        m_maps.erase(shadow.light);
         return;
     }
-    setPcf(lightIndex, light.shadows.pcf);
-    map.frustum = *frustum;
 
     gl::FramebufferBinding keepBinding;
     glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer.id());
@@ -168,18 +171,18 @@ void ShadowMaps::render(const FrameInput& input, int lightIndex, gl::MeshCache& 
     glPolygonOffset(2.0f, 4.0f);
     program.use();
 
-    const int faces = frustum->cube ? 6 : 1;
+    const int faces = frustum.cube ? 6 : 1;
     for (int face = 0; face < faces; ++face) {
-        if (frustum->cube)
+        if (frustum.cube)
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
                                    map.depth.id(), 0);
         else
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map.depth.id(), 0);
         glClear(GL_DEPTH_BUFFER_BIT);
         // Faces that hold no caster stay cleared: everything seen through them is lit.
-        if (frustum->cube && !(frustum->faceMask & (1u << face)))
+        if (frustum.cube && !(frustum.faceMask & (1u << face)))
             continue;
-        const glm::dmat4& viewProjection = frustum->viewProjection[face];
+        const glm::dmat4& viewProjection = frustum.viewProjection[face];
         for (const DrawItem& item : input.items) {
             if (!item.castsShadows || !item.mesh)
                 continue;

@@ -6,7 +6,7 @@
 #include "render/gl/Objects.hpp"
 #include "render/gl/Program.hpp"
 #include "render/gl/TextureCache.hpp"
-#include "render/math/ShadowFrustum.hpp"
+#include "render/plan/FramePlan.hpp"
 
 #include <string>
 #include <unordered_map>
@@ -16,41 +16,40 @@ namespace speculum::render::passes {
 
 // One light's depth map: a 2D texture (spot, directional) or a cube map (point), with hardware depth
 // comparison enabled so the main pass filters it with sampler2DShadow / samplerCubeShadow.
+// Where it looks from, and its lookup filter width, are the frame's ShadowPlan.
 struct ShadowMap {
     bool cube = false;
     int size = 0;
-    int pcf = 1;
+    int filterPcf = 1; // the PCF width the texture's filtering was last set for
     gl::Texture depth;
     gl::Framebuffer framebuffer;
-    math::ShadowFrustum frustum;
 };
 
 class ShadowMaps {
 public:
-    // Allocates (or keeps) the depth map of input.lights[lightIndex] at the largest size up to the one
-    // asked for that the GPU holds, halving from there, and returns that size; 0 if not even the
-    // smallest map fits. A smaller size than asked adds a warning naming the light and both sizes.
-    // Sizes that failed are remembered: later frames go straight to the size that worked. The renderer
-    // plans and draws the frame with the size returned.
-    int allocate(const FrameInput& input, int lightIndex, std::vector<std::string>& warnings);
-    // Renders the depth map of input.lights[lightIndex] from every shadow caster. Casters with an alpha
-    // mask (Material::alphaMode) draw with the program's SHADOW_MASK variant, which discards where the
-    // material is cut away, so their shadows have the same holes; that needs `textures` (null: they cast
-    // whole shadows).
-    void render(const FrameInput& input, int lightIndex, gl::MeshCache& meshes, const gl::Program& program,
-                gl::TextureCache* textures = nullptr);
+    // Allocates (or keeps) the depth map `shadow` plans (a cube map where its frustum is one) at the
+    // largest size up to shadow.mapSize that the GPU holds, halving from there, and returns that size; 0
+    // if not even the smallest map fits. A smaller size than asked adds a warning naming the light and
+    // both sizes. Sizes that failed are remembered: later frames go straight to the size that worked. The
+    // renderer plans and draws the frame with the size returned. The map's filtering is set for
+    // shadow.pcf, which may change without the map being drawn again (PCF is a lookup setting).
+    int allocate(const FrameInput& input, const ShadowPlan& shadow, std::vector<std::string>& warnings);
+    // Renders the depth map `shadow` plans, through its frustum, from every shadow caster. Casters with an
+    // alpha mask (Material::alphaMode) draw with the program's SHADOW_MASK variant, which discards where
+    // the material is cut away, so their shadows have the same holes; that needs `textures` (null: they
+    // cast whole shadows).
+    void render(const FrameInput& input, const ShadowPlan& shadow, gl::MeshCache& meshes,
+                const gl::Program& program, gl::TextureCache* textures = nullptr);
     // The map of a light rendered this frame or earlier, or nullptr.
     const ShadowMap* find(int lightIndex) const;
-    // The light's map settings may change without re-rendering (PCF is a lookup setting).
-    void setPcf(int lightIndex, int pcf);
     // GPU memory of the light's depth map (six faces for a cube), 0 if it has none.
     std::size_t bytes(int lightIndex) const;
     void clear() { m_maps.clear(); }
 
 private:
     // Allocates a new map of that size, checked; nothing is left behind when it fails.
-    Status allocateMap(int lightIndex, bool cube, int size);
-    ShadowMap& prepare(int lightIndex, bool cube, int size);
+    Status allocateMap(int lightIndex, bool cube, int size, int pcf);
+    ShadowMap& prepare(const ShadowPlan& shadow);
     std::unordered_map<int, ShadowMap> m_maps;
     gl::SizeFallback m_fallback2D;   // spot and directional lights' maps
     gl::SizeFallback m_fallbackCube; // point lights' cube maps (six faces)

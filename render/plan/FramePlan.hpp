@@ -2,6 +2,7 @@
 
 #include "render/envmap/CaptureMath.hpp"
 #include "render/math/Mirror.hpp"
+#include "render/math/ShadowFrustum.hpp"
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>
@@ -17,19 +18,47 @@ enum class PassKind { Shadow, MirrorMask, Mirror, MirrorSurface, Envmap, Main, C
 
 std::string_view toString(PassKind kind);
 
-// One pass the renderer will run, and why. Timings are filled in after the frame executed
-// (gpuMs < 0 means no GPU timing was available).
+// What a pass draws into. The frame's own buffers are named here; the executor binds what the plan says.
+enum class PassTarget {
+    OwnMap,     // a map the pass owns: a light's shadow map, the reflector's environment map
+    Linear,     // the frame's linear (half-float) colour buffer with its depth-stencil buffer
+    Reflection, // a texture-technique mirror's reflection texture (PassWrites::slot)
+    Output,     // the caller's target (RenderTarget)
+};
+
+std::string_view toString(PassTarget target);
+
+// How a pass writes, declared by the planner so that the executor decides nothing: where, what it clears
+// first, which pixels it may touch, which stencil level it draws through, which way its triangles face,
+// and what it prepares for the passes after it.
+struct PassWrites {
+    PassTarget target = PassTarget::OwnMap;
+    int slot = -1; // Reflection: which reflection texture (MirrorView::textureSlot)
+    // Clears colour (to the background), depth and stencil (to 0) before drawing: within `scissor`, or
+    // the whole target with clearWhole (a blurred reflection's lookups read around the mirror's pixels).
+    bool clear = false;
+    bool clearWhole = false;
+    std::optional<math::PixelRect> scissor; // draws only these pixels (none: the whole target)
+    int stencilEqual = -1;                  // ≥ 0: draws only where the stencil holds this level
+    bool clockwise = false; // front faces wind clockwise: the view has an odd number of reflections
+    // MirrorSurface of a blurred texture-technique mirror: builds the reflection texture's mip chain
+    // before reading it; readSlot is the texture the surface reads (-1: none, a stencil mirror).
+    bool mipmaps = false;
+    int readSlot = -1;
+};
+
+// One pass the renderer will run, and why, and how it writes. The plan is never changed by running it:
+// what ran, what execution found and what it cost are the FrameReport's.
 struct PlannedPass {
     PassKind kind = PassKind::Main;
     std::string target; // node name, or empty for the whole frame
     std::string reason;
     int lightIndex = -1; // shadow passes: index into FrameInput::lights
     int view = -1;       // mirror passes: index into FramePlan::views
-    double gpuMs = -1.0;
-    double cpuMs = 0.0;
     // Shadow passes: the signature of what the map holds (shadowSignature), which the renderer records
     // once the map is drawn, so the next frame's planner can reuse it.
     std::uint64_t signature = 0;
+    PassWrites writes;
 };
 
 // An effect the scene has that got no pass this frame, and why.
@@ -96,15 +125,37 @@ struct EnvmapPlan {
     std::vector<SkippedEffect> skipped;
 };
 
+// A light whose shadow map the main pass samples this frame, rendered now or reused: its frustum is
+// computed once, here, and used by the signature, the allocation, the shadow pass and every lookup.
+struct ShadowPlan {
+    int light = -1;  // index into FrameInput::lights
+    int mapSize = 0; // texels per side (per cube face)
+    int pcf = 1;     // the lookup's filter width
+    math::ShadowFrustum frustum;
+    std::uint64_t signature = 0; // shadowSignature: what the map holds
+    bool render = false;         // a Shadow pass draws it this frame; false: the map is reused
+};
+
+// The camera's colour buffer. Half float keeps radiance above 1 until the composite pass resolves it,
+// so a stencil mirror's blend (reflection × weight + surface) sees the unclamped reflection it drew. 8-bit
+// sRGB, encoded by the GPU as each fragment is written (and blended in linear light), is what a frame
+// with no such blend needs: its composite is then a plain copy, with no shader run per pixel.
+enum class CameraBuffer { HalfFloat, Srgb8 };
+
 struct FramePlan {
     std::vector<PlannedPass> passes;
+    CameraBuffer cameraBuffer = CameraBuffer::HalfFloat;
     std::vector<SkippedEffect> skipped;
     // Lights (indices into FrameInput::lights) whose shadow map the main pass samples, rendered this
-    // frame or reused; at most kMaxShadowedLights.
+    // frame or reused; at most kMaxShadowedLights. shadows[k] plans shadowedLights[k], slot k.
     std::vector<int> shadowedLights;
+    std::vector<ShadowPlan> shadows;
     std::vector<MirrorView> views;
     // Set when the environment pass runs this frame.
     std::optional<EnvmapPlan> envmap;
+
+    // The shadow plan of a light, or nullptr if the main pass does not sample a map of it.
+    const ShadowPlan* shadowOf(int lightIndex) const;
 };
 
 } // namespace speculum::render

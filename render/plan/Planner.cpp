@@ -1,9 +1,11 @@
 #include "render/plan/Planner.hpp"
 
+#include "render/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
 #include "render/math/ShadowFrustum.hpp"
 #include "render/plan/FrameHashing.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <functional>
@@ -30,10 +32,47 @@ std::string_view toString(PassKind kind) {
     return "unknown";
 }
 
+std::string_view toString(PassTarget target) {
+    switch (target) {
+    case PassTarget::OwnMap:
+        return "own-map";
+    case PassTarget::Linear:
+        return "linear";
+    case PassTarget::Reflection:
+        return "reflection";
+    case PassTarget::Output:
+        return "output";
+    }
+    return "unknown";
+}
+
+const ShadowPlan* FramePlan::shadowOf(int lightIndex) const {
+    for (const ShadowPlan& shadow : shadows)
+        if (shadow.light == lightIndex)
+            return &shadow;
+    return nullptr;
+}
+
 namespace {
 
 std::string plural(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// Why the camera's colour buffer must keep radiance above 1 (empty: it need not). A stencil mirror drawn
+// there blends its surface onto the reflection it drew (reflection × weight + surface): a reflected
+// highlight brighter than 1 must not be clamped before it is weighted. A perfect, untinted mirror's blend
+// multiplies by one and changes nothing.
+std::string blendOntoRadiance(const FrameInput& input, const std::vector<MirrorView>& views) {
+    for (const MirrorView& view : views) {
+        if (view.ownTarget || view.textureSlot >= 0)
+            continue;
+        const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
+        if (mirror.reflectivity >= 1.0 && mirror.tint == glm::dvec3(1.0))
+            continue;
+        return "stencil mirror '" + mirror.name + "' blends onto the reflection it drew";
+    }
+    return {};
 }
 
 std::string lightLabel(const Light& light, int index) {
@@ -50,7 +89,10 @@ glm::dmat4 cameraProjection(const FrameInput& input, const PlanViewport& viewpor
                         std::max(viewport.width, 1), std::max(viewport.height, 1));
 }
 
-std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
+namespace {
+
+// The one definition of the shadow signature; `frustum` null: the scene has nothing to receive a shadow.
+std::uint64_t hashShadow(const FrameInput& input, int lightIndex, const math::ShadowFrustum* frustum) {
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
     Hasher h;
     h.add(light.type);
@@ -58,7 +100,7 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
     h.add(light.direction);
     h.add(light.spotAngle);
     h.add(light.shadows.mapSize);
-    if (const auto frustum = math::shadowFrustum(input, light, light.shadows.mapSize)) {
+    if (frustum) {
         for (const auto& m : frustum->viewProjection)
             h.add(m);
         h.add(frustum->faceMask);
@@ -75,6 +117,18 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
         h.add(input.reflector->world);
     }
     return h.value;
+}
+
+} // namespace
+
+std::uint64_t shadowSignature(const FrameInput& input, int lightIndex, const math::ShadowFrustum& frustum) {
+    return hashShadow(input, lightIndex, &frustum);
+}
+
+std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
+    const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
+    const auto frustum = math::shadowFrustum(input, light, light.shadows.mapSize);
+    return hashShadow(input, lightIndex, frustum ? &*frustum : nullptr);
 }
 
 FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport) {
@@ -110,7 +164,10 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
                                               " lights cast shadows; this one lights without them"});
             continue;
         }
-        const auto frustum = math::shadowFrustum(input, light, light.shadows.mapSize);
+        // The one frustum of this light's map this frame, at the size the map is drawn at: the signature,
+        // the shadow pass and every lookup use it.
+        const int mapSize = std::max(light.shadows.mapSize, kMinShadowMapSize);
+        const auto frustum = math::shadowFrustum(input, light, mapSize);
         if (!frustum) {
             plan.skipped.push_back(
                 {name, "shadow pass not needed: nothing in the scene can receive a shadow"});
@@ -119,8 +176,10 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         ++shadowSlots;
         plan.shadowedLights.push_back(i);
         const auto previous = state.shadowSignatures.find(i);
-        const std::uint64_t signature = shadowSignature(input, i);
-        if (previous != state.shadowSignatures.end() && previous->second == signature) {
+        const std::uint64_t signature = shadowSignature(input, i, *frustum);
+        const bool reused = previous != state.shadowSignatures.end() && previous->second == signature;
+        plan.shadows.push_back({i, mapSize, light.shadows.pcf, *frustum, signature, !reused});
+        if (reused) {
             plan.skipped.push_back(
                 {name, "shadow map reused: light and casters unchanged since the last frame"});
             continue;
@@ -153,7 +212,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         "draws " +
         plural(input.items.size() + input.mirrors.size() + (input.reflector ? 1 : 0), "object", "objects") +
         " lit by " + plural(std::min<std::size_t>(input.lights.size(), kMaxLights), "light", "lights") +
-        " into the linear colour buffer";
+        " into the camera's colour buffer";
     plan.passes.push_back(std::move(main));
 
     // The mirror passes keep their view indices: plan.views is empty until here.
@@ -163,10 +222,26 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     for (SkippedEffect& skip : mirrors.skipped)
         plan.skipped.push_back(std::move(skip));
 
+    const std::string blend = blendOntoRadiance(input, plan.views);
+    plan.cameraBuffer =
+        viewport.eightBitOutput && blend.empty() ? CameraBuffer::Srgb8 : CameraBuffer::HalfFloat;
+    PlannedPass& mainPass = *std::find_if(plan.passes.begin(), plan.passes.end(),
+                                          [](const PlannedPass& p) { return p.kind == PassKind::Main; });
     PlannedPass composite;
     composite.kind = PassKind::Composite;
-    composite.reason = "resolves the linear colour buffer into the output (sRGB encoding for 8-bit targets)";
+    if (plan.cameraBuffer == CameraBuffer::Srgb8) {
+        mainPass.reason += " (8-bit sRGB, encoded as it is written)";
+        composite.reason =
+            "copies the sRGB colour buffer to the output: no blend in it needs radiance above 1";
+    } else {
+        mainPass.reason += " (half float)";
+        composite.reason =
+            viewport.eightBitOutput
+                ? "resolves the half-float colour buffer into the 8-bit output with sRGB encoding: " + blend
+                : "resolves the half-float colour buffer into the float output (linear)";
+    }
     plan.passes.push_back(std::move(composite));
+    declareWrites(input, plan);
     return plan;
 }
 

@@ -35,6 +35,9 @@ struct PlanViewport {
     int width = 1;
     int height = 1;
     glm::dvec2 jitterPixels{0.0};
+    // The output holds 8-bit sRGB (a window's framebuffer): the camera's view may be drawn into an 8-bit
+    // sRGB buffer when nothing blends onto radiance above 1 there (FramePlan::cameraBuffer).
+    bool eightBitOutput = false;
 };
 
 // The camera's projection for this viewport (jittered) and its camera-relative view-projection.
@@ -43,10 +46,18 @@ glm::dmat4 cameraProjection(const FrameInput& input, const PlanViewport& viewpor
 // Hash of everything a light's shadow map depends on: the light, its map settings, the frustum and
 // every caster's mesh and transform. Equal signatures mean the old map can be reused.
 std::uint64_t shadowSignature(const FrameInput& input, int lightIndex);
+// The same, with the light's frustum already computed (math::shadowFrustum; any map size gives the same
+// matrices and face mask, which is all the signature reads of it): the planner computes it once per light.
+std::uint64_t shadowSignature(const FrameInput& input, int lightIndex, const math::ShadowFrustum& frustum);
 
 // The pure planning step: which passes run this frame, in order, with the reason for each, and which
 // effects got no pass and why. Needs no GL.
 FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport = {});
+
+// How every pass of `plan` writes (PassWrites), from its kind and its view: the last step of planFrame,
+// so the renderer binds, clears, scissors, stencils and winds each pass as the plan says. The
+// environment map's own passes get their stencil level and winding (they draw into the map's faces).
+void declareWrites(const FrameInput& input, FramePlan& plan);
 
 // Where the reflector's environment map is captured from (EnvmapCapture). Needs a reflector with a mesh.
 EnvmapCapture envmapCapture(const FrameInput& input);
@@ -75,15 +86,16 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
 
 // Tiled stills: makes `plan`, planned for the whole image `image`, draw only the pixels `tile` of it
 // (GL window coordinates, y up) into a target of the tile's size. Every view's projection becomes the
-// image's own restricted to the tile (math::tileProjection), its pixel rectangle is clipped to the tile
-// and moved to the tile's origin, and the passes of mirror views without a pixel in the tile are dropped
-// (they could only draw outside it). Whatever the planner decided (which mirrors are seen, to what depth,
-// which cover under one pixel, whether the reflector is seen) was decided for the whole image, so every
-// tile draws its pixels as an untiled frame would. Where a tile legitimately differs: the renderer's
-// occlusion query sees only the tile, so a mirror hidden there is reported "fully occluded in this tile"
-// (it has no pixel to draw in it either way); a blurred texture-technique mirror reads the mip chain of
-// the tile's own reflection texture, so near tile borders its blur cannot reach past the tile; and float
-// rounding of vertices in the tile's clip space can move an edge across a sample lying on it.
+// image's own restricted to the tile (math::tileProjection), its pixel rectangle (and every pass's
+// scissor, PassWrites::scissor) is clipped to the tile and moved to the tile's origin, and the passes of
+// mirror views without a pixel in the tile are dropped (they could only draw outside it). Whatever the
+// planner decided (which mirrors are seen, to what depth, which cover under one pixel, whether the reflector
+// is seen) was decided for the whole image, so every tile draws its pixels as an untiled frame would. Where a
+// tile legitimately differs: the renderer's occlusion query sees only the tile, so a mirror hidden there is
+// reported "fully occluded in this tile" (it has no pixel to draw in it either way); a blurred
+// texture-technique mirror reads the mip chain of the tile's own reflection texture, so near tile borders its
+// blur cannot reach past the tile; and float rounding of vertices in the tile's clip space can move an edge
+// across a sample lying on it.
 void restrictToTile(FramePlan& plan, const math::PixelRect& tile, const PlanViewport& image);
 
 // The mirror part of planning: the views of every mirror seen directly or through other mirrors, and the

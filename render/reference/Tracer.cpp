@@ -1,5 +1,6 @@
 #include "render/reference/Tracer.hpp"
 
+#include "render/SceneLimits.hpp"
 #include "render/StillSize.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
@@ -195,7 +196,7 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
         return Error{size.error()};
     const Impl& impl = *m_impl;
     const int width = settings.width, height = settings.height;
-    const int n = std::clamp(settings.ssaa, 1, 16);
+    const int n = std::clamp(settings.ssaa, kMinSsaa, kMaxSsaa);
     const Shader shader(impl.lights, *impl.geometry, impl.textures, impl.input.settings.ambient,
                         settings.shadows);
 

@@ -15,3 +15,7 @@ speculum_add_test(test_bench_demos TIER gl USES_CLI LABELS slow
 speculum_add_test(test_cli_write_failures TIER gl USES_CLI
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_cli_write_failures.cpp
     LIBS Qt6::Core)
+# `speculum time`: frame-time statistics, the camera buffer, reuse in static frames, bad input (gl tier).
+speculum_add_test(test_time_cli TIER gl USES_CLI
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_time_cli.cpp
+    LIBS Qt6::Core)

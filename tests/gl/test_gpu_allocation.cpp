@@ -71,10 +71,12 @@ bool mentions(const std::vector<std::string>& warnings, const std::string& what)
                        [&](const std::string& w) { return w.find(what) != std::string::npos; });
 }
 
-const PlannedPass* findPass(const FramePlan& plan, PassKind kind) {
-    for (const PlannedPass& p : plan.passes)
-        if (p.kind == kind)
-            return &p;
+// The first pass of this kind that ran: the plan keeps the passes execution dropped (a map or a texture
+// that could not be allocated), the report's `ran` does not.
+const PlannedPass* findPass(const FrameReport& report, PassKind kind) {
+    for (const PassRun& run : report.ran)
+        if (report.planned(run).kind == kind)
+            return &report.planned(run);
     return nullptr;
 }
 
@@ -120,7 +122,7 @@ TEST_F(GlTest, PointLightShadowMapThatDoesNotFitIsDrawnSmallerAndTheSceneStaysLi
     const double firstMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const FrameReport report = lastReport();
-    const PlannedPass* shadow = findPass(report.plan, PassKind::Shadow);
+    const PlannedPass* shadow = findPass(report, PassKind::Shadow);
     ASSERT_NE(shadow, nullptr);
     int used = 8192;
     if (!report.warnings.empty()) {
@@ -157,7 +159,7 @@ TEST_F(GlTest, ShadowMapFallsBackByHalvingToTheLargestSizeThatFits) {
     ASSERT_EQ(lastReport().warnings.size(), 1u) << ::testing::PrintToString(lastReport().warnings);
     EXPECT_EQ(lastReport().warnings[0], "light 'Lamp': the 8192² cube shadow map did not fit in GPU memory "
                                         "(over the test limit of 16777216 bytes); using 512²");
-    const PlannedPass* shadow = findPass(lastReport().plan, PassKind::Shadow);
+    const PlannedPass* shadow = findPass(lastReport(), PassKind::Shadow);
     ASSERT_NE(shadow, nullptr);
     EXPECT_NE(shadow->reason.find("512² map"), std::string::npos) << shadow->reason;
     EXPECT_EQ(lastReport().memory.shadows, 6u * 512 * 512 * 4);
@@ -182,7 +184,7 @@ TEST_F(GlTest, LightWhoseSmallestShadowMapDoesNotFitLightsWithoutShadows) {
         << lastReport().warnings[0];
     EXPECT_NE(lastReport().warnings[0].find("the light casts no shadows"), std::string::npos)
         << lastReport().warnings[0];
-    EXPECT_EQ(findPass(lastReport().plan, PassKind::Shadow), nullptr);
+    EXPECT_EQ(findPass(lastReport(), PassKind::Shadow), nullptr);
     EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), unshadowed.rgba.begin()));
 }
 
@@ -234,7 +236,7 @@ TEST_F(GlTest, ReflectorWhoseMapDoesNotFitIsDrawnSmallerNotDropped) {
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const FrameReport& report = lastReport();
-        const PlannedPass* envmap = findPass(report.plan, PassKind::Envmap);
+        const PlannedPass* envmap = findPass(report, PassKind::Envmap);
         ASSERT_NE(envmap, nullptr) << "the reflector was dropped";
         EXPECT_GT(report.memory.envmap, 0u);
         int used = 8192;
@@ -287,7 +289,7 @@ TEST_F(GlTest, ReflectorMapOfEveryLayoutFallsBackUnderAnAllocationLimit) {
         EXPECT_EQ(c.resolution % used, 0) << "not found by halving: " << w;
         EXPECT_LE(report.memory.envmap, 3u * (4u << 20))
             << "a map, its depth and a cube, each within the limit";
-        const PlannedPass* envmap = findPass(report.plan, PassKind::Envmap);
+        const PlannedPass* envmap = findPass(report, PassKind::Envmap);
         ASSERT_NE(envmap, nullptr) << "the reflector was dropped";
         EXPECT_NE(envmap->reason.find(std::to_string(used) + "×"), std::string::npos) << envmap->reason;
         EXPECT_GT(report.memory.envmap, 0u);
@@ -305,15 +307,21 @@ TEST_F(GlTest, FrameWhoseColourBufferDoesNotFitReportsAnError) {
     FrameInput input = scene(256);
     renderImage(input, 64, 36); // meshes and maps are uploaded under no limit
     AllocationLimit limit(64 * 36 * 8 - 1);
-    renderImage(input, 64, 36 * 2);
-    EXPECT_NE(lastReport().error.find("colour buffer did not fit in GPU memory"), std::string::npos)
-        << lastReport().error;
-    EXPECT_TRUE(mentions(lastReport().warnings, "the frame could not be drawn"))
-        << ::testing::PrintToString(lastReport().warnings);
+    // The frame says so, and runs no pass (it returns before touching the target).
+    const FrameReport report = renderer().render(input, RenderTarget{0, 64, 36 * 2, false});
+    EXPECT_NE(report.error.find("colour buffer did not fit in GPU memory"), std::string::npos)
+        << report.error;
+    EXPECT_TRUE(mentions(report.warnings, "the frame could not be drawn"))
+        << ::testing::PrintToString(report.warnings);
+    EXPECT_TRUE(report.ran.empty());
+    // A still of it fails with that error rather than being an empty image.
+    auto still = renderStill(renderer(), input, {64, 36 * 2, 1});
+    ASSERT_FALSE(still.ok());
+    EXPECT_NE(still.error().find("the frame could not be drawn"), std::string::npos) << still.error();
 }
 
 // Any GPU: a texture-technique mirror whose reflection texture does not fit is skipped with a warning and
-// a reason in the plan, instead of showing whatever an incomplete texture samples as.
+// a reason among the frame's skips, instead of showing whatever an incomplete texture samples as.
 TEST_F(GlTest, MirrorWhoseReflectionTextureDoesNotFitIsSkippedWithAWarning) {
     FrameInput input = scene(256);
     Mirror mirror;
@@ -335,11 +343,14 @@ TEST_F(GlTest, MirrorWhoseReflectionTextureDoesNotFitIsSkippedWithAWarning) {
     EXPECT_TRUE(mentions(lastReport().warnings, "mirror 'Glass': no reflection, its reflection texture: the "
                                                 "64×36 colour buffer did not fit in GPU memory"))
         << ::testing::PrintToString(lastReport().warnings);
-    EXPECT_TRUE(std::any_of(
-        lastReport().plan.skipped.begin(), lastReport().plan.skipped.end(), [](const SkippedEffect& e) {
+    EXPECT_TRUE(
+        std::any_of(lastReport().skipped.begin(), lastReport().skipped.end(), [](const SkippedEffect& e) {
             return e.target == "Glass" && e.reason.find("no reflection") != std::string::npos;
         }));
-    EXPECT_EQ(findPass(lastReport().plan, PassKind::Mirror), nullptr);
+    EXPECT_EQ(findPass(lastReport(), PassKind::Mirror), nullptr);
+    EXPECT_TRUE(std::any_of(lastReport().plan.passes.begin(), lastReport().plan.passes.end(),
+                            [](const PlannedPass& p) { return p.kind == PassKind::Mirror; }))
+        << "the plan keeps the pass execution could not run";
 }
 
 } // namespace

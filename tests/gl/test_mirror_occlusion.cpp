@@ -3,7 +3,9 @@
 // screen slides in front of the mirror and away again.
 #include "../render/reference/SceneBuilder.hpp"
 #include "GlTest.hpp"
+#include "render/plan/Planner.hpp"
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace speculum::test {
@@ -47,17 +49,24 @@ FrameInput scene(MirrorTechnique technique, bool screenInFront) {
 }
 
 bool ranMirrorPass(const FrameReport& report) {
-    for (const PlannedPass& pass : report.plan.passes)
-        if (pass.kind == PassKind::Mirror)
+    return report.countRan(PassKind::Mirror) > 0;
+}
+
+bool skippedAsOccluded(const std::vector<SkippedEffect>& skipped) {
+    for (const SkippedEffect& skip : skipped)
+        if (skip.target == "Mirror" && skip.reason.find("fully occluded") != std::string::npos)
             return true;
     return false;
 }
 
 bool skippedAsOccluded(const FrameReport& report) {
-    for (const SkippedEffect& skip : report.plan.skipped)
-        if (skip.target == "Mirror" && skip.reason.find("fully occluded") != std::string::npos)
-            return true;
-    return false;
+    return skippedAsOccluded(report.skipped);
+}
+
+std::size_t countPlanned(const FramePlan& plan, PassKind kind, const std::string& target) {
+    return static_cast<std::size_t>(
+        std::count_if(plan.passes.begin(), plan.passes.end(),
+                      [&](const PlannedPass& p) { return p.kind == kind && p.target == target; }));
 }
 
 float largestDifference(const Image& a, const Image& b) {
@@ -122,6 +131,60 @@ TEST_P(MirrorOcclusion, TheImageNeverDependsOnWhatEarlierFramesSaw) {
     EXPECT_EQ(lastReport().occlusionWaits, 1);
     EXPECT_TRUE(ranMirrorPass(lastReport()));
     EXPECT_EQ(largestDifference(image, openImage), 0.0f);
+}
+
+// Running a frame never edits its plan: a mirror found hidden while drawing keeps its planned passes in
+// the report's plan, exactly as the planner made them; what execution found is the report's own (the
+// passes that ran, the mask's outcome, the skip).
+TEST_P(MirrorOcclusion, TheReportKeepsThePlanAsPlannedWhenAMirrorTurnsOutHidden) {
+    const FrameInput hidden = scene(GetParam(), true);
+    renderImage(hidden, kWidth, kHeight); // first sight: the frame waits for the test, finds it hidden
+    const FrameReport& report = lastReport();
+    ASSERT_EQ(report.occlusionWaits, 1);
+
+    // The plan still holds every pass planned for the mirror.
+    EXPECT_EQ(countPlanned(report.plan, PassKind::MirrorMask, "Mirror"), 1u);
+    EXPECT_EQ(countPlanned(report.plan, PassKind::Mirror, "Mirror"), 1u);
+    EXPECT_EQ(countPlanned(report.plan, PassKind::MirrorSurface, "Mirror"), 1u);
+    EXPECT_FALSE(skippedAsOccluded(report.plan.skipped)) << "execution's finding written into the plan";
+    for (const PlannedPass& p : report.plan.passes)
+        EXPECT_EQ(p.reason.find("occlusion test"), std::string::npos)
+            << "an outcome in the plan: " << p.reason;
+
+    // Only the mask ran for it, and says what it waited for.
+    EXPECT_EQ(report.countRan(PassKind::MirrorMask, "Mirror"), 1u);
+    EXPECT_EQ(report.countRan(PassKind::Mirror, "Mirror"), 0u);
+    EXPECT_EQ(report.countRan(PassKind::MirrorSurface, "Mirror"), 0u);
+    EXPECT_EQ(report.countRan(PassKind::Main), 1u);
+    for (const PassRun& run : report.ran) {
+        if (report.planned(run).kind == PassKind::MirrorMask) {
+            EXPECT_EQ(report.reason(run), report.planned(run).reason + "; waited for its occlusion test");
+        }
+    }
+    bool said = false;
+    std::string skips;
+    for (const SkippedEffect& skip : report.skipped) {
+        said |= skip.target == "Mirror" && skip.reason.rfind("no reflection: fully occluded", 0) == 0;
+        skips += skip.target + ": " + skip.reason + "\n";
+    }
+    EXPECT_TRUE(said) << skips;
+
+    // The plan is the planner's, pass for pass: the same input plans the same frame.
+    const FramePlan planned = planFrame(hidden, PlannerState{}, PlanViewport{kWidth, kHeight});
+    ASSERT_EQ(report.plan.passes.size(), planned.passes.size());
+    for (std::size_t i = 0; i < planned.passes.size(); ++i) {
+        SCOPED_TRACE("pass " + std::to_string(i));
+        EXPECT_EQ(report.plan.passes[i].kind, planned.passes[i].kind);
+        EXPECT_EQ(report.plan.passes[i].target, planned.passes[i].target);
+        EXPECT_EQ(report.plan.passes[i].reason, planned.passes[i].reason);
+        EXPECT_EQ(report.plan.passes[i].view, planned.passes[i].view);
+    }
+    ASSERT_EQ(report.plan.skipped.size(), planned.skipped.size());
+    for (std::size_t i = 0; i < planned.skipped.size(); ++i) {
+        EXPECT_EQ(report.plan.skipped[i].target, planned.skipped[i].target);
+        EXPECT_EQ(report.plan.skipped[i].reason, planned.skipped[i].reason);
+    }
+    EXPECT_EQ(report.plan.views.size(), planned.views.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, MirrorOcclusion,

@@ -217,7 +217,7 @@ TEST_P(Mirrors, TheBackOfAMirrorReflectsNothing) {
             ASSERT_FALSE(isRed(image.at(x, y))) << x << "," << y;
     EXPECT_TRUE(lastReport().plan.views.empty());
     bool reason = false;
-    for (const auto& s : lastReport().plan.skipped)
+    for (const auto& s : lastReport().skipped)
         reason |= s.target == "Mirror" && s.reason.find("behind the mirror") != std::string::npos;
     EXPECT_TRUE(reason);
     // The mirror's back shows its own material.

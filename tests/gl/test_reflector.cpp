@@ -147,10 +147,7 @@ TEST_P(ReflectorMaps, BallShowsTheWallItsReflectionPointsAt) {
     const FrameInput input = ballInRoom(GetParam().map, GetParam().fill);
     const Image image = renderImage(input, kWidth, kHeight);
     ASSERT_EQ(image.width, kWidth);
-    bool ranEnvmap = false;
-    for (const auto& p : lastReport().plan.passes)
-        ranEnvmap = ranEnvmap || p.kind == PassKind::Envmap;
-    EXPECT_TRUE(ranEnvmap);
+    EXPECT_EQ(lastReport().countRan(PassKind::Envmap), 1u);
     const Check check = checkReflections(image, input);
     EXPECT_GT(check.checked, 500);
     // Every wall, the one behind the camera included, is seen somewhere in the ball: all checked.
@@ -172,19 +169,14 @@ class ReflectorFrames : public GlTest {};
 TEST_F(ReflectorFrames, StaticSceneRendersItsEnvironmentOnce) {
     FrameInput input = ballInRoom(ReflectorMap::DualParaboloid, ReflectorFill::Resampled);
     const Image first = renderImage(input, 64, 64);
-    auto countEnvmap = [](const FrameReport& report) {
-        int n = 0;
-        for (const auto& p : report.plan.passes)
-            n += p.kind == PassKind::Envmap ? 1 : 0;
-        return n;
-    };
+    auto countEnvmap = [](const FrameReport& report) { return int(report.countRan(PassKind::Envmap)); };
     EXPECT_EQ(countEnvmap(lastReport()), 1);
     // The camera moves, the scene does not: the second frame spends nothing on the environment.
     input.camera.position = {0.5, 0.3, 3.0};
     const Image second = renderImage(input, 64, 64);
     EXPECT_EQ(countEnvmap(lastReport()), 0);
     bool explained = false;
-    for (const auto& s : lastReport().plan.skipped)
+    for (const auto& s : lastReport().skipped)
         explained = explained || (s.target == "Ball" && s.reason.find("reused") != std::string::npos);
     EXPECT_TRUE(explained);
     // ... and still shows the map: the ball's centre pixel reflects a wall, not black.
@@ -236,9 +228,9 @@ TEST_F(ReflectorFrames, TogglingAMirrorsFresnelRedrawsAnOnChangeMap) {
     mirror.reflectivity = 0.3;
     input.mirrors.push_back(mirror);
     auto envmapReason = [](const FrameReport& report) -> std::string {
-        for (const auto& p : report.plan.passes)
-            if (p.kind == PassKind::Envmap)
-                return p.reason;
+        for (const PassRun& run : report.ran)
+            if (report.planned(run).kind == PassKind::Envmap)
+                return report.reason(run);
         return {};
     };
     renderImage(input, 64, 64);
@@ -296,10 +288,8 @@ TEST_P(ReflectorMirrorDepth, MirrorsInTheMapReflectToTheReflectorsBudget) {
     auto centre = [&](int depth) {
         input.reflector->mirrorDepth = depth;
         const glm::dvec3 c(renderImage(input, 64, 64).at(32, 32));
-        bool ranEnvmap = false;
-        for (const auto& p : lastReport().plan.passes)
-            ranEnvmap = ranEnvmap || p.kind == PassKind::Envmap;
-        EXPECT_TRUE(ranEnvmap) << "depth " << depth << ": a new mirror depth must render the map again";
+        EXPECT_EQ(lastReport().countRan(PassKind::Envmap), 1u)
+            << "depth " << depth << ": a new mirror depth must render the map again";
         return c;
     };
     const glm::dvec3 expected[] = {{0.5, 0.5, 0.5}, {1.0, 0.5, 0.0}, {1.0, 1.0, 1.0}, {1.0, 1.0, 1.0}};

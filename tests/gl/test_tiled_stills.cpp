@@ -63,8 +63,7 @@ Difference compare(const Image& a, const Image& b, double threshold) {
 }
 
 bool ran(const FrameReport& report, PassKind kind) {
-    return std::any_of(report.plan.passes.begin(), report.plan.passes.end(),
-                       [kind](const PlannedPass& p) { return p.kind == kind; });
+    return report.countRan(kind) > 0;
 }
 
 TEST_F(GlTest, StillInSmallTilesMatchesTheUntiledStill) {

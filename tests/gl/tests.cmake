@@ -2,6 +2,7 @@ speculum_add_test(test_gl_shadows TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_shadows.cpp ${CMAKE_CURRENT_LIST_DIR}/test_frame.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_mirrors.cpp ${CMAKE_CURRENT_LIST_DIR}/test_lighting_variants.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_mirror_occlusion.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_resolution_scale.cpp
     LIBS speculum_render speculum_document PkgConfig::OIIO)
 speculum_add_test(test_gl_reflector TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_reflector.cpp ${CMAKE_CURRENT_LIST_DIR}/test_frame_report.cpp
@@ -34,3 +35,8 @@ speculum_add_test(test_gl_gpu_allocation_slow TIER gl LABELS slow
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_gpu_allocation.cpp
     LIBS speculum_render)
 target_compile_definitions(test_gl_gpu_allocation_slow PRIVATE SPECULUM_SLOW_ALLOCATION_TESTS=1)
+# The camera's colour buffer: 8-bit sRGB where nothing needs half float, the same image as the half-float
+# buffer and its composite (demos and scenes made to tell them apart), float stills linear.
+speculum_add_test(test_gl_camera_buffer TIER gl
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_camera_buffer.cpp
+    LIBS speculum_render speculum_document)

@@ -6,13 +6,24 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QImage>
+#include <QTemporaryDir>
 #include <QThread>
 #include <algorithm>
 #include <cmath>
 #include <functional>
 
 namespace speculum::ui::test {
+
+// Points this process's settings, recovery and cache folders (and those of its children) into `home`.
+// Call before the QApplication exists. ctest runs the GUI test programs side by side; with one shared
+// settings file, one program's write (an import option, a recent file) would land in another's run.
+inline void useTemporaryUserFolders(const QTemporaryDir& home) {
+    for (const char* variable : {"XDG_DATA_HOME", "XDG_CONFIG_HOME", "XDG_CACHE_HOME", "XDG_STATE_HOME"}) {
+        qputenv(variable, QFile::encodeName(home.filePath(QString::fromLatin1(variable))));
+    }
+}
 
 inline bool waitFor(const std::function<bool()>& condition, int timeoutMs = 60000) {
     QElapsedTimer timer;

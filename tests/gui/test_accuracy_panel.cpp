@@ -4,6 +4,8 @@
 // document that configuration's settings in one undo step that undo takes back. Run sweep runs the bench's
 // sweep in-process: points fill the chart while it runs, the report's findings show when it is done,
 // Cancel stops it within about a second and leaves the chart as it was, and the document never changes.
+// The compared images show side by side and in a flip view; chart points label themselves on hover; clear()
+// (New, Open) forgets it all.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
@@ -12,9 +14,12 @@
 #include <QAction>
 #include <QChart>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
@@ -338,6 +343,178 @@ TEST_F(AccuracyPanelTest, CancelStopsTheSweepAndLeavesEverythingAsItWas) {
     EXPECT_TRUE(panel().findingsText().isEmpty());
     EXPECT_EQ(m_window->undoStack().count(), 0);
     EXPECT_EQ(m_window->scene().toData(), before);
+}
+
+// What the numbers measured is on screen: the exact image, the raster image and the error map side by
+// side, and a flip view in which the Flip button (or a click on the image) alternates exact and raster.
+TEST_F(AccuracyPanelTest, TheImagesShowSideBySideAndTheFlipViewAlternates) {
+    EXPECT_TRUE(panel().explanationText().contains(QStringLiteral("above 40 dB")))
+        << panel().explanationText().toStdString();
+    EXPECT_TRUE(panel().explanationText().contains(QStringLiteral("below 30 dB")));
+    panel().setPreviewWidth(120);
+    panel().compareWithExact();
+    ASSERT_TRUE(waitFor([&] { return !panel().comparing(); }, 180000));
+    ASSERT_TRUE(panel().lastComparison().has_value()) << text("accuracyStatus").toStdString();
+    const ComparisonResult& r = *panel().lastComparison();
+    ASSERT_EQ(r.reference.size(), QSize(r.width, r.height));
+    ASSERT_EQ(r.raster.size(), QSize(r.width, r.height));
+    EXPECT_NE(r.reference, r.raster) << "the raster frame is an approximation: some pixel differs";
+
+    auto tile = [&](const char* name) { return panel().findChild<ImageTile*>(QString::fromLatin1(name)); };
+    ImageTile* reference = tile("accuracyReference");
+    ImageTile* raster = tile("accuracyRaster");
+    ImageTile* errorMap = tile("accuracyErrorMap");
+    ImageTile* flipView = tile("accuracyFlipView");
+    ASSERT_TRUE(reference && raster && errorMap && flipView);
+    EXPECT_EQ(reference->image(), r.reference);
+    EXPECT_EQ(raster->image(), r.raster);
+    EXPECT_EQ(errorMap->image(), r.errorMap);
+    for (ImageTile* t : {reference, raster, errorMap}) {
+        EXPECT_TRUE(t->isVisible()) << t->objectName().toStdString();
+        EXPECT_GT(t->width(), 40) << t->objectName().toStdString();
+        // Three across the dock, none cut off at its right edge.
+        EXPECT_LE(t->mapTo(m_dock, QPoint(t->width(), 0)).x(), m_dock->width())
+            << t->objectName().toStdString();
+    }
+    EXPECT_FALSE(flipView->isVisible());
+    // The three side by side: left to right, on one row.
+    EXPECT_LT(reference->mapTo(&panel(), QPoint()).x(), raster->mapTo(&panel(), QPoint()).x());
+    EXPECT_LT(raster->mapTo(&panel(), QPoint()).x(), errorMap->mapTo(&panel(), QPoint()).x());
+    EXPECT_EQ(reference->mapTo(&panel(), QPoint()).y(), errorMap->mapTo(&panel(), QPoint()).y());
+    const QString shots = qEnvironmentVariable("SPECULUM_SHOTS_DIR");
+    if (!shots.isEmpty()) {
+        QApplication::processEvents();
+        EXPECT_TRUE(m_dock->grab().save(shots + QStringLiteral("/accuracy-side-by-side.png")));
+    }
+
+    // The flip view: one image, the exact one first.
+    auto* mode = panel().findChild<QComboBox*>(QStringLiteral("accuracyImageMode"));
+    ASSERT_NE(mode, nullptr);
+    mode->setCurrentIndex(1);
+    QApplication::processEvents();
+    EXPECT_TRUE(flipView->isVisible());
+    EXPECT_FALSE(reference->isVisible());
+    EXPECT_GE(flipView->height(), std::min(r.height, 200)) << "larger than a tile";
+    EXPECT_LE(flipView->mapTo(m_dock, QPoint(flipView->width(), 0)).x(), m_dock->width());
+    auto* flip = panel().findChild<QPushButton*>(QStringLiteral("accuracyFlipButton"));
+    ASSERT_NE(flip, nullptr);
+    ASSERT_TRUE(flip->isVisible());
+    EXPECT_TRUE(panel().flipShowsReference());
+    EXPECT_EQ(flipView->image(), r.reference);
+    EXPECT_TRUE(text("accuracyFlipCaption").startsWith(QStringLiteral("Exact")))
+        << text("accuracyFlipCaption").toStdString();
+    if (!shots.isEmpty()) {
+        QApplication::processEvents();
+        EXPECT_TRUE(m_dock->grab().save(shots + QStringLiteral("/accuracy-flip-exact.png")));
+    }
+    QTest::mouseClick(flip, Qt::LeftButton);
+    EXPECT_FALSE(panel().flipShowsReference());
+    EXPECT_EQ(flipView->image(), r.raster);
+    EXPECT_EQ(flipView->pixmap().toImage().convertToFormat(QImage::Format_RGB32),
+              r.raster.convertToFormat(QImage::Format_RGB32));
+    EXPECT_TRUE(text("accuracyFlipCaption").startsWith(QStringLiteral("Raster")));
+    if (!shots.isEmpty()) {
+        QApplication::processEvents();
+        EXPECT_TRUE(m_dock->grab().save(shots + QStringLiteral("/accuracy-flip-raster.png")));
+    }
+    // A click on the image flips back.
+    QTest::mouseClick(flipView, Qt::LeftButton, {}, flipView->rect().center());
+    EXPECT_TRUE(panel().flipShowsReference());
+    EXPECT_EQ(flipView->image(), r.reference);
+    // Nothing of this touched the document.
+    EXPECT_EQ(m_window->undoStack().count(), 0);
+    panel().setImageMode(AccuracyPanel::ImageMode::SideBySide);
+    EXPECT_TRUE(reference->isVisible());
+    EXPECT_FALSE(flip->isVisible());
+}
+
+// clear() (what New and Open do) empties the images, the numbers and the chart.
+TEST_F(AccuracyPanelTest, ClearEmptiesTheImagesTheNumbersAndTheChart) {
+    panel().setPreviewWidth(64);
+    panel().compareWithExact();
+    ASSERT_TRUE(waitFor([&] { return !panel().comparing(); }, 180000));
+    ASSERT_TRUE(panel().lastComparison().has_value()) << text("accuracyStatus").toStdString();
+    QTemporaryDir dir;
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
+    auto* overlay = panel().findChild<QCheckBox*>(QStringLiteral("accuracyOverlay"));
+    overlay->setChecked(true);
+    const QStringList tiles{QStringLiteral("accuracyReference"), QStringLiteral("accuracyRaster"),
+                            QStringLiteral("accuracyErrorMap"), QStringLiteral("accuracyFlipView")};
+    for (const QString& name : tiles) {
+        EXPECT_FALSE(panel().findChild<ImageTile*>(name)->image().isNull()) << name.toStdString();
+    }
+
+    panel().clear();
+    EXPECT_FALSE(panel().lastComparison().has_value());
+    for (const QString& name : tiles) {
+        auto* tile = panel().findChild<ImageTile*>(name);
+        EXPECT_TRUE(tile->image().isNull()) << name.toStdString();
+        EXPECT_TRUE(tile->pixmap().isNull()) << name.toStdString();
+    }
+    EXPECT_FALSE(panel().findChild<QWidget*>(QStringLiteral("accuracyImages"))->isVisible());
+    for (const char* name : {"accuracyPsnr", "accuracyRmse", "accuracyPsnrReflector", "accuracyTraceMs"}) {
+        EXPECT_EQ(text(name), QStringLiteral("—")) << name;
+    }
+    EXPECT_EQ(panel().chart().pointCount(), 0);
+    EXPECT_FALSE(overlay->isChecked());
+    EXPECT_FALSE(overlay->isEnabled());
+    EXPECT_FALSE(m_window->viewport().findChild<QWidget*>(QStringLiteral("errorMapOverlay"))->isVisible());
+
+    // Opening a project clears it too (the main window's File ▸ Open path).
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
+    ASSERT_GT(panel().chart().pointCount(), 0);
+    ASSERT_TRUE(m_window->openProjectFile(kChrome).ok());
+    QApplication::processEvents();
+    EXPECT_EQ(panel().chart().pointCount(), 0);
+}
+
+// Resting the pointer on a chart point labels it with its configuration, its settings, its frame time
+// and its PSNR; moving off takes the label away.
+TEST_F(AccuracyPanelTest, AChartPointShowsItsSettingsTimeAndPsnrOnHover) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
+    SweepChart& chart = panel().chart();
+    QScatterSeries* envmap = nullptr;
+    for (QAbstractSeries* s : chart.chart()->series()) {
+        if (s->name() == QStringLiteral("envmap")) {
+            envmap = qobject_cast<QScatterSeries*>(s);
+        }
+    }
+    ASSERT_NE(envmap, nullptr);
+    ASSERT_TRUE(waitForFrames(*m_window, 1));
+    QApplication::processEvents();
+    EXPECT_TRUE(chart.hoverText().isEmpty());
+    const QPoint at = chart.mapFromScene(chart.chart()->mapToPosition(QPointF(2.0, 28.0), envmap));
+    QTest::mouseMove(chart.viewport(), at + QPoint(20, 20));
+    QTest::mouseMove(chart.viewport(), at);
+    ASSERT_TRUE(waitFor([&] { return !chart.hoverText().isEmpty(); }, 3000))
+        << "no label at " << at.x() << "," << at.y();
+    const QString label = chart.hoverText();
+    EXPECT_TRUE(label.startsWith(QStringLiteral("envmap 64"))) << label.toStdString();
+    EXPECT_TRUE(label.contains(QStringLiteral("2.00 ms"))) << label.toStdString();
+    EXPECT_TRUE(label.contains(QStringLiteral("PSNR 28.00 dB"))) << label.toStdString();
+    EXPECT_TRUE(label.contains(QStringLiteral("map tennis-ball"))) << label.toStdString();
+    EXPECT_TRUE(label.contains(QStringLiteral("resolution 64"))) << label.toStdString();
+    EXPECT_TRUE(label.contains(QStringLiteral("fill direct"))) << label.toStdString();
+    // Drawn in the chart, beside the point.
+    bool shown = false;
+    for (QGraphicsItem* item : chart.scene()->items()) {
+        if (auto* textItem = dynamic_cast<QGraphicsTextItem*>(item)) {
+            shown |= textItem->isVisible() && textItem->toPlainText() == label;
+        }
+    }
+    EXPECT_TRUE(shown);
+    EXPECT_EQ(chart.pointLabel(1), label) << "the label of results record 1";
+    const QString shots = qEnvironmentVariable("SPECULUM_SHOTS_DIR");
+    if (!shots.isEmpty()) {
+        QApplication::processEvents();
+        EXPECT_TRUE(m_dock->grab().save(shots + QStringLiteral("/accuracy-chart-hover.png")));
+    }
+    // Off the point, no label.
+    QTest::mouseMove(chart.viewport(),
+                     chart.mapFromScene(chart.chart()->plotArea().topLeft()) + QPoint(3, 3));
+    ASSERT_TRUE(waitFor([&] { return chart.hoverText().isEmpty(); }, 3000));
+    EXPECT_EQ(chart.pointLabel(99), QString());
 }
 
 // Pictures of the panel during and after a quick sweep of the chrome demo, when SPECULUM_SHOTS_DIR names

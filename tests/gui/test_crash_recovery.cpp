@@ -215,9 +215,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "cannot create a temporary folder\n");
         return 1;
     }
-    for (const char* variable : {"XDG_DATA_HOME", "XDG_CONFIG_HOME", "XDG_CACHE_HOME", "XDG_STATE_HOME"}) {
-        qputenv(variable, QFile::encodeName(home.filePath(QString::fromLatin1(variable))));
-    }
+    useTemporaryUserFolders(home);
     ui::installDefaultSurfaceFormat();
     QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
     QApplication app(argc, argv);

@@ -1,8 +1,10 @@
 // What the editor shows and writes: an inspector edit reaches the viewport's pixels, the render passes
-// panel lists the live plan, Export Still writes the same pixels as `speculum render` for the same file
-// and settings (and a cancel writes nothing), and pictures of the window with each demo scene.
+// panel lists the live plan, Export Still writes the same pixels as `speculum render` (and, with the exact
+// reference, as `speculum render --reference`) for the same file and settings (and a cancel writes
+// nothing), the dialog states its time, and pictures of the window with each demo scene.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Scene.hpp"
+#include "editor/ui/ExportStillDialog.hpp"
 #include "editor/ui/Gizmo.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/PropertyEditors.hpp"
@@ -10,6 +12,8 @@
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -120,22 +124,26 @@ TEST_F(EditorOutput, RenderPassesPanelShowsTheLivePlan) {
     QObject::disconnect(connection);
     ASSERT_FALSE(reports.empty());
     const render::FrameReport report = reports.front();
-    ASSERT_FALSE(report.plan.passes.empty());
+    ASSERT_FALSE(report.ran.empty());
     m_window->passesPanel().showReportNow(report);
     QTreeWidget& tree = m_window->passesPanel().tree();
     ASSERT_EQ(tree.topLevelItemCount(), 2);
+    // The passes that ran, in order, each with the plan's reason and what running it found.
     QTreeWidgetItem* passes = tree.topLevelItem(0);
-    ASSERT_EQ(passes->childCount(), int(report.plan.passes.size()));
+    ASSERT_EQ(passes->childCount(), int(report.ran.size()));
     bool sawShadow = false, sawMain = false;
     for (int i = 0; i < passes->childCount(); ++i) {
         const QTreeWidgetItem* item = passes->child(i);
+        const render::PassRun& run = report.ran[std::size_t(i)];
         EXPECT_FALSE(item->text(3).isEmpty()) << "every pass says why it ran";
+        EXPECT_EQ(item->text(3).toStdString(), report.reason(run));
+        EXPECT_EQ(item->text(1).toStdString(), report.planned(run).target);
         sawShadow |= item->text(0) == QStringLiteral("shadow") && item->text(1) == QStringLiteral("Light");
         sawMain |= item->text(0) == QStringLiteral("main");
     }
     EXPECT_TRUE(sawShadow);
     EXPECT_TRUE(sawMain);
-    EXPECT_EQ(tree.topLevelItem(1)->childCount(), int(report.plan.skipped.size()));
+    EXPECT_EQ(tree.topLevelItem(1)->childCount(), int(report.skipped.size()));
 
     // Turning the light's shadows off removes its shadow pass from the live plan.
     m_window->selection().selectNode(*nodeNamed("Light"));
@@ -201,10 +209,85 @@ TEST_F(EditorOutput, ExportStillMatchesTheCommandLine) {
     EXPECT_FALSE(QFile::exists(cancelled));
     // Bad settings are refused before any work.
     EXPECT_FALSE(m_window->exportStillFile(dir.filePath(QStringLiteral("still.bmp")), settings).ok());
-    settings.reference = true;
-    EXPECT_FALSE(m_window->exportStillFile(dir.filePath(QStringLiteral("ref.png")), settings).ok());
     // The viewport still draws afterwards.
     EXPECT_TRUE(waitForFrames(*m_window));
+}
+
+// The exact reference from Export Still is `speculum render --reference`'s image: the same tracer on the
+// same scene, read by the editor's document instead of the CLI's loader.
+TEST_F(EditorOutput, ExactReferenceExportMatchesTheCommandLine) {
+    open(kTeapotProject);
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString editorPng = dir.filePath(QStringLiteral("editor-reference.png"));
+    const QString cliPng = dir.filePath(QStringLiteral("cli-reference.png"));
+    document::StillExportSettings settings;
+    settings.width = 48;
+    settings.height = 32;
+    settings.reference = true;
+    double last = -1.0;
+    std::string stage;
+    auto exported =
+        m_window->exportStillFile(editorPng, settings, [&](double fraction, const std::string& s) {
+            last = fraction;
+            stage = s;
+            return true;
+        });
+    ASSERT_TRUE(exported.ok()) << exported.error();
+    EXPECT_EQ(last, 1.0) << "progress up to the end";
+    EXPECT_NE(stage.find("reference"), std::string::npos) << stage;
+
+    QProcess cli;
+    cli.start(QStringLiteral(SPECULUM_BINARY),
+              {QStringLiteral("render"), kTeapotProject, QStringLiteral("-o"), cliPng,
+               QStringLiteral("--size"), QStringLiteral("48x32"), QStringLiteral("--reference")});
+    ASSERT_TRUE(cli.waitForFinished(120000));
+    ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+
+    const QImage a(editorPng), b(cliPng);
+    ASSERT_FALSE(a.isNull());
+    ASSERT_FALSE(b.isNull());
+    ASSERT_EQ(a.size(), QSize(48, 32));
+    ASSERT_EQ(b.size(), QSize(48, 32));
+    const ImageDifference d = compareImages(a, b);
+    // The tracer is deterministic; what may differ is the last bit of a value the two loaders round
+    // differently, so at most one step of 8 bits anywhere.
+    EXPECT_LE(d.maximum, 1) << "mean difference " << d.mean;
+    EXPECT_LT(d.mean, 0.05);
+
+    // Cancelled, it writes nothing.
+    const QString cancelled = dir.filePath(QStringLiteral("cancelled-reference.png"));
+    auto stopped =
+        m_window->exportStillFile(cancelled, settings, [](double, const std::string&) { return false; });
+    ASSERT_FALSE(stopped.ok());
+    EXPECT_FALSE(QFile::exists(cancelled));
+    EXPECT_TRUE(waitForFrames(*m_window));
+}
+
+// Export Still offers the exact tracer, and its time is the scene's start unless the user picks the time
+// slider's; the dialog says which.
+TEST_F(EditorOutput, ExportStillDialogOffersTheTracerAndStatesItsTime) {
+    ui::ExportStillDialog dialog(QStringLiteral("/tmp/still.png"), 1.5, m_window.get());
+    auto* reference = dialog.findChild<QCheckBox*>(QStringLiteral("stillReference"));
+    ASSERT_NE(reference, nullptr);
+    EXPECT_TRUE(reference->isEnabled());
+    reference->setChecked(true);
+    EXPECT_TRUE(dialog.settings().reference);
+
+    EXPECT_EQ(dialog.settings().time, 0.0);
+    EXPECT_TRUE(dialog.timeNote().contains(QStringLiteral("t = 0.000 s, its start")))
+        << dialog.timeNote().toStdString();
+    EXPECT_TRUE(dialog.timeNote().contains(QStringLiteral("1.500"))) << "names the slider's time too";
+    auto* source = dialog.findChild<QComboBox*>(QStringLiteral("stillTimeSource"));
+    ASSERT_NE(source, nullptr);
+    emit source->activated(1); // the user picks "Time slider"
+    EXPECT_EQ(dialog.settings().time, 1.5);
+    EXPECT_EQ(source->currentIndex(), 1);
+    EXPECT_TRUE(dialog.timeNote().contains(QStringLiteral("t = 1.500 s, the time slider's time")))
+        << dialog.timeNote().toStdString();
+    dialog.findChild<QDoubleSpinBox*>(QStringLiteral("stillTime"))->setValue(2.25);
+    EXPECT_EQ(source->currentIndex(), 2);
+    EXPECT_TRUE(dialog.timeNote().contains(QStringLiteral("2.250"))) << dialog.timeNote().toStdString();
 }
 
 TEST_F(EditorOutput, ScreenshotsOfEachDemoScene) {

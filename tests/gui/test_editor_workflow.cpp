@@ -5,6 +5,7 @@
 // recovery.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Commands.hpp"
+#include "editor/document/NewScene.hpp"
 #include "editor/document/PickScene.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Scene.hpp"
@@ -161,6 +162,12 @@ using Layout = std::vector<std::tuple<NodeId, NodeId, int>>;
 TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndReopen) {
     m_window->newProject();
     QUndoStack& undo = m_window->undoStack();
+    // A new document holds its floor and sun (document::newSceneData); what is built comes after them.
+    const document::SceneData fresh = m_window->scene().toData();
+    EXPECT_TRUE(fresh == document::newSceneData());
+    ASSERT_EQ(fresh.nodes.size(), 2u);
+    EXPECT_EQ(fresh.nodes[0].data.name, "Floor");
+    EXPECT_EQ(fresh.nodes[1].data.name, "Sun");
 
     trigger("addTeapot");
     ASSERT_TRUE(selected());
@@ -194,46 +201,56 @@ TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndR
 
     // Scene tree shows them all (camera row first), with the kinds' names.
     ui::SceneTreeModel& tree = m_window->sceneTreeModel();
-    ASSERT_EQ(tree.rowCount(), 6);
-    EXPECT_EQ(tree.index(1, 0).data().toString(), QStringLiteral("Teapot"));
-    EXPECT_EQ(tree.index(5, 0).data().toString(), QStringLiteral("Point light"));
+    ASSERT_EQ(tree.rowCount(), 8);
+    EXPECT_EQ(tree.index(1, 0).data().toString(), QStringLiteral("Floor"));
+    EXPECT_EQ(tree.index(3, 0).data().toString(), QStringLiteral("Teapot"));
+    EXPECT_EQ(tree.index(7, 0).data().toString(), QStringLiteral("Point light"));
 
     const document::SceneData built = m_window->scene().toData();
-    ASSERT_EQ(built.nodes.size(), 5u);
-    EXPECT_EQ(built.nodes[1].data.mirror->size, glm::dvec2(4.0, 4.0));
-    EXPECT_DOUBLE_EQ(built.nodes[1].data.mirror->reflectivity, 0.6);
-    EXPECT_DOUBLE_EQ(built.nodes[2].data.transform.rotate.x, 90.0);
-    EXPECT_TRUE(built.nodes[3].data.reflector);
-    EXPECT_TRUE(built.nodes[4].data.light);
+    ASSERT_EQ(built.nodes.size(), 7u);
+    EXPECT_EQ(built.nodes[3].data.mirror->size, glm::dvec2(4.0, 4.0));
+    EXPECT_DOUBLE_EQ(built.nodes[3].data.mirror->reflectivity, 0.6);
+    EXPECT_DOUBLE_EQ(built.nodes[4].data.transform.rotate.x, 90.0);
+    EXPECT_TRUE(built.nodes[5].data.reflector);
+    EXPECT_TRUE(built.nodes[6].data.light);
     EXPECT_TRUE(m_window->isWindowModified());
 
-    // Undo everything: an empty scene, an empty tree; redo everything: the same scene.
+    // Undo everything: the new scene again; redo everything: the same scene.
     const int steps = undo.count();
     EXPECT_GE(steps, 10);
     while (undo.canUndo()) {
         undo.undo();
     }
-    EXPECT_TRUE(m_window->scene().topLevelNodes().empty());
-    EXPECT_EQ(tree.rowCount(), 1);
+    EXPECT_TRUE(m_window->scene().toData() == fresh);
+    EXPECT_EQ(tree.rowCount(), 3);
     EXPECT_FALSE(m_window->isWindowModified());
     while (undo.canRedo()) {
         undo.redo();
     }
     EXPECT_TRUE(m_window->scene().toData() == built);
-    EXPECT_EQ(tree.rowCount(), 6);
+    EXPECT_EQ(tree.rowCount(), 8);
     ASSERT_TRUE(waitForFrames(*m_window));
 
-    // Save, start afresh, reopen: the same scene.
+    // Save, start afresh, reopen: the same scene, seen from where the editor looked when it was saved
+    // (the file's editorView), while the scene camera stays what `speculum render` draws.
+    m_window->viewport().placeView({3.0, 4.0, 5.0}, {0.0, 0.5, -3.0});
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("built.speculum.json"));
     ASSERT_TRUE(m_window->saveProjectFile(path).ok());
     EXPECT_FALSE(m_window->isWindowModified());
     EXPECT_EQ(m_window->recentFiles().value(0), path);
+    document::SceneData saved = built;
+    saved.editorView = document::EditorView{{3.0, 4.0, 5.0}, {0.0, 0.5, -3.0}, {}};
     m_window->newProject();
-    EXPECT_TRUE(m_window->scene().topLevelNodes().empty());
+    EXPECT_TRUE(m_window->scene().toData() == fresh);
+    EXPECT_NE(m_window->viewport().viewCamera().position, glm::dvec3(3.0, 4.0, 5.0));
     ASSERT_TRUE(m_window->openProjectFile(path).ok());
-    EXPECT_TRUE(m_window->scene().toData() == built);
+    EXPECT_TRUE(m_window->scene().toData() == saved);
+    EXPECT_TRUE(m_window->scene().camera() == built.camera) << "the scene camera is not the editor view";
+    const auto [position, target] = m_window->viewport().viewPositionTarget();
+    EXPECT_LT(glm::length(position - glm::dvec3(3.0, 4.0, 5.0)), 1e-9) << "reopened where it was saved";
+    EXPECT_LT(glm::length(target - glm::dvec3(0.0, 0.5, -3.0)), 1e-9);
     EXPECT_EQ(m_window->windowHandle()->title(), QStringLiteral("built.speculum.json — speculum"));
 }
 
@@ -717,12 +734,12 @@ TEST_F(EditorWorkflow, ImportsDroppedModelsAndOffersRecoveredWork) {
     QCoreApplication::sendEvent(m_window.get(), &drop);
     EXPECT_TRUE(m_window->isImporting()) << "the file is read on a worker";
     ASSERT_TRUE(waitFor([&] { return !m_window->isImporting(); }));
-    ASSERT_EQ(m_window->scene().topLevelNodes().size(), 1u);
-    const document::Node& root = *m_window->scene().topLevelNodes().front();
+    ASSERT_EQ(m_window->scene().topLevelNodes().size(), 3u) << "the floor, the sun and the model";
+    const document::Node& root = *m_window->scene().topLevelNodes().back();
     EXPECT_EQ(root.data().name, "box");
     std::vector<std::string> files; // the parts under the model's root draw the dropped file
     m_window->scene().forEachNode([&](const document::Node& n) {
-        if (n.data().mesh) {
+        if (n.data().mesh && m_window->scene().isAncestor(root.id(), n.id())) {
             files.push_back(n.data().mesh->file);
         }
     });

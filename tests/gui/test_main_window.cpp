@@ -2,6 +2,7 @@
 // where the scene's camera puts them, edits mark the title as modified and undo clears it, and a broken
 // file leaves the open document alone.
 #include "editor/document/Commands.hpp"
+#include "editor/document/NewScene.hpp"
 #include "editor/document/Scene.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Viewport.hpp"
@@ -313,7 +314,10 @@ TEST_F(MainWindowTest, NewAndSaveAs) {
     EXPECT_EQ(m_window->windowHandle()->title(), QStringLiteral("copy.speculum.json — speculum"));
 
     m_window->newProject();
-    EXPECT_TRUE(m_window->scene().topLevelNodes().empty());
+    EXPECT_TRUE(m_window->scene().toData() == speculum::document::newSceneData())
+        << "a floor, a sun, a raised camera";
+    EXPECT_FALSE(m_window->isWindowModified());
+    EXPECT_EQ(m_window->undoStack().count(), 0);
     EXPECT_EQ(m_window->windowHandle()->title(), QStringLiteral("Untitled — speculum"));
     ASSERT_TRUE(waitForFrames(*m_window));
 

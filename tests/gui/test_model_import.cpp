@@ -50,6 +50,14 @@ protected:
             waitFor([&] { return m_window->windowHandle() && m_window->windowHandle()->isExposed(); }));
         m_window->clock().setPlaying(false);
         m_window->setFitImportsToUnitBox(false);
+        // A new document already holds its floor and sun; imports come after them.
+        m_startNodes = m_window->scene().topLevelNodes().size();
+    }
+
+    // How many top-level nodes the imports added, and the i-th of them.
+    std::size_t importedCount() const { return m_window->scene().topLevelNodes().size() - m_startNodes; }
+    const document::Node& imported(std::size_t i) const {
+        return *m_window->scene().topLevelNodes().at(m_startNodes + i);
     }
 
     void TearDown() override {
@@ -85,6 +93,7 @@ protected:
     }
 
     std::unique_ptr<MainWindow> m_window;
+    std::size_t m_startNodes = 0;
 };
 
 // The names of the file's nodes that draw meshes, and how many mesh references they hold, by Assimp itself.
@@ -119,8 +128,8 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
     auto status = m_window->importModelFile(kEngine);
     ASSERT_TRUE(status.ok()) << status.error();
     EXPECT_EQ(undo.count(), steps + 1) << "the whole model is one undo step";
-    ASSERT_EQ(m_window->scene().topLevelNodes().size(), 1u);
-    const document::Node& root = *m_window->scene().topLevelNodes().front();
+    ASSERT_EQ(importedCount(), 1u);
+    const document::Node& root = imported(0);
     EXPECT_EQ(root.data().name, "2CylinderEngine");
     EXPECT_EQ(m_window->selection().node(), root.id()) << "the import is selected";
 
@@ -130,6 +139,9 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
     int parts = 0;
     std::set<std::tuple<float, float, float>> colours;
     m_window->scene().forEachNode([&](const document::Node& n) {
+        if (!m_window->scene().isAncestor(root.id(), n.id())) {
+            return; // the new scene's floor and sun
+        }
         names.insert(n.data().name);
         if (const auto& mesh = n.data().mesh) {
             ++parts;
@@ -153,7 +165,7 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
     auto model = document::importModelFile(kEngine.toStdString(), warnings);
     ASSERT_TRUE(model) << model.error();
     const glm::dvec3 fileSize = glm::dvec3(model->bounds.max) - glm::dvec3(model->bounds.min);
-    const render::math::Box placed = worldBox();
+    const render::math::Box placed = worldBox(root.id());
     ASSERT_FALSE(placed.empty());
     const glm::dvec3 size = placed.max - placed.min;
     EXPECT_NEAR(size.x, fileSize.x, 1e-3 * fileSize.x);
@@ -167,7 +179,7 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
     // Undo takes all of it away in one step; redo brings back the same nodes.
     const document::SceneData imported = m_window->scene().toData();
     undo.undo();
-    EXPECT_TRUE(m_window->scene().topLevelNodes().empty());
+    EXPECT_EQ(importedCount(), 0u);
     undo.redo();
     EXPECT_TRUE(m_window->scene().toData() == imported);
     ASSERT_TRUE(waitForFrames(*m_window));
@@ -180,10 +192,10 @@ TEST_F(ModelImportGui, SecondImportLandsBesideTheFirstAndFittingIsAnOption) {
     }
     ASSERT_TRUE(m_window->importModelFile(kDuck).ok());
     ASSERT_TRUE(m_window->importModelFile(kDuck).ok());
-    ASSERT_EQ(m_window->scene().topLevelNodes().size(), 2u);
-    const auto first = worldBox(m_window->scene().topLevelNodes()[0]->id());
-    const auto second = worldBox(m_window->scene().topLevelNodes()[1]->id());
-    EXPECT_EQ(m_window->scene().topLevelNodes()[1]->data().name, "duck 2");
+    ASSERT_EQ(importedCount(), 2u);
+    const auto first = worldBox(imported(0).id());
+    const auto second = worldBox(imported(1).id());
+    EXPECT_EQ(imported(1).data().name, "duck 2");
     EXPECT_GT(second.min.x, first.max.x) << "moved along +X past the first duck";
     EXPECT_NEAR(second.min.y, 0.0, 1e-6 * (second.max.y - second.min.y + 1.0));
     EXPECT_NEAR(second.center().z, first.center().z, 1e-6 * (first.max.z - first.min.z + 1.0));
@@ -202,7 +214,7 @@ TEST_F(ModelImportGui, SecondImportLandsBesideTheFirstAndFittingIsAnOption) {
     fit->setChecked(true);
     EXPECT_TRUE(m_window->fitImportsToUnitBox()) << "kept in the settings";
     ASSERT_TRUE(m_window->importModelFile(kDuck).ok());
-    const auto fitted = worldBox(m_window->scene().topLevelNodes()[2]->id());
+    const auto fitted = worldBox(imported(2).id());
     const glm::dvec3 s = fitted.max - fitted.min;
     EXPECT_NEAR(std::max({s.x, s.y, s.z}), 1.0, 1e-4);
     EXPECT_NEAR(s.x / s.y, realSize.x / realSize.y, 1e-4) << "scaled uniformly";
@@ -217,8 +229,8 @@ TEST_F(ModelImportGui, ReflectorSurfaceIsTheWholeFileOnTheGround) {
         GTEST_SKIP() << "assimp-testmodels not installed";
     }
     ASSERT_TRUE(m_window->importModelFile(kDuck, true).ok());
-    ASSERT_EQ(m_window->scene().topLevelNodes().size(), 1u);
-    const document::Node& node = *m_window->scene().topLevelNodes().front();
+    ASSERT_EQ(importedCount(), 1u);
+    const document::Node& node = imported(0);
     EXPECT_TRUE(node.data().reflector);
     ASSERT_TRUE(node.data().mesh);
     EXPECT_EQ(node.data().mesh->file, kDuck.toStdString());
@@ -226,7 +238,7 @@ TEST_F(ModelImportGui, ReflectorSurfaceIsTheWholeFileOnTheGround) {
     const auto box = worldBox(node.id());
     EXPECT_NEAR(box.min.y, 0.0, 1e-4);
     EXPECT_FALSE(m_window->importModelFile(kDuck, true).ok()) << "one reflector per scene";
-    EXPECT_EQ(m_window->scene().topLevelNodes().size(), 1u);
+    EXPECT_EQ(importedCount(), 1u);
 }
 
 TEST_F(ModelImportGui, MissingOrBrokenFilesLeaveTheDocumentUnmodified) {

@@ -38,3 +38,26 @@ speculum_add_test(test_hostile_files_gui TIER gui
 speculum_add_test(test_handle_cancel TIER gui
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_handle_cancel.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
     LIBS speculum_ui Qt6::Test)
+# issue 16: no frame is drawn while nothing changes; edits, time, navigation and playback draw (and stop).
+speculum_add_test(test_idle_redraw TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_idle_redraw.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)
+# issue 16: the timeline's time slider, and the clock starting over on Open and New.
+speculum_add_test(test_time_slider TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_time_slider.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)
+# issue 16 (items 2, 4, 6): the wheel over unfocused fields, tiny values, the parallax proxy, Export
+# Still's exact reference with cancel, and the Accuracy panel's explanation, hover labels and reset.
+speculum_add_test(test_inspector_input TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_inspector_input.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)
+# issue 16 (items 3 and 7, the viewport): adaptive resolution while navigating and dragging, the view
+# presets and guides actions, the vertical orbit's direction, a saved view placed after a reset.
+speculum_add_test(test_viewport_navigation TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_viewport_navigation.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)
+# issue 16 (items 2 and 3, the window): shortcuts from the scene tree that leave text fields their keys,
+# the new document's floor, sun and raised camera, new objects and duplicates placed beside each other.
+speculum_add_test(test_editor_input TIER gui
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_editor_input.cpp ${CMAKE_CURRENT_LIST_DIR}/gui_main.cpp
+    LIBS speculum_ui Qt6::Test)

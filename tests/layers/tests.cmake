@@ -37,6 +37,21 @@ add_test(NAME layers_core_links
                  "-DALLOWED=glm::glm|speculum_warnings" -P ${layers_dir}/CheckLinks.cmake)
 set_tests_properties(layers_core_links PROPERTIES LABELS unit TIMEOUT 60)
 
+# The model and the view link nothing that draws (no render GL, tracer or accuracy, no epoxy or EGL), so
+# test_editor_view and the document's users that do not render link no GL: the still export and the
+# sweep's results are speculum_document_renderer's.
+function(speculum_check_links name library allowed)
+    file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/layers/${name}.txt
+         CONTENT "$<TARGET_PROPERTY:${library},LINK_LIBRARIES>\n")
+    add_test(NAME ${name}
+             COMMAND ${CMAKE_COMMAND} -DLINKS=${CMAKE_CURRENT_BINARY_DIR}/layers/${name}.txt
+                     "-DALLOWED=${allowed}" -P ${layers_dir}/CheckLinks.cmake)
+    set_tests_properties(${name} PROPERTIES LABELS unit TIMEOUT 60)
+endfunction()
+speculum_check_links(layers_document_links speculum_document_core
+    "speculum_render_core|speculum_render_images|Qt6::Core|Qt6::Gui|assimp::assimp|PkgConfig::OIIO|meshoptimizer::meshoptimizer|speculum_warnings")
+speculum_check_links(layers_view_links speculum_view "speculum_document_core|Qt6::Core|speculum_warnings")
+
 # Includes across the layers (scripts/check-layers), with the render libraries as CMake defines them,
 # and the checker's own test.
 add_test(NAME layers_includes
@@ -45,6 +60,40 @@ add_test(NAME layers_includes
 add_test(NAME layers_includes_self_test
          COMMAND ${SPECULUM_SOURCE_ROOT}/scripts/check-layers --self-test)
 set_tests_properties(layers_includes layers_includes_self_test PROPERTIES LABELS unit TIMEOUT 60)
+
+# The include roots above render (editor/CMakeLists.txt, app/CMakeLists.txt): a header is compiled alone
+# with exactly the include directories and definitions a library's sources get. A header of a layer above
+# (or, for the model, the renderer's) is not found, while one of the library's own compiles, so a
+# failure of the first kind says the root works and not that the flags are broken.
+function(speculum_include_probe name library header expect)
+    set(probe ${CMAKE_CURRENT_BINARY_DIR}/layers/${name}.cpp)
+    file(WRITE ${probe} "#include \"${header}\"\n")
+    # Without the compiler's own /usr/include, which as a -I would break libstdc++'s #include_next (the
+    # build leaves it out too).
+    set(includes "$<TARGET_PROPERTY:${library},INCLUDE_DIRECTORIES>")
+    add_test(NAME ${name}
+             COMMAND ${CMAKE_CXX_COMPILER} -std=c++20 -fsyntax-only -fPIC
+                     "-D$<JOIN:$<TARGET_PROPERTY:${library},COMPILE_DEFINITIONS>,;-D>"
+                     "-I$<JOIN:$<FILTER:${includes},EXCLUDE,^/usr/include/?$>,;-I>" ${probe}
+             COMMAND_EXPAND_LISTS)
+    set_tests_properties(${name} PROPERTIES LABELS unit TIMEOUT 60)
+    if(expect STREQUAL "missing")
+        string(REPLACE "." "\\." escaped "${header}")
+        # gcc: "fatal error: editor/ui/MainWindow.hpp: No such file or directory"; clang: "'...' file not
+        # found". Any other error does not match, so it fails the test.
+        set_tests_properties(${name} PROPERTIES
+                             PASS_REGULAR_EXPRESSION "${escaped}: No such file|${escaped}' file not found")
+    endif()
+endfunction()
+speculum_include_probe(layers_document_sees_own_headers speculum_document_core editor/document/Scene.hpp found)
+speculum_include_probe(layers_document_sees_no_view speculum_document_core editor/view/Selection.hpp missing)
+speculum_include_probe(layers_document_sees_no_ui speculum_document_core editor/ui/MainWindow.hpp missing)
+# The model draws nothing: the renderer is for the still export and the sweep (speculum_document_renderer).
+speculum_include_probe(layers_document_sees_no_renderer speculum_document_core render/Renderer.hpp missing)
+speculum_include_probe(layers_view_sees_the_document speculum_view editor/view/Selection.hpp found)
+speculum_include_probe(layers_view_sees_no_ui speculum_view editor/ui/Viewport.hpp missing)
+speculum_include_probe(layers_ui_sees_no_app speculum_ui app/CliOptions.hpp missing)
+speculum_include_probe(layers_accuracy_sees_no_editor speculum_accuracy editor/document/Scene.hpp missing)
 
 # Test builds keep assertions on (no NDEBUG).
 speculum_add_test(test_layers_assertions TIER unit SOURCES ${layers_dir}/test_assertions.cpp)

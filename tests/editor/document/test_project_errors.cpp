@@ -99,6 +99,37 @@ std::vector<BadCase> badCases() {
          document(R"("camera": { "position": [1, 2, 3], "target": [1, 2, 3] })"),
          {"camera.target: must differ"}},
         {"up parallel", document(R"("camera": { "up": [0, 0, 1] })"), {"camera.up:", "parallel"}},
+        {"editorView not object", document(R"("editorView": [0, 0, 1])"), {"editorView: expected an object"}},
+        {"editorView position missing",
+         document(R"("editorView": { "target": [0, 0, 0] })"),
+         {"editorView.position: missing"}},
+        {"editorView target missing",
+         document(R"("editorView": { "position": [0, 0, 1] })"),
+         {"editorView.target: missing"}},
+        {"editorView position type",
+         document(R"("editorView": { "position": [0, "a", 0], "target": [0, 0, 0] })"),
+         {"editorView.position: expected 3 numbers"}},
+        {"editorView position short",
+         document(R"("editorView": { "position": [0, 1], "target": [0, 0, 0] })"),
+         {"editorView.position: expected 3 numbers"}},
+        {"editorView position null",
+         document(R"("editorView": { "position": null, "target": [0, 0, 0] })"),
+         {"editorView.position: expected 3 numbers"}},
+        {"editorView position range",
+         document(R"("editorView": { "position": [1e300, 0, 0], "target": [0, 0, 0] })"),
+         {"editorView.position: coordinates must be within"}},
+        {"editorView target type",
+         document(R"("editorView": { "position": [0, 0, 1], "target": "origin" })"),
+         {"editorView.target: expected 3 numbers"}},
+        {"editorView target range",
+         document(R"("editorView": { "position": [0, 0, 1], "target": [0, -1e200, 0] })"),
+         {"editorView.target: coordinates must be within"}},
+        {"editorView target equals position",
+         document(R"("editorView": { "position": [1, 2, 3], "target": [1, 2, 3] })"),
+         {"editorView.target: must differ from the view position"}},
+        {"editorView target too close",
+         document(R"("editorView": { "position": [1e11, 0, 0], "target": [100000000000.00002, 0, 1e-6] })"),
+         {"editorView.target: must differ from the view position by at least"}},
         {"nodes not array", document(R"("nodes": {})"), {"nodes: expected an array"}},
         {"node not object", thirdNode("7"), {"nodes[2]: expected an object"}},
         {"name type", thirdNode(R"({ "name": 5 })"), {"nodes[2].name: expected a string"}},
@@ -263,6 +294,25 @@ TEST(ProjectErrors, EveryValidationErrorNamesItsJsonPath) {
                 << c.label << ": \"" << m << "\" lacks \"" << part << "\"";
         }
     }
+}
+
+// The editor's view has no up vector of its own: a view straight down the camera's up loads (a top view),
+// and an error in it never names the scene camera.
+TEST(ProjectErrors, TheEditorViewIsCheckedOnItsOwn) {
+    std::vector<std::string> warnings;
+    auto top = parseProject(QByteArray::fromStdString(
+                                document(R"("editorView": { "position": [0, 10, 0], "target": [0, 0, 0] })")),
+                            QDir("/tmp"), warnings);
+    ASSERT_TRUE(top.ok()) << top.error();
+    ASSERT_TRUE(top->editorView.has_value());
+    EXPECT_EQ(top->editorView->position, glm::dvec3(0, 10, 0));
+    EXPECT_EQ(top->camera, CameraData{});
+    EXPECT_TRUE(warnings.empty());
+
+    const std::string m = message(document(R"("camera": { "position": [0, 0, 5] },
+        "editorView": { "position": [0, 0, 5], "target": [0, 0, 5] })"));
+    EXPECT_EQ(m.rfind("editorView.target:", 0), 0u) << m;
+    EXPECT_EQ(m.find("camera"), std::string::npos) << m;
 }
 
 TEST(ProjectErrors, SyntaxErrorsGiveLineAndColumn) {

@@ -1,8 +1,15 @@
 #include "DocumentTestSupport.hpp"
+#include "editor/document/Commands.hpp"
+#include "editor/document/DocumentSession.hpp"
 #include "editor/document/ProjectFile.hpp"
+#include "editor/document/Snapshot.hpp"
+#include "support/ThreeNodeScene.hpp"
+#include "support/UndoStackState.hpp"
 
 #include <QDir>
 #include <QFileInfo>
+#include <QUndoStack>
+#include <cmath>
 #include <filesystem>
 
 namespace speculum::document {
@@ -368,6 +375,175 @@ TEST(ProjectFile, OpenSetsTheProjectPathAndFreshIds) {
     EXPECT_NE(ids[0], ids[1]);
     EXPECT_NE(ids[1], ids[2]);
     EXPECT_EQ(scene.findNode(ids[1])->name(), "Table");
+}
+
+// ---- the editor's view (issue 16): saved with the project, never the scene camera ----
+
+EditorView someEditorView() {
+    EditorView view;
+    view.position = {0.1, 1.0 / 3.0, -1e-7};
+    view.target = {1e5 + 0.125, -2.5, 7};
+    view.extra.insert(QStringLiteral("orthographic"), false); // a later version's field
+    return view;
+}
+
+TEST(ProjectFile, TheEditorViewRoundTripsWithItsUnknownFields) {
+    const auto folder = freshTestFolder();
+    const QDir dir(qpath(folder));
+    SceneData scene = everythingScene(dir);
+    scene.editorView = someEditorView();
+    const QString path = qpath(folder / "view.speculum.json");
+    ASSERT_TRUE(saveProject(scene, path).ok());
+
+    std::vector<std::string> warnings;
+    auto loaded = loadProject(path, warnings);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_EQ(*loaded, scene);
+    ASSERT_TRUE(loaded->editorView.has_value());
+    EXPECT_EQ(loaded->editorView->position, scene.editorView->position) << "numbers round-trip exactly";
+    EXPECT_EQ(warnings, std::vector<std::string>{"editorView.orthographic: unknown field, ignored"});
+
+    // After the camera, before the nodes; numbers as the camera writes them; unknown fields last.
+    const QByteArray bytes = readBytes(path);
+    const std::string text = bytes.toStdString();
+    EXPECT_NE(text.find("  \"editorView\": {\n"
+                        "    \"position\": [0.1, 0.3333333333333333, -1e-07],\n"
+                        "    \"target\": [100000.125, -2.5, 7],\n"
+                        "    \"orthographic\": false\n"
+                        "  },\n"
+                        "  \"nodes\": ["),
+              std::string::npos)
+        << text;
+    EXPECT_LT(text.find("\"camera\""), text.find("\"editorView\""));
+    EXPECT_EQ(serializeProject(*loaded, dir), bytes) << "saving a loaded file gives the same bytes";
+}
+
+TEST(ProjectFile, AFileWithoutAnEditorViewLoadsWithNoneAndIsWrittenWithout) {
+    std::vector<std::string> warnings;
+    auto demo = loadProject(demoScenePath(), warnings);
+    ASSERT_TRUE(demo.ok()) << demo.error();
+    EXPECT_FALSE(demo->editorView.has_value());
+    EXPECT_FALSE(readBytes(demoScenePath()).contains("editorView"));
+    const QByteArray written = serializeProject(*demo, QFileInfo(demoScenePath()).absoluteDir());
+    EXPECT_FALSE(written.contains("editorView")) << written.toStdString();
+
+    // Through a Scene too: nothing appears on the way.
+    Scene scene;
+    scene.reset(*demo);
+    EXPECT_FALSE(scene.editorView().has_value());
+    EXPECT_EQ(scene.toData(), *demo);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(ProjectFile, TheEditorViewLeavesTheSceneCameraAndWhatRenderDrawsAlone) {
+    // `speculum render` draws snapshot(scene): its camera is SceneData::camera, whatever the editor saved.
+    const QByteArray withoutView = serializeProject(everythingScene(QDir("/tmp")), QDir("/tmp"));
+    SceneData viewed = everythingScene(QDir("/tmp"));
+    viewed.editorView = EditorView{{5, 6, 7}, {-1, -2, -3}, {}};
+    const QByteArray withView = serializeProject(viewed, QDir("/tmp"));
+    ASSERT_NE(withView, withoutView);
+
+    std::vector<std::string> warnings;
+    auto plain = parseProject(withoutView, QDir("/tmp"), warnings);
+    auto loaded = parseProject(withView, QDir("/tmp"), warnings);
+    ASSERT_TRUE(plain.ok()) << plain.error();
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_EQ(loaded->camera, plain->camera);
+    EXPECT_EQ(loaded->camera, everythingScene(QDir("/tmp")).camera);
+
+    Scene plainScene;
+    plainScene.reset(*plain);
+    Scene viewedScene;
+    viewedScene.reset(*loaded);
+    ASSERT_TRUE(viewedScene.editorView().has_value());
+    EXPECT_EQ(viewedScene.camera(), plainScene.camera());
+    MeshLibrary meshes;
+    const render::Camera drawn = snapshot(viewedScene, 0.0, meshes, warnings).camera;
+    const render::Camera expected = toRender(plain->camera);
+    EXPECT_EQ(drawn.position, expected.position);
+    EXPECT_EQ(drawn.target, expected.target);
+    EXPECT_EQ(drawn.up, expected.up);
+    EXPECT_EQ(drawn.fovY, expected.fovY);
+    EXPECT_EQ(drawn.near, expected.near);
+    EXPECT_EQ(drawn.far, expected.far);
+    EXPECT_NE(drawn.position, viewed.editorView->position);
+}
+
+TEST(SceneEditorView, ResetTakesItAndToDataGivesItBack) {
+    SceneData data;
+    data.editorView = someEditorView();
+    Scene scene;
+    std::optional<EditorView> seenAtReset;
+    QObject::connect(&scene, &Scene::sceneReset, [&] { seenAtReset = scene.editorView(); });
+    scene.reset(data);
+    EXPECT_EQ(seenAtReset, data.editorView) << "in place when views hear of the new document";
+    EXPECT_EQ(scene.editorView(), data.editorView);
+    EXPECT_EQ(scene.toData(), data);
+
+    scene.reset(SceneData{});
+    EXPECT_FALSE(scene.editorView().has_value()) << "a new document brings its own view, or none";
+}
+
+TEST(SceneEditorView, SettingItIsNoEditAndMarksNothingModified) {
+    DocumentSession session;
+    Scene& scene = session.scene();
+    QUndoStack& stack = session.undoStack();
+    session.replace(test::threeNodeScene(), QStringLiteral("/projects/room.speculum.json"));
+    int emitted = 0;
+    for (auto signal : {&Scene::changed, &Scene::cameraChanged, &Scene::settingsChanged, &Scene::sceneReset,
+                        &Scene::aboutToReset}) {
+        QObject::connect(&scene, signal, [&] { ++emitted; });
+    }
+    const CameraData camera = scene.camera();
+
+    scene.setEditorView(someEditorView());
+    EXPECT_EQ(scene.editorView(), someEditorView());
+    EXPECT_EQ(test::undoStackState(stack), (test::UndoStackState{0, 0, 0, true}));
+    EXPECT_FALSE(session.isModified());
+    EXPECT_EQ(emitted, 0);
+    EXPECT_EQ(scene.camera(), camera);
+    EXPECT_EQ(scene.toData().editorView, someEditorView());
+
+    // After an edit and a save, moving the view leaves the stack where it is: still clean, one step.
+    CameraData edited = camera;
+    edited.fovY = 40;
+    stack.push(new SetCameraCommand(scene, edited));
+    stack.setClean();
+    const test::UndoStackState saved = test::undoStackState(stack);
+    const int emittedBefore = emitted;
+    scene.setEditorView(EditorView{{3, 3, 3}, {0, 0, 0}, {}});
+    scene.setEditorView(std::nullopt);
+    EXPECT_EQ(test::undoStackState(stack), saved);
+    EXPECT_TRUE(stack.isClean());
+    EXPECT_FALSE(session.isModified());
+    EXPECT_EQ(emitted, emittedBefore) << "no signal: views do not redraw, nothing is marked modified";
+    EXPECT_FALSE(scene.editorView().has_value());
+
+    // Undoing the edit does not touch the view either.
+    scene.setEditorView(someEditorView());
+    stack.undo();
+    EXPECT_EQ(scene.camera(), camera);
+    EXPECT_EQ(scene.editorView(), someEditorView());
+}
+
+TEST(SceneEditorView, AViewTheReaderWouldRefuseIsNotKeptSoTheFileStillSaves) {
+    const auto folder = freshTestFolder();
+    Scene scene;
+    scene.setEditorView(someEditorView());
+    scene.setEditorView(EditorView{{1, 2, 3}, {1, 2, 3}, {}}); // panned into one point
+    EXPECT_FALSE(scene.editorView().has_value());
+    scene.setEditorView(EditorView{{2e300, 0, 0}, {0, 0, 0}, {}}); // panned out of range
+    EXPECT_FALSE(scene.editorView().has_value());
+    // JSON has no such numbers (the parser refuses 1e999), but a view computed into one is not kept either.
+    scene.setEditorView(EditorView{{0, 0, 1}, {0, std::nan(""), 0}, {}});
+    EXPECT_FALSE(scene.editorView().has_value());
+    scene.setEditorView(EditorView{{0, 0, 1}, {0, 0, HUGE_VAL}, {}});
+    EXPECT_FALSE(scene.editorView().has_value());
+    ASSERT_TRUE(saveProject(scene, qpath(folder / "scene.speculum.json")).ok());
+    std::vector<std::string> warnings;
+    auto loaded = loadProject(qpath(folder / "scene.speculum.json"), warnings);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_FALSE(loaded->editorView.has_value());
 }
 
 } // namespace

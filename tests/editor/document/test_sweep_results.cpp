@@ -11,6 +11,7 @@
 
 #include <QUndoStack>
 #include <gtest/gtest.h>
+#include <optional>
 
 namespace speculum::document {
 namespace {
@@ -138,6 +139,37 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
                                    QStringLiteral("same"));
     EXPECT_FALSE(same.command);
     EXPECT_TRUE(same.skipped.isEmpty());
+}
+
+TEST(SweepResults, SettingsThatCancelOutGiveNoCommand) {
+    Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(openProject(scene, test::demoScenePath(), warnings).ok());
+    std::optional<MirrorTechnique> current;
+    scene.forEachNode([&](const Node& node) {
+        if (node.data().mirror && !current)
+            current = node.data().mirror->technique;
+    });
+    ASSERT_TRUE(current);
+    const MirrorTechnique other =
+        *current == MirrorTechnique::Stencil ? MirrorTechnique::Texture : MirrorTechnique::Stencil;
+    // A later key edits the mirrors back to what they hold: nothing changes, so nothing is pushed.
+    auto application = applySweepSettings(
+        scene, {{"technique", std::string(toString(other))}, {"technique", std::string(toString(*current))}},
+        QStringLiteral("cancelled"));
+    EXPECT_FALSE(application.command);
+    EXPECT_EQ(application.applied.size(), 2);
+
+    const std::string depth = std::to_string(scene.settings().mirrorDepth);
+    const std::string otherDepth = std::to_string((scene.settings().mirrorDepth + 1) % 16);
+    auto depths = applySweepSettings(scene, {{"mirrorDepth", otherDepth}, {"mirrorDepth", depth}},
+                                     QStringLiteral("cancelled depth"));
+    EXPECT_FALSE(depths.command);
+    auto last = applySweepSettings(scene, {{"mirrorDepth", depth}, {"mirrorDepth", otherDepth}},
+                                   QStringLiteral("last wins"));
+    ASSERT_TRUE(last.command);
+    last.command->redo();
+    EXPECT_EQ(std::to_string(scene.settings().mirrorDepth), otherDepth);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include "editor/document/Commands.hpp"
 #include "editor/document/EditTransaction.hpp"
 #include "support/ThreeNodeScene.hpp"
+#include "support/UndoStackState.hpp"
 
 #include <QSignalSpy>
 #include <QUndoStack>
@@ -38,12 +39,8 @@ protected:
         ASSERT_EQ(stack.cleanIndex(), 2);
     }
 
-    struct StackState {
-        int count, index, cleanIndex;
-        bool clean;
-        bool operator==(const StackState&) const = default;
-    };
-    StackState state() const { return {stack.count(), stack.index(), stack.cleanIndex(), stack.isClean()}; }
+    using StackState = test::UndoStackState;
+    StackState state() const { return test::undoStackState(stack); }
 
     Scene scene;
     QUndoStack stack;

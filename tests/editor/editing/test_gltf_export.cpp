@@ -673,7 +673,6 @@ TEST(GltfExport, ADiskFillingUpKeepsEveryPreviousFile) {
         }
         const speculum::render::test::ChildOutcome child =
             speculum::render::test::inChild([&](std::string& text) {
-                OIIO::attribute("threads", 1); // the parent's pool does not exist in a forked child
                 speculum::render::test::limitFileSize(1024);
                 const speculum::render::Status status =
                     exportGltf(scene, QString::fromStdString(target.string()), meshes, warnings);

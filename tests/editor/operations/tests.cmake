@@ -4,4 +4,5 @@ speculum_add_test(test_editor_operations TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_edit_transaction.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_edit_operations.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_document_session.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_placement.cpp
     LIBS speculum_document)

@@ -1,7 +1,9 @@
 // Inputs the fuzzer found: whatever loads must save and load back to the same bytes.
 #include "editor/document/ProjectFile.hpp"
+#include "editor/document/Recovery.hpp"
 
 #include <QDir>
+#include <QTemporaryDir>
 #include <gtest/gtest.h>
 
 namespace speculum::document {
@@ -29,6 +31,30 @@ TEST(RoundTrip, UnknownFieldsOfEveryKindAreKeptInOrder) {
     expectStableRoundTrip(
         R"({"format": "speculum-scene", "version": 1, "future": {"z": [1, {"b": null, "a": true}], "a": "é"},
         "nodes": [{"name": "N", "mirror": {"size": [1, 2], "later": 3}, "comment": "kept"}]})");
+}
+
+TEST(RoundTrip, TheEditorViewAndItsUnknownFieldsAreKept) {
+    expectStableRoundTrip(
+        R"({"format": "speculum-scene", "version": 1, "editorView": {"later": {"b": [1], "a": null},
+        "target": [0, -0.1, 1e-300], "position": [1e-7, 12345.678, -3]}, "nodes": []})");
+}
+
+// An autosave carries the editor's view like a save does, so a restored document reopens where it looked.
+TEST(RoundTrip, TheEditorViewSurvivesARecoveryFile) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    SceneData data;
+    data.camera.fovY = 40;
+    data.editorView = EditorView{{4, 5, 6}, {0.5, 0.25, -1.0 / 3.0}, {}};
+    data.editorView->extra.insert(QStringLiteral("later"), 2);
+    RecoveryStore store(dir.path(), 4244);
+    ASSERT_TRUE(store.write(data, QStringLiteral("/projects/room.speculum.json")).ok());
+
+    std::vector<std::string> warnings;
+    auto restored = RecoveryStore::load({store.scenePath(), QString(), QDateTime()}, warnings);
+    ASSERT_TRUE(restored.ok()) << restored.error();
+    EXPECT_EQ(*restored, data);
+    EXPECT_EQ(restored->camera, data.camera);
 }
 
 } // namespace

@@ -4,6 +4,9 @@ find_package(Qt6 REQUIRED COMPONENTS Test) # QSignalSpy
 speculum_add_test(test_editor_view TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_selection.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_view_camera.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_view_presets.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_adaptive_resolution.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_animation_clock.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_animation_loop.cpp
             ${CMAKE_CURRENT_LIST_DIR}/view_main.cpp
     LIBS speculum_view Qt6::Test)

@@ -4,7 +4,13 @@
 // SIGXFSZ, so a write past the limit fails part-way with EFBIG exactly where a full disk fails with
 // ENOSPC. With root, a child in its own mount namespace can also mount a real, small tmpfs and fill it.
 // The child reports through a pipe; an alarm ends it if a regression made it hang.
+//
+// fork() copies only the calling thread. A worker thread of OpenImageIO's or OpenEXR's pool that held a
+// lock at that moment leaves it held for ever in the child, and a pool the child inherits has no threads
+// behind it: an EXR write there can wait for ever. So a program that includes this header does its image
+// I/O on the calling thread from its first line, and inChild refuses to fork once a test started threads.
 
+#include <OpenImageIO/imageio.h>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -28,8 +34,38 @@ struct ChildOutcome {
     std::string text;  // what the child reported
 };
 
+// The threads of this process (1 when only the calling one runs), from /proc/self/task.
+inline int threadsAlive() {
+    int count = 0;
+    std::error_code ec;
+    for (auto it = std::filesystem::directory_iterator("/proc/self/task", ec);
+         !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+        ++count;
+    }
+    return count;
+}
+
+// Set during static initialisation, before any test can start a pool: image I/O on the calling thread.
+inline const bool kImageIoOnTheCallingThread = [] {
+    OIIO::attribute("threads", 1);      // no workers in OIIO's own pool
+    OIIO::attribute("exr_threads", -1); // and none in OpenEXR's
+    return true;
+}();
+
+// Threads that the libraries start as they load (a few, idle, before main): they never run a test's work,
+// so they hold no lock a child could need. Any thread beyond them was started by a test.
+inline const int kThreadsAtStart = threadsAlive();
+
 // Runs `body` in a forked child; what it puts in `text` comes back. Exit code is body's return value.
+// With a thread alive that a test started (a pool that did work), it does not fork: the outcome says so,
+// and the test fails on it instead of hanging.
 inline ChildOutcome inChild(const std::function<int(std::string& text)>& body, unsigned timeoutSeconds = 30) {
+    if (const int threads = threadsAlive(); threads > kThreadsAtStart) {
+        return {-1, 0,
+                std::to_string(threads - kThreadsAtStart) +
+                    " threads started since the program began: a forked child could wait for ever on a lock "
+                    "one of them held"};
+    }
     int fds[2];
     if (::pipe(fds) != 0) {
         return {-1, 0, "pipe() failed"};

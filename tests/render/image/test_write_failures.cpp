@@ -40,13 +40,6 @@ Image flat(int size, float v) {
     return Image{size, size, std::vector<float>(static_cast<std::size_t>(size) * size * 4, v)};
 }
 
-// A forked child has only the thread that forked: OpenEXR's and OIIO's pools from the parent are gone, and
-// an EXR write would wait for them for ever. Serial in the child, then.
-void serialImageIo() {
-    OIIO::attribute("exr_threads", -1);
-    OIIO::attribute("threads", 1);
-}
-
 bool oneLine(const std::string& text) {
     return !text.empty() && text.find('\n') == std::string::npos && text.find('\r') == std::string::npos;
 }
@@ -61,7 +54,6 @@ TEST_P(WriteFailures, FileSizeLimitKeepsThePreviousFileAndLeavesNoTemporary) {
     ASSERT_FALSE(before.empty());
 
     const test::ChildOutcome child = inChild([&](std::string& text) {
-        serialImageIo();
         if (!test::limitFileSize(4096)) {
             return 3;
         }
@@ -84,7 +76,6 @@ TEST_P(WriteFailures, FileSizeLimitWithNoPreviousFileLeavesNothing) {
     const fs::path folder = test::freshTestFolder();
     const fs::path target = folder / (std::string("new") + GetParam());
     const test::ChildOutcome child = inChild([&](std::string& text) {
-        serialImageIo();
         if (!test::limitFileSize(4096)) {
             return 3;
         }
@@ -104,7 +95,6 @@ TEST_P(WriteFailures, SmallFullFileSystemKeepsThePreviousFile) {
     const fs::path folder = test::freshTestFolder();
     const std::string ext = GetParam();
     const test::ChildOutcome child = inChild([&](std::string& text) {
-        serialImageIo();
         if (std::string why = test::mountSmallFileSystem(folder, "64k"); !why.empty()) {
             text = why;
             return 77;
@@ -153,7 +143,6 @@ TEST(WriteFailures, SrgbBytesOntoAFillingDiskFailToo) {
     ASSERT_TRUE(writeImage(target.string(), small).ok());
     const std::string before = fileBytes(target);
     const test::ChildOutcome child = inChild([&](std::string& text) {
-        serialImageIo();
         test::limitFileSize(4096);
         TextureImage big{160, 160, std::vector<std::uint8_t>(160 * 160 * 4), {}};
         std::mt19937 random(4);

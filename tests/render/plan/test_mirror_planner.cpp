@@ -1,4 +1,5 @@
 // Which mirrors get passes, without any GL: each skip has its reason.
+#include "PlanScenes.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/plan/Planner.hpp"
 
@@ -10,23 +11,8 @@ namespace {
 
 constexpr PlanViewport kViewport{640, 360};
 
-// A 2 × 2 mirror in the plane z = zPlane facing +Z (or −Z), camera at the origin looking down −Z.
-Mirror wall(const std::string& name, double zPlane, bool facingPlusZ = true, double size = 2.0) {
-    Mirror m;
-    m.name = name;
-    m.world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, zPlane)),
-                          glm::radians(facingPlusZ ? 90.0 : -90.0), glm::dvec3(1, 0, 0));
-    m.size = {size, size};
-    return m;
-}
-
-FrameInput cameraAtOrigin() {
-    FrameInput input;
-    input.camera.position = {0, 0, 0};
-    input.camera.target = {0, 0, -1};
-    input.camera.far = 100.0;
-    return input;
-}
+using test::cameraAtOrigin;
+using test::wall;
 
 std::string skipReason(const FramePlan& plan, const std::string& target) {
     for (const auto& s : plan.skipped)

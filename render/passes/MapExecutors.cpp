@@ -1,0 +1,42 @@
+// The passes that draw a map of their own: a light's shadow map, the reflector's environment map.
+#include "render/passes/PassExecutors.hpp"
+
+namespace speculum::render::passes {
+
+PassResult runShadow(const PlannedPass& pass, FrameExecution& frame) {
+    bindWrites(pass.writes, frame);
+    FrameResources& r = frame.resources;
+    const ShadowPlan* shadow = frame.plan.shadowOf(pass.lightIndex);
+    if (!shadow) // the planner plans every shadow pass's map: nothing to draw into otherwise
+        return {false, {}};
+    r.shadows.render(frame.input, *shadow, r.meshes, r.shadowProgram, &r.textures);
+    frame.commits.shadowSignatures[pass.lightIndex] = shadow->signature;
+    return {};
+}
+
+PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
+    if (!frame.plan.envmap) // the planner plans every envmap pass's map
+        return {false, {}};
+    if (!frame.envmapAllocated) {
+        frame.skipped.push_back(
+            {frame.plan.envmap->target, "no environment map: none could be allocated (see the warnings)"});
+        return {false, {}};
+    }
+    bindWrites(pass.writes, frame);
+    FrameResources& r = frame.resources;
+    // A context of its own: the capture sets per-face state (mirror meshes, culling) on it.
+    MainPassContext context{
+        r.meshProgram,          r.meshes,   r.textures, r.shadows, frame.plan.shadows, r.dummyShadow2D.id(),
+        r.dummyShadowCube.id(), r.unitPlane};
+    const EnvmapPlan& map = *frame.plan.envmap;
+    if (Status captured = r.reflector.capture(frame.input, map, context, {&r.flatProgram, &r.mirrorProgram});
+        !captured) {
+        frame.warnings.push_back(captured.error());
+        return {};
+    }
+    frame.commits.envmapSignature = map.signature;
+    frame.commits.envmapSettings = map.settingsKey;
+    return {};
+}
+
+} // namespace speculum::render::passes

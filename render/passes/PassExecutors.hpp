@@ -1,0 +1,98 @@
+#pragma once
+
+#include "render/FrameInput.hpp"
+#include "render/Renderer.hpp"
+#include "render/gl/GpuMesh.hpp"
+#include "render/gl/Objects.hpp"
+#include "render/gl/Program.hpp"
+#include "render/gl/RenderTexture.hpp"
+#include "render/gl/TextureCache.hpp"
+#include "render/passes/MainPass.hpp"
+#include "render/passes/MirrorOcclusion.hpp"
+#include "render/passes/ReflectorPass.hpp"
+#include "render/passes/ShadowMaps.hpp"
+#include "render/plan/FramePlan.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <glm/mat4x4.hpp>
+#include <string>
+#include <vector>
+
+namespace speculum::render::passes {
+
+// The GL objects the renderer keeps from frame to frame: programs, caches, maps and buffers.
+struct FrameResources {
+    gl::Program meshProgram;
+    gl::Program shadowProgram; // depth only
+    gl::Program flatProgram;   // mirror masks and background resets
+    gl::Program mirrorProgram;
+    gl::Program compositeProgram;
+    gl::MeshCache meshes;
+    gl::TextureCache textures;
+    ShadowMaps shadows;
+    ReflectorPass reflector; // the curved reflector's environment map and surface
+    // The linear (half-float) colour buffer every frame is drawn into before the composite pass, with
+    // the depth-stencil buffer the mirror passes nest in.
+    gl::RenderTexture linear;
+    std::vector<gl::RenderTexture> reflectionTextures; // texture-technique mirrors, one per nesting
+    MirrorOcclusion occlusion;                         // the mirror masks' occlusion tests
+    gl::VertexArray emptyVao; // core profile needs a VAO bound even for attribute-less draws
+    gl::Texture dummyShadow2D;
+    gl::Texture dummyShadowCube;
+    MeshHandle unitPlane;
+};
+
+// One frame being executed: the plan, what the passes share, and what running them found. The plan is
+// read only; executors record into the fields below it.
+struct FrameExecution {
+    const FrameInput& input;
+    const FramePlan& plan;
+    const RenderTarget& target;
+    glm::dmat4 projection; // the camera's (restricted to the tile for tiles)
+    bool tile = false;     // a tile of a larger image: occlusion is judged within the tile
+    FrameResources& resources;
+    MainPassContext& context;
+    // What the next frame's planner learns once a map is drawn (the plan's signatures).
+    PlannerState& commits;
+    std::vector<std::string>& warnings;
+    // The reflector's map could be allocated for this frame's settings; false: its Envmap pass does not run.
+    bool envmapAllocated = true;
+    // The caller's target, which only the composite writes: larger than `target` (the size every other
+    // pass draws at) for a preview at a reduced resolution; null: `target` itself.
+    const RenderTarget* output = nullptr;
+    const RenderTarget& outputTarget() const { return output ? *output : target; }
+
+    // Filled while running: why a view found no reflection (fully occluded, no texture), by view; a
+    // non-empty reason stops the passes of the view and of the views inside it.
+    std::vector<std::string> hidden;
+    std::vector<SkippedEffect> skipped; // effects execution found it could not draw, in pass order
+};
+
+// What running one pass found.
+struct PassResult {
+    bool ran = true;
+    std::string outcome; // PassRun::outcome
+};
+
+// Binds what `writes` says the pass draws into (its own map: nothing to bind), with the viewport of the
+// frame's target, clears it (to the background, depth 1, stencil 0: in the scissor or, clearWhole, all of
+// it), limits drawing to the scissor and the stencil level, and sets the winding. Every other piece of GL
+// state starts from its default (resetPassState).
+void bindWrites(const PassWrites& writes, FrameExecution& frame);
+
+// The GL state every pass starts from.
+void resetPassState();
+
+// The executors, one per pass kind (family files: MapExecutors, SceneExecutors, MirrorExecutors).
+PassResult runShadow(const PlannedPass& pass, FrameExecution& frame);
+PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame);
+PassResult runMain(const PlannedPass& pass, FrameExecution& frame);
+PassResult runComposite(const PlannedPass& pass, FrameExecution& frame);
+PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame);
+PassResult runMirror(const PlannedPass& pass, FrameExecution& frame);
+PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame);
+
+// Runs the pass with the executor of its kind.
+PassResult runPass(const PlannedPass& pass, FrameExecution& frame);
+
+} // namespace speculum::render::passes

@@ -1,0 +1,58 @@
+// The passes of the camera's own view: the scene into the linear buffer, and its composite into the target.
+#include "render/passes/MirrorPasses.hpp"
+#include "render/passes/PassExecutors.hpp"
+
+namespace speculum::render::passes {
+
+PassResult runMain(const PlannedPass& pass, FrameExecution& frame) {
+    bindWrites(pass.writes, frame);
+    drawMainPass(frame.input,
+                 viewSetup(frame.input, frame.plan, -1, frame.projection,
+                           {frame.target.width, frame.target.height}, pass.writes.clockwise),
+                 frame.context);
+    return {};
+}
+
+namespace {
+
+// The sRGB buffer already holds the output's bytes: a blit copies them (no shader runs). With
+// GL_FRAMEBUFFER_SRGB off, a blit between an sRGB and a plain 8-bit buffer neither decodes nor encodes.
+// A preview drawn smaller is scaled up bilinearly, between encoded values.
+void copySrgbBuffer(FrameExecution& frame) {
+    FrameResources& r = frame.resources;
+    const RenderTarget& output = frame.outputTarget();
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.linear.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, output.framebuffer);
+    const bool sameSize = frame.target.width == output.width && frame.target.height == output.height;
+    glBlitFramebuffer(0, 0, frame.target.width, frame.target.height, 0, 0, output.width, output.height,
+                      GL_COLOR_BUFFER_BIT, sameSize ? GL_NEAREST : GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, output.framebuffer);
+}
+
+} // namespace
+
+PassResult runComposite(const PlannedPass& pass, FrameExecution& frame) {
+    FrameResources& r = frame.resources;
+    if (frame.plan.cameraBuffer == CameraBuffer::Srgb8) {
+        copySrgbBuffer(frame);
+        return {};
+    }
+    bindWrites(pass.writes, frame);
+    glDisable(GL_DEPTH_TEST); // a full-screen triangle: nothing to test against
+    r.compositeProgram.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r.linear.color());
+    r.compositeProgram.set("uColor", 0);
+    const RenderTarget& output = frame.outputTarget();
+    r.compositeProgram.set("uEncodeSrgb", output.encodeSrgb ? 1 : 0);
+    // Linear-buffer pixels per output pixel: (1, 1) copies, less scales a preview up.
+    r.compositeProgram.set("uSourceScale", glm::vec2(float(frame.target.width) / float(output.width),
+                                                     float(frame.target.height) / float(output.height)));
+    glBindVertexArray(r.emptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return {};
+}
+
+} // namespace speculum::render::passes

@@ -1,0 +1,154 @@
+// Where new things land (issue 16, item 3), on the document File ▸ New opens: Add ▸ … puts a node on the
+// floor at the view's focus and beside what is already there; the first mirror faces the view (or lies
+// flat under a view from above) instead of lying edge-on; Duplicate moves the copy beside its original.
+#include "editor/document/EditOperations.hpp"
+#include "editor/document/MeshLibrary.hpp"
+#include "editor/document/NewScene.hpp"
+#include "editor/document/NodeFactory.hpp"
+#include "editor/document/NodeMath.hpp"
+#include "editor/document/PickScene.hpp"
+#include "editor/document/Picking.hpp"
+#include "editor/document/Scene.hpp"
+
+#include <QUndoStack>
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+namespace speculum::document {
+namespace {
+
+class Placement : public ::testing::Test {
+protected:
+    void SetUp() override { scene.reset(newSceneData()); }
+
+    // Adds what placeNewNode gives, seen from the new scene's camera unless told otherwise.
+    NodeId add(NewNodeKind kind, glm::dvec3 viewPosition = glm::dvec3(0.0),
+               glm::dvec3 focus = glm::dvec3(0.0)) {
+        NewNodePlacement placement;
+        placement.focus = focus == glm::dvec3(0.0) ? scene.camera().target : focus;
+        placement.viewPosition = viewPosition == glm::dvec3(0.0) ? scene.camera().position : viewPosition;
+        auto added = addNodeTree(scene, undo, placeNewNode(scene, meshes, kind, placement));
+        EXPECT_TRUE(added) << added.error();
+        return added ? *added : kNoNode;
+    }
+
+    glm::dmat4 world(NodeId id) { return worldMatrices(scene, 0.0).at(id); }
+
+    render::math::Box box(NodeId id) {
+        render::math::Box b;
+        const NodeData& d = scene.findNode(id)->data();
+        std::vector<std::string> ignored;
+        if (d.mesh) {
+            auto mesh = meshes.get(*d.mesh, ignored);
+            EXPECT_TRUE(mesh && *mesh);
+            b.add(render::math::worldBounds(meshBounds(*mesh), world(id)));
+        }
+        if (d.mirror) {
+            const glm::dvec2 h = d.mirror->size * 0.5;
+            b.add(glm::dvec3(world(id) * glm::dvec4(-h.x, 0.0, -h.y, 1.0)));
+            b.add(glm::dvec3(world(id) * glm::dvec4(h.x, 0.0, h.y, 1.0)));
+        }
+        return b;
+    }
+
+    static bool overlap(const render::math::Box& a, const render::math::Box& b) {
+        for (int i = 0; i < 3; ++i) {
+            if (!(a.min[i] < b.max[i] - 1e-9 && b.min[i] < a.max[i] - 1e-9)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    glm::dvec3 mirrorNormal(NodeId id) {
+        return glm::normalize(glm::dvec3(world(id) * glm::dvec4(0.0, 1.0, 0.0, 0.0)));
+    }
+
+    Scene scene;
+    QUndoStack undo;
+    MeshLibrary meshes;
+};
+
+TEST_F(Placement, TheNewSceneIsAFloorASunAndARaisedCameraLookingDownAtIt) {
+    const SceneData data = scene.toData();
+    ASSERT_EQ(data.nodes.size(), 2u);
+    EXPECT_TRUE(data.nodes[0].data.mesh);
+    ASSERT_TRUE(data.nodes[1].data.light);
+    EXPECT_TRUE(data.nodes[1].data.light->shadows) << "the sun casts shadows";
+    EXPECT_GT(data.camera.position.y, 1.0);
+    const glm::dvec3 look = glm::normalize(data.camera.target - data.camera.position);
+    EXPECT_LT(look.y, -0.1) << "looking down at the floor, not along it";
+    const render::math::Box floor = box(scene.topLevelNodes()[0]->id());
+    EXPECT_NEAR(floor.max.y, 0.0, 1e-12);
+    EXPECT_NEAR(floor.max.x - floor.min.x, 10.0, 1e-9);
+}
+
+TEST_F(Placement, TheFirstMirrorStandsOnTheFloorFacingTheView) {
+    const NodeId mirror = add(NewNodeKind::Mirror);
+    const glm::dvec3 centre(world(mirror)[3]);
+    const glm::dvec3 toView = glm::normalize(scene.camera().position - centre);
+    EXPECT_GT(glm::dot(mirrorNormal(mirror), toView), 0.5) << "facing the view";
+    EXPECT_NEAR(glm::dot(mirrorNormal(mirror), glm::dvec3(0.0, 1.0, 0.0)), 0.0, 1e-9) << "standing upright";
+    const render::math::Box b = box(mirror);
+    EXPECT_GE(b.min.y, -1e-9) << "not through the floor";
+    EXPECT_LT(b.min.y, 0.05) << "on it";
+}
+
+TEST_F(Placement, UnderAViewFromAboveAMirrorLiesFlatJustAboveTheFloor) {
+    const glm::dvec3 focus(0.5, 0.0, 0.5);
+    const NodeId mirror = add(NewNodeKind::Mirror, focus + glm::dvec3(0.1, 6.0, 0.0), focus);
+    EXPECT_GT(mirrorNormal(mirror).y, 0.999) << "facing up at the view";
+    const render::math::Box b = box(mirror);
+    EXPECT_GT(b.min.y, 0.0) << "a hair above the floor, so the two do not fight for depth";
+    EXPECT_LE(b.min.y, 0.01 + 1e-12) << "a centimetre at most";
+}
+
+TEST_F(Placement, NewObjectsLandOnTheFloorBesideEachOther) {
+    const NodeId a = add(NewNodeKind::Teapot);
+    const NodeId b = add(NewNodeKind::Teapot);
+    const NodeId c = add(NewNodeKind::Box);
+    EXPECT_NEAR(box(a).min.y, 0.0, 1e-9);
+    EXPECT_NEAR(box(b).min.y, 0.0, 1e-9);
+    EXPECT_NEAR(box(c).min.y, 0.0, 1e-9);
+    EXPECT_FALSE(overlap(box(a), box(b)));
+    EXPECT_FALSE(overlap(box(a), box(c)));
+    EXPECT_FALSE(overlap(box(b), box(c)));
+    const glm::dvec3 focus = scene.camera().target;
+    EXPECT_NEAR(box(a).center().x, focus.x, 1e-9) << "the first one where the view looks";
+    EXPECT_NEAR(box(a).center().z, focus.z, 1e-9);
+}
+
+TEST_F(Placement, ALightGoesAboveTheFocus) {
+    const NodeId light = add(NewNodeKind::PointLight);
+    const glm::dvec3 at(world(light)[3]);
+    EXPECT_NEAR(at.x, scene.camera().target.x, 1e-9);
+    EXPECT_NEAR(at.z, scene.camera().target.z, 1e-9);
+    EXPECT_GT(at.y, 1.0);
+}
+
+TEST_F(Placement, ADuplicateStepsAsideAlongXAndCopiesDoNotLandInEachOther) {
+    const NodeId teapot = add(NewNodeKind::Teapot);
+    undo.clear();
+    auto first = duplicateNodes(scene, undo, {teapot}, teapot, &meshes, 0.0);
+    ASSERT_TRUE(first) << first.error();
+    const NodeId copy = first->copies.at(0);
+    EXPECT_EQ(undo.count(), 1);
+    EXPECT_FALSE(overlap(box(copy), box(teapot)));
+    EXPECT_GT(box(copy).min.x, box(teapot).max.x) << "along +X";
+    EXPECT_NEAR(box(copy).min.y, box(teapot).min.y, 1e-9);
+    EXPECT_NEAR(box(copy).center().z, box(teapot).center().z, 1e-9);
+
+    auto second = duplicateNodes(scene, undo, {teapot}, teapot, &meshes, 0.0);
+    ASSERT_TRUE(second) << second.error();
+    const NodeId again = second->copies.at(0);
+    EXPECT_FALSE(overlap(box(again), box(copy))) << "past the first copy, not onto it";
+    EXPECT_FALSE(overlap(box(again), box(teapot)));
+
+    undo.undo();
+    undo.undo();
+    EXPECT_EQ(scene.findNode(copy), nullptr);
+    EXPECT_EQ(scene.findNode(again), nullptr);
+}
+
+} // namespace
+} // namespace speculum::document

@@ -1,0 +1,89 @@
+// issue 16: what is animated in a scene (a static one need not be drawn again while the clock runs) and
+// how long one loop of its animation lasts (the time slider's range), and the clock looping over it.
+#include "editor/document/Scene.hpp"
+#include "editor/document/SceneAnimation.hpp"
+#include "editor/view/AnimationClock.hpp"
+
+#include <QThread>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+
+namespace {
+
+using namespace speculum::document;
+using speculum::view::AnimationClock;
+
+NodeTree nodeWith(std::optional<double> bouncePeriod, std::optional<double> orbitPeriod) {
+    NodeTree tree;
+    tree.data.name = "n";
+    if (bouncePeriod || orbitPeriod) {
+        tree.data.animation.emplace();
+        if (bouncePeriod) {
+            tree.data.animation->bounce = BounceAnimation{1.0, *bouncePeriod, {}};
+        }
+        if (orbitPeriod) {
+            tree.data.animation->orbit = OrbitAnimation{{}, 1.0, *orbitPeriod, {}};
+        }
+    }
+    return tree;
+}
+
+void fill(Scene& scene, std::vector<NodeTree> nodes) {
+    SceneData data;
+    data.nodes = std::move(nodes);
+    scene.reset(std::move(data));
+}
+
+TEST(SceneAnimation, AStaticSceneHasNoAnimationAndATenSecondTimeline) {
+    Scene scene;
+    EXPECT_FALSE(sceneHasAnimation(scene));
+    fill(scene, {nodeWith(std::nullopt, std::nullopt)});
+    EXPECT_FALSE(sceneHasAnimation(scene));
+    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), kStaticTimelineSeconds);
+}
+
+TEST(SceneAnimation, APeriodThatIsNotPositiveMovesNothing) {
+    Scene scene;
+    fill(scene, {nodeWith(0.0, -1.0), nodeWith(std::numeric_limits<double>::infinity(), std::nullopt)});
+    EXPECT_FALSE(sceneHasAnimation(scene));
+}
+
+TEST(SceneAnimation, AnAnimatedChildMakesTheSceneAnimated) {
+    Scene scene;
+    NodeTree parent = nodeWith(std::nullopt, std::nullopt);
+    parent.children.push_back(nodeWith(2.0, std::nullopt));
+    fill(scene, {parent});
+    EXPECT_TRUE(sceneHasAnimation(scene));
+    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), 2.0);
+}
+
+TEST(SceneAnimation, OneLoopIsTheLeastCommonMultipleOfThePeriods) {
+    Scene scene;
+    fill(scene, {nodeWith(2.0, std::nullopt), nodeWith(std::nullopt, 6.0)}); // the teapot demo
+    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), 6.0);
+    fill(scene, {nodeWith(2.5, 6.0)});
+    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), 30.0);
+    // No short common loop: the longest period.
+    fill(scene, {nodeWith(1.001, 7.0), nodeWith(std::nullopt, 9.973)});
+    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), 9.973);
+}
+
+TEST(AnimationClockLoop, PlayingWrapsAtTheLoopsEndAndPausedHoldsAnyTime) {
+    AnimationClock clock;
+    clock.setLoopSeconds(0.1);
+    EXPECT_DOUBLE_EQ(clock.loopSeconds(), 0.1);
+    clock.setTime(0.09);
+    clock.setPlaying(true);
+    QThread::msleep(40);
+    const double wrapped = clock.time();
+    EXPECT_GE(wrapped, 0.0);
+    EXPECT_LT(wrapped, 0.09) << "past the end it starts over";
+    clock.setPlaying(false);
+    clock.setTime(5.0);
+    EXPECT_DOUBLE_EQ(clock.time(), 5.0) << "paused: the time is where it was set";
+    clock.setLoopSeconds(std::nan(""));
+    EXPECT_DOUBLE_EQ(clock.loopSeconds(), 0.0) << "not a length: no loop";
+}
+
+} // namespace
