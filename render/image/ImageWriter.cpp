@@ -132,11 +132,15 @@ namespace {
 
 // A file written by name is only trusted once it reads back whole: some codecs do not report a write that
 // failed (libpng ignores a failed fwrite; libtiff's final directory write is unchecked by TIFFClose).
-// Empty when the file holds a complete image of this size.
+// Empty when the file holds a complete image of this size. Only the reader of the format written is
+// asked: ImageInput::open would, on a half-written file, try every other plugin OIIO has (FFmpeg,
+// OpenVDB, DICOM among them), which is slow and runs libraries that have no business with the file.
 std::string readBackError(const std::string& file, int width, int height) {
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file);
-    if (!in) {
-        return "the written file does not read back (" + oneLine(OIIO::geterror()) + ")";
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::create(file, /*do_open=*/false);
+    OIIO::ImageSpec opened;
+    if (!in || !in->open(file, opened)) {
+        const std::string why = in ? in->geterror() : OIIO::geterror();
+        return "the written file does not read back (" + oneLine(why) + ")";
     }
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width != width || spec.height != height) {

@@ -9,6 +9,12 @@
 // lock at that moment leaves it held for ever in the child, and a pool the child inherits has no threads
 // behind it: an EXR write there can wait for ever. So a program that includes this header does its image
 // I/O on the calling thread from its first line, and inChild refuses to fork once a test started threads.
+//
+// Two more ways a child could inherit a held lock, both closed before the first test runs: a library's
+// first use (OIIO cataloguing its plugins, a codec building its tables) is done in the parent, so no child
+// ever initialises a library; and the threads that libraries start as they load (OpenVDB's log4cplus
+// pool) are waited for until they sleep, since a fork while one of them is still starting, holding its
+// pool's lock, would leave that lock held for ever in the child.
 
 #include <OpenImageIO/imageio.h>
 #include <cerrno>
@@ -45,16 +51,48 @@ inline int threadsAlive() {
     return count;
 }
 
-// Set during static initialisation, before any test can start a pool: image I/O on the calling thread.
+// Whether every thread but the calling one is asleep (state S in /proc/self/task/N/stat).
+inline bool otherThreadsAsleep() {
+    const std::string self = std::to_string(::gettid());
+    std::error_code ec;
+    for (auto it = std::filesystem::directory_iterator("/proc/self/task", ec);
+         !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+        if (it->path().filename() == self) {
+            continue;
+        }
+        std::ifstream stat(it->path() / "stat");
+        std::string line;
+        std::getline(stat, line);
+        const std::size_t afterName = line.rfind(')');
+        if (afterName != std::string::npos && afterName + 2 < line.size() && line[afterName + 2] != 'S') {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Set during static initialisation, before any test can start a pool: image I/O on the calling thread,
+// and every image library this program can reach initialised here, in the parent.
 inline const bool kImageIoOnTheCallingThread = [] {
     OIIO::attribute("threads", 1);      // no workers in OIIO's own pool
     OIIO::attribute("exr_threads", -1); // and none in OpenEXR's
+    std::string formats;
+    OIIO::getattribute("format_list", formats); // catalogues every plugin
+    for (const char* name : {"x.png", "x.jpg", "x.tif", "x.exr"}) {
+        (void)OIIO::ImageOutput::create(name);
+        (void)OIIO::ImageInput::create(name, /*do_open=*/false);
+    }
     return true;
 }();
 
 // Threads that the libraries start as they load (a few, idle, before main): they never run a test's work,
-// so they hold no lock a child could need. Any thread beyond them was started by a test.
-inline const int kThreadsAtStart = threadsAlive();
+// so once asleep they hold no lock a child could need. Any thread beyond them was started by a test.
+inline const int kThreadsAtStart = [] {
+    for (int tries = 0; tries < 500 && !otherThreadsAsleep(); ++tries) {
+        ::usleep(2000);
+    }
+    return threadsAlive();
+}();
 
 // Runs `body` in a forked child; what it puts in `text` comes back. Exit code is body's return value.
 // With a thread alive that a test started (a pool that did work), it does not fork: the outcome says so,
