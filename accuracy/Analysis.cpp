@@ -13,6 +13,7 @@ Metric focusMetric(Family family) {
         return Metric::PsnrReflector;
     case Family::MirrorTechnique:
     case Family::MirrorDepth:
+    case Family::ReflectedDetail: // whole-frame PSNR where no mirror shows (a reflector's map only)
         return Metric::PsnrMirrors;
     default:
         return Metric::Psnr;

@@ -15,8 +15,9 @@ namespace speculum::accuracy {
 
 namespace {
 
-const std::vector<Family> kFamilies = {Family::Envmap,      Family::Parallax, Family::MirrorTechnique,
-                                       Family::MirrorDepth, Family::Shadows,  Family::Tessellation};
+const std::vector<Family> kFamilies = {Family::Envmap,         Family::Parallax, Family::MirrorTechnique,
+                                       Family::MirrorDepth,    Family::Shadows,  Family::Tessellation,
+                                       Family::ReflectedDetail};
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -50,6 +51,8 @@ std::string familyTitle(Family family) {
         return "Shadow filtering (PCF kernel)";
     case Family::Tessellation:
         return "Teapot tessellation";
+    case Family::ReflectedDetail:
+        return "Big meshes in reflections: whole or simplified";
     default:
         return "The scene as saved";
     }
@@ -78,6 +81,10 @@ std::string familyIntro(Family family) {
     case Family::Tessellation:
         return "The built-in teapots' tessellation, against a reference traced with them at tessellation "
                "64: the error of the coarser meshes' facets and silhouettes.";
+    case Family::ReflectedDetail:
+        return "Meshes of more than 100 000 triangles drawn whole in the mirrors' views and the reflector's "
+               "map, then at their simplified level (settings.simplifyReflections), against the exact "
+               "reflection of the whole meshes.";
     default:
         return {};
     }

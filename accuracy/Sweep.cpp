@@ -77,13 +77,15 @@ std::string familyName(Family family) {
         return "shadows";
     case Family::Tessellation:
         return "tessellation";
+    case Family::ReflectedDetail:
+        return "reflected-detail";
     }
     return "scene";
 }
 
 std::optional<Family> familyFromName(const std::string& name) {
     for (Family f : {Family::Scene, Family::Envmap, Family::Parallax, Family::MirrorTechnique,
-                     Family::MirrorDepth, Family::Shadows, Family::Tessellation})
+                     Family::MirrorDepth, Family::Shadows, Family::Tessellation, Family::ReflectedDetail})
         if (familyName(f) == name)
             return f;
     return std::nullopt;
@@ -144,6 +146,9 @@ SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int
     for (const render::Light& light : scene.lights)
         t.shadowedLights += light.shadows.enabled ? 1 : 0;
     t.teapotTessellation = teapotTessellation;
+    if (!scene.mirrors.empty() || (scene.reflector && scene.reflector->mesh))
+        for (const render::DrawItem& item : scene.items)
+            t.simplifiableMeshes += item.mesh && !item.mesh->coarse.indices.empty() ? 1 : 0;
     if (!scene.reflector || !scene.reflector->mesh)
         return t;
     t.reflector = true;
@@ -273,6 +278,21 @@ std::vector<Configuration> planSweep(const render::FrameInput& scene, const Scen
             out.push_back(std::move(c));
         }
     }
+
+    if (traits.simplifiableMeshes > 0) {
+        // Against the scene's reference, which traces every mesh whole: what drawing reflections from the
+        // simplified level costs in accuracy, and what it saves in time.
+        for (bool simplified : {false, true}) {
+            Configuration c{Family::ReflectedDetail,
+                            std::string("reflected-detail-") + (simplified ? "simplified" : "full"),
+                            simplified ? "simplified" : "full",
+                            "reflected detail",
+                            {},
+                            ReferenceKind::Scene};
+            c.variation.simplifyReflections = simplified;
+            out.push_back(std::move(c));
+        }
+    }
     return out;
 }
 
@@ -295,6 +315,7 @@ render::FrameInput applyVariation(const render::FrameInput& scene, const SceneTr
         for (render::Light& light : out.lights)
             if (light.shadows.enabled)
                 light.shadows.pcf = *v.pcf;
+    out.settings.simplifyReflections = v.simplifyReflections.value_or(out.settings.simplifyReflections);
     if (v.tessellation && tessellate) {
         for (render::DrawItem& item : out.items)
             item.mesh = tessellate(item.mesh, *v.tessellation);
@@ -344,6 +365,8 @@ Settings effectiveSettings(const render::FrameInput& applied, const SceneTraits&
     }
     if (teapotTessellation)
         s.emplace_back("tessellation", std::to_string(*teapotTessellation));
+    if (traits.simplifiableMeshes > 0)
+        s.emplace_back("reflectedDetail", applied.settings.simplifyReflections ? "simplified" : "full");
     return s;
 }
 

@@ -19,6 +19,7 @@ enum class Family {
     MirrorDepth,     // settings.mirrorDepth 1 .. cap
     Shadows,         // PCF kernel of every shadowed light
     Tessellation,    // tessellation of the built-in teapots
+    ReflectedDetail, // big meshes in reflections: drawn whole, then at their simplified level
 };
 
 // Stable names, used in file names, CSV and JSON: "envmap", "mirror-depth", ...
@@ -49,6 +50,7 @@ struct Variation {
     std::optional<int> mirrorDepth;
     std::optional<int> pcf;
     std::optional<int> tessellation;
+    std::optional<bool> simplifyReflections;
 };
 
 struct Configuration {
@@ -69,6 +71,8 @@ struct SceneTraits {
     std::size_t mirrors = 0;
     std::size_t shadowedLights = 0;        // lights with shadows on
     std::optional<int> teapotTessellation; // of the (first) built-in teapot
+    // Meshes with a simplified level (MeshData::coarse) in a scene with something that reflects them.
+    std::size_t simplifiableMeshes = 0;
 };
 
 SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int>& teapotTessellation);
@@ -101,8 +105,9 @@ using Settings = std::vector<std::pair<std::string, std::string>>;
 Settings effectiveSettings(const render::FrameInput& applied, const SceneTraits& traits,
                            const std::optional<int>& teapotTessellation);
 
-inline const std::vector<std::string> kSettingNames = {"map",       "resolution",  "fill", "parallax",
-                                                       "technique", "mirrorDepth", "pcf",  "tessellation"};
+inline const std::vector<std::string> kSettingNames = {"map",      "resolution",   "fill",
+                                                       "parallax", "technique",    "mirrorDepth",
+                                                       "pcf",      "tessellation", "reflectedDetail"};
 
 std::string mapName(render::ReflectorMap map);    // "cube", "dual-paraboloid", "tennis-ball"
 std::string fillName(render::ReflectorFill fill); // "direct", "resampled"

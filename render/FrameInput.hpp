@@ -20,6 +20,9 @@ struct Settings {
     glm::dvec3 background{0.1, 0.1, 0.12};
     int mirrorDepth = 3;
     double ambient = 0.2;
+    // Reflected views and the environment map draw big meshes at their simplified level
+    // (MeshData::coarse): an approximation the bench's reflected-detail family measures.
+    bool simplifyReflections = true;
 };
 
 struct Camera {

@@ -266,6 +266,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         r.meshProgram,          r.meshes,   r.textures, r.shadows, plan.shadows, r.dummyShadow2D.id(),
         r.dummyShadowCube.id(), r.unitPlane};
     context.depthOnlyProgram = &r.flatProgram;
+    context.coarseItems = plan.coarseItems;
     // Every view the main pass draws (the camera's and each mirror's) draws the reflector with its map.
     context.drawReflector = [&r](const FrameInput& in, const passes::ViewSetup& view,
                                  passes::MainPassContext& c) { return r.reflector.drawSurface(in, view, c); };

@@ -4,6 +4,7 @@
 #include "render/image/TextureLoader.hpp"
 
 #include <QJsonDocument>
+#include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 #include <utility>
 
@@ -16,7 +17,7 @@ using render::Error;
 // make the build say so rather than the child silently dropping it.
 static_assert(sizeof(MaterialComponent) == 248,
               "MaterialComponent changed: update writeMaterial/readMaterial");
-static_assert(sizeof(render::MeshData) == 176, "MeshData changed: update writeMesh/readMesh");
+static_assert(sizeof(render::MeshData) == 208, "MeshData changed: update writeMesh/readMesh");
 static_assert(sizeof(ImportedPart) == 56, "ImportedPart changed: update the part serialization");
 static_assert(sizeof(ImportedNode) == 208, "ImportedNode changed: update writeNodes/readNodes");
 static_assert(sizeof(ImportedModel) == 336, "ImportedModel changed: update serializeChildImport");
@@ -53,6 +54,9 @@ void writeMesh(ByteWriter& out, const render::MeshData& mesh) {
     out.array(mesh.colors);
     out.array(mesh.tangents);
     out.array(mesh.indices);
+    // The simplified level the child built (freezeMesh): the parent keeps it instead of simplifying again.
+    out.array(mesh.coarse.indices);
+    out.array(std::vector<float>{mesh.coarse.error});
 }
 
 // A mesh whose attributes do not match its vertex count, or with an index out of range, is refused: the
@@ -64,13 +68,22 @@ bool readMesh(ByteReader& in, render::MeshData& mesh) {
     mesh.colors = in.array<glm::vec4>();
     mesh.tangents = in.array<glm::vec4>();
     mesh.indices = in.array<std::uint32_t>();
+    mesh.coarse.indices = in.array<std::uint32_t>();
+    const std::vector<float> coarseError = in.array<float>();
+    mesh.coarse.error = coarseError.size() == 1 ? coarseError[0] : 0.0f;
     const std::size_t n = mesh.positions.size();
     const auto matches = [n](std::size_t size) { return size == 0 || size == n; };
     if (in.failed() || !matches(mesh.normals.size()) || !matches(mesh.uvs.size()) ||
-        !matches(mesh.colors.size()) || !matches(mesh.tangents.size()) || mesh.indices.size() % 3 != 0) {
+        !matches(mesh.colors.size()) || !matches(mesh.tangents.size()) || mesh.indices.size() % 3 != 0 ||
+        mesh.coarse.indices.size() % 3 != 0 || coarseError.size() != 1 || !std::isfinite(coarseError[0])) {
         return false;
     }
     for (const std::uint32_t index : mesh.indices) {
+        if (index >= n) {
+            return false;
+        }
+    }
+    for (const std::uint32_t index : mesh.coarse.indices) {
         if (index >= n) {
             return false;
         }

@@ -346,6 +346,7 @@ private:
         requireRange(s.mirrorDepth, 0, render::kMaxMirrorDepth, o.at("mirrorDepth"));
         o.optional("ambient", s.ambient, readNumber);
         requireRange(s.ambient, 0.0, 1.0, o.at("ambient"));
+        o.optional("simplifyReflections", s.simplifyReflections, readBool);
         s.extra = o.finish();
         return s;
     }

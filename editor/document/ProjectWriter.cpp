@@ -74,6 +74,8 @@ private:
         vec("background", s.background);
         field("mirrorDepth", s.mirrorDepth);
         field("ambient", s.ambient);
+        if (!s.simplifyReflections) // written only where it differs from the default: files stay as they were
+            field("simplifyReflections", QJsonValue(s.simplifyReflections));
         writeExtra(s.extra);
         w.endObject();
     }

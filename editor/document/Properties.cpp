@@ -41,6 +41,15 @@ std::vector<Property<SceneSettings>> makeSettingsProperties() {
     list.push_back(slider(number<SceneSettings>(QStringLiteral("settings.ambient"), QStringLiteral("Ambient"),
                                                 [](SceneSettings& s) { return &s.ambient; }, {0.0, 1.0}),
                           0.0, 1.0));
+    list.push_back(boolean<SceneSettings>(
+        QStringLiteral("settings.simplifyReflections"), QStringLiteral("Simplify big meshes in reflections"),
+        [](const SceneSettings& s) { return s.simplifyReflections; },
+        [](SceneSettings& s, bool on) -> render::Status {
+            s.simplifyReflections = on;
+            return render::Done{};
+        },
+        QStringLiteral("Mirrors and the reflector's map draw meshes of more than 100 000 triangles at a "
+                       "simplified level")));
     return list;
 }
 

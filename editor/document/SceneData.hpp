@@ -27,6 +27,7 @@ struct SceneSettings {
     glm::dvec3 background{0.1, 0.1, 0.12};
     int mirrorDepth = 3;
     double ambient = 0.2;
+    bool simplifyReflections = true; // render::Settings::simplifyReflections
     QJsonObject extra;
     bool operator==(const SceneSettings&) const = default;
 };

@@ -12,7 +12,8 @@
 namespace speculum::document {
 
 render::Settings toRender(const SceneSettings& settings) {
-    return render::Settings{settings.background, settings.mirrorDepth, settings.ambient};
+    return render::Settings{settings.background, settings.mirrorDepth, settings.ambient,
+                            settings.simplifyReflections};
 }
 
 render::Camera toRender(const CameraData& camera) {

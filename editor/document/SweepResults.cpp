@@ -166,6 +166,14 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
             problem = !valid         ? QStringLiteral("not a tessellation in 1..64")
                       : matched == 0 ? QStringLiteral("the scene has no built-in teapot")
                                      : QString();
+        } else if (key == QStringLiteral("reflectedDetail")) {
+            if (value == QStringLiteral("simplified") || value == QStringLiteral("full")) {
+                SceneSettings s = sceneSettings.value_or(scene.settings());
+                s.simplifyReflections = value == QStringLiteral("simplified");
+                sceneSettings = s;
+            } else {
+                problem = QStringLiteral("expected simplified or full");
+            }
         } else {
             problem = QStringLiteral("this version does not know the setting");
         }

@@ -31,8 +31,9 @@ GpuMesh upload(const MeshData& mesh, std::string& failure) {
         mesh.positions.size() * sizeof(glm::vec4) *
         ((mesh.colors.size() == mesh.positions.size() && !mesh.colors.empty() ? 1 : 0) +
          (mesh.tangents.size() == mesh.positions.size() && !mesh.tangents.empty() ? 1 : 0));
-    const std::size_t bytes =
-        std::max({vertices.size() * sizeof(Vertex), mesh.indices.size() * sizeof(std::uint32_t), extraBytes});
+    // The simplified level's indices follow the full list in the same buffer (same vertices).
+    const std::size_t indexBytes = (mesh.indices.size() + mesh.coarse.indices.size()) * sizeof(std::uint32_t);
+    const std::size_t bytes = std::max({vertices.size() * sizeof(Vertex), indexBytes, extraBytes});
     if (Status fits = beginAllocation(bytes); !fits) {
         failure = fits.error();
         return GpuMesh{};
@@ -41,14 +42,21 @@ GpuMesh upload(const MeshData& mesh, std::string& failure) {
     gpu.vertices = makeBuffer();
     gpu.indices = makeBuffer();
     gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+    gpu.coarseIndexCount = static_cast<GLsizei>(mesh.coarse.indices.size());
     glBindVertexArray(gpu.vao.id());
     glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices.id());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(),
                  GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.id());
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                 static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indexBytes), nullptr, GL_STATIC_DRAW);
+    glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0,
+                    static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+                    mesh.indices.data());
+    if (!mesh.coarse.indices.empty())
+        glBufferSubData(GL_ELEMENT_ARRAY_BUFFER,
+                        static_cast<GLintptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+                        static_cast<GLsizeiptr>(mesh.coarse.indices.size() * sizeof(std::uint32_t)),
+                        mesh.coarse.indices.data());
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<void*>(offsetof(Vertex, position)));
@@ -91,7 +99,7 @@ GpuMesh upload(const MeshData& mesh, std::string& failure) {
 
 } // namespace
 
-void GpuMesh::draw() const {
+void GpuMesh::draw(Detail detail) const {
     if (!vao)
         return; // its buffers did not fit (MeshCache::takeWarnings)
     // A disabled attribute reads the context's current value, which is not part of the VAO: set here.
@@ -100,7 +108,11 @@ void GpuMesh::draw() const {
     if (!hasTangents)
         glVertexAttrib4f(kTangentAttribute, 1.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(vao.id());
-    glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+    if (detail == Detail::Coarse && coarseIndexCount > 0)
+        glDrawElements(GL_TRIANGLES, coarseIndexCount, GL_UNSIGNED_INT,
+                       reinterpret_cast<void*>(static_cast<std::size_t>(indexCount) * sizeof(std::uint32_t)));
+    else
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
 }
 
 const GpuMesh& MeshCache::get(const MeshHandle& mesh) {

@@ -16,17 +16,22 @@ namespace speculum::render::gl {
 inline constexpr GLuint kColorAttribute = 3;
 inline constexpr GLuint kTangentAttribute = 4;
 
+// Which of a mesh's triangle lists a draw uses: all of them, or the simplified level where the mesh has
+// one (MeshData::coarse; a mesh without one draws whole either way).
+enum class Detail { Full, Coarse };
+
 struct GpuMesh {
     VertexArray vao;
     Buffer vertices;
     Buffer extras; // colours then tangents, where the mesh has them; empty otherwise
     Buffer indices;
     GLsizei indexCount = 0;
+    GLsizei coarseIndexCount = 0; // after the full list, in the same buffer; 0: no simplified level
     bool hasColors = false;
     bool hasTangents = false;
     Bounds bounds; // of the positions, in the mesh's own space: views cull with it
 
-    void draw() const;
+    void draw(Detail detail = Detail::Full) const;
 };
 
 // Uploads each MeshData once and keeps it while the mesh is alive; the shared pointer's address is the

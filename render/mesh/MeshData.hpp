@@ -36,6 +36,26 @@ private:
     bool m_set = false;
 };
 
+// A simplified triangle list over a mesh's own vertices. Like KnownBounds, a copy starts empty (a mesh
+// copied and then edited must not draw its original's triangles); a move keeps it, so a mesh read back
+// whole from a file or another process need not be simplified again.
+struct CoarseLevel {
+    std::vector<std::uint32_t> indices; // three per triangle
+    float error = 0.0f; // the largest deviation the simplification allowed, as a share of the mesh's size
+
+    CoarseLevel() = default;
+    CoarseLevel(const CoarseLevel&) {}
+    CoarseLevel& operator=(const CoarseLevel&) {
+        indices.clear();
+        error = 0.0f;
+        return *this;
+    }
+    CoarseLevel(CoarseLevel&&) noexcept = default;
+    CoarseLevel& operator=(CoarseLevel&&) noexcept = default;
+
+    std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
 // CPU-side triangle mesh: what the GL layer uploads and the reference tracer intersects.
 // Counter-clockwise triangles seen from outside; normals unit length. uvs, colors and tangents are
 // optional: each is empty or holds one entry per vertex.
@@ -51,6 +71,9 @@ struct MeshData {
     std::vector<glm::vec4> tangents;
     std::vector<std::uint32_t> indices; // three per triangle
     KnownBounds knownBounds;            // set by freezeMesh: computeBounds() then costs nothing
+    // A simplified level over the same vertices, for views that may draw less detail (buildCoarseLevel,
+    // run by freezeMesh for big meshes); empty: the mesh has none and is always drawn whole.
+    CoarseLevel coarse;
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }
@@ -63,7 +86,8 @@ using MeshHandle = std::shared_ptr<const MeshData>;
 // culling ask every frame, and a multi-million-vertex scan each time would cost milliseconds).
 Bounds computeBounds(const MeshData& mesh);
 
-// The shared, immutable handle of a finished mesh, with its bounds computed once.
+// The shared, immutable handle of a finished mesh, with its bounds computed once and, for a big mesh, its
+// simplified level (buildCoarseLevel) built once.
 MeshHandle freezeMesh(MeshData&& mesh);
 
 // Whether the mesh is a closed, consistently wound surface: every edge, by the positions of its end

@@ -152,8 +152,12 @@ private:
         // there: split for that point.
         const WarpTolerance tolerance{level.eye, m_target.warpAngle, m_target.near};
         scene.split = m_env;
-        for (DrawItem& item : scene.split->items)
-            item.mesh = m_target.warpMeshes->get(item.mesh, item.world, tolerance);
+        for (std::size_t i = 0; i < scene.split->items.size(); ++i) {
+            DrawItem& item = scene.split->items[i];
+            const bool coarse = i < m_ctx.coarseItems.size() && m_ctx.coarseItems[i];
+            item.mesh = m_target.warpMeshes->get(item.mesh, item.world, tolerance,
+                                                 coarse ? gl::Detail::Coarse : gl::Detail::Full);
+        }
         for (const Mirror& mirror : m_env.mirrors)
             scene.mirrorMeshes.push_back(
                 m_target.warpMeshes->get(m_ctx.unitPlane, mirrorRectangle(mirror), tolerance));
@@ -194,6 +198,7 @@ private:
                 if (view.face == m_target.face && view.parent == level.view)
                     setup.skipMirror[static_cast<std::size_t>(view.mirror)] = true;
         setup.clockwise = frontClockwise;
+        setup.coarseDetail = true;
         return setup;
     }
 

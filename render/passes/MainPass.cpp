@@ -165,7 +165,7 @@ void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Prog
 }
 
 void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInput& input,
-                 const gl::Program& p, const MainPassContext& ctx) {
+                 const gl::Program& p, const MainPassContext& ctx, gl::Detail detail) {
     const glm::dmat4 model = math::cameraRelative(input.camera) * world;
     // Counter-clockwise stays front-facing unless the object's own transform or the view's reflection
     // (but not both) mirrors it: negative scales and mirror views both flip the winding.
@@ -179,7 +179,7 @@ void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInp
         p.set("uHasTangents", gpu.hasTangents ? 1 : 0);
     p.set("uModel", glm::mat4(model));
     p.set("uNormalMatrix", normalMatrix(model));
-    gpu.draw();
+    gpu.draw(detail);
 }
 
 glm::dmat4 mirrorRectangle(const Mirror& mirror) {
@@ -267,7 +267,8 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
         const bool cull = i < ctx.cullBackFaces.size() && ctx.cullBackFaces[i];
         (cull ? glEnable : glDisable)(GL_CULL_FACE);
         setMaterial(item.material, p, ctx);
-        drawLitMesh(item.mesh, item.world, input, p, ctx);
+        const bool coarse = view.coarseDetail && i < ctx.coarseItems.size() && ctx.coarseItems[i];
+        drawLitMesh(item.mesh, item.world, input, p, ctx, coarse ? gl::Detail::Coarse : gl::Detail::Full);
     }
     if (!ctx.cullBackFaces.empty())
         glDisable(GL_CULL_FACE);

@@ -49,6 +49,9 @@ struct MainPassContext {
     // Per item (by index), true where the view can never see the item's back faces (a closed mesh seen from
     // outside): drawn with them culled. The environment pass sets it; empty draws every face.
     std::vector<bool> cullBackFaces;
+    // Per item (by index), true where a view with ViewSetup::coarseDetail draws the item's simplified level
+    // (FramePlan::coarseItems).
+    std::vector<bool> coarseItems;
 
     const MeshHandle& mirrorMesh(std::size_t mirror) const {
         return mirror < mirrorMeshes.size() && mirrorMeshes[mirror] ? mirrorMeshes[mirror] : unitPlane;
@@ -76,6 +79,8 @@ struct ViewSetup {
     // a mirror's view only shows through its mirror's pixels. Objects wholly outside are not drawn.
     glm::dvec4 ndcBounds{-1.0, -1.0, 1.0, 1.0};
     bool cullOutside = false; // off for warped views, whose clip space is not a frustum
+    // A reflected view or one of the environment map's: draws MainPassContext::coarseItems simplified.
+    bool coarseDetail = false;
 };
 
 // Binds the lit-material program and sets everything that is the same for every object of the view:
@@ -96,7 +101,8 @@ double alphaCutoff(const Material& material);
 
 // Draws one mesh with a world matrix, in the view set by beginLitView.
 void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInput& input,
-                 const gl::Program& program, const MainPassContext& context);
+                 const gl::Program& program, const MainPassContext& context,
+                 gl::Detail detail = gl::Detail::Full);
 
 // The world matrix of a mirror's rectangle drawn with the unit plane mesh.
 glm::dmat4 mirrorRectangle(const Mirror& mirror);

@@ -28,6 +28,7 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
     MainPassContext context{
         r.meshProgram,          r.meshes,   r.textures, r.shadows, frame.plan.shadows, r.dummyShadow2D.id(),
         r.dummyShadowCube.id(), r.unitPlane};
+    context.coarseItems = frame.plan.coarseItems;
     const EnvmapPlan& map = *frame.plan.envmap;
     if (Status captured = r.reflector.capture(frame.input, map, context, {&r.flatProgram, &r.mirrorProgram});
         !captured) {

@@ -21,6 +21,7 @@ ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewInde
         setup.viewProjection = view.projection * rotation;
         setup.reflection = view.reflection;
         setup.eye = view.eye;
+        setup.coarseDetail = true;
         const glm::dvec2 size = glm::max(glm::dvec2(targetSize), glm::dvec2(1.0));
         setup.ndcBounds = glm::dvec4(view.rect.x0 / size.x, view.rect.y0 / size.y, view.rect.x1 / size.x,
                                      view.rect.y1 / size.y) *

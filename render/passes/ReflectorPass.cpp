@@ -38,8 +38,10 @@ FrameInput environmentInput(const FrameInput& input, const glm::dvec3& centre) {
 }
 
 MainPassContext withProgram(const gl::Program& program, MainPassContext& base, MeshHandle unitPlane) {
-    return MainPassContext{program,          base.meshes,        base.textures,        base.shadows,
-                           base.shadowPlans, base.dummyShadow2D, base.dummyShadowCube, std::move(unitPlane)};
+    MainPassContext context{program,          base.meshes,        base.textures,        base.shadows,
+                            base.shadowPlans, base.dummyShadow2D, base.dummyShadowCube, std::move(unitPlane)};
+    context.coarseItems = base.coarseItems;
+    return context;
 }
 
 } // namespace

@@ -189,10 +189,12 @@ MeshData subdivideForWarp(const MeshData& mesh, const glm::dmat4& world, const W
     return subdivideForWarp(mesh, world, coarser, maxTriangles);
 }
 
-MeshHandle WarpMeshes::get(const MeshHandle& mesh, const glm::dmat4& world, const WarpTolerance& tolerance) {
+MeshHandle WarpMeshes::get(const MeshHandle& mesh, const glm::dmat4& world, const WarpTolerance& tolerance,
+                           gl::Detail detail) {
     if (!mesh)
         return mesh;
-    const std::uint64_t key = entryKey(mesh.get(), world, tolerance);
+    const bool coarse = detail == gl::Detail::Coarse && !mesh->coarse.indices.empty();
+    const std::uint64_t key = entryKey(mesh.get(), world, tolerance) ^ (coarse ? 0x9e3779b97f4a7c15ull : 0);
     auto it = m_entries.find(key);
     if (it != m_entries.end() && it->second.owner.lock() == mesh && it->second.world == world &&
         it->second.tolerance.centre == tolerance.centre &&
@@ -201,10 +203,22 @@ MeshHandle WarpMeshes::get(const MeshHandle& mesh, const glm::dmat4& world, cons
         it->second.generation = m_generation;
         return it->second.fine ? it->second.fine : mesh;
     }
-    MeshData fine = subdivideForWarp(*mesh, world, tolerance);
     MeshHandle handle;
-    if (fine.triangleCount() != mesh->triangleCount())
+    if (coarse) {
+        // The simplified level is split: its copy holds the level's triangles as its whole list, so the
+        // split mesh draws them whatever detail the view asks for.
+        MeshData level;
+        level.positions = mesh->positions;
+        level.normals = mesh->normals;
+        level.uvs = mesh->uvs;
+        level.colors = mesh->colors;
+        level.tangents = mesh->tangents;
+        level.indices = mesh->coarse.indices;
+        handle = std::make_shared<const MeshData>(subdivideForWarp(level, world, tolerance));
+    } else if (MeshData fine = subdivideForWarp(*mesh, world, tolerance);
+               fine.triangleCount() != mesh->triangleCount()) {
         handle = std::make_shared<const MeshData>(std::move(fine));
+    }
     // A copy that is the mesh itself must not keep it alive: hold it weakly through the owner only.
     m_entries[key] = {mesh, handle, world, tolerance, m_generation};
     return handle ? handle : mesh;

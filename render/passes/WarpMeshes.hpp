@@ -1,6 +1,7 @@
 #pragma once
 
 #include "render/envmap/Layout.hpp"
+#include "render/gl/GpuMesh.hpp"
 #include "render/mesh/MeshData.hpp"
 
 #include <cstdint>
@@ -45,7 +46,9 @@ class WarpMeshes {
 public:
     // Starts an update: entries not asked for since the previous begin() are dropped by purge().
     void begin() { ++m_generation; }
-    MeshHandle get(const MeshHandle& mesh, const glm::dmat4& world, const WarpTolerance& tolerance);
+    // Detail::Coarse splits the mesh's simplified level where it has one (the copy then holds only it).
+    MeshHandle get(const MeshHandle& mesh, const glm::dmat4& world, const WarpTolerance& tolerance,
+                   gl::Detail detail = gl::Detail::Full);
     // Forgets copies of meshes nobody holds any more, and those the last update did not use (a moving
     // object leaves one behind per position).
     void purge();

@@ -153,6 +153,9 @@ struct FramePlan {
     std::vector<MirrorView> views;
     // Set when the environment pass runs this frame.
     std::optional<EnvmapPlan> envmap;
+    // Per item (by index into FrameInput::items): the mirrors' views and the environment map draw it at its
+    // simplified level (MeshData::coarse). Empty when no reflected view draws a simplified mesh.
+    std::vector<bool> coarseItems;
 
     // The shadow plan of a light, or nullptr if the main pass does not sample a map of it.
     const ShadowPlan* shadowOf(int lightIndex) const;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdio>
 #include <cstring>
 #include <functional>
 
@@ -73,6 +74,49 @@ std::string blendOntoRadiance(const FrameInput& input, const std::vector<MirrorV
         return "stencil mirror '" + mirror.name + "' blends onto the reflection it drew";
     }
     return {};
+}
+
+// Big meshes in reflected views: which items the mirror and environment passes draw at their simplified
+// level, said in those passes' reasons (or, with settings.simplifyReflections off, that they draw them
+// whole, and what that costs in triangles).
+void planReflectedDetail(const FrameInput& input, FramePlan& plan) {
+    const bool reflected = std::any_of(plan.passes.begin(), plan.passes.end(), [](const PlannedPass& p) {
+        return p.kind == PassKind::Mirror || p.kind == PassKind::Envmap;
+    });
+    if (!reflected)
+        return;
+    std::string simplified;
+    std::string whole;
+    std::size_t simplifiedCount = 0;
+    std::vector<bool> coarse(input.items.size(), false);
+    for (std::size_t i = 0; i < input.items.size(); ++i) {
+        const DrawItem& item = input.items[i];
+        if (!item.mesh || item.mesh->coarse.indices.empty())
+            continue;
+        const std::string full = std::to_string(item.mesh->triangleCount());
+        if (!input.settings.simplifyReflections) {
+            whole += (whole.empty() ? "'" : ", '") + item.name + "' (" + full + " triangles)";
+            continue;
+        }
+        coarse[i] = true;
+        ++simplifiedCount;
+        char error[32];
+        std::snprintf(error, sizeof error, "%.2g%%", double(item.mesh->coarse.error) * 100.0);
+        simplified += (simplified.empty() ? "'" : ", '") + item.name + "' " + full + " → " +
+                      std::to_string(item.mesh->coarse.triangleCount()) + " triangles, within " + error +
+                      " of its size";
+    }
+    std::string note;
+    if (!simplified.empty()) {
+        note = "; draws " + std::string(simplifiedCount == 1 ? "a big mesh" : "big meshes") +
+               " simplified (" + simplified + ")";
+        plan.coarseItems = std::move(coarse);
+    } else if (!whole.empty()) {
+        note = "; draws big meshes whole, settings.simplifyReflections is off: " + whole;
+    }
+    for (PlannedPass& pass : plan.passes)
+        if (pass.kind == PassKind::Mirror || pass.kind == PassKind::Envmap)
+            pass.reason += note;
 }
 
 std::string lightLabel(const Light& light, int index) {
@@ -241,6 +285,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
                 : "resolves the half-float colour buffer into the float output (linear)";
     }
     plan.passes.push_back(std::move(composite));
+    planReflectedDetail(input, plan);
     declareWrites(input, plan);
     return plan;
 }

@@ -121,6 +121,7 @@ std::uint64_t envmapSignature(const FrameInput& input) {
     h.add(reflector.mirrorDepth);
     h.add(input.settings.background);
     h.add(input.settings.ambient);
+    h.add(input.settings.simplifyReflections);
     for (const Light& light : input.lights) {
         h.add(light.type);
         h.add(light.position);

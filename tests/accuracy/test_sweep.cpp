@@ -54,6 +54,16 @@ FrameInput withMirrorsAndShadows(FrameInput input) {
     return input;
 }
 
+// A mesh big enough to get a simplified level (MeshData::coarse).
+FrameInput withBigMesh(FrameInput input) {
+    static const render::MeshHandle big = render::freezeMesh(render::makeSphere(256));
+    EXPECT_FALSE(big->coarse.indices.empty());
+    glm::dmat4 world(1.0);
+    world[3] = glm::dvec4(2.0, 1.0, 0.0, 1.0);
+    input.items.push_back({"Statue", world, big, {}, true});
+    return input;
+}
+
 std::set<Family> familiesOf(const std::vector<Configuration>& configs) {
     std::set<Family> families;
     for (const Configuration& c : configs)
@@ -79,6 +89,32 @@ TEST(BenchSweep, OnlyTheFamiliesTheSceneCallsFor) {
               (std::set<Family>{Family::Scene, Family::Envmap, Family::Parallax}));
 }
 
+TEST(BenchSweep, BigMeshesInReflectionsAreSweptWholeAndSimplified) {
+    const FrameInput alone = withBigMesh(plainScene());
+    EXPECT_EQ(sceneTraits(alone, std::nullopt).simplifiableMeshes, 0u) << "nothing reflects it";
+    EXPECT_FALSE(familiesOf(planSweep(alone, sceneTraits(alone, std::nullopt), {true}))
+                     .count(Family::ReflectedDetail));
+
+    for (const FrameInput& scene :
+         {withMirrorsAndShadows(withBigMesh(plainScene())), withReflector(withBigMesh(plainScene()))}) {
+        const SceneTraits traits = sceneTraits(scene, std::nullopt);
+        EXPECT_EQ(traits.simplifiableMeshes, 1u);
+        std::vector<std::string> ids;
+        for (const Configuration& c : planSweep(scene, traits, {true}))
+            if (c.family == Family::ReflectedDetail) {
+                ids.push_back(c.id);
+                EXPECT_EQ(c.reference, ReferenceKind::Scene) << "the tracer always draws every triangle";
+                const FrameInput applied = applyVariation(scene, traits, c.variation, {});
+                EXPECT_EQ(applied.settings.simplifyReflections, c.id == "reflected-detail-simplified");
+                const Settings s = effectiveSettings(applied, traits, std::nullopt);
+                EXPECT_NE(
+                    std::find(s.begin(), s.end(), std::make_pair(std::string("reflectedDetail"), c.label)),
+                    s.end());
+            }
+        EXPECT_EQ(ids, (std::vector<std::string>{"reflected-detail-full", "reflected-detail-simplified"}));
+    }
+}
+
 TEST(BenchSweep, NoProxyForAReflectorOutsideTheScene) {
     FrameInput ball = withReflector(plainScene());
     ball.reflector->world[3] = glm::dvec4(0.0, 10.0, 0.0, 1.0);
@@ -88,7 +124,7 @@ TEST(BenchSweep, NoProxyForAReflectorOutsideTheScene) {
 }
 
 TEST(BenchSweep, EachFamilyVariesOnlyItsOwnSettingsAndIncludesTheScenes) {
-    const FrameInput scene = withMirrorsAndShadows(withReflector(plainScene()));
+    const FrameInput scene = withMirrorsAndShadows(withReflector(withBigMesh(plainScene())));
     const SceneTraits traits = sceneTraits(scene, 8);
     const Settings own = effectiveSettings(scene, traits, 8);
     const std::map<std::string, std::string> ownMap(own.begin(), own.end());
@@ -97,7 +133,8 @@ TEST(BenchSweep, EachFamilyVariesOnlyItsOwnSettingsAndIncludesTheScenes) {
                                                             {Family::MirrorTechnique, {"technique"}},
                                                             {Family::MirrorDepth, {"mirrorDepth"}},
                                                             {Family::Shadows, {"pcf"}},
-                                                            {Family::Tessellation, {"tessellation"}}};
+                                                            {Family::Tessellation, {"tessellation"}},
+                                                            {Family::ReflectedDetail, {"reflectedDetail"}}};
     const TessellateTeapot keep = [](const render::MeshHandle& m, int) { return m; };
     std::map<Family, bool> sawOwn;
     std::set<std::string> ids;

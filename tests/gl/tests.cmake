@@ -40,3 +40,8 @@ target_compile_definitions(test_gl_gpu_allocation_slow PRIVATE SPECULUM_SLOW_ALL
 speculum_add_test(test_gl_camera_buffer TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_camera_buffer.cpp
     LIBS speculum_render speculum_document)
+# Big meshes in reflections: the mirrors' views draw the simplified level the plan names, the camera's
+# view every triangle.
+speculum_add_test(test_gl_reflected_detail TIER gl
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_reflected_detail.cpp
+    LIBS speculum_render)

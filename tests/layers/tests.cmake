@@ -29,12 +29,13 @@ speculum_check_symbols(layers_tracer_symbols speculum_render_tracer
 # The check itself: the GL library does call GL.
 speculum_check_symbols(layers_symbol_check_sees_gl speculum_render_gl "${gl_symbols}" -DEXPECT_FORBIDDEN=ON)
 
-# The core's declared links: GLM and the warning flags, nothing else.
+# The core's declared links: GLM, meshoptimizer (the simplified level of big meshes, CPU only) and the
+# warning flags, nothing else.
 file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/layers/core-links.txt
      CONTENT "$<TARGET_PROPERTY:speculum_render_core,LINK_LIBRARIES>\n")
 add_test(NAME layers_core_links
          COMMAND ${CMAKE_COMMAND} -DLINKS=${CMAKE_CURRENT_BINARY_DIR}/layers/core-links.txt
-                 "-DALLOWED=glm::glm|speculum_warnings" -P ${layers_dir}/CheckLinks.cmake)
+                 "-DALLOWED=glm::glm|meshoptimizer::meshoptimizer|speculum_warnings" -P ${layers_dir}/CheckLinks.cmake)
 set_tests_properties(layers_core_links PROPERTIES LABELS unit TIMEOUT 60)
 
 # The model and the view link nothing that draws (no render GL, tracer or accuracy, no epoxy or EGL), so

@@ -27,6 +27,7 @@ SceneData everythingScene(const QDir& folder) {
     scene.settings.background = {0.05, 0.2, 0.3};
     scene.settings.mirrorDepth = 5;
     scene.settings.ambient = 0.35;
+    scene.settings.simplifyReflections = false;
     scene.camera.position = {1e5 + 0.125, -2.5, 7};
     scene.camera.target = {1e5, 0, 0};
     scene.camera.up = {0, 0, 1};

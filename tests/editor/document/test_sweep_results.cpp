@@ -108,9 +108,13 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
         openProject(scene, test::demoScenePath(), warnings).ok()); // teapot, marble mirror, no reflector
     const SceneData before = scene.toData();
     QUndoStack stack;
-    auto application = applySweepSettings(
-        scene, {{"map", "cube"}, {"technique", "texture"}, {"mirrorDepth", "1"}, {"tessellation", "4"}},
-        QStringLiteral("Apply Sweep Setting mirror-technique texture"));
+    auto application = applySweepSettings(scene,
+                                          {{"map", "cube"},
+                                           {"technique", "texture"},
+                                           {"mirrorDepth", "1"},
+                                           {"tessellation", "4"},
+                                           {"reflectedDetail", "full"}},
+                                          QStringLiteral("Apply Sweep Setting mirror-technique texture"));
     ASSERT_TRUE(application.command);
     ASSERT_EQ(application.skipped.size(), 1);
     EXPECT_EQ(application.skipped.front(), QStringLiteral("map = cube: the scene has no curved reflector"));
@@ -118,6 +122,7 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
     EXPECT_EQ(stack.count(), 1);
     EXPECT_EQ(stack.undoText(), QStringLiteral("Apply Sweep Setting mirror-technique texture"));
     EXPECT_EQ(scene.settings().mirrorDepth, 1);
+    EXPECT_FALSE(scene.settings().simplifyReflections);
     int mirrors = 0, teapots = 0;
     scene.forEachNode([&](const Node& node) {
         if (node.data().mirror) {

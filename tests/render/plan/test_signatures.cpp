@@ -38,7 +38,7 @@ std::vector<std::string> qualified(const std::string& type, const std::string& n
 
 std::vector<std::string> everyField() {
     std::vector<std::vector<std::string>> lists = {
-        SPECULUM_FIELDS(Settings, background, mirrorDepth, ambient),
+        SPECULUM_FIELDS(Settings, background, mirrorDepth, ambient, simplifyReflections),
         SPECULUM_FIELDS(Camera, position, target, up, fovY, near, far),
         SPECULUM_FIELDS(TextureSource, path, image, wrapS, wrapT),
         SPECULUM_FIELDS(Material, color, ambient, diffuse, specular, shininess, emission, specularColor,
@@ -228,6 +228,8 @@ std::vector<Row> table() {
          "the camera's nesting limit: the map nests to the reflector's own mirrorDepth"},
         {"Settings.ambient", "", [](FrameInput& f) { f.settings.ambient = 0.6; }, true, false,
          "lights the map's scene; " + notCast},
+        {"Settings.simplifyReflections", "", [](FrameInput& f) { f.settings.simplifyReflections = false; },
+         true, false, "the map may draw big meshes simplified; shadow maps always draw them whole"},
         // Camera
         {"Camera.position", "",
          [](FrameInput& f) {
