@@ -1,6 +1,7 @@
 #include "editor/ui/Editor.hpp"
 
 #include "editor/document/SceneAnimation.hpp"
+#include "editor/ui/AppIdentity.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Screenshot.hpp"
 #include "editor/view/AnimationClock.hpp"
@@ -31,6 +32,9 @@ int runEditor(int& argc, char** argv, const std::string& projectPath) {
     QApplication::setOrganizationName(QStringLiteral("speculum"));
     QApplication::setApplicationName(QStringLiteral("speculum"));
     QApplication::setApplicationVersion(QStringLiteral(SPECULUM_VERSION));
+    // Wayland names a window's application by its desktop entry; X11 takes the icon from the window.
+    QGuiApplication::setDesktopFileName(QString::fromLatin1(kApplicationId));
+    QApplication::setWindowIcon(applicationIcon());
 
     const ScreenshotRequest screenshot = screenshotRequestFromEnvironment();
 

@@ -158,6 +158,8 @@ protected:
 private slots:
     void onNew();
     void onOpen();
+    void onOpenExample(); // File ▸ Open Example…: the open dialog in the example projects' folder
+    void openFromDialog(const QString& title, const QString& folder);
     bool onSave();
     bool onSaveAs();
     void onImportModel(bool asReflector);

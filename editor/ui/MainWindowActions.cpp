@@ -4,6 +4,7 @@
 #include "editor/document/ModelFormats.hpp"
 #include "editor/document/NodeFactory.hpp"
 #include "editor/document/Scene.hpp"
+#include "editor/ui/AppIdentity.hpp"
 #include "editor/ui/ExportStillDialog.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/SceneTreePanel.hpp"
@@ -187,11 +188,26 @@ void MainWindow::onNew() {
 }
 
 void MainWindow::onOpen() {
+    openFromDialog(tr("Open Project"), dialogFolder());
+}
+
+void MainWindow::onOpenExample() {
+    const QString folder = examplesFolder();
+    if (folder.isEmpty()) {
+        QMessageBox::warning(this, tr("Open Example"),
+                             tr("The example projects are not installed (looked for share/speculum/scenes "
+                                "beside %1).")
+                                 .arg(shown(QCoreApplication::applicationDirPath())));
+        return;
+    }
+    openFromDialog(tr("Open Example"), folder);
+}
+
+void MainWindow::openFromDialog(const QString& title, const QString& folder) {
     if (!maybeSave()) {
         return;
     }
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open Project"), dialogFolder(), kProjectFilter);
+    const QString path = QFileDialog::getOpenFileName(this, title, folder, kProjectFilter);
     if (path.isEmpty()) {
         return;
     }
@@ -349,6 +365,8 @@ void MainWindow::createActions() {
             this, &MainWindow::onNew);
     connect(makeAction(file, QStringLiteral("actionOpen"), tr("&Open…"), QKeySequence::Open),
             &QAction::triggered, this, &MainWindow::onOpen);
+    connect(makeAction(file, QStringLiteral("actionOpenExample"), tr("Open &Example…")), &QAction::triggered,
+            this, &MainWindow::onOpenExample);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     rebuildRecentMenu();

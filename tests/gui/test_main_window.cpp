@@ -4,6 +4,7 @@
 #include "editor/document/Commands.hpp"
 #include "editor/document/NewScene.hpp"
 #include "editor/document/Scene.hpp"
+#include "editor/ui/AppIdentity.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
@@ -324,6 +325,22 @@ TEST_F(MainWindowTest, NewAndSaveAs) {
     auto reopened = m_window->openProjectFile(copy);
     ASSERT_TRUE(reopened.ok()) << reopened.error();
     EXPECT_EQ(m_window->scene().topLevelNodes().size(), 3u);
+}
+
+// File ▸ Open Example… opens the dialog in the example projects' folder: here, run from the build folder,
+// the source tree's (installed, <prefix>/share/speculum/scenes; tests/install checks that layout).
+TEST_F(MainWindowTest, OpenExampleFindsTheExampleProjects) {
+    QAction* openExample = m_window->findChild<QAction*>(QStringLiteral("actionOpenExample"));
+    ASSERT_NE(openExample, nullptr);
+    EXPECT_EQ(openExample->text(), QStringLiteral("Open &Example…"));
+    const QString folder = speculum::ui::examplesFolder();
+    ASSERT_FALSE(folder.isEmpty());
+    for (const char* demo : {"teapot", "mirrors", "chrome", "models"}) {
+        EXPECT_TRUE(QFile::exists(folder + QStringLiteral("/%1.speculum.json").arg(QLatin1String(demo))))
+            << demo;
+    }
+    EXPECT_FALSE(speculum::ui::applicationIcon().isNull()) << "a window icon, installed or not";
+    EXPECT_FALSE(speculum::ui::applicationIcon().pixmap(64).isNull());
 }
 
 TEST_F(MainWindowTest, PlayingAnimatesWithoutBeingAsked) {
