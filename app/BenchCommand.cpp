@@ -5,6 +5,7 @@
 #include "accuracy/StagedOutput.hpp"
 #include "accuracy/SweepRun.hpp"
 #include "app/OutputPaths.hpp"
+#include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
 #include "render/Renderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
@@ -48,7 +49,8 @@ std::string outputMessage(std::string message, const StagedOutput& output) {
 }
 
 void progress(const std::string& line) {
-    std::cerr << "speculum: bench: " << line << std::endl;
+    static Progress steps("bench");
+    steps.step(line);
 }
 
 volatile std::sig_atomic_t g_stopSignal = 0;

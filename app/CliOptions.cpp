@@ -4,6 +4,7 @@
 #include "render/StillRenderer.hpp"
 #include "render/io/Printable.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -134,148 +135,209 @@ std::string usageText() {
            "and export; --keep-going goes on without it (a warning). Everything a frame drops (lights "
            "beyond\n"
            "8, a mirror it cannot reflect) is a warning on stderr. An output that is an input (the project,\n"
-           "a model, a texture) is refused. Exit status: 0 done, 1 failed, 2 bad command line.\n";
+           "a model, a texture) is refused. Exit status: 0 done, 1 failed, 2 bad command line.\n"
+           "Every command takes --help (its own options), -q/--quiet (no progress on stderr) and\n"
+           "--opt=value as well as --opt value.\n";
 }
+
+namespace {
+
+// What `speculum COMMAND --help` says above the options.
+const char* describe(Command command) {
+    switch (command) {
+    case Command::Render:
+        return "Writes a still of PROJECT to OUT: PNG, JPEG, TIFF or EXR by its extension.";
+    case Command::Explain:
+        return "Renders a frame of PROJECT and lists the passes that ran and the effects skipped, with "
+               "reasons and times.";
+    case Command::Bench:
+        return "Sweeps the settings PROJECT uses, times each and measures its error against the exact "
+               "tracer; writes results.csv, results.json, plots and report.md into DIR.";
+    case Command::Time:
+        return "Draws frames of PROJECT into an 8-bit target like a window's and prints the median, "
+               "minimum and maximum frame time and each pass kind's share.";
+    case Command::Export:
+        return "Writes PROJECT as glTF 2.0: OUT.glb (one file) or OUT.gltf (with its .bin and images).";
+    case Command::Editor:
+    case Command::Help:
+    case Command::Version:
+        break;
+    }
+    return "";
+}
+
+// The values of a command's options as typed: checked after parsing, with the same messages whatever
+// form they came in (--size 64x36, --size=64x36).
+struct Typed {
+    std::string size, ssaa, time, frame, frames;
+};
+
+render::Status checkValues(const Typed& t, CliOptions& o) {
+    if (!t.size.empty()) {
+        static const std::regex size(R"((\d+)[xX](\d+))");
+        std::smatch m;
+        if (!std::regex_match(t.size, m, size))
+            return Error{"--size: expected WIDTHxHEIGHT such as 1280x720, got " + render::quoted(t.size)};
+        // No limit per side: stills larger than the GPU's limits render in tiles. Only sizes whose pixels
+        // would not fit in memory are refused, here, before any work.
+        constexpr int kMaxSide = std::numeric_limits<int>::max();
+        auto w = parseInt("--size width", m[1].str(), 1, kMaxSide);
+        if (!w)
+            return Error{w.error()};
+        auto h = parseInt("--size height", m[2].str(), 1, kMaxSide);
+        if (!h)
+            return Error{h.error()};
+        if (render::Status fits = render::checkStillSize(*w, *h); !fits)
+            return Error{"--size: " + fits.error()};
+        o.width = *w;
+        o.height = *h;
+        o.sizeGiven = true;
+    }
+    if (!t.ssaa.empty()) {
+        auto n = parseInt("--ssaa", t.ssaa, render::kMinSsaa, render::kMaxSsaa);
+        if (!n)
+            return Error{n.error()};
+        o.ssaa = *n;
+    }
+    if (!t.time.empty()) {
+        auto seconds = parseTime(t.time);
+        if (!seconds)
+            return Error{seconds.error()};
+        o.time = *seconds;
+    }
+    if (!t.frame.empty()) {
+        auto n = parseInt("--frame", t.frame, 1, 100);
+        if (!n)
+            return Error{n.error()};
+        o.frame = *n;
+    }
+    if (!t.frames.empty()) {
+        auto n = parseInt("--frames", t.frames, 1, 100000);
+        if (!n)
+            return Error{n.error()};
+        o.frames = *n;
+    }
+    return render::Done{};
+}
+
+// The option an error message is about: CLI11 names it first ("--size: 1 required TEXT missing").
+std::string optionNamed(const std::string& what) {
+    const std::size_t dash = what.find("-");
+    if (dash == std::string::npos)
+        return {};
+    const std::size_t end = what.find_first_of(": ", dash);
+    return what.substr(dash, end == std::string::npos ? std::string::npos : end - dash);
+}
+
+// One command's options, parsed by CLI11: --opt value and --opt=value alike, -h/--help for the command's
+// own help. Values are kept as typed and checked by checkValues, so every form gets the same message.
+render::Result<CliOptions> parseCommand(Command command, const std::string& name,
+                                        const std::vector<std::string>& rest) {
+    CliOptions o;
+    o.command = command;
+    Typed typed;
+    CLI::App app(describe(command), "speculum " + name);
+    app.set_help_flag("-h,--help", "Print this help and exit");
+    // Unknown words are checked below, to name them the way every other error of speculum does.
+    app.allow_extras();
+    app.add_option("PROJECT", o.project, "The project file (*.speculum.json)")->type_name("");
+    const bool renders = command == Command::Render || command == Command::Explain;
+    if (command == Command::Render || command == Command::Export)
+        app.add_option("-o,--output", o.output,
+                       command == Command::Render ? "The image to write (.png, .jpg, .tif, .exr)"
+                                                  : "The glTF file to write (.glb or .gltf)")
+            ->type_name("OUT");
+    if (command == Command::Bench)
+        app.add_option("--out", o.outDir, "The folder for the results (made if missing)")->type_name("DIR");
+    if (renders || command == Command::Time || command == Command::Bench)
+        app.add_option("--size", typed.size, "WIDTHxHEIGHT of the frame (default 1280x720)")
+            ->type_name("WxH");
+    if (command == Command::Render) {
+        app.add_option("--ssaa", typed.ssaa, "Average NxN samples per pixel (1..16)")->type_name("N");
+        app.add_flag("--reference", o.reference, "Draw the still with the exact tracer");
+    }
+    if (renders || command == Command::Time)
+        app.add_option("--time", typed.time, "Evaluate animations at T seconds (default 0)")->type_name("T");
+    if (command == Command::Explain)
+        app.add_option("--frame", typed.frame, "Explain the Nth of N identical frames (1..100)")
+            ->type_name("N");
+    if (command == Command::Explain || command == Command::Time)
+        app.add_flag("--json", o.json, "Print JSON");
+    if (command == Command::Time) {
+        app.add_option("--frames", typed.frames, "Frames timed after 5 warm-up frames (default 100)")
+            ->type_name("N");
+        app.add_flag("--animated", o.animated, "Play the animation at 60 frames a second");
+        app.add_flag("--half-float", o.halfFloat, "Draw through the half-float buffer, to compare");
+    }
+    if (command == Command::Bench)
+        app.add_flag("--quick", o.quick, "Fewer points at 480x270");
+    if (command != Command::Explain)
+        app.add_flag("--keep-going", o.keepGoing, "A missing or unreadable model or texture is a warning");
+    app.add_flag("-q,--quiet", o.quiet, "No progress on stderr (warnings and errors still)");
+
+    std::vector<std::string> reversed(rest.rbegin(), rest.rend()); // CLI11 reads the vector from its back
+    try {
+        app.parse(reversed);
+    } catch (const CLI::CallForHelp&) {
+        o.command = Command::Help;
+        o.helpText = app.help();
+        return o;
+    } catch (const CLI::ParseError& e) {
+        const std::string option = optionNamed(e.what());
+        if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) && !option.empty())
+            return Error{option + ": missing value"};
+        return Error{name + ": " + render::printable(e.what(), 200) + " (see speculum " + name + " --help)"};
+    }
+    for (const std::string& extra : app.remaining()) {
+        if (!extra.empty() && extra[0] == '-')
+            return Error{name + ": unknown option " + render::quoted(extra) + " (see speculum " + name +
+                         " --help)"};
+        return Error{name + ": unexpected argument " + render::quoted(extra)};
+    }
+    if (render::Status values = checkValues(typed, o); !values)
+        return Error{values.error()};
+    if (o.project.empty())
+        return Error{name + ": missing PROJECT file"};
+    if (command == Command::Render && o.output.empty())
+        return Error{"render: missing -o OUT"};
+    if (command == Command::Export && o.output.empty())
+        return Error{"export: missing -o OUT.glb|OUT.gltf"};
+    if (command == Command::Bench && o.outDir.empty())
+        return Error{"bench: missing --out DIR"};
+    return o;
+}
+
+} // namespace
 
 render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
     CliOptions o;
-    std::size_t i = 0;
     if (args.empty())
         return o;
     const std::string& first = args[0];
     if (first == "-h" || first == "--help" || first == "help") {
         o.command = Command::Help;
+        o.helpText = usageText();
         return o;
     }
     if (first == "--version") {
         o.command = Command::Version;
         return o;
     }
-    if (first == "render")
-        o.command = Command::Render;
-    else if (first == "explain")
-        o.command = Command::Explain;
-    else if (first == "bench")
-        o.command = Command::Bench;
-    else if (first == "export")
-        o.command = Command::Export;
-    else if (first == "time")
-        o.command = Command::Time;
-    else if (!first.empty() && first[0] == '-')
+    static const std::pair<const char*, Command> kNamed[] = {{"render", Command::Render},
+                                                             {"explain", Command::Explain},
+                                                             {"bench", Command::Bench},
+                                                             {"export", Command::Export},
+                                                             {"time", Command::Time}};
+    for (const auto& [word, command] : kNamed)
+        if (first == word)
+            return parseCommand(command, first, std::vector<std::string>(args.begin() + 1, args.end()));
+    if (!first.empty() && first[0] == '-')
         return Error{"unknown option " + render::quoted(first) + " (see speculum --help)"};
-    if (o.command == Command::Editor) {
-        if (looksLikeCommand(first, args.size()))
-            return Error{unknownCommand(first)};
-        if (args.size() > 1)
-            return Error{"the editor takes one project file, got " + std::to_string(args.size())};
-        o.project = first;
-        return o;
-    }
-    const std::string name = first;
-    ++i;
-
-    auto needValue = [&](const std::string& option) -> render::Result<std::string> {
-        if (i + 1 >= args.size())
-            return Error{option + ": missing value"};
-        return args[++i];
-    };
-    for (; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const bool renderOrExplain = o.command == Command::Render || o.command == Command::Explain;
-        const bool timed = o.command == Command::Time;
-        if ((a == "-o" || a == "--output") &&
-            (o.command == Command::Render || o.command == Command::Export)) {
-            auto v = needValue(a);
-            if (!v)
-                return Error{v.error()};
-            o.output = *v;
-        } else if (a == "--out" && o.command == Command::Bench) {
-            auto v = needValue(a);
-            if (!v)
-                return Error{v.error()};
-            o.outDir = *v;
-        } else if (a == "--size" && (renderOrExplain || timed || o.command == Command::Bench)) {
-            auto v = needValue(a);
-            if (!v)
-                return Error{v.error()};
-            static const std::regex size(R"((\d+)[xX](\d+))");
-            std::smatch m;
-            if (!std::regex_match(*v, m, size))
-                return Error{"--size: expected WIDTHxHEIGHT such as 1280x720, got " + render::quoted(*v)};
-            // No limit per side: stills larger than the GPU's limits render in tiles. Only sizes whose
-            // pixels would not fit in memory are refused, here, before any work.
-            constexpr int kMaxSide = std::numeric_limits<int>::max();
-            auto w = parseInt("--size width", m[1].str(), 1, kMaxSide);
-            if (!w)
-                return Error{w.error()};
-            auto h = parseInt("--size height", m[2].str(), 1, kMaxSide);
-            if (!h)
-                return Error{h.error()};
-            if (render::Status size = render::checkStillSize(*w, *h); !size)
-                return Error{"--size: " + size.error()};
-            o.width = *w;
-            o.height = *h;
-            o.sizeGiven = true;
-        } else if (a == "--ssaa" && o.command == Command::Render) {
-            auto v = needValue(a);
-            if (!v)
-                return Error{v.error()};
-            auto n = parseInt("--ssaa", *v, render::kMinSsaa, render::kMaxSsaa);
-            if (!n)
-                return Error{n.error()};
-            o.ssaa = *n;
-        } else if (a == "--time" && (renderOrExplain || timed)) {
-            auto v = needValue(a);
-            if (!v)
-                return Error{v.error()};
-            auto t = parseTime(*v);
-            if (!t)
-                return Error{t.error()};
-            o.time = *t;
-        } else if (a == "--reference" && o.command == Command::Render) {
-            o.reference = true;
-        } else if (a == "--frame" && o.command == Command::Explain) {
-            auto v = needValue(a);
-            if (!v)
-                return Error{v.error()};
-            auto n = parseInt("--frame", *v, 1, 100);
-            if (!n)
-                return Error{n.error()};
-            o.frame = *n;
-        } else if (a == "--json" && (o.command == Command::Explain || timed)) {
-            o.json = true;
-        } else if (a == "--frames" && timed) {
-            auto v = needValue(a);
-            if (!v)
-                return Error{v.error()};
-            auto n = parseInt("--frames", *v, 1, 100000);
-            if (!n)
-                return Error{n.error()};
-            o.frames = *n;
-        } else if (a == "--animated" && timed) {
-            o.animated = true;
-        } else if (a == "--half-float" && timed) {
-            o.halfFloat = true;
-        } else if (a == "--keep-going" && o.command != Command::Explain) {
-            o.keepGoing = true;
-        } else if (a == "--quick" && o.command == Command::Bench) {
-            o.quick = true;
-        } else if (!a.empty() && a[0] == '-') {
-            return Error{name + ": unknown option " + render::quoted(a) + " (see speculum --help)"};
-        } else if (o.project.empty()) {
-            o.project = a;
-        } else {
-            return Error{name + ": unexpected argument " + render::quoted(a)};
-        }
-    }
-    if (o.project.empty())
-        return Error{name + ": missing PROJECT file"};
-    if (o.command == Command::Render && o.output.empty())
-        return Error{"render: missing -o OUT"};
-    if (o.command == Command::Export && o.output.empty())
-        return Error{"export: missing -o OUT.glb|OUT.gltf"};
-    if (o.command == Command::Bench && o.outDir.empty())
-        return Error{"bench: missing --out DIR"};
+    if (looksLikeCommand(first, args.size()))
+        return Error{unknownCommand(first)};
+    if (args.size() > 1)
+        return Error{"the editor takes one project file, got " + std::to_string(args.size())};
+    o.project = first;
     return o;
 }
 

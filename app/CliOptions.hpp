@@ -32,6 +32,8 @@ struct CliOptions {
     int frames = 100;       // time: frames timed after the warm-up
     bool animated = false;  // time: the scene's animation plays (1/60 s a frame), maps re-rendered as needed
     bool halfFloat = false; // time: the camera's view always in half float with its composite (to compare)
+    bool quiet = false;     // --quiet: no progress on stderr (warnings and errors still)
+    std::string helpText;   // Help: what to print (the usage, or one command's own help)
 };
 
 // Exit status for a command line that cannot be parsed (as for the usage errors of most tools).

@@ -2,6 +2,7 @@
 
 #include "app/BenchCommand.hpp"
 #include "app/OutputPaths.hpp"
+#include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
 #include "editor/document/GltfExport.hpp"
 #include "render/FrameReport.hpp"
@@ -186,17 +187,15 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
     settings.width = options.width;
     settings.height = options.height;
     settings.ssaa = options.ssaa;
-    int lastPercent = -1;
+    Progress tracing("tracing");
     auto progress = [&](double fraction) {
-        // Whole tens of percent, once the render has taken a moment: quiet for tiny frames.
-        const int percent = static_cast<int>(fraction * 10.0) * 10;
-        if (percent != lastPercent && std::chrono::duration<double>(Clock::now() - start).count() > 0.5) {
-            std::cerr << "speculum: tracing " << percent << "%\n";
-            lastPercent = percent;
-        }
+        // Once the render has taken a moment: nothing for tiny frames.
+        if (std::chrono::duration<double>(Clock::now() - start).count() > 0.5)
+            tracing.update(fraction);
         return true;
     };
     auto traced = tracer->render(settings, progress);
+    tracing.finish();
     if (!traced) {
         fail("render: " + traced.error());
         return 1;
@@ -263,14 +262,15 @@ int runRender(const CliOptions& options) {
     }
     // Progress on stderr for renders that take a while: every sample when supersampling.
     const int samples = options.ssaa * options.ssaa;
+    Progress rendering("rendering");
     auto progress = [&](double fraction, const std::string& stage) {
         if (samples > 1 || std::chrono::duration<double>(Clock::now() - start).count() > 1.0)
-            std::cerr << "speculum: rendering " << static_cast<int>(fraction * 100.0 + 0.5) << "% (" << stage
-                      << ")\n";
+            rendering.update(fraction, stage);
         return true;
     };
     render::StillSettings settings{options.width, options.height, options.ssaa};
     auto still = render::renderStill(*frame->renderer, frame->input, settings, progress);
+    rendering.finish();
     if (!still) {
         fail("render: " + still.error());
         return 1;
@@ -295,9 +295,10 @@ int runRender(const CliOptions& options) {
         fail(written.error());
         return 1;
     }
-    std::cerr << "speculum: rendered " << sizeText(options.width, options.height) << " with "
-              << still->samples << (still->samples == 1 ? " sample" : " samples") << " per pixel in "
-              << static_cast<int>(still->totalMs + 0.5) << " ms\n";
+    if (!Progress::quiet())
+        std::cerr << "speculum: rendered " << sizeText(options.width, options.height) << " with "
+                  << still->samples << (still->samples == 1 ? " sample" : " samples") << " per pixel in "
+                  << static_cast<int>(still->totalMs + 0.5) << " ms\n";
     std::cout << render::printable(options.output, 4096) << "\n";
     return 0;
 }

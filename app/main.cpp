@@ -1,6 +1,7 @@
 // speculum: the editor when run with no command (or a project file), the headless commands otherwise.
 #include "app/CliOptions.hpp"
 #include "app/HeadlessCommands.hpp"
+#include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
 #include "app/TimeCommand.hpp"
 #include "editor/ui/Editor.hpp"
@@ -34,9 +35,10 @@ int run(int argc, char** argv) {
         printError(options.error());
         return kUsageError;
     }
+    Progress::setQuiet(options->quiet);
     switch (options->command) {
     case Command::Help:
-        std::cout << usageText();
+        std::cout << options->helpText;
         return 0;
     case Command::Version:
         std::cout << "speculum " << SPECULUM_VERSION << "\n";

@@ -33,6 +33,8 @@ std::string demo() {
     return std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/teapot.speculum.json";
 }
 
+std::string readAll(const fs::path& path);
+
 class Cli : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -70,6 +72,84 @@ TEST_F(Cli, RenderWritesEveryFormatByExtension) {
         EXPECT_EQ(input->spec().width, 64);
         EXPECT_NE(run.err.find("rendering"), std::string::npos) << "supersampled renders report progress";
     }
+}
+
+// Each command has help of its own, on stdout with status 0, naming its own options.
+TEST_F(Cli, EachCommandHasItsOwnHelp) {
+    const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
+        {"render", {"--output", "--size", "--ssaa", "--time", "--reference", "--keep-going"}},
+        {"explain", {"--size", "--time", "--frame", "--json"}},
+        {"bench", {"--out", "--size", "--quick", "--keep-going"}},
+        {"time", {"--size", "--frames", "--animated", "--half-float", "--json"}},
+        {"export", {"--output", "--keep-going"}},
+    };
+    for (const auto& [command, options] : commands) {
+        for (const char* flag : {" --help", " -h", " scene.speculum.json --help"}) {
+            const CliRun run = speculum(command + flag);
+            EXPECT_EQ(run.status, 0) << command << flag << ": " << run.err;
+            EXPECT_TRUE(run.err.empty()) << run.err;
+            EXPECT_NE(run.out.find("Usage: speculum " + command + " [OPTIONS] [PROJECT]"), std::string::npos)
+                << run.out;
+            for (const std::string& option : options)
+                EXPECT_NE(run.out.find(option), std::string::npos) << command << " --help lacks " << option;
+            EXPECT_NE(run.out.find("--quiet"), std::string::npos);
+        }
+    }
+    EXPECT_EQ(speculum("explain --help").out.find("--ssaa"), std::string::npos) << "render's options only";
+}
+
+// --opt=value means --opt value, and a bad value gets the same message either way.
+TEST_F(Cli, OptionsTakeTheirValueAfterAnEqualsSignToo) {
+    const fs::path out = m_dir / "equals.png";
+    const CliRun run =
+        speculum("render " + demo() + " --output=" + out.string() + " --size=64x36 --ssaa=2 --time=0.5");
+    ASSERT_EQ(run.status, 0) << run.err;
+    auto input = OIIO::ImageInput::open(out.string());
+    ASSERT_TRUE(input);
+    EXPECT_EQ(input->spec().width, 64);
+    EXPECT_EQ(input->spec().height, 36);
+    for (const char* bad : {"--size=big", "--ssaa=99", "--time=-1"}) {
+        const std::string spaced = std::string(bad).replace(std::string(bad).find('='), 1, " ");
+        const CliRun equals = speculum("render " + demo() + " -o " + out.string() + " " + bad);
+        const CliRun separate = speculum("render " + demo() + " -o " + out.string() + " " + spaced);
+        EXPECT_EQ(equals.status, 2) << bad;
+        EXPECT_EQ(equals.err, separate.err) << bad;
+    }
+    EXPECT_NE(
+        speculum("render " + demo() + " -o " + out.string() + " --size").err.find("--size: missing value"),
+        std::string::npos);
+}
+
+// --quiet leaves stderr to warnings and errors; without it a log gets a line per tenth of the work, and a
+// terminal one line rewritten in place.
+TEST_F(Cli, ProgressIsQuietOnRequestSparseInALogAndOneLineOnATerminal) {
+    const fs::path out = m_dir / "progress.png";
+    const std::string render = "render " + demo() + " -o " + out.string() + " --size 48x27 --ssaa 5";
+    const CliRun quiet = speculum(render + " --quiet");
+    ASSERT_EQ(quiet.status, 0) << quiet.err;
+    EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+    EXPECT_NE(quiet.out.find(out.string()), std::string::npos) << "the output's path still goes to stdout";
+    EXPECT_EQ(speculum(render + " -q --size 0x0").status, 2) << "errors still print and fail";
+
+    const CliRun logged = speculum(render); // stderr is a file here
+    ASSERT_EQ(logged.status, 0) << logged.err;
+    std::size_t lines = 0;
+    for (std::size_t at = logged.err.find("speculum: rendering "); at != std::string::npos;
+         at = logged.err.find("speculum: rendering ", at + 1))
+        ++lines;
+    EXPECT_GE(lines, 2u) << logged.err;
+    EXPECT_LE(lines, 11u) << "25 samples, at most a line per tenth: " << logged.err;
+    EXPECT_EQ(logged.err.find('\r'), std::string::npos);
+
+    // Under a pseudo-terminal (script(1)): carriage returns and erase-to-end-of-line, one final line.
+    const fs::path typescript = m_dir / "typescript.txt";
+    const std::string command = "script -qefc \"" + std::string(SPECULUM_BINARY) + " " + render + "\" " +
+                                typescript.string() + " >/dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const std::string screen = readAll(typescript);
+    EXPECT_NE(screen.find("\rspeculum: rendering "), std::string::npos) << screen;
+    EXPECT_NE(screen.find("\x1b[K"), std::string::npos) << screen;
+    EXPECT_NE(screen.find("rendering 100%"), std::string::npos) << screen;
 }
 
 TEST_F(Cli, BadInputFailsWithOneLineAndWritesNothing) {
