@@ -11,8 +11,10 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <system_error>
 #include <unistd.h>
 #include <vector>
@@ -66,12 +68,66 @@ float halfRepresentable(float value) {
     return std::clamp(value, -kHalfMax, kHalfMax);
 }
 
+// Every other extension OpenImageIO has a writer for, by its own lists ("extension_list",
+// "output_format_list"), mapped to the writer's format name: ".webp" → "webp", ".ppm" → "pnm". Writers that
+// make no image file of the frame are left out: "null" and "term" (nothing written, a terminal) and "zfile"
+// (depth only).
+const std::map<std::string, std::string>& otherWritableExtensions() {
+    static const std::map<std::string, std::string> writable = [] {
+        std::map<std::string, std::string> out;
+        std::string outputs;
+        std::string extensions;
+        OIIO::getattribute("output_format_list", outputs);
+        OIIO::getattribute("extension_list", extensions);
+        std::set<std::string> writers;
+        for (std::size_t at = 0; at <= outputs.size();) {
+            const std::size_t end = std::min(outputs.find(',', at), outputs.size());
+            writers.insert(outputs.substr(at, end - at));
+            at = end + 1;
+        }
+        for (const char* excluded : {"null", "term", "zfile"}) {
+            writers.erase(excluded);
+        }
+        // "openexr:exr,sxr,mxr;tiff:tif,tiff,tx,...;..."
+        for (std::size_t at = 0; at < extensions.size();) {
+            const std::size_t end = std::min(extensions.find(';', at), extensions.size());
+            const std::string entry = extensions.substr(at, end - at);
+            at = end + 1;
+            const std::size_t colon = entry.find(':');
+            if (colon == std::string::npos || !writers.count(entry.substr(0, colon))) {
+                continue;
+            }
+            const std::string format = entry.substr(0, colon);
+            for (std::size_t e = colon + 1; e <= entry.size();) {
+                const std::size_t comma = std::min(entry.find(',', e), entry.size());
+                out.emplace("." + entry.substr(e, comma - e), format);
+                e = comma + 1;
+            }
+        }
+        return out;
+    }();
+    return writable;
+}
+
 std::optional<Format> formatFor(const std::string& path) {
     const std::string ext = lowerExtension(path);
     for (const Extension& e : kExtensions) {
         if (ext == e.name) {
             return e.format;
         }
+    }
+    const auto& others = otherWritableExtensions();
+    if (const auto it = others.find(ext); it != others.end() && !ext.empty()) {
+        // High dynamic range formats keep linear light (Radiance RGBE, the float PFM, OpenEXR's other
+        // names); every other format is 8-bit sRGB, with alpha where the writer stores it.
+        // The writer is asked by the file's own name: OIIO 2.4 lists .pfm under pnm, whose writer refuses it.
+        const std::unique_ptr<OIIO::ImageOutput> writer = OIIO::ImageOutput::create("x" + ext);
+        if (!writer) {
+            return std::nullopt;
+        }
+        const bool hdr = it->second == "hdr" || it->second == "openexr" || ext == ".pfm";
+        return Format{hdr ? Encoding::LinearHalf : Encoding::Srgb8, writer->supports("alpha") != 0, false,
+                      true};
     }
     return std::nullopt;
 }
@@ -166,9 +222,16 @@ Status writeAtomically(const std::string& path, int width, int height, int chann
                        const ImageMetadata& metadata) {
     std::vector<unsigned char> encoded;
     OIIO::Filesystem::IOVecOutput memory(encoded);
-    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path, &memory);
+    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
     if (!out) {
         return failure(path, oneLine(OIIO::geterror()));
+    }
+    // Into memory where the writer can (OIIO refuses to create one with a proxy it does not support).
+    if (format.inMemory && out->supports("ioproxy")) {
+        out = OIIO::ImageOutput::create(path, &memory);
+        if (!out) {
+            return failure(path, oneLine(OIIO::geterror()));
+        }
     }
     // A writer that cannot (or must not, see Format::inMemory) write into memory writes a file by name:
     // it gets a staged temporary path, its errors are checked after close(), and the file is read back.
@@ -260,6 +323,18 @@ std::string supportedImageFormats() {
         list += list.empty() ? "" : ", ";
         list += e.name;
     }
+    std::string others;
+    for (const auto& [ext, format] : otherWritableExtensions()) {
+        const bool tuned = std::any_of(std::begin(kExtensions), std::end(kExtensions),
+                                       [&](const Extension& e) { return ext == e.name; });
+        if (!tuned && formatFor("x" + ext)) {
+            others += others.empty() ? "" : ", ";
+            others += ext;
+        }
+    }
+    if (!others.empty()) {
+        list += "; and through OpenImageIO: " + others;
+    }
     return list;
 }
 
@@ -280,6 +355,17 @@ Status writeImage(const std::string& path, const Image& linear, const ImageMetad
             for (int c = 0; c < 3; ++c) {
                 premultiplied[i * 4 + c] = halfRepresentable(premultiplied[i * 4 + c] * alpha);
             }
+        }
+        if (!format.keepsAlpha) { // RGBE and PFM hold colour only: alpha is dropped, colour kept as drawn
+            std::vector<float> rgb(pixels * 3);
+            for (std::size_t i = 0; i < pixels; ++i) {
+                for (int c = 0; c < 3; ++c) {
+                    // RGBE has no sign: a negative value (never radiance) would come back as garbage.
+                    rgb[i * 3 + c] = std::max(0.0f, halfRepresentable(linear.rgba[i * 4 + c]));
+                }
+            }
+            return writeAtomically(path, linear.width, linear.height, 3, OIIO::TypeDesc::FLOAT, rgb.data(),
+                                   format, metadata);
         }
         return writeAtomically(path, linear.width, linear.height, 4, OIIO::TypeDesc::FLOAT,
                                premultiplied.data(), format, metadata);

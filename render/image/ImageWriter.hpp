@@ -35,7 +35,9 @@ Status checkImageTarget(const std::string& path, int width, int height);
 // before doing any expensive work.
 bool isSupportedImagePath(const std::string& path);
 
-// The supported extensions for messages: ".png, .jpg, .jpeg, .tif, .tiff, .exr".
+// The supported extensions for messages: ".png, .jpg, .jpeg, .tif, .tiff, .exr; and through OpenImageIO:
+// .bmp, ...": the first six tuned here, then every other format OpenImageIO writes (8-bit sRGB, or linear
+// float for .hdr and .pfm).
 std::string supportedImageFormats();
 
 } // namespace speculum::render

@@ -208,7 +208,7 @@ TEST_F(EditorOutput, ExportStillMatchesTheCommandLine) {
     EXPECT_NE(stopped.error().find("cancel"), std::string::npos) << stopped.error();
     EXPECT_FALSE(QFile::exists(cancelled));
     // Bad settings are refused before any work.
-    EXPECT_FALSE(m_window->exportStillFile(dir.filePath(QStringLiteral("still.bmp")), settings).ok());
+    EXPECT_FALSE(m_window->exportStillFile(dir.filePath(QStringLiteral("still.bmpx")), settings).ok());
     // The viewport still draws afterwards.
     EXPECT_TRUE(waitForFrames(*m_window));
 }

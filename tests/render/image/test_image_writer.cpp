@@ -182,6 +182,63 @@ TEST(ImageWriter, ExrIsLinearHalfWithPremultipliedAlphaAndMetadata) {
     EXPECT_EQ(back.spec.get_string_attribute("speculum:scene"), "mirrors.speculum.json");
 }
 
+// Every other format OpenImageIO writes is written too: lossless 8-bit ones hold the sRGB codes exactly
+// (with alpha where the format has it), Radiance HDR holds linear light; a name OIIO lists but cannot write
+// (.pfm, under its pnm writer) is refused up front, and the message lists what can be written.
+TEST(ImageWriter, OtherFormatsGoThroughOpenImageIO) {
+    const fs::path folder = test::freshTestFolder();
+    const Image frame = testFrame();
+    for (const char* ext : {".tga", ".bmp", ".ppm", ".sgi", ".dpx", ".hdr"}) {
+        const fs::path path = folder / (std::string("frame") + ext);
+        ASSERT_TRUE(isSupportedImagePath(path.string())) << ext;
+        const Status written = writeImage(path.string(), frame, testMetadata());
+        ASSERT_TRUE(written.ok()) << ext << ": " << written.error();
+        const ReadBack back = readBack(path);
+        ASSERT_EQ(back.spec.width, frame.width) << ext;
+        ASSERT_EQ(back.spec.height, frame.height) << ext;
+        const bool hdr = std::string(ext) == ".hdr";
+        const int channels = back.spec.nchannels;
+        for (int y = 0; y < frame.height; ++y) {
+            for (int x = 0; x < frame.width; ++x) {
+                const glm::vec4 expected = frame.at(x, y);
+                const float* got = &back.pixels[static_cast<std::size_t>(y * frame.width + x) * channels];
+                for (int c = 0; c < 3; ++c) {
+                    if (hdr) { // linear, RGBE's 8-bit mantissa: within 1% of the brightest channel
+                        const float largest = std::max({expected.r, expected.g, expected.b, 0.0f});
+                        EXPECT_NEAR(got[c], std::max(expected[c], 0.0f), 0.01f * largest + 1e-4f) << ext;
+                    } else {
+                        EXPECT_NEAR(got[c] * 255.0f,
+                                    std::round(linearToSrgb(std::clamp(expected[c], 0.0f, 1.0f)) * 255.0f),
+                                    1e-3f)
+                            << ext << " pixel " << x << "," << y << " channel " << c;
+                    }
+                }
+            }
+        }
+    }
+    // Lossy ones, on a frame big enough for JPEG 2000's tiles: the colour within a few codes.
+    const Image flat = flatFrame(64, 32, 0.2f, 0.5f, 0.8f);
+    for (const char* ext : {".webp", ".jp2"}) {
+        const fs::path path = folder / (std::string("flat") + ext);
+        const Status written = writeImage(path.string(), flat, testMetadata());
+        ASSERT_TRUE(written.ok()) << ext << ": " << written.error();
+        const ReadBack back = readBack(path);
+        ASSERT_EQ(back.spec.width, 64) << ext;
+        ASSERT_EQ(back.spec.height, 32) << ext;
+        const float* centre = &back.pixels[static_cast<std::size_t>(16 * 64 + 32) * back.spec.nchannels];
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(centre[c] * 255.0f, std::round(linearToSrgb(flat.at(32, 16)[c]) * 255.0f), 3.0f)
+                << ext;
+    }
+    EXPECT_FALSE(isSupportedImagePath("frame.pfm"));
+    EXPECT_FALSE(isSupportedImagePath("frame.null"));
+    const std::string list = supportedImageFormats();
+    EXPECT_EQ(list.rfind(".png, .jpg, .jpeg, .tif, .tiff, .exr; and through OpenImageIO: ", 0), 0u) << list;
+    for (const char* ext : {".webp", ".tga", ".bmp", ".hdr"})
+        EXPECT_NE(list.find(ext), std::string::npos) << ext;
+    EXPECT_EQ(list.find(".pfm"), std::string::npos) << list;
+}
+
 TEST(ImageWriter, SoftwareDefaultsToSpeculum) {
     const fs::path path = test::freshTestFolder() / "frame.png";
     ASSERT_TRUE(writeImage(path.string(), flatFrame(2, 2, 1, 1, 1)).ok());
@@ -224,9 +281,9 @@ TEST(ImageWriter, WritesToARelativePathInTheWorkingFolder) {
 
 TEST(ImageWriter, UnknownExtensionIsRefusedAndNothingIsWritten) {
     const fs::path folder = test::freshTestFolder();
-    const Status status = writeImage((folder / "frame.bmp").string(), flatFrame(2, 2, 1, 0, 0));
+    const Status status = writeImage((folder / "frame.bmpx").string(), flatFrame(2, 2, 1, 0, 0));
     ASSERT_FALSE(status.ok());
-    EXPECT_NE(status.error().find(".bmp"), std::string::npos) << status.error();
+    EXPECT_NE(status.error().find(".bmpx"), std::string::npos) << status.error();
     EXPECT_NE(status.error().find(".png"), std::string::npos) << status.error();
     EXPECT_NE(status.error().find(".exr"), std::string::npos) << status.error();
     EXPECT_TRUE(filesIn(folder).empty());
@@ -318,10 +375,13 @@ TEST(ImageWriter, SupportedPaths) {
          {"a.png", "a.PNG", "dir/a.jpg", "a.jpeg", "a.tif", "a.TIFF", "a.exr", "a.b.Exr"}) {
         EXPECT_TRUE(isSupportedImagePath(path)) << path;
     }
-    for (const char* path : {"a.bmp", "a", "png", "a.png.txt", "a.", ""}) {
+    for (const char* path :
+         {"a.txt", "a", "png", "a.png.txt", "a.", "", "a.pfm", "a.null", "a.term", "a.zfile"}) {
         EXPECT_FALSE(isSupportedImagePath(path)) << path;
     }
-    EXPECT_EQ(supportedImageFormats(), ".png, .jpg, .jpeg, .tif, .tiff, .exr");
+    EXPECT_EQ(
+        supportedImageFormats().rfind(".png, .jpg, .jpeg, .tif, .tiff, .exr; and through OpenImageIO: ", 0),
+        0u);
 }
 
 } // namespace
