@@ -17,9 +17,9 @@ inline constexpr double kSimplifiedShare = 1.0 / 8.0;
 inline constexpr std::size_t kSimplifiedMinimumTriangles = 20'000;
 inline constexpr float kSimplifyMaxError = 0.005f;
 
-// Sets mesh.coarse: a simplified triangle list over the mesh's own vertices (meshoptimizer's sloppy
-// simplifier, which clusters vertices: fast enough for every import, blind to uv seams), and the error it
-// reached. Leaves it empty for a mesh at or below kSimplifyAboveTriangles, or where simplifying would not
+// Sets mesh.coarse: a simplified triangle list over the mesh's own vertices (meshoptimizer's edge-collapse
+// simplifier, which keeps the surface closed and seams where uvs or normals split a vertex), and the error
+// it reached. Leaves it empty for a mesh at or below kSimplifyAboveTriangles, or where simplifying would not
 // remove at least a quarter of the triangles.
 void buildCoarseLevel(MeshData& mesh);
 
