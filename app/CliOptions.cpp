@@ -115,7 +115,8 @@ std::string usageText() {
            "[--json]\n"
            "  speculum export PROJECT -o OUT.glb|OUT.gltf [--keep-going]\n"
            "\n"
-           "render writes PNG, JPEG, TIFF or EXR (by the extension of OUT); --size defaults to 1280x720,\n"
+           "render writes PNG, JPEG, TIFF, EXR or another format OpenImageIO writes (by the extension of\n"
+           "OUT); --size defaults to 1280x720,\n"
            "--ssaa N averages NxN samples per pixel (1..16), --time evaluates animations at T seconds.\n"
            "explain renders a frame and lists the passes that ran and the effects skipped, with reasons;\n"
            "--frame N explains the Nth of N identical frames, showing what a static scene reuses.\n"
@@ -146,7 +147,9 @@ namespace {
 const char* describe(Command command) {
     switch (command) {
     case Command::Render:
-        return "Writes a still of PROJECT to OUT: PNG, JPEG, TIFF or EXR by its extension.";
+        return "Writes a still of PROJECT to OUT, in the format of its extension: PNG, JPEG, TIFF, EXR or "
+               "any "
+               "other format OpenImageIO writes (WebP, Targa, Radiance HDR, ...).";
     case Command::Explain:
         return "Renders a frame of PROJECT and lists the passes that ran and the effects skipped, with "
                "reasons and times.";
@@ -244,7 +247,7 @@ render::Result<CliOptions> parseCommand(Command command, const std::string& name
     const bool renders = command == Command::Render || command == Command::Explain;
     if (command == Command::Render || command == Command::Export)
         app.add_option("-o,--output", o.output,
-                       command == Command::Render ? "The image to write (.png, .jpg, .tif, .exr)"
+                       command == Command::Render ? "The image to write (.png, .jpg, .tif, .exr, .webp, ...)"
                                                   : "The glTF file to write (.glb or .gltf)")
             ->type_name("OUT");
     if (command == Command::Bench)
