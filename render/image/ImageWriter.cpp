@@ -324,7 +324,9 @@ std::string supportedImageFormats() {
         list += e.name;
     }
     std::string others;
-    for (const auto& [ext, format] : otherWritableExtensions()) {
+    for (const auto& entry : otherWritableExtensions()) {
+        // A named copy, not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+        const std::string& ext = entry.first;
         const bool tuned = std::any_of(std::begin(kExtensions), std::end(kExtensions),
                                        [&](const Extension& e) { return ext == e.name; });
         if (!tuned && formatFor("x" + ext)) {
