@@ -16,6 +16,13 @@ namespace speculum::render {
 // A snapshot of everything one frame needs, in plain structs. Transforms are double precision world
 // matrices; the renderer makes them camera-relative before converting to float.
 
+// How the rasterizer approximates a rough (glossy) reflection; the exact answer is the tracer's.
+// Mip: one lookup in the reflection's mip chain at a level set by the roughness alone (the cheap end).
+// Footprint: planar mirrors sample their reflection texture over the GGX lobe's footprint, which grows with
+// the distance from the mirror to what it reflects; the curved reflector reads the level of its
+// GGX-convolved (pre-filtered) map chain that matches its roughness.
+enum class GlossyFilter { Mip, Footprint };
+
 struct Settings {
     glm::dvec3 background{0.1, 0.1, 0.12};
     int mirrorDepth = 3;
@@ -23,6 +30,9 @@ struct Settings {
     // Reflected views and the environment map draw big meshes at their simplified level
     // (MeshData::coarse): an approximation the bench's reflected-detail family measures.
     bool simplifyReflections = true;
+    GlossyFilter glossyFilter = GlossyFilter::Footprint;
+    int glossyTaps = 16;         // lobe samples per pixel of a rough planar mirror (Footprint)
+    int prefilterSamples = 64;   // lobe samples per texel of the reflector's pre-filtered chain (Footprint)
 };
 
 struct Camera {
@@ -122,7 +132,8 @@ struct Mirror {
     MirrorTechnique technique = MirrorTechnique::Stencil;
     glm::dvec3 tint{1.0, 1.0, 1.0}; // multiplies the reflected light
     bool fresnel = false;           // Schlick: reflectivity rises towards 1 at grazing angles
-    double blur = 0.0;              // 0..1, texture technique only: how rough the reflection looks
+    // 0..1: GGX (Trowbridge–Reitz) microfacet roughness, α = roughness²; 0 is a perfect mirror.
+    double roughness = 0.0;
     Material material;
     bool hasMaterial = false;
 };
@@ -166,6 +177,7 @@ struct Reflector {
     ParallaxProxy parallax;
     ReflectorUpdate update = ReflectorUpdate::OnChange;
     int mirrorDepth = 1; // planar-mirror levels inside the environment map
+    double roughness = 0.0; // 0..1, GGX roughness of the reflection as for Mirror
 };
 
 struct FrameInput {

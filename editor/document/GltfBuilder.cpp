@@ -296,7 +296,7 @@ private:
 
     // ---- materials ----
 
-    // `metallic`/`roughness` given: a mirror or the reflector (their reflectivity and blur); otherwise
+    // `metallic`/`roughness` given: a mirror or the reflector (their reflectivity and roughness); otherwise
     // metallic comes from the specular colour and roughness from the shininess, both by inverting the
     // importer's conversion (ModelMaterials.cpp).
     int addMaterial(const std::string& owner, const MaterialComponent& m, std::optional<double> metallic,
@@ -385,7 +385,7 @@ private:
                 std::optional<double> metallic, roughness;
                 if (d.reflector) {
                     metallic = d.reflector->reflectivity;
-                    roughness = 0.0;
+                    roughness = d.reflector->roughness;
                 }
                 primitive->insert("material", addMaterial(name, d.material.value_or(MaterialComponent{}),
                                                           metallic, roughness));
@@ -443,7 +443,7 @@ private:
         if (!d.material) {
             look.color = glm::dvec3(0.95);
         }
-        primitive["material"] = addMaterial(name + " (mirror)", look, d.mirror->reflectivity, d.mirror->blur);
+        primitive["material"] = addMaterial(name + " (mirror)", look, d.mirror->reflectivity, d.mirror->roughness);
         return primitive;
     }
 

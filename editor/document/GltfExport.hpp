@@ -27,7 +27,8 @@ namespace speculum::document {
 // - Images: PNG and JPEG files (and embedded textures, "<model>#<name>") are copied byte for byte; any
 //   other format is decoded through OpenImageIO and written as PNG.
 // - A planar mirror becomes a quad of its size (the renderer's uvs) with metallic = its reflectivity and
-//   roughness = its blur; the curved reflector's mesh gets metallic = its reflectivity, roughness 0.
+//   roughness = its roughness; the curved reflector's mesh gets metallic = its reflectivity and its
+//   roughness (both are GGX roughness, α = roughness², as glTF's).
 // - Lights: KHR_lights_punctual point, spot (outer cone = spotAngle, inner = outer · (1 − spotBlend)) and
 //   directional lights with their colour and intensity (glTF's point lights fall off with distance,
 //   speculum's do not). A point light sits on its node; a spot or directional light on a child node

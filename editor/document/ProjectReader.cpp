@@ -632,8 +632,12 @@ private:
         });
         o.optional("tint", m.tint, readColor);
         o.optional("fresnel", m.fresnel, readBool);
-        o.optional("blur", m.blur, readNumber);
-        requireRange(m.blur, 0.0, 1.0, o.at("blur"));
+        // `blur` (before roughness existed) is read as the roughness, same value; `roughness` wins.
+        const bool hasRoughness = !o.get("roughness").isUndefined();
+        o.optional(hasRoughness ? "roughness" : "blur", m.roughness, readNumber);
+        requireRange(m.roughness, 0.0, 1.0, o.at(hasRoughness ? "roughness" : "blur"));
+        if (hasRoughness)
+            o.get("blur"); // superseded: not kept as an unknown field, so a save does not write it back
         m.extra = o.finish();
         return m;
     }
@@ -661,6 +665,8 @@ private:
         });
         o.optional("mirrorDepth", r.mirrorDepth, readInt);
         requireRange(r.mirrorDepth, 0, render::kMaxMirrorDepth, o.at("mirrorDepth"));
+        o.optional("roughness", r.roughness, readNumber);
+        requireRange(r.roughness, 0.0, 1.0, o.at("roughness"));
         r.extra = o.finish();
         return r;
     }

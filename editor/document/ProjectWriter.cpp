@@ -250,7 +250,7 @@ private:
         field("technique", render::names::fileName(render::names::kMirrorTechniques, m.technique));
         vec("tint", m.tint);
         field("fresnel", QJsonValue(m.fresnel));
-        field("blur", m.blur);
+        field("roughness", m.roughness);
         writeExtra(m.extra);
         w.endObject();
     }
@@ -277,6 +277,7 @@ private:
         }
         field("update", render::names::fileName(render::names::kReflectorUpdates, r.update));
         field("mirrorDepth", r.mirrorDepth);
+        field("roughness", r.roughness);
         writeExtra(r.extra);
         w.endObject();
     }

@@ -52,9 +52,10 @@ ComponentInfo mirrorGroup() {
     c.properties.back().info.tooltip = QStringLiteral(
         "Schlick: the reflectivity applies at normal incidence and rises to 1 at grazing angles");
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("mirror.blur"), QStringLiteral("Blur"),
-                                in(&NodeData::mirror, &Mi::blur), {0.0, 1.0}, {},
-                                QStringLiteral("Roughness of the reflection (texture technique)")),
+        slider(number<NodeData>(QStringLiteral("mirror.roughness"), QStringLiteral("Roughness"),
+                                in(&NodeData::mirror, &Mi::roughness), {0.0, 1.0}, {},
+                                QStringLiteral("GGX microfacet roughness (α = roughness²): 0 is a perfect "
+                                               "mirror; a rough mirror is drawn with the texture technique")),
                0.0, 1.0));
     return c;
 }
@@ -196,6 +197,12 @@ ComponentInfo reflectorGroup() {
         QStringLiteral(
             "How many levels of planar mirrors reflect inside the environment map, mirrors seen in "
             "mirrors included (every fill); 0 shows them with their own material")));
+    c.properties.push_back(
+        slider(number<NodeData>(QStringLiteral("reflector.roughness"), QStringLiteral("Roughness"),
+                                in(&NodeData::reflector, &R::roughness), {0.0, 1.0}, {},
+                                QStringLiteral("GGX microfacet roughness (α = roughness²): 0 is a perfect "
+                                               "mirror; rougher looks up a pre-filtered level of the map")),
+               0.0, 1.0));
     return c;
 }
 

@@ -158,7 +158,9 @@ struct MirrorComponent {
     MirrorTechnique technique = MirrorTechnique::Stencil;
     glm::dvec3 tint{1.0, 1.0, 1.0}; // multiplies the reflection, linear RGB 0..1
     bool fresnel = false;           // Schlick: `reflectivity` at normal incidence, rising to 1 at grazing
-    double blur = 0.0;              // 0..1, roughness of the reflection (texture technique)
+    // 0..1: GGX microfacet roughness of the reflection, α = roughness² (0: a perfect mirror). The file's
+    // older `blur` field loads as this roughness, unchanged in value.
+    double roughness = 0.0;
     QJsonObject extra;
     bool operator==(const MirrorComponent&) const = default;
 };
@@ -192,6 +194,7 @@ struct ReflectorComponent {
     std::optional<ReflectorParallax> parallax; // off when absent
     ReflectorUpdate update = ReflectorUpdate::OnChange;
     int mirrorDepth = 1; // levels of planar mirrors inside the environment map, 0..16
+    double roughness = 0.0; // 0..1, GGX roughness of the reflection, as a mirror's
     QJsonObject extra;
     bool operator==(const ReflectorComponent&) const = default;
 };

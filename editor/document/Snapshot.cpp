@@ -142,7 +142,7 @@ public:
                                    : render::MirrorTechnique::Stencil;
             mirror.tint = d.mirror->tint;
             mirror.fresnel = d.mirror->fresnel;
-            mirror.blur = d.mirror->blur;
+            mirror.roughness = d.mirror->roughness;
             mirror.hasMaterial = d.material.has_value();
             mirror.material = material;
             frame.mirrors.push_back(std::move(mirror));
@@ -230,6 +230,7 @@ private:
                    : d.reflector->update == ReflectorUpdate::Once ? render::ReflectorUpdate::Once
                                                                   : render::ReflectorUpdate::OnChange;
         r.mirrorDepth = d.reflector->mirrorDepth;
+        r.roughness = d.reflector->roughness;
         if (const auto& p = d.reflector->parallax) {
             r.parallax.shape = p->shape == ParallaxShape::Sphere ? render::ParallaxProxy::Shape::Sphere
                                                                  : render::ParallaxProxy::Shape::Box;

@@ -126,7 +126,7 @@ void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const Vi
     surfaceProgram.set("uReflectionTexture", kReflectionTextureUnit);
     surfaceProgram.set("uTargetSize", glm::vec2(targetSize));
     // Blur: a mip level of the reflection texture, up to 1/64 of its resolution at blur 1.
-    surfaceProgram.set("uBlurLod", float(std::min(6.0, double(reflectionLevels - 1)) * mirror.blur));
+    surfaceProgram.set("uBlurLod", float(std::min(6.0, double(reflectionLevels - 1)) * mirror.roughness));
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     if (view.ownTarget) {

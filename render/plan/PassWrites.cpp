@@ -42,7 +42,7 @@ PassWrites cameraWrites(const FrameInput& input, const FramePlan& plan, const Pl
     case PassKind::MirrorSurface: {
         const MirrorView& view = plan.views[static_cast<std::size_t>(pass.view)];
         writes.scissor = view.rect;
-        const bool blurred = input.mirrors[static_cast<std::size_t>(view.mirror)].blur > 0.0;
+        const bool blurred = input.mirrors[static_cast<std::size_t>(view.mirror)].roughness > 0.0;
         if (pass.kind == PassKind::MirrorMask) {
             drawInto(plan, view.parent, writes); // the mirror is marked where its parent's scene lies
             writes.clockwise =

@@ -84,7 +84,7 @@ FrameInput litScene(std::vector<Light> lights) {
     };
     input.mirrors = {mirror("Stencil mirror", -1.0, MirrorTechnique::Stencil),
                      mirror("Texture mirror", 1.0, MirrorTechnique::Texture)};
-    input.mirrors[1].blur = 0.2;
+    input.mirrors[1].roughness = 0.2;
 
     Reflector ball;
     ball.name = "Ball";

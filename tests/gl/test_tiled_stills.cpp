@@ -26,7 +26,7 @@ FrameInput mirrorsAndReflector() {
     document::MeshLibrary meshes;
     FrameInput input = document::snapshot(scene, 0.25, meshes, warnings);
     for (Mirror& mirror : input.mirrors)
-        mirror.blur = 0.0;
+        mirror.roughness = 0.0;
     const auto ball = std::find_if(input.items.begin(), input.items.end(),
                                    [](const DrawItem& item) { return item.name == "Ball"; });
     EXPECT_NE(ball, input.items.end());
@@ -107,7 +107,7 @@ TEST_F(GlTest, BlurredTextureMirrorInTilesStaysClose) {
     FrameInput input = mirrorsAndReflector();
     for (Mirror& mirror : input.mirrors)
         if (mirror.technique == MirrorTechnique::Texture)
-            mirror.blur = 0.15;
+            mirror.roughness = 0.15;
     auto whole = renderStill(renderer(), input, {301, 173, 1});
     auto tiled = renderStill(renderer(), input, {301, 173, 1, 64});
     ASSERT_TRUE(whole.ok() && tiled.ok());

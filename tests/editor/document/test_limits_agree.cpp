@@ -106,7 +106,8 @@ std::vector<LimitedField> limitedFields() {
         // Odd widths: likewise.
         {"light.shadows.pcf", kMinPcfWidth, kMaxPcfWidth, kMinPcfWidth - 2, kMaxPcfWidth + 2, shadows("pcf")},
         {"mirror.reflectivity", 0.0, 1.0, down(0.0), up(1.0), mirror("reflectivity")},
-        {"mirror.blur", 0.0, 1.0, down(0.0), up(1.0), mirror("blur")},
+        {"mirror.roughness", 0.0, 1.0, down(0.0), up(1.0), mirror("roughness")},
+        {"reflector.roughness", 0.0, 1.0, down(0.0), up(1.0), reflector("roughness")},
         {"reflector.resolution", kMinEnvironmentMapSize, kMaxEnvironmentMapSize, kMinEnvironmentMapSize - 1,
          kMaxEnvironmentMapSize + 1, reflector("resolution")},
         {"reflector.reflectivity", 0.0, 1.0, down(0.0), up(1.0), reflector("reflectivity")},

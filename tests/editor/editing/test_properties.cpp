@@ -169,22 +169,22 @@ TEST(Properties, ComponentsAddAndRemoveKeepTheNodeLoadable) {
 
 namespace {
 
-TEST(Properties, MirrorTintFresnelAndBlurAreEditable) {
+TEST(Properties, MirrorTintFresnelAndRoughnessAreEditable) {
     NodeData d = fullNode();
     const auto* tint = findNodeProperty(QStringLiteral("mirror.tint"));
     const auto* fresnel = findNodeProperty(QStringLiteral("mirror.fresnel"));
-    const auto* blur = findNodeProperty(QStringLiteral("mirror.blur"));
-    ASSERT_TRUE(tint && fresnel && blur);
+    const auto* roughness = findNodeProperty(QStringLiteral("mirror.roughness"));
+    ASSERT_TRUE(tint && fresnel && roughness);
     ASSERT_TRUE(tint->set(d, QVariantList{1.0, 0.9, 0.8}).ok());
     EXPECT_DOUBLE_EQ(d.mirror->tint.z, 0.8);
     ASSERT_TRUE(fresnel->set(d, true).ok());
     EXPECT_TRUE(d.mirror->fresnel);
-    ASSERT_TRUE(blur->set(d, 0.3).ok());
-    EXPECT_DOUBLE_EQ(d.mirror->blur, 0.3);
+    ASSERT_TRUE(roughness->set(d, 0.3).ok());
+    EXPECT_DOUBLE_EQ(d.mirror->roughness, 0.3);
     // Out of range: refused with a message, the value untouched.
-    const auto refused = blur->set(d, 1.5);
+    const auto refused = roughness->set(d, 1.5);
     EXPECT_FALSE(refused.ok());
-    EXPECT_DOUBLE_EQ(d.mirror->blur, 0.3);
+    EXPECT_DOUBLE_EQ(d.mirror->roughness, 0.3);
     EXPECT_FALSE(tint->set(d, QVariantList{2.0, 0.0, 0.0}).ok());
     EXPECT_DOUBLE_EQ(d.mirror->tint.x, 1.0);
 }

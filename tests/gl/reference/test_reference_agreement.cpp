@@ -76,7 +76,7 @@ render::Material flat(glm::dvec3 colour) {
 }
 
 // A copy of `input` in which every object, mirror surface and the background has a flat colour of its own
-// and mirrors reflect perfectly (reflectivity 1, no tint, fresnel or blur): each pixel's colour then says
+// and mirrors reflect perfectly (reflectivity 1, no tint, fresnel or roughness): each pixel's colour then says
 // which object the pixel shows, directly or through mirrors. Returns the number of classes.
 int classify(FrameInput& input) {
     int next = 0;
@@ -87,7 +87,7 @@ int classify(FrameInput& input) {
         mirror.reflectivity = 1.0;
         mirror.tint = glm::dvec3(1.0);
         mirror.fresnel = false;
-        mirror.blur = 0.0;
+        mirror.roughness = 0.0;
         mirror.hasMaterial = true; // shown beyond the depth limit and from behind
         mirror.material = flat(paletteColour(next++));
     }

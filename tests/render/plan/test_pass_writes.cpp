@@ -27,7 +27,7 @@ FrameInput facingMirrors(int depth, MirrorTechnique front = MirrorTechnique::Ste
     input.camera.target = {0, 0, -3};
     Mirror f = wall("Front", -3.0, true, 4.0);
     f.technique = front;
-    f.blur = blur;
+    f.roughness = blur;
     input.mirrors = {f, wall("Back", 1.0, false, 4.0)};
     input.settings.mirrorDepth = depth;
     return input;

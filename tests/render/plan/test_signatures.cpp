@@ -38,7 +38,8 @@ std::vector<std::string> qualified(const std::string& type, const std::string& n
 
 std::vector<std::string> everyField() {
     std::vector<std::vector<std::string>> lists = {
-        SPECULUM_FIELDS(Settings, background, mirrorDepth, ambient, simplifyReflections),
+        SPECULUM_FIELDS(Settings, background, mirrorDepth, ambient, simplifyReflections, glossyFilter,
+                        glossyTaps, prefilterSamples),
         SPECULUM_FIELDS(Camera, position, target, up, fovY, near, far),
         SPECULUM_FIELDS(TextureSource, path, image, wrapS, wrapT),
         SPECULUM_FIELDS(Material, color, ambient, diffuse, specular, shininess, emission, specularColor,
@@ -48,11 +49,11 @@ std::vector<std::string> everyField() {
         SPECULUM_FIELDS(ShadowSettings, enabled, mapSize, pcf),
         SPECULUM_FIELDS(Light, name, type, position, direction, color, intensity, spotAngle, spotBlend,
                         shadows),
-        SPECULUM_FIELDS(Mirror, name, world, size, reflectivity, technique, tint, fresnel, blur, material,
+        SPECULUM_FIELDS(Mirror, name, world, size, reflectivity, technique, tint, fresnel, roughness, material,
                         hasMaterial),
         SPECULUM_FIELDS(ParallaxProxy, shape, radius, min, max),
         SPECULUM_FIELDS(Reflector, name, world, mesh, material, map, resolution, reflectivity, fresnel, fill,
-                        parallax, update, mirrorDepth),
+                        parallax, update, mirrorDepth, roughness),
         SPECULUM_FIELDS(FrameInput, settings, camera, items, lights, mirrors, reflector, time),
     };
     std::vector<std::string> all;
@@ -230,6 +231,12 @@ std::vector<Row> table() {
          "lights the map's scene; " + notCast},
         {"Settings.simplifyReflections", "", [](FrameInput& f) { f.settings.simplifyReflections = false; },
          true, false, "the map may draw big meshes simplified; shadow maps always draw them whole"},
+        {"Settings.glossyFilter", "", [](FrameInput& f) { f.settings.glossyFilter = GlossyFilter::Mip; }, false,
+         false, "how rough surfaces read the map, not what the map holds"},
+        {"Settings.glossyTaps", "", [](FrameInput& f) { f.settings.glossyTaps = 4; }, false, false,
+         "the camera's rough planar mirrors; the map's mirrors are sharp"},
+        {"Settings.prefilterSamples", "", [](FrameInput& f) { f.settings.prefilterSamples = 8; }, false, false,
+         "filters the captured map again; it is not captured again"},
         // Camera
         {"Camera.position", "",
          [](FrameInput& f) {
@@ -309,8 +316,8 @@ std::vector<Row> table() {
          true, false, "tints its reflection in the map; " + notCast},
         {"Mirror.fresnel", "", [](FrameInput& f) { f.mirrors[0].fresnel = true; }, true, false,
          "Schlick's term on its surface in the map; " + notCast},
-        {"Mirror.blur", "", [](FrameInput& f) { f.mirrors[0].blur = 0.5; }, false, false,
-         "texture technique only: the map's stencil mirrors are sharp"},
+        {"Mirror.roughness", "", [](FrameInput& f) { f.mirrors[0].roughness = 0.5; }, false, false,
+         "the map's stencil mirrors are sharp"},
         {"Mirror.material", "", [](FrameInput& f) { f.mirrors[0].material = Material{}; }, true, false,
          "its surface in the map; " + notCast},
         {"Mirror.hasMaterial", "", [](FrameInput& f) { f.mirrors[0].hasMaterial = false; }, true, false,
@@ -342,6 +349,8 @@ std::vector<Row> table() {
          false, "decides when the map is drawn, not what it holds"},
         {"Reflector.mirrorDepth", "", [](FrameInput& f) { f.reflector->mirrorDepth = 2; }, true, false,
          "how deep the map's mirrors nest; not drawn by the shadow"},
+        {"Reflector.roughness", "", [](FrameInput& f) { f.reflector->roughness = 0.4; }, false, false,
+         "chooses a level of the pre-filtered chain, which holds every roughness"},
         // ParallaxProxy
         {"ParallaxProxy.shape", "",
          [](FrameInput& f) { f.reflector->parallax.shape = ParallaxProxy::Shape::Sphere; }, false, false,
