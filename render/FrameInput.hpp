@@ -31,8 +31,8 @@ struct Settings {
     // (MeshData::coarse): an approximation the bench's reflected-detail family measures.
     bool simplifyReflections = true;
     GlossyFilter glossyFilter = GlossyFilter::Footprint;
-    int glossyTaps = 16;         // lobe samples per pixel of a rough planar mirror (Footprint)
-    int prefilterSamples = 64;   // lobe samples per texel of the reflector's pre-filtered chain (Footprint)
+    int glossyTaps = 16;       // lobe samples per pixel of a rough planar mirror (Footprint)
+    int prefilterSamples = 64; // lobe samples per texel of the reflector's pre-filtered chain (Footprint)
 };
 
 struct Camera {
@@ -176,7 +176,7 @@ struct Reflector {
     ReflectorFill fill = ReflectorFill::Resampled; // the non-linear maps only
     ParallaxProxy parallax;
     ReflectorUpdate update = ReflectorUpdate::OnChange;
-    int mirrorDepth = 1; // planar-mirror levels inside the environment map
+    int mirrorDepth = 1;    // planar-mirror levels inside the environment map
     double roughness = 0.0; // 0..1, GGX roughness of the reflection as for Mirror
 };
 

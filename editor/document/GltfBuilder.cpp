@@ -443,7 +443,8 @@ private:
         if (!d.material) {
             look.color = glm::dvec3(0.95);
         }
-        primitive["material"] = addMaterial(name + " (mirror)", look, d.mirror->reflectivity, d.mirror->roughness);
+        primitive["material"] =
+            addMaterial(name + " (mirror)", look, d.mirror->reflectivity, d.mirror->roughness);
         return primitive;
     }
 

@@ -193,7 +193,7 @@ struct ReflectorComponent {
     ReflectorFill fill = ReflectorFill::Resampled;
     std::optional<ReflectorParallax> parallax; // off when absent
     ReflectorUpdate update = ReflectorUpdate::OnChange;
-    int mirrorDepth = 1; // levels of planar mirrors inside the environment map, 0..16
+    int mirrorDepth = 1;    // levels of planar mirrors inside the environment map, 0..16
     double roughness = 0.0; // 0..1, GGX roughness of the reflection, as a mirror's
     QJsonObject extra;
     bool operator==(const ReflectorComponent&) const = default;

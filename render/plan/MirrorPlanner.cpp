@@ -219,7 +219,8 @@ struct Planner {
             view.rect = coverage.rect;
             view.pixelArea = coverage.pixelArea;
             // A rough mirror needs its reflection as an image of its own to filter: the stencil technique
-            // draws it straight into the parent's buffer, so a rough stencil mirror is drawn as a texture one.
+            // draws it straight into the parent's buffer, so a rough stencil mirror is drawn as a texture
+            // one.
             view.ownTarget = space.mirrorTextures &&
                              (mirror.technique == MirrorTechnique::Texture || mirror.roughness > 0.0);
             // A texture view starts a fresh stencil space in a render texture of its own, one slot deeper

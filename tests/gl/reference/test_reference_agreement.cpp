@@ -76,8 +76,8 @@ render::Material flat(glm::dvec3 colour) {
 }
 
 // A copy of `input` in which every object, mirror surface and the background has a flat colour of its own
-// and mirrors reflect perfectly (reflectivity 1, no tint, fresnel or roughness): each pixel's colour then says
-// which object the pixel shows, directly or through mirrors. Returns the number of classes.
+// and mirrors reflect perfectly (reflectivity 1, no tint, fresnel or roughness): each pixel's colour then
+// says which object the pixel shows, directly or through mirrors. Returns the number of classes.
 int classify(FrameInput& input) {
     int next = 0;
     input.settings.background = paletteColour(next++);
