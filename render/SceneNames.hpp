@@ -35,6 +35,10 @@ inline constexpr std::array<Name, 2> kMirrorTechniques{{
     {"stencil", "Stencil"},
     {"texture", "Texture"},
 }};
+inline constexpr std::array<Name, 2> kGlossyFilters{{
+    {"mip", "Mip level (cheap)"},
+    {"footprint", "Lobe footprint / pre-filtered map"},
+}};
 inline constexpr std::array<Name, 3> kLightTypes{{
     {"point", "Point"},
     {"directional", "Directional"},

@@ -27,6 +27,14 @@ uniform int uAlphaMask;      // Mask (and Blend, drawn as Mask): discard below u
 uniform float uAlphaCutoff;
 uniform float uSceneAmbient;
 uniform vec3 uEye; // the (virtual) eye, camera-relative and unreflected
+// Views drawn into a mirror's reflection texture store, in alpha, the length of the path from the camera to
+// the point (through the mirrors: the distance from the virtual eye). A rough mirror's blur grows with the
+// part of it beyond the mirror (mirror.frag). Every other target keeps alpha 1.
+uniform int uPathLengthAlpha;
+
+float outputAlpha(vec3 position) {
+    return uPathLengthAlpha != 0 ? min(length(position - uEye), 65504.0) : 1.0;
+}
 
 in vec4 vColor;   // linear RGBA; white where the mesh has no colours
 in vec4 vTangent; // camera-relative world tangent, w = handedness (already signed for mirroring transforms)

@@ -1,6 +1,7 @@
 // A mirror's own surface over its reflection. Stencil technique: the reflection is already in the
 // framebuffer, and dual-source blending computes  surface·(1−R) + reflection·(R·tint)  in one pass.
-// Texture technique: the reflection is looked up projectively in the mirror's render texture.
+// Texture technique: the reflection is looked up projectively in the mirror's render texture, sharp, or
+// blurred over the GGX lobe of a rough mirror (glossyReflection below).
 #include "material.glsl"
 
 in vec3 vWorld;
@@ -11,12 +12,72 @@ uniform float uReflectivity;
 uniform vec3 uTint;
 uniform int uFresnel;
 uniform int uFromTexture;
-uniform sampler2D uReflectionTexture;
+uniform sampler2D uReflectionTexture; // rgb: the reflection; alpha: its path length (material.glsl)
 uniform vec2 uTargetSize;
-uniform float uBlurLod;
+uniform float uBlurLod;   // the Mip filter: one lookup at this level
+uniform int uGlossyTaps;  // the Footprint filter: lobe samples per pixel; 0: the Mip filter (or sharp)
+uniform float uGgxAlpha;  // roughness²
+uniform float uFocalPx;   // pixels per unit of lateral offset at unit distance (the camera's focal length)
+uniform float uMaxLod;    // the reflection texture's last mip level
+uniform mat4 uViewProjection; // the parent view's (mesh.vert's), to find the mirror normal on screen
+uniform mat4 uReflection;
 
 layout(location = 0, index = 0) out vec4 fragColor;
 layout(location = 0, index = 1) out vec4 reflectionWeight;
+
+const float kPi = 3.14159265358979;
+
+// Van der Corput's radical inverse in base 2 (bitfieldReverse needs GLSL 4.00; this is 3.30).
+float radicalInverse(uint bits) {
+    bits = (bits << 16u) | (bits >> 16u);
+    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+    return float(bits) * 2.3283064365386963e-10;
+}
+
+vec2 toPixels(vec3 p) {
+    vec4 clip = uViewProjection * (uReflection * vec4(p, 1.0));
+    return (clip.xy / clip.w * 0.5 + 0.5) * uTargetSize;
+}
+
+// The reflection of a rough mirror: the GGX lobe's microfacet normals, sampled on a Hammersley set turned
+// per pixel, each sends the reflected ray off by twice its tilt: within the plane of incidence fully, across
+// it scaled by cos θ (the glossy streak that stretches towards the viewer at grazing angles). A ray that
+// meets the scene a distance d beyond the mirror, with the whole path L long, lands (d / L)·offset away on
+// screen. Each tap reads the mip level that covers its share of the footprint. Approximations (what the
+// bench measures against the tracer): one distance for the whole footprint (that of the sharp reflection
+// at this pixel), small-angle offsets, and microfacet normals sampled by D alone, equally weighted.
+vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
+    vec4 sharp = textureLod(uReflectionTexture, uv, 0.0);
+    float eyeDistance = length(vWorld - uEye);
+    float pathLength = max(sharp.a, eyeDistance);
+    float beyond = pathLength - eyeDistance;
+    float cosView = clamp(dot(normal, viewDir), 0.02, 1.0);
+    float scale = uFocalPx * beyond / pathLength * 2.0; // pixels per unit tilt (tan θh)
+    // The plane of incidence on screen: where the normal points from this pixel.
+    vec2 along = toPixels(vWorld + normal * (0.05 * eyeDistance)) - gl_FragCoord.xy;
+    along = dot(along, along) > 1e-6 ? normalize(along) : vec2(0.0, 1.0);
+    vec2 across = vec2(-along.y, along.x);
+    float taps = float(uGlossyTaps);
+    float footprintArea = kPi * (scale * uGgxAlpha) * (scale * uGgxAlpha) * cosView;
+    float lod = clamp(0.5 * log2(max(footprintArea / taps, 1.0)), 0.0, uMaxLod);
+    // Interleaved gradient noise: a rotation per pixel trades the sample pattern's ghosts for noise.
+    float turn = 2.0 * kPi * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < uGlossyTaps; ++k) {
+        float u1 = (float(k) + 0.5) / taps;
+        float u2 = radicalInverse(uint(k));
+        // GGX: tan²θh = α² u / (1 − u); capped where the small-angle picture no longer holds.
+        float tanTheta = min(uGgxAlpha * sqrt(u1 / (1.0 - u1)), 1.5);
+        float phi = 2.0 * kPi * u2 + turn;
+        vec2 tilt = tanTheta * vec2(cos(phi), sin(phi) * cosView);
+        vec2 offset = scale * (tilt.x * along + tilt.y * across);
+        sum += textureLod(uReflectionTexture, uv + offset / uTargetSize, lod).rgb;
+    }
+    return sum / taps;
+}
 
 void main() {
     vec3 normal = normalize(vNormal);
@@ -29,12 +90,15 @@ void main() {
     }
     vec3 surface = r < 1.0 ? shadeMaterial(vWorld, normal, vUv) * (1.0 - r) : vec3(0.0);
     vec3 weight = uTint * r;
+    float alpha = outputAlpha(vWorld);
     if (uFromTexture != 0) {
-        vec3 reflection = textureLod(uReflectionTexture, gl_FragCoord.xy / uTargetSize, uBlurLod).rgb;
-        fragColor = vec4(storableRadiance(surface + weight * reflection), 1.0);
+        vec2 uv = gl_FragCoord.xy / uTargetSize;
+        vec3 reflection = uGlossyTaps > 0 ? glossyReflection(uv, normal, viewDir)
+                                          : textureLod(uReflectionTexture, uv, uBlurLod).rgb;
+        fragColor = vec4(storableRadiance(surface + weight * reflection), alpha);
         reflectionWeight = vec4(0.0);
     } else {
-        fragColor = vec4(storableRadiance(surface), 1.0);
+        fragColor = vec4(storableRadiance(surface), alpha);
         // A NaN weight (reflectivity or tint) would make NaN of the reflection already in the buffer.
         reflectionWeight = vec4(storableRadiance(weight), 0.0);
     }

@@ -2,6 +2,7 @@
 #include "editor/document/NodeMath.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/SceneChecks.hpp"
+#include "render/GlossyLimits.hpp"
 #include "render/SceneLimits.hpp"
 #include "render/SceneNames.hpp"
 #include "render/io/FileKind.hpp"
@@ -347,6 +348,14 @@ private:
         o.optional("ambient", s.ambient, readNumber);
         requireRange(s.ambient, 0.0, 1.0, o.at("ambient"));
         o.optional("simplifyReflections", s.simplifyReflections, readBool);
+        o.optional("glossyFilter", s.glossyFilter, [](const QJsonValue& t, const std::string& p) {
+            return readNamed<GlossyFilter>(t, p, "glossy filter", render::names::kGlossyFilters);
+        });
+        o.optional("glossyTaps", s.glossyTaps, readInt);
+        requireRange(s.glossyTaps, render::kMinGlossyTaps, render::kMaxGlossyTaps, o.at("glossyTaps"));
+        o.optional("prefilterSamples", s.prefilterSamples, readInt);
+        requireRange(s.prefilterSamples, render::kMinPrefilterSamples, render::kMaxPrefilterSamples,
+                     o.at("prefilterSamples"));
         s.extra = o.finish();
         return s;
     }

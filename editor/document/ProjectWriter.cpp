@@ -76,6 +76,13 @@ private:
         field("ambient", s.ambient);
         if (!s.simplifyReflections) // written only where it differs from the default: files stay as they were
             field("simplifyReflections", QJsonValue(s.simplifyReflections));
+        const SceneSettings defaults;
+        if (s.glossyFilter != defaults.glossyFilter)
+            field("glossyFilter", render::names::fileName(render::names::kGlossyFilters, s.glossyFilter));
+        if (s.glossyTaps != defaults.glossyTaps)
+            field("glossyTaps", s.glossyTaps);
+        if (s.prefilterSamples != defaults.prefilterSamples)
+            field("prefilterSamples", s.prefilterSamples);
         writeExtra(s.extra);
         w.endObject();
     }

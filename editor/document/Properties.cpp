@@ -3,7 +3,9 @@
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
 #include "editor/document/SceneChecks.hpp"
+#include "render/GlossyLimits.hpp"
 #include "render/SceneLimits.hpp"
+#include "render/SceneNames.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -50,6 +52,29 @@ std::vector<Property<SceneSettings>> makeSettingsProperties() {
         },
         QStringLiteral("Mirrors and the reflector's map draw meshes of more than 100 000 triangles at a "
                        "simplified level")));
+    QStringList filters;
+    for (const render::names::Name& n : render::names::kGlossyFilters)
+        filters << QString::fromUtf8(n.label.data(), qsizetype(n.label.size()));
+    list.push_back(enumeration<SceneSettings>(
+        QStringLiteral("settings.glossyFilter"), QStringLiteral("Rough reflections"), filters,
+        [](const SceneSettings& s) { return static_cast<int>(s.glossyFilter); },
+        [](SceneSettings& s, int i) -> render::Status {
+            s.glossyFilter = static_cast<GlossyFilter>(i);
+            return render::Done{};
+        }));
+    list.back().info.tooltip =
+        QStringLiteral("How rough mirrors and the rough reflector are approximated: one mip level chosen by "
+                       "the roughness (cheap), or the GGX lobe's footprint on planar mirrors and a "
+                       "pre-filtered map chain on the reflector");
+    list.push_back(integer<SceneSettings>(
+        QStringLiteral("settings.glossyTaps"), QStringLiteral("Rough mirror taps"),
+        [](SceneSettings& s) { return &s.glossyTaps; }, {render::kMinGlossyTaps, render::kMaxGlossyTaps}, {},
+        {}, QStringLiteral("Samples of the GGX lobe per pixel of a rough planar mirror (lobe footprint)")));
+    list.push_back(integer<SceneSettings>(
+        QStringLiteral("settings.prefilterSamples"), QStringLiteral("Pre-filter samples"),
+        [](SceneSettings& s) { return &s.prefilterSamples; },
+        {render::kMinPrefilterSamples, render::kMaxPrefilterSamples}, {}, {},
+        QStringLiteral("Samples of the GGX lobe per texel when the reflector's map is pre-filtered")));
     return list;
 }
 

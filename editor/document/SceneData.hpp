@@ -23,11 +23,18 @@ namespace speculum::document {
 // file's folder and the writer makes them relative to the folder it saves into. That keeps "Save As" into
 // another folder and undo commands that hold old NodeData correct without any rebasing.
 
+// render::GlossyFilter, in the order of render::names::kGlossyFilters.
+enum class GlossyFilter { Mip, Footprint };
+
 struct SceneSettings {
     glm::dvec3 background{0.1, 0.1, 0.12};
     int mirrorDepth = 3;
     double ambient = 0.2;
     bool simplifyReflections = true; // render::Settings::simplifyReflections
+    // How rough reflections are approximated (render::Settings, same names and defaults).
+    GlossyFilter glossyFilter = GlossyFilter::Footprint;
+    int glossyTaps = 16;
+    int prefilterSamples = 64;
     QJsonObject extra;
     bool operator==(const SceneSettings&) const = default;
 };

@@ -12,8 +12,12 @@
 namespace speculum::document {
 
 render::Settings toRender(const SceneSettings& settings) {
-    return render::Settings{settings.background, settings.mirrorDepth, settings.ambient,
-                            settings.simplifyReflections};
+    return render::Settings{settings.background,        settings.mirrorDepth, settings.ambient,
+                            settings.simplifyReflections,
+                            settings.glossyFilter == GlossyFilter::Mip ? render::GlossyFilter::Mip
+                                                                       : render::GlossyFilter::Footprint,
+                            settings.glossyTaps,
+                            settings.prefilterSamples};
 }
 
 render::Camera toRender(const CameraData& camera) {

@@ -157,6 +157,7 @@ void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Prog
     // The reflection acts on camera-relative coordinates: composed in double, rounded once.
     p.set("uReflection", glm::mat4(toCameraRelative * view.reflection * fromCameraRelative));
     p.set("uEye", glm::vec3(view.eye - input.camera.position));
+    p.set("uPathLengthAlpha", view.pathLengthInAlpha ? 1 : 0);
     p.set("uSceneAmbient", float(input.settings.ambient));
     p.set("uTexture", kMaterialTextureUnit);
     p.set("uEmissionTexture", kEmissionTextureUnit);

@@ -81,6 +81,9 @@ struct ViewSetup {
     bool cullOutside = false; // off for warped views, whose clip space is not a frustum
     // A reflected view or one of the environment map's: draws MainPassContext::coarseItems simplified.
     bool coarseDetail = false;
+    // The view draws into a mirror's reflection texture: shaders store each point's path length in alpha
+    // (material.glsl's outputAlpha), which a rough mirror's blur reads.
+    bool pathLengthInAlpha = false;
 };
 
 // Binds the lit-material program and sets everything that is the same for every object of the view:

@@ -1,11 +1,21 @@
 #include "render/passes/MirrorPasses.hpp"
 
+#include "render/GlossyLimits.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace speculum::render::passes {
+
+namespace {
+// The alpha of a reflection texture's pixels that show no surface: as far as a path can be (the half
+// float's largest value), read by a rough mirror's blur (shaders/mirror.frag).
+constexpr float kFarPathLength = 65504.0f;
+} // namespace
 
 ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewIndex,
                     const glm::dmat4& cameraProjection, glm::ivec2 targetSize, bool clockwise) {
@@ -22,6 +32,7 @@ ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewInde
         setup.reflection = view.reflection;
         setup.eye = view.eye;
         setup.coarseDetail = true;
+        setup.pathLengthInAlpha = view.textureSlot >= 0;
         const glm::dvec2 size = glm::max(glm::dvec2(targetSize), glm::dvec2(1.0));
         setup.ndcBounds = glm::dvec4(view.rect.x0 / size.x, view.rect.y0 / size.y, view.rect.x1 / size.x,
                                      view.rect.y1 / size.y) *
@@ -69,7 +80,8 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
         glStencilFunc(GL_EQUAL, view.stencilLevel, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        maskProgram.set("uFlatColor", glm::vec4(glm::vec3(input.settings.background), 1.0f));
+        // Alpha: as far as a path can be (material.glsl's outputAlpha), for a rough mirror's blur.
+        maskProgram.set("uFlatColor", glm::vec4(glm::vec3(input.settings.background), kFarPathLength));
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_ALWAYS);
         glDepthRange(1.0, 1.0);
@@ -106,6 +118,22 @@ void tintPerfectMirror(const FrameInput& input, const MirrorView& view, const Vi
     glDepthFunc(GL_LESS);
 }
 
+// A rough mirror's filter (shaders/mirror.frag). Mip: a level of the reflection texture set by the
+// roughness alone, up to 1/64 of its resolution at roughness 1 (the blur of old). Footprint: the GGX
+// lobe's taps, spread by the distance to what the mirror reflects.
+void setGlossyUniforms(const FrameInput& input, const Mirror& mirror, const gl::Program& program,
+                       int reflectionLevels, glm::ivec2 targetSize) {
+    const double roughness = std::clamp(mirror.roughness, 0.0, 1.0);
+    const bool footprint = roughness > 0.0 && input.settings.glossyFilter == GlossyFilter::Footprint;
+    const double maxLod = std::max(reflectionLevels - 1, 0);
+    program.set("uBlurLod", footprint ? 0.0f : float(std::min(6.0, maxLod) * roughness));
+    program.set("uGlossyTaps", footprint ? glossyTapCount(input.settings) : 0);
+    program.set("uGgxAlpha", float(roughness * roughness));
+    const double tanHalfFov = std::tan(glm::radians(std::clamp(input.camera.fovY, 1.0, 179.0)) * 0.5);
+    program.set("uFocalPx", float(targetSize.y / (2.0 * tanHalfFov)));
+    program.set("uMaxLod", float(maxLod));
+}
+
 } // namespace
 
 void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
@@ -125,8 +153,7 @@ void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const Vi
     surfaceProgram.set("uFromTexture", view.ownTarget ? 1 : 0);
     surfaceProgram.set("uReflectionTexture", kReflectionTextureUnit);
     surfaceProgram.set("uTargetSize", glm::vec2(targetSize));
-    // Blur: a mip level of the reflection texture, up to 1/64 of its resolution at blur 1.
-    surfaceProgram.set("uBlurLod", float(std::min(6.0, double(reflectionLevels - 1)) * mirror.roughness));
+    setGlossyUniforms(input, mirror, surfaceProgram, reflectionLevels, targetSize);
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     if (view.ownTarget) {

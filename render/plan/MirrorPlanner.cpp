@@ -4,6 +4,7 @@
 // component of the reflector's environment map (seen from its capture point). Everything is derived in
 // double precision; a mirror that cannot be drawn correctly is skipped with a reason, never given a NaN
 // matrix.
+#include "render/GlossyLimits.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"
@@ -30,6 +31,21 @@ std::string pixels(double area) {
     char text[32];
     std::snprintf(text, sizeof text, "%.0f", area);
     return text;
+}
+
+// Which approximation of a rough mirror's reflection its surface pass draws, for its reason.
+std::string glossyApproximation(const Settings& settings, const Mirror& mirror, bool ownTarget) {
+    const double roughness = std::clamp(mirror.roughness, 0.0, 1.0);
+    if (roughness <= 0.0)
+        return {};
+    const std::string rough = "; rough (roughness " + pixels(roughness * 100) + "%): ";
+    if (!ownTarget)
+        return rough + "drawn sharp, as every mirror inside the environment map";
+    if (settings.glossyFilter == GlossyFilter::Mip)
+        return rough + "one mip level of its reflection, chosen by the roughness alone (the cheap filter)";
+    return rough + "its reflection sampled over the GGX lobe's footprint, " +
+           std::to_string(glossyTapCount(settings)) +
+           " taps a pixel, wider the farther what it reflects lies beyond the mirror";
 }
 
 // Where mirror views are planned: the camera's image, or one face or component of the environment map.
@@ -257,6 +273,9 @@ struct Planner {
                 {PassKind::Mirror, name,
                  std::string("draws the scene reflected in the mirror ") +
                      (view.ownTarget ? "into its reflection texture" : "inside its stencil mask") +
+                     (view.ownTarget && mirror.technique == MirrorTechnique::Stencil
+                          ? " (rough: the stencil technique leaves no image of the reflection to filter)"
+                          : "") +
                      (space.warp ? " with a clip plane on the mirror ("
                                  : " with an oblique near plane on the mirror (") +
                      context + area + ")",
@@ -265,7 +284,8 @@ struct Planner {
             passes.push_back(
                 {PassKind::MirrorSurface, name,
                  std::string("blends the mirror's own surface over the reflection (reflectivity ") +
-                     pixels(mirror.reflectivity * 100) + "%" + space.in + ")",
+                     pixels(mirror.reflectivity * 100) + "%" + space.in + ")" +
+                     glossyApproximation(input.settings, mirror, view.ownTarget),
                  -1, index});
         }
     }

@@ -3,6 +3,7 @@
 // is refused by both. The choices (map types, fills, ...) are spelled once, in render/SceneNames.hpp.
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Properties.hpp"
+#include "render/GlossyLimits.hpp"
 #include "render/SceneLimits.hpp"
 #include "render/SceneNames.hpp"
 
@@ -108,6 +109,10 @@ std::vector<LimitedField> limitedFields() {
         {"mirror.reflectivity", 0.0, 1.0, down(0.0), up(1.0), mirror("reflectivity")},
         {"mirror.roughness", 0.0, 1.0, down(0.0), up(1.0), mirror("roughness")},
         {"reflector.roughness", 0.0, 1.0, down(0.0), up(1.0), reflector("roughness")},
+        {"settings.glossyTaps", kMinGlossyTaps, kMaxGlossyTaps, kMinGlossyTaps - 1, kMaxGlossyTaps + 1,
+         [](const std::string& v) { return withSettings("glossyTaps", v); }},
+        {"settings.prefilterSamples", kMinPrefilterSamples, kMaxPrefilterSamples, kMinPrefilterSamples - 1,
+         kMaxPrefilterSamples + 1, [](const std::string& v) { return withSettings("prefilterSamples", v); }},
         {"reflector.resolution", kMinEnvironmentMapSize, kMaxEnvironmentMapSize, kMinEnvironmentMapSize - 1,
          kMaxEnvironmentMapSize + 1, reflector("resolution")},
         {"reflector.reflectivity", 0.0, 1.0, down(0.0), up(1.0), reflector("reflectivity")},

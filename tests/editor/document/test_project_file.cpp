@@ -28,6 +28,9 @@ SceneData everythingScene(const QDir& folder) {
     scene.settings.mirrorDepth = 5;
     scene.settings.ambient = 0.35;
     scene.settings.simplifyReflections = false;
+    scene.settings.glossyFilter = GlossyFilter::Mip;
+    scene.settings.glossyTaps = 7;
+    scene.settings.prefilterSamples = 333;
     scene.camera.position = {1e5 + 0.125, -2.5, 7};
     scene.camera.target = {1e5, 0, 0};
     scene.camera.up = {0, 0, 1};
@@ -48,6 +51,7 @@ SceneData everythingScene(const QDir& folder) {
                            ReflectorParallax{ParallaxShape::Box, 5, {-1, -2, -3}, {4, 5, 6}, {}},
                            ReflectorUpdate::Once,
                            3,
+                           0.25,
                            {}};
     ball.data.material = MaterialComponent{{0.1, 0.2, 0.3},
                                            0.5,
@@ -545,6 +549,61 @@ TEST(SceneEditorView, AViewTheReaderWouldRefuseIsNotKeptSoTheFileStillSaves) {
     auto loaded = loadProject(qpath(folder / "scene.speculum.json"), warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_FALSE(loaded->editorView.has_value());
+}
+
+// Roughness (GGX, on mirrors and the reflector) replaced the mirror's `blur`: an older file's blur loads as
+// the same roughness and is saved as `roughness`; both fields given, roughness wins. The glossy settings
+// are written only where they differ from the defaults, so files without rough surfaces stay as they were.
+TEST(ProjectFile, BlurLoadsAsRoughnessAndGlossySettingsRoundTrip) {
+    auto load = [](const std::string& text) {
+        std::vector<std::string> warnings;
+        auto scene = parseProject(QByteArray::fromStdString(text), QDir("/tmp"), warnings);
+        EXPECT_TRUE(warnings.empty()) << warnings.front();
+        return scene;
+    };
+    const std::string head = R"({ "format": "speculum-scene", "version": 1, )";
+    auto old = load(head + R"("nodes": [ { "name": "M", "mirror": { "blur": 0.15 } } ] })");
+    ASSERT_TRUE(old) << old.error();
+    EXPECT_DOUBLE_EQ(old->nodes.at(0).data.mirror->roughness, 0.15);
+    const QByteArray saved = serializeProject(*old, QDir("/tmp"));
+    EXPECT_TRUE(saved.contains("\"roughness\": 0.15")) << saved.toStdString();
+    EXPECT_FALSE(saved.contains("\"blur\"")) << saved.toStdString();
+    EXPECT_FALSE(saved.contains("glossy")) << saved.toStdString();
+    EXPECT_FALSE(saved.contains("prefilterSamples")) << saved.toStdString();
+
+    auto both = load(head + R"("nodes": [ { "name": "M", "mirror": { "blur": 0.9, "roughness": 0.2 } } ] })");
+    ASSERT_TRUE(both) << both.error();
+    EXPECT_DOUBLE_EQ(both->nodes.at(0).data.mirror->roughness, 0.2);
+
+    auto settings = load(head + R"("settings": { "glossyFilter": "mip", "glossyTaps": 5, "prefilterSamples": 9 },
+        "nodes": [ { "name": "B", "mesh": { "builtin": "sphere" }, "reflector": { "roughness": 0.5 } } ] })");
+    ASSERT_TRUE(settings) << settings.error();
+    EXPECT_EQ(settings->settings.glossyFilter, GlossyFilter::Mip);
+    EXPECT_EQ(settings->settings.glossyTaps, 5);
+    EXPECT_EQ(settings->settings.prefilterSamples, 9);
+    EXPECT_DOUBLE_EQ(settings->nodes.at(0).data.reflector->roughness, 0.5);
+    Scene scene;
+    scene.reset(*settings);
+    MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+    EXPECT_EQ(frame.settings.glossyFilter, render::GlossyFilter::Mip);
+    EXPECT_EQ(frame.settings.glossyTaps, 5);
+    EXPECT_EQ(frame.settings.prefilterSamples, 9);
+    EXPECT_DOUBLE_EQ(frame.reflector->roughness, 0.5);
+    auto again = load(serializeProject(*settings, QDir("/tmp")).toStdString());
+    ASSERT_TRUE(again) << again.error();
+    EXPECT_EQ(again->settings, settings->settings);
+
+    auto refused = [&](const std::string& settingsJson, const std::string& path) {
+        std::vector<std::string> warnings;
+        auto bad = parseProject(QByteArray::fromStdString(head + R"("settings": )" + settingsJson + "}"),
+                                QDir("/tmp"), warnings);
+        ASSERT_FALSE(bad) << settingsJson;
+        EXPECT_NE(bad.error().find(path), std::string::npos) << bad.error();
+    };
+    refused(R"({ "glossyFilter": "blurry" })", "settings.glossyFilter");
+    refused(R"({ "glossyTaps": 0 })", "settings.glossyTaps");
 }
 
 } // namespace
