@@ -172,4 +172,27 @@ vec4 envmapLookup2D(sampler2DArray map, int type, vec4 mapLayout, vec3 d, vec3 d
     return textureGrad(map, vec3(uv, float(component)), gx, gy);
 }
 
+// The rough reflector's lookups: at least `lod` (the roughness's level of a pre-filtered chain or of the
+// map's mip chain), and never sharper than the pixel's footprint, which the sharp lookups' gradients give:
+// log2 of the footprint in texels. The cube's texels span about 2/n of a unit direction at a face's centre.
+float envmapFootprintLod(vec2 texelsX, vec2 texelsY) {
+    return 0.5 * log2(max(max(dot(texelsX, texelsX), dot(texelsY, texelsY)), 1e-20));
+}
+
+vec4 envmapLookupCubeLod(samplerCube map, vec3 d, vec3 dDdx, vec3 dDdy, float lod) {
+    float texelsPerUnit = 0.5 * float(textureSize(map, 0).x);
+    float footprint = 0.5 * log2(max(max(dot(dDdx, dDdx), dot(dDdy, dDdy)), 1e-20)) + log2(texelsPerUnit);
+    return textureLod(map, d, max(lod, footprint));
+}
+
+vec4 envmapLookup2DLod(sampler2DArray map, int type, vec4 mapLayout, vec3 d, vec3 dDdx, vec3 dDdy, float lod) {
+    d = normalize(d);
+    int component = envmapComponent(type, d);
+    vec2 uv = mapLayout.zw + mapLayout.xy * envmapUv(type, component, d);
+    mat3x2 j = envmapUvJacobian(type, component, d);
+    vec2 size = vec2(textureSize(map, 0).xy);
+    float footprint = envmapFootprintLod(size * (mapLayout.xy * (j * dDdx)), size * (mapLayout.xy * (j * dDdy)));
+    return textureLod(map, vec3(uv, float(component)), max(lod, footprint));
+}
+
 #endif

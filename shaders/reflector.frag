@@ -20,6 +20,8 @@ uniform int uParallax;          // 0 off, 1 sphere, 2 box
 uniform float uParallaxRadius;
 uniform vec3 uParallaxMin;      // relative to the capture point
 uniform vec3 uParallaxMax;
+uniform int uRough;             // roughness > 0: one lookup at an explicit LOD in the bound texture
+uniform float uRoughnessLod;    // roughness × (levels − 1) of that texture (ReflectorPass::drawSurface)
 
 out vec4 fragColor;
 
@@ -53,8 +55,14 @@ void main() {
     // coordinates; the lookups turn them into an explicit LOD.
     vec3 dx = dFdx(d);
     vec3 dy = dFdy(d);
-    vec3 environment = uEnvType == ENVMAP_CUBE ? envmapLookupCube(uEnvCube, d, dx, dy).rgb
-                                               : envmapLookup2D(uEnvArray, uEnvType, uEnvLayout, d, dx, dy).rgb;
+    vec3 environment;
+    if (uRough == 0)
+        environment = uEnvType == ENVMAP_CUBE ? envmapLookupCube(uEnvCube, d, dx, dy).rgb
+                                              : envmapLookup2D(uEnvArray, uEnvType, uEnvLayout, d, dx, dy).rgb;
+    else
+        environment = uEnvType == ENVMAP_CUBE ? envmapLookupCubeLod(uEnvCube, d, dx, dy, uRoughnessLod).rgb
+                                              : envmapLookup2DLod(uEnvArray, uEnvType, uEnvLayout, d, dx, dy,
+                                                                  uRoughnessLod).rgb;
     float r = uReflectivity;
     if (uFresnel != 0) {
         // Schlick's approximation with the reflectivity as the value at normal incidence.

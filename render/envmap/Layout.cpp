@@ -30,4 +30,15 @@ MapLayout makeLayout(MapType type, int resolution, int guard) {
     return layout;
 }
 
+int mipLevelCount(int width, int height) {
+    int levels = 1;
+    for (int size = std::max(width, height); size > 1; size /= 2)
+        ++levels;
+    return levels;
+}
+
+int prefilterLevels(const MapLayout& layout) {
+    return std::min(kMaxPrefilterLevels, mipLevelCount(layout.width, layout.height));
+}
+
 } // namespace speculum::render::envmap

@@ -43,4 +43,15 @@ int defaultGuard(int resolution);
 // guard < 0 picks defaultGuard(n); the cube ignores it. n ≥ 8 and 4·guard < n, else an assertion.
 MapLayout makeLayout(MapType type, int resolution, int guard = -1);
 
+// Levels of a full mip chain of a width × height component (down to 1×1).
+int mipLevelCount(int width, int height);
+
+// The GGX pre-filtered chain of a rough reflector: a texture of the map's own layout and size whose mip
+// level k holds the map convolved with the GGX lobe of roughness r_k = k / (levels − 1), level 0 the sharp
+// map. Mip levels keep the layout's texture coordinates (the guard band scales with the level), so one
+// explicit-LOD lookup at roughness × (levels − 1) reads between the two nearest levels. Six levels (r in
+// steps of 0.2), fewer for maps too small for them.
+inline constexpr int kMaxPrefilterLevels = 6;
+int prefilterLevels(const MapLayout& layout);
+
 } // namespace speculum::render::envmap

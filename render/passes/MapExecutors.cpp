@@ -1,4 +1,5 @@
-// The passes that draw a map of their own: a light's shadow map, the reflector's environment map.
+// The passes that draw a map of their own: a light's shadow map, the reflector's environment map and its
+// GGX pre-filtered chain.
 #include "render/passes/PassExecutors.hpp"
 
 namespace speculum::render::passes {
@@ -37,6 +38,23 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
     }
     frame.commits.envmapSignature = map.signature;
     frame.commits.envmapSettings = map.settingsKey;
+    return {};
+}
+
+PassResult runPrefilter(const PlannedPass& pass, FrameExecution& frame) {
+    const Reflector* reflector = frame.input.reflector ? &*frame.input.reflector : nullptr;
+    FrameResources& r = frame.resources;
+    if (!reflector || !r.reflector.hasMap(*reflector)) { // the map could not be allocated or drawn
+        frame.skipped.push_back({pass.target, "no GGX pre-filtered chain: the reflector has no map"});
+        return {false, {}};
+    }
+    bindWrites(pass.writes, frame);
+    if (Status filtered = r.reflector.prefilter(*reflector, frame.input.settings.prefilterSamples);
+        !filtered) {
+        frame.warnings.push_back(filtered.error());
+        return {};
+    }
+    frame.commits.prefilterKey = pass.signature;
     return {};
 }
 

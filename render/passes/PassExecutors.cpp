@@ -74,6 +74,8 @@ PassResult runPass(const PlannedPass& pass, FrameExecution& frame) {
         return runMirrorSurface(pass, frame);
     case PassKind::Envmap:
         return runEnvmap(pass, frame);
+    case PassKind::Prefilter:
+        return runPrefilter(pass, frame);
     case PassKind::Main:
         return runMain(pass, frame);
     case PassKind::Composite:

@@ -86,6 +86,7 @@ void resetPassState();
 // The executors, one per pass kind (family files: MapExecutors, SceneExecutors, MirrorExecutors).
 PassResult runShadow(const PlannedPass& pass, FrameExecution& frame);
 PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame);
+PassResult runPrefilter(const PlannedPass& pass, FrameExecution& frame);
 PassResult runMain(const PlannedPass& pass, FrameExecution& frame);
 PassResult runComposite(const PlannedPass& pass, FrameExecution& frame);
 PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame);

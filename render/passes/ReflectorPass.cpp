@@ -172,6 +172,24 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, M
     };
     m_capture->update(view, drawFace, drawWarped);
     m_settingsKey = key;
+    ++m_captures; // the chain, if any, holds an older map now
+    return Done{};
+}
+
+Status ReflectorPass::prefilter(const Reflector& reflector, int samples) {
+    if (!hasMap(reflector))
+        return Done{}; // nothing captured (the map could not be allocated: warned already)
+    m_chainOf = 0;
+    if (!m_prefilter) {
+        auto created = envmap::GgxPrefilter::create();
+        if (!created)
+            return Error{"reflector " + quoted(reflector.name) + ": the GGX pre-filter " + created.error()};
+        m_prefilter = std::move(*created);
+    }
+    if (Status filtered = m_prefilter->filter(*m_capture, samples); !filtered)
+        return Error{"reflector " + quoted(reflector.name) + ": " + filtered.error() +
+                     "; drawn with the map's mip chain instead"};
+    m_chainOf = m_captures;
     return Done{};
 }
 
@@ -205,8 +223,26 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     p.set("uParallaxMax", glm::vec3(r.parallax.max));
     p.set("uEnvCube", kEnvCubeUnit);
     p.set("uEnvArray", kEnvArrayUnit);
+    // A rough reflector reads one texture at an explicit LOD: the pre-filtered chain (same target and
+    // layout as the map) at roughness × (levels − 1), or, for Mip (or without a chain), the map's own mip
+    // chain at roughness × (its levels − 1), box-filtered levels standing in for the lobe. Roughness 0
+    // takes the sharp lookup, as before roughness existed.
+    const double roughness = std::clamp(r.roughness, 0.0, 1.0);
+    GLuint texture = map.texture();
+    float lod = 0.0f;
+    if (roughness > 0.0) {
+        const bool chain = input.settings.glossyFilter == GlossyFilter::Footprint && hasChain(r);
+        const int levels =
+            chain ? m_prefilter->levels()
+                  : (map.settings().mipmaps ? envmap::mipLevelCount(map.layout().width, map.layout().height)
+                                            : 1);
+        texture = chain ? m_prefilter->texture() : texture;
+        lod = static_cast<float>(roughness * (levels - 1));
+    }
+    p.set("uRough", roughness > 0.0 ? 1 : 0);
+    p.set("uRoughnessLod", lod);
     glActiveTexture(GL_TEXTURE0 + (map.target() == GL_TEXTURE_CUBE_MAP ? kEnvCubeUnit : kEnvArrayUnit));
-    glBindTexture(map.target(), map.texture());
+    glBindTexture(map.target(), texture);
     glActiveTexture(GL_TEXTURE0);
     drawLitMesh(r.mesh, r.world, input, p, context);
     return true;

@@ -3,6 +3,7 @@
 #include "render/FrameInput.hpp"
 #include "render/Result.hpp"
 #include "render/envmap/EnvironmentCapture.hpp"
+#include "render/envmap/GgxPrefilter.hpp"
 #include "render/gl/Allocation.hpp"
 #include "render/passes/EnvironmentMirrors.hpp"
 #include "render/passes/MainPass.hpp"
@@ -49,12 +50,21 @@ public:
     // Whether a map made with the reflector's current settings exists.
     bool hasMap(const Reflector& reflector) const;
 
+    // The Prefilter pass: convolves the map last captured with the GGX lobe into the pre-filtered chain
+    // (envmap::GgxPrefilter), `samples` a texel. An error (the program, the chain's allocation) leaves no
+    // chain: the reflector then reads the map's mip chain (GlossyFilter::Mip) and the caller warns.
+    Status prefilter(const Reflector& reflector, int samples);
+    // Whether the chain holds the map as last captured (the surface reads it for Footprint).
+    bool hasChain(const Reflector& reflector) const {
+        return hasMap(reflector) && m_chainOf != 0 && m_chainOf == m_captures;
+    }
+
     // Draws the reflector with its map in `view`; false (nothing changed) if there is no map for it.
     bool drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context);
 
     // GPU memory of the reflector's map if one made with its current settings exists, else 0.
     std::size_t mapBytes(const Reflector& reflector) const {
-        return hasMap(reflector) ? m_capture->bytes() : 0;
+        return hasMap(reflector) ? m_capture->bytes() + (m_prefilter ? m_prefilter->bytes() : 0) : 0;
     }
 
     // The map itself, for tests and tools (empty before the first capture).
@@ -68,6 +78,9 @@ public:
 private:
     std::optional<envmap::EnvironmentCapture> m_capture;
     std::uint64_t m_settingsKey = 0; // of the map last rendered into m_capture; 0: not rendered yet
+    std::uint64_t m_captures = 0;    // captures so far: the chain knows which one it filtered
+    std::uint64_t m_chainOf = 0;     // the capture the chain holds (0: none)
+    std::optional<envmap::GgxPrefilter> m_prefilter;             // built by the first Prefilter pass
     std::map<std::pair<int, int>, gl::SizeFallback> m_fallbacks; // by map type and fill
     glm::dvec3 m_centre{0.0};                                    // the capture point of the map, world space
     gl::Program m_warp;                                          // mesh.vert with ENVMAP_WARP + mesh.frag

@@ -14,7 +14,9 @@
 
 namespace speculum::render {
 
-enum class PassKind { Shadow, MirrorMask, Mirror, MirrorSurface, Envmap, Main, Composite };
+// Prefilter: the reflector's GGX pre-filtered chain, convolved from its environment map (runs after Envmap,
+// only when the map changed or the chain's sample count did).
+enum class PassKind { Shadow, MirrorMask, Mirror, MirrorSurface, Envmap, Prefilter, Main, Composite };
 
 std::string_view toString(PassKind kind);
 
@@ -56,7 +58,8 @@ struct PlannedPass {
     int lightIndex = -1; // shadow passes: index into FrameInput::lights
     int view = -1;       // mirror passes: index into FramePlan::views
     // Shadow passes: the signature of what the map holds (shadowSignature), which the renderer records
-    // once the map is drawn, so the next frame's planner can reuse it.
+    // once the map is drawn, so the next frame's planner can reuse it. Prefilter passes: the chain's
+    // (prefilterKey), recorded the same way.
     std::uint64_t signature = 0;
     PassWrites writes;
 };

@@ -28,6 +28,7 @@ PassWrites cameraWrites(const FrameInput& input, const FramePlan& plan, const Pl
     switch (pass.kind) {
     case PassKind::Shadow:
     case PassKind::Envmap:
+    case PassKind::Prefilter:
         writes.target = PassTarget::OwnMap;
         break;
     case PassKind::Main:
@@ -98,6 +99,7 @@ PassWrites envmapWrites(const EnvmapPlan& map, const PlannedPass& pass) {
         break;
     case PassKind::Shadow: // not planned inside the map
     case PassKind::Envmap:
+    case PassKind::Prefilter:
     case PassKind::Main:
     case PassKind::Composite:
         break;

@@ -25,6 +25,8 @@ std::string_view toString(PassKind kind) {
         return "mirror-surface";
     case PassKind::Envmap:
         return "envmap";
+    case PassKind::Prefilter:
+        return "prefilter";
     case PassKind::Main:
         return "main";
     case PassKind::Composite:

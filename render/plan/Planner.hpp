@@ -18,6 +18,8 @@ struct PlannerState {
     // of the settings it was made with (envmapSettingsKey).
     std::optional<std::uint64_t> envmapSignature;
     std::optional<std::uint64_t> envmapSettings;
+    // The reflector's GGX pre-filtered chain, once filtered: prefilterKey of the map and samples it holds.
+    std::optional<std::uint64_t> prefilterKey;
 };
 
 inline constexpr int kMaxLights = 8;
@@ -73,13 +75,18 @@ std::uint64_t envmapSettingsKey(const Reflector& reflector);
 // mirror. Animations change transforms, so they change it too. Equal signatures: the map can be reused.
 std::uint64_t envmapSignature(const FrameInput& input);
 
+// Hash of what the reflector's GGX pre-filtered chain holds: the map it was filtered from (its signature and
+// settings) and the samples a texel. Equal keys: the chain can be reused.
+std::uint64_t prefilterKey(std::uint64_t envmapSignature, std::uint64_t envmapSettings, int samples);
+
 // Whether the reflector's world bounds can be seen by the camera or in one of the mirror views planned
 // in `plan` (its reflected frustum, with the oblique near plane, narrowed to the mirror's pixels).
 // `where` gets "seen directly" or "seen in <mirror>".
 bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, const FramePlan& plan,
                       std::string* where = nullptr);
 
-// The environment-map part of planning: appends the envmap pass to `plan` (or a skip with its reason).
+// The environment-map part of planning: appends the envmap pass to `plan` (or a skip with its reason), then
+// the GGX pre-filter's pass (or a skip) for a rough reflector.
 // `mirrors` holds the frame's mirror views, used for visibility.
 void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
                    const FramePlan& mirrors, FramePlan& plan);

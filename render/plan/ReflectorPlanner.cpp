@@ -10,10 +10,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <optional>
 
 namespace speculum::render {
 
 namespace {
+
+envmap::MapType mapTypeOf(ReflectorMap map) {
+    return map == ReflectorMap::Cube             ? envmap::MapType::Cube
+           : map == ReflectorMap::DualParaboloid ? envmap::MapType::DualParaboloid
+                                                 : envmap::MapType::TennisBall;
+}
 
 // True if all eight corners lie on the negative side of one of the planes (clip-space rows): the box is
 // outside. Conservative: a box near a frustum edge may be reported inside.
@@ -187,6 +195,76 @@ bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, con
     return false;
 }
 
+std::uint64_t prefilterKey(std::uint64_t envmapSignature, std::uint64_t envmapSettings, int samples) {
+    Hasher h;
+    h.add(envmapSignature);
+    h.add(envmapSettings);
+    h.add(samples);
+    return h.value;
+}
+
+namespace {
+
+// The GGX pre-filter of a visible reflector (planReflector). `captured`: the signature of the map the
+// Envmap pass renders this frame; empty when the map is reused. The chain is filtered only when the map
+// was rendered again, or the sample count changed, and only when the lookup reads it: a pass nothing on
+// screen needs never runs.
+void planPrefilter(const FrameInput& input, const PlannerState& state, std::optional<std::uint64_t> captured,
+                   FramePlan& plan) {
+    const Reflector& reflector = *input.reflector;
+    const std::string name = reflector.name;
+    if (!(reflector.roughness > 0.0)) {
+        plan.skipped.push_back({name, "GGX pre-filter not needed: the reflector's roughness is 0 (a sharp "
+                                      "reflection reads the map itself)"});
+        return;
+    }
+    const envmap::MapLayout layout = envmap::makeLayout(mapTypeOf(reflector.map), reflector.resolution);
+    if (input.settings.glossyFilter == GlossyFilter::Mip) {
+        const int levels = envmap::mipLevelCount(layout.width, layout.height);
+        plan.skipped.push_back(
+            {name, "GGX pre-filter not needed: settings.glossyFilter is mip (the reflector "
+                   "reads its map's mip chain at LOD roughness × " +
+                       std::to_string(levels - 1) + ")"});
+        return;
+    }
+    const int samples = std::clamp(input.settings.prefilterSamples, 1, 4096);
+    const std::uint64_t settings = envmapSettingsKey(reflector);
+    std::string why;
+    std::uint64_t key = 0;
+    if (captured) {
+        why = "the map is rendered this frame";
+        key = prefilterKey(*captured, settings, samples);
+    } else {
+        key = prefilterKey(state.envmapSignature.value_or(0), settings, samples);
+        if (state.prefilterKey && *state.prefilterKey == key) {
+            plan.skipped.push_back(
+                {name, "GGX pre-filter reused: the map did not change: the chain is reused"});
+            return;
+        }
+        why = state.prefilterKey ? "the chain was filtered with other settings (prefilterSamples)"
+                                 : "no chain yet";
+    }
+    const int levels = envmap::prefilterLevels(layout);
+    const double roughness = std::min(reflector.roughness, 1.0);
+    const double at = roughness * (levels - 1);
+    const int below = static_cast<int>(std::floor(at));
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", roughness);
+    const std::string reads =
+        at == below ? "reads level " + std::to_string(below)
+                    : "reads between levels " + std::to_string(below) + " and " + std::to_string(below + 1);
+    PlannedPass pass;
+    pass.kind = PassKind::Prefilter;
+    pass.target = name;
+    pass.reason = "convolves " + name + "'s map with the GGX lobe into " + std::to_string(levels) +
+                  " levels (roughness r_k = k/" + std::to_string(levels - 1) + "; " + text + " " + reads +
+                  "), " + std::to_string(samples) + " samples a texel; " + why;
+    pass.signature = key;
+    plan.passes.push_back(std::move(pass));
+}
+
+} // namespace
+
 void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
                    const FramePlan& mirrors, FramePlan& plan) {
     if (!input.reflector || !input.reflector->mesh)
@@ -200,20 +278,22 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     }
     const bool haveMap = state.envmapSignature && state.envmapSettings == envmapSettingsKey(reflector);
     std::string why;
+    std::string reused;
     if (!haveMap) {
         why = "no map yet";
     } else if (reflector.update == ReflectorUpdate::Always) {
         why = "update: always";
     } else if (reflector.update == ReflectorUpdate::Once) {
-        plan.skipped.push_back(
-            {reflector.name, "environment map reused: update is \"once\" and the map was rendered"});
-        return;
+        reused = "environment map reused: update is \"once\" and the map was rendered";
     } else if (*state.envmapSignature == envmapSignature(input)) {
-        plan.skipped.push_back({reflector.name, "environment map reused: nothing it sees changed since it "
-                                                "was rendered (update on-change)"});
-        return;
+        reused = "environment map reused: nothing it sees changed since it was rendered (update on-change)";
     } else {
         why = "something it sees changed (update on-change)";
+    }
+    if (!reused.empty()) {
+        plan.skipped.push_back({reflector.name, std::move(reused)});
+        planPrefilter(input, state, {}, plan);
+        return;
     }
     const int n = reflector.resolution;
     const std::string size = std::to_string(n) + "×" + std::to_string(n);
@@ -252,7 +332,9 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     map.settingsKey = envmapSettingsKey(reflector);
     map.faces = envmapFaces(reflector, map.capture);
     planEnvmapMirrors(input, map);
+    const std::uint64_t signature = map.signature;
     plan.envmap = std::move(map);
+    planPrefilter(input, state, signature, plan);
 }
 
 } // namespace speculum::render

@@ -4,6 +4,7 @@ speculum_add_test(test_render_plan TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_gpu_limits.cpp ${CMAKE_CURRENT_LIST_DIR}/test_signatures.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_envmap_mirrors.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_reflected_detail.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_prefilter_planner.cpp
     LIBS speculum_render)
 # What the planner declares for the executor (PassWrites, ShadowPlan), against the core library alone: it
 # builds and runs while the GL libraries change.

@@ -1,0 +1,167 @@
+// The reflector's GGX pre-filter, planned without GL: a Prefilter pass right after the environment pass
+// when a rough reflector reads the pre-filtered chain (GlossyFilter::Footprint), a skip with its reason
+// otherwise (roughness 0, the Mip filter), and no pass again while the map and the sample count stay the
+// same.
+#include "render/mesh/Primitives.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+namespace speculum::render {
+namespace {
+
+FrameInput roughBall(double roughness, GlossyFilter filter = GlossyFilter::Footprint) {
+    FrameInput input;
+    input.camera.position = {0.0, 0.0, 5.0};
+    input.camera.target = {0.0, 0.0, 0.0};
+    input.camera.far = 50.0;
+    static const auto box = std::make_shared<const MeshData>(makeBox());
+    static const auto sphere = std::make_shared<const MeshData>(makeSphere(16));
+    input.items.push_back({"Box", glm::translate(glm::dmat4(1.0), glm::dvec3(2, 0, 0)), box, {}, true});
+    input.settings.glossyFilter = filter;
+    Reflector r;
+    r.name = "Ball";
+    r.mesh = sphere;
+    r.roughness = roughness;
+    input.reflector = r;
+    return input;
+}
+
+const PlannedPass* passOf(const FramePlan& plan, PassKind kind) {
+    const auto it = std::find_if(plan.passes.begin(), plan.passes.end(),
+                                 [&](const PlannedPass& p) { return p.kind == kind; });
+    return it == plan.passes.end() ? nullptr : &*it;
+}
+
+std::string prefilterSkip(const FramePlan& plan) {
+    for (const SkippedEffect& s : plan.skipped)
+        if (s.reason.find("GGX pre-filter") != std::string::npos)
+            return s.reason;
+    return {};
+}
+
+// What the renderer records once the map and the chain are drawn.
+PlannerState afterRendering(const FrameInput& input) {
+    PlannerState state;
+    state.envmapSignature = envmapSignature(input);
+    state.envmapSettings = envmapSettingsKey(*input.reflector);
+    state.prefilterKey =
+        prefilterKey(*state.envmapSignature, *state.envmapSettings, input.settings.prefilterSamples);
+    return state;
+}
+
+TEST(PrefilterPlanner, RoughFootprintReflectorFiltersRightAfterTheEnvironmentPass) {
+    const FramePlan plan = planFrame(roughBall(0.35), {});
+    std::vector<PassKind> kinds;
+    for (const PlannedPass& p : plan.passes)
+        kinds.push_back(p.kind);
+    EXPECT_EQ(kinds,
+              (std::vector{PassKind::Envmap, PassKind::Prefilter, PassKind::Main, PassKind::Composite}));
+    const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
+    ASSERT_NE(prefilter, nullptr);
+    EXPECT_EQ(prefilter->target, "Ball");
+    EXPECT_EQ(prefilter->writes.target, PassTarget::OwnMap);
+    EXPECT_NE(prefilter->reason.find("convolves Ball's map with the GGX lobe into 6 levels"),
+              std::string::npos)
+        << prefilter->reason;
+    EXPECT_NE(prefilter->reason.find("0.35 reads between levels 1 and 2"), std::string::npos)
+        << prefilter->reason;
+    EXPECT_NE(prefilter->reason.find("64 samples a texel"), std::string::npos) << prefilter->reason;
+    EXPECT_EQ(toString(PassKind::Prefilter), "prefilter");
+    EXPECT_TRUE(prefilterSkip(plan).empty());
+}
+
+TEST(PrefilterPlanner, RoughnessZeroPlansNoPrefilter) {
+    for (GlossyFilter filter : {GlossyFilter::Footprint, GlossyFilter::Mip}) {
+        const FramePlan plan = planFrame(roughBall(0.0, filter), {});
+        EXPECT_EQ(passOf(plan, PassKind::Prefilter), nullptr);
+        EXPECT_NE(prefilterSkip(plan).find("roughness is 0"), std::string::npos) << prefilterSkip(plan);
+    }
+}
+
+TEST(PrefilterPlanner, MipFilterPlansNoPrefilter) {
+    const FramePlan plan = planFrame(roughBall(0.5, GlossyFilter::Mip), {});
+    EXPECT_EQ(passOf(plan, PassKind::Prefilter), nullptr);
+    EXPECT_NE(passOf(plan, PassKind::Envmap), nullptr);
+    // 256² cube: 9 mip levels, LOD roughness × 8.
+    EXPECT_NE(prefilterSkip(plan).find("glossyFilter is mip"), std::string::npos) << prefilterSkip(plan);
+    EXPECT_NE(prefilterSkip(plan).find("roughness × 8"), std::string::npos) << prefilterSkip(plan);
+}
+
+TEST(PrefilterPlanner, ReusedMapReusesTheChain) {
+    const FrameInput input = roughBall(0.6);
+    const FramePlan plan = planFrame(input, afterRendering(input));
+    EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr);
+    EXPECT_EQ(passOf(plan, PassKind::Prefilter), nullptr);
+    EXPECT_NE(prefilterSkip(plan).find("the map did not change: the chain is reused"), std::string::npos)
+        << prefilterSkip(plan);
+}
+
+TEST(PrefilterPlanner, NewRoughnessOrFilterKeepsTheChain) {
+    // The chain holds every level: another roughness, or switching the filter back, reads the same chain.
+    const FrameInput before = roughBall(0.2);
+    const PlannerState state = afterRendering(before);
+    FrameInput after = roughBall(0.9);
+    EXPECT_EQ(passOf(planFrame(after, state), PassKind::Prefilter), nullptr);
+}
+
+TEST(PrefilterPlanner, ChangedSampleCountFiltersAgainWithoutCapturing) {
+    const FrameInput before = roughBall(0.6);
+    FrameInput after = before;
+    after.settings.prefilterSamples = 256;
+    const FramePlan plan = planFrame(after, afterRendering(before));
+    EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr) << "the map is not captured again";
+    const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
+    ASSERT_NE(prefilter, nullptr);
+    EXPECT_NE(prefilter->reason.find("256 samples a texel"), std::string::npos) << prefilter->reason;
+    EXPECT_NE(prefilter->reason.find("prefilterSamples"), std::string::npos) << prefilter->reason;
+}
+
+TEST(PrefilterPlanner, ReusedMapWithoutAChainFiltersOnce) {
+    // Roughness raised from 0 while the map is reused: the chain is made from the map as it is.
+    const FrameInput sharp = roughBall(0.0);
+    PlannerState state = afterRendering(sharp);
+    state.prefilterKey.reset();
+    const FramePlan plan = planFrame(roughBall(0.5), state);
+    EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr);
+    const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
+    ASSERT_NE(prefilter, nullptr);
+    EXPECT_NE(prefilter->reason.find("no chain yet"), std::string::npos) << prefilter->reason;
+    EXPECT_EQ(prefilter->signature, prefilterKey(*state.envmapSignature, *state.envmapSettings, 64));
+}
+
+TEST(PrefilterPlanner, RecapturedMapIsFilteredAgain) {
+    const FrameInput before = roughBall(0.5);
+    FrameInput after = before;
+    after.items[0].world = glm::translate(glm::dmat4(1.0), glm::dvec3(2.5, 0, 0));
+    const FramePlan plan = planFrame(after, afterRendering(before));
+    ASSERT_NE(passOf(plan, PassKind::Envmap), nullptr);
+    const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
+    ASSERT_NE(prefilter, nullptr);
+    EXPECT_NE(prefilter->reason.find("the map is rendered this frame"), std::string::npos)
+        << prefilter->reason;
+    EXPECT_EQ(prefilter->signature,
+              prefilterKey(envmapSignature(after), envmapSettingsKey(*after.reflector), 64));
+}
+
+TEST(PrefilterPlanner, InvisibleReflectorPlansNoPrefilter) {
+    FrameInput input = roughBall(0.5);
+    input.camera.target = {0.0, 0.0, 10.0}; // looking away
+    const FramePlan plan = planFrame(input, {});
+    EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr);
+    EXPECT_EQ(passOf(plan, PassKind::Prefilter), nullptr);
+}
+
+TEST(PrefilterPlanner, LevelsFollowTheMapSize) {
+    FrameInput input = roughBall(1.0);
+    input.reflector->resolution = 8; // 4 mip levels: r_k = k/3
+    const PlannedPass* prefilter = passOf(planFrame(input, {}), PassKind::Prefilter);
+    ASSERT_NE(prefilter, nullptr);
+    EXPECT_NE(prefilter->reason.find("into 4 levels"), std::string::npos) << prefilter->reason;
+    EXPECT_NE(prefilter->reason.find("1 reads level 3"), std::string::npos) << prefilter->reason;
+}
+
+} // namespace
+} // namespace speculum::render
