@@ -3,6 +3,7 @@
 #include "render/SceneLimits.hpp"
 #include "render/StillRenderer.hpp"
 #include "render/io/Printable.hpp"
+#include "render/reference/Tracer.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -107,7 +108,7 @@ std::string unknownCommand(const std::string& word) {
 std::string usageText() {
     return "usage:\n"
            "  speculum [PROJECT]                          open the editor\n"
-           "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference] "
+           "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference [--samples N]] "
            "[--keep-going]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--json]\n"
            "  speculum bench PROJECT --out DIR [--quick] [--size WxH] [--keep-going]\n"
@@ -118,6 +119,8 @@ std::string usageText() {
            "render writes PNG, JPEG, TIFF, EXR or another format OpenImageIO writes (by the extension of\n"
            "OUT); --size defaults to 1280x720,\n"
            "--ssaa N averages NxN samples per pixel (1..16), --time evaluates animations at T seconds.\n"
+           "--reference draws the still with the exact ray tracer; --samples N (1..65536, default 16) paths\n"
+           "per sample average rough reflections, and the noise left is printed.\n"
            "explain renders a frame and lists the passes that ran and the effects skipped, with reasons;\n"
            "--frame N explains the Nth of N identical frames, showing what a static scene reuses.\n"
            "bench sweeps the settings the scene uses (map type and resolution, parallax, mirror technique "
@@ -172,7 +175,7 @@ const char* describe(Command command) {
 // The values of a command's options as typed: checked after parsing, with the same messages whatever
 // form they came in (--size 64x36, --size=64x36).
 struct Typed {
-    std::string size, ssaa, time, frame, frames;
+    std::string size, ssaa, time, frame, frames, samples;
 };
 
 render::Status checkValues(const Typed& t, CliOptions& o) {
@@ -201,6 +204,15 @@ render::Status checkValues(const Typed& t, CliOptions& o) {
         if (!n)
             return Error{n.error()};
         o.ssaa = *n;
+    }
+    if (!t.samples.empty()) {
+        auto n = parseInt("--samples", t.samples, render::reference::kMinTraceSamples,
+                          render::reference::kMaxTraceSamples);
+        if (!n)
+            return Error{n.error()};
+        if (!o.reference)
+            return Error{"--samples: only with --reference (the tracer's paths per rough reflection)"};
+        o.samples = *n;
     }
     if (!t.time.empty()) {
         auto seconds = parseTime(t.time);
@@ -258,6 +270,9 @@ render::Result<CliOptions> parseCommand(Command command, const std::string& name
     if (command == Command::Render) {
         app.add_option("--ssaa", typed.ssaa, "Average NxN samples per pixel (1..16)")->type_name("N");
         app.add_flag("--reference", o.reference, "Draw the still with the exact tracer");
+        app.add_option("--samples", typed.samples,
+                       "With --reference: paths per sample through rough reflections (1..65536, default 16)")
+            ->type_name("N");
     }
     if (renders || command == Command::Time)
         app.add_option("--time", typed.time, "Evaluate animations at T seconds (default 0)")->type_name("T");

@@ -23,6 +23,7 @@ struct CliOptions {
     int ssaa = 1;
     double time = 0.0;
     bool reference = false;
+    int samples = 16; // render --reference: paths per sample through rough reflections (TraceSettings)
     bool json = false;
     bool quick = false;
     int frame = 1; // explain: which of consecutive frames of the same scene to explain (reuse shows from 2)

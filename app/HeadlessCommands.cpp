@@ -20,8 +20,10 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -170,6 +172,22 @@ std::string fileName(const std::string& path) {
     return std::filesystem::path(path).filename().string();
 }
 
+// What the Monte Carlo part of a reference render left: the noise of its rough reflections, in linear
+// radiance (the root mean square of the pixels' standard errors).
+std::string noiseLine(const render::reference::TraceResult& traced) {
+    std::ostringstream line;
+    line << "reference: " << traced.image.width << "\u00d7" << traced.image.height << ", " << traced.paths
+         << (traced.paths == 1 ? " path" : " paths") << " per glossy pixel (" << traced.glossyPixels
+         << (traced.glossyPixels == 1 ? " pixel), " : " pixels), ");
+    if (traced.glossyPixels == 0)
+        line << "exact (no rough reflections)";
+    else if (std::isnan(traced.noiseRms))
+        line << "noise not estimated (one path has no spread)";
+    else
+        line << "noise " << std::setprecision(2) << traced.noiseRms << " RMS standard error";
+    return line.str();
+}
+
 // `render --reference`: the exact tracer on the CPU, no GL. Same output checks and metadata as a
 // rasterized still; nothing is written on failure or cancel.
 int runReferenceRender(const CliOptions& options, Clock::time_point start) {
@@ -187,6 +205,7 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
     settings.width = options.width;
     settings.height = options.height;
     settings.ssaa = options.ssaa;
+    settings.samples = options.samples;
     Progress tracing("tracing");
     auto progress = [&](double fraction) {
         // Once the render has taken a moment: nothing for tiny frames.
@@ -205,7 +224,10 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
 
     std::ostringstream settingsText;
     settingsText << "size " << sizeText(options.width, options.height) << ", ssaa " << options.ssaa
-                 << ", time " << options.time << " s, reference";
+                 << ", time " << options.time << " s, reference, " << traced->paths
+                 << (traced->paths == 1 ? " path" : " paths") << " per glossy sample";
+    std::ostringstream noiseText; // full precision, for scripts comparing renders
+    noiseText << std::setprecision(17) << traced->noiseRms;
     render::ImageMetadata metadata;
     metadata.attributes = {
         {"Software", std::string("speculum ") + SPECULUM_VERSION},
@@ -214,6 +236,8 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
         {"speculum:scene", absoluteText(options.project)},
         {"speculum:settings", settingsText.str()},
         {"speculum:renderTimeMs", std::to_string(traced->totalMs)},
+        {"speculum:noiseRms", noiseText.str()},
+        {"speculum:glossyPixels", std::to_string(traced->glossyPixels)},
         {"speculum:renderer", "reference ray tracer (Embree 3, " +
                                   std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
                                   " threads)"},
@@ -225,7 +249,7 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
     std::cerr << "speculum: traced " << sizeText(options.width, options.height) << " with " << traced->samples
               << (traced->samples == 1 ? " sample" : " samples") << " per pixel in "
               << static_cast<int>(traced->totalMs + 0.5) << " ms\n";
-    std::cout << render::printable(options.output, 4096) << "\n";
+    std::cout << render::printable(options.output, 4096) << "\n" << noiseLine(*traced) << "\n";
     return 0;
 }
 

@@ -5,6 +5,7 @@
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"
+#include "render/reference/GlossySampling.hpp"
 #include "render/reference/SceneGeometry.hpp"
 #include "render/reference/Shading.hpp"
 #include "render/reference/TextureSampler.hpp"
@@ -57,7 +58,32 @@ struct Tracer::Impl {
         int mirrorLimit = 0; // planar reflections allowed: the scene's depth, or the reflector's in its map
         int reflectorLevel = 0;     // bounces off the reflector so far
         double farLeft = kInfinity; // what is left of the camera's far plane (in units of the direction)
+        // Rough reflections: the path's random numbers, the lobe samples taken so far (their counter), and
+        // whether it took any (set through the pointer, so the caller learns whether the pixel is exact).
+        PathSeed seed;
+        int bounce = 0;
+        bool* rough = nullptr;
     };
+
+    // The direction a reflection of `direction` about `normal` follows: the mirror direction for a
+    // perfect mirror, a sample of the GGX lobe otherwise, with the sample's weight (0: nothing comes back).
+    // `next` counts the bounce. The result keeps the length of `direction` (t stays in its units).
+    static glm::dvec3 reflectedDirection(const glm::dvec3& direction, const glm::dvec3& normal,
+                                         const glm::dvec3& viewDir, double roughness, const Path& path,
+                                         Path& next, double& weight) {
+        const glm::dvec3 mirrored = direction - 2.0 * glm::dot(direction, normal) * normal;
+        weight = 1.0;
+        if (!(roughness > 0.0))
+            return mirrored;
+        if (path.rough)
+            *path.rough = true;
+        next.bounce = path.bounce + 1;
+        const auto bounce = static_cast<std::uint32_t>(path.bounce);
+        const LobeSample lobe = sampleLobe(normal, viewDir, roughness, pathUniform(path.seed, bounce, 0),
+                                           pathUniform(path.seed, bounce, 1));
+        weight = lobe.weight;
+        return lobe.direction * glm::length(direction);
+    }
 
     // The colour seen along origin + t·direction, t ≥ tnear. `id`, if given, receives what was hit.
     glm::dvec3 radiance(const Shader& shader, const TraceSettings& settings, const glm::dvec3& origin,
@@ -108,9 +134,15 @@ struct Tracer::Impl {
             Path next = path;
             next.mirrorLevel += 1;
             next.farLeft = path.farLeft - hit->t;
-            const glm::dvec3 reflected = direction - 2.0 * glm::dot(direction, normal) * normal;
-            result += mirror.tint * r *
-                      radiance(shader, settings, hit->position + normal * eps, reflected, 0.0, next, nullptr);
+            double weight = 1.0;
+            const glm::dvec3 reflected =
+                reflectedDirection(direction, normal, viewDir, mirror.roughness, path, next, weight);
+            if (weight <= 0.0) // a lobe sample lost below the mirror
+                return result;
+            const glm::dvec3 seen =
+                radiance(shader, settings, hit->position + normal * eps, reflected, 0.0, next, nullptr);
+            // A perfect mirror's weight is exactly 1, and 1·x = x: its pixels do not change by a bit.
+            result += mirror.tint * r * (weight * seen);
             return result;
         }
         case SurfaceKind::Reflector: {
@@ -137,11 +169,16 @@ struct Tracer::Impl {
             next.mirrorLevel = 0;
             next.mirrorLimit = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
             const glm::dvec3 d = glm::normalize(direction);
-            const glm::dvec3 reflected = d - 2.0 * glm::dot(d, hit->normal) * hit->normal;
+            double weight = 1.0;
+            const glm::dvec3 reflected =
+                reflectedDirection(d, hit->normal, viewDir, reflector.roughness, path, next, weight);
+            if (weight <= 0.0) // a lobe sample lost below the (interpolated) surface
+                return result;
             const glm::dvec3 side = glm::dot(reflected, hit->geometricNormal) >= 0.0 ? hit->geometricNormal
                                                                                      : -hit->geometricNormal;
-            result +=
-                r * radiance(shader, settings, hit->position + side * eps, reflected, 0.0, next, nullptr);
+            const glm::dvec3 seen =
+                radiance(shader, settings, hit->position + side * eps, reflected, 0.0, next, nullptr);
+            result += r * (weight * seen);
             return result;
         }
         }
@@ -197,6 +234,7 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
     const Impl& impl = *m_impl;
     const int width = settings.width, height = settings.height;
     const int n = std::clamp(settings.ssaa, kMinSsaa, kMaxSsaa);
+    const int paths = std::clamp(settings.samples, kMinTraceSamples, kMaxTraceSamples);
     const Shader shader(impl.lights, *impl.geometry, impl.textures, impl.input.settings.ambient,
                         settings.shadows);
 
@@ -215,12 +253,56 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
     primary.farLeft = camera.far;
     primary.mirrorLimit = impl.maxMirrorDepth;
 
+    // One sub-sample: its first path, and only if that met a rough surface `paths` paths in all (the
+    // first among them), averaged. The squared standard error of the average is the paths' sample
+    // variance over their number (Welford's running sums, exact enough for nearly equal values); NaN
+    // with a single path, which has no spread to measure.
+    struct SubSample {
+        glm::dvec3 value{0.0};
+        glm::dvec3 error2{0.0};
+        bool glossy = false;
+    };
+    // Path k of sub-sample s is path number k·n² + s: a render with 2N paths repeats one with N, and
+    // adds N more.
+    const auto subSamples = static_cast<std::uint32_t>(n * n);
+    auto traceSubSample = [&](int x, int y, std::uint32_t sub, const glm::dvec3& dir, PixelId* id) {
+        SubSample s;
+        bool rough = false;
+        Impl::Path path = primary;
+        path.seed = {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sub};
+        path.rough = &rough;
+        s.value =
+            storableRadiance(impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near, path, id));
+        if (!rough)
+            return s;
+        s.glossy = true;
+        glm::dvec3 mean = s.value, m2(0.0);
+        for (int k = 1; k < paths; ++k) {
+            path.seed.path = std::uint32_t(k) * subSamples + sub;
+            const glm::dvec3 c = storableRadiance(
+                impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near, path, nullptr));
+            const glm::dvec3 delta = c - mean;
+            mean += delta / double(k + 1);
+            m2 += delta * (c - mean);
+        }
+        s.value = mean;
+        s.error2 = paths > 1 ? m2 / (double(paths - 1) * paths) : glm::dvec3(std::nan(""));
+        return s;
+    };
+
     TraceResult result;
     result.samples = n * n;
+    result.paths = paths;
     result.warnings = impl.warnings;
     result.image.width = result.ids.width = width;
     result.image.height = result.ids.height = height;
     result.image.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
+    result.noise.width = width;
+    result.noise.height = height;
+    result.noise.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
+    // Per row, summed in row order afterwards: the figures do not depend on which thread traced what.
+    std::vector<double> rowNoise(static_cast<std::size_t>(height), 0.0);
+    std::vector<int> rowGlossy(static_cast<std::size_t>(height), 0);
     result.ids.ids.assign(static_cast<std::size_t>(width) * height, PixelId{});
 
     // A first call before any work, so a caller can cancel at once.
@@ -234,16 +316,19 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
     auto work = [&] {
         for (int y = nextRow++; y < height && !cancelled; y = nextRow++) {
             for (int x = 0; x < width; ++x) {
-                glm::dvec3 sum(0.0);
+                glm::dvec3 sum(0.0), error2(0.0);
+                bool glossy = false;
                 PixelId id;
                 for (int j = 0; j < n; ++j)
                     for (int i = 0; i < n; ++i) {
                         // The ordered grid of renderStill: sample (i, j) at ((i + ½)/N, (j + ½)/N) in the
                         // pixel.
                         const glm::dvec3 dir = rayThrough(x + (i + 0.5) / n, y + (j + 0.5) / n);
-                        glm::dvec3 c = impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near,
-                                                     primary, n == 1 ? &id : nullptr);
-                        sum += storableRadiance(c);
+                        const SubSample s =
+                            traceSubSample(x, y, std::uint32_t(j * n + i), dir, n == 1 ? &id : nullptr);
+                        sum += s.value;
+                        error2 += s.error2;
+                        glossy = glossy || s.glossy;
                     }
                 if (n > 1) // what the pixel's centre shows
                     impl.radiance(shader, settings, glm::dvec3(0.0), rayThrough(x + 0.5, y + 0.5),
@@ -255,6 +340,13 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
                 result.image.rgba[p * 4 + 2] = static_cast<float>(c.b);
                 result.image.rgba[p * 4 + 3] = 1.0f;
                 result.ids.ids[p] = id;
+                // The mean of n² independent sub-sample means: its variance is their sum over n⁴.
+                const glm::dvec3 e = error2 / double(n * n) / double(n * n);
+                for (int k = 0; k < 3; ++k)
+                    result.noise.rgba[p * 4 + std::size_t(k)] = static_cast<float>(e[k]);
+                result.noise.rgba[p * 4 + 3] = 1.0f;
+                rowNoise[std::size_t(y)] += e.r + e.g + e.b;
+                rowGlossy[std::size_t(y)] += glossy ? 1 : 0;
             }
             if (++rowsDone == height) {
                 std::lock_guard lock(mutex);
@@ -284,6 +376,12 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
         return Error{"render cancelled"};
     if (progress)
         progress(1.0);
+    double noise = 0.0;
+    for (int y = 0; y < height; ++y) {
+        noise += rowNoise[std::size_t(y)];
+        result.glossyPixels += rowGlossy[std::size_t(y)];
+    }
+    result.noiseRms = std::sqrt(noise / (3.0 * double(width) * double(height)));
     result.totalMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -25,6 +25,10 @@ enum class ShadowMode {
     PcfFootprint,
 };
 
+// The range of TraceSettings::samples (and of `speculum render --reference --samples`).
+inline constexpr int kMinTraceSamples = 1;
+inline constexpr int kMaxTraceSamples = 65536;
+
 struct TraceSettings {
     int width = 1280;
     int height = 720;
@@ -35,6 +39,10 @@ struct TraceSettings {
     // its plain material, as a mirror beyond settings.mirrorDepth does.
     int reflectorDepth = 1;
     int threads = 0; // worker threads; 0: one per hardware thread
+    // Paths per sub-sample (kMinTraceSamples..kMaxTraceSamples) where the first path meets a rough mirror
+    // or reflector: the first path and samples − 1 more, averaged. Elsewhere a pixel is exact and traced
+    // once.
+    int samples = 16;
 };
 
 // Called from the calling thread with the finished fraction (0..1); returning false cancels the render.
@@ -44,8 +52,17 @@ struct TraceResult {
     Image image;  // linear RGBA (alpha 1), row 0 at the top
     IdBuffer ids; // what the ray through each pixel's centre hit first
     double totalMs = 0.0;
-    int samples = 1;                   // per pixel
+    int samples = 1;                   // per pixel: the SSAA sub-samples
+    int paths = 1;                     // per sub-sample that meets a rough surface (settings.samples)
     std::vector<std::string> warnings; // e.g. a texture that failed to load (shown as a checker)
+    // The Monte Carlo noise of rough reflections. Per pixel (RGB; alpha 1): the squared standard error of
+    // the pixel's value, i.e. its paths' sample variance over their number (summed over sub-samples / n⁴
+    // with SSAA n), in linear radiance²; 0 for an exact pixel, NaN for a rough one traced with one path.
+    Image noise;
+    // √(mean over all pixels and RGB channels of `noise`): the typical error of a pixel; 0 for an exact
+    // image, NaN when rough pixels had one path each. Halves when paths quadruple.
+    double noiseRms = 0.0;
+    int glossyPixels = 0; // pixels with a sub-sample that needed several paths
 };
 
 // The exact reference: renders a FrameInput by ray tracing (Embree 3) with the rasterizer's shading
@@ -63,12 +80,24 @@ struct TraceResult {
 //   (supersample to compare).
 // - Planar mirrors: surface·(1−R) + R·tint·reflection with Schlick's R when fresnel is on, exactly as
 //   mirror.frag blends; a mirror seen at a depth beyond settings.mirrorDepth, or from behind, shows its
-//   material. Blur (a mip level of the texture technique) is not modelled: the reference is the sharp
-//   reflection.
+//   material.
 // - Curved reflector: intersected as its real tessellated mesh and reflected about the interpolated
 //   normal, from the point hit (no capture point, so no parallax error, and no map resolution);
 //   surface·(1−R) + R·reflection with Schlick's R when fresnel is on, as reflector.frag blends. Inside
 //   its reflection, planar mirrors recurse to the reflector's mirrorDepth (the levels its map holds).
+// - Rough (glossy) reflections: with roughness > 0 a mirror's or the reflector's `reflection` above is
+//   the GGX (Trowbridge–Reitz) lobe's integral ∫ f(v, l) (n·l) L(l) dl with α = roughness² and F = 1 in
+//   the lobe (R, from the macro normal, and tint stay outside, as in the shaders), with the
+//   height-correlated Smith G2 (render/math/Ggx.hpp). It is estimated by path tracing: at each rough
+//   bounce a path takes one sample of the visible normals seen from v (Heitz 2018), follows
+//   l = reflect(−v, h) with the weight G2/G1(v), and carries nothing if l is below the surface; mirrors
+//   and the reflector recurse as above, to the same depths. Random numbers are a hash of (pixel, path,
+//   bounce), so an image is reproducible whatever the threads, and samples are independent: the variance
+//   halves when settings.samples doubles. A sub-sample whose first path meets no rough surface is exact
+//   and traced once; roughness 0 samples nothing and gives the sharp image bit for bit.
+// - Noise: TraceResult::noise is each pixel's squared standard error, estimated from the spread of its
+//   own paths, and noiseRms its root mean square over the image: a difference between the rasterizer's
+//   glossy image and this one much below noiseRms is not measurable at this sample count.
 // - Misses show settings.background.
 //
 // Thread-safe once created: render() may run on any thread, several at once.

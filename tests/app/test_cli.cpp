@@ -78,7 +78,7 @@ TEST_F(Cli, RenderWritesEveryFormatByExtension) {
 // Each command has help of its own, on stdout with status 0, naming its own options.
 TEST_F(Cli, EachCommandHasItsOwnHelp) {
     const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
-        {"render", {"--output", "--size", "--ssaa", "--time", "--reference", "--keep-going"}},
+        {"render", {"--output", "--size", "--ssaa", "--time", "--reference", "--samples", "--keep-going"}},
         {"explain", {"--size", "--time", "--frame", "--json"}},
         {"bench", {"--out", "--size", "--quick", "--keep-going"}},
         {"time", {"--size", "--frames", "--animated", "--half-float", "--json"}},
