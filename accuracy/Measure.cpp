@@ -15,7 +15,8 @@ double median(std::vector<double> values) {
 }
 
 render::Result<Reference> traceReference(const render::FrameInput& input, ReferenceKind kind, int width,
-                                         int height, const std::function<bool(double)>& progress) {
+                                         int height, const std::function<bool(double)>& progress,
+                                         int glossySamples) {
     auto tracer = render::reference::Tracer::create(input);
     if (!tracer)
         return render::Error{"reference tracer: " + tracer.error()};
@@ -23,6 +24,7 @@ render::Result<Reference> traceReference(const render::FrameInput& input, Refere
     settings.width = width;
     settings.height = height;
     settings.ssaa = 1;
+    settings.samples = glossySamples;
     settings.shadows = kind == ReferenceKind::HardShadows ? render::reference::ShadowMode::Hard
                                                           : render::reference::ShadowMode::PcfFootprint;
     auto traced = tracer->render(settings, [&](double fraction) { return !progress || progress(fraction); });

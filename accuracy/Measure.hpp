@@ -16,6 +16,11 @@
 
 namespace speculum::accuracy {
 
+// Paths per pixel through rough surfaces in the bench's references: enough that the reference's own noise
+// (TraceResult::noiseRms) stays below the errors the glossy approximations make.
+inline constexpr int kReferenceGlossySamples = 256;
+inline constexpr int kQuickReferenceGlossySamples = 64;
+
 // One exact image, with the pixel masks the per-surface errors are measured on.
 struct Reference {
     ReferenceKind kind = ReferenceKind::Scene;
@@ -25,10 +30,12 @@ struct Reference {
 };
 
 // Traces `input` at width × height, one sample per pixel (like the frames it is compared with), with
-// exact hard shadows for ReferenceKind::HardShadows and each light's PCF footprint otherwise. `progress`
-// gets the finished fraction and returns false to cancel; errors: the tracer cannot start, or cancelled.
+// exact hard shadows for ReferenceKind::HardShadows and each light's PCF footprint otherwise; pixels that
+// see a rough surface average `glossySamples` paths through its lobe. `progress` gets the finished fraction
+// and returns false to cancel; errors: the tracer cannot start, or cancelled.
 render::Result<Reference> traceReference(const render::FrameInput& input, ReferenceKind kind, int width,
-                                         int height, const std::function<bool(double)>& progress = {});
+                                         int height, const std::function<bool(double)>& progress = {},
+                                         int glossySamples = kReferenceGlossySamples);
 
 // What one configuration costs: medians over the timed frames.
 struct FrameCost {

@@ -15,9 +15,9 @@ namespace speculum::accuracy {
 
 namespace {
 
-const std::vector<Family> kFamilies = {Family::Envmap,         Family::Parallax, Family::MirrorTechnique,
-                                       Family::MirrorDepth,    Family::Shadows,  Family::Tessellation,
-                                       Family::ReflectedDetail};
+const std::vector<Family> kFamilies = {Family::Envmap,          Family::Parallax, Family::MirrorTechnique,
+                                       Family::MirrorDepth,     Family::Shadows,  Family::Tessellation,
+                                       Family::ReflectedDetail, Family::Glossy};
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -53,6 +53,8 @@ std::string familyTitle(Family family) {
         return "Teapot tessellation";
     case Family::ReflectedDetail:
         return "Big meshes in reflections: whole or simplified";
+    case Family::Glossy:
+        return "Rough reflections: which approximation at which roughness";
     default:
         return "The scene as saved";
     }
@@ -69,9 +71,8 @@ std::string familyIntro(Family family) {
                "everything the map sees), at each resolution.";
     case Family::MirrorTechnique:
         return "Every planar mirror drawn with the stencil technique, then with the texture technique. The "
-               "reference is the sharp reflection, so a mirror's blur (which only the texture technique "
-               "draws) "
-               "counts as error.";
+               "reference is the scene's own, rough mirrors included (a rough mirror is drawn with the "
+               "texture technique either way).";
     case Family::MirrorDepth:
         return "settings.mirrorDepth from 1 up; the reference recurses 16 levels, so what a shallower depth "
                "cuts off counts as error.";
@@ -85,6 +86,13 @@ std::string familyIntro(Family family) {
         return "Meshes of more than 100 000 triangles drawn whole in the mirrors' views and the reflector's "
                "map, then at their simplified level (settings.simplifyReflections), against the exact "
                "reflection of the whole meshes.";
+    case Family::Glossy:
+        return "Every rough surface at roughness 0.1, 0.3 and 0.6, each against its own traced reference "
+               "(the GGX lobe integrated by importance sampling): the cheap filter (one mip level chosen by "
+               "the roughness), then the footprint filter (planar mirrors sample the lobe's footprint, "
+               "which grows with the distance beyond the mirror; the reflector reads its GGX pre-filtered "
+               "map chain) at rising quality. Rows of one roughness compare with each other; the "
+               "roughnesses are separate questions.";
     default:
         return {};
     }
@@ -205,8 +213,48 @@ void equalError(std::ostringstream& md, const FamilyView& v) {
     md << "\n";
 }
 
+// The glossy family answers one question per roughness (its rows share that roughness's reference): which
+// approximation to pick there, and what the cheap one gives up.
+std::vector<std::string> glossyLines(const FamilyView& v) {
+    std::vector<std::string> lines;
+    std::vector<std::string> roughnesses; // "r 0.3", in order
+    for (const Record* r : v.rows) {
+        const std::string key = r->config.series.substr(0, r->config.series.find(' ', 2));
+        if (std::find(roughnesses.begin(), roughnesses.end(), key) == roughnesses.end())
+            roughnesses.push_back(key);
+    }
+    for (const std::string& key : roughnesses) {
+        std::optional<std::size_t> best, mip;
+        for (std::size_t i = 0; i < v.rows.size(); ++i) {
+            if (v.rows[i]->config.series.rfind(key + " ", 0) != 0)
+                continue;
+            if (!best || v.points[i].psnr > v.points[*best].psnr)
+                best = i;
+            if (v.rows[i]->config.label == "mip")
+                mip = i;
+        }
+        // The cheapest within 1 dB of the best is the one to pick.
+        std::size_t pick = *best;
+        for (std::size_t i = 0; i < v.rows.size(); ++i)
+            if (v.rows[i]->config.series.rfind(key + " ", 0) == 0 &&
+                v.points[i].psnr >= v.points[*best].psnr - 1.0 && v.points[i].cost < v.points[pick].cost)
+                pick = i;
+        std::string line = "At roughness " + key.substr(2) + ": pick **" + displayName(v.rows[pick]->config) +
+                           "** (" + db(v.points[pick].psnr) + ", " + ms(v.points[pick].cost) + ")";
+        if (mip && *mip != pick)
+            line += "; the mip level scores " + db(v.points[*mip].psnr) + " at " + ms(v.points[*mip].cost);
+        if (pick != *best)
+            line += "; the best, " + displayName(v.rows[*best]->config) + ", gains only " +
+                    db(v.points[*best].psnr - v.points[pick].psnr) + " more";
+        lines.push_back(line + ".");
+    }
+    return lines;
+}
+
 // What a family's sweep found, one sentence (or a few) per line, in Markdown.
 std::vector<std::string> findingLines(const FamilyView& v, const std::string& note) {
+    if (v.family == Family::Glossy)
+        return glossyLines(v);
     std::vector<std::string> lines;
     lines.push_back("Best: " + describe(v, v.best) + ".");
     if (v.cheapest) {
@@ -245,12 +293,27 @@ std::vector<std::string> findingLines(const FamilyView& v, const std::string& no
     return lines;
 }
 
+// "the **scene** reference", or each of a family's references in the order its rows use them.
+std::string referenceList(const FamilyView& v) {
+    std::vector<ReferenceKind> kinds;
+    for (const Record* r : v.rows)
+        if (std::find(kinds.begin(), kinds.end(), r->config.reference) == kinds.end())
+            kinds.push_back(r->config.reference);
+    std::string list;
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+        list += std::string(i == 0                  ? ""
+                            : i + 1 == kinds.size() ? " and "
+                                                    : ", ") +
+                "**" + referenceName(kinds[i]) + "**";
+    return list + (kinds.size() == 1 ? " reference" : " references");
+}
+
 void familySection(std::ostringstream& md, const FamilyView& v, const std::string& note) {
     const std::string plot = "plot-" + familyName(v.family) + ".png";
     md << "## " << familyTitle(v.family) << "\n\n"
        << familyIntro(v.family) << " Judged by "
-       << metricAxisLabel(v.metric).substr(0, metricAxisLabel(v.metric).find(" (")) << " against the **"
-       << referenceName(v.rows.front()->config.reference) << "** reference.\n\n";
+       << metricAxisLabel(v.metric).substr(0, metricAxisLabel(v.metric).find(" (")) << " against the "
+       << referenceList(v) << ".\n\n";
     if (v.rows.size() >= 2)
         md << "![" << familyTitle(v.family) << "](" << plot << ")\n\n";
     for (const std::string& line : findingLines(v, note))
@@ -324,6 +387,8 @@ std::string displayName(const Configuration& c) {
     case Family::Envmap:
     case Family::Parallax:
         return c.series + " " + c.label;
+    case Family::Glossy:
+        return c.label == "mip" ? c.series : c.series + " " + c.label;
     case Family::Tessellation:
         return "tessellation " + c.label;
     default:

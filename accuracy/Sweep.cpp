@@ -6,6 +6,7 @@
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 namespace speculum::accuracy {
@@ -59,7 +60,41 @@ int firstShadowPcf(const render::FrameInput& scene) {
     return 1;
 }
 
+std::string roughnessText(double roughness) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%.1f", roughness);
+    return text;
+}
+
+// The quality steps of the footprint approximation: planar taps per pixel, pre-filter samples per texel.
+struct GlossyQuality {
+    int taps;
+    int samples;
+};
+
+std::string qualityLabel(const GlossyQuality& q, const SceneTraits& traits) {
+    std::string label;
+    if (traits.roughMirrors > 0)
+        label = std::to_string(q.taps) + " taps";
+    if (traits.roughReflector)
+        label += (label.empty() ? "" : " / ") + std::to_string(q.samples) + " samples";
+    return label;
+}
+
 } // namespace
+
+std::optional<double> referenceRoughness(ReferenceKind kind) {
+    switch (kind) {
+    case ReferenceKind::RoughLow:
+        return kGlossyRoughness[0];
+    case ReferenceKind::RoughMid:
+        return kGlossyRoughness[1];
+    case ReferenceKind::RoughHigh:
+        return kGlossyRoughness[2];
+    default:
+        return std::nullopt;
+    }
+}
 
 std::string familyName(Family family) {
     switch (family) {
@@ -79,13 +114,16 @@ std::string familyName(Family family) {
         return "tessellation";
     case Family::ReflectedDetail:
         return "reflected-detail";
+    case Family::Glossy:
+        return "glossy";
     }
     return "scene";
 }
 
 std::optional<Family> familyFromName(const std::string& name) {
-    for (Family f : {Family::Scene, Family::Envmap, Family::Parallax, Family::MirrorTechnique,
-                     Family::MirrorDepth, Family::Shadows, Family::Tessellation, Family::ReflectedDetail})
+    for (Family f :
+         {Family::Scene, Family::Envmap, Family::Parallax, Family::MirrorTechnique, Family::MirrorDepth,
+          Family::Shadows, Family::Tessellation, Family::ReflectedDetail, Family::Glossy})
         if (familyName(f) == name)
             return f;
     return std::nullopt;
@@ -93,7 +131,8 @@ std::optional<Family> familyFromName(const std::string& name) {
 
 std::optional<ReferenceKind> referenceFromName(const std::string& name) {
     for (ReferenceKind k : {ReferenceKind::Scene, ReferenceKind::HardShadows, ReferenceKind::DeepMirrors,
-                            ReferenceKind::FineMesh})
+                            ReferenceKind::FineMesh, ReferenceKind::RoughLow, ReferenceKind::RoughMid,
+                            ReferenceKind::RoughHigh})
         if (referenceName(k) == name)
             return k;
     return std::nullopt;
@@ -109,6 +148,10 @@ std::string referenceName(ReferenceKind kind) {
         return "deep-mirrors";
     case ReferenceKind::FineMesh:
         return "fine-mesh";
+    case ReferenceKind::RoughLow:
+    case ReferenceKind::RoughMid:
+    case ReferenceKind::RoughHigh:
+        return "rough-" + roughnessText(*referenceRoughness(kind));
     }
     return "scene";
 }
@@ -128,6 +171,11 @@ std::string referenceDescription(ReferenceKind kind) {
         return "the scene with its built-in teapots at tessellation " +
                std::to_string(kReferenceTessellation) +
                " (the file format's maximum), standing in for the smooth Bezier surface";
+    case ReferenceKind::RoughLow:
+    case ReferenceKind::RoughMid:
+    case ReferenceKind::RoughHigh:
+        return "the scene with every rough surface at roughness " + roughnessText(*referenceRoughness(kind)) +
+               ", its glossy reflections integrated over the GGX lobe by the tracer's importance sampling";
     }
     return {};
 }
@@ -146,6 +194,9 @@ SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int
     for (const render::Light& light : scene.lights)
         t.shadowedLights += light.shadows.enabled ? 1 : 0;
     t.teapotTessellation = teapotTessellation;
+    for (const render::Mirror& m : scene.mirrors)
+        t.roughMirrors += m.roughness > 0.0 ? 1 : 0;
+    t.roughReflector = scene.reflector && scene.reflector->mesh && scene.reflector->roughness > 0.0;
     if (!scene.mirrors.empty() || (scene.reflector && scene.reflector->mesh))
         for (const render::DrawItem& item : scene.items)
             t.simplifiableMeshes += item.mesh && !item.mesh->coarse.indices.empty() ? 1 : 0;
@@ -293,6 +344,38 @@ std::vector<Configuration> planSweep(const render::FrameInput& scene, const Scen
             out.push_back(std::move(c));
         }
     }
+
+    if (traits.roughMirrors > 0 || traits.roughReflector) {
+        // At three roughnesses, each against its own traced reference: the cheap mip level, then the
+        // footprint (planar lobe taps, the reflector's pre-filtered chain) at rising quality.
+        const std::vector<GlossyQuality> qualities =
+            options.quick ? std::vector<GlossyQuality>{{4, 16}, {16, 64}}
+                          : std::vector<GlossyQuality>{{4, 16}, {16, 64}, {64, 256}};
+        const ReferenceKind kinds[3] = {ReferenceKind::RoughLow, ReferenceKind::RoughMid,
+                                        ReferenceKind::RoughHigh};
+        for (ReferenceKind kind : kinds) {
+            const double roughness = *referenceRoughness(kind);
+            const std::string r = roughnessText(roughness);
+            Configuration mip{Family::Glossy, "glossy-r" + r + "-mip", "mip", "r " + r + " mip", {}, kind};
+            mip.variation.roughness = roughness;
+            mip.variation.glossyFilter = render::GlossyFilter::Mip;
+            out.push_back(std::move(mip));
+            for (const GlossyQuality& q : qualities) {
+                Configuration c{Family::Glossy,
+                                "glossy-r" + r + "-footprint-" + std::to_string(q.taps) + "-" +
+                                    std::to_string(q.samples),
+                                qualityLabel(q, traits),
+                                "r " + r + " footprint",
+                                {},
+                                kind};
+                c.variation.roughness = roughness;
+                c.variation.glossyFilter = render::GlossyFilter::Footprint;
+                c.variation.glossyTaps = q.taps;
+                c.variation.prefilterSamples = q.samples;
+                out.push_back(std::move(c));
+            }
+        }
+    }
     return out;
 }
 
@@ -316,6 +399,16 @@ render::FrameInput applyVariation(const render::FrameInput& scene, const SceneTr
             if (light.shadows.enabled)
                 light.shadows.pcf = *v.pcf;
     out.settings.simplifyReflections = v.simplifyReflections.value_or(out.settings.simplifyReflections);
+    if (v.roughness) {
+        for (render::Mirror& m : out.mirrors)
+            if (m.roughness > 0.0)
+                m.roughness = *v.roughness;
+        if (out.reflector && out.reflector->roughness > 0.0)
+            out.reflector->roughness = *v.roughness;
+    }
+    out.settings.glossyFilter = v.glossyFilter.value_or(out.settings.glossyFilter);
+    out.settings.glossyTaps = v.glossyTaps.value_or(out.settings.glossyTaps);
+    out.settings.prefilterSamples = v.prefilterSamples.value_or(out.settings.prefilterSamples);
     if (v.tessellation && tessellate) {
         for (render::DrawItem& item : out.items)
             item.mesh = tessellate(item.mesh, *v.tessellation);
@@ -332,6 +425,7 @@ render::FrameInput referenceInput(const render::FrameInput& scene, ReferenceKind
         v.mirrorDepth = kReferenceMirrorDepth;
     if (kind == ReferenceKind::FineMesh)
         v.tessellation = kReferenceTessellation;
+    v.roughness = referenceRoughness(kind);
     return applyVariation(scene, SceneTraits{}, v, tessellate);
 }
 
@@ -367,6 +461,17 @@ Settings effectiveSettings(const render::FrameInput& applied, const SceneTraits&
         s.emplace_back("tessellation", std::to_string(*teapotTessellation));
     if (traits.simplifiableMeshes > 0)
         s.emplace_back("reflectedDetail", applied.settings.simplifyReflections ? "simplified" : "full");
+    if (traits.roughMirrors > 0 || traits.roughReflector) {
+        double roughness = applied.reflector && traits.roughReflector ? applied.reflector->roughness : 0.0;
+        for (const render::Mirror& m : applied.mirrors)
+            roughness = std::max(roughness, m.roughness);
+        s.emplace_back("roughness", roughnessText(roughness));
+        const render::Settings& g = applied.settings;
+        s.emplace_back("glossy",
+                       g.glossyFilter == render::GlossyFilter::Mip
+                           ? std::string("mip")
+                           : "footprint " + qualityLabel({g.glossyTaps, g.prefilterSamples}, traits));
+    }
     return s;
 }
 

@@ -20,6 +20,7 @@ enum class Family {
     Shadows,         // PCF kernel of every shadowed light
     Tessellation,    // tessellation of the built-in teapots
     ReflectedDetail, // big meshes in reflections: drawn whole, then at their simplified level
+    Glossy,          // rough surfaces at roughness 0.1, 0.3, 0.6: each raster approximation and quality
 };
 
 // Stable names, used in file names, CSV and JSON: "envmap", "mirror-depth", ...
@@ -34,7 +35,16 @@ enum class ReferenceKind {
     HardShadows, // exact hard shadows (one shadow ray): what every PCF kernel approximates
     DeepMirrors, // planar mirrors recursing to depth 16 (the file format's maximum)
     FineMesh,    // built-in teapots at tessellation 64 (the file format's maximum)
+    // The scene with every rough surface at one of kGlossyRoughness, the GGX lobe integrated by the
+    // tracer's importance sampling.
+    RoughLow,
+    RoughMid,
+    RoughHigh,
 };
+
+// The roughness each Rough* reference (and the glossy family's rows against it) gives the rough surfaces.
+inline constexpr double kGlossyRoughness[3] = {0.1, 0.3, 0.6};
+std::optional<double> referenceRoughness(ReferenceKind kind); // none for the other kinds
 
 std::string referenceName(ReferenceKind kind); // "scene", "hard-shadows", "deep-mirrors", "fine-mesh"
 std::optional<ReferenceKind> referenceFromName(const std::string& name);
@@ -51,6 +61,10 @@ struct Variation {
     std::optional<int> pcf;
     std::optional<int> tessellation;
     std::optional<bool> simplifyReflections;
+    std::optional<double> roughness; // every surface that is rough in the scene
+    std::optional<render::GlossyFilter> glossyFilter;
+    std::optional<int> glossyTaps;
+    std::optional<int> prefilterSamples;
 };
 
 struct Configuration {
@@ -73,6 +87,8 @@ struct SceneTraits {
     std::optional<int> teapotTessellation; // of the (first) built-in teapot
     // Meshes with a simplified level (MeshData::coarse) in a scene with something that reflects them.
     std::size_t simplifiableMeshes = 0;
+    std::size_t roughMirrors = 0; // planar mirrors with roughness above 0
+    bool roughReflector = false;
 };
 
 SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int>& teapotTessellation);
@@ -105,9 +121,9 @@ using Settings = std::vector<std::pair<std::string, std::string>>;
 Settings effectiveSettings(const render::FrameInput& applied, const SceneTraits& traits,
                            const std::optional<int>& teapotTessellation);
 
-inline const std::vector<std::string> kSettingNames = {"map",      "resolution",   "fill",
-                                                       "parallax", "technique",    "mirrorDepth",
-                                                       "pcf",      "tessellation", "reflectedDetail"};
+inline const std::vector<std::string> kSettingNames = {
+    "map",          "resolution",      "fill",      "parallax", "technique", "mirrorDepth", "pcf",
+    "tessellation", "reflectedDetail", "roughness", "glossy"};
 
 std::string mapName(render::ReflectorMap map);    // "cube", "dual-paraboloid", "tennis-ball"
 std::string fillName(render::ReflectorFill fill); // "direct", "resampled"

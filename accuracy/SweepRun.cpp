@@ -167,13 +167,21 @@ private:
                         progress("tracing the " + name + " reference: " + std::to_string(quarter * 25) + "%");
                     lastQuarter = std::max(lastQuarter, quarter);
                     return !stopped();
-                });
+                },
+                m_input.quick ? kQuickReferenceGlossySamples : kReferenceGlossySamples);
             if (stopped())
                 return render::Error{kSweepStopped};
             if (!traced)
                 return render::Error{traced.error()};
+            std::string noise;
+            if (traced->traced.glossyPixels > 0) {
+                char text[96];
+                std::snprintf(text, sizeof text, " (%d paths a pixel through rough surfaces, noise %.4f RMS)",
+                              traced->traced.paths, traced->traced.noiseRms);
+                noise = text;
+            }
             progress("traced the " + name + " reference in " +
-                     std::to_string(static_cast<int>(traced->traced.totalMs + 0.5)) + " ms");
+                     std::to_string(static_cast<int>(traced->traced.totalMs + 0.5)) + " ms" + noise);
             const ReferenceInfo info{kind, traced->traced.totalMs, threads, referenceFile(kind)};
             if (m_observer.referenceTraced)
                 if (render::Status s = m_observer.referenceTraced(*traced, info); !s)

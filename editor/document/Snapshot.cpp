@@ -12,7 +12,9 @@
 namespace speculum::document {
 
 render::Settings toRender(const SceneSettings& settings) {
-    return render::Settings{settings.background,        settings.mirrorDepth, settings.ambient,
+    return render::Settings{settings.background,
+                            settings.mirrorDepth,
+                            settings.ambient,
                             settings.simplifyReflections,
                             settings.glossyFilter == GlossyFilter::Mip ? render::GlossyFilter::Mip
                                                                        : render::GlossyFilter::Footprint,

@@ -38,7 +38,9 @@ std::string glossyApproximation(const Settings& settings, const Mirror& mirror, 
     const double roughness = std::clamp(mirror.roughness, 0.0, 1.0);
     if (roughness <= 0.0)
         return {};
-    const std::string rough = "; rough (roughness " + pixels(roughness * 100) + "%): ";
+    char value[16];
+    std::snprintf(value, sizeof value, "%.2f", roughness);
+    const std::string rough = "; rough (roughness " + std::string(value) + "): ";
     if (!ownTarget)
         return rough + "drawn sharp, as every mirror inside the environment map";
     if (settings.glossyFilter == GlossyFilter::Mip)

@@ -115,6 +115,54 @@ TEST(BenchSweep, BigMeshesInReflectionsAreSweptWholeAndSimplified) {
     }
 }
 
+// Rough surfaces call for the glossy family: at each of three roughnesses, the mip filter and the footprint
+// at rising quality, each against the reference traced at that roughness. Only surfaces that are rough in
+// the scene change roughness; a sharp mirror stays sharp.
+TEST(BenchSweep, RoughSurfacesAreSweptAtThreeRoughnessesAgainstTheirOwnReferences) {
+    FrameInput scene = withMirrorsAndShadows(withReflector(plainScene()));
+    EXPECT_FALSE(familiesOf(planSweep(scene, sceneTraits(scene, std::nullopt), {true})).count(Family::Glossy))
+        << "nothing is rough";
+    render::Mirror sharp;
+    sharp.name = "Sharp";
+    scene.mirrors.push_back(sharp);
+    scene.mirrors.front().roughness = 0.2;
+    scene.reflector->roughness = 0.4;
+    const SceneTraits traits = sceneTraits(scene, std::nullopt);
+    EXPECT_EQ(traits.roughMirrors, 1u);
+    EXPECT_TRUE(traits.roughReflector);
+    for (bool quick : {true, false}) {
+        std::map<ReferenceKind, std::vector<std::string>> labels;
+        for (const Configuration& c : planSweep(scene, traits, {quick})) {
+            if (c.family != Family::Glossy)
+                continue;
+            const std::optional<double> roughness = referenceRoughness(c.reference);
+            ASSERT_TRUE(roughness) << c.id;
+            labels[c.reference].push_back(c.label);
+            const FrameInput applied = applyVariation(scene, traits, c.variation, {});
+            EXPECT_EQ(applied.mirrors[0].roughness, *roughness) << c.id;
+            EXPECT_EQ(applied.mirrors[1].roughness, 0.0) << c.id << ": the sharp mirror stays sharp";
+            EXPECT_EQ(applied.reflector->roughness, *roughness) << c.id;
+            EXPECT_EQ(applied.settings.glossyFilter,
+                      c.label == "mip" ? render::GlossyFilter::Mip : render::GlossyFilter::Footprint);
+            const FrameInput reference = referenceInput(scene, c.reference, {});
+            EXPECT_EQ(reference.mirrors[0].roughness, *roughness);
+            EXPECT_EQ(reference.mirrors[1].roughness, 0.0);
+            const Settings s = effectiveSettings(applied, traits, std::nullopt);
+            const std::map<std::string, std::string> m(s.begin(), s.end());
+            EXPECT_EQ(m.at("glossy"), c.label == "mip" ? "mip" : "footprint " + c.label) << c.id;
+        }
+        ASSERT_EQ(labels.size(), 3u);
+        for (const auto& [kind, list] : labels) {
+            EXPECT_EQ(list.front(), "mip") << referenceName(kind);
+            EXPECT_EQ(list.size(), quick ? 3u : 4u) << referenceName(kind);
+            EXPECT_EQ(referenceFromName(referenceName(kind)), kind);
+        }
+        EXPECT_EQ(labels.at(ReferenceKind::RoughMid).back(),
+                  quick ? "16 taps / 64 samples" : "64 taps / 256 samples");
+    }
+    EXPECT_EQ(familyFromName("glossy"), Family::Glossy);
+}
+
 TEST(BenchSweep, NoProxyForAReflectorOutsideTheScene) {
     FrameInput ball = withReflector(plainScene());
     ball.reflector->world[3] = glm::dvec4(0.0, 10.0, 0.0, 1.0);

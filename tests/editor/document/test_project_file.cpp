@@ -575,7 +575,8 @@ TEST(ProjectFile, BlurLoadsAsRoughnessAndGlossySettingsRoundTrip) {
     ASSERT_TRUE(both) << both.error();
     EXPECT_DOUBLE_EQ(both->nodes.at(0).data.mirror->roughness, 0.2);
 
-    auto settings = load(head + R"("settings": { "glossyFilter": "mip", "glossyTaps": 5, "prefilterSamples": 9 },
+    auto settings =
+        load(head + R"("settings": { "glossyFilter": "mip", "glossyTaps": 5, "prefilterSamples": 9 },
         "nodes": [ { "name": "B", "mesh": { "builtin": "sphere" }, "reflector": { "roughness": 0.5 } } ] })");
     ASSERT_TRUE(settings) << settings.error();
     EXPECT_EQ(settings->settings.glossyFilter, GlossyFilter::Mip);

@@ -87,7 +87,7 @@ TEST(ProjectMaterials, DemoScenesStillRoundTripByteForByte) {
     // The scenes written before the new fields existed (in canonical form).
     for (const QString& name :
          {QStringLiteral("teapot.speculum.json"), QStringLiteral("mirrors.speculum.json"),
-          QStringLiteral("chrome.speculum.json")}) {
+          QStringLiteral("chrome.speculum.json"), QStringLiteral("glossy.speculum.json")}) {
         const QString path = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/") + name;
         std::vector<std::string> warnings;
         auto loaded = loadProject(path, warnings);
