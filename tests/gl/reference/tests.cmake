@@ -10,3 +10,8 @@ speculum_add_test(test_reference_cli TIER gl USES_CLI
 speculum_add_test(test_gl_reference_envmap TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_reference_envmap.cpp
     LIBS speculum_render)
+# Rough planar mirrors: roughness 0 is the sharp image, the Footprint filter's error against the tracer
+# falls with its taps and beats the Mip filter, nothing non-finite at the extremes, blur grows with distance.
+speculum_add_test(test_gl_glossy_agreement TIER gl
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_glossy_agreement.cpp
+    LIBS speculum_render)
