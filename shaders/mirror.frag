@@ -43,25 +43,27 @@ vec2 toPixels(vec3 p) {
 }
 
 // The reflection of a rough mirror: the GGX lobe's microfacet normals, sampled on a Hammersley set turned
-// per pixel, each sends the reflected ray off by twice its tilt: within the plane of incidence fully, across
-// it scaled by cos θ (the glossy streak that stretches towards the viewer at grazing angles). A ray that
-// meets the scene a distance d beyond the mirror, with the whole path L long, lands (d / L)·offset away on
-// screen. Each tap reads the mip level that covers its share of the footprint. Approximations (what the
-// bench measures against the tracer): one distance for the whole footprint (that of the sharp reflection
-// at this pixel), small-angle offsets, and microfacet normals sampled by D alone, equally weighted.
+// per pixel, each sends the reflected ray off by twice its tilt (tan 2θh): within the plane of incidence
+// fully, across it scaled by cos θ (the glossy streak that stretches towards the viewer at grazing angles).
+// A ray that meets the scene a distance d beyond the mirror, with the whole path L long, lands
+// (d / L)·tan 2θh away on screen. Each tap reads the mip level that covers its share of the footprint.
+// Approximations (what the bench measures against the tracer): one distance for the whole footprint (that
+// of the sharp reflection at this pixel, so a near object's edge takes the far background's blur), offsets
+// that treat the tilts along and across the plane of incidence apart, tilts capped at tan θh = 0.9, and
+// microfacet normals sampled by D alone, equally weighted.
 vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
     vec4 sharp = textureLod(uReflectionTexture, uv, 0.0);
     float eyeDistance = length(vWorld - uEye);
     float pathLength = max(sharp.a, eyeDistance);
     float beyond = pathLength - eyeDistance;
     float cosView = clamp(dot(normal, viewDir), 0.02, 1.0);
-    float scale = uFocalPx * beyond / pathLength * 2.0; // pixels per unit tilt (tan θh)
+    float scale = uFocalPx * beyond / pathLength; // pixels per unit of tan 2θh
     // The plane of incidence on screen: where the normal points from this pixel.
     vec2 along = toPixels(vWorld + normal * (0.05 * eyeDistance)) - gl_FragCoord.xy;
     along = dot(along, along) > 1e-6 ? normalize(along) : vec2(0.0, 1.0);
     vec2 across = vec2(-along.y, along.x);
     float taps = float(uGlossyTaps);
-    float footprintArea = kPi * (scale * uGgxAlpha) * (scale * uGgxAlpha) * cosView;
+    float footprintArea = kPi * (2.0 * scale * uGgxAlpha) * (2.0 * scale * uGgxAlpha) * cosView;
     float lod = clamp(0.5 * log2(max(footprintArea / taps, 1.0)), 0.0, uMaxLod);
     // Interleaved gradient noise: a rotation per pixel trades the sample pattern's ghosts for noise.
     float turn = 2.0 * kPi * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
@@ -69,10 +71,12 @@ vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
     for (int k = 0; k < uGlossyTaps; ++k) {
         float u1 = (float(k) + 0.5) / taps;
         float u2 = radicalInverse(uint(k));
-        // GGX: tan²θh = α² u / (1 − u); capped where the small-angle picture no longer holds.
-        float tanTheta = min(uGgxAlpha * sqrt(u1 / (1.0 - u1)), 1.5);
+        // GGX: tan²θh = α² u / (1 − u); the reflection turns by 2θh. Capped: the lobe's far tail would
+        // land beyond the texture.
+        float t = min(uGgxAlpha * sqrt(u1 / (1.0 - u1)), 0.9);
+        float spread = 2.0 * t / (1.0 - t * t);
         float phi = 2.0 * kPi * u2 + turn;
-        vec2 tilt = tanTheta * vec2(cos(phi), sin(phi) * cosView);
+        vec2 tilt = spread * vec2(cos(phi), sin(phi) * cosView);
         vec2 offset = scale * (tilt.x * along + tilt.y * across);
         sum += textureLod(uReflectionTexture, uv + offset / uTargetSize, lod).rgb;
     }
