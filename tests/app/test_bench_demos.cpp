@@ -39,9 +39,10 @@ TEST(BenchDemos, ChromeSweepsTheMapParallaxAndShadows) {
     EXPECT_EQ(benchFamilies("chrome"), (std::set<std::string>{"scene", "envmap", "parallax", "shadows"}));
 }
 
-TEST(BenchDemos, MirrorsSweepsTechniqueDepthShadowsAndTessellation) {
+// Its back mirror is rough (roughness 0.15), so the glossy family runs too.
+TEST(BenchDemos, MirrorsSweepsTechniqueDepthShadowsTessellationAndGlossy) {
     EXPECT_EQ(benchFamilies("mirrors"), (std::set<std::string>{"scene", "mirror-technique", "mirror-depth",
-                                                               "shadows", "tessellation"}));
+                                                               "shadows", "tessellation", "glossy"}));
 }
 
 } // namespace
