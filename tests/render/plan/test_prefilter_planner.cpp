@@ -156,8 +156,9 @@ TEST(PrefilterPlanner, InvisibleReflectorPlansNoPrefilter) {
 
 TEST(PrefilterPlanner, LevelsFollowTheMapSize) {
     FrameInput input = roughBall(1.0);
-    input.reflector->resolution = 8; // 4 mip levels: r_k = k/3
-    const PlannedPass* prefilter = passOf(planFrame(input, {}), PassKind::Prefilter);
+    input.reflector->resolution = 8;             // 4 mip levels: r_k = k/3
+    const FramePlan plan = planFrame(input, {}); // the pass below points into it
+    const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
     ASSERT_NE(prefilter, nullptr);
     EXPECT_NE(prefilter->reason.find("into 4 levels"), std::string::npos) << prefilter->reason;
     EXPECT_NE(prefilter->reason.find("1 reads level 3"), std::string::npos) << prefilter->reason;
