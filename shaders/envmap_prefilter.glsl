@@ -12,6 +12,7 @@
 // fill does), so the guard band holds filtered environment too; the source is read in the component its
 // direction belongs to, with the layout's guard band under bilinear and mipmapped reads.
 #include "envmap_lookup.glsl"
+#include "hammersley.glsl"
 
 uniform samplerCube uSourceCube;      // cube maps
 uniform sampler2DArray uSourceArray;  // dual-paraboloid and tennis-ball maps
@@ -27,16 +28,6 @@ uniform float uSourceMaxLod;
 out vec4 fragColor;
 
 const float kPi = 3.14159265358979324;
-
-// Van der Corput's radical inverse in base 2, with shifts (bitfieldReverse is GLSL 4.00; this is 3.30).
-float radicalInverse(uint bits) {
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return float(bits) * 2.3283064365386963e-10; // / 2³²
-}
 
 vec3 readSource(vec3 d, float lod) {
     if (uEnvType == ENVMAP_CUBE)

@@ -3,6 +3,7 @@
 // Texture technique: the reflection is looked up projectively in the mirror's render texture, sharp, or
 // blurred over the GGX lobe of a rough mirror (glossyReflection below).
 #include "material.glsl"
+#include "hammersley.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -26,16 +27,6 @@ layout(location = 0, index = 0) out vec4 fragColor;
 layout(location = 0, index = 1) out vec4 reflectionWeight;
 
 const float kPi = 3.14159265358979;
-
-// Van der Corput's radical inverse in base 2 (bitfieldReverse needs GLSL 4.00; this is 3.30).
-float radicalInverse(uint bits) {
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return float(bits) * 2.3283064365386963e-10;
-}
 
 vec2 toPixels(vec3 p) {
     vec4 clip = uViewProjection * (uReflection * vec4(p, 1.0));
