@@ -41,17 +41,24 @@ struct KindTime {
     int runs = 0;
 };
 
-// An 8-bit colour target of the given size, as a window's framebuffer.
+// An 8-bit colour target of the given size, as the editor's viewport has: an sRGB colour texture with a
+// depth-stencil buffer (Viewport), which the renderer draws straight into when it can.
 struct WindowLikeTarget {
     render::gl::Texture color = render::gl::makeTexture();
+    render::gl::Renderbuffer depthStencil = render::gl::makeRenderbuffer();
     render::gl::Framebuffer framebuffer = render::gl::makeFramebuffer();
 
     bool create(int width, int height) {
         glBindTexture(GL_TEXTURE_2D, color.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         glBindTexture(GL_TEXTURE_2D, 0);
+        glBindRenderbuffer(GL_RENDERBUFFER, depthStencil.id());
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+        glBindRenderbuffer(GL_RENDERBUFFER, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  depthStencil.id());
         return glGetError() == GL_NO_ERROR &&
                glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     }
@@ -98,7 +105,7 @@ int runTime(const CliOptions& options) {
     if (!window.create(options.width, options.height))
         return fail("this GPU cannot hold a " + std::to_string(options.width) + "x" +
                     std::to_string(options.height) + " colour buffer");
-    const render::RenderTarget target{window.framebuffer.id(), options.width, options.height, true};
+    const render::RenderTarget target{window.framebuffer.id(), options.width, options.height, true, true};
 
     // Frame k shows the scene at options.time + k/60 s when animated (a fresh snapshot each frame, as the
     // playing editor takes one), at options.time otherwise.
@@ -143,6 +150,9 @@ int runTime(const CliOptions& options) {
     for (const render::PlannedPass& pass : last.plan.passes)
         if (pass.kind == render::PassKind::Composite)
             compositeReason = pass.reason;
+    for (const render::SkippedEffect& skip : last.plan.skipped)
+        if (last.plan.cameraBufferIsOutput && skip.target == "output")
+            compositeReason = skip.reason;
 
     std::map<std::string, KindTime> kinds;
     const int profiled = std::min(options.frames, kProfiledFrames);
@@ -190,6 +200,7 @@ int runTime(const CliOptions& options) {
                                {"fps", median > 0.0 ? 1000.0 / median : 0.0},
                                {"cameraBuffer", QString::fromStdString(bufferName)},
                                {"compositeReason", QString::fromStdString(compositeReason)},
+                               {"drawnIntoOutput", last.plan.cameraBufferIsOutput},
                                {"gpuMsPerFrame", profiledGpu},
                                {"passes", passes},
                                {"frameMs", times},

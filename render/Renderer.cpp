@@ -227,9 +227,11 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     std::optional<FrameInput> fitted = fitToGpuLimits(requested, s.limits, report.warnings);
     // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
     // untiled frame would, with the same sub-pixel sample positions.
+    const bool eightBitOutput = target.encodeSrgb && !options.halfFloatCameraBuffer;
+    const bool drawnWhole = !options.tile && drawn.width == target.width && drawn.height == target.height;
     const PlanViewport viewport{options.tile ? options.tile->imageWidth : drawn.width,
                                 options.tile ? options.tile->imageHeight : drawn.height, options.jitterPixels,
-                                target.encodeSrgb && !options.halfFloatCameraBuffer};
+                                eightBitOutput, eightBitOutput && drawnWhole && target.srgbDepthStencil};
     const PlannerState freshState;
     const PlannerState& plannerState = options.reuseMaps ? s.plannerState : freshState;
     FramePlan& plan = report.plan;
@@ -253,8 +255,11 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     // face instead of clamping (which would leak light or shadow along the seams).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     const bool srgbBuffer = plan.cameraBuffer == CameraBuffer::Srgb8;
-    if (Status linear =
-            r.linear.ensure(drawn.width, drawn.height, srgbBuffer ? GL_SRGB8_ALPHA8 : GL_RGBA16F, false);
+    // Drawn straight into the output, the frame needs no buffer of its own.
+    if (Status linear = plan.cameraBufferIsOutput
+                            ? Status{Done{}}
+                            : r.linear.ensure(drawn.width, drawn.height, srgbBuffer ? GL_SRGB8_ALPHA8 : GL_RGBA16F,
+                                              false);
         !linear) {
         // Without its colour buffer the frame cannot be drawn at all: say so instead of an empty image.
         report.error = "the frame could not be drawn: " + linear.error();
@@ -321,7 +326,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     }
     for (SkippedEffect& skip : frame.skipped)
         report.skipped.push_back(std::move(skip));
-    report.memory.main = r.linear.bytes();
+    report.memory.main = plan.cameraBufferIsOutput ? 0 : r.linear.bytes();
     for (int slot = 0; slot <= deepestSlot; ++slot)
         report.memory.mirrors += r.reflectionTextures[static_cast<std::size_t>(slot)].bytes();
     for (int lightIndex : plan.shadowedLights)
@@ -337,6 +342,32 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     report.occlusionWaits = r.occlusion.waits();
     report.cpuMs = msSince(frameStart);
     return report;
+}
+
+bool composeSrgbTextureAsStored(unsigned framebuffer) {
+    if (!epoxy_has_gl_extension("GL_EXT_texture_sRGB_decode"))
+        return false;
+    gl::FramebufferBinding keep;
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    GLint type = GL_NONE;
+    GLint name = 0;
+    GLint encoding = GL_LINEAR;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_TEXTURE)
+        return false;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                          GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
+    if (encoding != GL_SRGB || name == 0)
+        return false;
+    GLint bound = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(name));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SRGB_DECODE_EXT, GL_SKIP_DECODE_EXT);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
+    return glGetError() == GL_NO_ERROR;
 }
 
 } // namespace speculum::render

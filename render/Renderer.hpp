@@ -22,6 +22,10 @@ struct RenderTarget {
     int width = 0;
     int height = 0;
     bool encodeSrgb = true; // 8-bit targets get sRGB-encoded colour; float targets keep linear values
+    // The colour attachment is 8-bit sRGB (GL_SRGB8_ALPHA8) and the target has a depth (24-bit) and stencil
+    // (8-bit) attachment whose contents the frame may overwrite. A frame drawn in 8-bit sRGB at the
+    // target's full size is then drawn straight into it: no buffer of the renderer's, no copy.
+    bool srgbDepthStencil = false;
 };
 
 // Part of a larger image, for stills beyond what one framebuffer can hold: the target holds the pixels
@@ -87,5 +91,13 @@ private:
     struct State;
     std::unique_ptr<State> m_state;
 };
+
+// For a caller whose framebuffer's colour texture is 8-bit sRGB and is then drawn into a plain 8-bit window
+// by a compositor that does not expect sRGB (Qt's widget compositor samples it as an ordinary texture):
+// makes sampling that texture return the bytes it stores, already encoded (EXT_texture_sRGB_decode), so
+// the window shows what a plain 8-bit target would. Rendering into it still encodes. False where the GPU
+// lacks the extension or the colour attachment is not an sRGB texture: the caller should then not
+// declare the target RenderTarget::srgbDepthStencil.
+bool composeSrgbTextureAsStored(unsigned framebuffer);
 
 } // namespace speculum::render

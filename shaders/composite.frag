@@ -13,6 +13,20 @@ uniform vec2 uSourceScale; // linear-buffer pixels per output pixel; (1, 1): a p
 
 out vec4 fragColor;
 
+// The composite's draw names what it does (passes::runComposite): a SIMD rasterizer such as llvmpipe runs
+// both sides of a branch on a uniform under a mask, so a plain copy would otherwise pay for the bilinear
+// scale-up and the encoding too. Without the defines the uniforms decide.
+#ifdef COMPOSITE_SCALED
+#define COMPOSITE_SCALES_UP (COMPOSITE_SCALED != 0)
+#else
+#define COMPOSITE_SCALES_UP (uSourceScale != vec2(1.0))
+#endif
+#ifdef COMPOSITE_ENCODE
+#define COMPOSITE_ENCODES_SRGB (COMPOSITE_ENCODE != 0)
+#else
+#define COMPOSITE_ENCODES_SRGB (uEncodeSrgb != 0)
+#endif
+
 vec3 linearToSrgb(vec3 c) {
     c = clamp(c, 0.0, 1.0);
     return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
@@ -36,7 +50,6 @@ vec4 scaledUp() {
 }
 
 void main() {
-    vec4 c = uSourceScale == vec2(1.0) ? storableRadiance(texelFetch(uColor, ivec2(gl_FragCoord.xy), 0))
-                                       : scaledUp();
-    fragColor = vec4(uEncodeSrgb != 0 ? linearToSrgb(c.rgb) : c.rgb, 1.0);
+    vec4 c = COMPOSITE_SCALES_UP ? scaledUp() : storableRadiance(texelFetch(uColor, ivec2(gl_FragCoord.xy), 0));
+    fragColor = vec4(COMPOSITE_ENCODES_SRGB ? linearToSrgb(c.rgb) : c.rgb, 1.0);
 }

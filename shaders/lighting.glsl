@@ -145,15 +145,15 @@ struct SurfaceLight {
 
 // Light i's contribution, added to `result`. `slot` is its shadow map's slot (-1: none) and `cube` the
 // map's kind; uLightShadowSlot[i] still says whether the map is there this frame.
-void addLight(int i, int slot, bool cube, vec3 position, vec3 normal, vec3 viewDir, float shininess,
+void addLight(int i, int type, int slot, bool cube, vec3 position, vec3 normal, vec3 viewDir, float shininess,
               inout SurfaceLight result) {
     vec3 toLight;
     float cone = 1.0;
-    if (uLightType[i] == LIGHT_DIRECTIONAL) {
+    if (type == LIGHT_DIRECTIONAL) {
         toLight = -uLightDirection[i];
     } else {
         toLight = directionOf(uLightPosition[i] - position);
-        if (uLightType[i] == LIGHT_SPOT)
+        if (type == LIGHT_SPOT)
             cone = coneFactor(uLightSpotCos[i], dot(-toLight, uLightDirection[i]));
     }
     float nDotL = dot(normal, toLight);
@@ -173,43 +173,69 @@ void addLight(int i, int slot, bool cube, vec3 position, vec3 normal, vec3 viewD
 
 // A SIMD rasterizer (llvmpipe before Mesa 23) runs both sides of a branch on a uniform under a mask, and
 // a loop whose bound is a uniform one extra, masked, time. A variant built for the frame's lights
-// (render/passes/LightingVariant) therefore names them: LIGHT_COUNT, and per light LIGHT_SLOT_i and
-// LIGHT_CUBE_i. Each light's code appears once, and the other kind of shadow lookup not at all. Without
-// them, the shader reads the same from uniforms.
-#define ADD_LIGHT(i, slot, cube) addLight(i, slot, cube != 0, position, normal, viewDir, shininess, result)
+// (render/passes/LightingVariant) therefore names them: LIGHT_COUNT, and per light LIGHT_TYPE_i,
+// LIGHT_SLOT_i and LIGHT_CUBE_i. Each light's code appears once, for its own type only, and the other kind
+// of shadow lookup not at all. Without them, the shader reads the same from uniforms.
+// A variant that does not name a light's type reads it from the uniform.
+#ifndef LIGHT_TYPE_0
+#define LIGHT_TYPE_0 uLightType[0]
+#endif
+#ifndef LIGHT_TYPE_1
+#define LIGHT_TYPE_1 uLightType[1]
+#endif
+#ifndef LIGHT_TYPE_2
+#define LIGHT_TYPE_2 uLightType[2]
+#endif
+#ifndef LIGHT_TYPE_3
+#define LIGHT_TYPE_3 uLightType[3]
+#endif
+#ifndef LIGHT_TYPE_4
+#define LIGHT_TYPE_4 uLightType[4]
+#endif
+#ifndef LIGHT_TYPE_5
+#define LIGHT_TYPE_5 uLightType[5]
+#endif
+#ifndef LIGHT_TYPE_6
+#define LIGHT_TYPE_6 uLightType[6]
+#endif
+#ifndef LIGHT_TYPE_7
+#define LIGHT_TYPE_7 uLightType[7]
+#endif
+#define ADD_LIGHT(i, type, slot, cube) \
+    addLight(i, type, slot, cube != 0, position, normal, viewDir, shininess, result)
 
 SurfaceLight shadeLights(vec3 position, vec3 normal, vec3 viewDir, float shininess) {
     SurfaceLight result = SurfaceLight(vec3(0.0), vec3(0.0));
 #ifdef LIGHT_COUNT
 #if LIGHT_COUNT > 0
-    ADD_LIGHT(0, LIGHT_SLOT_0, LIGHT_CUBE_0);
+    ADD_LIGHT(0, LIGHT_TYPE_0, LIGHT_SLOT_0, LIGHT_CUBE_0);
 #endif
 #if LIGHT_COUNT > 1
-    ADD_LIGHT(1, LIGHT_SLOT_1, LIGHT_CUBE_1);
+    ADD_LIGHT(1, LIGHT_TYPE_1, LIGHT_SLOT_1, LIGHT_CUBE_1);
 #endif
 #if LIGHT_COUNT > 2
-    ADD_LIGHT(2, LIGHT_SLOT_2, LIGHT_CUBE_2);
+    ADD_LIGHT(2, LIGHT_TYPE_2, LIGHT_SLOT_2, LIGHT_CUBE_2);
 #endif
 #if LIGHT_COUNT > 3
-    ADD_LIGHT(3, LIGHT_SLOT_3, LIGHT_CUBE_3);
+    ADD_LIGHT(3, LIGHT_TYPE_3, LIGHT_SLOT_3, LIGHT_CUBE_3);
 #endif
 #if LIGHT_COUNT > 4
-    ADD_LIGHT(4, LIGHT_SLOT_4, LIGHT_CUBE_4);
+    ADD_LIGHT(4, LIGHT_TYPE_4, LIGHT_SLOT_4, LIGHT_CUBE_4);
 #endif
 #if LIGHT_COUNT > 5
-    ADD_LIGHT(5, LIGHT_SLOT_5, LIGHT_CUBE_5);
+    ADD_LIGHT(5, LIGHT_TYPE_5, LIGHT_SLOT_5, LIGHT_CUBE_5);
 #endif
 #if LIGHT_COUNT > 6
-    ADD_LIGHT(6, LIGHT_SLOT_6, LIGHT_CUBE_6);
+    ADD_LIGHT(6, LIGHT_TYPE_6, LIGHT_SLOT_6, LIGHT_CUBE_6);
 #endif
 #if LIGHT_COUNT > 7
-    ADD_LIGHT(7, LIGHT_SLOT_7, LIGHT_CUBE_7);
+    ADD_LIGHT(7, LIGHT_TYPE_7, LIGHT_SLOT_7, LIGHT_CUBE_7);
 #endif
 #else
     for (int i = 0; i < uLightCount; ++i) {
         int slot = uLightShadowSlot[i];
-        addLight(i, slot, slot >= 0 && uShadowIsCube[max(slot, 0)] != 0, position, normal, viewDir, shininess,
-                 result);
+        addLight(i, uLightType[i], slot, slot >= 0 && uShadowIsCube[max(slot, 0)] != 0, position, normal,
+                 viewDir, shininess, result);
     }
 #endif
     return result;

@@ -31,9 +31,21 @@ uniform vec3 uEye; // the (virtual) eye, camera-relative and unreflected
 // the point (through the mirrors: the distance from the virtual eye). A rough mirror's blur grows with the
 // part of it beyond the mirror (mirror.frag). Every other target keeps alpha 1.
 uniform int uPathLengthAlpha;
+// What the camera's buffer keeps of this view (passes::ViewSetup::weight): 1, or with pre-weighted stencil
+// mirrors the reflectivity × tint of those the view is seen through. Every lit shader's colour is
+// multiplied by it as it is written.
+uniform vec3 uViewWeight;
+
+// passes::setMaterial names which for its draws (PATH_LENGTH_ALPHA), so the views that keep alpha 1 do not
+// pay for the length under a SIMD rasterizer's mask.
+#ifdef PATH_LENGTH_ALPHA
+#define WRITES_PATH_LENGTH (PATH_LENGTH_ALPHA != 0)
+#else
+#define WRITES_PATH_LENGTH (uPathLengthAlpha != 0)
+#endif
 
 float outputAlpha(vec3 position) {
-    return uPathLengthAlpha != 0 ? min(length(position - uEye), 65504.0) : 1.0;
+    return WRITES_PATH_LENGTH ? min(length(position - uEye), 65504.0) : 1.0;
 }
 
 in vec4 vColor;   // linear RGBA; white where the mesh has no colours

@@ -17,5 +17,5 @@ void main() {
     vec3 colour = shadeBase(vWorld, normal, vUv, base.rgb);
     if (materialCutAway(base.a))
         discard;
-    fragColor = vec4(storableRadiance(colour), outputAlpha(vWorld));
+    fragColor = vec4(storableRadiance(colour * uViewWeight), outputAlpha(vWorld));
 }

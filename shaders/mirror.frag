@@ -13,6 +13,9 @@ uniform float uReflectivity;
 uniform vec3 uTint;
 uniform int uFresnel;
 uniform int uFromTexture;
+// Stencil technique, pre-weighted (FramePlan::preWeighted): the reflection in the buffer already has its
+// weight, and the surface is added over it.
+uniform int uReflectionPreWeighted;
 uniform sampler2D uReflectionTexture; // rgb: the reflection; alpha: its path length (material.glsl)
 uniform vec2 uTargetSize;
 uniform float uBlurLod;   // the Mip filter: one lookup at this level
@@ -22,6 +25,32 @@ uniform float uFocalPx;   // pixels per unit of lateral offset at unit distance 
 uniform float uMaxLod;    // the reflection texture's last mip level
 uniform mat4 uViewProjection; // the parent view's (mesh.vert's), to find the mirror normal on screen
 uniform mat4 uReflection;
+
+// Each mirror's draw names its technique, filter and surface (passes::drawMirrorSurface), so a SIMD
+// rasterizer such as llvmpipe, which runs both sides of a branch on a uniform under a mask, does not pay
+// for the GGX taps or the surface's lighting on a sharp, fully reflective mirror. Without the defines (the
+// general shader) the uniforms decide.
+#ifdef MIRROR_FROM_TEXTURE
+#define MIRROR_USES_TEXTURE (MIRROR_FROM_TEXTURE != 0)
+#else
+#define MIRROR_USES_TEXTURE (uFromTexture != 0)
+#endif
+#ifdef MIRROR_GLOSSY_TAPS
+#define MIRROR_USES_GLOSSY_TAPS (MIRROR_GLOSSY_TAPS != 0)
+#else
+#define MIRROR_USES_GLOSSY_TAPS (uGlossyTaps > 0)
+#endif
+#ifdef MIRROR_FRESNEL
+#define MIRROR_USES_FRESNEL (MIRROR_FRESNEL != 0)
+#else
+#define MIRROR_USES_FRESNEL (uFresnel != 0)
+#endif
+// 0: the mirror reflects everything (reflectivity 1), so its surface is never seen.
+#ifdef MIRROR_SURFACE
+#define MIRROR_SHOWS_SURFACE (MIRROR_SURFACE != 0)
+#else
+#define MIRROR_SHOWS_SURFACE true
+#endif
 
 layout(location = 0, index = 0) out vec4 fragColor;
 layout(location = 0, index = 1) out vec4 reflectionWeight;
@@ -78,23 +107,25 @@ void main() {
     vec3 normal = normalize(vNormal);
     vec3 viewDir = normalize(uEye - vWorld);
     float r = uReflectivity;
-    if (uFresnel != 0) {
+    if (MIRROR_USES_FRESNEL) {
         // Schlick's approximation with the reflectivity as the value at normal incidence.
         float c = clamp(dot(normal, viewDir), 0.0, 1.0);
         r = r + (1.0 - r) * pow(1.0 - c, 5.0);
     }
-    vec3 surface = r < 1.0 ? shadeMaterial(vWorld, normal, vUv) * (1.0 - r) : vec3(0.0);
+    vec3 surface = vec3(0.0);
+    if (MIRROR_SHOWS_SURFACE && r < 1.0)
+        surface = shadeMaterial(vWorld, normal, vUv) * (1.0 - r);
     vec3 weight = uTint * r;
     float alpha = outputAlpha(vWorld);
-    if (uFromTexture != 0) {
+    if (MIRROR_USES_TEXTURE) {
         vec2 uv = gl_FragCoord.xy / uTargetSize;
-        vec3 reflection = uGlossyTaps > 0 ? glossyReflection(uv, normal, viewDir)
-                                          : textureLod(uReflectionTexture, uv, uBlurLod).rgb;
-        fragColor = vec4(storableRadiance(surface + weight * reflection), alpha);
+        vec3 reflection = MIRROR_USES_GLOSSY_TAPS ? glossyReflection(uv, normal, viewDir)
+                                                  : textureLod(uReflectionTexture, uv, uBlurLod).rgb;
+        fragColor = vec4(storableRadiance((surface + weight * reflection) * uViewWeight), alpha);
         reflectionWeight = vec4(0.0);
     } else {
-        fragColor = vec4(storableRadiance(surface), alpha);
+        fragColor = vec4(storableRadiance(surface * uViewWeight), alpha);
         // A NaN weight (reflectivity or tint) would make NaN of the reflection already in the buffer.
-        reflectionWeight = vec4(storableRadiance(weight), 0.0);
+        reflectionWeight = uReflectionPreWeighted != 0 ? vec4(1.0) : vec4(storableRadiance(weight), 0.0);
     }
 }

@@ -70,5 +70,5 @@ void main() {
         r = r + (1.0 - r) * pow(1.0 - c, 5.0);
     }
     vec3 surface = r < 1.0 ? shadeMaterial(vWorld, N, vUv) : vec3(0.0);
-    fragColor = vec4(storableRadiance(surface * (1.0 - r) + environment * r), outputAlpha(vWorld));
+    fragColor = vec4(storableRadiance((surface * (1.0 - r) + environment * r) * uViewWeight), outputAlpha(vWorld));
 }

@@ -42,6 +42,9 @@ const QColor kActiveColor(255, 220, 60);
 const QColor kSelectionColor(255, 150, 40);     // the current node's outline
 const QColor kSelectedColor(190, 105, 35, 210); // the other selected nodes' outlines
 
+// GL_SRGB8_ALPHA8 (the widget's texture format is a GL enum; no GL header is included here).
+constexpr unsigned kSrgbTextureFormat = 0x8C43;
+
 } // namespace
 
 Viewport::Viewport(document::Scene& scene, document::MeshLibrary& meshes, AnimationClock& clock,
@@ -54,6 +57,9 @@ Viewport::Viewport(document::Scene& scene, document::MeshLibrary& meshes, Animat
     setFocusPolicy(Qt::ClickFocus);
     setMouseTracking(true); // handle hover highlight
     setObjectName(QStringLiteral("viewport"));
+    // An sRGB colour texture: the renderer draws a frame that needs no half-float buffer straight into it
+    // (render::RenderTarget::srgbDepthStencil), with no copy; Qt composes it into the window as sRGB.
+    setTextureFormat(kSrgbTextureFormat);
     m_view.reset(document::toRender(m_scene.camera()));
     m_overlay = new ViewportOverlay(*this);
     m_models = new ViewportModels(m_meshes, this);
@@ -403,8 +409,14 @@ void Viewport::paintGL() {
 
     // The widget draws into its own FBO; framebuffer 0 is not ours.
     const qreal dpr = devicePixelRatioF();
-    const render::RenderTarget target{defaultFramebufferObject(), qRound(width() * dpr),
-                                      qRound(height() * dpr), true};
+    render::RenderTarget target{defaultFramebufferObject(), qRound(width() * dpr), qRound(height() * dpr),
+                                true};
+    // Qt draws the widget's texture into the window as it would a plain one: it must read the stored,
+    // encoded bytes. Where it cannot, the frame goes through the renderer's own buffer and a copy.
+    const QSurfaceFormat format = context()->format();
+    const bool composedAsStored = render::composeSrgbTextureAsStored(defaultFramebufferObject());
+    target.srgbDepthStencil = textureFormat() == kSrgbTextureFormat && composedAsStored &&
+                              format.depthBufferSize() >= 24 && format.stencilBufferSize() >= 8;
     render::RenderOptions options;
     options.resolutionScale = level.scale;
     m_lastReport = m_renderer->render(input, target, options);
@@ -427,6 +439,10 @@ void Viewport::paintGL() {
     }
 
     QStringList all;
+    if (textureFormat() == kSrgbTextureFormat && !composedAsStored) {
+        all << tr("The viewport may look darker than the scene: this GPU cannot show its sRGB buffer as "
+                  "stored (no EXT_texture_sRGB_decode). Stills are not affected.");
+    }
     for (const auto& w : warnings) {
         all << QString::fromStdString(w);
     }

@@ -13,6 +13,10 @@ std::string lightingVariant(const FrameInput& input, const std::vector<int>& sha
         const auto slot = std::find(shadowedLights.begin(), shadowedLights.end(), i);
         const bool shadowed = slot != shadowedLights.end();
         const std::string n = std::to_string(i);
+        // The values of LIGHT_POINT, LIGHT_DIRECTIONAL and LIGHT_SPOT in shaders/lighting.glsl.
+        const LightType type = input.lights[static_cast<std::size_t>(i)].type;
+        defines += "#define LIGHT_TYPE_" + n +
+                   (type == LightType::Directional ? " 1\n" : type == LightType::Spot ? " 2\n" : " 0\n");
         defines += "#define LIGHT_SLOT_" + n + " " +
                    std::to_string(shadowed ? static_cast<int>(slot - shadowedLights.begin()) : -1) + "\n";
         // Point lights render cube maps; spot and directional lights one 2D map (math/ShadowFrustum).

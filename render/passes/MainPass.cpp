@@ -103,12 +103,14 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
 
 } // namespace
 
-void setMaterial(const Material& m, const gl::Program& p, const MainPassContext& ctx) {
+void setMaterial(const Material& m, const gl::Program& p, const MainPassContext& ctx,
+                 const std::string& drawDefines) {
     const bool texture = !m.texture.empty();
     const bool emissionTexture = !m.emissionTexture.empty();
     const bool normalTexture = !m.normalTexture.empty();
     const bool mask = m.alphaMode != AlphaMode::Opaque;
-    std::string defines;
+    std::string defines = drawDefines;
+    defines += ctx.pathLengthInAlpha ? "#define PATH_LENGTH_ALPHA 1\n" : "#define PATH_LENGTH_ALPHA 0\n";
     if (!texture)
         defines += "#define MATERIAL_TEXTURE 0\n";
     if (!emissionTexture)
@@ -150,6 +152,7 @@ double alphaCutoff(const Material& m) {
 void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& p,
                   MainPassContext& ctx) {
     ctx.mirroredView = view.clockwise;
+    ctx.pathLengthInAlpha = view.pathLengthInAlpha;
     const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
     const glm::dmat4 fromCameraRelative = glm::inverse(toCameraRelative);
     p.use();
@@ -158,6 +161,7 @@ void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Prog
     p.set("uReflection", glm::mat4(toCameraRelative * view.reflection * fromCameraRelative));
     p.set("uEye", glm::vec3(view.eye - input.camera.position));
     p.set("uPathLengthAlpha", view.pathLengthInAlpha ? 1 : 0);
+    p.set("uViewWeight", glm::vec3(view.weight));
     p.set("uSceneAmbient", float(input.settings.ambient));
     p.set("uTexture", kMaterialTextureUnit);
     p.set("uEmissionTexture", kEmissionTextureUnit);

@@ -42,6 +42,7 @@ struct MainPassContext {
     GLuint dummyShadowCube;
     MeshHandle unitPlane;        // the mirror rectangle: [-1,1]² in XZ
     bool mirroredView = false;   // set by beginLitView from ViewSetup::clockwise
+    bool pathLengthInAlpha = false; // set by beginLitView from ViewSetup::pathLengthInAlpha
     DrawReflector drawReflector; // empty: the reflector is drawn with its material
     // Per mirror (by index), a mesh drawn instead of unitPlane where set: the environment's direct fill
     // splits each rectangle for the capture point it is seen from.
@@ -84,6 +85,12 @@ struct ViewSetup {
     // The view draws into a mirror's reflection texture: shaders store each point's path length in alpha
     // (material.glsl's outputAlpha), which a rough mirror's blur reads.
     bool pathLengthInAlpha = false;
+    // What the camera's buffer keeps of this view's scene (MirrorView::weight): lit shaders multiply their
+    // colour by it (uViewWeight).
+    glm::dvec3 weight{1.0};
+    // Stencil mirrors seen in this view draw pre-weighted (FramePlan::preWeighted): their surfaces are
+    // added over reflections already weighted, instead of blended onto them.
+    bool preWeightedStencil = false;
 };
 
 // Binds the lit-material program and sets everything that is the same for every object of the view:
@@ -97,7 +104,9 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
 
 // Sets a material's uniforms (and binds its textures) on the lit program, and binds the program's draw
 // variant that compiles out what the material does not use (no texture, emission or normal map, no mask).
-void setMaterial(const Material& material, const gl::Program& program, const MainPassContext& context);
+// `drawDefines` specialise the variant further for every draw that follows (a mirror's technique).
+void setMaterial(const Material& material, const gl::Program& program, const MainPassContext& context,
+                 const std::string& drawDefines = {});
 
 // The alpha below which a masked material is cut away: its cutoff, or one half for Blend (drawn as Mask).
 double alphaCutoff(const Material& material);

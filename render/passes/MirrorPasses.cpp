@@ -26,6 +26,7 @@ ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewInde
     if (viewIndex < 0) {
         setup.viewProjection = cameraProjection * rotation;
         setup.eye = input.camera.position;
+        setup.preWeightedStencil = plan.preWeighted;
     } else {
         const MirrorView& view = plan.views[static_cast<std::size_t>(viewIndex)];
         setup.viewProjection = view.projection * rotation;
@@ -33,6 +34,8 @@ ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewInde
         setup.eye = view.eye;
         setup.coarseDetail = true;
         setup.pathLengthInAlpha = view.textureSlot >= 0;
+        setup.weight = view.weight;
+        setup.preWeightedStencil = plan.preWeighted && view.textureSlot < 0;
         const glm::dvec2 size = glm::max(glm::dvec2(targetSize), glm::dvec2(1.0));
         setup.ndcBounds = glm::dvec4(view.rect.x0 / size.x, view.rect.y0 / size.y, view.rect.x1 / size.x,
                                      view.rect.y1 / size.y) *
@@ -81,7 +84,9 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         // Alpha: as far as a path can be (material.glsl's outputAlpha), for a rough mirror's blur.
-        maskProgram.set("uFlatColor", glm::vec4(glm::vec3(input.settings.background), kFarPathLength));
+        // Pre-weighted (FramePlan::preWeighted), the background is kept with the view's weight too.
+        maskProgram.set("uFlatColor",
+                        glm::vec4(glm::vec3(input.settings.background * view.weight), kFarPathLength));
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_ALWAYS);
         glDepthRange(1.0, 1.0);
@@ -112,7 +117,9 @@ void tintPerfectMirror(const FrameInput& input, const MirrorView& view, const Vi
     glDepthMask(GL_TRUE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ZERO, GL_CONSTANT_COLOR);
-    glBlendColor(float(mirror.tint.r), float(mirror.tint.g), float(mirror.tint.b), 1.0f);
+    // Pre-weighted, the reflection already has its tint.
+    const glm::vec3 tint = parent.preWeightedStencil ? glm::vec3(1.0f) : glm::vec3(mirror.tint);
+    glBlendColor(tint.r, tint.g, tint.b, 1.0f);
     context.meshes.get(context.unitPlane).draw();
     glDisable(GL_BLEND);
     glDepthFunc(GL_LESS);
@@ -134,6 +141,15 @@ void setGlossyUniforms(const FrameInput& input, const Mirror& mirror, const gl::
     program.set("uMaxLod", float(maxLod));
 }
 
+// The draw variant of shaders/mirror.frag for this mirror: what it does not use is compiled out.
+std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fromTexture) {
+    const bool footprint = fromTexture && mirror.roughness > 0.0 &&
+                           input.settings.glossyFilter == GlossyFilter::Footprint;
+    auto define = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
+    return define("MIRROR_FROM_TEXTURE", fromTexture) + define("MIRROR_GLOSSY_TAPS", footprint) +
+           define("MIRROR_FRESNEL", mirror.fresnel) + define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
+}
+
 } // namespace
 
 void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
@@ -146,11 +162,13 @@ void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const Vi
         return;
     }
     beginLitView(input, parent, surfaceProgram, context);
-    setMaterial(mirror.hasMaterial ? mirror.material : Material{}, surfaceProgram, context);
+    setMaterial(mirror.hasMaterial ? mirror.material : Material{}, surfaceProgram, context,
+                mirrorDefines(input, mirror, view.ownTarget));
     surfaceProgram.set("uReflectivity", float(mirror.reflectivity));
     surfaceProgram.set("uTint", glm::vec3(mirror.tint));
     surfaceProgram.set("uFresnel", mirror.fresnel ? 1 : 0);
     surfaceProgram.set("uFromTexture", view.ownTarget ? 1 : 0);
+    surfaceProgram.set("uReflectionPreWeighted", parent.preWeightedStencil && !view.ownTarget ? 1 : 0);
     surfaceProgram.set("uReflectionTexture", kReflectionTextureUnit);
     surfaceProgram.set("uTargetSize", glm::vec2(targetSize));
     setGlossyUniforms(input, mirror, surfaceProgram, reflectionLevels, targetSize);

@@ -11,7 +11,8 @@ GLuint framebufferOf(const PassWrites& writes, const FrameExecution& frame) {
     case PassTarget::OwnMap: // the pass binds its own
         return 0;
     case PassTarget::Linear:
-        return frame.resources.linear.framebuffer();
+        return frame.plan.cameraBufferIsOutput ? frame.outputTarget().framebuffer
+                                               : frame.resources.linear.framebuffer();
     case PassTarget::Reflection:
         return frame.resources.reflectionTextures.at(static_cast<std::size_t>(writes.slot)).framebuffer();
     case PassTarget::Output:

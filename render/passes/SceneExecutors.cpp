@@ -2,6 +2,8 @@
 #include "render/passes/MirrorPasses.hpp"
 #include "render/passes/PassExecutors.hpp"
 
+#include <string>
+
 namespace speculum::render::passes {
 
 PassResult runMain(const PlannedPass& pass, FrameExecution& frame) {
@@ -41,15 +43,18 @@ PassResult runComposite(const PlannedPass& pass, FrameExecution& frame) {
     }
     bindWrites(pass.writes, frame);
     glDisable(GL_DEPTH_TEST); // a full-screen triangle: nothing to test against
-    r.compositeProgram.use();
+    const RenderTarget& output = frame.outputTarget();
+    // Linear-buffer pixels per output pixel: (1, 1) copies, less scales a preview up.
+    const glm::vec2 sourceScale(float(frame.target.width) / float(output.width),
+                                float(frame.target.height) / float(output.height));
+    const bool scaled = sourceScale != glm::vec2(1.0f);
+    r.compositeProgram.useWith(std::string("#define COMPOSITE_SCALED ") + (scaled ? "1" : "0") +
+                               "\n#define COMPOSITE_ENCODE " + (output.encodeSrgb ? "1" : "0") + "\n");
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, r.linear.color());
     r.compositeProgram.set("uColor", 0);
-    const RenderTarget& output = frame.outputTarget();
     r.compositeProgram.set("uEncodeSrgb", output.encodeSrgb ? 1 : 0);
-    // Linear-buffer pixels per output pixel: (1, 1) copies, less scales a preview up.
-    r.compositeProgram.set("uSourceScale", glm::vec2(float(frame.target.width) / float(output.width),
-                                                     float(frame.target.height) / float(output.height)));
+    r.compositeProgram.set("uSourceScale", sourceScale);
     glBindVertexArray(r.emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return {};

@@ -91,6 +91,10 @@ struct MirrorView {
     int stencilLevel = 0;       // the stencil value of its pixels in the target it is drawn into
     int parentStencilLevel = 0; // the stencil value of the parent view's pixels, where the mirror appears
     int textureSlot = -1;       // own-target views: which render texture (one per nesting of texture views)
+    // With FramePlan::preWeighted: what the camera's buffer keeps of this view's scene, the product of
+    // reflectivity × tint of the stencil mirrors down to it; everything the view draws is multiplied by it
+    // as it is written. 1 for views drawn into a texture (and without pre-weighting).
+    glm::dvec3 weight{1.0};
 };
 
 // Where the reflector's environment map is captured from: the centre of the reflector's world bounds
@@ -148,6 +152,14 @@ enum class CameraBuffer { HalfFloat, Srgb8 };
 struct FramePlan {
     std::vector<PlannedPass> passes;
     CameraBuffer cameraBuffer = CameraBuffer::HalfFloat;
+    // The 8-bit sRGB camera buffer is the output's own: every pass that writes the camera's colour buffer
+    // (PassTarget::Linear) writes the output, and no composite pass is planned.
+    bool cameraBufferIsOutput = false;
+    // Stencil mirrors in the camera's buffer draw their reflections already weighted (MirrorView::weight)
+    // and add their surfaces over them, instead of blending the surface onto the reflection they drew: an
+    // 8-bit buffer then holds clamp(w·R) + S, within one 8-bit step of the half-float result. Planned where
+    // every such weight is constant over the mirror (no Fresnel term).
+    bool preWeighted = false;
     std::vector<SkippedEffect> skipped;
     // Lights (indices into FrameInput::lights) whose shadow map the main pass samples, rendered this
     // frame or reused; at most kMaxShadowedLights. shadows[k] plans shadowedLights[k], slot k.

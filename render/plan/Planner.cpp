@@ -78,6 +78,41 @@ std::string blendOntoRadiance(const FrameInput& input, const std::vector<MirrorV
     return {};
 }
 
+// Gives every view drawn into the camera's buffer the weight its scene is kept with (the stencil mirrors'
+// reflectivity × tint, multiplied down the nesting), so that the 8-bit buffer can hold its stencil
+// mirrors. Returns why it cannot, leaving every weight 1; empty when the weights are set. It cannot where
+// a Fresnel term makes a weight vary over the mirror, or where a stencil mirror that adds its surface is
+// seen in another that does: each surface added rounds the pixel to 8 bits once more, and the image
+// would no longer be within one step of the half-float one.
+std::string preWeightStencilMirrors(const FrameInput& input, FramePlan& plan) {
+    std::vector<int> surfacesAdded(plan.views.size(), 0); // stencil surfaces added, down to each view
+    for (std::size_t v = 0; v < plan.views.size(); ++v) {
+        const MirrorView& view = plan.views[v];
+        if (view.ownTarget || view.textureSlot >= 0)
+            continue;
+        const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
+        const bool addsSurface = !(mirror.reflectivity >= 1.0);
+        if (mirror.fresnel && addsSurface)
+            return "stencil mirror '" + mirror.name +
+                   "' blends onto the reflection it drew, with a Fresnel weight that varies over it";
+        const int above = view.parent < 0 ? 0 : surfacesAdded[static_cast<std::size_t>(view.parent)];
+        surfacesAdded[v] = above + (addsSurface ? 1 : 0);
+        if (surfacesAdded[v] > 1)
+            return "stencil mirror '" + mirror.name +
+                   "' blends onto the reflection it drew inside another stencil mirror's reflection";
+    }
+    // Parents come before their children in plan.views.
+    for (MirrorView& view : plan.views) {
+        if (view.ownTarget || view.textureSlot >= 0)
+            continue;
+        const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
+        const glm::dvec3 parent =
+            view.parent < 0 ? glm::dvec3(1.0) : plan.views[static_cast<std::size_t>(view.parent)].weight;
+        view.weight = parent * std::clamp(mirror.reflectivity, 0.0, 1.0) * mirror.tint;
+    }
+    return {};
+}
+
 // Big meshes in reflected views: which items the mirror and environment passes draw at their simplified
 // level, said in those passes' reasons (or, with settings.simplifyReflections off, that they draw them
 // whole, and what that costs in triangles).
@@ -268,13 +303,28 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     for (SkippedEffect& skip : mirrors.skipped)
         plan.skipped.push_back(std::move(skip));
 
-    const std::string blend = blendOntoRadiance(input, plan.views);
+    std::string blend = blendOntoRadiance(input, plan.views);
+    if (viewport.eightBitOutput && !blend.empty()) {
+        blend = preWeightStencilMirrors(input, plan);
+        plan.preWeighted = blend.empty();
+    }
     plan.cameraBuffer =
         viewport.eightBitOutput && blend.empty() ? CameraBuffer::Srgb8 : CameraBuffer::HalfFloat;
     PlannedPass& mainPass = *std::find_if(plan.passes.begin(), plan.passes.end(),
                                           [](const PlannedPass& p) { return p.kind == PassKind::Main; });
+    if (plan.preWeighted)
+        mainPass.reason += "; stencil mirrors draw their reflections weighted and add their surfaces over them";
     PlannedPass composite;
     composite.kind = PassKind::Composite;
+    if (plan.cameraBuffer == CameraBuffer::Srgb8 && viewport.outputTakesCameraBuffer) {
+        plan.cameraBufferIsOutput = true;
+        mainPass.reason += " (8-bit sRGB: the output's own buffer, encoded as it is written)";
+        plan.skipped.push_back({"output", "composite pass not needed: the frame is drawn straight into the "
+                                          "output, an 8-bit sRGB buffer, and no blend needs radiance above 1"});
+        planReflectedDetail(input, plan);
+        declareWrites(input, plan);
+        return plan;
+    }
     if (plan.cameraBuffer == CameraBuffer::Srgb8) {
         mainPass.reason += " (8-bit sRGB, encoded as it is written)";
         composite.reason =

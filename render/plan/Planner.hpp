@@ -40,6 +40,8 @@ struct PlanViewport {
     // The output holds 8-bit sRGB (a window's framebuffer): the camera's view may be drawn into an 8-bit
     // sRGB buffer when nothing blends onto radiance above 1 there (FramePlan::cameraBuffer).
     bool eightBitOutput = false;
+    // The output itself can be that 8-bit sRGB buffer (RenderTarget::srgbDepthStencil, drawn at its size).
+    bool outputTakesCameraBuffer = false;
 };
 
 // The camera's projection for this viewport (jittered) and its camera-relative view-projection.

@@ -48,7 +48,11 @@ TEST(TimeCommand, ReportsConsistentFrameTimesAndTheShareOfEachPass) {
     EXPECT_EQ(o["cameraBuffer"].toString(), "srgb8") << "no mirror: nothing needs the half-float buffer";
     const auto runs = runsPerFrame(o);
     EXPECT_EQ(runs.at("main"), 1.0);
-    EXPECT_EQ(runs.at("composite"), 1.0);
+    // The target is like the editor's viewport (sRGB, with depth and stencil): the frame is drawn into it.
+    EXPECT_TRUE(o["drawnIntoOutput"].toBool());
+    EXPECT_EQ(runs.count("composite"), 0u) << "no copy into the output";
+    EXPECT_NE(o["compositeReason"].toString().indexOf("composite pass not needed"), -1)
+        << o["compositeReason"].toString().toStdString();
     double shares = 0.0;
     for (const QJsonValue& p : o["passes"].toArray())
         shares += p["share"].toDouble();
@@ -64,13 +68,17 @@ TEST(TimeCommand, AStaticSceneReusesItsShadowMapAndAnAnimatedOneRedrawsIt) {
     const QJsonObject animated = timeJson(teapot + " --animated");
     EXPECT_TRUE(animated["animated"].toBool());
     EXPECT_EQ(runsPerFrame(animated).at("shadow"), 1.0) << "the light orbits: a new map each frame";
-    EXPECT_EQ(animated["cameraBuffer"].toString(), "half-float") << "the marble table is a stencil mirror";
+    EXPECT_EQ(animated["cameraBuffer"].toString(), "srgb8")
+        << "the marble table is a stencil mirror without Fresnel: its reflection is drawn pre-weighted";
+    EXPECT_TRUE(animated["drawnIntoOutput"].toBool());
 }
 
 TEST(TimeCommand, HalfFloatTimesTheCompositePath) {
     const QJsonObject o =
         timeJson(scene("benchmarks/scenes/ball.speculum.json") + " --frames 2 --size 64x64 --half-float");
     EXPECT_EQ(o["cameraBuffer"].toString(), "half-float");
+    EXPECT_FALSE(o["drawnIntoOutput"].toBool());
+    EXPECT_EQ(runsPerFrame(o).at("composite"), 1.0) << "the half-float buffer is resolved into the output";
 }
 
 TEST(TimeCommand, TheTextReportNamesTheFigures) {

@@ -21,6 +21,7 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTreeWidget>
+#include <QScreen>
 #include <QWindow>
 #include <gtest/gtest.h>
 #include <optional>
@@ -288,6 +289,35 @@ TEST_F(EditorOutput, ExportStillDialogOffersTheTracerAndStatesItsTime) {
     dialog.findChild<QDoubleSpinBox*>(QStringLiteral("stillTime"))->setValue(2.25);
     EXPECT_EQ(source->currentIndex(), 2);
     EXPECT_TRUE(dialog.timeNote().contains(QStringLiteral("2.250"))) << dialog.timeNote().toStdString();
+}
+
+// The viewport's texture is 8-bit sRGB and the frame is drawn straight into it (no copy): what the window
+// shows, as Qt composes that texture on screen, must be the bytes the frame wrote, not a decoded, darker
+// version of them.
+TEST_F(EditorOutput, TheFrameDrawnIntoTheViewportShowsOnScreenAsWritten) {
+    open(kScenes + QStringLiteral("/chrome.speculum.json"));
+    ASSERT_TRUE(waitForFrames(*m_window));
+    const render::FrameReport& report = m_window->viewport().lastReport();
+    EXPECT_TRUE(report.plan.cameraBufferIsOutput) << "chrome has no blend that needs the half-float buffer";
+    EXPECT_EQ(report.countRan(render::PassKind::Composite), 0u);
+    const QImage written = frame();
+    QCoreApplication::processEvents();
+    const QImage shown = m_window->windowHandle()
+                             ->screen()
+                             ->grabWindow(m_window->winId())
+                             .toImage()
+                             .convertToFormat(QImage::Format_RGB32);
+    ASSERT_FALSE(shown.isNull());
+    const QPoint origin = m_window->viewport().mapTo(m_window.get(), QPoint(0, 0));
+    const double scale = written.width() / double(m_window->viewport().width());
+    // Away from the overlay (axis gizmo, pivot mark), which is drawn over the frame on screen only.
+    for (const QPointF at : {QPointF(0.2, 0.8), QPointF(0.8, 0.6), QPointF(0.5, 0.15), QPointF(0.3, 0.45)}) {
+        const QPoint inViewport(int(at.x() * m_window->viewport().width()), int(at.y() * m_window->viewport().height()));
+        const Rgb w = patch(written, QPoint(int(inViewport.x() * scale), int(inViewport.y() * scale)), 2);
+        const Rgb s = patch(shown, origin + inViewport, 2);
+        EXPECT_LE(w.distance(s), 3.0) << "at " << at.x() << "," << at.y() << ": written " << w.r << "," << w.g
+                                      << "," << w.b << ", shown " << s.r << "," << s.g << "," << s.b;
+    }
 }
 
 TEST_F(EditorOutput, ScreenshotsOfEachDemoScene) {

@@ -28,6 +28,78 @@ int passesFor(const FramePlan& plan, const std::string& target) {
     return n;
 }
 
+// An 8-bit output that can hold the camera's buffer itself (an sRGB target with depth and stencil) takes the
+// passes directly: the composite is not planned, and the plan says why. A blend that needs radiance above 1
+// (a stencil mirror whose weight varies over it: Fresnel) keeps the half-float buffer and its composite; one
+// with a constant weight is drawn pre-weighted, and nested ones multiply their weights.
+TEST(MirrorPlanner, AnOutputThatHoldsTheCameraBufferNeedsNoComposite) {
+    FrameInput input = cameraAtOrigin();
+    input.mirrors = {wall("Wall", -3.0)};
+    input.mirrors[0].technique = MirrorTechnique::Stencil;
+    input.mirrors[0].reflectivity = 1.0;
+    PlanViewport direct{640, 360};
+    direct.eightBitOutput = true;
+    direct.outputTakesCameraBuffer = true;
+    const FramePlan plan = planFrame(input, {}, direct);
+    EXPECT_EQ(plan.cameraBuffer, CameraBuffer::Srgb8);
+    EXPECT_TRUE(plan.cameraBufferIsOutput);
+    for (const auto& p : plan.passes) {
+        EXPECT_NE(p.kind, PassKind::Composite);
+        EXPECT_NE(p.writes.target, PassTarget::Output) << toString(p.kind) << ": the camera's buffer is the output";
+    }
+    EXPECT_NE(skipReason(plan, "output").find("composite pass not needed"), std::string::npos);
+
+    input.mirrors[0].reflectivity = 0.5;
+    const FramePlan weighted = planFrame(input, {}, direct);
+    EXPECT_TRUE(weighted.preWeighted) << "a constant weight: the reflection is drawn pre-weighted";
+    EXPECT_TRUE(weighted.cameraBufferIsOutput);
+    ASSERT_EQ(weighted.views.size(), 1u);
+    EXPECT_EQ(weighted.views[0].weight, glm::dvec3(0.5));
+
+    input.mirrors[0].fresnel = true; // a weight that varies over the mirror
+    const FramePlan blended = planFrame(input, {}, direct);
+    EXPECT_EQ(blended.cameraBuffer, CameraBuffer::HalfFloat);
+    EXPECT_FALSE(blended.cameraBufferIsOutput);
+    EXPECT_FALSE(blended.preWeighted);
+    EXPECT_EQ(blended.views[0].weight, glm::dvec3(1.0));
+    EXPECT_NE(blended.passes.back().reason.find("Fresnel"), std::string::npos) << blended.passes.back().reason;
+    EXPECT_EQ(blended.passes.back().kind, PassKind::Composite);
+    EXPECT_EQ(skipReason(blended, "output"), "");
+}
+
+TEST(MirrorPlanner, NestedStencilMirrorsMultiplyTheirWeights) {
+    FrameInput input = cameraAtOrigin();
+    input.settings.mirrorDepth = 3;
+    input.mirrors = {wall("Front", -3.0), wall("Back", 3.0, false)};
+    for (Mirror& m : input.mirrors)
+        m.technique = MirrorTechnique::Stencil;
+    input.mirrors[0].reflectivity = 1.0; // a perfect mirror adds no surface of its own
+    input.mirrors[0].tint = {1.0, 0.5, 0.25};
+    input.mirrors[1].reflectivity = 0.5;
+    input.mirrors[1].tint = {0.8, 0.9, 1.0};
+    PlanViewport eightBit{640, 360};
+    eightBit.eightBitOutput = true;
+    const FramePlan plan = planFrame(input, {}, eightBit);
+    EXPECT_TRUE(plan.preWeighted);
+    EXPECT_EQ(plan.cameraBuffer, CameraBuffer::Srgb8);
+    ASSERT_GE(plan.views.size(), 2u);
+    for (const MirrorView& view : plan.views) {
+        glm::dvec3 expected(1.0);
+        for (int v = static_cast<int>(&view - plan.views.data()); v >= 0;
+             v = plan.views[static_cast<std::size_t>(v)].parent) {
+            const Mirror& m = input.mirrors[static_cast<std::size_t>(plan.views[static_cast<std::size_t>(v)].mirror)];
+            expected *= m.reflectivity * m.tint;
+        }
+        EXPECT_LT(glm::length(view.weight - expected), 1e-12) << "view at depth " << view.depth;
+    }
+
+    // Two that both add their surfaces: 8 bits would round a pixel seen through both twice.
+    input.mirrors[0].reflectivity = 0.8;
+    const FramePlan both = planFrame(input, {}, eightBit);
+    EXPECT_FALSE(both.preWeighted);
+    EXPECT_EQ(both.cameraBuffer, CameraBuffer::HalfFloat);
+}
+
 TEST(MirrorPlanner, AVisibleMirrorGetsMaskMirrorAndSurfacePassesInOrder) {
     FrameInput input = cameraAtOrigin();
     input.mirrors = {wall("Wall", -3.0)};
