@@ -258,8 +258,8 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     // Drawn straight into the output, the frame needs no buffer of its own.
     if (Status linear = plan.cameraBufferIsOutput
                             ? Status{Done{}}
-                            : r.linear.ensure(drawn.width, drawn.height, srgbBuffer ? GL_SRGB8_ALPHA8 : GL_RGBA16F,
-                                              false);
+                            : r.linear.ensure(drawn.width, drawn.height,
+                                              srgbBuffer ? GL_SRGB8_ALPHA8 : GL_RGBA16F, false);
         !linear) {
         // Without its colour buffer the frame cannot be drawn at all: say so instead of an empty image.
         report.error = "the frame could not be drawn: " + linear.error();

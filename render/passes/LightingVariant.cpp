@@ -16,7 +16,9 @@ std::string lightingVariant(const FrameInput& input, const std::vector<int>& sha
         // The values of LIGHT_POINT, LIGHT_DIRECTIONAL and LIGHT_SPOT in shaders/lighting.glsl.
         const LightType type = input.lights[static_cast<std::size_t>(i)].type;
         defines += "#define LIGHT_TYPE_" + n +
-                   (type == LightType::Directional ? " 1\n" : type == LightType::Spot ? " 2\n" : " 0\n");
+                   (type == LightType::Directional ? " 1\n"
+                    : type == LightType::Spot      ? " 2\n"
+                                                   : " 0\n");
         defines += "#define LIGHT_SLOT_" + n + " " +
                    std::to_string(shadowed ? static_cast<int>(slot - shadowedLights.begin()) : -1) + "\n";
         // Point lights render cube maps; spot and directional lights one 2D map (math/ShadowFrustum).

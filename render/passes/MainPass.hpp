@@ -40,10 +40,10 @@ struct MainPassContext {
     const std::vector<ShadowPlan>& shadowPlans;
     GLuint dummyShadow2D;
     GLuint dummyShadowCube;
-    MeshHandle unitPlane;        // the mirror rectangle: [-1,1]² in XZ
-    bool mirroredView = false;   // set by beginLitView from ViewSetup::clockwise
+    MeshHandle unitPlane;           // the mirror rectangle: [-1,1]² in XZ
+    bool mirroredView = false;      // set by beginLitView from ViewSetup::clockwise
     bool pathLengthInAlpha = false; // set by beginLitView from ViewSetup::pathLengthInAlpha
-    DrawReflector drawReflector; // empty: the reflector is drawn with its material
+    DrawReflector drawReflector;    // empty: the reflector is drawn with its material
     // Per mirror (by index), a mesh drawn instead of unitPlane where set: the environment's direct fill
     // splits each rectangle for the capture point it is seen from.
     std::vector<MeshHandle> mirrorMeshes;

@@ -143,9 +143,11 @@ void setGlossyUniforms(const FrameInput& input, const Mirror& mirror, const gl::
 
 // The draw variant of shaders/mirror.frag for this mirror: what it does not use is compiled out.
 std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fromTexture) {
-    const bool footprint = fromTexture && mirror.roughness > 0.0 &&
-                           input.settings.glossyFilter == GlossyFilter::Footprint;
-    auto define = [](const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); };
+    const bool footprint =
+        fromTexture && mirror.roughness > 0.0 && input.settings.glossyFilter == GlossyFilter::Footprint;
+    auto define = [](const char* name, bool on) {
+        return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
+    };
     return define("MIRROR_FROM_TEXTURE", fromTexture) + define("MIRROR_GLOSSY_TAPS", footprint) +
            define("MIRROR_FRESNEL", mirror.fresnel) + define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
 }

@@ -3,9 +3,11 @@
 #include "render/GpuLimits.hpp"
 #include "render/gl/Memory.hpp"
 #include "render/io/Printable.hpp"
+#include "render/math/Projection.hpp"
 #include "render/passes/MainPass.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace speculum::render::passes {
@@ -120,6 +122,57 @@ int ShadowMaps::allocate(const FrameInput& input, const ShadowPlan& shadow,
     return fitted.size;
 }
 
+namespace {
+
+// World bounds of what the shadow pass draws: the casters and the reflector.
+std::vector<math::Box> casterBoxes(const FrameInput& input) {
+    std::vector<math::Box> boxes;
+    for (const DrawItem& item : input.items)
+        if (item.castsShadows && item.mesh)
+            boxes.push_back(math::worldBounds(computeBounds(*item.mesh), item.world));
+    if (input.reflector && input.reflector->mesh)
+        boxes.push_back(math::worldBounds(computeBounds(*input.reflector->mesh), input.reflector->world));
+    return boxes;
+}
+
+// The texels of a size² map face that the casters can cover: the bounds of their boxes' projected corners,
+// a texel wider on each side; the whole face where a corner lies behind the light's plane (or is not
+// finite), empty where every box lies off the face.
+math::PixelRect casterTexels(const std::vector<math::Box>& boxes, const glm::dmat4& viewProjection,
+                             int size) {
+    const math::PixelRect whole{0, 0, size, size};
+    glm::dvec2 low(1e300), high(-1e300);
+    for (const math::Box& box : boxes) {
+        if (box.empty())
+            continue;
+        for (const glm::dvec3& corner : box.corners()) {
+            const glm::dvec4 clip = viewProjection * glm::dvec4(corner, 1.0);
+            if (!(clip.w > 1e-9) || !std::isfinite(clip.x) || !std::isfinite(clip.y))
+                return whole;
+            const glm::dvec2 texel = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * double(size);
+            low = glm::min(low, texel);
+            high = glm::max(high, texel);
+        }
+    }
+    if (low.x > high.x)
+        return {};
+    const math::PixelRect rect{static_cast<int>(std::clamp(std::floor(low.x) - 1.0, 0.0, double(size))),
+                               static_cast<int>(std::clamp(std::floor(low.y) - 1.0, 0.0, double(size))),
+                               static_cast<int>(std::clamp(std::ceil(high.x) + 1.0, 0.0, double(size))),
+                               static_cast<int>(std::clamp(std::ceil(high.y) + 1.0, 0.0, double(size)))};
+    return rect.empty() ? math::PixelRect{} : rect;
+}
+
+math::PixelRect unite(const math::PixelRect& a, const math::PixelRect& b) {
+    if (a.empty())
+        return b;
+    if (b.empty())
+        return a;
+    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+} // namespace
+
 ShadowMap& ShadowMaps::prepare(const ShadowPlan& shadow) {
     const bool cube = shadow.frustum.cube;
     if (auto it = m_maps.find(shadow.light); it != m_maps.end() && it->second.depth &&
@@ -172,17 +225,31 @@ void ShadowMaps::render(const FrameInput& input, const ShadowPlan& shadow, gl::M
     program.use();
 
     const int faces = frustum.cube ? 6 : 1;
+    const std::vector<math::Box> casters = casterBoxes(input);
+    const math::PixelRect whole{0, 0, size, size};
+    if (!map.drawnTexelsKnown)
+        map.drawnTexels.fill(whole);
+    map.drawnTexelsKnown = true;
+    glEnable(GL_SCISSOR_TEST);
     for (int face = 0; face < faces; ++face) {
+        // Faces that hold no caster stay cleared: everything seen through them is lit.
+        const bool holdsCasters = !frustum.cube || (frustum.faceMask & (1u << face)) != 0;
+        const glm::dmat4& viewProjection = frustum.viewProjection[face];
+        const math::PixelRect drawn =
+            holdsCasters ? casterTexels(casters, viewProjection, size) : math::PixelRect{};
+        const math::PixelRect cleared = unite(map.drawnTexels[static_cast<std::size_t>(face)], drawn);
+        map.drawnTexels[static_cast<std::size_t>(face)] = drawn;
+        if (cleared.empty())
+            continue; // holds only the cleared depth already, and nothing is drawn into it
         if (frustum.cube)
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
                                    map.depth.id(), 0);
         else
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map.depth.id(), 0);
+        glScissor(cleared.x0, cleared.y0, cleared.width(), cleared.height());
         glClear(GL_DEPTH_BUFFER_BIT);
-        // Faces that hold no caster stay cleared: everything seen through them is lit.
-        if (frustum.cube && !(frustum.faceMask & (1u << face)))
+        if (drawn.empty())
             continue;
-        const glm::dmat4& viewProjection = frustum.viewProjection[face];
         for (const DrawItem& item : input.items) {
             if (!item.castsShadows || !item.mesh)
                 continue;
@@ -209,6 +276,7 @@ void ShadowMaps::render(const FrameInput& input, const ShadowPlan& shadow, gl::M
         }
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 } // namespace speculum::render::passes

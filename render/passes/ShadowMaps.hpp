@@ -8,6 +8,7 @@
 #include "render/gl/TextureCache.hpp"
 #include "render/plan/FramePlan.hpp"
 
+#include <array>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -21,6 +22,11 @@ struct ShadowMap {
     bool cube = false;
     int size = 0;
     int filterPcf = 1; // the PCF width the texture's filtering was last set for
+    // Per face (2D maps: [0]), the texels that may hold a caster's depth: everything outside holds the
+    // cleared depth. A redraw clears only these and the new casters' texels (on llvmpipe a clear writes
+    // every texel it covers). Unknown (the whole face) until the map is first drawn.
+    std::array<math::PixelRect, 6> drawnTexels{};
+    bool drawnTexelsKnown = false;
     gl::Texture depth;
     gl::Framebuffer framebuffer;
 };

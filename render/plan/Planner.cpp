@@ -313,14 +313,16 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     PlannedPass& mainPass = *std::find_if(plan.passes.begin(), plan.passes.end(),
                                           [](const PlannedPass& p) { return p.kind == PassKind::Main; });
     if (plan.preWeighted)
-        mainPass.reason += "; stencil mirrors draw their reflections weighted and add their surfaces over them";
+        mainPass.reason +=
+            "; stencil mirrors draw their reflections weighted and add their surfaces over them";
     PlannedPass composite;
     composite.kind = PassKind::Composite;
     if (plan.cameraBuffer == CameraBuffer::Srgb8 && viewport.outputTakesCameraBuffer) {
         plan.cameraBufferIsOutput = true;
         mainPass.reason += " (8-bit sRGB: the output's own buffer, encoded as it is written)";
-        plan.skipped.push_back({"output", "composite pass not needed: the frame is drawn straight into the "
-                                          "output, an 8-bit sRGB buffer, and no blend needs radiance above 1"});
+        plan.skipped.push_back({"output",
+                                "composite pass not needed: the frame is drawn straight into the "
+                                "output, an 8-bit sRGB buffer, and no blend needs radiance above 1"});
         planReflectedDetail(input, plan);
         declareWrites(input, plan);
         return plan;

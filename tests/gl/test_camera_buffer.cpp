@@ -106,10 +106,10 @@ protected:
         return largest;
     }
 
-    // An 8-bit sRGB target with depth and stencil, like the editor's viewport (RenderTarget::srgbDepthStencil),
-    // read back as the bytes it stores.
-    std::vector<unsigned char> drawSrgb(const FrameInput& input, const RenderOptions& options, int width = 320,
-                                        int height = 180) {
+    // An 8-bit sRGB target with depth and stencil, like the editor's viewport
+    // (RenderTarget::srgbDepthStencil), read back as the bytes it stores.
+    std::vector<unsigned char> drawSrgb(const FrameInput& input, const RenderOptions& options,
+                                        int width = 320, int height = 180) {
         gl::FramebufferBinding keep;
         gl::Texture color = gl::makeTexture();
         glBindTexture(GL_TEXTURE_2D, color.id());
@@ -121,7 +121,8 @@ protected:
         gl::Framebuffer framebuffer = gl::makeFramebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil.id());
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  depthStencil.id());
         EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
         // Garbage a missed pixel, or a depth or stencil test that trusted the caller's buffers, would show.
         glClearColor(0.3f, 0.9f, 0.6f, 0.0f);

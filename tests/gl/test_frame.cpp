@@ -126,5 +126,34 @@ TEST_F(GlTest, ConsecutiveFramesOfAnUnchangedDemoSceneAreIdentical) {
     }
 }
 
+// A redrawn shadow map clears only the texels its casters covered and cover now: a caster that moved (within
+// a face, or onto another face of a point light's cube) leaves no shadow behind, for every kind of light.
+// The frame matches a fresh renderer's, which has never drawn the old position.
+TEST_F(GlTest, AShadowCasterThatMovedLeavesNoShadowBehind) {
+    for (const LightType type : {LightType::Point, LightType::Spot, LightType::Directional}) {
+        FrameInput before = teapotScene(glm::dvec3(0.0));
+        before.items[1].castsShadows = false; // the teapot alone: its texels are a small part of the map
+        Light& light = before.lights[0];
+        light.type = type;
+        light.direction = glm::normalize(glm::dvec3(0.2, -1.0, -0.3));
+        light.spotAngle = 60.0;
+        FrameInput after = before;
+        // The teapot moves across the table, and (point light) from under the light to its side.
+        after.items[0].world =
+            glm::scale(glm::translate(glm::dmat4(1.0), {1.3, -0.5, -3.6}), glm::dvec3(0.25));
+        (void)renderImage(before, 160, 90);
+        const Image moved = renderImage(after, 160, 90);
+        auto fresh = Renderer::create();
+        ASSERT_TRUE(fresh.ok()) << fresh.error();
+        auto still = renderStill(**fresh, after, {160, 90, 1});
+        ASSERT_TRUE(still.ok()) << still.error();
+        const Image& expected = (*still).image;
+        double worst = 0.0;
+        for (std::size_t i = 0; i < moved.rgba.size(); ++i)
+            worst = std::max(worst, double(std::abs(moved.rgba[i] - expected.rgba[i])));
+        EXPECT_EQ(worst, 0.0) << "light type " << int(type);
+    }
+}
+
 } // namespace
 } // namespace speculum::test

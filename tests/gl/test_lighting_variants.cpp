@@ -142,6 +142,9 @@ TEST_F(LightingVariants, EveryKindOfLightWithAndWithoutShadowsDrawsTheSameImage)
     EXPECT_EQ(variantReport.plan.shadowedLights.size(), 3u);
     const std::string variant = passes::lightingVariant(input, variantReport.plan.shadowedLights);
     EXPECT_NE(variant.find("#define LIGHT_COUNT 4"), std::string::npos) << variant;
+    EXPECT_NE(variant.find("#define LIGHT_TYPE_1 2"), std::string::npos) << variant << "the spot";
+    EXPECT_NE(variant.find("#define LIGHT_TYPE_2 1"), std::string::npos) << variant << "the sun";
+
     EXPECT_NE(variant.find("#define LIGHT_CUBE_0 1"), std::string::npos) << variant;
     EXPECT_NE(variant.find("#define LIGHT_CUBE_1 0"), std::string::npos) << variant;
     EXPECT_NE(variant.find("#define LIGHT_SLOT_3 -1"), std::string::npos) << variant;

@@ -19,9 +19,9 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QProcess>
+#include <QScreen>
 #include <QTemporaryDir>
 #include <QTreeWidget>
-#include <QScreen>
 #include <QWindow>
 #include <gtest/gtest.h>
 #include <optional>
@@ -312,7 +312,8 @@ TEST_F(EditorOutput, TheFrameDrawnIntoTheViewportShowsOnScreenAsWritten) {
     const double scale = written.width() / double(m_window->viewport().width());
     // Away from the overlay (axis gizmo, pivot mark), which is drawn over the frame on screen only.
     for (const QPointF at : {QPointF(0.2, 0.8), QPointF(0.8, 0.6), QPointF(0.5, 0.15), QPointF(0.3, 0.45)}) {
-        const QPoint inViewport(int(at.x() * m_window->viewport().width()), int(at.y() * m_window->viewport().height()));
+        const QPoint inViewport(int(at.x() * m_window->viewport().width()),
+                                int(at.y() * m_window->viewport().height()));
         const Rgb w = patch(written, QPoint(int(inViewport.x() * scale), int(inViewport.y() * scale)), 2);
         const Rgb s = patch(shown, origin + inViewport, 2);
         EXPECT_LE(w.distance(s), 3.0) << "at " << at.x() << "," << at.y() << ": written " << w.r << "," << w.g

@@ -45,7 +45,8 @@ TEST(MirrorPlanner, AnOutputThatHoldsTheCameraBufferNeedsNoComposite) {
     EXPECT_TRUE(plan.cameraBufferIsOutput);
     for (const auto& p : plan.passes) {
         EXPECT_NE(p.kind, PassKind::Composite);
-        EXPECT_NE(p.writes.target, PassTarget::Output) << toString(p.kind) << ": the camera's buffer is the output";
+        EXPECT_NE(p.writes.target, PassTarget::Output)
+            << toString(p.kind) << ": the camera's buffer is the output";
     }
     EXPECT_NE(skipReason(plan, "output").find("composite pass not needed"), std::string::npos);
 
@@ -62,7 +63,8 @@ TEST(MirrorPlanner, AnOutputThatHoldsTheCameraBufferNeedsNoComposite) {
     EXPECT_FALSE(blended.cameraBufferIsOutput);
     EXPECT_FALSE(blended.preWeighted);
     EXPECT_EQ(blended.views[0].weight, glm::dvec3(1.0));
-    EXPECT_NE(blended.passes.back().reason.find("Fresnel"), std::string::npos) << blended.passes.back().reason;
+    EXPECT_NE(blended.passes.back().reason.find("Fresnel"), std::string::npos)
+        << blended.passes.back().reason;
     EXPECT_EQ(blended.passes.back().kind, PassKind::Composite);
     EXPECT_EQ(skipReason(blended, "output"), "");
 }
@@ -87,7 +89,8 @@ TEST(MirrorPlanner, NestedStencilMirrorsMultiplyTheirWeights) {
         glm::dvec3 expected(1.0);
         for (int v = static_cast<int>(&view - plan.views.data()); v >= 0;
              v = plan.views[static_cast<std::size_t>(v)].parent) {
-            const Mirror& m = input.mirrors[static_cast<std::size_t>(plan.views[static_cast<std::size_t>(v)].mirror)];
+            const Mirror& m =
+                input.mirrors[static_cast<std::size_t>(plan.views[static_cast<std::size_t>(v)].mirror)];
             expected *= m.reflectivity * m.tint;
         }
         EXPECT_LT(glm::length(view.weight - expected), 1e-12) << "view at depth " << view.depth;
