@@ -6,9 +6,12 @@
 // three.js r181's frame of the same file on the same GL. Prints a table and the targets.
 // The scenes' spheres have tessellation 16 (16 rings × 32 segments, 960 triangles): the peer draws any
 // tessellation below 32 as SphereGeometry(1, 32, 16), the same 960 triangles, so both draw the same mesh.
-// Run: build/release/benchmarks/speculum_bench_frame_cost [--frames N] [--size WxH]
+// Software GL on a shared machine drifts by 10–20 % from one minute to the next: each row runs speculum and
+// the peer alternately, --rounds times (default 3), and compares the medians of their rounds.
+// Run: build/release/benchmarks/speculum_bench_frame_cost [--frames N] [--size WxH] [--rounds N]
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -64,6 +67,12 @@ std::optional<double> peerTime(const fs::path& scene, int width, int height) {
     return std::strtod(out.c_str() + at + 3, nullptr);
 }
 
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n == 0 ? 0.0 : n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 struct Row {
     const char* file;
     bool animated;
@@ -74,12 +83,15 @@ struct Row {
 
 int main(int argc, char** argv) {
     int frames = 60;
+    int rounds = 3;
     std::string size = "1280x720";
     for (int i = 1; i + 1 < argc; ++i) {
         if (std::string(argv[i]) == "--frames")
             frames = std::atoi(argv[++i]);
         else if (std::string(argv[i]) == "--size")
             size = argv[++i];
+        else if (std::string(argv[i]) == "--rounds")
+            rounds = std::max(1, std::atoi(argv[++i]));
     }
     const int width = std::atoi(size.c_str());
     const int height = std::atoi(size.c_str() + size.find('x') + 1);
@@ -99,16 +111,29 @@ int main(int argc, char** argv) {
     for (const Row& row : rows) {
         const fs::path scene = source / row.file;
         const std::string animated = row.animated ? "--animated" : "";
-        const auto cheap = speculumTime(scene, animated, frames, size);
-        const auto before = speculumTime(scene, animated + " --half-float", frames, size);
+        std::vector<double> cheapMs, beforeMs, peerMsRounds;
+        std::optional<Timing> cheap, before;
+        for (int round = 0; round < rounds; ++round) {
+            cheap = speculumTime(scene, animated, frames, size);
+            before = speculumTime(scene, animated + " --half-float", frames, size);
+            if (!cheap || !before)
+                break;
+            cheapMs.push_back(cheap->medianMs);
+            beforeMs.push_back(before->medianMs);
+            // 0 when the peer is not installed or the row has no peer scene (a plain double: GCC 12 warns
+            // of an optional<double> read behind its own has_value() check under -O2).
+            const double peer = row.animated ? 0.0 : peerTime(scene, width, height).value_or(0.0);
+            if (peer > 0.0)
+                peerMsRounds.push_back(peer);
+        }
         if (!cheap || !before) {
             std::printf("%-26s speculum time failed\n", scene.filename().string().c_str());
             ++failures;
             continue;
         }
-        // 0 when the peer is not installed or the row has no peer scene (a plain double: GCC 12 warns of
-        // an optional<double> read behind its own has_value() check under -O2).
-        const double peerMs = row.animated ? 0.0 : peerTime(scene, width, height).value_or(0.0);
+        cheap->medianMs = median(cheapMs);
+        before->medianMs = median(beforeMs);
+        const double peerMs = peerMsRounds.empty() ? 0.0 : median(peerMsRounds);
         std::string name = scene.filename().string();
         name = name.substr(0, name.find(".speculum.json")) + (row.animated ? " (animated)" : "");
         std::printf("%-26s %-10s %8.2f ms %9.2f ms %7.2fx", name.c_str(), cheap->cameraBuffer.c_str(),
