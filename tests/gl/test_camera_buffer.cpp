@@ -68,26 +68,53 @@ FrameInput demo(const std::string& name) {
 
 class CameraBufferTest : public GlTest {
 protected:
-    // An 8-bit target like a window's, read back as bytes.
-    std::vector<unsigned char> draw8(const FrameInput& input, const RenderOptions& options, int width = 320,
-                                     int height = 180) {
+    // An 8-bit target like a window's (plain RGBA8, colour only), or with `srgbDepthStencil` one like the
+    // editor's viewport (sRGB with depth and stencil: RenderTarget::srgbDepthStencil), read back as the
+    // bytes it stores.
+    std::vector<unsigned char> drawTarget(const FrameInput& input, const RenderOptions& options,
+                                          bool srgbDepthStencil, int width, int height) {
         gl::FramebufferBinding keep;
         gl::Texture color = gl::makeTexture();
         glBindTexture(GL_TEXTURE_2D, color.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glTexImage2D(GL_TEXTURE_2D, 0, srgbDepthStencil ? GL_SRGB8_ALPHA8 : GL_RGBA8, width, height, 0,
+                     GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         glBindTexture(GL_TEXTURE_2D, 0);
         gl::Framebuffer framebuffer = gl::makeFramebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+        gl::Renderbuffer depthStencil = gl::makeRenderbuffer();
+        if (srgbDepthStencil) {
+            glBindRenderbuffer(GL_RENDERBUFFER, depthStencil.id());
+            glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                      depthStencil.id());
+        }
         EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-        glClearColor(0.3f, 0.9f, 0.6f, 0.0f); // garbage a missed pixel would show
-        glClear(GL_COLOR_BUFFER_BIT);
-        m_report = renderer().render(input, {framebuffer.id(), width, height, true}, options);
+        // Garbage a missed pixel, or a depth or stencil test that trusted the caller's buffers, would show.
+        glClearColor(0.3f, 0.9f, 0.6f, 0.0f);
+        glClearDepth(0.0);
+        glClearStencil(0x55);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        glClearDepth(1.0);
+        glClearStencil(0);
+        m_report =
+            renderer().render(input, {framebuffer.id(), width, height, true, srgbDepthStencil}, options);
         std::vector<unsigned char> pixels(std::size_t(width) * std::size_t(height) * 4);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
+        glBindTexture(GL_TEXTURE_2D, color.id());
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        glBindTexture(GL_TEXTURE_2D, 0);
         return pixels;
+    }
+
+    std::vector<unsigned char> draw8(const FrameInput& input, const RenderOptions& options, int width = 320,
+                                     int height = 180) {
+        return drawTarget(input, options, false, width, height);
+    }
+
+    std::vector<unsigned char> drawSrgb(const FrameInput& input, const RenderOptions& options,
+                                        int width = 320, int height = 180) {
+        return drawTarget(input, options, true, width, height);
     }
 
     // Both paths of the same frame; returns the largest difference of any channel, in 8-bit steps.
@@ -104,40 +131,6 @@ protected:
         for (std::size_t i = 3; i < cheap.size(); i += 4)
             EXPECT_EQ(cheap[i], 255) << label << ": every pixel written, alpha 1 (pixel " << i / 4 << ")";
         return largest;
-    }
-
-    // An 8-bit sRGB target with depth and stencil, like the editor's viewport
-    // (RenderTarget::srgbDepthStencil), read back as the bytes it stores.
-    std::vector<unsigned char> drawSrgb(const FrameInput& input, const RenderOptions& options,
-                                        int width = 320, int height = 180) {
-        gl::FramebufferBinding keep;
-        gl::Texture color = gl::makeTexture();
-        glBindTexture(GL_TEXTURE_2D, color.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        gl::Renderbuffer depthStencil = gl::makeRenderbuffer();
-        glBindRenderbuffer(GL_RENDERBUFFER, depthStencil.id());
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-        gl::Framebuffer framebuffer = gl::makeFramebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                  depthStencil.id());
-        EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-        // Garbage a missed pixel, or a depth or stencil test that trusted the caller's buffers, would show.
-        glClearColor(0.3f, 0.9f, 0.6f, 0.0f);
-        glClearDepth(0.0);
-        glClearStencil(0x55);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        glClearDepth(1.0);
-        glClearStencil(0);
-        m_report = renderer().render(input, {framebuffer.id(), width, height, true, true}, options);
-        std::vector<unsigned char> pixels(std::size_t(width) * std::size_t(height) * 4);
-        glBindTexture(GL_TEXTURE_2D, color.id());
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-        glBindTexture(GL_TEXTURE_2D, 0);
-        return pixels;
     }
 
     static int largestDifference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
