@@ -345,8 +345,6 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
 }
 
 bool composeSrgbTextureAsStored(unsigned framebuffer) {
-    if (!epoxy_has_gl_extension("GL_EXT_texture_sRGB_decode"))
-        return false;
     gl::FramebufferBinding keep;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     GLint type = GL_NONE;

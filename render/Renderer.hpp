@@ -95,9 +95,10 @@ private:
 // For a caller whose framebuffer's colour texture is 8-bit sRGB and is then drawn into a plain 8-bit window
 // by a compositor that does not expect sRGB (Qt's widget compositor samples it as an ordinary texture):
 // makes sampling that texture return the bytes it stores, already encoded (EXT_texture_sRGB_decode), so
-// the window shows what a plain 8-bit target would. Rendering into it still encodes. False where the GPU
-// lacks the extension or the colour attachment is not an sRGB texture: the caller should then not
-// declare the target RenderTarget::srgbDepthStencil.
+// the window shows what a plain 8-bit target would. Rendering into it still encodes. The caller checks
+// for the extension once per context (this runs every frame). False where the colour attachment is not an
+// sRGB texture, or the parameter is refused (no extension after all): the caller should then not declare
+// the target RenderTarget::srgbDepthStencil.
 bool composeSrgbTextureAsStored(unsigned framebuffer);
 
 } // namespace speculum::render

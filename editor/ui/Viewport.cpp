@@ -335,6 +335,8 @@ void Viewport::initializeGL() {
             Qt::UniqueConnection);
 
     const QSurfaceFormat format = context()->format();
+    // Asked once per context (Qt keeps the list): paintGL relies on it for every frame.
+    m_skipsSrgbDecode = context()->hasExtension(QByteArrayLiteral("GL_EXT_texture_sRGB_decode"));
     if (!context()->isValid() || format.version() < qMakePair(3, 3)) {
         m_rendererError = tr("This viewport needs OpenGL 3.3; the system provides OpenGL %1.%2.")
                               .arg(format.majorVersion())
@@ -414,7 +416,8 @@ void Viewport::paintGL() {
     // Qt draws the widget's texture into the window as it would a plain one: it must read the stored,
     // encoded bytes. Where it cannot, the frame goes through the renderer's own buffer and a copy.
     const QSurfaceFormat format = context()->format();
-    const bool composedAsStored = render::composeSrgbTextureAsStored(defaultFramebufferObject());
+    const bool composedAsStored =
+        m_skipsSrgbDecode && render::composeSrgbTextureAsStored(defaultFramebufferObject());
     target.srgbDepthStencil = textureFormat() == kSrgbTextureFormat && composedAsStored &&
                               format.depthBufferSize() >= 24 && format.stencilBufferSize() >= 8;
     render::RenderOptions options;

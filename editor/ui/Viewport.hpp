@@ -209,6 +209,7 @@ private:
     document::MeshLibrary& m_meshes; // kept across frames: the renderer keys GPU meshes on the handles
     std::unique_ptr<render::Renderer> m_renderer;
     QString m_rendererError;
+    bool m_skipsSrgbDecode = false; // the context has EXT_texture_sRGB_decode (initializeGL)
     view::ViewCamera m_view;
     QTimer m_tick;                // drives repaints while the animation plays over a scene that moves
     bool m_sceneAnimated = false; // document::sceneHasAnimation, kept up to date on every change

@@ -125,13 +125,18 @@ void tintPerfectMirror(const FrameInput& input, const MirrorView& view, const Vi
     glDepthFunc(GL_LESS);
 }
 
+// A rough mirror filtered over its lobe's footprint (GlossyFilter::Footprint), not one mip level.
+bool usesFootprint(const FrameInput& input, const Mirror& mirror) {
+    return mirror.roughness > 0.0 && input.settings.glossyFilter == GlossyFilter::Footprint;
+}
+
 // A rough mirror's filter (shaders/mirror.frag). Mip: a level of the reflection texture set by the
 // roughness alone, up to 1/64 of its resolution at roughness 1 (the blur of old). Footprint: the GGX
 // lobe's taps, spread by the distance to what the mirror reflects.
 void setGlossyUniforms(const FrameInput& input, const Mirror& mirror, const gl::Program& program,
                        int reflectionLevels, glm::ivec2 targetSize) {
     const double roughness = std::clamp(mirror.roughness, 0.0, 1.0);
-    const bool footprint = roughness > 0.0 && input.settings.glossyFilter == GlossyFilter::Footprint;
+    const bool footprint = usesFootprint(input, mirror);
     const double maxLod = std::max(reflectionLevels - 1, 0);
     program.set("uBlurLod", footprint ? 0.0f : float(std::min(6.0, maxLod) * roughness));
     program.set("uGlossyTaps", footprint ? glossyTapCount(input.settings) : 0);
@@ -143,8 +148,7 @@ void setGlossyUniforms(const FrameInput& input, const Mirror& mirror, const gl::
 
 // The draw variant of shaders/mirror.frag for this mirror: what it does not use is compiled out.
 std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fromTexture) {
-    const bool footprint =
-        fromTexture && mirror.roughness > 0.0 && input.settings.glossyFilter == GlossyFilter::Footprint;
+    const bool footprint = fromTexture && usesFootprint(input, mirror);
     auto define = [](const char* name, bool on) {
         return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
     };

@@ -323,11 +323,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         plan.skipped.push_back({"output",
                                 "composite pass not needed: the frame is drawn straight into the "
                                 "output, an 8-bit sRGB buffer, and no blend needs radiance above 1"});
-        planReflectedDetail(input, plan);
-        declareWrites(input, plan);
-        return plan;
-    }
-    if (plan.cameraBuffer == CameraBuffer::Srgb8) {
+    } else if (plan.cameraBuffer == CameraBuffer::Srgb8) {
         mainPass.reason += " (8-bit sRGB, encoded as it is written)";
         composite.reason =
             "copies the sRGB colour buffer to the output: no blend in it needs radiance above 1";
@@ -338,7 +334,8 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
                 ? "resolves the half-float colour buffer into the 8-bit output with sRGB encoding: " + blend
                 : "resolves the half-float colour buffer into the float output (linear)";
     }
-    plan.passes.push_back(std::move(composite));
+    if (!plan.cameraBufferIsOutput)
+        plan.passes.push_back(std::move(composite));
     planReflectedDetail(input, plan);
     declareWrites(input, plan);
     return plan;
