@@ -267,6 +267,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         report.cpuMs = msSince(frameStart);
         return report;
     }
+    r.shadows.boundLookups(options.boundShadowLookups);
     passes::MainPassContext context{
         r.meshProgram,          r.meshes,   r.textures, r.shadows, plan.shadows, r.dummyShadow2D.id(),
         r.dummyShadowCube.id(), r.unitPlane};

@@ -55,6 +55,10 @@ struct RenderOptions {
     // without the texture lookup; false: the shaders that read both from uniforms alone. Both draw the
     // same image; tests and benchmarks compare them.
     bool lightingVariants = true;
+    // A shadow lookup whose kernel cannot reach anything the map holds (ShadowMap::casterBounds) answers
+    // "lit" without reading it; false: every lookup filters the map. Both draw the same image; tests
+    // compare them.
+    bool boundShadowLookups = true;
     // Draws the frame at this fraction of the target's width and height (at least one pixel) and scales
     // it up to the whole target in the composite pass (bilinear): an interactive preview costs about the
     // square of it. In [1/8, 1]; 1 (the default) draws every pixel of the target. Ignored for tiles.

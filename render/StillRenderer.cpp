@@ -116,6 +116,7 @@ Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, con
                 options.tile = ImageTile{settings.width, settings.height, x0, y0};
             options.reuseMaps = settings.reuseMaps || step > 0;
             options.lightingVariants = settings.lightingVariants;
+            options.boundShadowLookups = settings.boundShadowLookups;
             FrameReport report = renderer.render(input, target, options);
             // A frame the renderer could not draw at all (its colour buffer did not fit) is no still.
             if (!report.error.empty())

@@ -22,8 +22,9 @@ struct StillSettings {
     // Largest tile side in pixels; 0: kDefaultTileSize. Never more than maxStillSize(). Tests set small
     // tiles to compare tiled and untiled stills.
     int tileSize = 0;
-    bool reuseMaps = true;        // RenderOptions::reuseMaps for the first sample (later ones always reuse)
-    bool lightingVariants = true; // RenderOptions::lightingVariants for every sample
+    bool reuseMaps = true;          // RenderOptions::reuseMaps for the first sample (later ones always reuse)
+    bool lightingVariants = true;   // RenderOptions::lightingVariants for every sample
+    bool boundShadowLookups = true; // RenderOptions::boundShadowLookups for every sample
 };
 
 // Reports progress in 0..1 with a short stage name; returning false cancels the render.

@@ -26,6 +26,8 @@ uniform vec2 uShadowNearFar[4];
 uniform float uShadowTexelSize[4];  // world texel size (at unit distance for perspective maps)
 uniform int uShadowMapSize[4];
 uniform int uShadowPcf[4];          // kernel width in texels, 1 = a single hard tap
+uniform vec3 uShadowCasterMin[4];   // camera-relative bounds of all the map holds (empty: min above max)
+uniform vec3 uShadowCasterMax[4];
 
 // Normal offset in texels: pushes the lookup point off the surface, so slopes don't shadow themselves.
 const float kNormalOffsetTexels = 1.5;
@@ -61,7 +63,37 @@ float cubeDepth(vec3 dir, vec2 nearFar) {
     return ndc * 0.5 + 0.5;
 }
 
-float shadowVisibility(int slot, bool cube, vec3 position, vec3 normal, vec3 lightPosition) {
+// True when the stretch from `from` along `path`, for t in [0, tEnd], stays out of the box [lo, hi] (slab
+// test). A NaN anywhere makes every comparison false: not out, so the caller filters as usual.
+bool missesBox(vec3 from, vec3 path, float tEnd, vec3 lo, vec3 hi) {
+    // A zero component would give 0·∞ on a slab's face; any tiny one gives the same verdict.
+    vec3 safe = mix(path, vec3(1e-30), lessThan(abs(path), vec3(1e-30)));
+    vec3 t0 = (lo - from) / safe;
+    vec3 t1 = (hi - from) / safe;
+    vec3 near = min(t0, t1);
+    vec3 far = max(t0, t1);
+    float enter = max(max(near.x, near.y), max(near.z, 0.0));
+    float leave = min(min(far.x, far.y), min(far.z, tEnd));
+    return enter > leave;
+}
+
+// Most of what a light reaches lies where no caster can shadow it: every texel the kernel reads there
+// holds the cleared depth, and the lookup's answer is 1 before it is made. A tap reads texels within a
+// few texels of the lookup point as seen from the light; everything the map holds, nearer the light
+// than that point, lies within `reach` of the line from it to the light (a cone narrowing towards the
+// light, a cylinder for a directional light). The test is exact, never an approximation: where the line
+// meets the casters' box widened by the reach, the kernel is filtered as usual.
+bool outOfCastersReach(int slot, bool cube, vec3 p, vec3 lightPosition, vec3 towardsLight, float texel) {
+    float reach = texel * (float(max(uShadowPcf[slot], 1)) + 4.0);
+    vec3 lo = uShadowCasterMin[slot] - reach;
+    vec3 hi = uShadowCasterMax[slot] + reach;
+    if (cube || uShadowPerspective[slot] != 0)
+        return missesBox(p, lightPosition - p, 1.0, lo, hi);
+    return missesBox(p, towardsLight, 3.0e38, lo, hi);
+}
+
+float shadowVisibility(int slot, bool cube, vec3 position, vec3 normal, vec3 lightPosition,
+                       vec3 towardsLight) {
     int kernel = max(uShadowPcf[slot], 1);
     float halfKernel = float(kernel - 1) * 0.5;
     vec3 toLight = lightPosition - position;
@@ -74,6 +106,15 @@ float shadowVisibility(int slot, bool cube, vec3 position, vec3 normal, vec3 lig
     float tanTheta = sqrt(1.0 - cosTheta * cosTheta) / cosTheta;
     vec3 p = position + normal * (kNormalOffsetTexels * texel) +
              (toLight / max(distanceToLight, 1e-6)) * (texel * (halfKernel + 1.0) * min(tanTheta, 8.0));
+    if (outOfCastersReach(slot, cube, p, lightPosition, towardsLight,
+                          cube ? length(p - lightPosition) * 2.0 / float(uShadowMapSize[slot]) : texel))
+        return 1.0;
+    // Most pixels are fully lit or fully shadowed: if the kernel's four corner taps agree, take their
+    // verdict and skip the rest (a shadow feature smaller than the kernel between them is missed). The
+    // corners' loop has a bound that is not a constant, so it is not unrolled: a SIMD rasterizer that runs
+    // every branch under a mask (llvmpipe) still leaves a loop that no pixel enters, and the taps of the
+    // pixels that answered above cost nothing where all of their neighbours did too.
+    int cornerTaps = kernel > 2 ? 4 : 0;
     float sum = 0.0;
     if (cube) {
         vec3 dir = p - lightPosition;
@@ -82,18 +123,14 @@ float shadowVisibility(int slot, bool cube, vec3 position, vec3 normal, vec3 lig
         vec3 u = normalize(cross(dir, axis));
         vec3 v = cross(normalize(dir), u);
         float step = length(dir) * 2.0 / float(uShadowMapSize[slot]);
-        // Most pixels are fully lit or fully shadowed: if the kernel's four corner taps agree, take their
-        // verdict and skip the rest (a shadow feature smaller than the kernel between them is missed).
-        if (kernel > 2) {
-            float corners = 0.0;
-            for (int c = 0; c < 4; ++c) {
-                vec2 o = vec2(c & 1, c >> 1) * float(kernel - 1) - halfKernel;
-                vec3 d = dir + (u * o.x + v * o.y) * step;
-                corners += sampleShadowCube(slot, d, cubeDepth(d, uShadowNearFar[slot]));
-            }
-            if (corners == 0.0 || corners == 4.0)
-                return corners * 0.25;
+        float corners = 0.0;
+        for (int c = 0; c < cornerTaps; ++c) {
+            vec2 o = vec2(c & 1, c >> 1) * float(kernel - 1) - halfKernel;
+            vec3 d = dir + (u * o.x + v * o.y) * step;
+            corners += sampleShadowCube(slot, d, cubeDepth(d, uShadowNearFar[slot]));
         }
+        if (cornerTaps > 0 && (corners == 0.0 || corners == 4.0))
+            return corners * 0.25;
         for (int j = 0; j < kernel; ++j)
             for (int i = 0; i < kernel; ++i) {
                 vec3 d = dir + (u * (float(i) - halfKernel) + v * (float(j) - halfKernel)) * step;
@@ -108,15 +145,13 @@ float shadowVisibility(int slot, bool cube, vec3 position, vec3 normal, vec3 lig
         // (directional) decide the lighting there.
         if (coord.z > 1.0) return 1.0;
         vec2 texelUv = vec2(1.0 / float(uShadowMapSize[slot]));
-        if (kernel > 2) {
-            float corners = 0.0;
-            for (int c = 0; c < 4; ++c) {
-                vec2 o = vec2(c & 1, c >> 1) * float(kernel - 1) - halfKernel;
-                corners += sampleShadow2D(slot, vec3(coord.xy + o * texelUv, coord.z));
-            }
-            if (corners == 0.0 || corners == 4.0)
-                return corners * 0.25;
+        float corners = 0.0;
+        for (int c = 0; c < cornerTaps; ++c) {
+            vec2 o = vec2(c & 1, c >> 1) * float(kernel - 1) - halfKernel;
+            corners += sampleShadow2D(slot, vec3(coord.xy + o * texelUv, coord.z));
         }
+        if (cornerTaps > 0 && (corners == 0.0 || corners == 4.0))
+            return corners * 0.25;
         for (int j = 0; j < kernel; ++j)
             for (int i = 0; i < kernel; ++i)
                 sum += sampleShadow2D(slot, vec3(coord.xy + vec2(float(i) - halfKernel, float(j) - halfKernel) * texelUv, coord.z));
@@ -162,7 +197,7 @@ void addLight(int i, int type, int slot, bool cube, vec3 position, vec3 normal, 
         return;
     float visibility = cone;
     if (slot >= 0 && uLightShadowSlot[i] >= 0)
-        visibility *= shadowVisibility(slot, cube, position, normal, uLightPosition[i]);
+        visibility *= shadowVisibility(slot, cube, position, normal, uLightPosition[i], toLight);
     // Light and eye exactly opposite have no halfway vector: the normal, as in the tracer.
     vec3 halfway = directionOf(toLight + viewDir);
     if (halfway == vec3(0.0))

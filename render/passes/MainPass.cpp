@@ -97,6 +97,13 @@ void setLights(const FrameInput& input, const glm::dmat4& toCameraRelative, cons
         p.set(indexed("uShadowTexelSize", slot), float(shadow.frustum.texelSize));
         p.set(indexed("uShadowMapSize", slot), map->size);
         p.set(indexed("uShadowPcf", slot), shadow.pcf);
+        // Camera-relative, as the positions the shader tests against it; empty: min above max.
+        const math::Box bounds = ctx.shadows.lookupBounds(*map);
+        const glm::dvec3 offset = glm::dvec3(toCameraRelative[3]);
+        p.set(indexed("uShadowCasterMin", slot),
+              bounds.empty() ? glm::vec3(1e30f) : finiteUniform(bounds.min + offset));
+        p.set(indexed("uShadowCasterMax", slot),
+              bounds.empty() ? glm::vec3(-1e30f) : finiteUniform(bounds.max + offset));
     }
     glActiveTexture(GL_TEXTURE0);
 }

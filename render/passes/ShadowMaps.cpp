@@ -194,6 +194,15 @@ std::size_t ShadowMaps::bytes(int lightIndex) const {
            gl::bytesPerTexel(GL_DEPTH_COMPONENT24);
 }
 
+math::Box ShadowMaps::lookupBounds(const ShadowMap& map) const {
+    if (m_boundLookups)
+        return map.casterBounds;
+    math::Box everything;
+    everything.min = glm::dvec3(-1e30);
+    everything.max = glm::dvec3(1e30);
+    return everything;
+}
+
 const ShadowMap* ShadowMaps::find(int lightIndex) const {
     auto it = m_maps.find(lightIndex);
     return it == m_maps.end() ? nullptr : &it->second;
@@ -226,6 +235,10 @@ void ShadowMaps::render(const FrameInput& input, const ShadowPlan& shadow, gl::M
 
     const int faces = frustum.cube ? 6 : 1;
     const std::vector<math::Box> casters = casterBoxes(input);
+    map.casterBounds = {};
+    for (const math::Box& box : casters)
+        if (!box.empty())
+            map.casterBounds.add(box);
     const math::PixelRect whole{0, 0, size, size};
     if (!map.drawnTexelsKnown)
         map.drawnTexels.fill(whole);

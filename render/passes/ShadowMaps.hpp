@@ -6,6 +6,7 @@
 #include "render/gl/Objects.hpp"
 #include "render/gl/Program.hpp"
 #include "render/gl/TextureCache.hpp"
+#include "render/math/Projection.hpp"
 #include "render/plan/FramePlan.hpp"
 
 #include <array>
@@ -27,6 +28,9 @@ struct ShadowMap {
     // every texel it covers). Unknown (the whole face) until the map is first drawn.
     std::array<math::PixelRect, 6> drawnTexels{};
     bool drawnTexelsKnown = false;
+    // World bounds of everything the map holds (its casters and the reflector, as last drawn): a lookup
+    // whose kernel reaches none of it reads only the cleared depth (shaders/lighting.glsl).
+    math::Box casterBounds;
     gl::Texture depth;
     gl::Framebuffer framebuffer;
 };
@@ -48,6 +52,10 @@ public:
                 const gl::Program& program, gl::TextureCache* textures = nullptr);
     // The map of a light rendered this frame or earlier, or nullptr.
     const ShadowMap* find(int lightIndex) const;
+    // The world box the lit shaders test a lookup against (ShadowMap::casterBounds), or, where lookups are
+    // not bounded (RenderOptions::boundShadowLookups false), one that holds everything.
+    math::Box lookupBounds(const ShadowMap& map) const;
+    void boundLookups(bool bounded) { m_boundLookups = bounded; }
     // GPU memory of the light's depth map (six faces for a cube), 0 if it has none.
     std::size_t bytes(int lightIndex) const;
     void clear() { m_maps.clear(); }
@@ -59,6 +67,7 @@ private:
     std::unordered_map<int, ShadowMap> m_maps;
     gl::SizeFallback m_fallback2D;   // spot and directional lights' maps
     gl::SizeFallback m_fallbackCube; // point lights' cube maps (six faces)
+    bool m_boundLookups = true;
 };
 
 } // namespace speculum::render::passes

@@ -186,5 +186,44 @@ TEST_F(LightingVariants, EachLightAddsItsLightInTheVariant) {
     EXPECT_GT(two, one + 0.01);
 }
 
+// A shadow lookup whose kernel cannot reach the box of what the map holds answers "lit" without reading
+// the map (RenderOptions::boundShadowLookups). Only the teapot and the box cast here, so most of the
+// floor, the wall and the mirrors' reflections take the shortcut, and the shadows' edges (PCF 1, 3 and 5,
+// every kind of map) lie right at its border: the image must be exactly the one every lookup filters.
+TEST_F(LightingVariants, ShadowLookupsBoundedByWhatTheMapHoldsDrawTheSameImageAsEveryLookupFiltered) {
+    const std::vector<std::vector<Light>> rigs = {
+        {light("Point", LightType::Point, {1.5, 3.0, 1.5}, true, 5)},
+        {light("Point", LightType::Point, {-0.4, 1.2, 1.0}, true, 1)},
+        {light("Spot", LightType::Spot, {-2.0, 3.5, 2.0}, true, 3)},
+        {light("Sun", LightType::Directional, {2.0, 4.0, 3.0}, true, 5)},
+        {light("Point", LightType::Point, {1.5, 3.0, 1.5}, true, 3),
+         light("Spot", LightType::Spot, {-2.0, 3.5, 2.0}, true, 5),
+         light("Sun", LightType::Directional, {2.0, 4.0, 3.0}, true, 1)}};
+    for (const std::vector<Light>& lights : rigs) {
+        SCOPED_TRACE(lights.front().name + " PCF " + std::to_string(lights.front().shadows.pcf) + ", " +
+                     std::to_string(lights.size()) + " light(s)");
+        FrameInput input = litScene(lights);
+        for (DrawItem& item : input.items)
+            item.castsShadows = item.name == "Teapot" || item.name == "Box";
+        StillSettings settings{kWidth, kHeight, 1};
+        settings.boundShadowLookups = false;
+        auto filtered = renderStill(renderer(), input, settings);
+        settings.boundShadowLookups = true;
+        auto bounded = renderStill(renderer(), input, settings);
+        for (Light& l : input.lights)
+            l.shadows.enabled = false;
+        auto unshadowed = renderStill(renderer(), input, settings);
+        ASSERT_TRUE(filtered.ok() && bounded.ok() && unshadowed.ok());
+        double largest = 0.0, shadowed = 0.0;
+        for (std::size_t i = 0; i < filtered->image.rgba.size(); ++i) {
+            largest = std::max(largest, double(std::abs(filtered->image.rgba[i] - bounded->image.rgba[i])));
+            shadowed =
+                std::max(shadowed, double(std::abs(filtered->image.rgba[i] - unshadowed->image.rgba[i])));
+        }
+        EXPECT_EQ(largest, 0.0);
+        EXPECT_GT(shadowed, 0.1) << "the casters must shadow something, or the test shows nothing";
+    }
+}
+
 } // namespace
 } // namespace speculum::test
