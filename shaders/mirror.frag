@@ -45,6 +45,13 @@ uniform mat4 uReflection;
 #else
 #define MIRROR_USES_FRESNEL (uFresnel != 0)
 #endif
+// 1: a sharp mirror (roughness 0): each pixel reads its own texel of the reflection, which a fetch gives
+// exactly (the pixel's centre is the texel's), without the filtered lookup's work.
+#ifdef MIRROR_SHARP
+#define MIRROR_READS_OWN_TEXEL (MIRROR_SHARP != 0)
+#else
+#define MIRROR_READS_OWN_TEXEL false
+#endif
 // 0: the mirror reflects everything (reflectivity 1), so its surface is never seen.
 #ifdef MIRROR_SURFACE
 #define MIRROR_SHOWS_SURFACE (MIRROR_SURFACE != 0)
@@ -119,8 +126,9 @@ void main() {
     float alpha = outputAlpha(vWorld);
     if (MIRROR_USES_TEXTURE) {
         vec2 uv = gl_FragCoord.xy / uTargetSize;
-        vec3 reflection = MIRROR_USES_GLOSSY_TAPS ? glossyReflection(uv, normal, viewDir)
-                                                  : textureLod(uReflectionTexture, uv, uBlurLod).rgb;
+        vec3 reflection = MIRROR_READS_OWN_TEXEL ? texelFetch(uReflectionTexture, ivec2(gl_FragCoord.xy), 0).rgb
+                          : MIRROR_USES_GLOSSY_TAPS ? glossyReflection(uv, normal, viewDir)
+                                                    : textureLod(uReflectionTexture, uv, uBlurLod).rgb;
         fragColor = vec4(storableRadiance((surface + weight * reflection) * uViewWeight), alpha);
         reflectionWeight = vec4(0.0);
     } else {

@@ -26,6 +26,12 @@ PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame) {
     bindWrites(pass.writes, frame);
     MirrorOcclusion& occlusion = frame.resources.occlusion;
     const bool wait = occlusion.mustWait(pass.view);
+    if (view.ownTarget && !wait) {
+        // Nothing to mark, and no need to know now: the surface counts the pixels instead, so the
+        // mirror's rectangle is rasterised once less.
+        occlusion.countAtSurface(pass.view);
+        return {true, "visible last frame, so its pixels are counted as its surface is drawn"};
+    }
     const bool marked =
         drawMirrorMask(frame.input, view, setupOf(view.parent, pass, frame), frame.resources.flatProgram,
                        frame.context, occlusion.query(pass.view), wait);
@@ -76,9 +82,17 @@ PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame) {
         levels = texture.levels();
     }
     bindWrites(pass.writes, frame);
+    MirrorOcclusion& occlusion = frame.resources.occlusion;
+    const bool counts = occlusion.countsAtSurface(pass.view);
+    if (counts)
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, occlusion.query(pass.view));
     drawMirrorSurface(frame.input, view, setupOf(view.parent, pass, frame), frame.resources.mirrorProgram,
                       frame.resources.flatProgram, frame.context, reflection, levels,
                       {frame.target.width, frame.target.height});
+    if (counts) {
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        occlusion.leftForLater(pass.view);
+    }
     return {};
 }
 

@@ -30,6 +30,7 @@ void MirrorOcclusion::beginFrame(const FramePlan& plan) {
     while (m_queries.size() < plan.views.size())
         m_queries.push_back(gl::makeQuery());
     m_keys.assign(plan.views.size(), 0);
+    m_atSurface.assign(plan.views.size(), false);
     for (std::size_t v = 0; v < plan.views.size(); ++v) {
         const MirrorView& view = plan.views[v];
         Hasher h; // parents come before their children in the plan
@@ -52,6 +53,14 @@ GLuint MirrorOcclusion::query(int view) const {
 void MirrorOcclusion::waited(int view, bool anyPassed) {
     m_passedBefore[m_keys[static_cast<std::size_t>(view)]] = anyPassed;
     ++m_waits;
+}
+
+void MirrorOcclusion::countAtSurface(int view) {
+    m_atSurface[static_cast<std::size_t>(view)] = true;
+}
+
+bool MirrorOcclusion::countsAtSurface(int view) const {
+    return m_atSurface[static_cast<std::size_t>(view)];
 }
 
 void MirrorOcclusion::leftForLater(int view) {

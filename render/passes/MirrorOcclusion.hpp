@@ -20,6 +20,10 @@ namespace speculum::render::passes {
 // frame, that no frame has seen yet, or whose result was not ready, is waited for, so a hidden mirror
 // costs nothing from the frame after it became hidden on.
 //
+// A texture mirror's mask only counts pixels (its reflection has a texture of its own): where it is not
+// waited for, it draws nothing, and the mirror's surface, which is depth-tested against the same scene
+// over the same pixels, counts them as it is drawn (countAtSurface).
+//
 // Views are told apart across frames by the chain of mirrors they are seen through.
 class MirrorOcclusion {
 public:
@@ -34,6 +38,10 @@ public:
     // The result of a test the frame waited for (or, with `anyPassed` unknown, one left for later).
     void waited(int view, bool anyPassed);
     void leftForLater(int view);
+    // The view's test is made by its surface's draw, not its mask's: asked by the mask, answered by the
+    // surface (which then leaves the result for later).
+    void countAtSurface(int view);
+    bool countsAtSurface(int view) const;
 
     // How many tests this frame waited for.
     int waits() const { return m_waits; }
@@ -41,6 +49,7 @@ public:
 private:
     std::vector<gl::Query> m_queries;                        // one per view of the frame
     std::vector<std::uint64_t> m_keys;                       // per view of the frame
+    std::vector<bool> m_atSurface;                           // per view of the frame
     std::unordered_map<std::uint64_t, bool> m_passedBefore;  // by view key: the last result known
     std::vector<std::pair<std::uint64_t, GLuint>> m_pending; // tests not waited for, and their queries
     int m_waits = 0;

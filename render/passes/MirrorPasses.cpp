@@ -153,7 +153,9 @@ std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fr
         return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
     };
     return define("MIRROR_FROM_TEXTURE", fromTexture) + define("MIRROR_GLOSSY_TAPS", footprint) +
-           define("MIRROR_FRESNEL", mirror.fresnel) + define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
+           define("MIRROR_FRESNEL", mirror.fresnel) +
+           define("MIRROR_SHARP", fromTexture && !(mirror.roughness > 0.0)) +
+           define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
 }
 
 } // namespace

@@ -51,9 +51,11 @@ PassWrites cameraWrites(const FrameInput& input, const FramePlan& plan, const Pl
         } else if (pass.kind == PassKind::Mirror) {
             drawInto(plan, pass.view, writes);
             if (view.ownTarget) {
-                // A fresh texture: cleared first, all of it when blurred lookups read around the mirror.
+                // A fresh texture, cleared whole: blurred lookups read around the mirror, and a scissored
+                // clear is slow on llvmpipe (Mesa clears a part of a buffer by drawing a quad through it;
+                // the whole buffer is a fill). The reflection itself is still drawn in the mirror's pixels.
                 writes.clear = true;
-                writes.clearWhole = blurred;
+                writes.clearWhole = true;
             } else {
                 writes.stencilEqual = view.stencilLevel; // inside the mask its MirrorMask marked
             }
