@@ -52,6 +52,14 @@ uniform mat4 uReflection;
 #else
 #define MIRROR_READS_OWN_TEXEL false
 #endif
+// 1: a sharp mirror whose weight is exactly 1 everywhere (reflectivity 1, white tint, no Fresnel, in a
+// view of weight 1): the pixel is its texel, already storable (every colour written into a reflection
+// texture was), so none of the arithmetic below runs: on llvmpipe it is a third of the surface's cost.
+#ifdef MIRROR_COPY
+#define MIRROR_COPIES_TEXEL (MIRROR_COPY != 0)
+#else
+#define MIRROR_COPIES_TEXEL false
+#endif
 // 0: the mirror reflects everything (reflectivity 1), so its surface is never seen.
 #ifdef MIRROR_SURFACE
 #define MIRROR_SHOWS_SURFACE (MIRROR_SURFACE != 0)
@@ -111,6 +119,11 @@ vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
 }
 
 void main() {
+    if (MIRROR_COPIES_TEXEL) {
+        fragColor = vec4(texelFetch(uReflectionTexture, ivec2(gl_FragCoord.xy), 0).rgb, outputAlpha(vWorld));
+        reflectionWeight = vec4(0.0);
+        return;
+    }
     vec3 normal = normalize(vNormal);
     vec3 viewDir = normalize(uEye - vWorld);
     float r = uReflectivity;

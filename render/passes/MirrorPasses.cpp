@@ -147,15 +147,19 @@ void setGlossyUniforms(const FrameInput& input, const Mirror& mirror, const gl::
 }
 
 // The draw variant of shaders/mirror.frag for this mirror: what it does not use is compiled out.
-std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fromTexture) {
+std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fromTexture,
+                          const glm::dvec3& viewWeight) {
     const bool footprint = fromTexture && usesFootprint(input, mirror);
+    const bool sharp = fromTexture && !(mirror.roughness > 0.0);
+    // Weight exactly 1 everywhere: the texel is the pixel.
+    const bool copy = sharp && !mirror.fresnel && mirror.reflectivity == 1.0 &&
+                      mirror.tint == glm::dvec3(1.0) && viewWeight == glm::dvec3(1.0);
     auto define = [](const char* name, bool on) {
         return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
     };
     return define("MIRROR_FROM_TEXTURE", fromTexture) + define("MIRROR_GLOSSY_TAPS", footprint) +
-           define("MIRROR_FRESNEL", mirror.fresnel) +
-           define("MIRROR_SHARP", fromTexture && !(mirror.roughness > 0.0)) +
-           define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
+           define("MIRROR_FRESNEL", mirror.fresnel) + define("MIRROR_SHARP", sharp) +
+           define("MIRROR_COPY", copy) + define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
 }
 
 } // namespace
@@ -171,7 +175,7 @@ void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const Vi
     }
     beginLitView(input, parent, surfaceProgram, context);
     setMaterial(mirror.hasMaterial ? mirror.material : Material{}, surfaceProgram, context,
-                mirrorDefines(input, mirror, view.ownTarget));
+                mirrorDefines(input, mirror, view.ownTarget, parent.weight));
     surfaceProgram.set("uReflectivity", float(mirror.reflectivity));
     surfaceProgram.set("uTint", glm::vec3(mirror.tint));
     surfaceProgram.set("uFresnel", mirror.fresnel ? 1 : 0);
