@@ -273,6 +273,8 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         r.dummyShadowCube.id(), r.unitPlane};
     context.depthOnlyProgram = &r.flatProgram;
     context.coarseItems = plan.coarseItems;
+    r.meshFacts.purge();
+    context.meshFacts = options.cullHiddenBackFaces ? &r.meshFacts : nullptr;
     // Every view the main pass draws (the camera's and each mirror's) draws the reflector with its map.
     context.drawReflector = [&r](const FrameInput& in, const passes::ViewSetup& view,
                                  passes::MainPassContext& c) { return r.reflector.drawSurface(in, view, c); };

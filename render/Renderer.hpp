@@ -59,6 +59,9 @@ struct RenderOptions {
     // "lit" without reading it; false: every lookup filters the map. Both draw the same image; tests
     // compare them.
     bool boundShadowLookups = true;
+    // The camera's and the mirrors' views cull the back faces of closed meshes they can never see inside
+    // (passes::hidesBackFaces); false: every face is drawn. Both draw the same image; tests compare them.
+    bool cullHiddenBackFaces = true;
     // Draws the frame at this fraction of the target's width and height (at least one pixel) and scales
     // it up to the whole target in the composite pass (bilinear): an interactive preview costs about the
     // square of it. In [1/8, 1]; 1 (the default) draws every pixel of the target. Ignored for tiles.

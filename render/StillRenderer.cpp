@@ -117,6 +117,7 @@ Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input, con
             options.reuseMaps = settings.reuseMaps || step > 0;
             options.lightingVariants = settings.lightingVariants;
             options.boundShadowLookups = settings.boundShadowLookups;
+            options.cullHiddenBackFaces = settings.cullHiddenBackFaces;
             FrameReport report = renderer.render(input, target, options);
             // A frame the renderer could not draw at all (its colour buffer did not fit) is no still.
             if (!report.error.empty())

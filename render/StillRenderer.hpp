@@ -25,6 +25,7 @@ struct StillSettings {
     bool reuseMaps = true;          // RenderOptions::reuseMaps for the first sample (later ones always reuse)
     bool lightingVariants = true;   // RenderOptions::lightingVariants for every sample
     bool boundShadowLookups = true; // RenderOptions::boundShadowLookups for every sample
+    bool cullHiddenBackFaces = true; // RenderOptions::cullHiddenBackFaces for every sample
 };
 
 // Reports progress in 0..1 with a short stage name; returning false cancels the render.

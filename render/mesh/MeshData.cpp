@@ -43,7 +43,7 @@ MeshHandle freezeMesh(MeshData&& mesh) {
 }
 
 bool isClosed(const MeshData& mesh) {
-    if (mesh.indices.empty())
+    if (mesh.indices.empty() || mesh.indices.size() > kMaxClosureCheckIndices)
         return false;
     // Vertices by position, on a grid a millionth of the mesh's size: seam and pole copies computed by
     // different sines (0 against −2e-16, or −0) are one point. A near-miss that falls across a grid line
@@ -84,7 +84,17 @@ bool isClosed(const MeshData& mesh) {
     for (const auto& [edge, count] : directed)
         if (!directed.contains((edge << 32) | (edge >> 32)))
             return false;
-    return true;
+    // Wound outwards: counter-clockwise seen from outside encloses a positive volume (the divergence
+    // theorem over the triangles' signed tetrahedra from the box's corner). Inside out, every face seen
+    // from outside is a back face.
+    double volume = 0.0;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::dvec3 a = glm::dvec3(mesh.positions[mesh.indices[t]]) - glm::dvec3(bounds.min);
+        const glm::dvec3 b = glm::dvec3(mesh.positions[mesh.indices[t + 1]]) - glm::dvec3(bounds.min);
+        const glm::dvec3 c = glm::dvec3(mesh.positions[mesh.indices[t + 2]]) - glm::dvec3(bounds.min);
+        volume += glm::dot(a, glm::cross(b, c));
+    }
+    return volume > 0.0;
 }
 
 } // namespace speculum::render

@@ -90,9 +90,12 @@ Bounds computeBounds(const MeshData& mesh);
 // simplified level (buildCoarseLevel) built once.
 MeshHandle freezeMesh(MeshData&& mesh);
 
-// Whether the mesh is a closed, consistently wound surface: every edge, by the positions of its end
-// points (vertices duplicated for normals or uvs count as one), is run once in each direction by exactly
-// two triangles. Seen from outside, such a mesh never shows a back face.
+// Whether the mesh is a closed, consistently and outward wound surface: every edge, by the positions of
+// its end points (vertices duplicated for normals or uvs count as one), is run once in each direction by
+// exactly two triangles, and its triangles enclose a positive volume. Seen from outside, such a mesh never
+// shows a back face. A mesh of more than kMaxClosureCheckIndices indices counts as open: the check's edge
+// table would cost hundreds of megabytes (open is the safe way to be wrong).
+inline constexpr std::size_t kMaxClosureCheckIndices = 3 * 1'000'000;
 bool isClosed(const MeshData& mesh);
 
 } // namespace speculum::render

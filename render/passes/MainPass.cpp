@@ -2,6 +2,7 @@
 
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
+#include "render/passes/EnvironmentMirrors.hpp"
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
@@ -268,6 +269,29 @@ bool outsideView(const Bounds& local, const glm::dmat4& world, const FrameInput&
 
 } // namespace
 
+// Wholly beyond the near plane, the eye is outside the mesh too. The far and side planes only take away
+// what lies behind its front.
+bool hidesBackFaces(const DrawItem& item, const FrameInput& input, const ViewSetup& view,
+                    const MainPassContext& ctx) {
+    if (!ctx.meshFacts || item.material.alphaMode != AlphaMode::Opaque)
+        return false;
+    const MeshFacts::Facts& facts = ctx.meshFacts->get(item.mesh);
+    if (!facts.closed)
+        return false;
+    const glm::dmat4 toClip =
+        view.viewProjection * math::cameraRelative(input.camera) * view.reflection * item.world;
+    const Bounds& b = facts.bounds;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                           (corner & 4) ? b.max.z : b.min.z);
+        const glm::dvec4 c = toClip * glm::dvec4(p, 1.0);
+        // With a margin for the GPU's single precision.
+        if (!(c.w > 0.0) || !(c.z + c.w > 1e-4 * c.w))
+            return false;
+    }
+    return true;
+}
+
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& ctx) {
     drawStencilMirrorDepths(input, view, ctx);
     const gl::Program& p = ctx.program;
@@ -276,14 +300,14 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
         const DrawItem& item = input.items[i];
         if (!item.mesh || outsideView(ctx.meshes.get(item.mesh).bounds, item.world, input, view))
             continue;
-        const bool cull = i < ctx.cullBackFaces.size() && ctx.cullBackFaces[i];
+        const bool cull =
+            (i < ctx.cullBackFaces.size() && ctx.cullBackFaces[i]) || hidesBackFaces(item, input, view, ctx);
         (cull ? glEnable : glDisable)(GL_CULL_FACE);
         setMaterial(item.material, p, ctx);
         const bool coarse = view.coarseDetail && i < ctx.coarseItems.size() && ctx.coarseItems[i];
         drawLitMesh(item.mesh, item.world, input, p, ctx, coarse ? gl::Detail::Coarse : gl::Detail::Full);
     }
-    if (!ctx.cullBackFaces.empty())
-        glDisable(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);
     for (std::size_t i = 0; i < input.mirrors.size(); ++i) {
         if ((i < view.skipMirror.size() && view.skipMirror[i]) ||
             outsideView(ctx.meshes.get(ctx.unitPlane).bounds, mirrorRectangle(input.mirrors[i]), input, view))

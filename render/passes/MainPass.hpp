@@ -25,6 +25,7 @@ inline constexpr int kNormalTextureUnit = 13;
 
 struct MainPassContext;
 struct ViewSetup;
+class MeshFacts;
 // Draws the curved reflector in a view instead of the main pass's plain material; returns false (having
 // changed nothing) when it cannot, and the main pass draws the material.
 using DrawReflector = std::function<bool(const FrameInput&, const ViewSetup&, MainPassContext&)>;
@@ -50,6 +51,9 @@ struct MainPassContext {
     // Per item (by index), true where the view can never see the item's back faces (a closed mesh seen from
     // outside): drawn with them culled. The environment pass sets it; empty draws every face.
     std::vector<bool> cullBackFaces;
+    // Where set, each view also culls the back faces of items it can never see them on (closed meshes of
+    // opaque materials wholly beyond its near plane); null: only cullBackFaces.
+    MeshFacts* meshFacts = nullptr;
     // Per item (by index), true where a view with ViewSetup::coarseDetail draws the item's simplified level
     // (FramePlan::coarseItems).
     std::vector<bool> coarseItems;
@@ -97,6 +101,12 @@ struct ViewSetup {
 // camera, lights, shadow maps.
 void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Program& program,
                   MainPassContext& context);
+
+// True when `view` can never see the item's back faces, so drawMainPass culls them (with
+// context.meshFacts set): a closed, outward-wound mesh (isClosed) of an opaque material lying wholly
+// beyond the view's near plane (the mirror's plane in a mirror's view), so no clip opens it.
+bool hidesBackFaces(const DrawItem& item, const FrameInput& input, const ViewSetup& view,
+                    const MainPassContext& context);
 
 // Draws every object with Blinn-Phong lighting and filtered shadows into the bound framebuffer, and the
 // mirrors that got no pass of their own as surfaces of their own material (they reflect nothing).

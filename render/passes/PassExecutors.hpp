@@ -36,6 +36,7 @@ struct FrameResources {
     gl::RenderTexture linear;
     std::vector<gl::RenderTexture> reflectionTextures; // texture-technique mirrors, one per nesting
     MirrorOcclusion occlusion;                         // the mirror masks' occlusion tests
+    MeshFacts meshFacts;      // closed meshes, whose back faces the camera's and mirrors' views cull
     gl::VertexArray emptyVao; // core profile needs a VAO bound even for attribute-less draws
     gl::Texture dummyShadow2D;
     gl::Texture dummyShadowCube;

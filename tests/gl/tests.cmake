@@ -1,7 +1,7 @@
 speculum_add_test(test_gl_shadows TIER gl
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_shadows.cpp ${CMAKE_CURRENT_LIST_DIR}/test_frame.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_mirrors.cpp ${CMAKE_CURRENT_LIST_DIR}/test_lighting_variants.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_mirror_occlusion.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/test_mirror_occlusion.cpp ${CMAKE_CURRENT_LIST_DIR}/test_back_face_culling.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_resolution_scale.cpp
     LIBS speculum_render speculum_document PkgConfig::OIIO)
 speculum_add_test(test_gl_reflector TIER gl

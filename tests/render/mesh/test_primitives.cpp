@@ -197,6 +197,17 @@ TEST(Closure, ClosedMeshesAreRecognised) {
     holed.indices.resize(holed.indices.size() - 3);
     EXPECT_FALSE(isClosed(holed));
     EXPECT_FALSE(isClosed(MeshData{}));
+    // Every triangle turned round: closed and consistent, but inside out, so seen from outside every face
+    // is a back face.
+    MeshData insideOut = makeSphere(12);
+    for (std::size_t t = 0; t + 2 < insideOut.indices.size(); t += 3)
+        std::swap(insideOut.indices[t], insideOut.indices[t + 1]);
+    EXPECT_FALSE(isClosed(insideOut));
+    // Moved far from the origin it is the same surface.
+    MeshData far = makeBox();
+    for (glm::vec3& p : far.positions)
+        p += glm::vec3(1e4f, -2e4f, 3e4f);
+    EXPECT_TRUE(isClosed(far));
 }
 
 TEST(MeshData, AFrozenMeshKnowsItsBoundsAndACopyForgetsThem) {

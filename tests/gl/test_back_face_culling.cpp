@@ -1,0 +1,157 @@
+// The camera's and the mirrors' views cull the back faces of closed meshes they can never see inside
+// (passes::hidesBackFaces). Culling must never change the image: not for a mesh the camera stands in, one
+// its near plane cuts, one that crosses a mirror's plane (the reflection's near plane), an inside-out
+// one, a masked one or one mirrored by a negative scale.
+#include "GlTest.hpp"
+#include "render/math/Projection.hpp"
+#include "render/mesh/Primitives.hpp"
+#include "render/passes/EnvironmentMirrors.hpp"
+#include "render/passes/MainPass.hpp"
+#include "render/passes/MirrorPasses.hpp"
+#include "render/passes/ShadowMaps.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace speculum::test {
+namespace {
+
+using namespace render;
+
+constexpr int kWidth = 240, kHeight = 160;
+
+MeshHandle sphere() {
+    static const MeshHandle mesh = std::make_shared<const MeshData>(makeSphere(16));
+    return mesh;
+}
+
+MeshHandle box() {
+    static const MeshHandle mesh = std::make_shared<const MeshData>(makeBox());
+    return mesh;
+}
+
+MeshHandle insideOutSphere() {
+    static const MeshHandle mesh = [] {
+        MeshData m = makeSphere(16);
+        for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3)
+            std::swap(m.indices[t], m.indices[t + 1]);
+        return std::make_shared<const MeshData>(std::move(m));
+    }();
+    return mesh;
+}
+
+DrawItem item(const std::string& name, const MeshHandle& mesh, glm::dvec3 at, glm::dvec3 scale,
+              glm::dvec3 color) {
+    DrawItem d{name, glm::scale(glm::translate(glm::dmat4(1.0), at), scale), mesh, {}, true};
+    d.material.color = color;
+    d.material.specular = 0.4;
+    return d;
+}
+
+Mirror mirror(const std::string& name, const glm::dmat4& world, glm::dvec2 size, MirrorTechnique technique) {
+    Mirror m;
+    m.name = name;
+    m.world = world;
+    m.size = size;
+    m.reflectivity = 0.8;
+    m.technique = technique;
+    return m;
+}
+
+// Closed meshes in every situation: above a floor mirror, half through it, cut by the camera's near plane,
+// inside out, mirrored, masked, and a room-sized box the camera stands in, all reflected in a floor and a
+// wall mirror.
+FrameInput scene(MirrorTechnique floorTechnique) {
+    FrameInput input;
+    input.settings.ambient = 0.2;
+    input.camera.position = {0.3, 1.4, 3.0};
+    input.camera.target = {0.0, 0.4, 0.0};
+    input.camera.near = 0.3;
+    input.camera.far = 40.0;
+    input.items = {item("Above", sphere(), {-0.8, 0.6, 0.0}, glm::dvec3(0.5), {0.8, 0.2, 0.1}),
+                   item("Through the floor", sphere(), {0.7, 0.0, 0.3}, glm::dvec3(0.45), {0.2, 0.7, 0.2}),
+                   item("At the eye", box(), {0.45, 1.35, 2.75}, glm::dvec3(0.2), {0.9, 0.8, 0.2}),
+                   item("Inside out", insideOutSphere(), {0.0, 0.5, -1.0}, glm::dvec3(0.4), {0.2, 0.3, 0.9}),
+                   item("Mirrored", box(), {-0.3, 0.3, 1.0}, glm::dvec3(-0.25, 0.25, 0.25), {0.7, 0.3, 0.8}),
+                   item("Masked", sphere(), {1.2, 0.9, -0.6}, glm::dvec3(0.35), {0.9, 0.9, 0.9}),
+                   item("Room", box(), {0.0, 2.0, 0.0}, glm::dvec3(6.0, 4.0, 6.0), {0.6, 0.6, 0.65})};
+    input.items[5].material.alphaMode = AlphaMode::Mask; // a cut-out could open it: never culled
+    input.mirrors = {mirror("Floor", glm::dmat4(1.0), {4.0, 4.0}, floorTechnique),
+                     mirror("Wall",
+                            glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, -1.9)),
+                                        glm::radians(90.0), glm::dvec3(1, 0, 0)),
+                            {2.0, 1.6}, MirrorTechnique::Stencil)};
+    Light lamp;
+    lamp.name = "Lamp";
+    lamp.position = {1.0, 3.0, 1.5};
+    lamp.intensity = 0.9;
+    input.lights = {lamp};
+    input.settings.mirrorDepth = 2;
+    return input;
+}
+
+class BackFaceCulling : public GlTest {};
+
+TEST_F(BackFaceCulling, NeverChangesTheImage) {
+    for (MirrorTechnique technique : {MirrorTechnique::Stencil, MirrorTechnique::Texture}) {
+        SCOPED_TRACE(technique == MirrorTechnique::Stencil ? "stencil floor" : "texture floor");
+        const FrameInput input = scene(technique);
+        StillSettings settings{kWidth, kHeight, 1};
+        settings.cullHiddenBackFaces = false;
+        auto every = renderStill(renderer(), input, settings);
+        settings.cullHiddenBackFaces = true;
+        auto culled = renderStill(renderer(), input, settings);
+        ASSERT_TRUE(every.ok() && culled.ok());
+        for (const std::string& warning : culled->firstSample.warnings)
+            ADD_FAILURE() << warning;
+        double largest = 0.0;
+        for (std::size_t i = 0; i < every->image.rgba.size(); ++i)
+            largest = std::max(largest, double(std::abs(every->image.rgba[i] - culled->image.rgba[i])));
+        EXPECT_EQ(largest, 0.0);
+    }
+}
+
+// Which items a view culls: the ones it can never see a back face of, and no other.
+TEST_F(BackFaceCulling, OnlyClosedOpaqueMeshesWhollyBeyondTheNearPlane) {
+    const FrameInput input = scene(MirrorTechnique::Texture);
+    gl::Program program;
+    gl::MeshCache meshes;
+    gl::TextureCache textures;
+    passes::ShadowMaps shadows;
+    const std::vector<ShadowPlan> shadowPlans;
+    passes::MeshFacts facts;
+    passes::MainPassContext context{program, meshes, textures, shadows, shadowPlans, 0, 0, box()};
+    context.meshFacts = &facts;
+
+    const FramePlan plan = planFrame(input, {}, PlanViewport{kWidth, kHeight});
+    const glm::dmat4 projection =
+        math::perspective(input.camera.fovY, double(kWidth) / kHeight, input.camera.near, input.camera.far);
+    auto culls = [&](int view) {
+        const passes::ViewSetup setup =
+            passes::viewSetup(input, plan, view, projection, {kWidth, kHeight}, false);
+        std::vector<std::string> names;
+        for (const DrawItem& d : input.items)
+            if (passes::hidesBackFaces(d, input, setup, context))
+                names.push_back(d.name);
+        return names;
+    };
+    EXPECT_EQ(culls(-1), (std::vector<std::string>{"Above", "Through the floor", "Mirrored"}));
+
+    // Reflected in the floor, with the oblique near plane on the floor: the sphere through it is cut.
+    int floor = -1;
+    for (std::size_t v = 0; v < plan.views.size(); ++v)
+        if (plan.views[v].parent < 0 &&
+            input.mirrors[static_cast<std::size_t>(plan.views[v].mirror)].name == "Floor")
+            floor = static_cast<int>(v);
+    ASSERT_GE(floor, 0);
+    EXPECT_EQ(culls(floor), (std::vector<std::string>{"Above", "At the eye", "Mirrored"}));
+
+    // Without the mesh facts nothing is culled.
+    context.meshFacts = nullptr;
+    EXPECT_TRUE(culls(-1).empty());
+}
+
+} // namespace
+} // namespace speculum::test
