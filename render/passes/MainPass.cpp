@@ -285,7 +285,9 @@ bool hidesBackFaces(const DrawItem& item, const FrameInput& input, const ViewSet
         const glm::dvec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
                            (corner & 4) ? b.max.z : b.min.z);
         const glm::dvec4 c = toClip * glm::dvec4(p, 1.0);
-        // With a margin for the GPU's single precision.
+        // With a margin for the GPU's single precision. An object resting on a mirror is not culled in
+        // its reflection: the reflection keeps only what lies kMirrorClipOffset beyond the plane, so its
+        // bottom is cut open.
         if (!(c.w > 0.0) || !(c.z + c.w > 1e-4 * c.w))
             return false;
     }
