@@ -60,8 +60,10 @@ struct RenderOptions {
     // compare them.
     bool boundShadowLookups = true;
     // The camera's and the mirrors' views cull the back faces of closed meshes they can never see inside
-    // (passes::hidesBackFaces); false: every face is drawn. Both draw the same image (tests compare them)
-    // but for a rare pixel on an edge where a back face won the depth tie with the front face it meets.
+    // (passes::hidesBackFaces), and draw those a near plane cuts only thinly back faces last
+    // (passes::drawsBackFacesLast); false: every face is drawn in order. Both draw the same image (tests
+    // compare them) but for a rare pixel on an edge where a back face won the depth tie with the front face
+    // it meets.
     bool cullHiddenBackFaces = true;
     // Draws the frame at this fraction of the target's width and height (at least one pixel) and scales
     // it up to the whole target in the composite pass (bilinear): an interactive preview costs about the

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
@@ -294,6 +295,42 @@ bool hidesBackFaces(const DrawItem& item, const FrameInput& input, const ViewSet
     return true;
 }
 
+namespace {
+// The deepest cut, as a share of the mesh's bounding box diagonal, through which drawing the back faces
+// after the front faces still pays: an object resting on a mirror, whose reflection's clip
+// (kMirrorClipOffset) takes off a sliver. Deeper (a camera standing in the mesh), the back faces show
+// over much of it and the second draw only repeats the vertex work.
+constexpr double kThinCut = 0.01;
+// Above this, a second draw's vertex work costs more than the shading it saves on a software rasterizer.
+constexpr GLsizei kMaxIndicesDrawnTwice = 3 * 65536;
+} // namespace
+
+bool drawsBackFacesLast(const DrawItem& item, const FrameInput& input, const ViewSetup& view,
+                        const MainPassContext& ctx) {
+    if (!ctx.meshFacts || item.material.alphaMode != AlphaMode::Opaque ||
+        ctx.meshes.get(item.mesh).indexCount > kMaxIndicesDrawnTwice)
+        return false;
+    const MeshFacts::Facts& facts = ctx.meshFacts->get(item.mesh);
+    if (!facts.closed)
+        return false;
+    const glm::dmat4 toClip =
+        view.viewProjection * math::cameraRelative(input.camera) * view.reflection * item.world;
+    // The near plane (z + w >= 0 in clip space) in the mesh's own coordinates.
+    const glm::dvec4 near = glm::row(toClip, 2) + glm::row(toClip, 3);
+    const double scale = glm::length(glm::dvec3(near));
+    const Bounds& b = facts.bounds;
+    const double diagonal = glm::length(b.max - b.min);
+    if (!(scale > 0.0) || !(diagonal > 0.0))
+        return false;
+    double deepest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                           (corner & 4) ? b.max.z : b.min.z);
+        deepest = std::min(deepest, (glm::dot(glm::dvec3(near), p) + near.w) / scale);
+    }
+    return deepest < 0.0 && deepest >= -kThinCut * diagonal && !hidesBackFaces(item, input, view, ctx);
+}
+
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& ctx) {
     drawStencilMirrorDepths(input, view, ctx);
     const gl::Program& p = ctx.program;
@@ -304,10 +341,19 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
             continue;
         const bool cull =
             (i < ctx.cullBackFaces.size() && ctx.cullBackFaces[i]) || hidesBackFaces(item, input, view, ctx);
-        (cull ? glEnable : glDisable)(GL_CULL_FACE);
+        // Opaque faces are depth-tested, so their order changes no pixel (but a depth tie); back faces
+        // drawn after the front faces fail that test but where a cut opens the mesh, and are not shaded.
+        const bool backLast = !cull && drawsBackFacesLast(item, input, view, ctx);
+        (cull || backLast ? glEnable : glDisable)(GL_CULL_FACE);
         setMaterial(item.material, p, ctx);
         const bool coarse = view.coarseDetail && i < ctx.coarseItems.size() && ctx.coarseItems[i];
-        drawLitMesh(item.mesh, item.world, input, p, ctx, coarse ? gl::Detail::Coarse : gl::Detail::Full);
+        const gl::Detail detail = coarse ? gl::Detail::Coarse : gl::Detail::Full;
+        drawLitMesh(item.mesh, item.world, input, p, ctx, detail);
+        if (backLast) {
+            glCullFace(GL_FRONT);
+            drawLitMesh(item.mesh, item.world, input, p, ctx, detail);
+            glCullFace(GL_BACK);
+        }
     }
     glDisable(GL_CULL_FACE);
     for (std::size_t i = 0; i < input.mirrors.size(); ++i) {

@@ -108,6 +108,14 @@ void beginLitView(const FrameInput& input, const ViewSetup& view, const gl::Prog
 bool hidesBackFaces(const DrawItem& item, const FrameInput& input, const ViewSetup& view,
                     const MainPassContext& context);
 
+// True when drawMainPass draws the item's front faces first and then its back faces (with
+// context.meshFacts set): a closed, outward-wound mesh of an opaque material (at most 65 536 triangles)
+// that the view's near plane cuts only thinly (at most 1% of its bounds' diagonal), as a mirror's clip
+// cuts an object resting on it. Its back faces show only through the cut; drawn last, they are not
+// shaded where the front faces hide them, and the image is the same but for a rare depth tie.
+bool drawsBackFacesLast(const DrawItem& item, const FrameInput& input, const ViewSetup& view,
+                        const MainPassContext& context);
+
 // Draws every object with Blinn-Phong lighting and filtered shadows into the bound framebuffer, and the
 // mirrors that got no pass of their own as surfaces of their own material (they reflect nothing).
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& context);

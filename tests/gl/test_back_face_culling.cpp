@@ -1,5 +1,6 @@
 // The camera's and the mirrors' views cull the back faces of closed meshes they can never see inside
-// (passes::hidesBackFaces). Culling must never change the image: not for a mesh the camera stands in, one
+// (passes::hidesBackFaces), and draw the back faces of those a near plane cuts only thinly after their front
+// faces (passes::drawsBackFacesLast). Neither may change the image: not for a mesh the camera stands in, one
 // its near plane cuts, one that crosses a mirror's plane (the reflection's near plane), an inside-out
 // one, a masked one or one mirrored by a negative scale.
 #include "GlTest.hpp"
@@ -114,6 +115,51 @@ TEST_F(BackFaceCulling, NeverChangesTheImage) {
     }
 }
 
+// A sphere the camera's near plane cuts a thin cap off: through the hole, its inside (back faces, drawn
+// after the front faces) hides the backdrop behind it, exactly as when every face is drawn in order.
+TEST_F(BackFaceCulling, BackFacesDrawnLastShowThroughTheCut) {
+    FrameInput input;
+    input.settings.ambient = 0.3;
+    input.camera.position = {0.0, 0.5, 3.0};
+    input.camera.target = {0.0, 0.5, 0.0};
+    input.camera.near = 0.3;
+    input.camera.far = 40.0;
+    const double radius = 0.3, cut = 0.005;
+    const double centre = input.camera.position.z - (input.camera.near + radius - cut);
+    input.items = {item("Cut open", sphere(), {0.0, 0.5, centre}, glm::dvec3(radius), {0.9, 0.5, 0.1}),
+                   item("Backdrop", box(), {0.0, 0.5, -2.0}, glm::dvec3(3.0, 3.0, 0.1), {0.1, 0.3, 0.9})};
+    Light lamp;
+    lamp.name = "Lamp";
+    lamp.position = {1.0, 3.0, 3.0};
+    input.lights = {lamp};
+
+    gl::Program program;
+    gl::MeshCache meshes;
+    gl::TextureCache textures;
+    passes::ShadowMaps shadows;
+    const std::vector<ShadowPlan> shadowPlans;
+    passes::MeshFacts facts;
+    passes::MainPassContext context{program, meshes, textures, shadows, shadowPlans, 0, 0, box()};
+    context.meshFacts = &facts;
+    const FramePlan plan = planFrame(input, {}, PlanViewport{kWidth, kHeight});
+    const glm::dmat4 projection =
+        math::perspective(input.camera.fovY, double(kWidth) / kHeight, input.camera.near, input.camera.far);
+    const passes::ViewSetup camera = passes::viewSetup(input, plan, -1, projection, {kWidth, kHeight}, false);
+    EXPECT_TRUE(passes::drawsBackFacesLast(input.items[0], input, camera, context));
+    EXPECT_FALSE(passes::hidesBackFaces(input.items[0], input, camera, context));
+
+    StillSettings settings{kWidth, kHeight, 1};
+    settings.cullHiddenBackFaces = false;
+    auto every = renderStill(renderer(), input, settings);
+    settings.cullHiddenBackFaces = true;
+    auto backLast = renderStill(renderer(), input, settings);
+    ASSERT_TRUE(every.ok() && backLast.ok());
+    double largest = 0.0;
+    for (std::size_t i = 0; i < every->image.rgba.size(); ++i)
+        largest = std::max(largest, double(std::abs(every->image.rgba[i] - backLast->image.rgba[i])));
+    EXPECT_EQ(largest, 0.0);
+}
+
 // Which items a view culls: the ones it can never see a back face of, and no other.
 TEST_F(BackFaceCulling, OnlyClosedOpaqueMeshesWhollyBeyondTheNearPlane) {
     const FrameInput input = scene(MirrorTechnique::Texture);
@@ -150,9 +196,26 @@ TEST_F(BackFaceCulling, OnlyClosedOpaqueMeshesWhollyBeyondTheNearPlane) {
     ASSERT_GE(floor, 0);
     EXPECT_EQ(culls(floor), (std::vector<std::string>{"Above", "At the eye", "Mirrored"}));
 
+    // Front faces first, back faces after them: the closed opaque meshes the near plane cuts only thinly.
+    // In the floor's reflection, the sphere resting on it (its clip takes off a sliver); not the one half
+    // through it nor the room box (the floor's plane cuts it deep), and in the camera's view neither the box
+    // at the eye nor the room the camera stands in.
+    auto backFacesLast = [&](int view) {
+        const passes::ViewSetup setup =
+            passes::viewSetup(input, plan, view, projection, {kWidth, kHeight}, false);
+        std::vector<std::string> names;
+        for (const DrawItem& d : input.items)
+            if (passes::drawsBackFacesLast(d, input, setup, context))
+                names.push_back(d.name);
+        return names;
+    };
+    EXPECT_TRUE(backFacesLast(-1).empty());
+    EXPECT_EQ(backFacesLast(floor), (std::vector<std::string>{"Resting"}));
+
     // Without the mesh facts nothing is culled.
     context.meshFacts = nullptr;
     EXPECT_TRUE(culls(-1).empty());
+    EXPECT_TRUE(backFacesLast(floor).empty());
 }
 
 } // namespace
