@@ -60,6 +60,13 @@ uniform mat4 uReflection;
 #else
 #define MIRROR_COPIES_TEXEL false
 #endif
+// 1: the texel to copy is stored sRGB-encoded, as the 8-bit buffer it is copied into stores it, and is
+// read as stored through the sampler (nearest, its decode skipped); texelFetch would decode it regardless.
+#ifdef MIRROR_COPY_ENCODED
+#define MIRROR_COPIES_ENCODED (MIRROR_COPY_ENCODED != 0)
+#else
+#define MIRROR_COPIES_ENCODED false
+#endif
 // 0: the mirror reflects everything (reflectivity 1), so its surface is never seen.
 #ifdef MIRROR_SURFACE
 #define MIRROR_SHOWS_SURFACE (MIRROR_SURFACE != 0)
@@ -120,7 +127,9 @@ vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
 
 void main() {
     if (MIRROR_COPIES_TEXEL) {
-        fragColor = vec4(texelFetch(uReflectionTexture, ivec2(gl_FragCoord.xy), 0).rgb, outputAlpha(vWorld));
+        vec3 texel = MIRROR_COPIES_ENCODED ? textureLod(uReflectionTexture, gl_FragCoord.xy / uTargetSize, 0.0).rgb
+                                           : texelFetch(uReflectionTexture, ivec2(gl_FragCoord.xy), 0).rgb;
+        fragColor = vec4(texel, outputAlpha(vWorld));
         reflectionWeight = vec4(0.0);
         return;
     }

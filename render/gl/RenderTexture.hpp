@@ -23,6 +23,7 @@ public:
     int width() const { return m_width; }
     int height() const { return m_height; }
     int levels() const { return m_levels; }
+    GLenum format() const { return m_format; } // the colour buffer's internal format
     // GPU memory of the colour mip chain and the depth-stencil buffer (0 before ensure()).
     std::size_t bytes() const;
 

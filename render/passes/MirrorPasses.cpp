@@ -146,20 +146,29 @@ void setGlossyUniforms(const FrameInput& input, const Mirror& mirror, const gl::
     program.set("uMaxLod", float(maxLod));
 }
 
+} // namespace
+
+bool surfaceCopiesReflection(const Mirror& mirror, const glm::dvec3& viewWeight) {
+    return !(mirror.roughness > 0.0) && !mirror.fresnel && mirror.reflectivity == 1.0 &&
+           mirror.tint == glm::dvec3(1.0) && viewWeight == glm::dvec3(1.0);
+}
+
+namespace {
+
 // The draw variant of shaders/mirror.frag for this mirror: what it does not use is compiled out.
 std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fromTexture,
-                          const glm::dvec3& viewWeight) {
+                          const glm::dvec3& viewWeight, bool encoded) {
     const bool footprint = fromTexture && usesFootprint(input, mirror);
     const bool sharp = fromTexture && !(mirror.roughness > 0.0);
     // Weight exactly 1 everywhere: the texel is the pixel.
-    const bool copy = sharp && !mirror.fresnel && mirror.reflectivity == 1.0 &&
-                      mirror.tint == glm::dvec3(1.0) && viewWeight == glm::dvec3(1.0);
+    const bool copy = fromTexture && surfaceCopiesReflection(mirror, viewWeight);
     auto define = [](const char* name, bool on) {
         return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
     };
     return define("MIRROR_FROM_TEXTURE", fromTexture) + define("MIRROR_GLOSSY_TAPS", footprint) +
            define("MIRROR_FRESNEL", mirror.fresnel) + define("MIRROR_SHARP", sharp) +
-           define("MIRROR_COPY", copy) + define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
+           define("MIRROR_COPY", copy) + define("MIRROR_COPY_ENCODED", copy && encoded) +
+           define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
 }
 
 } // namespace
@@ -167,7 +176,7 @@ std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fr
 void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
                        const gl::Program& surfaceProgram, const gl::Program& flatProgram,
                        MainPassContext& context, GLuint reflectionTexture, int reflectionLevels,
-                       glm::ivec2 targetSize) {
+                       glm::ivec2 targetSize, bool reflectionEncoded) {
     const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
     if (!view.ownTarget && mirror.reflectivity >= 1.0) {
         tintPerfectMirror(input, view, parent, flatProgram, context);
@@ -175,7 +184,7 @@ void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const Vi
     }
     beginLitView(input, parent, surfaceProgram, context);
     setMaterial(mirror.hasMaterial ? mirror.material : Material{}, surfaceProgram, context,
-                mirrorDefines(input, mirror, view.ownTarget, parent.weight));
+                mirrorDefines(input, mirror, view.ownTarget, parent.weight, reflectionEncoded));
     surfaceProgram.set("uReflectivity", float(mirror.reflectivity));
     surfaceProgram.set("uTint", glm::vec3(mirror.tint));
     surfaceProgram.set("uFresnel", mirror.fresnel ? 1 : 0);

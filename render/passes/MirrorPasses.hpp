@@ -25,10 +25,16 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
 // Step 3: the mirror's own surface over its reflection, in the parent's view (see shaders/mirror.frag);
 // stencil views also step their pixels back to the parent's stencil level and restore the mirror's depth.
 // A perfect stencil mirror (reflectivity 1) has no surface of its own to shade: flatProgram only tints.
+// `reflectionEncoded`: the texture holds the sRGB-encoded bytes a copying surface (surfaceCopiesReflection)
+// writes as they are, read through nearest filtering with the decode skipped.
 void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
                        const gl::Program& surfaceProgram, const gl::Program& flatProgram,
                        MainPassContext& context, GLuint reflectionTexture, int reflectionLevels,
-                       glm::ivec2 targetSize);
+                       glm::ivec2 targetSize, bool reflectionEncoded = false);
+
+// True when a texture mirror's surface is its reflection, texel for texel (shaders/mirror.frag's
+// MIRROR_COPY): sharp, reflectivity 1, a white tint and no Fresnel, in a view of weight 1.
+bool surfaceCopiesReflection(const Mirror& mirror, const glm::dvec3& viewWeight);
 
 // Scissor to a view's pixels.
 void scissorTo(const math::PixelRect& rect);

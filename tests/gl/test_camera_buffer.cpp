@@ -7,6 +7,7 @@
 #include "GlTest.hpp"
 #include "editor/document/ProjectFile.hpp"
 #include "editor/document/Snapshot.hpp"
+#include "render/gl/Memory.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/mesh/Primitives.hpp"
 
@@ -174,6 +175,35 @@ TEST_F(CameraBufferTest, TextureMirrorsAndPerfectStencilMirrorsNeedNoHalfFloat) 
                                    CameraBuffer::Srgb8, "perfect stencil mirror"),
               1);
     EXPECT_EQ(m_report.countRan(PassKind::Mirror), 1u);
+}
+
+// A texture mirror whose surface is its reflection (sharp, reflectivity 1, white, no Fresnel) keeps the
+// reflection in 8-bit sRGB, drawn with the camera buffer's own encoding, and copies it as stored: the same
+// image within 8-bit rounding, and half the colour bytes of the half-float texture.
+TEST_F(CameraBufferTest, ACopiedTextureMirrorKeepsItsReflectionInEightBitSrgb) {
+    const FrameInput input = mirrorScene(MirrorTechnique::Texture, 1.0, glm::dvec3(1.0));
+    EXPECT_LE(compareWithHalfFloat(input, CameraBuffer::Srgb8, "copied texture mirror"), 1);
+    ASSERT_EQ(m_report.countRan(PassKind::Mirror), 1u) << skips();
+    const std::size_t encodedBytes = m_report.memory.mirrors;
+    bool said = false;
+    for (const PassRun& run : m_report.ran)
+        said = said || run.outcome.find("8-bit sRGB reflection texture") != std::string::npos;
+    EXPECT_TRUE(said) << skips();
+
+    RenderOptions exact;
+    exact.halfFloatCameraBuffer = true;
+    draw8(input, exact);
+    const std::size_t halfFloatBytes = m_report.memory.mirrors;
+    const int levels = 1 + int(std::floor(std::log2(320.0)));
+    EXPECT_EQ(halfFloatBytes - encodedBytes, gl::mipChainTexels(320, 180, levels) * 4)
+        << "4 bytes a texel instead of 8; the same depth and stencil";
+
+    // Not where the surface does more than copy: a tinted mirror's reflection stays half float.
+    draw8(mirrorScene(MirrorTechnique::Texture, 1.0, {0.9, 0.8, 1.0}), {});
+    EXPECT_EQ(m_report.plan.cameraBuffer, CameraBuffer::Srgb8);
+    EXPECT_EQ(m_report.memory.mirrors, halfFloatBytes);
+    for (const PassRun& run : m_report.ran)
+        EXPECT_EQ(run.outcome.find("8-bit sRGB"), std::string::npos) << run.outcome;
 }
 
 // A stencil mirror that keeps part of its reflection (reflectivity, tint) draws it pre-weighted, so the
