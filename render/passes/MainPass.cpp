@@ -243,6 +243,16 @@ void drawStencilMirrorDepths(const FrameInput& input, const ViewSetup& view, con
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+// Object (local) coordinates to the view's clip space.
+glm::dmat4 toClipOf(const glm::dmat4& world, const FrameInput& input, const ViewSetup& view) {
+    return view.viewProjection * math::cameraRelative(input.camera) * view.reflection * world;
+}
+
+glm::dvec3 boundsCorner(const Bounds& b, int corner) {
+    return {(corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+            (corner & 4) ? b.max.z : b.min.z};
+}
+
 // True when no part of the box can show in the view: its eight corners all lie outside one side of the
 // view's clip volume (narrowed to its pixels). Each side is a half-space in clip coordinates, so the test
 // holds for corners behind the eye too; a box that straddles a corner of the frustum is kept.
@@ -250,14 +260,11 @@ bool outsideView(const Bounds& local, const glm::dmat4& world, const FrameInput&
                  const ViewSetup& view) {
     if (!view.cullOutside)
         return false;
-    const glm::dmat4 toClip =
-        view.viewProjection * math::cameraRelative(input.camera) * view.reflection * world;
+    const glm::dmat4 toClip = toClipOf(world, input, view);
     const glm::dvec4& r = view.ndcBounds;
     int outside[6] = {0, 0, 0, 0, 0, 0};
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
-                           (corner & 4) ? local.max.z : local.min.z);
-        const glm::dvec4 c = toClip * glm::dvec4(p, 1.0);
+        const glm::dvec4 c = toClip * glm::dvec4(boundsCorner(local, corner), 1.0);
         outside[0] += c.x < r.x * c.w;
         outside[1] += c.x > r.z * c.w;
         outside[2] += c.y < r.y * c.w;
@@ -268,24 +275,35 @@ bool outsideView(const Bounds& local, const glm::dmat4& world, const FrameInput&
     return std::any_of(std::begin(outside), std::end(outside), [](int n) { return n == 8; });
 }
 
+// The facts of the item's mesh where the view may cull or reorder its back faces: a closed, outward-wound
+// mesh of an opaque material (with context.meshFacts set); null otherwise.
+const MeshFacts::Facts* closedOpaqueFacts(const DrawItem& item, const MainPassContext& ctx) {
+    if (!ctx.meshFacts || item.material.alphaMode != AlphaMode::Opaque)
+        return nullptr;
+    const MeshFacts::Facts& facts = ctx.meshFacts->get(item.mesh);
+    return facts.closed ? &facts : nullptr;
+}
+
+// The deepest cut, as a share of the mesh's bounding box diagonal, through which drawing the back faces
+// after the front faces still pays: an object resting on a mirror, whose reflection's clip
+// (kMirrorClipOffset) takes off a sliver. Deeper (a camera standing in the mesh), the back faces show
+// over much of it and the second draw only repeats the vertex work.
+constexpr double kThinCut = 0.01;
+// Above this, a second draw's vertex work costs more than the shading it saves on a software rasterizer.
+constexpr GLsizei kMaxIndicesDrawnTwice = 3 * 65536;
+
 } // namespace
 
 // Wholly beyond the near plane, the eye is outside the mesh too. The far and side planes only take away
 // what lies behind its front.
 bool hidesBackFaces(const DrawItem& item, const FrameInput& input, const ViewSetup& view,
                     const MainPassContext& ctx) {
-    if (!ctx.meshFacts || item.material.alphaMode != AlphaMode::Opaque)
+    const MeshFacts::Facts* facts = closedOpaqueFacts(item, ctx);
+    if (!facts)
         return false;
-    const MeshFacts::Facts& facts = ctx.meshFacts->get(item.mesh);
-    if (!facts.closed)
-        return false;
-    const glm::dmat4 toClip =
-        view.viewProjection * math::cameraRelative(input.camera) * view.reflection * item.world;
-    const Bounds& b = facts.bounds;
+    const glm::dmat4 toClip = toClipOf(item.world, input, view);
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                           (corner & 4) ? b.max.z : b.min.z);
-        const glm::dvec4 c = toClip * glm::dvec4(p, 1.0);
+        const glm::dvec4 c = toClip * glm::dvec4(boundsCorner(facts->bounds, corner), 1.0);
         // With a margin for the GPU's single precision. An object resting on a mirror is not culled in
         // its reflection: the reflection keeps only what lies kMirrorClipOffset beyond the plane, so its
         // bottom is cut open.
@@ -295,39 +313,22 @@ bool hidesBackFaces(const DrawItem& item, const FrameInput& input, const ViewSet
     return true;
 }
 
-namespace {
-// The deepest cut, as a share of the mesh's bounding box diagonal, through which drawing the back faces
-// after the front faces still pays: an object resting on a mirror, whose reflection's clip
-// (kMirrorClipOffset) takes off a sliver. Deeper (a camera standing in the mesh), the back faces show
-// over much of it and the second draw only repeats the vertex work.
-constexpr double kThinCut = 0.01;
-// Above this, a second draw's vertex work costs more than the shading it saves on a software rasterizer.
-constexpr GLsizei kMaxIndicesDrawnTwice = 3 * 65536;
-} // namespace
-
 bool drawsBackFacesLast(const DrawItem& item, const FrameInput& input, const ViewSetup& view,
                         const MainPassContext& ctx) {
-    if (!ctx.meshFacts || item.material.alphaMode != AlphaMode::Opaque ||
-        ctx.meshes.get(item.mesh).indexCount > kMaxIndicesDrawnTwice)
+    const MeshFacts::Facts* facts = closedOpaqueFacts(item, ctx);
+    if (!facts || ctx.meshes.get(item.mesh).indexCount > kMaxIndicesDrawnTwice)
         return false;
-    const MeshFacts::Facts& facts = ctx.meshFacts->get(item.mesh);
-    if (!facts.closed)
-        return false;
-    const glm::dmat4 toClip =
-        view.viewProjection * math::cameraRelative(input.camera) * view.reflection * item.world;
     // The near plane (z + w >= 0 in clip space) in the mesh's own coordinates.
+    const glm::dmat4 toClip = toClipOf(item.world, input, view);
     const glm::dvec4 near = glm::row(toClip, 2) + glm::row(toClip, 3);
     const double scale = glm::length(glm::dvec3(near));
-    const Bounds& b = facts.bounds;
-    const double diagonal = glm::length(b.max - b.min);
+    const double diagonal = glm::length(facts->bounds.max - facts->bounds.min);
     if (!(scale > 0.0) || !(diagonal > 0.0))
         return false;
     double deepest = 0.0;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                           (corner & 4) ? b.max.z : b.min.z);
-        deepest = std::min(deepest, (glm::dot(glm::dvec3(near), p) + near.w) / scale);
-    }
+    for (int corner = 0; corner < 8; ++corner)
+        deepest = std::min(
+            deepest, (glm::dot(glm::dvec3(near), boundsCorner(facts->bounds, corner)) + near.w) / scale);
     return deepest < 0.0 && deepest >= -kThinCut * diagonal && !hidesBackFaces(item, input, view, ctx);
 }
 

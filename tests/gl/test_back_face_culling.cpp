@@ -94,24 +94,43 @@ FrameInput scene(MirrorTechnique floorTechnique) {
     return input;
 }
 
-class BackFaceCulling : public GlTest {};
+// What the main pass needs to ask which faces a view draws, without drawing.
+struct DrawContext {
+    gl::Program program;
+    gl::MeshCache meshes;
+    gl::TextureCache textures;
+    passes::ShadowMaps shadows;
+    const std::vector<ShadowPlan> shadowPlans;
+    passes::MeshFacts facts;
+    passes::MainPassContext context{program, meshes, textures, shadows, shadowPlans, 0, 0, box()};
+    DrawContext() { context.meshFacts = &facts; }
+};
 
-TEST_F(BackFaceCulling, NeverChangesTheImage) {
-    for (MirrorTechnique technique : {MirrorTechnique::Stencil, MirrorTechnique::Texture}) {
-        SCOPED_TRACE(technique == MirrorTechnique::Stencil ? "stencil floor" : "texture floor");
-        const FrameInput input = scene(technique);
+class BackFaceCulling : public GlTest {
+protected:
+    // The largest difference of any channel between the still drawn with every face in order and the one
+    // drawn with back faces culled or drawn last; -1 when either failed.
+    double largestDifference(const FrameInput& input) {
         StillSettings settings{kWidth, kHeight, 1};
         settings.cullHiddenBackFaces = false;
         auto every = renderStill(renderer(), input, settings);
         settings.cullHiddenBackFaces = true;
         auto culled = renderStill(renderer(), input, settings);
-        ASSERT_TRUE(every.ok() && culled.ok());
+        if (!every.ok() || !culled.ok())
+            return -1.0;
         for (const std::string& warning : culled->firstSample.warnings)
             ADD_FAILURE() << warning;
         double largest = 0.0;
         for (std::size_t i = 0; i < every->image.rgba.size(); ++i)
             largest = std::max(largest, double(std::abs(every->image.rgba[i] - culled->image.rgba[i])));
-        EXPECT_EQ(largest, 0.0);
+        return largest;
+    }
+};
+
+TEST_F(BackFaceCulling, NeverChangesTheImage) {
+    for (MirrorTechnique technique : {MirrorTechnique::Stencil, MirrorTechnique::Texture}) {
+        SCOPED_TRACE(technique == MirrorTechnique::Stencil ? "stencil floor" : "texture floor");
+        EXPECT_EQ(largestDifference(scene(technique)), 0.0);
     }
 }
 
@@ -133,57 +152,39 @@ TEST_F(BackFaceCulling, BackFacesDrawnLastShowThroughTheCut) {
     lamp.position = {1.0, 3.0, 3.0};
     input.lights = {lamp};
 
-    gl::Program program;
-    gl::MeshCache meshes;
-    gl::TextureCache textures;
-    passes::ShadowMaps shadows;
-    const std::vector<ShadowPlan> shadowPlans;
-    passes::MeshFacts facts;
-    passes::MainPassContext context{program, meshes, textures, shadows, shadowPlans, 0, 0, box()};
-    context.meshFacts = &facts;
+    DrawContext draw;
     const FramePlan plan = planFrame(input, {}, PlanViewport{kWidth, kHeight});
     const glm::dmat4 projection =
         math::perspective(input.camera.fovY, double(kWidth) / kHeight, input.camera.near, input.camera.far);
     const passes::ViewSetup camera = passes::viewSetup(input, plan, -1, projection, {kWidth, kHeight}, false);
-    EXPECT_TRUE(passes::drawsBackFacesLast(input.items[0], input, camera, context));
-    EXPECT_FALSE(passes::hidesBackFaces(input.items[0], input, camera, context));
+    EXPECT_TRUE(passes::drawsBackFacesLast(input.items[0], input, camera, draw.context));
+    EXPECT_FALSE(passes::hidesBackFaces(input.items[0], input, camera, draw.context));
 
-    StillSettings settings{kWidth, kHeight, 1};
-    settings.cullHiddenBackFaces = false;
-    auto every = renderStill(renderer(), input, settings);
-    settings.cullHiddenBackFaces = true;
-    auto backLast = renderStill(renderer(), input, settings);
-    ASSERT_TRUE(every.ok() && backLast.ok());
-    double largest = 0.0;
-    for (std::size_t i = 0; i < every->image.rgba.size(); ++i)
-        largest = std::max(largest, double(std::abs(every->image.rgba[i] - backLast->image.rgba[i])));
-    EXPECT_EQ(largest, 0.0);
+    EXPECT_EQ(largestDifference(input), 0.0);
 }
 
 // Which items a view culls: the ones it can never see a back face of, and no other.
 TEST_F(BackFaceCulling, OnlyClosedOpaqueMeshesWhollyBeyondTheNearPlane) {
     const FrameInput input = scene(MirrorTechnique::Texture);
-    gl::Program program;
-    gl::MeshCache meshes;
-    gl::TextureCache textures;
-    passes::ShadowMaps shadows;
-    const std::vector<ShadowPlan> shadowPlans;
-    passes::MeshFacts facts;
-    passes::MainPassContext context{program, meshes, textures, shadows, shadowPlans, 0, 0, box()};
-    context.meshFacts = &facts;
+    DrawContext draw;
+    passes::MainPassContext& context = draw.context;
 
     const FramePlan plan = planFrame(input, {}, PlanViewport{kWidth, kHeight});
     const glm::dmat4 projection =
         math::perspective(input.camera.fovY, double(kWidth) / kHeight, input.camera.near, input.camera.far);
-    auto culls = [&](int view) {
+    // The names of the items `view` treats so (hidesBackFaces or drawsBackFacesLast).
+    using Question = bool (*)(const DrawItem&, const FrameInput&, const passes::ViewSetup&,
+                              const passes::MainPassContext&);
+    auto itemsWhere = [&](Question question, int view) {
         const passes::ViewSetup setup =
             passes::viewSetup(input, plan, view, projection, {kWidth, kHeight}, false);
         std::vector<std::string> names;
         for (const DrawItem& d : input.items)
-            if (passes::hidesBackFaces(d, input, setup, context))
+            if (question(d, input, setup, context))
                 names.push_back(d.name);
         return names;
     };
+    auto culls = [&](int view) { return itemsWhere(passes::hidesBackFaces, view); };
     EXPECT_EQ(culls(-1), (std::vector<std::string>{"Above", "Resting", "Through the floor", "Mirrored"}));
 
     // Reflected in the floor, with the oblique near plane on the floor: the sphere through it is cut, and
@@ -200,15 +201,7 @@ TEST_F(BackFaceCulling, OnlyClosedOpaqueMeshesWhollyBeyondTheNearPlane) {
     // In the floor's reflection, the sphere resting on it (its clip takes off a sliver); not the one half
     // through it nor the room box (the floor's plane cuts it deep), and in the camera's view neither the box
     // at the eye nor the room the camera stands in.
-    auto backFacesLast = [&](int view) {
-        const passes::ViewSetup setup =
-            passes::viewSetup(input, plan, view, projection, {kWidth, kHeight}, false);
-        std::vector<std::string> names;
-        for (const DrawItem& d : input.items)
-            if (passes::drawsBackFacesLast(d, input, setup, context))
-                names.push_back(d.name);
-        return names;
-    };
+    auto backFacesLast = [&](int view) { return itemsWhere(passes::drawsBackFacesLast, view); };
     EXPECT_TRUE(backFacesLast(-1).empty());
     EXPECT_EQ(backFacesLast(floor), (std::vector<std::string>{"Resting"}));
 
