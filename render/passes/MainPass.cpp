@@ -329,7 +329,8 @@ bool drawsBackFacesLast(const DrawItem& item, const FrameInput& input, const Vie
     for (int corner = 0; corner < 8; ++corner)
         deepest = std::min(
             deepest, (glm::dot(glm::dvec3(near), boundsCorner(facts->bounds, corner)) + near.w) / scale);
-    return deepest < 0.0 && deepest >= -kThinCut * diagonal && !hidesBackFaces(item, input, view, ctx);
+    // A corner behind the near plane: hidesBackFaces is false, so the faces are not culled either.
+    return deepest < 0.0 && deepest >= -kThinCut * diagonal;
 }
 
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& ctx) {
