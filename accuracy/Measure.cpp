@@ -1,6 +1,6 @@
 #include "accuracy/Measure.hpp"
 
-#include "render/StillRenderer.hpp"
+#include "render/renderer/StillRenderer.hpp"
 
 #include <algorithm>
 
@@ -14,12 +14,12 @@ double median(std::vector<double> values) {
     return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
-render::Result<Reference> traceReference(const render::FrameInput& input, ReferenceKind kind, int width,
-                                         int height, const std::function<bool(double)>& progress,
-                                         int glossySamples) {
+base::Result<Reference> traceReference(const render::FrameInput& input, ReferenceKind kind, int width,
+                                       int height, const std::function<bool(double)>& progress,
+                                       int glossySamples) {
     auto tracer = render::reference::Tracer::create(input);
     if (!tracer)
-        return render::Error{"reference tracer: " + tracer.error()};
+        return base::Error{"reference tracer: " + tracer.error()};
     render::reference::TraceSettings settings;
     settings.width = width;
     settings.height = height;
@@ -29,7 +29,7 @@ render::Result<Reference> traceReference(const render::FrameInput& input, Refere
                                                           : render::reference::ShadowMode::PcfFootprint;
     auto traced = tracer->render(settings, [&](double fraction) { return !progress || progress(fraction); });
     if (!traced)
-        return render::Error{"reference tracer: " + traced.error()};
+        return base::Error{"reference tracer: " + traced.error()};
     Reference reference;
     reference.kind = kind;
     reference.traced = std::move(*traced);
@@ -38,19 +38,18 @@ render::Result<Reference> traceReference(const render::FrameInput& input, Refere
     return reference;
 }
 
-render::Result<FrameCost> measureFrames(render::Renderer& renderer, const render::FrameInput& input,
-                                        int width, int height, int warmUp, int frames,
-                                        const std::function<bool()>& stop) {
+base::Result<FrameCost> measureFrames(render::Renderer& renderer, const render::FrameInput& input, int width,
+                                      int height, int warmUp, int frames, const std::function<bool()>& stop) {
     render::StillSettings settings{width, height, 1};
     settings.reuseMaps = false;
     std::vector<double> gpu, cpu;
     FrameCost cost;
     for (int i = 0; i < warmUp + frames; ++i) {
         if (stop && stop())
-            return render::Error{"stopped"};
+            return base::Error{"stopped"};
         auto still = render::renderStill(renderer, input, settings);
         if (!still)
-            return render::Error{still.error()};
+            return base::Error{still.error()};
         if (i < warmUp) {
             if (i == 0)
                 cost.warnings = still->firstSample.warnings;
@@ -68,12 +67,12 @@ render::Result<FrameCost> measureFrames(render::Renderer& renderer, const render
     return cost;
 }
 
-render::Result<ErrorFigures> compareWithReference(const render::Image& image, const Reference& reference) {
+base::Result<ErrorFigures> compareWithReference(const render::Image& image, const Reference& reference) {
     const render::Image& exact = reference.traced.image;
     ErrorFigures figures;
     auto overall = render::metrics::compare(image, exact);
     if (!overall)
-        return render::Error{overall.error()};
+        return base::Error{overall.error()};
     figures.overall = *overall;
     auto masked = [&](const std::vector<std::uint8_t>& mask) -> std::optional<render::metrics::ErrorStats> {
         auto stats = render::metrics::compare(image, exact, &mask);
@@ -85,7 +84,7 @@ render::Result<ErrorFigures> compareWithReference(const render::Image& image, co
     figures.reflector = masked(reference.reflectorMask);
     auto difference = render::metrics::absoluteDifference(image, exact);
     if (!difference)
-        return render::Error{difference.error()};
+        return base::Error{difference.error()};
     figures.difference = std::move(*difference);
     return figures;
 }

@@ -1,12 +1,12 @@
 #pragma once
 
 #include "accuracy/Sweep.hpp"
-#include "render/FrameInput.hpp"
-#include "render/Renderer.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/image/Image.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/reference/Tracer.hpp"
+#include "render/renderer/Renderer.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -33,9 +33,9 @@ struct Reference {
 // exact hard shadows for ReferenceKind::HardShadows and each light's PCF footprint otherwise; pixels that
 // see a rough surface average `glossySamples` paths through its lobe. `progress` gets the finished fraction
 // and returns false to cancel; errors: the tracer cannot start, or cancelled.
-render::Result<Reference> traceReference(const render::FrameInput& input, ReferenceKind kind, int width,
-                                         int height, const std::function<bool(double)>& progress = {},
-                                         int glossySamples = kReferenceGlossySamples);
+base::Result<Reference> traceReference(const render::FrameInput& input, ReferenceKind kind, int width,
+                                       int height, const std::function<bool(double)>& progress = {},
+                                       int glossySamples = kReferenceGlossySamples);
 
 // What one configuration costs: medians over the timed frames.
 struct FrameCost {
@@ -49,9 +49,9 @@ struct FrameCost {
 // Renders `warmUp` frames, then times `frames` more. Every frame renders all its shadow and environment
 // maps again (RenderOptions::reuseMaps off), so the time is what the settings cost an animated scene.
 // `stop`, asked before each frame, ends the measurement early with an error ("stopped").
-render::Result<FrameCost> measureFrames(render::Renderer& renderer, const render::FrameInput& input,
-                                        int width, int height, int warmUp, int frames,
-                                        const std::function<bool()>& stop = {});
+base::Result<FrameCost> measureFrames(render::Renderer& renderer, const render::FrameInput& input, int width,
+                                      int height, int warmUp, int frames,
+                                      const std::function<bool()>& stop = {});
 
 struct ErrorFigures {
     render::metrics::ErrorStats overall;
@@ -61,7 +61,7 @@ struct ErrorFigures {
 };
 
 // Errors of `image` against the reference, in sRGB as a viewer sees them (render::metrics).
-render::Result<ErrorFigures> compareWithReference(const render::Image& image, const Reference& reference);
+base::Result<ErrorFigures> compareWithReference(const render::Image& image, const Reference& reference);
 
 double median(std::vector<double> values);
 

@@ -1,7 +1,7 @@
 #include "accuracy/Plot.hpp"
 
-#include "render/io/AtomicFile.hpp"
-#include "render/io/Printable.hpp"
+#include "base/AtomicFile.hpp"
+#include "base/Printable.hpp"
 
 #include <QBuffer>
 #include <QFont>
@@ -68,7 +68,7 @@ std::vector<double> niceTicks(double lo, double hi, int count) {
     return ticks;
 }
 
-render::Status writePlot(const std::string& path, const PlotSpec& spec, int width, int height) {
+base::Status writePlot(const std::string& path, const PlotSpec& spec, int width, int height) {
     assert(QGuiApplication::instance() && "writePlot(): needs a QGuiApplication for fonts");
     QImage image(width, height, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::white);
@@ -289,14 +289,14 @@ render::Status writePlot(const std::string& path, const PlotSpec& spec, int widt
     legendRow("the scene's own setting");
     p.end();
 
-    // Encoded in memory, then staged and checked like every other file (render::AtomicFile): QSaveFile
+    // Encoded in memory, then staged and checked like every other file (base::AtomicFile): QSaveFile
     // would commit a plot whose buffered write failed on a full disk.
     QByteArray png;
     QBuffer buffer(&png);
     if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG") || png.isEmpty())
-        return render::Error{render::printable(path, 200) + ": cannot encode the plot as PNG"};
-    return render::writeFileAtomically(
-        path, std::string_view(png.constData(), static_cast<std::size_t>(png.size())));
+        return base::Error{base::printable(path, 200) + ": cannot encode the plot as PNG"};
+    return base::writeFileAtomically(path,
+                                     std::string_view(png.constData(), static_cast<std::size_t>(png.size())));
 }
 
 } // namespace speculum::accuracy

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 
 #include <string>
 #include <vector>
@@ -29,7 +29,7 @@ struct PlotSpec {
 
 // Paints the plot with QPainter into a PNG of width × height pixels. Needs a QGuiApplication (the
 // "offscreen" platform is enough: nothing is shown). Errors: the file cannot be written.
-render::Status writePlot(const std::string& path, const PlotSpec& spec, int width = 1200, int height = 800);
+base::Status writePlot(const std::string& path, const PlotSpec& spec, int width = 1200, int height = 800);
 
 // "Nice" axis ticks covering [lo, hi]: steps of 1, 2 or 5 × 10^k, about `count` of them.
 std::vector<double> niceTicks(double lo, double hi, int count);

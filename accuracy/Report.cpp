@@ -2,7 +2,7 @@
 
 #include "accuracy/Analysis.hpp"
 #include "accuracy/Plot.hpp"
-#include "render/io/AtomicFile.hpp"
+#include "base/AtomicFile.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -396,13 +396,13 @@ std::string displayName(const Configuration& c) {
     }
 }
 
-render::Status writeReport(const std::filesystem::path& folder, const RunInfo& run,
-                           const std::vector<Record>& records) {
+base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run,
+                         const std::vector<Record>& records) {
     const std::vector<FamilyView> views = analyseAll(records);
     for (const FamilyView& v : views)
         if (v.rows.size() >= 2) {
             const std::string plot = (folder / ("plot-" + familyName(v.family) + ".png")).string();
-            if (render::Status s = writePlot(plot, plotOf(v, run)); !s)
+            if (base::Status s = writePlot(plot, plotOf(v, run)); !s)
                 return s;
         }
 
@@ -480,8 +480,8 @@ render::Status writeReport(const std::filesystem::path& folder, const RunInfo& r
           "none, pale yellow a quarter of the sRGB range or more).\n";
 
     const std::filesystem::path path = folder / "report.md";
-    // Staged and checked (render::AtomicFile): a full disk is an error, never a truncated report.
-    return render::writeFileAtomically(path.string(), md.str());
+    // Staged and checked (base::AtomicFile): a full disk is an error, never a truncated report.
+    return base::writeFileAtomically(path.string(), md.str());
 }
 
 } // namespace speculum::accuracy

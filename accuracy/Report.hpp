@@ -28,7 +28,7 @@ std::vector<FamilyFindings> findings(const std::vector<Record>& records);
 // Writes one plot per swept family (plot-<family>.png: error against frame time, Pareto front marked,
 // points labelled) into `folder`, then report.md: what each step of accuracy costs, in plain words,
 // with the plots embedded. Needs a QGuiApplication for the plots' fonts.
-render::Status writeReport(const std::filesystem::path& folder, const RunInfo& run,
-                           const std::vector<Record>& records);
+base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run,
+                         const std::vector<Record>& records);
 
 } // namespace speculum::accuracy

@@ -1,6 +1,6 @@
 #include "accuracy/Results.hpp"
 
-#include "render/io/AtomicFile.hpp"
+#include "base/AtomicFile.hpp"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -45,9 +45,9 @@ QString q(const std::string& s) {
     return QString::fromStdString(s);
 }
 
-// Staged and checked (render::AtomicFile): a full disk is an error, never a truncated file.
-render::Status writeText(const std::string& path, const std::string& text) {
-    return render::writeFileAtomically(path, text);
+// Staged and checked (base::AtomicFile): a full disk is an error, never a truncated file.
+base::Status writeText(const std::string& path, const std::string& text) {
+    return base::writeFileAtomically(path, text);
 }
 
 std::optional<double> finite(const QJsonValue& v) {
@@ -93,9 +93,9 @@ std::string ResultsFile::size() const {
                                            : "?";
 }
 
-render::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& name) {
+base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& name) {
     if (root.value("format").toString() != QStringLiteral("speculum-bench"))
-        return render::Error{name + ": not a speculum bench result (format is not \"speculum-bench\")"};
+        return base::Error{name + ": not a speculum bench result (format is not \"speculum-bench\")"};
     ResultsFile out;
     RunInfo& run = out.run;
     run.scene = root.value("scene").toString().toStdString();
@@ -130,12 +130,12 @@ render::Result<ResultsFile> readJson(const QJsonObject& root, const std::string&
         const std::string where = name + ": results[" + std::to_string(i) + "].";
         const std::string family = r.value("family").toString().toStdString();
         if (family.empty())
-            return render::Error{where + "family: expected a name"};
+            return base::Error{where + "family: expected a name"};
         const auto cpu = finite(r.value("cpuMs"));
         const auto psnr = finite(r.value("psnr"));
         const auto rmse = finite(r.value("rmse"));
         if (!cpu || !psnr || !rmse)
-            return render::Error{where + (!cpu ? "cpuMs" : !psnr ? "psnr" : "rmse") + ": expected a number"};
+            return base::Error{where + (!cpu ? "cpuMs" : !psnr ? "psnr" : "rmse") + ": expected a number"};
         const std::optional<Family> known = familyFromName(family);
         if (!known) {
             ++out.unknownFamilies;
@@ -167,12 +167,12 @@ render::Result<ResultsFile> readJson(const QJsonObject& root, const std::string&
         out.records.push_back(std::move(record));
     }
     if (out.records.empty())
-        return render::Error{name + (out.unknownFamilies > 0 ? ": no results of a family this version knows"
-                                                             : ": no results")};
+        return base::Error{name + (out.unknownFamilies > 0 ? ": no results of a family this version knows"
+                                                           : ": no results")};
     return out;
 }
 
-render::Status writeCsv(const std::string& path, const std::vector<Record>& records) {
+base::Status writeCsv(const std::string& path, const std::vector<Record>& records) {
     std::ostringstream csv;
     csv << "id,family,label,series,reference,sceneSetting";
     for (const std::string& name : kSettingNames)
@@ -192,7 +192,7 @@ render::Status writeCsv(const std::string& path, const std::vector<Record>& reco
     return writeText(path, csv.str());
 }
 
-render::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records) {
+base::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records) {
     QJsonArray references;
     for (const ReferenceInfo& ref : run.references)
         references.append(QJsonObject{{"name", q(referenceName(ref.kind))},

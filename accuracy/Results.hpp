@@ -1,8 +1,8 @@
 #pragma once
 
 #include "accuracy/Sweep.hpp"
-#include "render/Renderer.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "render/renderer/Renderer.hpp"
 
 #include <QJsonObject>
 #include <optional>
@@ -62,18 +62,18 @@ struct ResultsFile {
 
 // Reads the root object of a results.json that `name` names in errors ("results.json: results[3].psnr:
 // expected a number"). Reading it whole (the file, the JSON syntax, repeated keys) is the caller's.
-render::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& name);
+base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& name);
 
 // Columns: id, family, label, series, reference, sceneSetting, the settings (kSettingNames; empty where
 // the scene has no such setting), gpuMs, cpuMs, memoryBytes, rmse, psnr, psnrMirrors, psnrReflector
 // (empty where there are no such pixels), errorMap.
-render::Status writeCsv(const std::string& path, const std::vector<Record>& records);
+base::Status writeCsv(const std::string& path, const std::vector<Record>& records);
 
 // {"format": "speculum-bench", "version": 1, "scene", "size", "quick", ..., "references": [...],
 //  "results": [{"id", "family", "label", "series", "reference", "sceneSetting", "settings": {...},
 //               "gpuMs", "cpuMs", "memoryBytes", "memory": {"main", "mirrors", "shadows", "envmap"},
 //               "rmse", "psnr", "psnrMirrors", "psnrReflector", "errorMap"}]}
 // Missing values (no GPU timer, no mirror pixels) are null.
-render::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records);
+base::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records);
 
 } // namespace speculum::accuracy

@@ -45,13 +45,13 @@ void removeAbandonedStaging(const fs::path& folder) {
 
 } // namespace
 
-render::Result<StagedOutput> StagedOutput::begin(const fs::path& folder) {
+base::Result<StagedOutput> StagedOutput::begin(const fs::path& folder) {
     std::error_code ec;
     const fs::path absolute = fs::absolute(folder, ec).lexically_normal();
     if (ec)
-        return render::Error{folder.string() + ": " + ec.message()};
+        return base::Error{folder.string() + ": " + ec.message()};
     if (fs::exists(absolute, ec) && !fs::is_directory(absolute, ec))
-        return render::Error{folder.string() + ": exists and is not a folder"};
+        return base::Error{folder.string() + ": exists and is not a folder"};
     StagedOutput out;
     out.m_folder = absolute;
     // Remember the outermost folder that does not exist yet: removing it undoes create_directories.
@@ -63,7 +63,7 @@ render::Result<StagedOutput> StagedOutput::begin(const fs::path& folder) {
     fs::create_directories(absolute, ec);
     if (ec) {
         out.discard();
-        return render::Error{folder.string() + ": cannot create the folder (" + ec.message() + ")"};
+        return base::Error{folder.string() + ": cannot create the folder (" + ec.message() + ")"};
     }
     removeAbandonedStaging(absolute);
     out.m_staging =
@@ -71,8 +71,8 @@ render::Result<StagedOutput> StagedOutput::begin(const fs::path& folder) {
     fs::remove_all(out.m_staging, ec);
     if (!fs::create_directory(out.m_staging, ec) || ec) {
         out.discard();
-        return render::Error{folder.string() + ": cannot write into the folder (" +
-                             (ec ? ec.message() : std::string("staging folder exists")) + ")"};
+        return base::Error{folder.string() + ": cannot write into the folder (" +
+                           (ec ? ec.message() : std::string("staging folder exists")) + ")"};
     }
     return out;
 }
@@ -99,13 +99,13 @@ void StagedOutput::discard() {
     m_done = true;
 }
 
-render::Status StagedOutput::commit(const std::function<bool(const std::string&)>& earlierOutput) {
+base::Status StagedOutput::commit(const std::function<bool(const std::string&)>& earlierOutput) {
     std::error_code ec;
     std::vector<fs::path> written; // listed first: the loop below adds to the staging folder
     for (const fs::directory_entry& entry : fs::directory_iterator(m_staging, ec))
         written.push_back(entry.path());
     if (ec)
-        return render::Error{m_staging.string() + ": " + ec.message()};
+        return base::Error{m_staging.string() + ": " + ec.message()};
     if (earlierOutput) {
         std::vector<fs::path> stale;
         for (const fs::directory_entry& entry : fs::directory_iterator(m_folder, ec)) {
@@ -122,15 +122,15 @@ render::Status StagedOutput::commit(const std::function<bool(const std::string&)
             // rename() cannot replace a non-empty folder: move the old one aside first.
             fs::rename(target, m_staging / (".old-" + path.filename().string()), ec);
             if (ec)
-                return render::Error{target.string() + ": cannot replace (" + ec.message() + ")"};
+                return base::Error{target.string() + ": cannot replace (" + ec.message() + ")"};
         }
         fs::rename(path, target, ec);
         if (ec)
-            return render::Error{target.string() + ": cannot write (" + ec.message() + ")"};
+            return base::Error{target.string() + ": cannot write (" + ec.message() + ")"};
     }
     fs::remove_all(m_staging, ec);
     m_done = true;
-    return render::Done{};
+    return base::Done{};
 }
 
 } // namespace speculum::accuracy

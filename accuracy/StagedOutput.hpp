@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -18,7 +18,7 @@ class StagedOutput {
 public:
     // Creates the folder (and missing parents) if needed. Errors: the path names a file, or a folder
     // cannot be created.
-    static render::Result<StagedOutput> begin(const std::filesystem::path& folder);
+    static base::Result<StagedOutput> begin(const std::filesystem::path& folder);
 
     StagedOutput(StagedOutput&& other) noexcept;
     StagedOutput& operator=(StagedOutput&&) = delete;
@@ -32,7 +32,7 @@ public:
     // Moves everything written into the folder. Sub-folders (such as errors/) replace the old ones whole,
     // so no stale file of an earlier run survives among the new ones; files of the folder that this run
     // did not write and `earlierOutput` claims (a plot of a family this scene lacks) are removed too.
-    render::Status commit(const std::function<bool(const std::string& fileName)>& earlierOutput = {});
+    base::Status commit(const std::function<bool(const std::string& fileName)>& earlierOutput = {});
 
 private:
     StagedOutput() = default;

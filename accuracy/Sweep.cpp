@@ -1,7 +1,7 @@
 #include "accuracy/Sweep.hpp"
 
-#include "render/SceneLimits.hpp"
-#include "render/SceneNames.hpp"
+#include "render/frame/SceneLimits.hpp"
+#include "render/frame/SceneNames.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"
 

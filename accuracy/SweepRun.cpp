@@ -35,7 +35,7 @@ public:
         m_height = input.height > 0 ? input.height : size.height;
     }
 
-    render::Result<SweepOutcome> operator()() {
+    base::Result<SweepOutcome> operator()() {
         const SweepTiming timing = sweepTiming(m_input.quick);
         const std::vector<Configuration> configs = planSweep(m_input.scene, m_traits, {m_input.quick});
         SweepOutcome out;
@@ -51,14 +51,14 @@ public:
 
         auto references = traceReferences(configs, out.run);
         if (!references)
-            return render::Error{references.error()};
+            return base::Error{references.error()};
 
         // Warm the whole pipeline up once (shader variants, textures, meshes), so that the first
         // configuration measured is not the one that pays for it.
         progress("warming up");
         if (auto warm = measureFrames(m_renderer, m_input.scene, m_width, m_height, 2, 0, m_observer.stop);
             !warm)
-            return render::Error{warm.error()};
+            return base::Error{warm.error()};
 
         // Images, memory and errors, one configuration at a time. Configurations with the same settings
         // (the scene's own recur in every family) are rendered once and timed once.
@@ -69,7 +69,7 @@ public:
             key(effectiveSettings(m_input.scene, m_traits, m_input.teapotTessellation));
         for (std::size_t i = 0; i < configs.size(); ++i) {
             if (stopped())
-                return render::Error{kSweepStopped};
+                return base::Error{kSweepStopped};
             const Configuration& config = configs[i];
             const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(configs.size()) +
                                      "] " + familyName(config.family) + ": " + displayName(config);
@@ -87,16 +87,16 @@ public:
                 auto cost =
                     measureFrames(m_renderer, applied, m_width, m_height, timing.warmUp, 1, m_observer.stop);
                 if (!cost)
-                    return render::Error{cost.error() == kSweepStopped
-                                             ? cost.error()
-                                             : displayName(config) + ": " + cost.error()};
+                    return base::Error{cost.error() == kSweepStopped
+                                           ? cost.error()
+                                           : displayName(config) + ": " + cost.error()};
                 costs.emplace(k, std::move(*cost));
                 distinct.emplace(k, std::move(applied));
             }
             const FrameCost& cost = costs.at(k);
             auto errors = compareWithReference(cost.image, references->at(config.reference));
             if (!errors)
-                return render::Error{displayName(config) + ": " + errors.error()};
+                return base::Error{displayName(config) + ": " + errors.error()};
             record.gpuMs = cost.gpuMs;
             record.cpuMs = cost.cpuMs;
             record.memory = cost.memory;
@@ -108,8 +108,8 @@ public:
                 record.psnrReflector = errors->reflector->psnr;
             record.errorMap = "errors/" + config.id + ".png";
             if (m_observer.measured)
-                if (render::Status s = m_observer.measured(i, configs.size(), record, cost, *errors); !s)
-                    return render::Error{s.error()};
+                if (base::Status s = m_observer.measured(i, configs.size(), record, cost, *errors); !s)
+                    return base::Error{s.error()};
             progress(summaryLine(step, record));
             out.records.push_back(std::move(record));
             keys.push_back(k);
@@ -123,7 +123,7 @@ public:
             for (const auto& [k, frame] : distinct) {
                 auto cost = measureFrames(m_renderer, frame, m_width, m_height, 1, 1, m_observer.stop);
                 if (!cost)
-                    return render::Error{cost.error()};
+                    return base::Error{cost.error()};
                 gpu[k].push_back(cost->gpuMs);
                 cpu[k].push_back(cost->cpuMs);
             }
@@ -147,7 +147,7 @@ private:
     bool stopped() const { return m_observer.stop && m_observer.stop(); }
 
     // Traces each reference the configurations need.
-    render::Result<std::map<ReferenceKind, Reference>>
+    base::Result<std::map<ReferenceKind, Reference>>
     traceReferences(const std::vector<Configuration>& configs, RunInfo& run) {
         std::vector<ReferenceKind> kinds;
         for (const Configuration& c : configs)
@@ -170,9 +170,9 @@ private:
                 },
                 m_input.quick ? kQuickReferenceGlossySamples : kReferenceGlossySamples);
             if (stopped())
-                return render::Error{kSweepStopped};
+                return base::Error{kSweepStopped};
             if (!traced)
-                return render::Error{traced.error()};
+                return base::Error{traced.error()};
             std::string noise;
             if (traced->traced.glossyPixels > 0) {
                 char text[96];
@@ -184,8 +184,8 @@ private:
                      std::to_string(static_cast<int>(traced->traced.totalMs + 0.5)) + " ms" + noise);
             const ReferenceInfo info{kind, traced->traced.totalMs, threads, referenceFile(kind)};
             if (m_observer.referenceTraced)
-                if (render::Status s = m_observer.referenceTraced(*traced, info); !s)
-                    return render::Error{s.error()};
+                if (base::Status s = m_observer.referenceTraced(*traced, info); !s)
+                    return base::Error{s.error()};
             run.references.push_back(info);
             references.emplace(kind, std::move(*traced));
         }
@@ -226,8 +226,8 @@ std::string summaryLine(const std::string& step, const Record& r) {
     return line + text;
 }
 
-render::Result<SweepOutcome> runSweep(render::Renderer& renderer, const SweepInput& input,
-                                      const SweepObserver& observer) {
+base::Result<SweepOutcome> runSweep(render::Renderer& renderer, const SweepInput& input,
+                                    const SweepObserver& observer) {
     return Run(renderer, input, observer)();
 }
 

@@ -3,8 +3,8 @@
 #include "accuracy/Measure.hpp"
 #include "accuracy/Results.hpp"
 #include "accuracy/Sweep.hpp"
-#include "render/Renderer.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "render/renderer/Renderer.hpp"
 
 #include <cstddef>
 #include <functional>
@@ -49,12 +49,12 @@ struct SweepObserver {
     // Asked between frames and between the tracer's tiles: true stops the sweep within one frame.
     std::function<bool()> stop;
     // A reference was traced (before any configuration is rendered). An error ends the sweep with it.
-    std::function<render::Status(const Reference& reference, const ReferenceInfo& info)> referenceTraced;
+    std::function<base::Status(const Reference& reference, const ReferenceInfo& info)> referenceTraced;
     // Configuration `index` of `total` was rendered and compared with its reference. Its times are of the
     // one frame rendered so far (the timing rounds come later); `cost.image` is that frame. An error ends
     // the sweep with it.
-    std::function<render::Status(std::size_t index, std::size_t total, const Record& record,
-                                 const FrameCost& cost, const ErrorFigures& errors)>
+    std::function<base::Status(std::size_t index, std::size_t total, const Record& record,
+                               const FrameCost& cost, const ErrorFigures& errors)>
         measured;
     // Timing round `round` of `rounds` ended: every record, its times the medians of the rounds so far.
     std::function<void(int round, int rounds, const std::vector<Record>& records)> timed;
@@ -74,8 +74,8 @@ inline constexpr const char* kSweepStopped = "stopped";
 // need, renders and compares every configuration once, then times all distinct configurations in rounds.
 // Needs `renderer`'s GL context current on the calling thread. Errors: a reference or a frame that fails,
 // an observer's error, or kSweepStopped.
-render::Result<SweepOutcome> runSweep(render::Renderer& renderer, const SweepInput& input,
-                                      const SweepObserver& observer = {});
+base::Result<SweepOutcome> runSweep(render::Renderer& renderer, const SweepInput& input,
+                                    const SweepObserver& observer = {});
 
 // One line for a log: "[3/40] envmap: cube 128: PSNR 31.20 dB, reflector 27.01 dB, 3.1 MiB".
 std::string summaryLine(const std::string& step, const Record& record);

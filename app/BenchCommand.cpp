@@ -7,10 +7,10 @@
 #include "app/OutputPaths.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
-#include "render/Renderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
-#include "render/image/ImageWriter.hpp"
+#include "render/imageio/ImageWriter.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
+#include "render/renderer/Renderer.hpp"
 
 #include <QGuiApplication>
 #include <chrono>
@@ -33,7 +33,7 @@ int fail(const std::string& message) {
     return 1;
 }
 
-// A write into the staging folder that failed (render::AtomicFile's "<staging>/results.csv: the disk is
+// A write into the staging folder that failed (base::AtomicFile's "<staging>/results.csv: the disk is
 // full (...); nothing was written") is told as the user sees it: the file in the output folder, whose
 // previous run is left as it was (the staging folder is discarded, nothing is committed).
 std::string outputMessage(std::string message, const StagedOutput& output) {
@@ -92,8 +92,8 @@ int interrupted() {
 }
 
 // Writes the report and the plots; QPainter needs a QGuiApplication, the offscreen platform will do.
-render::Status writeReportWithGui(const fs::path& staging, const accuracy::RunInfo& run,
-                                  const std::vector<accuracy::Record>& records) {
+base::Status writeReportWithGui(const fs::path& staging, const accuracy::RunInfo& run,
+                                const std::vector<accuracy::Record>& records) {
     int argc = 3;
     char arg0[] = "speculum", arg1[] = "-platform", arg2[] = "offscreen";
     char* argv[] = {arg0, arg1, arg2, nullptr};
@@ -106,7 +106,7 @@ render::Status writeReportWithGui(const fs::path& staging, const accuracy::RunIn
         });
     if (!QCoreApplication::instance())
         app.emplace(argc, argv);
-    render::Status written = accuracy::writeReport(staging, run, records);
+    base::Status written = accuracy::writeReport(staging, run, records);
     app.reset();
     qInstallMessageHandler(previous);
     return written;
@@ -119,13 +119,13 @@ int run(const Options& options) {
     const StopOnSignal stop; // before the output folder exists: a stop always finds it to clean up
 
     // Nothing an input is may be replaced: DIR holds neither the project nor a file it reads.
-    if (render::Status folder = checkOutputFolder(options.outDir, {options.project}); !folder)
+    if (base::Status folder = checkOutputFolder(options.outDir, {options.project}); !folder)
         return fail(folder.error());
     auto project = loadProjectFrame(options.project, 0.0,
                                     options.keepGoing ? MissingFiles::KeepGoing : MissingFiles::Fail);
     if (!project)
         return fail(project.error());
-    if (render::Status folder = checkOutputFolder(options.outDir, project->inputs); !folder)
+    if (base::Status folder = checkOutputFolder(options.outDir, project->inputs); !folder)
         return fail(folder.error());
     // The folder is checked (and made) before the long work, so a bad --out costs nothing.
     auto output = StagedOutput::begin(options.outDir);
@@ -172,17 +172,17 @@ int run(const Options& options) {
     };
     observer.measured = [&](std::size_t, std::size_t, const accuracy::Record& record,
                             const accuracy::FrameCost& cost,
-                            const accuracy::ErrorFigures& errors) -> render::Status {
+                            const accuracy::ErrorFigures& errors) -> base::Status {
         for (const std::string& w : cost.warnings)
             if (warned.insert(w).second)
                 printWarnings({w});
-        if (render::Status s =
+        if (base::Status s =
                 render::metrics::writeErrorMap((staging / record.errorMap).string(), errors.difference);
             !s)
             return s;
         if (record.config.family == accuracy::Family::Scene)
             return render::writeImage((staging / "render.png").string(), cost.image);
-        return render::Done{};
+        return base::Done{};
     };
     auto swept = accuracy::runSweep(**renderer, input, observer);
     if (stop.requested())
@@ -198,18 +198,18 @@ int run(const Options& options) {
     const std::vector<accuracy::Record>& records = swept->records;
 
     progress("writing results, plots and the report");
-    if (render::Status s = accuracy::writeCsv((staging / "results.csv").string(), records); !s)
+    if (base::Status s = accuracy::writeCsv((staging / "results.csv").string(), records); !s)
         return fail(outputMessage(s.error(), *output));
-    if (render::Status s = accuracy::writeJson((staging / "results.json").string(), run, records); !s)
+    if (base::Status s = accuracy::writeJson((staging / "results.json").string(), run, records); !s)
         return fail(outputMessage(s.error(), *output));
-    if (render::Status s = writeReportWithGui(staging, run, records); !s)
+    if (base::Status s = writeReportWithGui(staging, run, records); !s)
         return fail(outputMessage(s.error(), *output));
     // Plots and references of an earlier run in the same folder would mix two runs: they go too.
     auto earlierOutput = [](const std::string& name) {
         const bool png = name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0;
         return png && (name.rfind("plot-", 0) == 0 || name.rfind("reference", 0) == 0);
     };
-    if (render::Status s = output->commit(earlierOutput); !s)
+    if (base::Status s = output->commit(earlierOutput); !s)
         return fail(s.error());
     const fs::path report = output->folder() / "report.md";
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();

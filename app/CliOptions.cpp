@@ -1,9 +1,9 @@
 #include "app/CliOptions.hpp"
 
-#include "render/SceneLimits.hpp"
-#include "render/StillRenderer.hpp"
-#include "render/io/Printable.hpp"
+#include "base/Printable.hpp"
+#include "render/frame/SceneLimits.hpp"
 #include "render/reference/Tracer.hpp"
+#include "render/renderer/StillRenderer.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -21,33 +21,33 @@ namespace speculum::app {
 
 namespace {
 
-using render::Error;
+using base::Error;
 
-render::Result<int> parseInt(const std::string& option, const std::string& text, int min, int max) {
+base::Result<int> parseInt(const std::string& option, const std::string& text, int min, int max) {
     int value = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec == std::errc::result_out_of_range && end == text.data() + text.size())
-        return Error{option + ": " + render::quoted(text) + " is out of range (" + std::to_string(min) +
-                     ".." + std::to_string(max) + ")"};
+        return Error{option + ": " + base::quoted(text) + " is out of range (" + std::to_string(min) + ".." +
+                     std::to_string(max) + ")"};
     if (ec != std::errc() || end != text.data() + text.size())
-        return Error{option + ": expected a whole number, got " + render::quoted(text)};
+        return Error{option + ": expected a whole number, got " + base::quoted(text)};
     if (value < min || value > max)
-        return Error{option + ": " + render::quoted(text) + " is out of range (" + std::to_string(min) +
-                     ".." + std::to_string(max) + ")"};
+        return Error{option + ": " + base::quoted(text) + " is out of range (" + std::to_string(min) + ".." +
+                     std::to_string(max) + ")"};
     return value;
 }
 
-render::Result<double> parseTime(const std::string& text) {
+base::Result<double> parseTime(const std::string& text) {
     try {
         std::size_t used = 0;
         const double value = std::stod(text, &used);
         if (used != text.size() || !std::isfinite(value))
             throw std::invalid_argument(text);
         if (value < 0.0 || value > 1e7)
-            return Error{"--time: " + render::quoted(text) + " is out of range (0..1e7 seconds)"};
+            return Error{"--time: " + base::quoted(text) + " is out of range (0..1e7 seconds)"};
         return value;
     } catch (const std::exception&) {
-        return Error{"--time: expected a number of seconds, got " + render::quoted(text)};
+        return Error{"--time: expected a number of seconds, got " + base::quoted(text)};
     }
 }
 
@@ -97,7 +97,7 @@ std::string unknownCommand(const std::string& word) {
             bestDistance = d;
         }
     }
-    std::string message = "unknown command " + render::quoted(word);
+    std::string message = "unknown command " + base::quoted(word);
     if (!best.empty())
         return message + " (did you mean '" + std::string(best) + "'?)";
     return message + " (commands: render, explain, bench, time, export; see speculum --help)";
@@ -178,12 +178,12 @@ struct Typed {
     std::string size, ssaa, time, frame, frames, samples;
 };
 
-render::Status checkValues(const Typed& t, CliOptions& o) {
+base::Status checkValues(const Typed& t, CliOptions& o) {
     if (!t.size.empty()) {
         static const std::regex size(R"((\d+)[xX](\d+))");
         std::smatch m;
         if (!std::regex_match(t.size, m, size))
-            return Error{"--size: expected WIDTHxHEIGHT such as 1280x720, got " + render::quoted(t.size)};
+            return Error{"--size: expected WIDTHxHEIGHT such as 1280x720, got " + base::quoted(t.size)};
         // No limit per side: stills larger than the GPU's limits render in tiles. Only sizes whose pixels
         // would not fit in memory are refused, here, before any work.
         constexpr int kMaxSide = std::numeric_limits<int>::max();
@@ -193,7 +193,7 @@ render::Status checkValues(const Typed& t, CliOptions& o) {
         auto h = parseInt("--size height", m[2].str(), 1, kMaxSide);
         if (!h)
             return Error{h.error()};
-        if (render::Status fits = render::checkStillSize(*w, *h); !fits)
+        if (base::Status fits = render::checkStillSize(*w, *h); !fits)
             return Error{"--size: " + fits.error()};
         o.width = *w;
         o.height = *h;
@@ -232,7 +232,7 @@ render::Status checkValues(const Typed& t, CliOptions& o) {
             return Error{n.error()};
         o.frames = *n;
     }
-    return render::Done{};
+    return base::Done{};
 }
 
 // The option an error message is about: CLI11 names it first ("--size: 1 required TEXT missing").
@@ -246,8 +246,8 @@ std::string optionNamed(const std::string& what) {
 
 // One command's options, parsed by CLI11: --opt value and --opt=value alike, -h/--help for the command's
 // own help. Values are kept as typed and checked by checkValues, so every form gets the same message.
-render::Result<CliOptions> parseCommand(Command command, const std::string& name,
-                                        const std::vector<std::string>& rest) {
+base::Result<CliOptions> parseCommand(Command command, const std::string& name,
+                                      const std::vector<std::string>& rest) {
     CliOptions o;
     o.command = command;
     Typed typed;
@@ -304,15 +304,15 @@ render::Result<CliOptions> parseCommand(Command command, const std::string& name
         const std::string option = optionNamed(e.what());
         if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) && !option.empty())
             return Error{option + ": missing value"};
-        return Error{name + ": " + render::printable(e.what(), 200) + " (see speculum " + name + " --help)"};
+        return Error{name + ": " + base::printable(e.what(), 200) + " (see speculum " + name + " --help)"};
     }
     for (const std::string& extra : app.remaining()) {
         if (!extra.empty() && extra[0] == '-')
-            return Error{name + ": unknown option " + render::quoted(extra) + " (see speculum " + name +
+            return Error{name + ": unknown option " + base::quoted(extra) + " (see speculum " + name +
                          " --help)"};
-        return Error{name + ": unexpected argument " + render::quoted(extra)};
+        return Error{name + ": unexpected argument " + base::quoted(extra)};
     }
-    if (render::Status values = checkValues(typed, o); !values)
+    if (base::Status values = checkValues(typed, o); !values)
         return Error{values.error()};
     if (o.project.empty())
         return Error{name + ": missing PROJECT file"};
@@ -327,7 +327,7 @@ render::Result<CliOptions> parseCommand(Command command, const std::string& name
 
 } // namespace
 
-render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
+base::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
     CliOptions o;
     if (args.empty())
         return o;
@@ -350,7 +350,7 @@ render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args
         if (first == word)
             return parseCommand(command, first, std::vector<std::string>(args.begin() + 1, args.end()));
     if (!first.empty() && first[0] == '-')
-        return Error{"unknown option " + render::quoted(first) + " (see speculum --help)"};
+        return Error{"unknown option " + base::quoted(first) + " (see speculum --help)"};
     if (looksLikeCommand(first, args.size()))
         return Error{unknownCommand(first)};
     if (args.size() > 1)

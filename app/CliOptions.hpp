@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 
 #include <optional>
 #include <string>
@@ -41,9 +41,9 @@ struct CliOptions {
 inline constexpr int kUsageError = 2;
 
 // Errors are one line without the "speculum: error: " prefix; every value from the command line in them is
-// escaped and shortened (render::quoted). A first word that is neither a command nor a path to a file is an
+// escaped and shortened (base::quoted). A first word that is neither a command nor a path to a file is an
 // unknown command, with the nearest command word suggested.
-render::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args);
+base::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args);
 
 std::string usageText();
 

@@ -4,15 +4,15 @@
 #include "app/OutputPaths.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
-#include "editor/document/GltfExport.hpp"
-#include "render/FrameReport.hpp"
-#include "render/Renderer.hpp"
-#include "render/StillRenderer.hpp"
+#include "base/Printable.hpp"
 #include "render/gl/HeadlessContext.hpp"
-#include "render/image/ImageWriter.hpp"
-#include "render/io/Printable.hpp"
+#include "render/imageio/ImageWriter.hpp"
+#include "render/plan/FrameReport.hpp"
 #include "render/plan/Planner.hpp"
 #include "render/reference/Tracer.hpp"
+#include "render/renderer/Renderer.hpp"
+#include "render/renderer/StillRenderer.hpp"
+#include "scene/export/GltfExport.hpp"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -85,13 +85,13 @@ bool expectedSkip(const std::string& reason) {
 std::string targetLabel(const render::FrameInput& input, const std::string& target) {
     for (const render::Mirror& m : input.mirrors)
         if (m.name == target)
-            return "mirror " + render::quoted(target);
+            return "mirror " + base::quoted(target);
     for (const render::Light& l : input.lights)
         if (l.name == target)
-            return "light " + render::quoted(target);
+            return "light " + base::quoted(target);
     if (input.reflector && input.reflector->name == target)
-        return "reflector " + render::quoted(target);
-    return render::quoted(target);
+        return "reflector " + base::quoted(target);
+    return base::quoted(target);
 }
 
 // Lights past the ones drawn: the rasterizer and the tracer both light with the first kMaxLights.
@@ -99,7 +99,7 @@ std::vector<std::string> lightDrops(const render::FrameInput& input) {
     std::vector<std::string> drops;
     for (std::size_t i = render::kMaxLights; i < input.lights.size(); ++i) {
         const std::string& name = input.lights[i].name;
-        drops.push_back("light " + (name.empty() ? "#" + std::to_string(i + 1) : render::quoted(name)) +
+        drops.push_back("light " + (name.empty() ? "#" + std::to_string(i + 1) : base::quoted(name)) +
                         " ignored: at most " + std::to_string(render::kMaxLights) + " lights are drawn");
     }
     return drops;
@@ -114,7 +114,7 @@ std::vector<std::string> frameDrops(const render::FrameInput& input, const rende
         if (expectedSkip(s.reason) || s.reason.rfind(lightLimit, 0) == 0)
             continue;
         drops.push_back((s.target.empty() ? std::string("frame") : targetLabel(input, s.target)) +
-                        ": skipped: " + render::printable(s.reason, 400));
+                        ": skipped: " + base::printable(s.reason, 400));
     }
     return drops;
 }
@@ -136,30 +136,30 @@ struct HeadlessFrame {
 // Loads the project and evaluates it at options.time; no GL needed. A missing model or texture is an
 // error unless --keep-going (explain: reported by the frame). For a command that writes, the output is
 // then checked against every file the project reads, before any rendering.
-render::Result<render::FrameInput> loadFrameInput(const CliOptions& options) {
+base::Result<render::FrameInput> loadFrameInput(const CliOptions& options) {
     auto frame = loadProjectFrame(options.project, options.time, policyOf(options));
     if (!frame)
-        return render::Error{commandName(options) + ": " + frame.error()};
+        return base::Error{commandName(options) + ": " + frame.error()};
     if (!options.output.empty())
-        if (render::Status distinct = checkNotAnInput(options.output, frame->inputs); !distinct)
-            return render::Error{commandName(options) + ": " + distinct.error()};
+        if (base::Status distinct = checkNotAnInput(options.output, frame->inputs); !distinct)
+            return base::Error{commandName(options) + ": " + distinct.error()};
     return std::move(frame->input);
 }
 
-render::Result<HeadlessFrame> prepare(const CliOptions& options) {
+base::Result<HeadlessFrame> prepare(const CliOptions& options) {
     auto input = loadFrameInput(options);
     if (!input)
-        return render::Error{input.error()};
+        return base::Error{input.error()};
     HeadlessFrame frame;
     frame.input = std::move(*input);
     auto context = render::gl::HeadlessContext::create();
     if (!context)
-        return render::Error{"no OpenGL: " + context.error()};
+        return base::Error{"no OpenGL: " + context.error()};
     frame.context = std::move(*context);
     frame.glDescription = frame.context->description();
     auto renderer = render::Renderer::create();
     if (!renderer)
-        return render::Error{renderer.error()};
+        return base::Error{renderer.error()};
     frame.renderer = std::move(*renderer);
     return frame;
 }
@@ -242,14 +242,14 @@ int runReferenceRender(const CliOptions& options, Clock::time_point start) {
                                   std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
                                   " threads)"},
     };
-    if (render::Status written = render::writeImage(options.output, traced->image, metadata); !written) {
+    if (base::Status written = render::writeImage(options.output, traced->image, metadata); !written) {
         fail(written.error());
         return 1;
     }
     std::cerr << "speculum: traced " << sizeText(options.width, options.height) << " with " << traced->samples
               << (traced->samples == 1 ? " sample" : " samples") << " per pixel in "
               << static_cast<int>(traced->totalMs + 0.5) << " ms\n";
-    std::cout << render::printable(options.output, 4096) << "\n" << noiseLine(*traced) << "\n";
+    std::cout << base::printable(options.output, 4096) << "\n" << noiseLine(*traced) << "\n";
     return 0;
 }
 
@@ -259,20 +259,20 @@ int runRender(const CliOptions& options) {
     const auto start = Clock::now();
     // Validate the output before any work: an unsupported format or a missing folder costs nothing.
     if (!render::isSupportedImagePath(options.output)) {
-        fail(render::quoted(options.output) +
+        fail(base::quoted(options.output) +
              ": unsupported image format (supported: " + render::supportedImageFormats() + ")");
         return 1;
     }
-    if (render::Status where = checkOutputFile(options.output); !where) {
+    if (base::Status where = checkOutputFile(options.output); !where) {
         fail("render: " + where.error());
         return 1;
     }
     // The project itself before it is read; the models and textures it names once it is loaded.
-    if (render::Status distinct = checkNotAnInput(options.output, {options.project}); !distinct) {
+    if (base::Status distinct = checkNotAnInput(options.output, {options.project}); !distinct) {
         fail("render: " + distinct.error());
         return 1;
     }
-    if (render::Status target = render::checkImageTarget(options.output, options.width, options.height);
+    if (base::Status target = render::checkImageTarget(options.output, options.width, options.height);
         !target) {
         fail(target.error());
         return 1;
@@ -315,7 +315,7 @@ int runRender(const CliOptions& options) {
         {"speculum:renderTimeMs", std::to_string(still->totalMs)},
         {"speculum:renderer", frame->glDescription},
     };
-    if (render::Status written = render::writeImage(options.output, still->image, metadata); !written) {
+    if (base::Status written = render::writeImage(options.output, still->image, metadata); !written) {
         fail(written.error());
         return 1;
     }
@@ -323,7 +323,7 @@ int runRender(const CliOptions& options) {
         std::cerr << "speculum: rendered " << sizeText(options.width, options.height) << " with "
                   << still->samples << (still->samples == 1 ? " sample" : " samples") << " per pixel in "
                   << static_cast<int>(still->totalMs + 0.5) << " ms\n";
-    std::cout << render::printable(options.output, 4096) << "\n";
+    std::cout << base::printable(options.output, 4096) << "\n";
     return 0;
 }
 
@@ -426,26 +426,26 @@ int runExplain(const CliOptions& options) {
         const render::PlannedPass& p = report.planned(run);
         const std::string kind(render::toString(p.kind));
         std::printf("  %-11s %-14s gpu %7.2f ms  cpu %7.2f ms  %s\n", kind.c_str(),
-                    p.target.empty() ? "-" : render::printable(p.target).c_str(), run.gpuMs, run.cpuMs,
+                    p.target.empty() ? "-" : base::printable(p.target).c_str(), run.gpuMs, run.cpuMs,
                     oneLine(report.reason(run)).c_str());
     }
     if (drawnEnvmap && (!drawnEnvmap->passes.empty() || !drawnEnvmap->skipped.empty())) {
         std::printf("\nInside the environment map of %s (drawn by its envmap pass):\n",
-                    render::printable(drawnEnvmap->target).c_str());
+                    base::printable(drawnEnvmap->target).c_str());
         for (const render::PlannedPass& p : drawnEnvmap->passes) {
             const std::string kind(render::toString(p.kind));
-            std::printf("  %-11s %-14s %s\n", kind.c_str(), render::printable(p.target).c_str(),
+            std::printf("  %-11s %-14s %s\n", kind.c_str(), base::printable(p.target).c_str(),
                         oneLine(p.reason).c_str());
         }
         for (const render::SkippedEffect& s : drawnEnvmap->skipped)
-            std::printf("  %-11s %-14s %s\n", "skipped", render::printable(s.target).c_str(),
+            std::printf("  %-11s %-14s %s\n", "skipped", base::printable(s.target).c_str(),
                         oneLine(s.reason).c_str());
     }
     std::printf("\nSkipped:\n");
     if (report.skipped.empty())
         std::printf("  (nothing)\n");
     for (const render::SkippedEffect& s : report.skipped)
-        std::printf("  %-14s %s\n", s.target.empty() ? "-" : render::printable(s.target).c_str(),
+        std::printf("  %-14s %s\n", s.target.empty() ? "-" : base::printable(s.target).c_str(),
                     oneLine(s.reason).c_str());
     // What the frame could not do as the scene asks (a map larger than the GPU holds, a missing texture).
     if (!report.warnings.empty()) {
@@ -464,10 +464,10 @@ int runExport(const CliOptions& options) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension != ".glb" && extension != ".gltf") {
-        fail(render::quoted(options.output) + ": unsupported export format (supported: .glb, .gltf)");
+        fail(base::quoted(options.output) + ": unsupported export format (supported: .glb, .gltf)");
         return 1;
     }
-    if (render::Status where = checkOutputFile(options.output); !where) {
+    if (base::Status where = checkOutputFile(options.output); !where) {
         fail("export: " + where.error());
         return 1;
     }
@@ -477,34 +477,34 @@ int runExport(const CliOptions& options) {
         const std::filesystem::path stem = out.parent_path() / out.stem();
         companions = {stem.string() + ".bin", stem.string() + "_"};
     }
-    if (render::Status distinct = checkNotAnInput(options.output, {options.project}, companions); !distinct) {
+    if (base::Status distinct = checkNotAnInput(options.output, {options.project}, companions); !distinct) {
         fail("export: " + distinct.error());
         return 1;
     }
     document::Scene scene;
-    if (render::Status opened = loadProjectScene(options.project, scene); !opened) {
+    if (base::Status opened = loadProjectScene(options.project, scene); !opened) {
         fail(opened.error());
         return 1;
     }
     document::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const ProjectFiles files = checkProjectFiles(options.project, scene, meshes, warnings);
-    if (render::Status missing = applyMissingFiles(files, policyOf(options)); !missing) {
+    if (base::Status missing = applyMissingFiles(files, policyOf(options)); !missing) {
         fail("export: " + missing.error());
         return 1;
     }
-    if (render::Status distinct = checkNotAnInput(options.output, files.inputs, companions); !distinct) {
+    if (base::Status distinct = checkNotAnInput(options.output, files.inputs, companions); !distinct) {
         fail("export: " + distinct.error());
         return 1;
     }
-    const render::Status exported =
+    const base::Status exported =
         document::exportGltf(scene, QString::fromStdString(options.output), meshes, warnings);
     if (!exported) {
         fail("export: " + exported.error()); // alone: a failure is one line
         return 1;
     }
     printWarnings(warnings);
-    std::cout << render::printable(options.output, 4096) << "\n";
+    std::cout << base::printable(options.output, 4096) << "\n";
     return 0;
 }
 

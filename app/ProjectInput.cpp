@@ -1,9 +1,9 @@
 #include "app/ProjectInput.hpp"
 
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
-#include "render/io/FileKind.hpp"
-#include "render/io/Printable.hpp"
+#include "base/FileKind.hpp"
+#include "base/Printable.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QFileInfo>
 #include <cerrno>
@@ -20,7 +20,7 @@ namespace {
 // Why `path` cannot be read as a texture, or empty when it can: a regular file that opens for reading.
 // O_NONBLOCK: a path swapped for a FIFO after the check still cannot block the open.
 std::string unreadable(const std::string& path) {
-    if (render::Status regular = render::requireRegularFile(path); !regular)
+    if (base::Status regular = base::requireRegularFile(path); !regular)
         return regular.error();
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0)
@@ -78,16 +78,16 @@ void printError(const std::string& message) {
     std::cerr << "speculum: error: " << oneLine(message) << "\n";
 }
 
-render::Status loadProjectScene(const std::string& project, document::Scene& scene) {
+base::Status loadProjectScene(const std::string& project, document::Scene& scene) {
     const QString path = QString::fromStdString(project);
     // Only a regular file is read: a FIFO or /dev/stdin would block the command for good.
-    if (const render::Status regular = render::requireRegularFile(project); !regular)
-        return render::Error{render::quoted(project) + ": " + regular.error()};
+    if (const base::Status regular = base::requireRegularFile(project); !regular)
+        return base::Error{base::quoted(project) + ": " + regular.error()};
     std::vector<std::string> warnings;
-    if (render::Status opened = document::openProject(scene, path, warnings); !opened)
-        return render::Error{render::quoted(project) + ": " + opened.error()};
+    if (base::Status opened = document::openProject(scene, path, warnings); !opened)
+        return base::Error{base::quoted(project) + ": " + opened.error()};
     printWarnings(warnings);
-    return render::Done{};
+    return base::Done{};
 }
 
 ProjectFiles checkProjectFiles(const std::string& project, const document::Scene& scene,
@@ -103,8 +103,8 @@ ProjectFiles checkProjectFiles(const std::string& project, const document::Scene
             return;
         files.inputs.push_back(path);
         if (const std::string why = unreadable(path); !why.empty()) {
-            files.problems.push_back("node " + render::quoted(node) + ": texture " + render::quoted(path) +
-                                     ": " + why);
+            files.problems.push_back("node " + base::quoted(node) + ": texture " + base::quoted(path) + ": " +
+                                     why);
             files.textureProblems.push_back(files.problems.back());
             files.badTextures.insert(path);
         }
@@ -127,43 +127,43 @@ ProjectFiles checkProjectFiles(const std::string& project, const document::Scene
         if (parts) {
             auto model = meshes.model(d.mesh->file, warnings);
             if (!model) {
-                files.problems.push_back("node " + render::quoted(d.name) + ": model " + model.error());
+                files.problems.push_back("node " + base::quoted(d.name) + ": model " + model.error());
                 return;
             }
             for (const document::MaterialComponent& m : (*model)->materials)
                 textures(d.name, m);
         } else if (auto mesh = meshes.get(*d.mesh, warnings); !mesh) {
-            files.problems.push_back("node " + render::quoted(d.name) + ": model " + mesh.error());
+            files.problems.push_back("node " + base::quoted(d.name) + ": model " + mesh.error());
         }
     });
     return files;
 }
 
-render::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy) {
+base::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy) {
     if (files.problems.empty() || policy == MissingFiles::Report)
-        return render::Done{};
+        return base::Done{};
     if (policy == MissingFiles::KeepGoing) {
         // Models that failed are skipped by the snapshot, which warns of each ("mesh skipped: ...").
         printWarnings(files.textureProblems);
-        return render::Done{};
+        return base::Done{};
     }
     std::string message = files.problems.front();
     if (files.problems.size() > 1)
         message += " (and " + std::to_string(files.problems.size() - 1) + " more)";
-    return render::Error{message + "; --keep-going goes on without it"};
+    return base::Error{message + "; --keep-going goes on without it"};
 }
 
-render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time, MissingFiles policy) {
+base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time, MissingFiles policy) {
     auto owned = std::make_unique<document::Scene>();
     document::Scene& scene = *owned;
-    if (render::Status opened = loadProjectScene(project, scene); !opened)
-        return render::Error{opened.error()};
+    if (base::Status opened = loadProjectScene(project, scene); !opened)
+        return base::Error{opened.error()};
     ProjectFrame frame;
     frame.meshes = std::make_unique<document::MeshLibrary>();
     std::vector<std::string> warnings;
     const ProjectFiles files = checkProjectFiles(project, scene, *frame.meshes, warnings);
-    if (render::Status missing = applyMissingFiles(files, policy); !missing)
-        return render::Error{missing.error()};
+    if (base::Status missing = applyMissingFiles(files, policy); !missing)
+        return base::Error{missing.error()};
     frame.inputs = files.inputs;
     frame.input = document::snapshot(scene, time, *frame.meshes, warnings);
     if (policy == MissingFiles::KeepGoing)

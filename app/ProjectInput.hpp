@@ -1,9 +1,9 @@
 #pragma once
 
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/Scene.hpp"
-#include "render/FrameInput.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "render/frame/FrameInput.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <memory>
 #include <set>
@@ -42,7 +42,7 @@ struct ProjectFrame {
 
 // Opens PROJECT into `scene`; load warnings go to stderr. Errors name the file and, for a bad file, the
 // JSON path.
-render::Status loadProjectScene(const std::string& project, document::Scene& scene);
+base::Status loadProjectScene(const std::string& project, document::Scene& scene);
 
 // The models and textures `scene` names, each imported (into `meshes`, so a later snapshot reuses it) or
 // checked to be a readable regular file. Import warnings are appended to `warnings`.
@@ -51,16 +51,16 @@ ProjectFiles checkProjectFiles(const std::string& project, const document::Scene
 
 // Applies `policy` to the problems found: Fail gives one error line (the first problem, how many more, and
 // the option that goes on); KeepGoing prints each as a warning; Report does nothing.
-render::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy);
+base::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy);
 
 // Loads PROJECT and evaluates it at `time`; warnings go to stderr. Errors name the file and, for a bad
 // file, the JSON path; with MissingFiles::Fail, a missing or unreadable model or texture is an error too.
-render::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time,
-                                              MissingFiles policy = MissingFiles::Report);
+base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time,
+                                            MissingFiles policy = MissingFiles::Report);
 
 // The message made safe for one line on a terminal: control characters become visible escapes. A
 // backstop for text from deeper layers (renderer warnings, library errors) that may quote a name raw;
-// the layers themselves quote with render::quoted.
+// the layers themselves quote with base::quoted.
 std::string oneLine(std::string_view message);
 
 // Prints "speculum: warning: ..." lines on stderr, one line each.

@@ -4,12 +4,12 @@
 #include "app/TimeCommand.hpp"
 
 #include "app/ProjectInput.hpp"
-#include "editor/document/Snapshot.hpp"
-#include "render/FrameReport.hpp"
-#include "render/Renderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/gl/Objects.hpp"
+#include "render/plan/FrameReport.hpp"
 #include "render/plan/Planner.hpp"
+#include "render/renderer/Renderer.hpp"
+#include "scene/evaluate/Snapshot.hpp"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -2,9 +2,9 @@
 
 // What every GL benchmark needs: one headless context, one renderer, and an 8-bit target of a fixed size
 // (like a window's, so the composite pass does what it does on screen). Created on first use.
-#include "render/Renderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/gl/Objects.hpp"
+#include "render/renderer/Renderer.hpp"
 
 #include <memory>
 

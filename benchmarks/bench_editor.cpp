@@ -3,13 +3,13 @@
 // snapshots, renders and repaints its handles. One iteration = one mouse move and the frame it causes.
 // Needs a display: scripts/with-display build/release/benchmarks/speculum_bench_editor
 #include "BenchViewport.hpp"
-#include "editor/document/Picking.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/Editor.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/evaluate/Picking.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -11,12 +11,12 @@
 // printed too, but it renders the very cube it is compared with (at the same n, so that it loses no detail)
 // and resamples it: it always costs more. Run: build/release/benchmarks/speculum_bench_envmap
 #include "BenchGl.hpp"
-#include "render/Renderer.hpp"
 #include "render/envmap/SolidAngle.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/mesh/Teapot.hpp"
+#include "render/renderer/Renderer.hpp"
 
 #include <algorithm>
 #include <benchmark/benchmark.h>

@@ -1,10 +1,10 @@
 // Frame time of the demo scenes at 1280×720 on whatever GL the machine has (llvmpipe in CI), and the
 // share of it each pass takes. Run: build/release/benchmarks/speculum_benchmarks
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
-#include "render/Renderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/gl/Objects.hpp"
+#include "render/renderer/Renderer.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <benchmark/benchmark.h>
 #include <map>

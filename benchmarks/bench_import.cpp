@@ -5,7 +5,7 @@
 // vertices written separately (argument 1, what welding is for); BM_AssimpOldSteps is Assimp alone with the
 // steps the import used to run (GenSmoothNormals, JoinIdenticalVertices, FindDegenerates), for comparison.
 // Run: build/release/benchmarks/speculum_bench_import
-#include "editor/document/ModelImport.hpp"
+#include "scene/import/ModelImport.hpp"
 
 #include <QDir>
 #include <QTemporaryDir>

@@ -10,11 +10,11 @@
 // (where they lie in memory) weighs on both sides alike too; the scenes share their lights and casters, so
 // trading them re-renders no shadow map (a frame that did would be counted and reported).
 #include "BenchGl.hpp"
-#include "render/Renderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/mesh/Teapot.hpp"
+#include "render/renderer/Renderer.hpp"
 
 #include <algorithm>
 #include <benchmark/benchmark.h>

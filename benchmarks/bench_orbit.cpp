@@ -8,12 +8,12 @@
 // --handle drags the move handle of the first node with a mesh instead (the same targets); --screenshot
 // saves the window at the end of each adaptive drag (a preview) and once it has rested.
 #include "BenchViewport.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/Editor.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QApplication>
 #include <QElapsedTimer>

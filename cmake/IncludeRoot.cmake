@@ -1,10 +1,10 @@
 # speculum_include_root(target files...): gives `target` an include root of its own, holding the headers
 # among `files` (absolute paths below the source root) at their usual paths: the headers are linked
-# (symlinks, at configure time) into ${CMAKE_CURRENT_BINARY_DIR}/include/<target>/. A library's sources
-# then see only its own headers and those of the libraries it links, so an include that crosses a layer
-# does not compile, while every #include keeps its "render/..." / "accuracy/..." spelling.
+# (symlinks, at configure time) into ${CMAKE_BINARY_DIR}/include/<target>/. A library's sources then see
+# only its own headers and those of the libraries it links, so an include that crosses a layer does not
+# compile, while every #include keeps its "render/..." / "scene/..." spelling.
 function(speculum_include_root target)
-    set(root ${CMAKE_CURRENT_BINARY_DIR}/include/${target})
+    set(root ${CMAKE_BINARY_DIR}/include/${target})
     file(REMOVE_RECURSE ${root}) # a header that moved away must not stay reachable
     foreach(file IN LISTS ARGN)
         if(NOT file MATCHES "\\.(h|hpp)$")
@@ -15,5 +15,11 @@ function(speculum_include_root target)
         file(MAKE_DIRECTORY ${folder})
         file(CREATE_LINK ${file} ${root}/${relative} SYMBOLIC)
     endforeach()
-    target_include_directories(${target} PUBLIC ${root})
+    file(MAKE_DIRECTORY ${root})
+    get_target_property(type ${target} TYPE)
+    if(type STREQUAL "INTERFACE_LIBRARY")
+        target_include_directories(${target} INTERFACE ${root})
+    else()
+        target_include_directories(${target} PUBLIC ${root})
+    endif()
 endfunction()

@@ -1,6 +1,6 @@
 #include "editor/document/DocumentSession.hpp"
 
-#include "editor/document/ProjectFile.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QUndoStack>
 
@@ -37,16 +37,16 @@ void DocumentSession::replace(SceneData data, const QString& projectPath, bool u
     clearHistory(unsaved);
 }
 
-render::Status DocumentSession::open(const QString& absolutePath, std::vector<std::string>& warnings) {
-    render::Status status = openProject(*m_scene, absolutePath, warnings);
+base::Status DocumentSession::open(const QString& absolutePath, std::vector<std::string>& warnings) {
+    base::Status status = openProject(*m_scene, absolutePath, warnings);
     if (status) {
         clearHistory(false); // the old document's commands refer to nodes that no longer exist
     }
     return status;
 }
 
-render::Status DocumentSession::save(const QString& absolutePath) {
-    render::Status status = saveProject(*m_scene, absolutePath);
+base::Status DocumentSession::save(const QString& absolutePath) {
+    base::Status status = saveProject(*m_scene, absolutePath);
     if (status) {
         m_scene->setProjectPath(absolutePath);
         m_undoStack->setClean();

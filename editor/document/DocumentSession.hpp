@@ -1,8 +1,8 @@
 #pragma once
 
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/Scene.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QObject>
 #include <QString>
@@ -37,9 +37,9 @@ public:
     // counts as modified until saved (a restored recovery file).
     void replace(SceneData data, const QString& projectPath, bool unsaved = false);
     // Opens a project file; on failure the open document stays exactly as it was. Load warnings are appended.
-    render::Status open(const QString& absolutePath, std::vector<std::string>& warnings);
+    base::Status open(const QString& absolutePath, std::vector<std::string>& warnings);
     // Writes the document; on success the file becomes the document's and the history is clean.
-    render::Status save(const QString& absolutePath);
+    base::Status save(const QString& absolutePath);
 
 private:
     void clearHistory(bool unsaved);

@@ -3,11 +3,11 @@
 #include "editor/document/Commands.hpp"
 #include "editor/document/EditTransaction.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/NodeMath.hpp"
-#include "editor/document/PickScene.hpp"
-#include "editor/document/Picking.hpp"
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
+#include "scene/evaluate/PickScene.hpp"
+#include "scene/evaluate/Picking.hpp"
+#include "scene/model/NodeMath.hpp"
 
 #include <QFileInfo>
 #include <QString>
@@ -138,9 +138,9 @@ double duplicateShift(const render::math::Box& box, const std::vector<render::ma
 
 } // namespace
 
-render::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree) {
+base::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree) {
     if (auto ok = canAdd(scene, tree); !ok) {
-        return render::Error{ok.error()};
+        return base::Error{ok.error()};
     }
     tree.data.name = uniqueName(scene, tree.data.name);
     EditTransaction edit(undo);
@@ -151,10 +151,10 @@ render::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree
     return id;
 }
 
-render::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots) {
+base::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots) {
     const std::vector<NodeId> nodes = existing(scene, roots);
     if (nodes.empty()) {
-        return render::Error{"nothing is selected"};
+        return base::Error{"nothing is selected"};
     }
     EditTransaction edit(undo,
                          nodes.size() > 1 ? QStringLiteral("Delete %1 nodes").arg(nodes.size()) : QString());
@@ -162,14 +162,14 @@ render::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<Nod
         edit.push(new RemoveNodeCommand(scene, id));
     }
     edit.commit();
-    return render::Done{};
+    return base::Done{};
 }
 
-render::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
-                                          NodeId current, MeshLibrary* meshes, double timeSeconds) {
+base::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
+                                        NodeId current, MeshLibrary* meshes, double timeSeconds) {
     const std::vector<NodeId> nodes = existing(scene, roots);
     if (nodes.empty()) {
-        return render::Error{"nothing is selected"};
+        return base::Error{"nothing is selected"};
     }
     EditTransaction edit(undo, nodes.size() > 1 ? QStringLiteral("Duplicate %1 nodes").arg(nodes.size())
                                                 : QString());
@@ -216,22 +216,22 @@ render::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const 
     return result;
 }
 
-render::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name) {
+base::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name) {
     const Node* node = scene.findNode(id);
     if (!node) {
-        return render::Error{"no such node"};
+        return base::Error{"no such node"};
     }
     const std::string trimmed = QString::fromStdString(name).trimmed().toStdString();
     if (trimmed.empty()) {
-        return render::Error{"a name cannot be empty"};
+        return base::Error{"a name cannot be empty"};
     }
     if (trimmed == node->name()) {
-        return render::Error{"the name is unchanged"};
+        return base::Error{"the name is unchanged"};
     }
     EditTransaction edit(undo);
     edit.push(new RenameNodeCommand(scene, id, trimmed));
     edit.commit();
-    return render::Done{};
+    return base::Done{};
 }
 
 std::vector<NodeId> outermostInTreeOrder(const Scene& scene, const std::vector<NodeId>& ids) {
@@ -265,17 +265,17 @@ std::vector<NodeId> outermostInTreeOrder(const Scene& scene, const std::vector<N
     return outermost;
 }
 
-render::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& ids, NodeId newParent,
-                         int index) {
+base::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& ids, NodeId newParent,
+                       int index) {
     if (newParent != kNoNode && !scene.findNode(newParent)) {
-        return render::Error{"no such parent node"};
+        return base::Error{"no such parent node"};
     }
     if (std::any_of(ids.begin(), ids.end(), [&](NodeId id) { return scene.isAncestor(id, newParent); })) {
-        return render::Error{"a node cannot go into its own subtree"};
+        return base::Error{"a node cannot go into its own subtree"};
     }
     const std::vector<NodeId> nodes = outermostInTreeOrder(scene, ids);
     if (nodes.empty()) {
-        return render::Error{"nothing to move"};
+        return base::Error{"nothing to move"};
     }
     // One at a time, each right after the one before, with the scene's indexes as they are after the
     // previous moves: taking a node out from above the drop position shifts the positions after it.
@@ -290,25 +290,25 @@ render::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeI
         next = scene.indexOf(id) + 1;
     }
     if (edit.empty()) {
-        return render::Error{"the nodes are there already"};
+        return base::Error{"the nodes are there already"};
     }
     edit.commit();
-    return render::Done{};
+    return base::Done{};
 }
 
-render::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Camera& view) {
+base::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Camera& view) {
     CameraData camera = scene.camera();
     camera.position = view.position;
     camera.target = view.target;
     camera.up = view.up;
     camera.far = std::min(std::max(camera.far, view.far), camera.near * render::kMaxFarNearRatio);
     if (camera == scene.camera()) {
-        return render::Done{}; // already so: no step
+        return base::Done{}; // already so: no step
     }
     EditTransaction edit(undo, QStringLiteral("Set scene camera from view"));
     edit.push(new SetCameraCommand(scene, camera));
     edit.commit();
-    return render::Done{};
+    return base::Done{};
 }
 
 PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const ImportedModel& model,

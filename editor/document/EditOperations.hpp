@@ -1,11 +1,11 @@
 #pragma once
 
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/ModelImport.hpp"
+#include "base/Result.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/Scene.hpp"
-#include "render/FrameInput.hpp"
-#include "render/Result.hpp"
+#include "render/frame/FrameInput.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/import/ModelImport.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <glm/vec3.hpp>
 #include <optional>
@@ -24,11 +24,11 @@ namespace speculum::document {
 
 // Adds `tree` at the top level, its name made unique ("Sphere 2"): "Add “Sphere 2”". Refused when the scene
 // would get a second curved reflector (the message names the node that has it). Returns the new node.
-render::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree);
+base::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree);
 
 // Deletes the nodes with their subtrees: "Delete “Box”", or "Delete 3 nodes". `roots` are outermost nodes
 // (view::Selection::roots()): none under another. Unknown ids are skipped; none left is an error.
-render::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots);
+base::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots);
 
 struct Duplicates {
     std::vector<NodeId> copies;    // one per root, in the same order
@@ -41,25 +41,25 @@ struct Duplicates {
 // never lands exactly on the original. `meshes` gives the boxes of model files (without it only built-in
 // shapes and mirrors are measured: a file is never read here); `timeSeconds` is the animation time at
 // which they are measured.
-render::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
-                                          NodeId current = kNoNode, MeshLibrary* meshes = nullptr,
-                                          double timeSeconds = 0.0);
+base::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
+                                        NodeId current = kNoNode, MeshLibrary* meshes = nullptr,
+                                        double timeSeconds = 0.0);
 
 // "Rename “A” to “B”". The name is trimmed; an empty or unchanged name is refused.
-render::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name);
+base::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name);
 
 // Moves the nodes under newParent (kNoNode: the top level) before scene position `index` of its current
 // children (-1: at the end), one after the other in tree order; a node under another of them goes with
 // that one. "Move “A”", or "Move 3 nodes". Refused when a node would go into its own subtree; a move that
 // changes no position leaves no step (and is an error).
-render::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& ids, NodeId newParent,
-                         int index);
+base::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& ids, NodeId newParent,
+                       int index);
 // Of `ids`, those that exist and lie under no other of them, sorted in tree order (repeats dropped).
 std::vector<NodeId> outermostInTreeOrder(const Scene& scene, const std::vector<NodeId>& ids);
 
 // Makes the scene camera look like `view` (position, target, up; far kept within the depth range the
 // renderer allows): "Set scene camera from view". A view that already is the scene camera leaves no step.
-render::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Camera& view);
+base::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Camera& view);
 
 // How an imported model lands in the scene.
 struct ImportPlacement {

@@ -1,7 +1,7 @@
 #include "editor/document/NodeFactory.hpp"
 
-#include "editor/document/PickScene.hpp"
-#include "editor/document/Picking.hpp"
+#include "scene/evaluate/PickScene.hpp"
+#include "scene/evaluate/Picking.hpp"
 
 #include <QFileInfo>
 #include <algorithm>
@@ -256,16 +256,16 @@ NodeId reflectorNode(const Scene& scene) {
     return found;
 }
 
-render::Status canAdd(const Scene& scene, const NodeTree& tree) {
+base::Status canAdd(const Scene& scene, const NodeTree& tree) {
     if (!hasReflector(tree)) {
-        return render::Done{};
+        return base::Done{};
     }
     if (const NodeId existing = reflectorNode(scene); existing != kNoNode) {
-        return render::Error{"A scene has at most one curved reflector, and \"" +
-                             scene.findNode(existing)->name() +
-                             "\" already is one. Remove its reflector first, or make this a mirror."};
+        return base::Error{"A scene has at most one curved reflector, and \"" +
+                           scene.findNode(existing)->name() +
+                           "\" already is one. Remove its reflector first, or make this a mirror."};
     }
-    return render::Done{};
+    return base::Done{};
 }
 
 NodeTree duplicateTree(const Scene& scene, NodeId id, bool* droppedReflector) {

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/Scene.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 #include "render/math/Projection.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QString>
 #include <glm/vec3.hpp>
@@ -63,7 +63,7 @@ std::string uniqueName(const Scene& scene, const std::string& base);
 NodeId reflectorNode(const Scene& scene);
 
 // Whether `tree` may be added: a scene has at most one reflector. The message says which node has it.
-render::Status canAdd(const Scene& scene, const NodeTree& tree);
+base::Status canAdd(const Scene& scene, const NodeTree& tree);
 
 // Copy of a node's subtree for "Duplicate": the copy's name is made unique, and a reflector in the copy is
 // dropped (with the returned flag set) since the scene may hold only one.

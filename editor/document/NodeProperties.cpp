@@ -1,6 +1,6 @@
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,13 +32,13 @@ ComponentInfo nodeGroup() {
     name.info.label = QStringLiteral("Name");
     name.info.kind = PropertyKind::Text;
     name.get = [](const NodeData& d) { return QVariant(QString::fromStdString(d.name)); };
-    name.set = [](NodeData& d, const QVariant& v) -> render::Status {
+    name.set = [](NodeData& d, const QVariant& v) -> base::Status {
         const QString text = v.toString().trimmed();
         if (text.isEmpty()) {
-            return render::Error{"Name must not be empty"};
+            return base::Error{"Name must not be empty"};
         }
         d.name = text.toStdString();
-        return render::Done{};
+        return base::Done{};
     };
     c.properties.push_back(name);
     return c;
@@ -75,9 +75,9 @@ ComponentInfo meshGroup() {
         d.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
         return ok();
     };
-    c.remove = [](NodeData& d) -> render::Status {
+    c.remove = [](NodeData& d) -> base::Status {
         if (d.reflector) {
-            return render::Error{"The reflector's surface is this mesh: remove the reflector first"};
+            return base::Error{"The reflector's surface is this mesh: remove the reflector first"};
         }
         d.mesh.reset();
         return ok();
@@ -97,13 +97,13 @@ ComponentInfo meshGroup() {
             }
             return static_cast<int>(std::find(kinds.begin(), kinds.end(), *d.mesh->builtin) - kinds.begin());
         },
-        [](NodeData& d, int i) -> render::Status {
+        [](NodeData& d, int i) -> base::Status {
             if (!d.mesh) {
-                return render::Error{"Shape does not apply to this node"};
+                return base::Error{"Shape does not apply to this node"};
             }
             if (i == 4) {
                 if (d.mesh->file.empty()) {
-                    return render::Error{"Shape: choose the model file in the File field"};
+                    return base::Error{"Shape: choose the model file in the File field"};
                 }
                 d.mesh = MeshComponent::fromFile(d.mesh->file);
                 return ok();
@@ -127,7 +127,7 @@ ComponentInfo meshGroup() {
                                        false);
     // Choosing a file makes it the mesh's source.
     auto setFile = file.set;
-    file.set = [setFile](NodeData& d, const QVariant& v) -> render::Status {
+    file.set = [setFile](NodeData& d, const QVariant& v) -> base::Status {
         NodeData copy = d;
         if (auto status = setFile(copy, v); !status) {
             return status;
@@ -145,14 +145,14 @@ ComponentInfo meshGroup() {
     part.get = [](const NodeData& d) {
         return d.mesh && !d.mesh->builtin ? QVariant(d.mesh->part.value_or(-1)) : QVariant();
     };
-    part.set = [](NodeData& d, const QVariant& v) -> render::Status {
+    part.set = [](NodeData& d, const QVariant& v) -> base::Status {
         if (!d.mesh || d.mesh->builtin) {
-            return render::Error{"Part: only model files have parts"};
+            return base::Error{"Part: only model files have parts"};
         }
         bool parsed = false;
         const double x = v.toDouble(&parsed);
         if (!parsed || !std::isfinite(x) || x != std::floor(x) || x < -1.0 || x > 1e9) {
-            return render::Error{"Part expects a whole number, -1 (the whole file) or more"};
+            return base::Error{"Part expects a whole number, -1 (the whole file) or more"};
         }
         if (x < 0.0) {
             d.mesh->part.reset();
@@ -286,9 +286,9 @@ ComponentInfo lightGroup() {
     c.properties.push_back(boolean<NodeData>(
         QStringLiteral("light.shadows"), QStringLiteral("Casts shadows"),
         [](const NodeData& d) { return d.light && d.light->shadows.has_value(); },
-        [](NodeData& d, bool on) -> render::Status {
+        [](NodeData& d, bool on) -> base::Status {
             if (!d.light) {
-                return render::Error{"Casts shadows does not apply to this node"};
+                return base::Error{"Casts shadows does not apply to this node"};
             }
             if (on && !d.light->shadows) {
                 d.light->shadows = ShadowComponent{};
@@ -338,9 +338,9 @@ ComponentInfo animationGroup() {
     c.properties.push_back(boolean<NodeData>(
         QStringLiteral("animation.bounce"), QStringLiteral("Bounce"),
         [](const NodeData& d) { return d.animation && d.animation->bounce.has_value(); },
-        [](NodeData& d, bool on) -> render::Status {
+        [](NodeData& d, bool on) -> base::Status {
             if (!d.animation) {
-                return render::Error{"Bounce does not apply to this node"};
+                return base::Error{"Bounce does not apply to this node"};
             }
             if (on && !d.animation->bounce) {
                 d.animation->bounce = BounceAnimation{};
@@ -373,9 +373,9 @@ ComponentInfo animationGroup() {
     c.properties.push_back(boolean<NodeData>(
         QStringLiteral("animation.orbit"), QStringLiteral("Orbit"),
         [](const NodeData& d) { return d.animation && d.animation->orbit.has_value(); },
-        [](NodeData& d, bool on) -> render::Status {
+        [](NodeData& d, bool on) -> base::Status {
             if (!d.animation) {
-                return render::Error{"Orbit does not apply to this node"};
+                return base::Error{"Orbit does not apply to this node"};
             }
             if (on && !d.animation->orbit) {
                 OrbitAnimation o;

@@ -2,10 +2,10 @@
 
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
-#include "editor/document/SceneChecks.hpp"
-#include "render/GlossyLimits.hpp"
-#include "render/SceneLimits.hpp"
-#include "render/SceneNames.hpp"
+#include "render/frame/GlossyLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
+#include "render/frame/SceneNames.hpp"
+#include "scene/model/SceneChecks.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -46,9 +46,9 @@ std::vector<Property<SceneSettings>> makeSettingsProperties() {
     list.push_back(boolean<SceneSettings>(
         QStringLiteral("settings.simplifyReflections"), QStringLiteral("Simplify big meshes in reflections"),
         [](const SceneSettings& s) { return s.simplifyReflections; },
-        [](SceneSettings& s, bool on) -> render::Status {
+        [](SceneSettings& s, bool on) -> base::Status {
             s.simplifyReflections = on;
-            return render::Done{};
+            return base::Done{};
         },
         QStringLiteral("Mirrors and the reflector's map draw meshes of more than 100 000 triangles at a "
                        "simplified level")));
@@ -58,9 +58,9 @@ std::vector<Property<SceneSettings>> makeSettingsProperties() {
     list.push_back(enumeration<SceneSettings>(
         QStringLiteral("settings.glossyFilter"), QStringLiteral("Rough reflections"), filters,
         [](const SceneSettings& s) { return static_cast<int>(s.glossyFilter); },
-        [](SceneSettings& s, int i) -> render::Status {
+        [](SceneSettings& s, int i) -> base::Status {
             s.glossyFilter = static_cast<GlossyFilter>(i);
-            return render::Done{};
+            return base::Done{};
         }));
     list.back().info.tooltip =
         QStringLiteral("How rough mirrors and the rough reflector are approximated: one mip level chosen by "
@@ -84,7 +84,7 @@ std::vector<Property<CameraData>> makeCameraProperties() {
     // Position and target must differ and up must not be parallel to the view: checked on the whole camera.
     const auto checkCamera = [](Property<CameraData> p) {
         auto set = p.set;
-        p.set = [set](CameraData& c, const QVariant& v) -> render::Status {
+        p.set = [set](CameraData& c, const QVariant& v) -> base::Status {
             CameraData copy = c;
             if (auto s = set(copy, v); !s) {
                 return s;
@@ -95,11 +95,11 @@ std::vector<Property<CameraData>> makeCameraProperties() {
                     {"position", "Position"},  {"target", "Target"}, {"up", "Up"},
                     {"fovY", "Field of view"}, {"near", "Near"},     {"far", "Far"}};
                 const auto label = labels.find(problem->field);
-                return render::Error{"Camera " + (label != labels.end() ? label->second : problem->field) +
-                                     " " + problem->what};
+                return base::Error{"Camera " + (label != labels.end() ? label->second : problem->field) +
+                                   " " + problem->what};
             }
             c = std::move(copy);
-            return render::Done{};
+            return base::Done{};
         };
         return p;
     };
@@ -134,7 +134,7 @@ QString formatNumber(double value) {
     return QString::number(value, 'g', 10);
 }
 
-render::Status checkRange(const PropertyInfo& info, double value) {
+base::Status checkRange(const PropertyInfo& info, double value) {
     if (!std::isfinite(value)) {
         return fail(info, QStringLiteral("expects a finite number"));
     }
@@ -147,7 +147,7 @@ render::Status checkRange(const PropertyInfo& info, double value) {
                                        : QString(),
                                    rangeText(info), formatNumber(value)));
     }
-    return render::Done{};
+    return base::Done{};
 }
 
 const std::vector<ComponentInfo>& nodeComponents() {

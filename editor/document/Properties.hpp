@@ -1,7 +1,7 @@
 #pragma once
 
-#include "editor/document/SceneData.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "scene/model/SceneData.hpp"
 
 #include <QString>
 #include <QStringList>
@@ -48,7 +48,7 @@ struct Property {
     PropertyInfo info;
     std::function<QVariant(const T&)> get;
     // Writes value into target after validating it; on error target is unchanged.
-    std::function<render::Status(T&, const QVariant&)> set;
+    std::function<base::Status(T&, const QVariant&)> set;
     // Hidden when it does not apply (a spot angle on a point light); empty = always shown.
     std::function<bool(const T&)> visible;
 
@@ -63,8 +63,8 @@ struct ComponentInfo {
     std::function<bool(const NodeData&)> present;
     // Adds the component with defaults / removes it. Fails with a message when the node would become
     // invalid (a reflector needs a mesh).
-    std::function<render::Status(NodeData&)> add;
-    std::function<render::Status(NodeData&)> remove;
+    std::function<base::Status(NodeData&)> add;
+    std::function<base::Status(NodeData&)> remove;
     std::vector<Property<NodeData>> properties;
 };
 
@@ -79,7 +79,7 @@ const Property<CameraData>* findCameraProperty(const QString& key);
 
 // The checks of a number against info's range; the message names the label ("Reflectivity must be in
 // 0..1, got 2").
-render::Status checkRange(const PropertyInfo& info, double value);
+base::Status checkRange(const PropertyInfo& info, double value);
 
 // Formats a number the way messages show it (shortest form, no trailing zeros).
 QString formatNumber(double value);

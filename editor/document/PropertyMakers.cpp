@@ -1,14 +1,14 @@
 #include "editor/document/PropertyMakers.hpp"
 
-#include "editor/document/SceneChecks.hpp"
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
+#include "scene/model/SceneChecks.hpp"
 
 #include <QFileInfo>
 
 namespace speculum::document::makers {
 
-render::Status fail(const PropertyInfo& info, const QString& why) {
-    return render::Error{QStringLiteral("%1 %2").arg(info.label, why).toStdString()};
+base::Status fail(const PropertyInfo& info, const QString& why) {
+    return base::Error{QStringLiteral("%1 %2").arg(info.label, why).toStdString()};
 }
 
 std::optional<double> toNumber(const QVariant& v) {
@@ -52,7 +52,7 @@ Property<NodeData> filePath(QString key, QString label, Access<NodeData, std::st
         const std::string* s = read(access, d);
         return s ? QVariant(QString::fromStdString(*s)) : QVariant();
     };
-    p.set = [access, info = p.info, allowEmpty](NodeData& d, const QVariant& value) -> render::Status {
+    p.set = [access, info = p.info, allowEmpty](NodeData& d, const QVariant& value) -> base::Status {
         const QString path = value.toString().trimmed();
         std::string* field = access(d);
         if (!field) {
@@ -63,7 +63,7 @@ Property<NodeData> filePath(QString key, QString label, Access<NodeData, std::st
                 return fail(info, QStringLiteral("needs a file"));
             }
             field->clear();
-            return render::Done{};
+            return base::Done{};
         }
         const QFileInfo file(path);
         if (!file.isAbsolute()) {
@@ -74,13 +74,13 @@ Property<NodeData> filePath(QString key, QString label, Access<NodeData, std::st
         const qsizetype hash = path.lastIndexOf(QLatin1Char('#'));
         if (!file.isFile() && allowEmpty && hash > 0 && QFileInfo(path.left(hash)).isFile()) {
             *field = path.toStdString();
-            return render::Done{};
+            return base::Done{};
         }
         if (!file.isFile()) {
             return fail(info, QStringLiteral("file does not exist: %1").arg(path));
         }
         *field = file.absoluteFilePath().toStdString();
-        return render::Done{};
+        return base::Done{};
     };
     return p;
 }
@@ -116,8 +116,8 @@ QString positiveExtents(const glm::dvec2& s) {
     return {};
 }
 
-render::Status ok() {
-    return render::Done{};
+base::Status ok() {
+    return base::Done{};
 }
 
 } // namespace speculum::document::makers

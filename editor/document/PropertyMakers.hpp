@@ -1,7 +1,7 @@
 #pragma once
 
 #include "editor/document/Properties.hpp"
-#include "render/SceneNames.hpp"
+#include "render/frame/SceneNames.hpp"
 
 #include <array>
 #include <cmath>
@@ -20,7 +20,7 @@ namespace speculum::document::makers {
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // "<label> <why>" as an error for the user.
-render::Status fail(const PropertyInfo& info, const QString& why);
+base::Status fail(const PropertyInfo& info, const QString& why);
 
 std::optional<double> toNumber(const QVariant& v);
 
@@ -80,7 +80,7 @@ Property<T> number(QString key, QString label, Access<T, double> access, NumberR
         const double* d = read(access, v);
         return d ? QVariant(*d) : QVariant();
     };
-    p.set = [access, info = p.info](T& v, const QVariant& value) -> render::Status {
+    p.set = [access, info = p.info](T& v, const QVariant& value) -> base::Status {
         auto d = toNumber(value);
         if (!d) {
             return fail(info, QStringLiteral("expects a number"));
@@ -93,7 +93,7 @@ Property<T> number(QString key, QString label, Access<T, double> access, NumberR
             return fail(info, QStringLiteral("does not apply to this node"));
         }
         *field = *d;
-        return render::Done{};
+        return base::Done{};
     };
     return p;
 }
@@ -120,7 +120,7 @@ Property<T> integer(QString key, QString label, Access<T, int> access, NumberRan
         const int* i = read(access, v);
         return i ? QVariant(*i) : QVariant();
     };
-    p.set = [access, info = p.info, extraCheck](T& v, const QVariant& value) -> render::Status {
+    p.set = [access, info = p.info, extraCheck](T& v, const QVariant& value) -> base::Status {
         auto d = toNumber(value);
         if (!d || std::floor(*d) != *d) {
             return fail(info, QStringLiteral("expects a whole number"));
@@ -139,7 +139,7 @@ Property<T> integer(QString key, QString label, Access<T, int> access, NumberRan
             return fail(info, QStringLiteral("does not apply to this node"));
         }
         *field = i;
-        return render::Done{};
+        return base::Done{};
     };
     return p;
 }
@@ -155,7 +155,7 @@ Property<T> vector(QString key, QString label, Access<T, glm::vec<N, double>> ac
         const auto* x = read(access, v);
         return x ? fromVector<N>(*x) : QVariant();
     };
-    p.set = [access, info = p.info, check](T& v, const QVariant& value) -> render::Status {
+    p.set = [access, info = p.info, check](T& v, const QVariant& value) -> base::Status {
         auto x = toVector<N>(value);
         if (!x) {
             return fail(info, QStringLiteral("expects %1 numbers").arg(N));
@@ -178,7 +178,7 @@ Property<T> vector(QString key, QString label, Access<T, glm::vec<N, double>> ac
             return fail(info, QStringLiteral("does not apply to this node"));
         }
         *field = *x;
-        return render::Done{};
+        return base::Done{};
     };
     return p;
 }
@@ -194,7 +194,7 @@ Property<T> color(QString key, QString label, Access<T, glm::dvec3> access) {
 
 template <typename T>
 Property<T> boolean(QString key, QString label, std::function<bool(const T&)> get,
-                    std::function<render::Status(T&, bool)> set, QString tooltip = {}) {
+                    std::function<base::Status(T&, bool)> set, QString tooltip = {}) {
     Property<T> p;
     p.info.key = std::move(key);
     p.info.label = std::move(label);
@@ -207,7 +207,7 @@ Property<T> boolean(QString key, QString label, std::function<bool(const T&)> ge
 
 template <typename T>
 Property<T> enumeration(QString key, QString label, QStringList options, std::function<int(const T&)> get,
-                        std::function<render::Status(T&, int)> set) {
+                        std::function<base::Status(T&, int)> set) {
     Property<T> p;
     p.info.key = std::move(key);
     p.info.label = std::move(label);
@@ -217,7 +217,7 @@ Property<T> enumeration(QString key, QString label, QStringList options, std::fu
         const int i = get(v);
         return i < 0 ? QVariant() : QVariant(i);
     };
-    p.set = [set, info = p.info](T& v, const QVariant& value) -> render::Status {
+    p.set = [set, info = p.info](T& v, const QVariant& value) -> base::Status {
         bool ok = false;
         const int i = value.toInt(&ok);
         if (!ok || i < 0 || i >= info.options.size()) {
@@ -244,13 +244,13 @@ Property<NodeData> enumField(QString key, QString label, QStringList options, st
             }
             return -1;
         },
-        [access, values](NodeData& d, int i) -> render::Status {
+        [access, values](NodeData& d, int i) -> base::Status {
             E* e = access(d);
             if (!e) {
-                return render::Error{"this property does not apply to this node"};
+                return base::Error{"this property does not apply to this node"};
             }
             *e = values[static_cast<std::size_t>(i)];
-            return render::Done{};
+            return base::Done{};
         });
 }
 
@@ -284,6 +284,6 @@ Access<NodeData, V> in(std::optional<C> NodeData::*component, V C::*field) {
 QString nonZeroScale(const glm::dvec3& s);
 QString positiveExtents(const glm::dvec2& s);
 
-render::Status ok();
+base::Status ok();
 
 } // namespace speculum::document::makers

@@ -1,6 +1,6 @@
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 
 #include <type_traits>
 #include <utility>
@@ -42,9 +42,9 @@ ComponentInfo mirrorGroup() {
     c.properties.push_back(boolean<NodeData>(
         QStringLiteral("mirror.fresnel"), QStringLiteral("Fresnel"),
         [](const NodeData& d) { return d.mirror && d.mirror->fresnel; },
-        [](NodeData& d, bool on) -> render::Status {
+        [](NodeData& d, bool on) -> base::Status {
             if (!d.mirror) {
-                return render::Error{"Fresnel does not apply to this node"};
+                return base::Error{"Fresnel does not apply to this node"};
             }
             d.mirror->fresnel = on;
             return ok();
@@ -78,9 +78,9 @@ void addParallaxProperties(ComponentInfo& c) {
             }
             return d.reflector->parallax->shape == ParallaxShape::Sphere ? 1 : 2;
         },
-        [](NodeData& d, int i) -> render::Status {
+        [](NodeData& d, int i) -> base::Status {
             if (!d.reflector) {
-                return render::Error{"Parallax proxy does not apply to this node"};
+                return base::Error{"Parallax proxy does not apply to this node"};
             }
             if (i == 0) {
                 d.reflector->parallax.reset();
@@ -175,9 +175,9 @@ ComponentInfo reflectorGroup() {
     c.properties.push_back(boolean<NodeData>(
         QStringLiteral("reflector.fresnel"), QStringLiteral("Fresnel"),
         [](const NodeData& d) { return d.reflector && d.reflector->fresnel; },
-        [](NodeData& d, bool on) -> render::Status {
+        [](NodeData& d, bool on) -> base::Status {
             if (!d.reflector) {
-                return render::Error{"Fresnel does not apply to this node"};
+                return base::Error{"Fresnel does not apply to this node"};
             }
             d.reflector->fresnel = on;
             return ok();

@@ -1,11 +1,11 @@
 #include "editor/document/SweepResults.hpp"
 
 #include "accuracy/Sweep.hpp"
+#include "base/FileKind.hpp"
+#include "base/Printable.hpp"
 #include "editor/document/Commands.hpp"
-#include "editor/document/JsonDuplicateKeys.hpp"
-#include "editor/document/Scene.hpp"
-#include "render/io/FileKind.hpp"
-#include "render/io/Printable.hpp"
+#include "scene/model/Scene.hpp"
+#include "scene/project/JsonDuplicateKeys.hpp"
 
 #include <QFile>
 #include <QFileInfo>
@@ -16,22 +16,22 @@
 
 namespace speculum::document {
 
-render::Result<SweepResults> loadSweepResults(const QString& path) {
+base::Result<SweepResults> loadSweepResults(const QString& path) {
     // The user picks this file: named escaped in messages, read only if it is a regular file (a FIFO
     // would block the GUI thread), and a repeated key is refused rather than half-read.
-    const std::string name = render::printable(QFileInfo(path).fileName().toStdString());
-    const render::Result<std::string> bytes =
-        render::readRegularFile(QFile::encodeName(path).toStdString(), std::uintmax_t(256) << 20);
+    const std::string name = base::printable(QFileInfo(path).fileName().toStdString());
+    const base::Result<std::string> bytes =
+        base::readRegularFile(QFile::encodeName(path).toStdString(), std::uintmax_t(256) << 20);
     if (!bytes) {
-        return render::Error{name + ": " + bytes.error()};
+        return base::Error{name + ": " + bytes.error()};
     }
     QJsonParseError parseError;
     const QJsonDocument json = QJsonDocument::fromJson(QByteArray::fromStdString(*bytes), &parseError);
     if (json.isNull()) {
-        return render::Error{name + ": not JSON (" + parseError.errorString().toStdString() + ")"};
+        return base::Error{name + ": not JSON (" + parseError.errorString().toStdString() + ")"};
     }
     if (const std::optional<std::string> duplicate = findDuplicateKey(*bytes)) {
-        return render::Error{name + ": " + *duplicate};
+        return base::Error{name + ": " + *duplicate};
     }
     return accuracy::readJson(json.object(), name);
 }
@@ -74,8 +74,8 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
         const QString key = QString::fromStdString(setting.first);
         const QString value = QString::fromStdString(setting.second);
         // Both come from the results file: shown escaped in the applied / skipped lists.
-        const QString what = QString::fromStdString(render::printable(key.toStdString(), 40) + " = " +
-                                                    render::printable(value.toStdString(), 40));
+        const QString what = QString::fromStdString(base::printable(key.toStdString(), 40) + " = " +
+                                                    base::printable(value.toStdString(), 40));
         bool isInt = false;
         const int n = value.toInt(&isInt);
         int matched = 0;

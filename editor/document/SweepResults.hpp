@@ -1,8 +1,8 @@
 #pragma once
 
 #include "accuracy/Results.hpp"
-#include "editor/document/SceneData.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "scene/model/SceneData.hpp"
 
 #include <QString>
 #include <QStringList>
@@ -19,7 +19,7 @@ class Scene;
 using SweepResults = accuracy::ResultsFile;
 
 // Reads a bench results.json. Errors name the file and what is wrong ("results[3].psnr: expected a number").
-render::Result<SweepResults> loadSweepResults(const QString& path);
+base::Result<SweepResults> loadSweepResults(const QString& path);
 
 // What "parallax on" means for the scene's reflector when it has no proxy of its own: the sweep's box
 // around the scene (accuracy::sceneTraits), so the applied setting is the one that was measured. None

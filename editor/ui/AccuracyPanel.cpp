@@ -1,16 +1,16 @@
 #include "editor/ui/AccuracyPanel.hpp"
 
 #include "accuracy/Report.hpp"
+#include "base/FileKind.hpp"
+#include "base/Printable.hpp"
 #include "editor/document/Commands.hpp"
-#include "editor/document/Scene.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "editor/document/SweepResults.hpp"
 #include "editor/ui/SweepChart.hpp"
 #include "editor/ui/SweepRunJob.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
-#include "render/io/FileKind.hpp"
-#include "render/io/Printable.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -555,23 +555,23 @@ void AccuracyPanel::comparisonFailed(const QString& text, bool cancelled) {
     m_status->setText(cancelled ? tr("Cancelled.") : tr("Could not compare: %1").arg(text));
 }
 
-render::Status AccuracyPanel::loadSweepFile(const QString& path) {
+base::Status AccuracyPanel::loadSweepFile(const QString& path) {
     // A FIFO or a device as results.json would block the GUI thread in open() or read() for good: only a
     // regular file is handed to the reader.
-    if (auto regular = render::requireRegularFile(path.toStdString()); !regular) {
-        const std::string error = render::printable(path.toStdString()) + ": " + regular.error();
+    if (auto regular = base::requireRegularFile(path.toStdString()); !regular) {
+        const std::string error = base::printable(path.toStdString()) + ": " + regular.error();
         m_sweepMessage->setText(QString::fromStdString(error));
-        return render::Error{error};
+        return base::Error{error};
     }
     if (m_sweep->running()) {
         const std::string error = "a sweep is running: cancel it first";
         m_sweepMessage->setText(QString::fromStdString(error));
-        return render::Error{error};
+        return base::Error{error};
     }
     auto results = document::loadSweepResults(path);
     if (!results) {
         m_sweepMessage->setText(QString::fromStdString(results.error()));
-        return render::Error{results.error()};
+        return base::Error{results.error()};
     }
     m_chart->setResults(*results);
     m_findingsScroll->hide();
@@ -580,7 +580,7 @@ render::Status AccuracyPanel::loadSweepFile(const QString& path) {
                                 .arg(results->records.size())
                                 .arg(QString::fromStdString(results->run.scene),
                                      QString::fromStdString(results->size()), QFileInfo(path).fileName()));
-    return render::Done{};
+    return base::Done{};
 }
 
 void AccuracyPanel::loadSweepDialog() {

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "accuracy/Results.hpp"
+#include "base/Result.hpp"
 #include "editor/ui/ExactComparison.hpp"
-#include "render/Result.hpp"
 
 #include <QImage>
 #include <QLabel>
@@ -83,7 +83,7 @@ public:
     bool comparing() const { return m_comparison->running(); }
     void setPreviewWidth(int pixels);
     // Loads a bench results.json into the chart; the error names the file and the problem.
-    render::Status loadSweepFile(const QString& path);
+    base::Status loadSweepFile(const QString& path);
     SweepChart& chart() { return *m_chart; }
     bool sweeping() const;
     // The findings of the last finished sweep, as shown (Markdown); empty before one finished.

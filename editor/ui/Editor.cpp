@@ -1,10 +1,10 @@
 #include "editor/ui/Editor.hpp"
 
-#include "editor/document/SceneAnimation.hpp"
 #include "editor/ui/AppIdentity.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Screenshot.hpp"
 #include "editor/view/AnimationClock.hpp"
+#include "scene/model/SceneAnimation.hpp"
 
 #include <QApplication>
 #include <QMessageBox>
@@ -41,7 +41,7 @@ int runEditor(int& argc, char** argv, const std::string& projectPath) {
     MainWindow window;
     QString openError;
     if (!projectPath.empty()) {
-        render::Status status = window.openProjectFile(QString::fromStdString(projectPath));
+        base::Status status = window.openProjectFile(QString::fromStdString(projectPath));
         if (!status) {
             openError = QString::fromStdString(status.error());
         }

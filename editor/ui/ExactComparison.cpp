@@ -1,10 +1,10 @@
 #include "editor/ui/ExactComparison.hpp"
 
 #include "accuracy/Measure.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "render/image/ColorSpace.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
+#include "scene/evaluate/Snapshot.hpp"
 
 #include <QTimer>
 #include <algorithm>

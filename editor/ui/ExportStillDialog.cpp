@@ -1,6 +1,6 @@
 #include "editor/ui/ExportStillDialog.hpp"
 
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "editor/document/StillExport.hpp"
+#include "scene/export/StillExport.hpp"
 
 #include <QDialog>
 

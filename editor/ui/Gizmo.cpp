@@ -1,7 +1,7 @@
 #include "editor/ui/Gizmo.hpp"
 
-#include "editor/document/NodeMath.hpp"
 #include "render/math/Projection.hpp"
+#include "scene/model/NodeMath.hpp"
 
 #include <QLineF>
 #include <algorithm>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "editor/document/SceneData.hpp"
-#include "render/FrameInput.hpp"
+#include "render/frame/FrameInput.hpp"
+#include "scene/model/SceneData.hpp"
 
 #include <QPointF>
 #include <QSizeF>

@@ -1,7 +1,7 @@
 #include "editor/ui/HandleDrag.hpp"
 
 #include "editor/document/Commands.hpp"
-#include "editor/document/PickScene.hpp"
+#include "scene/evaluate/PickScene.hpp"
 
 #include <QUndoStack>
 

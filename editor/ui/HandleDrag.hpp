@@ -1,7 +1,7 @@
 #pragma once
 
-#include "editor/document/Scene.hpp"
 #include "editor/ui/Gizmo.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QPointF>
 #include <glm/mat4x4.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "editor/document/SceneData.hpp"
+#include "scene/model/SceneData.hpp"
 
 #include <QIcon>
 #include <QString>

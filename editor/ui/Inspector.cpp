@@ -248,7 +248,7 @@ void Inspector::changeComponent(const QString& key, bool add) {
         }
     }
     NodeData data = node->data();
-    const render::Status status = add ? c->add(data) : c->remove(data);
+    const base::Status status = add ? c->add(data) : c->remove(data);
     if (!status) {
         showError(key, QString::fromStdString(status.error()));
         return;
@@ -259,8 +259,8 @@ void Inspector::changeComponent(const QString& key, bool add) {
     document::pushEdit(m_undoStack, new document::SetNodeDataCommand(m_scene, node->id(), data, text));
 }
 
-render::Status Inspector::applyValue(const QString& key, const QVariant& value) {
-    render::Status status = render::Done{};
+base::Status Inspector::applyValue(const QString& key, const QVariant& value) {
+    base::Status status = base::Done{};
     if (m_selection.selectedNode()) {
         status = commitNode(key, value);
     } else if (document::findSettingsProperty(key)) {
@@ -276,18 +276,18 @@ render::Status Inspector::applyValue(const QString& key, const QVariant& value) 
     return status;
 }
 
-render::Status Inspector::commitNode(const QString& key, const QVariant& value) {
+base::Status Inspector::commitNode(const QString& key, const QVariant& value) {
     const document::Node* node = m_selection.selectedNode();
     const auto* p = document::findNodeProperty(key);
     if (!node || !p) {
-        return render::Error{"no such property: " + key.toStdString()};
+        return base::Error{"no such property: " + key.toStdString()};
     }
     NodeData data = node->data();
     if (auto status = p->set(data, value); !status) {
         return status;
     }
     if (data == node->data()) {
-        return render::Done{};
+        return base::Done{};
     }
     const QString text = key == QStringLiteral("node.name")
                              ? tr("Rename %1 to %2").arg(quoted(node->name()), quoted(data.name))
@@ -296,20 +296,20 @@ render::Status Inspector::commitNode(const QString& key, const QVariant& value) 
     document::pushEdit(m_undoStack,
                        new document::SetNodeDataCommand(m_scene, node->id(), data, text, mergeKey(key)));
     m_committing = false;
-    return render::Done{};
+    return base::Done{};
 }
 
-render::Status Inspector::commitSettings(const QString& key, const QVariant& value) {
+base::Status Inspector::commitSettings(const QString& key, const QVariant& value) {
     const auto* p = document::findSettingsProperty(key);
     if (!p) {
-        return render::Error{"no such property: " + key.toStdString()};
+        return base::Error{"no such property: " + key.toStdString()};
     }
     document::SceneSettings settings = m_scene.settings();
     if (auto status = p->set(settings, value); !status) {
         return status;
     }
     if (settings == m_scene.settings()) {
-        return render::Done{};
+        return base::Done{};
     }
     auto* command = new document::SetSettingsCommand(m_scene, settings, true);
     command->setText(tr("Change %1").arg(p->info.label));
@@ -317,20 +317,20 @@ render::Status Inspector::commitSettings(const QString& key, const QVariant& val
     m_committing = true;
     document::pushEdit(m_undoStack, command);
     m_committing = false;
-    return render::Done{};
+    return base::Done{};
 }
 
-render::Status Inspector::commitCamera(const QString& key, const QVariant& value) {
+base::Status Inspector::commitCamera(const QString& key, const QVariant& value) {
     const auto* p = document::findCameraProperty(key);
     if (!p) {
-        return render::Error{"no such property: " + key.toStdString()};
+        return base::Error{"no such property: " + key.toStdString()};
     }
     document::CameraData camera = m_scene.camera();
     if (auto status = p->set(camera, value); !status) {
         return status;
     }
     if (camera == m_scene.camera()) {
-        return render::Done{};
+        return base::Done{};
     }
     auto* command = new document::SetCameraCommand(m_scene, camera, true);
     command->setText(tr("Change camera %1").arg(p->info.label.toLower()));
@@ -338,7 +338,7 @@ render::Status Inspector::commitCamera(const QString& key, const QVariant& value
     m_committing = true;
     document::pushEdit(m_undoStack, command);
     m_committing = false;
-    return render::Done{};
+    return base::Done{};
 }
 
 void Inspector::showError(const QString& key, const QString& text) {

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "editor/document/Properties.hpp"
-#include "editor/document/Scene.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QHash>
 #include <QWidget>
@@ -37,7 +37,7 @@ public:
     QString errorText() const;
 
     // Applies a value as if typed into the editor (scripting and tests). Returns the validation result.
-    render::Status applyValue(const QString& key, const QVariant& value);
+    base::Status applyValue(const QString& key, const QVariant& value);
 
 signals:
     void message(const QString& text); // for the status bar
@@ -54,9 +54,9 @@ private:
     void changeComponent(const QString& key, bool add);
     QString mergeKey(const QString& key) const { return key + QLatin1Char('#') + QString::number(m_gesture); }
 
-    render::Status commitNode(const QString& key, const QVariant& value);
-    render::Status commitSettings(const QString& key, const QVariant& value);
-    render::Status commitCamera(const QString& key, const QVariant& value);
+    base::Status commitNode(const QString& key, const QVariant& value);
+    base::Status commitSettings(const QString& key, const QVariant& value);
+    base::Status commitCamera(const QString& key, const QVariant& value);
 
     document::Scene& m_scene;
     QUndoStack& m_undoStack;

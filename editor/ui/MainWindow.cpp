@@ -1,8 +1,8 @@
 #include "editor/ui/MainWindow.hpp"
 
-#include "editor/document/ModelFormats.hpp"
+#include "base/FileKind.hpp"
+#include "base/Printable.hpp"
 #include "editor/document/NewScene.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/RenderPassesPanel.hpp"
@@ -11,8 +11,8 @@
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
-#include "render/io/FileKind.hpp"
-#include "render/io/Printable.hpp"
+#include "scene/import/ModelFormats.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -67,7 +67,7 @@ int autosaveSeconds(QString& problem) {
 } // namespace
 
 QString shown(const QString& text, std::size_t maxChars) {
-    return QString::fromStdString(render::printable(text.toStdString(), maxChars));
+    return QString::fromStdString(base::printable(text.toStdString(), maxChars));
 }
 
 MainWindow::MainWindow(QWidget* parent)
@@ -121,13 +121,13 @@ bool MainWindow::isModified() const {
 
 // ---- document operations without dialogs ----
 
-render::Status MainWindow::openProjectFile(const QString& path) {
+base::Status MainWindow::openProjectFile(const QString& path) {
     std::vector<std::string> warnings;
     const QString absolute = QFileInfo(path).absoluteFilePath();
     // The project is read here, on the GUI thread: a FIFO, a device or /dev/stdin would block it (and the
     // autosave with it) for good, so anything but a regular file is refused before it is opened. The
     // reader checks the opened descriptor again.
-    render::Status status = render::requireRegularFile(absolute.toStdString());
+    base::Status status = base::requireRegularFile(absolute.toStdString());
     if (status) {
         status = m_session->open(absolute, warnings);
     }
@@ -150,10 +150,10 @@ render::Status MainWindow::openProjectFile(const QString& path) {
     return status;
 }
 
-render::Status MainWindow::saveProjectFile(const QString& path) {
+base::Status MainWindow::saveProjectFile(const QString& path) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     rememberEditorView(); // the file reopens where the editor looks now
-    render::Status status = m_session->save(absolute);
+    base::Status status = m_session->save(absolute);
     if (!status) {
         logMessage(tr("Could not save %1: %2").arg(absolute, QString::fromStdString(status.error())));
         return status;
@@ -187,23 +187,23 @@ void MainWindow::setRecoveryStore(const document::RecoveryStore& store) {
     m_recovery = std::make_unique<document::RecoveryStore>(store);
 }
 
-render::Status MainWindow::autosaveNow() {
+base::Status MainWindow::autosaveNow() {
     if (!isModified()) {
-        return render::Done{};
+        return base::Done{};
     }
     rememberEditorView();
-    render::Status status = m_recovery->write(scene().toData(), scene().projectPath());
+    base::Status status = m_recovery->write(scene().toData(), scene().projectPath());
     if (!status) {
         logMessage(tr("Autosave failed: %1").arg(QString::fromStdString(status.error())));
     }
     return status;
 }
 
-render::Status MainWindow::restoreRecovery(const document::RecoveryStore::Recovered& recovered) {
+base::Status MainWindow::restoreRecovery(const document::RecoveryStore::Recovered& recovered) {
     std::vector<std::string> warnings;
     auto data = document::RecoveryStore::load(recovered, warnings);
     if (!data) {
-        return render::Error{data.error()};
+        return base::Error{data.error()};
     }
     cancelImports();
     m_session->replace(std::move(*data), recovered.originalPath, true); // modified until saved
@@ -214,7 +214,7 @@ render::Status MainWindow::restoreRecovery(const document::RecoveryStore::Recove
             .arg(recovered.originalPath.isEmpty() ? tr("an untitled document") : recovered.originalPath,
                  recovered.savedAt.toLocalTime().toString()));
     updateTitle();
-    return render::Done{};
+    return base::Done{};
 }
 
 void MainWindow::offerRecovery() {

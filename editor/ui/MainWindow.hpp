@@ -1,10 +1,10 @@
 #pragma once
 
+#include "base/Result.hpp"
 #include "editor/document/DocumentSession.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/Recovery.hpp"
-#include "editor/document/StillExport.hpp"
-#include "render/Result.hpp"
+#include "scene/export/StillExport.hpp"
+#include "scene/project/Recovery.hpp"
 
 #include <QMainWindow>
 #include <QString>
@@ -43,7 +43,7 @@ class SceneTreePanel;
 class Viewport;
 
 // A path, file name or value from the user or a file, made safe for a one-line message: control
-// characters escaped, long text shortened (render::printable). Full paths in the log keep more.
+// characters escaped, long text shortened (base::printable). Full paths in the log keep more.
 QString shown(const QString& text, std::size_t maxChars = 80);
 constexpr std::size_t kShownPathChars = 1024;
 
@@ -80,16 +80,16 @@ public:
 
     // Loads a project; on failure the open document stays exactly as it was and the error (which names
     // the JSON path or the file problem) is returned. Load warnings go to the log.
-    render::Status openProjectFile(const QString& path);
+    base::Status openProjectFile(const QString& path);
     // Writes the document to path; on success it becomes the document's file and the undo stack is clean.
-    render::Status saveProjectFile(const QString& path);
+    base::Status saveProjectFile(const QString& path);
     // Replaces the document with an empty scene (no prompt).
     void newProject();
     // Unsaved changes: edits since the last save, or a document restored from a recovery file.
     bool isModified() const;
 
     // Adds a node of the Add menu where the view looks, selects it; one undo step.
-    render::Status addNode(document::NewNodeKind kind);
+    base::Status addNode(document::NewNodeKind kind);
     // Model import. A model file (any format Assimp reads) is read on a worker thread, with progress and
     // a Cancel button in the status bar, while the window keeps working; then its node tree (a node per
     // file node, a child per part with its material) is added as one undo step and selected. It keeps its
@@ -100,10 +100,10 @@ public:
     // Starts an import (queued behind a running one). Fails at once only when the file does not exist.
     // `interactive`: a failure also shows a message box (menu and drops); otherwise only the log and the
     // status bar say it.
-    render::Status startModelImport(const QString& path, bool asReflector = false, bool interactive = false);
+    base::Status startModelImport(const QString& path, bool asReflector = false, bool interactive = false);
     // Starts an import and waits for it (running the event loop: the window repaints meanwhile); returns
     // its outcome ("cancelled" when cancelled). For tests and scripted use.
-    render::Status importModelFile(const QString& path, bool asReflector = false);
+    base::Status importModelFile(const QString& path, bool asReflector = false);
     bool isImporting() const;
     // Cancels the running import and the queued ones (the status bar's Cancel).
     void cancelImports();
@@ -113,27 +113,27 @@ public:
     void setImportWorkerHook(std::function<void(double)> hook) { m_importHook = std::move(hook); }
     // Delete and Duplicate act on every selected node (a node under a selected ancestor goes with the
     // ancestor), as one undo step; the copies of a duplicate are selected afterwards.
-    render::Status deleteSelected();
-    render::Status duplicateSelected();
+    base::Status deleteSelected();
+    base::Status duplicateSelected();
     // Edit ▸ Select All: every node of the scene.
     void selectAll();
 
     // File ▸ Export Scene as glTF 2.0.
-    render::Status exportGltfFile(const QString& path);
+    base::Status exportGltfFile(const QString& path);
     // File ▸ Export Still, without the dialog: renders on the viewport's context with the same code as
     // `speculum render`. `progress` may cancel (return false).
-    render::Result<document::StillExportResult>
-    exportStillFile(const QString& path, const document::StillExportSettings& settings,
-                    const render::ProgressCallback& progress = {});
+    base::Result<document::StillExportResult> exportStillFile(const QString& path,
+                                                              const document::StillExportSettings& settings,
+                                                              const render::ProgressCallback& progress = {});
 
     // Crash recovery. The store defaults to RecoveryStore::forThisProcess(); tests use their own folder.
     void setRecoveryStore(const document::RecoveryStore& store);
     const document::RecoveryStore& recoveryStore() const { return *m_recovery; }
     // Writes the recovery file now if there are unsaved changes (the timer does it every 30 s, or every
     // SPECULUM_AUTOSAVE_SECONDS).
-    render::Status autosaveNow();
+    base::Status autosaveNow();
     // Loads an orphaned recovery file as the open document, marked modified and titled as its project.
-    render::Status restoreRecovery(const document::RecoveryStore::Recovered& recovered);
+    base::Status restoreRecovery(const document::RecoveryStore::Recovered& recovered);
     // At start-up: asks whether to restore documents of a crashed session (declined ones are removed).
     void offerRecovery();
 
@@ -179,7 +179,7 @@ private:
     void createDocks();
     void rebuildRecentMenu();
     void addRecentFile(const QString& path);
-    render::Status addTree(document::NodeTree tree);
+    base::Status addTree(document::NodeTree tree);
     void createImportStatus();
     void startNextImport();
     void onImportDone(); // the running job's finished()

@@ -1,9 +1,6 @@
 // MainWindow: menus and what runs behind them (the edit operations of the document layer, export).
 #include "editor/document/EditOperations.hpp"
-#include "editor/document/GltfExport.hpp"
-#include "editor/document/ModelFormats.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/AppIdentity.hpp"
 #include "editor/ui/ExportStillDialog.hpp"
 #include "editor/ui/MainWindow.hpp"
@@ -11,6 +8,9 @@
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/export/GltfExport.hpp"
+#include "scene/import/ModelFormats.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QAction>
 #include <QActionGroup>
@@ -70,17 +70,17 @@ void MainWindow::setInvertVerticalOrbit(bool on) {
 
 // ---- editing ----
 
-render::Status MainWindow::addTree(document::NodeTree tree) {
+base::Status MainWindow::addTree(document::NodeTree tree) {
     auto added = document::addNodeTree(scene(), undoStack(), std::move(tree));
     if (!added) {
         statusBar()->showMessage(QString::fromStdString(added.error()), 8000);
-        return render::Error{added.error()};
+        return base::Error{added.error()};
     }
     m_selection->selectNode(*added);
-    return render::Done{};
+    return base::Done{};
 }
 
-render::Status MainWindow::addNode(document::NewNodeKind kind) {
+base::Status MainWindow::addNode(document::NewNodeKind kind) {
     document::NewNodePlacement placement;
     placement.focus = m_viewport->lookAtPoint();
     placement.viewPosition = m_viewport->viewCamera().position;
@@ -88,21 +88,21 @@ render::Status MainWindow::addNode(document::NewNodeKind kind) {
     return addTree(document::placeNewNode(scene(), m_viewport->meshes(), kind, placement));
 }
 
-render::Status MainWindow::deleteSelected() {
+base::Status MainWindow::deleteSelected() {
     return document::deleteNodes(scene(), undoStack(), m_selection->roots());
 }
 
-render::Status MainWindow::duplicateSelected() {
+base::Status MainWindow::duplicateSelected() {
     auto duplicated = document::duplicateNodes(scene(), undoStack(), m_selection->roots(),
                                                m_selection->node(), &m_viewport->meshes(), m_clock->time());
     if (!duplicated) {
-        return render::Error{duplicated.error()};
+        return base::Error{duplicated.error()};
     }
     m_selection->setNodes(duplicated->copies, duplicated->currentCopy);
     if (duplicated->droppedReflector) {
         statusBar()->showMessage(tr("The copy is not a reflector: a scene has at most one."), 8000);
     }
-    return render::Done{};
+    return base::Done{};
 }
 
 void MainWindow::selectAll() {
@@ -120,7 +120,7 @@ void MainWindow::updateEditActions() {
 
 // ---- export ----
 
-render::Status MainWindow::exportGltfFile(const QString& path) {
+base::Status MainWindow::exportGltfFile(const QString& path) {
     std::vector<std::string> warnings;
     m_viewport->waitForModels(); // read on workers: none may be missing from the file
     auto status = document::exportGltf(scene(), path, m_viewport->meshes(), warnings);
@@ -137,16 +137,16 @@ render::Status MainWindow::exportGltfFile(const QString& path) {
     return status;
 }
 
-render::Result<document::StillExportResult>
+base::Result<document::StillExportResult>
 MainWindow::exportStillFile(const QString& path, const document::StillExportSettings& settings,
                             const render::ProgressCallback& progress) {
     if (auto valid = document::validateStillExport(settings, path); !valid) {
-        return render::Error{valid.error()};
+        return base::Error{valid.error()};
     }
     if (!m_viewport->isValid() || !m_viewport->renderer()) {
-        return render::Error{m_viewport->rendererError().isEmpty()
-                                 ? std::string("the viewport has no OpenGL context yet")
-                                 : m_viewport->rendererError().toStdString()};
+        return base::Error{m_viewport->rendererError().isEmpty()
+                               ? std::string("the viewport has no OpenGL context yet")
+                               : m_viewport->rendererError().toStdString()};
     }
     // The scene's model files are read on workers: a still must not lack one that is still loading.
     m_viewport->waitForModels();
@@ -211,7 +211,7 @@ void MainWindow::openFromDialog(const QString& title, const QString& folder) {
     if (path.isEmpty()) {
         return;
     }
-    render::Status status = openProjectFile(path);
+    base::Status status = openProjectFile(path);
     if (!status) {
         // The error names the JSON path of the problem; the current document is unchanged.
         QMessageBox::critical(
@@ -225,7 +225,7 @@ bool MainWindow::onSave() {
     if (scene().projectPath().isEmpty()) {
         return onSaveAs();
     }
-    render::Status status = saveProjectFile(scene().projectPath());
+    base::Status status = saveProjectFile(scene().projectPath());
     if (!status) {
         QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
         return false;
@@ -245,7 +245,7 @@ bool MainWindow::onSaveAs() {
     if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
         path += kProjectSuffix;
     }
-    render::Status status = saveProjectFile(path);
+    base::Status status = saveProjectFile(path);
     if (!status) {
         QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
         return false;

@@ -1,13 +1,13 @@
 // MainWindow: model import on a worker thread (progress and Cancel in the status bar); the document layer
 // places the imported model (placeImportedModel) and adds it as one undo step (addNodeTree).
+#include "base/FileKind.hpp"
 #include "editor/document/EditOperations.hpp"
-#include "editor/document/ModelImport.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/ModelImportJob.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
-#include "render/io/FileKind.hpp"
+#include "scene/import/ModelImport.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QAction>
 #include <QEventLoop>
@@ -67,33 +67,32 @@ void MainWindow::createImportStatus() {
     m_importStatus->hide();
 }
 
-render::Status MainWindow::startModelImport(const QString& path, bool asReflector, bool interactive) {
+base::Status MainWindow::startModelImport(const QString& path, bool asReflector, bool interactive) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     // Only a stat here, on the GUI thread (it cannot block on a FIFO); the worker reads the file, and the
     // reader checks the opened descriptor again. The cause is named: a FIFO is not "no such file".
-    if (auto regular = render::requireRegularFile(absolute.toStdString()); !regular) {
-        return render::Error{shown(absolute, kShownPathChars).toStdString() + ": " + regular.error()};
+    if (auto regular = base::requireRegularFile(absolute.toStdString()); !regular) {
+        return base::Error{shown(absolute, kShownPathChars).toStdString() + ": " + regular.error()};
     }
     m_importQueue.push_back(ImportRequest{absolute, asReflector, interactive, ++m_importSerial});
     if (!m_importJob) {
         startNextImport();
     }
-    return render::Done{};
+    return base::Done{};
 }
 
-render::Status MainWindow::importModelFile(const QString& path, bool asReflector) {
+base::Status MainWindow::importModelFile(const QString& path, bool asReflector) {
     if (auto started = startModelImport(path, asReflector, false); !started) {
         logMessage(tr("Could not import: %1").arg(QString::fromStdString(started.error())));
         return started;
     }
     const int serial = m_importSerial;
-    render::Status outcome = render::Error{"the import did not finish"};
+    base::Status outcome = base::Error{"the import did not finish"};
     QEventLoop loop;
     const auto connection = connect(
         this, &MainWindow::importFinished, &loop, [&](const QString&, bool ok, const QString& message) {
             if (m_doneSerial == serial) {
-                outcome = ok ? render::Status(render::Done{})
-                             : render::Status(render::Error{message.toStdString()});
+                outcome = ok ? base::Status(base::Done{}) : base::Status(base::Error{message.toStdString()});
                 loop.quit();
             }
         });

@@ -1,10 +1,10 @@
 // The main window's timeline (issue 16): a toolbar along the bottom with Play, Rewind and the time slider,
 // and the clock that starts over, paused, with every document.
-#include "editor/document/Scene.hpp"
-#include "editor/document/SceneAnimation.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/TimeSlider.hpp"
 #include "editor/view/AnimationClock.hpp"
+#include "scene/model/Scene.hpp"
+#include "scene/model/SceneAnimation.hpp"
 
 #include <QAction>
 #include <QMenu>

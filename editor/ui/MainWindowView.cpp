@@ -1,11 +1,11 @@
 // The main window's part in the editor view (issue 16): the view presets and guides, the vertical orbit
 // preference, and the project's saved editor view ("editorView"), which is put in place when a document
 // opens and taken from the viewport when it is saved. Moving the view is never an edit.
-#include "editor/document/EditorView.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/ViewPresetActions.hpp"
 #include "editor/ui/Viewport.hpp"
+#include "scene/model/EditorView.hpp"
+#include "scene/model/Scene.hpp"
 
 namespace speculum::ui {
 

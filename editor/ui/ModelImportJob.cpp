@@ -1,6 +1,6 @@
 #include "editor/ui/ModelImportJob.hpp"
 
-#include "editor/document/Picking.hpp"
+#include "scene/evaluate/Picking.hpp"
 
 #include <QMetaObject>
 #include <QThread>
@@ -67,7 +67,7 @@ void ModelImportJob::run() {
         }
     }
     if (m_cancel) {
-        out.model = render::Error{"cancelled"};
+        out.model = base::Error{"cancelled"};
     }
     report(1.0, "done");
     m_output = std::move(out);

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "editor/document/ModelImport.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 #include "render/mesh/MeshData.hpp"
+#include "scene/import/ModelImport.hpp"
 
 #include <QObject>
 #include <QString>
@@ -26,7 +26,7 @@ class ModelImportJob : public QObject {
 
 public:
     struct Output {
-        render::Result<document::ImportedModel> model = render::Error{"not run"};
+        base::Result<document::ImportedModel> model = base::Error{"not run"};
         std::vector<std::string> warnings;
     };
 

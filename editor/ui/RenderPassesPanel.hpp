@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/FrameReport.hpp"
+#include "render/plan/FrameReport.hpp"
 
 #include <QElapsedTimer>
 #include <QWidget>

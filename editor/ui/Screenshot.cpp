@@ -1,10 +1,10 @@
 #include "editor/ui/Screenshot.hpp"
 
+#include "base/AtomicFile.hpp"
+#include "base/Printable.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
-#include "render/io/AtomicFile.hpp"
-#include "render/io/Printable.hpp"
 
 #include <QApplication>
 #include <QBuffer>
@@ -94,10 +94,10 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
         qCritical("speculum: could not encode %s", qPrintable(request.outputPath));
         return 1;
     }
-    if (const render::Status written = render::writeFileAtomically(
+    if (const base::Status written = base::writeFileAtomically(
             request.outputPath.toStdString(), std::string_view(encoded.constData(), encoded.size()));
         !written) {
-        qCritical("speculum: %s", render::printable(written.error(), 400).c_str());
+        qCritical("speculum: %s", base::printable(written.error(), 400).c_str());
         return 1;
     }
     qInfo("speculum: wrote %s (%dx%d)", qPrintable(request.outputPath), picture.width(), picture.height());

@@ -1,10 +1,10 @@
 #include "editor/ui/SweepRunJob.hpp"
 
 #include "accuracy/Report.hpp"
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/Scene.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "render/gl/HeadlessContext.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QMetaObject>
 #include <QRegularExpression>
@@ -124,12 +124,12 @@ void SweepRunJob::work(accuracy::SweepInput input) {
         post([this, d, t, text] { emit progress(d, t, text); });
     };
     observer.referenceTraced = [&](const accuracy::Reference&,
-                                   const accuracy::ReferenceInfo&) -> render::Status {
+                                   const accuracy::ReferenceInfo&) -> base::Status {
         ++done;
-        return render::Done{};
+        return base::Done{};
     };
     observer.measured = [&](std::size_t index, std::size_t count, const accuracy::Record& record,
-                            const accuracy::FrameCost&, const accuracy::ErrorFigures&) -> render::Status {
+                            const accuracy::FrameCost&, const accuracy::ErrorFigures&) -> base::Status {
         ++done;
         records.push_back(record);
         const QString text = tr("Point %1 of %2: %3")
@@ -142,7 +142,7 @@ void SweepRunJob::work(accuracy::SweepInput input) {
             emit progress(d, t, text);
             emit recordsChanged(records);
         });
-        return render::Done{};
+        return base::Done{};
     };
     observer.timed = [&](int round, int of, const std::vector<accuracy::Record>& timed) {
         ++done;

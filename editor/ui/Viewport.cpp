@@ -1,18 +1,18 @@
 #include "editor/ui/Viewport.hpp"
 
 #include "editor/document/Commands.hpp"
-#include "editor/document/NodeMath.hpp"
-#include "editor/document/PickScene.hpp"
-#include "editor/document/Picking.hpp"
-#include "editor/document/Scene.hpp"
-#include "editor/document/SceneAnimation.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "editor/ui/ViewportModels.hpp"
 #include "editor/ui/ViewportOverlay.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
+#include "scene/evaluate/PickScene.hpp"
+#include "scene/evaluate/Picking.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/model/NodeMath.hpp"
+#include "scene/model/Scene.hpp"
+#include "scene/model/SceneAnimation.hpp"
 
 #include <QEventLoop>
 #include <QKeyEvent>

@@ -1,12 +1,12 @@
 #pragma once
 
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/SceneData.hpp"
 #include "editor/ui/Gizmo.hpp"
 #include "editor/ui/HandleDrag.hpp"
 #include "editor/view/AdaptiveResolution.hpp"
 #include "editor/view/ViewCamera.hpp"
-#include "render/Renderer.hpp"
+#include "render/renderer/Renderer.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/model/SceneData.hpp"
 
 #include <QElapsedTimer>
 #include <QOpenGLWidget>

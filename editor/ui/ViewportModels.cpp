@@ -1,10 +1,10 @@
 #include "editor/ui/ViewportModels.hpp"
 
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/Scene.hpp"
+#include "base/FileKind.hpp"
+#include "base/Printable.hpp"
 #include "editor/ui/ModelImportJob.hpp"
-#include "render/io/FileKind.hpp"
-#include "render/io/Printable.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QDir>
 #include <QFileInfo>
@@ -16,7 +16,7 @@ namespace {
 
 // The snapshot's warning about a node starts like this (its name quoted, or in double quotes in older text).
 bool isAboutNode(const std::string& warning, const std::string& node) {
-    return warning.rfind("node " + render::quoted(node) + ": ", 0) == 0 ||
+    return warning.rfind("node " + base::quoted(node) + ": ", 0) == 0 ||
            warning.rfind("node \"" + node + "\": ", 0) == 0;
 }
 
@@ -95,7 +95,7 @@ void ViewportModels::need(const std::string& node, const std::string& path) {
         if (it != m_entries.end() && it->second.job) {
             retire(it->second.job);
         }
-        const render::Status regular = render::requireRegularFile(path);
+        const base::Status regular = base::requireRegularFile(path);
         if (!info.exists() || regular) {
             // Missing: the library says so itself, and reads nothing.
             if (it != m_entries.end()) {
@@ -145,7 +145,7 @@ void ViewportModels::finished(ModelImportJob* job) {
     e.job = nullptr;
     ModelImportJob::Output out = job->takeOutput();
     for (const auto& w : out.warnings) {
-        m_pendingWarnings.push_back(render::quoted(fileName(it->first)) + ": " + w);
+        m_pendingWarnings.push_back(base::quoted(fileName(it->first)) + ": " + w);
     }
     if (out.model) {
         m_meshes.addModel(it->first,
@@ -186,15 +186,15 @@ std::vector<std::string> ViewportModels::correct(std::vector<std::string> warnin
         std::erase_if(warnings, [&](const std::string& w) {
             return isAboutNode(w, user.node) && w.find("skipped") != std::string::npos;
         });
-        const std::string name = fileName(user.path), file = render::quoted(name);
+        const std::string name = fileName(user.path), file = base::quoted(name);
         const std::string& error = it->second.error;
         // The reader's errors may name the file already ("dag.gltf: the node graph ...").
         const bool named = error.rfind(name + ": ", 0) == 0 || error.rfind(file + ": ", 0) == 0;
         std::string line =
-            "node " + render::quoted(user.node) + ": " +
+            "node " + base::quoted(user.node) + ": " +
             (it->second.state == State::Loading
                  ? "mesh loading: " + file + "..."
-                 : "mesh skipped: " + (named ? std::string() : file + ": ") + render::printable(error, 200));
+                 : "mesh skipped: " + (named ? std::string() : file + ": ") + base::printable(error, 200));
         if (std::find(own.begin(), own.end(), line) == own.end()) {
             own.push_back(std::move(line));
         }

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "editor/document/ModelImport.hpp"
+#include "scene/import/ModelImport.hpp"
 
 #include <QDateTime>
 #include <QObject>

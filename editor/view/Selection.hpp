@@ -1,6 +1,6 @@
 #pragma once
 
-#include "editor/document/Scene.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QObject>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "editor/view/ViewCamera.hpp"
 
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
+#include "render/frame/FrameInput.hpp"
 
 #include <optional>
 #include <string_view>

@@ -1,6 +1,6 @@
 #include "render/envmap/Layout.hpp"
 
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 
 #include <algorithm>
 #include <cassert>

@@ -34,21 +34,21 @@ std::size_t allocationLimitForTesting() {
     return g_testLimit;
 }
 
-Status beginAllocation(std::size_t bytes) {
+base::Status beginAllocation(std::size_t bytes) {
     drainErrors();
     const std::size_t limit = g_testLimit;
     if (limit > 0 && bytes > limit)
-        return Error{"did not fit in GPU memory (over the test limit of " + std::to_string(limit) +
-                     " bytes)"};
+        return base::Error{"did not fit in GPU memory (over the test limit of " + std::to_string(limit) +
+                           " bytes)"};
     t_checking = true;
-    return Done{};
+    return base::Done{};
 }
 
 bool allocationBeingChecked() {
     return t_checking;
 }
 
-Status finishAllocation() {
+base::Status finishAllocation() {
     t_checking = false;
     bool outOfMemory = false;
     GLenum other = GL_NO_ERROR;
@@ -62,25 +62,25 @@ Status finishAllocation() {
             other = e;
     }
     if (outOfMemory)
-        return Error{"did not fit in GPU memory"};
+        return base::Error{"did not fit in GPU memory"};
     if (other != GL_NO_ERROR)
-        return Error{"was refused by the driver (GL error " + hex(other) + ")"};
-    return Done{};
+        return base::Error{"was refused by the driver (GL error " + hex(other) + ")"};
+    return base::Done{};
 }
 
-Status checkFramebuffer(GLenum target) {
+base::Status checkFramebuffer(GLenum target) {
     const GLenum status = glCheckFramebufferStatus(target);
     if (status == GL_FRAMEBUFFER_COMPLETE)
-        return Done{};
+        return base::Done{};
     // An incomplete attachment after a silent allocation failure is the usual cause: report memory when
     // the driver flagged it.
-    if (Status errors = finishAllocation(); !errors)
+    if (base::Status errors = finishAllocation(); !errors)
         return errors;
-    return Error{"could not be drawn into (framebuffer incomplete, status " + hex(status) + ")"};
+    return base::Error{"could not be drawn into (framebuffer incomplete, status " + hex(status) + ")"};
 }
 
 SizeFallback::Fitted SizeFallback::fit(int requested, int minimum,
-                                       const std::function<Status(int)>& allocate) {
+                                       const std::function<base::Status(int)>& allocate) {
     Fitted fitted;
     int size = std::max(requested, minimum);
     if (size >= m_failedAt) {
@@ -91,7 +91,7 @@ SizeFallback::Fitted SizeFallback::fit(int requested, int minimum,
             return fitted; // even the minimum failed before
     }
     for (;;) {
-        Status done = allocate(size);
+        base::Status done = allocate(size);
         if (done) {
             fitted.size = size;
             return fitted;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 
 #include <climits>
 #include <cstddef>
@@ -23,12 +23,12 @@ std::size_t allocationLimitForTesting();
 
 // Drains the errors earlier calls left (so they are not blamed on this allocation) and says whether an
 // object of `bytes` may be asked for at all (the test limit above).
-Status beginAllocation(std::size_t bytes);
+base::Status beginAllocation(std::size_t bytes);
 // The errors raised since beginAllocation(): GL_OUT_OF_MEMORY reads "did not fit in GPU memory".
-Status finishAllocation();
+base::Status finishAllocation();
 // The bound framebuffer's completeness: "the driver cannot draw into it (framebuffer incomplete, status
 // 0x8cd6)".
-Status checkFramebuffer(GLenum target = GL_FRAMEBUFFER);
+base::Status checkFramebuffer(GLenum target = GL_FRAMEBUFFER);
 
 // True between a beginAllocation() that let the allocation go ahead and the finishAllocation() that
 // checks it: GL errors raised then are expected and handled (DebugOutput does not count them as errors).
@@ -47,7 +47,7 @@ public:
     // Calls allocate(size) for the requested size, or the largest half of it below every size that
     // failed before, then halves after each failure down to `minimum`. allocate() must leave nothing
     // behind when it fails.
-    Fitted fit(int requested, int minimum, const std::function<Status(int)>& allocate);
+    Fitted fit(int requested, int minimum, const std::function<base::Status(int)>& allocate);
     // The smallest size that failed (INT_MAX: none).
     int failedAt() const { return m_failedAt; }
 

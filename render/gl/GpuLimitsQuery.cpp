@@ -1,7 +1,7 @@
 // The one GL call behind GpuLimits: the struct and fitToGpuLimits belong to the GL-free core, so that
 // the planner's tests fit sizes without a context.
-#include "render/GpuLimits.hpp"
 #include "render/gl/Objects.hpp"
+#include "render/plan/GpuLimits.hpp"
 
 #include <algorithm>
 

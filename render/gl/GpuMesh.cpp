@@ -34,7 +34,7 @@ GpuMesh upload(const MeshData& mesh, std::string& failure) {
     // The simplified level's indices follow the full list in the same buffer (same vertices).
     const std::size_t indexBytes = (mesh.indices.size() + mesh.coarse.indices.size()) * sizeof(std::uint32_t);
     const std::size_t bytes = std::max({vertices.size() * sizeof(Vertex), indexBytes, extraBytes});
-    if (Status fits = beginAllocation(bytes); !fits) {
+    if (base::Status fits = beginAllocation(bytes); !fits) {
         failure = fits.error();
         return GpuMesh{};
     }
@@ -90,7 +90,7 @@ GpuMesh upload(const MeshData& mesh, std::string& failure) {
         }
     }
     glBindVertexArray(0);
-    if (Status done = finishAllocation(); !done) {
+    if (base::Status done = finishAllocation(); !done) {
         failure = done.error();
         return GpuMesh{}; // frees what was allocated
     }

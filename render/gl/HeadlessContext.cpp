@@ -78,22 +78,22 @@ HeadlessContext::~HeadlessContext() {
     }
 }
 
-Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
+base::Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
     std::unique_ptr<HeadlessContext> self(new HeadlessContext);
     self->m_egl = std::make_unique<Egl>();
     Egl& egl = *self->m_egl;
 
     egl.display = openDisplay();
     if (egl.display == EGL_NO_DISPLAY)
-        return Error{"cannot open an EGL display (is Mesa's libegl-mesa0 installed?)"};
+        return base::Error{"cannot open an EGL display (is Mesa's libegl-mesa0 installed?)"};
     EGLint major = 0, minor = 0;
     if (!eglInitialize(egl.display, &major, &minor)) {
         const std::string reason = eglErrorName(eglGetError());
         egl.display = EGL_NO_DISPLAY;
-        return Error{"cannot initialise EGL: " + reason};
+        return base::Error{"cannot initialise EGL: " + reason};
     }
     if (!eglBindAPI(EGL_OPENGL_API))
-        return Error{"EGL has no desktop OpenGL API: " + eglErrorName(eglGetError())};
+        return base::Error{"EGL has no desktop OpenGL API: " + eglErrorName(eglGetError())};
 
     const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,
                                     EGL_NONE};
@@ -120,12 +120,13 @@ Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
         lastError = eglErrorName(eglGetError());
     }
     if (egl.context == EGL_NO_CONTEXT)
-        return Error{"cannot create an OpenGL 3.3 core context: " + lastError};
+        return base::Error{"cannot create an OpenGL 3.3 core context: " + lastError};
     if (!eglMakeCurrent(egl.display, EGL_NO_SURFACE, EGL_NO_SURFACE, egl.context))
-        return Error{"cannot make the OpenGL context current: " + eglErrorName(eglGetError())};
+        return base::Error{"cannot make the OpenGL context current: " + eglErrorName(eglGetError())};
     if (epoxy_gl_version() < 33)
-        return Error{"OpenGL 3.3 is required, the driver offers " + std::to_string(epoxy_gl_version() / 10) +
-                     "." + std::to_string(epoxy_gl_version() % 10)};
+        return base::Error{"OpenGL 3.3 is required, the driver offers " +
+                           std::to_string(epoxy_gl_version() / 10) + "." +
+                           std::to_string(epoxy_gl_version() % 10)};
     return self;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 
 #include <memory>
 #include <string>
@@ -16,7 +16,7 @@ public:
     HeadlessContext& operator=(const HeadlessContext&) = delete;
 
     // Tries 4.5, then 3.3 core. The error says what EGL refused.
-    static Result<std::unique_ptr<HeadlessContext>> create();
+    static base::Result<std::unique_ptr<HeadlessContext>> create();
 
     std::string description() const; // "OpenGL 4.5 (Core Profile) Mesa 22.3.6, llvmpipe (...)"
 

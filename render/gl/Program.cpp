@@ -26,13 +26,13 @@ int fileNumber(std::string_view file, std::vector<std::string>& fileNumbers) {
     return static_cast<int>(fileNumbers.size() - 1);
 }
 
-Status expand(std::string_view file, std::ostringstream& out, std::vector<std::string>& fileNumbers,
-              int depth) {
+base::Status expand(std::string_view file, std::ostringstream& out, std::vector<std::string>& fileNumbers,
+                    int depth) {
     if (depth > 8)
-        return Error{"shaders/" + std::string(file) + ": #include nested too deeply"};
+        return base::Error{"shaders/" + std::string(file) + ": #include nested too deeply"};
     const EmbeddedShader* shader = findShader(file);
     if (!shader)
-        return Error{"shaders/" + std::string(file) + ": no such embedded shader"};
+        return base::Error{"shaders/" + std::string(file) + ": no such embedded shader"};
     const int number = fileNumber(file, fileNumbers);
     std::istringstream in{std::string(shader->source)};
     std::string line;
@@ -43,21 +43,21 @@ Status expand(std::string_view file, std::ostringstream& out, std::vector<std::s
         ++lineNo;
         std::smatch match;
         if (std::regex_match(line, match, includeLine)) {
-            if (Status s = expand(match[1].str(), out, fileNumbers, depth + 1); !s)
+            if (base::Status s = expand(match[1].str(), out, fileNumbers, depth + 1); !s)
                 return s;
             out << "#line " << lineNo + 1 << " " << number << "\n";
         } else {
             out << line << "\n";
         }
     }
-    return Done{};
+    return base::Done{};
 }
 
-Result<ShaderHandle> compile(GLenum stage, std::string_view file, const std::string& defines) {
+base::Result<ShaderHandle> compile(GLenum stage, std::string_view file, const std::string& defines) {
     std::vector<std::string> fileNumbers;
     auto preprocessed = preprocessShader(file, defines, fileNumbers);
     if (!preprocessed)
-        return Error{preprocessed.error()};
+        return base::Error{preprocessed.error()};
     const std::string& text = *preprocessed;
     ShaderHandle shader(glCreateShader(stage));
     const char* src = text.c_str();
@@ -70,18 +70,18 @@ Result<ShaderHandle> compile(GLenum stage, std::string_view file, const std::str
         glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
         std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
         glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
-        return Error{"shader compile failed:\n" + mapShaderLog(log.c_str(), fileNumbers)};
+        return base::Error{"shader compile failed:\n" + mapShaderLog(log.c_str(), fileNumbers)};
     }
     return shader;
 }
 
 } // namespace
 
-Result<std::string> preprocessShader(std::string_view file, const std::string& defines,
-                                     std::vector<std::string>& fileNumbers) {
+base::Result<std::string> preprocessShader(std::string_view file, const std::string& defines,
+                                           std::vector<std::string>& fileNumbers) {
     std::ostringstream body;
-    if (Status s = expand(file, body, fileNumbers, 0); !s)
-        return Error{s.error()};
+    if (base::Status s = expand(file, body, fileNumbers, 0); !s)
+        return base::Error{s.error()};
     // ARB_gpu_shader5 where the driver has it: shaders test GL_ARB_gpu_shader5 and fall back to GLSL 3.30.
     return "#version 330 core\n#extension GL_ARB_gpu_shader5 : enable\n" + defines + "\n" + body.str();
 }
@@ -108,14 +108,14 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
     return out.str();
 }
 
-Result<Program::Linked> Program::link(std::string_view vertexFile, std::string_view fragmentFile,
-                                      const std::string& defines) {
+base::Result<Program::Linked> Program::link(std::string_view vertexFile, std::string_view fragmentFile,
+                                            const std::string& defines) {
     auto vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
     if (!vs)
-        return Error{vs.error()};
+        return base::Error{vs.error()};
     auto fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
     if (!fs)
-        return Error{fs.error()};
+        return base::Error{fs.error()};
     Linked linked;
     linked.program = ProgramHandle(glCreateProgram());
     const GLuint id = linked.program.id();
@@ -129,19 +129,19 @@ Result<Program::Linked> Program::link(std::string_view vertexFile, std::string_v
         glGetProgramiv(id, GL_INFO_LOG_LENGTH, &length);
         std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
         glGetProgramInfoLog(id, length, nullptr, log.data());
-        return Error{"shader link failed (shaders/" + std::string(vertexFile) + ", shaders/" +
-                     std::string(fragmentFile) + "):\n" + log.c_str()};
+        return base::Error{"shader link failed (shaders/" + std::string(vertexFile) + ", shaders/" +
+                           std::string(fragmentFile) + "):\n" + log.c_str()};
     }
     glDetachShader(id, vs->id());
     glDetachShader(id, fs->id());
     return linked;
 }
 
-Result<Program> Program::build(std::string_view vertexFile, std::string_view fragmentFile,
-                               const std::string& defines) {
+base::Result<Program> Program::build(std::string_view vertexFile, std::string_view fragmentFile,
+                                     const std::string& defines) {
     auto linked = link(vertexFile, fragmentFile, defines);
     if (!linked)
-        return Error{linked.error()};
+        return base::Error{linked.error()};
     Program program;
     program.m_vertexFile = vertexFile;
     program.m_fragmentFile = fragmentFile;
@@ -163,16 +163,16 @@ const Program::Linked* Program::variant(const std::string& defines) const {
     return &m_variants.emplace(defines, std::move(*linked)).first->second;
 }
 
-Status Program::select(const std::string& variantDefines, bool drawVariants) {
+base::Status Program::select(const std::string& variantDefines, bool drawVariants) {
     m_drawVariants = drawVariants;
     if (m_current && variantDefines == m_selected)
-        return Done{};
+        return base::Done{};
     const Linked* chosen = variant(variantDefines);
     if (!chosen)
-        return Error{m_failed[variantDefines]};
+        return base::Error{m_failed[variantDefines]};
     m_current = chosen;
     m_selected = variantDefines;
-    return Done{};
+    return base::Done{};
 }
 
 void Program::useWith(const std::string& drawDefines) const {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 #include "render/gl/Objects.hpp"
 
 #include <array>
@@ -20,8 +20,8 @@ namespace speculum::render::gl {
 
 // Expands `#include "file.glsl"` in an embedded shader and inserts `#line` directives, so that compile
 // errors can be reported as shaders/<file>:<line>. Returns the text and fills the file-number table.
-Result<std::string> preprocessShader(std::string_view file, const std::string& defines,
-                                     std::vector<std::string>& fileNumbers);
+base::Result<std::string> preprocessShader(std::string_view file, const std::string& defines,
+                                           std::vector<std::string>& fileNumbers);
 
 // Rewrites a driver's info log ("0:12(3): error ...", "0(12) : error ...") to name shader files.
 std::string mapShaderLog(const std::string& log, const std::vector<std::string>& fileNumbers);
@@ -35,13 +35,13 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
 class Program {
 public:
     Program() = default;
-    static Result<Program> build(std::string_view vertexFile, std::string_view fragmentFile,
-                                 const std::string& defines = {});
+    static base::Result<Program> build(std::string_view vertexFile, std::string_view fragmentFile,
+                                       const std::string& defines = {});
 
     // Selects the variant built with `variantDefines` appended to the build's defines (empty: the program
     // as built), compiling and linking it the first time. On failure the selection is unchanged.
     // `drawVariants` false makes useWith() keep to the selected variant.
-    Status select(const std::string& variantDefines, bool drawVariants = true);
+    base::Status select(const std::string& variantDefines, bool drawVariants = true);
     const std::string& selected() const { return m_selected; }
 
     // Binds the selected variant with `drawDefines` appended (empty: the selected variant), building it
@@ -74,8 +74,8 @@ private:
         std::array<float, 16> f{};
         std::uint64_t version = 0;
     };
-    static Result<Linked> link(std::string_view vertexFile, std::string_view fragmentFile,
-                               const std::string& defines);
+    static base::Result<Linked> link(std::string_view vertexFile, std::string_view fragmentFile,
+                                     const std::string& defines);
     const Linked* variant(const std::string& defines) const; // nullptr: it does not build
     void store(const std::string& name, Value value) const;
     void storeFloats(const std::string& name, Kind kind, const float* data, std::size_t count) const;

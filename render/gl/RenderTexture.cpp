@@ -8,13 +8,13 @@
 
 namespace speculum::render::gl {
 
-Status RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mipmapped) {
+base::Status RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mipmapped) {
     const int levels = mipmapped ? 1 + static_cast<int>(std::floor(std::log2(std::max(width, height)))) : 1;
     const bool same = width == m_width && height == m_height && colorFormat == m_format && levels == m_levels;
     if (same && m_framebuffer)
-        return Done{};
+        return base::Done{};
     if (same && !m_failure.empty())
-        return Error{m_failure};
+        return base::Error{m_failure};
     m_width = width;
     m_height = height;
     m_format = colorFormat;
@@ -25,15 +25,16 @@ Status RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mip
     m_color.reset();
     m_depthStencil.reset();
     const std::string size = std::to_string(width) + "×" + std::to_string(height);
-    auto fail = [&](const std::string& what, const std::string& why) -> Status {
+    auto fail = [&](const std::string& what, const std::string& why) -> base::Status {
         m_framebuffer.reset();
         m_color.reset();
         m_depthStencil.reset();
         m_failure = "the " + size + " " + what + " " + why;
-        return Error{m_failure};
+        return base::Error{m_failure};
     };
     const auto pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    if (Status fits = beginAllocation(mipChainTexels(width, height, levels) * bytesPerTexel(colorFormat));
+    if (base::Status fits =
+            beginAllocation(mipChainTexels(width, height, levels) * bytesPerTexel(colorFormat));
         !fits)
         return fail("colour buffer", fits.error());
     m_color = makeTexture();
@@ -48,15 +49,15 @@ Status RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mip
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D, 0);
-    if (Status done = finishAllocation(); !done)
+    if (base::Status done = finishAllocation(); !done)
         return fail("colour buffer", done.error());
-    if (Status fits = beginAllocation(pixels * bytesPerTexel(GL_DEPTH24_STENCIL8)); !fits)
+    if (base::Status fits = beginAllocation(pixels * bytesPerTexel(GL_DEPTH24_STENCIL8)); !fits)
         return fail("depth-stencil buffer", fits.error());
     m_depthStencil = makeRenderbuffer();
     glBindRenderbuffer(GL_RENDERBUFFER, m_depthStencil.id());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
-    if (Status done = finishAllocation(); !done)
+    if (base::Status done = finishAllocation(); !done)
         return fail("depth-stencil buffer", done.error());
     m_framebuffer = makeFramebuffer();
     FramebufferBinding keep;
@@ -64,9 +65,9 @@ Status RenderTexture::ensure(int width, int height, GLenum colorFormat, bool mip
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_color.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                               m_depthStencil.id());
-    if (Status complete = checkFramebuffer(); !complete)
+    if (base::Status complete = checkFramebuffer(); !complete)
         return fail("render target", complete.error());
-    return Done{};
+    return base::Done{};
 }
 
 std::size_t RenderTexture::bytes() const {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 #include "render/gl/Objects.hpp"
 
 #include <cstddef>
@@ -15,7 +15,7 @@ public:
     // (Re)allocates when the size or format changes; `mipmapped` allows blurred lookups. Checked: an
     // error ("the 1280×720 colour buffer did not fit in GPU memory") leaves no target (framebuffer() is 0),
     // and the same request fails again at once, without asking the driver every frame.
-    Status ensure(int width, int height, GLenum colorFormat, bool mipmapped);
+    base::Status ensure(int width, int height, GLenum colorFormat, bool mipmapped);
     void generateMipmaps();
 
     GLuint framebuffer() const { return m_framebuffer.id(); }

@@ -1,10 +1,10 @@
 #include "render/gl/TextureCache.hpp"
 
+#include "base/Printable.hpp"
 #include "render/gl/Allocation.hpp"
 #include "render/gl/Memory.hpp"
 #include "render/image/ColorSpace.hpp"
-#include "render/image/TextureLoader.hpp"
-#include "render/io/Printable.hpp"
+#include "render/imageio/TextureLoader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -100,14 +100,14 @@ TextureCache::Entry* TextureCache::entry(const TextureSource& source, TextureUse
         const int levels =
             1 + static_cast<int>(std::floor(std::log2(std::max({uploaded.width, uploaded.height, 1}))));
         const std::size_t texel = uploaded.highPrecision() ? 8 : 4;
-        Status fits = beginAllocation(mipChainTexels(uploaded.width, uploaded.height, levels) * texel);
+        base::Status fits = beginAllocation(mipChainTexels(uploaded.width, uploaded.height, levels) * texel);
         if (fits) {
             upload(uploaded, use);
             glGenerateMipmap(GL_TEXTURE_2D);
             fits = finishAllocation();
         }
         if (!fits) {
-            m_warnings.push_back("texture " + quoted(source.path) + ": the " +
+            m_warnings.push_back("texture " + base::quoted(source.path) + ": the " +
                                  std::to_string(uploaded.width) + "×" + std::to_string(uploaded.height) +
                                  " image " + fits.error() + " (showing a checker instead)");
             upload(checkerTexture(), use);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 
 #include <cstdint>
 #include <glm/vec4.hpp>

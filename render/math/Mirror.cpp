@@ -7,17 +7,18 @@
 
 namespace speculum::render::math {
 
-Result<Plane> mirrorPlane(const glm::dmat4& world) {
+base::Result<Plane> mirrorPlane(const glm::dmat4& world) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
             if (!std::isfinite(world[c][r]))
-                return Error{"the mirror's transform holds a value that is not a finite number, so it has no "
-                             "plane"};
+                return base::Error{
+                    "the mirror's transform holds a value that is not a finite number, so it has no "
+                    "plane"};
     const glm::dvec3 ex(world[0]), ey(world[1]), ez(world[2]);
     glm::dvec3 normal = glm::cross(ez, ex); // spans the rectangle whatever the local Y scale
     const double length = glm::length(normal);
     if (!(length > 1e-300) || !std::isfinite(length))
-        return Error{"the mirror's transform collapses its rectangle to zero area, so it has no plane"};
+        return base::Error{"the mirror's transform collapses its rectangle to zero area, so it has no plane"};
     normal /= length;
     // A mirroring transform keeps the reflective side where local +Y goes.
     if (glm::dot(normal, ey) < 0.0)
@@ -35,16 +36,16 @@ std::array<glm::dvec3, 4> mirrorCorners(const Mirror& mirror) {
     return corners;
 }
 
-Result<glm::dmat4> reflectionMatrix(const Plane& plane) {
+base::Result<glm::dmat4> reflectionMatrix(const Plane& plane) {
     const double length = glm::length(plane.normal);
     if (!std::isfinite(length) || !std::isfinite(plane.d))
-        return Error{"mirror plane is not finite"};
+        return base::Error{"mirror plane is not finite"};
     if (length < 1e-12)
-        return Error{"mirror normal is zero"};
+        return base::Error{"mirror normal is zero"};
     if (std::abs(length - 1.0) > 1e-9) {
         std::ostringstream s;
         s << "mirror normal must be unit length, got length " << length;
-        return Error{s.str()};
+        return base::Error{s.str()};
     }
     const glm::dvec3 n = plane.normal;
     glm::dmat4 r(1.0);
@@ -60,14 +61,14 @@ glm::dvec4 transformPlane(const glm::dvec4& plane, const glm::dmat4& m) {
     return glm::transpose(glm::inverse(m)) * plane;
 }
 
-Result<glm::dmat4> obliqueProjection(const glm::dmat4& projection, const glm::dvec4& clipPlane) {
+base::Result<glm::dmat4> obliqueProjection(const glm::dmat4& projection, const glm::dvec4& clipPlane) {
     const double scale = glm::length(glm::dvec3(clipPlane));
     if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(clipPlane.w))
-        return Error{"clip plane has no normal"};
+        return base::Error{"clip plane has no normal"};
     const glm::dvec4 c = clipPlane / scale; // unit normal: the thresholds below are world distances
     if (c.w > -1e-9)
-        return Error{c.w > 1e-9 ? "the camera is behind the mirror plane"
-                                : "the camera is on the mirror plane"};
+        return base::Error{c.w > 1e-9 ? "the camera is behind the mirror plane"
+                                      : "the camera is on the mirror plane"};
     // Q: the corner of the view frustum on the far side of the plane, in view space.
     const glm::dmat4 inverse = glm::inverse(projection);
     const glm::dvec4 clipSpacePlane = glm::transpose(inverse) * c;
@@ -79,10 +80,10 @@ Result<glm::dmat4> obliqueProjection(const glm::dmat4& projection, const glm::dv
     const glm::dvec3 farCorner = glm::dvec3(q) / q.w;
     const double cornerDistance = cq / q.w; // world distance of the far corner beyond the plane
     if (!(cornerDistance > 1e-9 * std::max(1.0, glm::length(farCorner))))
-        return Error{cornerDistance > -1e-9
-                         ? "the mirror plane is seen edge-on: it passes through the far corner "
-                           "of the view, where the oblique scale 2/(C·Q) blows up"
-                         : "nothing beyond the mirror plane is in view"};
+        return base::Error{cornerDistance > -1e-9
+                               ? "the mirror plane is seen edge-on: it passes through the far corner "
+                                 "of the view, where the oblique scale 2/(C·Q) blows up"
+                               : "nothing beyond the mirror plane is in view"};
     const glm::dvec4 row3(projection[0][3], projection[1][3], projection[2][3], projection[3][3]);
     const glm::dvec4 row2 = c * (2.0 / cq) - row3;
     glm::dmat4 result = projection;
@@ -91,7 +92,7 @@ Result<glm::dmat4> obliqueProjection(const glm::dmat4& projection, const glm::dv
     for (int col = 0; col < 4; ++col)
         for (int row = 0; row < 4; ++row)
             if (!std::isfinite(result[col][row]))
-                return Error{"oblique projection is not finite"};
+                return base::Error{"oblique projection is not finite"};
     return result;
 }
 

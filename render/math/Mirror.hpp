@@ -1,7 +1,7 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "render/frame/FrameInput.hpp"
 
 #include <array>
 #include <glm/mat4x4.hpp>
@@ -22,14 +22,14 @@ struct Plane {
 
 // The plane of a mirror: its node's local XZ plane, facing local +Y. Fails when the transform collapses
 // the rectangle (zero area), so there is no plane to reflect in.
-Result<Plane> mirrorPlane(const glm::dmat4& world);
+base::Result<Plane> mirrorPlane(const glm::dmat4& world);
 
 // The four world corners of a mirror rectangle, counter-clockwise seen from the reflective side.
 std::array<glm::dvec3, 4> mirrorCorners(const Mirror& mirror);
 
 // R = I − 2nnᵀ with the translation −2dn: reflects points through the plane. Requires a unit normal
 // (|n| = 1 within 1e-9); a zero or non-unit normal is an error, never a silently wrong matrix.
-Result<glm::dmat4> reflectionMatrix(const Plane& plane);
+base::Result<glm::dmat4> reflectionMatrix(const Plane& plane);
 
 // Transforms a plane (as a 4-vector n, d) by a point transform M: the plane of M·x.
 glm::dvec4 transformPlane(const glm::dvec4& plane, const glm::dmat4& m);
@@ -39,7 +39,7 @@ glm::dvec4 transformPlane(const glm::dvec4& plane, const glm::dmat4& m);
 // one. The camera (the view-space origin) must lie strictly on the negative side, and the plane must not
 // pass through the far corner of the frustum (where the scale 2/(C·Q) blows up); otherwise an error says
 // which, and there is no matrix.
-Result<glm::dmat4> obliqueProjection(const glm::dmat4& projection, const glm::dvec4& clipPlane);
+base::Result<glm::dmat4> obliqueProjection(const glm::dmat4& projection, const glm::dvec4& clipPlane);
 
 // The part of a mirror's rectangle worth drawing in a view. `rectangle` maps the unit square [-1, 1]² of
 // local XZ to the mirror's rectangle, `toClip` maps that square to the view's clip space. A GPU draws the

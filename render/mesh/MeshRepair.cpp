@@ -67,16 +67,16 @@ std::string RepairReport::summary() const {
     return out.str();
 }
 
-Result<MeshData> repairMesh(MeshData mesh, RepairReport& report, std::size_t maxTriangles) {
+base::Result<MeshData> repairMesh(MeshData mesh, RepairReport& report, std::size_t maxTriangles) {
     report = RepairReport{};
     if (mesh.indices.size() / 3 > maxTriangles || mesh.positions.size() / 3 > maxTriangles) {
         std::ostringstream out;
         out << "mesh too large (" << mesh.indices.size() / 3 << " triangles, " << mesh.positions.size()
             << " vertices; the limit is " << maxTriangles << " triangles)";
-        return Error{out.str()};
+        return base::Error{out.str()};
     }
     if (mesh.positions.size() > std::numeric_limits<std::uint32_t>::max()) {
-        return Error{"mesh too large (vertex count does not fit 32-bit indices)"};
+        return base::Error{"mesh too large (vertex count does not fit 32-bit indices)"};
     }
 
     const std::size_t vertexCount = mesh.positions.size();
@@ -109,7 +109,7 @@ Result<MeshData> repairMesh(MeshData mesh, RepairReport& report, std::size_t max
         if (report.droppedTriangles() > 0) {
             out << " (" << report.droppedTriangles() << " dropped: " << report.summary() << ")";
         }
-        return Error{out.str()};
+        return base::Error{out.str()};
     }
 
     // 2. Compact the vertices to those still referenced (this also removes non-finite positions, which

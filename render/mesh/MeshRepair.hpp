@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 #include "render/mesh/MeshData.hpp"
 
 #include <cstddef>
@@ -36,7 +36,7 @@ struct RepairReport {
 // non-finite or zero (area-weighted average of the adjacent faces) and normalises the rest. Fails with a
 // user-facing message when no triangle survives or the mesh has more than `maxTriangles` triangles (or
 // 3 * maxTriangles vertices); that check comes first, before anything is allocated.
-Result<MeshData> repairMesh(MeshData mesh, RepairReport& report,
-                            std::size_t maxTriangles = kMaxMeshTriangles);
+base::Result<MeshData> repairMesh(MeshData mesh, RepairReport& report,
+                                  std::size_t maxTriangles = kMaxMeshTriangles);
 
 } // namespace speculum::render

@@ -1,7 +1,7 @@
 #include "render/metrics/ErrorMetrics.hpp"
 
 #include "render/image/ColorSpace.hpp"
-#include "render/image/ImageWriter.hpp"
+#include "render/imageio/ImageWriter.hpp"
 
 #include <algorithm>
 #include <array>
@@ -17,14 +17,14 @@ std::string sizeText(const Image& image) {
     return std::to_string(image.width) + "x" + std::to_string(image.height);
 }
 
-Status checkSizes(const Image& test, const Image& reference) {
+base::Status checkSizes(const Image& test, const Image& reference) {
     if (test.width != reference.width || test.height != reference.height)
-        return Error{"cannot compare a " + sizeText(test) + " image with a " + sizeText(reference) +
-                     " reference"};
+        return base::Error{"cannot compare a " + sizeText(test) + " image with a " + sizeText(reference) +
+                           " reference"};
     const std::size_t values = static_cast<std::size_t>(test.width) * test.height * 4;
     if (test.rgba.size() != values || reference.rgba.size() != values)
-        return Error{"image data does not match its size"};
-    return Done{};
+        return base::Error{"image data does not match its size"};
+    return base::Done{};
 }
 
 double encode(float value, Encoding encoding) {
@@ -37,14 +37,14 @@ double encode(float value, Encoding encoding) {
 
 } // namespace
 
-Result<ErrorStats> compare(const Image& test, const Image& reference, const std::vector<std::uint8_t>* mask,
-                           Encoding encoding) {
-    if (Status sizes = checkSizes(test, reference); !sizes)
-        return Error{sizes.error()};
+base::Result<ErrorStats> compare(const Image& test, const Image& reference,
+                                 const std::vector<std::uint8_t>* mask, Encoding encoding) {
+    if (base::Status sizes = checkSizes(test, reference); !sizes)
+        return base::Error{sizes.error()};
     const std::size_t pixels = static_cast<std::size_t>(test.width) * test.height;
     if (mask && mask->size() != pixels)
-        return Error{"the mask has " + std::to_string(mask->size()) + " entries for " +
-                     std::to_string(pixels) + " pixels"};
+        return base::Error{"the mask has " + std::to_string(mask->size()) + " entries for " +
+                           std::to_string(pixels) + " pixels"};
     ErrorStats stats;
     double sum = 0.0;
     for (std::size_t p = 0; p < pixels; ++p) {
@@ -67,9 +67,9 @@ Result<ErrorStats> compare(const Image& test, const Image& reference, const std:
     return stats;
 }
 
-Result<Image> absoluteDifference(const Image& test, const Image& reference, Encoding encoding) {
-    if (Status sizes = checkSizes(test, reference); !sizes)
-        return Error{sizes.error()};
+base::Result<Image> absoluteDifference(const Image& test, const Image& reference, Encoding encoding) {
+    if (base::Status sizes = checkSizes(test, reference); !sizes)
+        return base::Error{sizes.error()};
     Image diff;
     diff.width = test.width;
     diff.height = test.height;
@@ -117,7 +117,7 @@ Image errorColorMap(const Image& difference, double fullScale) {
     return map;
 }
 
-Status writeErrorMap(const std::string& path, const Image& difference, double fullScale) {
+base::Status writeErrorMap(const std::string& path, const Image& difference, double fullScale) {
     ImageMetadata metadata;
     char scale[64];
     std::snprintf(scale, sizeof scale, "%g", fullScale);
@@ -135,11 +135,11 @@ double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
     return std::atan2(glm::length(glm::cross(ua, ub)), glm::dot(ua, ub));
 }
 
-Result<AngularStats> angularError(const std::vector<glm::dvec3>& lookedUp,
-                                  const std::vector<glm::dvec3>& exact) {
+base::Result<AngularStats> angularError(const std::vector<glm::dvec3>& lookedUp,
+                                        const std::vector<glm::dvec3>& exact) {
     if (lookedUp.size() != exact.size())
-        return Error{"cannot compare " + std::to_string(lookedUp.size()) + " directions with " +
-                     std::to_string(exact.size())};
+        return base::Error{"cannot compare " + std::to_string(lookedUp.size()) + " directions with " +
+                           std::to_string(exact.size())};
     AngularStats stats;
     stats.count = lookedUp.size();
     if (stats.count == 0)

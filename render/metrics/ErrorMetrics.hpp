@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/Result.hpp"
+#include "base/Result.hpp"
 #include "render/image/Image.hpp"
 
 #include <cstdint>
@@ -29,13 +29,13 @@ struct ErrorStats {
 // RMSE and PSNR of `test` against `reference` over all pixels, or over those whose mask byte is non-zero
 // (mask: one byte per pixel, row 0 at the top, e.g. reference::mirrorMask). Errors: sizes differ, or the
 // mask has the wrong length. Non-finite values count as 0.
-Result<ErrorStats> compare(const Image& test, const Image& reference,
-                           const std::vector<std::uint8_t>* mask = nullptr,
-                           Encoding encoding = Encoding::Srgb);
+base::Result<ErrorStats> compare(const Image& test, const Image& reference,
+                                 const std::vector<std::uint8_t>* mask = nullptr,
+                                 Encoding encoding = Encoding::Srgb);
 
 // Per-pixel absolute difference |test − reference| per channel (in `encoding`), alpha 1.
-Result<Image> absoluteDifference(const Image& test, const Image& reference,
-                                 Encoding encoding = Encoding::Srgb);
+base::Result<Image> absoluteDifference(const Image& test, const Image& reference,
+                                       Encoding encoding = Encoding::Srgb);
 
 // Full scale of the error map: a per-pixel error of 0.25 (a quarter of the sRGB range, 64 of 255 levels)
 // or more gets the ramp's top colour.
@@ -51,7 +51,8 @@ glm::dvec3 errorRamp(double x);
 Image errorColorMap(const Image& difference, double fullScale = kErrorMapFullScale);
 
 // Writes errorColorMap(difference) through ImageWriter (format by extension; atomic).
-Status writeErrorMap(const std::string& path, const Image& difference, double fullScale = kErrorMapFullScale);
+base::Status writeErrorMap(const std::string& path, const Image& difference,
+                           double fullScale = kErrorMapFullScale);
 
 // The angle between two directions in radians (0..π), stable for nearly equal and nearly opposite
 // directions; 0 if either is zero or not finite (there is no angle to measure).
@@ -66,7 +67,7 @@ struct AngularStats {
 
 // The angular error of environment-map lookups: angle between each direction the map gives (`looked up`)
 // and the exact direction, pairwise. Errors: the two sets differ in length.
-Result<AngularStats> angularError(const std::vector<glm::dvec3>& lookedUp,
-                                  const std::vector<glm::dvec3>& exact);
+base::Result<AngularStats> angularError(const std::vector<glm::dvec3>& lookedUp,
+                                        const std::vector<glm::dvec3>& exact);
 
 } // namespace speculum::render::metrics

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
-#include "render/envmap/EnvironmentCapture.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/gl/Program.hpp"
+#include "render/passes/EnvironmentCapture.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/WarpMeshes.hpp"
 #include "render/plan/FramePlan.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/gl/GpuMesh.hpp"
 #include "render/gl/Program.hpp"
 #include "render/gl/TextureCache.hpp"

@@ -31,7 +31,8 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
         r.dummyShadowCube.id(), r.unitPlane};
     context.coarseItems = frame.plan.coarseItems;
     const EnvmapPlan& map = *frame.plan.envmap;
-    if (Status captured = r.reflector.capture(frame.input, map, context, {&r.flatProgram, &r.mirrorProgram});
+    if (base::Status captured =
+            r.reflector.capture(frame.input, map, context, {&r.flatProgram, &r.mirrorProgram});
         !captured) {
         frame.warnings.push_back(captured.error());
         return {};
@@ -49,7 +50,7 @@ PassResult runPrefilter(const PlannedPass& pass, FrameExecution& frame) {
         return {false, {}};
     }
     bindWrites(pass.writes, frame);
-    if (Status filtered = r.reflector.prefilter(*reflector, frame.input.settings.prefilterSamples);
+    if (base::Status filtered = r.reflector.prefilter(*reflector, frame.input.settings.prefilterSamples);
         !filtered) {
         frame.warnings.push_back(filtered.error());
         return {};

@@ -1,6 +1,6 @@
 // The three passes of a planar mirror's view: its mask in the parent's view, the reflected scene, and the
 // mirror's surface over it.
-#include "render/io/Printable.hpp"
+#include "base/Printable.hpp"
 #include "render/passes/MirrorPasses.hpp"
 #include "render/passes/PassExecutors.hpp"
 
@@ -75,13 +75,13 @@ PassResult runMirror(const PlannedPass& pass, FrameExecution& frame) {
         const bool encoded = keptEncoded(viewOf(pass, frame), pass.view, frame);
         if (encoded)
             result.outcome = "8-bit sRGB reflection texture, which the mirror's surface copies as stored";
-        if (Status made = texture.ensure(frame.target.width, frame.target.height,
-                                         encoded ? GL_SRGB8_ALPHA8 : GL_RGBA16F, true);
+        if (base::Status made = texture.ensure(frame.target.width, frame.target.height,
+                                               encoded ? GL_SRGB8_ALPHA8 : GL_RGBA16F, true);
             !made) {
             // No texture to draw the reflection into: the mirror's passes (and those of views inside it)
             // are skipped and reported, with the reason.
             const std::string why = "its reflection texture: " + made.error();
-            frame.warnings.push_back("mirror " + quoted(pass.target) + ": no reflection, " + why);
+            frame.warnings.push_back("mirror " + base::quoted(pass.target) + ": no reflection, " + why);
             frame.hidden[static_cast<std::size_t>(pass.view)] = why;
             frame.skipped.push_back({pass.target, "no reflection: " + why});
             return {false, {}};

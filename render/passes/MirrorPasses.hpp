@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/plan/FramePlan.hpp"
 

@@ -1,7 +1,6 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
-#include "render/Renderer.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/gl/GpuMesh.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/gl/Program.hpp"
@@ -13,6 +12,7 @@
 #include "render/passes/ShadowMaps.hpp"
 #include "render/plan/FramePlan.hpp"
 #include "render/plan/Planner.hpp"
+#include "render/plan/RenderOptions.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <string>

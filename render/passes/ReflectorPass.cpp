@@ -1,7 +1,7 @@
 #include "render/passes/ReflectorPass.hpp"
 
-#include "render/GpuLimits.hpp"
-#include "render/io/Printable.hpp"
+#include "base/Printable.hpp"
+#include "render/plan/GpuLimits.hpp"
 
 #include <algorithm>
 
@@ -46,24 +46,24 @@ MainPassContext withProgram(const gl::Program& program, MainPassContext& base, M
 
 } // namespace
 
-Status ReflectorPass::init() {
+base::Status ReflectorPass::init() {
     auto warp = gl::Program::build("mesh.vert", "mesh.frag", "#define ENVMAP_WARP 1");
     if (!warp)
-        return Error{warp.error()};
+        return base::Error{warp.error()};
     auto surface = gl::Program::build("mesh.vert", "reflector.frag");
     if (!surface)
-        return Error{surface.error()};
+        return base::Error{surface.error()};
     auto warpFlat = gl::Program::build("shadow.vert", "flat.frag", "#define ENVMAP_WARP 1");
     if (!warpFlat)
-        return Error{warpFlat.error()};
+        return base::Error{warpFlat.error()};
     auto warpMirror = gl::Program::build("mesh.vert", "mirror.frag", "#define ENVMAP_WARP 1");
     if (!warpMirror)
-        return Error{warpMirror.error()};
+        return base::Error{warpMirror.error()};
     m_warpFlat = std::move(*warpFlat);
     m_warpMirror = std::move(*warpMirror);
     m_warp = std::move(*warp);
     m_surface = std::move(*surface);
-    return Done{};
+    return base::Done{};
 }
 
 bool ReflectorPass::hasMap(const Reflector& reflector) const {
@@ -76,11 +76,11 @@ int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>
                                    wanted.type == envmap::MapType::Cube ? 0 : static_cast<int>(wanted.fill)};
     std::string otherError;
     const gl::SizeFallback::Fitted fitted =
-        m_fallbacks[kind].fit(reflector.resolution, kMinEnvmapResolution, [&](int n) -> Status {
+        m_fallbacks[kind].fit(reflector.resolution, kMinEnvmapResolution, [&](int n) -> base::Status {
             envmap::CaptureSettings settings = wanted;
             settings.resolution = n;
             if (m_capture && sameSettings(m_capture->settings(), settings))
-                return Done{};
+                return base::Done{};
             m_capture.reset(); // the old map's memory first: it may be what the new one needs
             m_settingsKey = 0;
             bool sizeFailure = false;
@@ -88,14 +88,14 @@ int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>
             if (!created) {
                 if (!sizeFailure) { // a shader: no smaller size helps, and none is remembered as failing
                     otherError = created.error();
-                    return Done{};
+                    return base::Done{};
                 }
-                return Error{created.error()};
+                return base::Error{created.error()};
             }
             m_capture = std::move(*created);
-            return Done{};
+            return base::Done{};
         });
-    const std::string name = "reflector " + quoted(reflector.name);
+    const std::string name = "reflector " + base::quoted(reflector.name);
     if (!otherError.empty()) {
         m_capture.reset();
         warnings.push_back(name + ": " + otherError);
@@ -114,8 +114,8 @@ int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>
     return fitted.size;
 }
 
-Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
-                              const EnvironmentMirrorPrograms& mirrors) {
+base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
+                                    const EnvironmentMirrorPrograms& mirrors) {
     const EnvmapCapture& where = plan.capture;
     const Reflector& reflector = *input.reflector;
     const std::uint64_t key = envmapSettingsKey(reflector);
@@ -126,7 +126,8 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, M
         m_settingsKey = 0;
         auto created = envmap::EnvironmentCapture::create(captureSettings(reflector));
         if (!created)
-            return Error{"reflector " + quoted(reflector.name) + ": the environment map " + created.error()};
+            return base::Error{"reflector " + base::quoted(reflector.name) + ": the environment map " +
+                               created.error()};
         m_capture = std::move(*created);
     }
     m_settingsKey = 0; // rendered below
@@ -173,31 +174,32 @@ Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, M
     m_capture->update(view, drawFace, drawWarped);
     m_settingsKey = key;
     ++m_captures; // the chain, if any, holds an older map now
-    return Done{};
+    return base::Done{};
 }
 
-Status ReflectorPass::prefilter(const Reflector& reflector, int samples) {
+base::Status ReflectorPass::prefilter(const Reflector& reflector, int samples) {
     if (!hasMap(reflector))
-        return Done{}; // nothing captured (the map could not be allocated: warned already)
+        return base::Done{}; // nothing captured (the map could not be allocated: warned already)
     m_chainOf = 0;
     if (!m_prefilter) {
         auto created = envmap::GgxPrefilter::create();
         if (!created)
-            return Error{"reflector " + quoted(reflector.name) + ": the GGX pre-filter " + created.error()};
+            return base::Error{"reflector " + base::quoted(reflector.name) + ": the GGX pre-filter " +
+                               created.error()};
         m_prefilter = std::move(*created);
     }
-    if (Status filtered = m_prefilter->filter(*m_capture, samples); !filtered)
-        return Error{"reflector " + quoted(reflector.name) + ": " + filtered.error() +
-                     "; drawn with the map's mip chain instead"};
+    if (base::Status filtered = m_prefilter->filter(*m_capture, samples); !filtered)
+        return base::Error{"reflector " + base::quoted(reflector.name) + ": " + filtered.error() +
+                           "; drawn with the map's mip chain instead"};
     m_chainOf = m_captures;
-    return Done{};
+    return base::Done{};
 }
 
-Status ReflectorPass::selectLighting(const std::string& variant, bool drawVariants) {
+base::Status ReflectorPass::selectLighting(const std::string& variant, bool drawVariants) {
     for (gl::Program* program : {&m_warp, &m_warpMirror, &m_surface})
-        if (Status selected = program->select(variant, drawVariants); !selected)
+        if (base::Status selected = program->select(variant, drawVariants); !selected)
             return selected;
-    return Done{};
+    return base::Done{};
 }
 
 bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context) {

@@ -1,11 +1,11 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
-#include "render/Result.hpp"
-#include "render/envmap/EnvironmentCapture.hpp"
-#include "render/envmap/GgxPrefilter.hpp"
+#include "base/Result.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/gl/Allocation.hpp"
+#include "render/passes/EnvironmentCapture.hpp"
 #include "render/passes/EnvironmentMirrors.hpp"
+#include "render/passes/GgxPrefilter.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/WarpMeshes.hpp"
 #include "render/plan/Planner.hpp"
@@ -30,9 +30,9 @@ namespace speculum::render::passes {
 class ReflectorPass {
 public:
     // Builds the programs. Needs a current context.
-    Status init();
+    base::Status init();
     // Selects the lit shaders' variant for the frame's lights (gl::Program::select) in every program.
-    Status selectLighting(const std::string& variant, bool drawVariants);
+    base::Status selectLighting(const std::string& variant, bool drawVariants);
 
     // Allocates (or keeps) the reflector's map at the largest resolution up to its own that the GPU holds
     // (halving from there) and returns it; 0 if not even the smallest fits, or on another error (both
@@ -44,8 +44,8 @@ public:
     // Renders the map for `input.reflector` (re-creating its textures when the map settings changed) as
     // `plan` says: from its capture point, with the mirror views planned in each face or component.
     // `mirrors` are the cube faces' mirror programs (the warp's variants are the pass's own).
-    Status capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
-                   const EnvironmentMirrorPrograms& mirrors = {});
+    base::Status capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
+                         const EnvironmentMirrorPrograms& mirrors = {});
 
     // Whether a map made with the reflector's current settings exists.
     bool hasMap(const Reflector& reflector) const;
@@ -53,7 +53,7 @@ public:
     // The Prefilter pass: convolves the map last captured with the GGX lobe into the pre-filtered chain
     // (envmap::GgxPrefilter), `samples` a texel. An error (the program, the chain's allocation) leaves no
     // chain: the reflector then reads the map's mip chain (GlossyFilter::Mip) and the caller warns.
-    Status prefilter(const Reflector& reflector, int samples);
+    base::Status prefilter(const Reflector& reflector, int samples);
     // Whether the chain holds the map as last captured (the surface reads it for Footprint).
     bool hasChain(const Reflector& reflector) const {
         return hasMap(reflector) && m_chainOf != 0 && m_chainOf == m_captures;

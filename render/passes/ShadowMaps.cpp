@@ -1,10 +1,10 @@
 #include "render/passes/ShadowMaps.hpp"
 
-#include "render/GpuLimits.hpp"
+#include "base/Printable.hpp"
 #include "render/gl/Memory.hpp"
-#include "render/io/Printable.hpp"
 #include "render/math/Projection.hpp"
 #include "render/passes/MainPass.hpp"
+#include "render/plan/GpuLimits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,7 +38,7 @@ void useFilter(ShadowMap& map, int pcf) {
 
 } // namespace
 
-Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size, int pcf) {
+base::Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size, int pcf) {
     m_maps.erase(lightIndex); // the old map's memory first: it may be what the new one needs
     ShadowMap map;
     map.cube = cube;
@@ -46,7 +46,7 @@ Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size, int pcf) {
     map.filterPcf = pcf;
     const std::size_t bytes = (cube ? 6u : 1u) * static_cast<std::size_t>(size) *
                               static_cast<std::size_t>(size) * gl::bytesPerTexel(GL_DEPTH_COMPONENT24);
-    if (Status fits = gl::beginAllocation(bytes); !fits)
+    if (base::Status fits = gl::beginAllocation(bytes); !fits)
         return fits;
     map.depth = gl::makeTexture();
     map.framebuffer = gl::makeFramebuffer();
@@ -72,7 +72,7 @@ Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size, int pcf) {
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
     setDepthSampling(target, map.filterPcf);
     glBindTexture(target, 0);
-    if (Status allocated = gl::finishAllocation(); !allocated)
+    if (base::Status allocated = gl::finishAllocation(); !allocated)
         return allocated;
     // Drivers may allocate only when the texture is first used: a target that cannot be drawn into is
     // as failed as an out-of-memory error.
@@ -84,11 +84,11 @@ Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size, int pcf) {
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
                                cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GLenum(GL_TEXTURE_2D),
                                map.depth.id(), 0);
-        if (Status complete = gl::checkFramebuffer(); !complete)
+        if (base::Status complete = gl::checkFramebuffer(); !complete)
             return complete;
     }
     m_maps.emplace(lightIndex, std::move(map));
-    return Done{};
+    return base::Done{};
 }
 
 int ShadowMaps::allocate(const FrameInput& input, const ShadowPlan& shadow,
@@ -99,10 +99,10 @@ int ShadowMaps::allocate(const FrameInput& input, const ShadowPlan& shadow,
     const bool cube = shadow.frustum.cube;
     gl::SizeFallback& fallback = cube ? m_fallbackCube : m_fallback2D;
     const gl::SizeFallback::Fitted fitted =
-        fallback.fit(requested, kMinShadowMapSize, [&](int size) -> Status {
+        fallback.fit(requested, kMinShadowMapSize, [&](int size) -> base::Status {
             if (const ShadowMap* map = find(lightIndex);
                 map && map->depth && map->cube == cube && map->size == size)
-                return Done{};
+                return base::Done{};
             return allocateMap(lightIndex, cube, size, shadow.pcf);
         });
     if (auto it = m_maps.find(lightIndex); it != m_maps.end())
@@ -110,7 +110,7 @@ int ShadowMaps::allocate(const FrameInput& input, const ShadowPlan& shadow,
     if (fitted.size == requested)
         return requested;
     const std::string name =
-        light.name.empty() ? "light " + std::to_string(lightIndex) : "light " + quoted(light.name);
+        light.name.empty() ? "light " + std::to_string(lightIndex) : "light " + base::quoted(light.name);
     const std::string asked = std::to_string(requested) + "²" + (cube ? " cube" : "");
     if (fitted.size == 0)
         warnings.push_back(name + ": the " + asked + " shadow map " + fitted.reason +

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/gl/Allocation.hpp"
 #include "render/gl/GpuMesh.hpp"
 #include "render/gl/Objects.hpp"
@@ -62,7 +62,7 @@ public:
 
 private:
     // Allocates a new map of that size, checked; nothing is left behind when it fails.
-    Status allocateMap(int lightIndex, bool cube, int size, int pcf);
+    base::Status allocateMap(int lightIndex, bool cube, int size, int pcf);
     ShadowMap& prepare(const ShadowPlan& shadow);
     std::unordered_map<int, ShadowMap> m_maps;
     gl::SizeFallback m_fallback2D;   // spot and directional lights' maps

@@ -1,6 +1,6 @@
 #include "render/plan/Planner.hpp"
 
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
 #include "render/math/ShadowFrustum.hpp"
 #include "render/plan/FrameHashing.hpp"

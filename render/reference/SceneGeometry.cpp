@@ -183,7 +183,7 @@ double SceneGeometry::offset(const glm::dvec3& p) {
     return 2e-5 * extent;
 }
 
-Result<std::unique_ptr<SceneGeometry>>
+base::Result<std::unique_ptr<SceneGeometry>>
 SceneGeometry::build(const FrameInput& input, const glm::dvec3& origin, std::vector<std::string>& warnings,
                      const TextureSet* textures, const std::vector<MaterialTextures>* itemTextures) {
     std::unique_ptr<SceneGeometry> geometry(new SceneGeometry);
@@ -229,7 +229,7 @@ SceneGeometry::build(const FrameInput& input, const glm::dvec3& origin, std::vec
     auto embree = std::make_unique<Embree>();
     embree->device = rtcNewDevice(nullptr);
     if (!embree->device)
-        return Error{"cannot start Embree: " + deviceError(nullptr)};
+        return base::Error{"cannot start Embree: " + deviceError(nullptr)};
     embree->all = rtcNewScene(embree->device);
     embree->casters = rtcNewScene(embree->device);
     for (RTCScene scene : {embree->all, embree->casters}) {
@@ -256,7 +256,7 @@ SceneGeometry::build(const FrameInput& input, const glm::dvec3& origin, std::vec
     rtcCommitScene(embree->all);
     rtcCommitScene(embree->casters);
     if (const std::string error = deviceError(embree->device); !error.empty())
-        return Error{error};
+        return base::Error{error};
     geometry->m_embree = std::move(embree);
     return geometry;
 }

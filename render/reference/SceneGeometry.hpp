@@ -1,7 +1,7 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/reference/TextureSampler.hpp"
 
 #include <cstdint>
@@ -65,7 +65,7 @@ class SceneGeometry {
 public:
     // `origin` is the world point that becomes (0,0,0): the camera position. `itemTextures` (one per item,
     // indices into `textures`) give masked materials their alpha; without them masks are ignored.
-    static Result<std::unique_ptr<SceneGeometry>>
+    static base::Result<std::unique_ptr<SceneGeometry>>
     build(const FrameInput& input, const glm::dvec3& origin, std::vector<std::string>& warnings,
           const TextureSet* textures = nullptr, const std::vector<MaterialTextures>* itemTextures = nullptr);
     ~SceneGeometry();

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/reference/SceneGeometry.hpp"
 #include "render/reference/TextureSampler.hpp"
 #include "render/reference/Tracer.hpp"

@@ -1,7 +1,7 @@
 #include "render/reference/TextureSampler.hpp"
 
 #include "render/image/ColorSpace.hpp"
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/TextureLoader.hpp"
 
 #include <algorithm>
 #include <cmath>

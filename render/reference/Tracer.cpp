@@ -1,10 +1,10 @@
 #include "render/reference/Tracer.hpp"
 
-#include "render/SceneLimits.hpp"
-#include "render/StillSize.hpp"
+#include "render/frame/SceneLimits.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"
+#include "render/plan/StillSize.hpp"
 #include "render/reference/GlossySampling.hpp"
 #include "render/reference/SceneGeometry.hpp"
 #include "render/reference/Shading.hpp"
@@ -196,7 +196,7 @@ const std::vector<std::string>& Tracer::warnings() const {
     return m_impl->warnings;
 }
 
-Result<Tracer> Tracer::create(const FrameInput& input) {
+base::Result<Tracer> Tracer::create(const FrameInput& input) {
     auto impl = std::make_unique<Impl>();
     impl->input = input;
     const glm::dvec3 origin = input.camera.position;
@@ -211,7 +211,7 @@ Result<Tracer> Tracer::create(const FrameInput& input) {
     auto geometry =
         SceneGeometry::build(impl->input, origin, impl->warnings, &impl->textures, &impl->itemTexture);
     if (!geometry)
-        return Error{geometry.error()};
+        return base::Error{geometry.error()};
     impl->geometry = std::move(*geometry);
     for (const Mirror& mirror : impl->input.mirrors) {
         // The plane in camera-relative coordinates; a collapsed rectangle has none and never reflects.
@@ -227,10 +227,10 @@ Result<Tracer> Tracer::create(const FrameInput& input) {
     return Tracer(std::move(impl));
 }
 
-Result<TraceResult> Tracer::render(const TraceSettings& settings, const TraceProgress& progress) const {
+base::Result<TraceResult> Tracer::render(const TraceSettings& settings, const TraceProgress& progress) const {
     const auto start = std::chrono::steady_clock::now();
-    if (Status size = checkStillSize(settings.width, settings.height); !size)
-        return Error{size.error()};
+    if (base::Status size = checkStillSize(settings.width, settings.height); !size)
+        return base::Error{size.error()};
     const Impl& impl = *m_impl;
     const int width = settings.width, height = settings.height;
     const int n = std::clamp(settings.ssaa, kMinSsaa, kMaxSsaa);
@@ -307,7 +307,7 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
 
     // A first call before any work, so a caller can cancel at once.
     if (progress && !progress(0.0))
-        return Error{"render cancelled"};
+        return base::Error{"render cancelled"};
     std::atomic<int> nextRow{0};
     std::atomic<int> rowsDone{0};
     std::atomic<bool> cancelled{false};
@@ -373,7 +373,7 @@ Result<TraceResult> Tracer::render(const TraceSettings& settings, const TracePro
     for (std::thread& t : workers)
         t.join();
     if (cancelled)
-        return Error{"render cancelled"};
+        return base::Error{"render cancelled"};
     if (progress)
         progress(1.0);
     double noise = 0.0;

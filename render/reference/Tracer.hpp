@@ -1,7 +1,7 @@
 #pragma once
 
-#include "render/FrameInput.hpp"
-#include "render/Result.hpp"
+#include "base/Result.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/image/Image.hpp"
 #include "render/reference/IdBuffer.hpp"
 
@@ -104,14 +104,14 @@ struct TraceResult {
 class Tracer {
 public:
     // Builds the acceleration structures. Errors: Embree cannot start (no supported CPU).
-    static Result<Tracer> create(const FrameInput& input);
+    static base::Result<Tracer> create(const FrameInput& input);
 
     Tracer(Tracer&&) noexcept;
     Tracer& operator=(Tracer&&) noexcept;
     ~Tracer();
 
     // Renders width × height. Errors: a size that is not positive, or the caller cancelled.
-    Result<TraceResult> render(const TraceSettings& settings, const TraceProgress& progress = {}) const;
+    base::Result<TraceResult> render(const TraceSettings& settings, const TraceProgress& progress = {}) const;
 
     // Warnings from building the scene: textures that failed to load, triangles dropped as invalid.
     const std::vector<std::string>& warnings() const;

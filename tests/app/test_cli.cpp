@@ -1,6 +1,6 @@
 // The speculum command line as a user runs it: exit status, the one-line error, the files it writes.
-#include "render/StillRenderer.hpp"
 #include "render/gl/HeadlessContext.hpp"
+#include "render/renderer/StillRenderer.hpp"
 #include "support/CliRun.hpp"
 
 #include <OpenImageIO/imageio.h>

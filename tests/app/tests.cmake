@@ -1,7 +1,7 @@
 # Runs the real speculum binary on an EGL surfaceless context (no display), hence the gl tier.
 speculum_add_test(test_app_cli TIER gl USES_CLI
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_cli.cpp
-    LIBS Qt6::Core PkgConfig::OIIO speculum_render)
+    LIBS Qt6::Core PkgConfig::OIIO speculum_render_renderer speculum_render_reference speculum_render_metrics speculum_render_imageio)
 # The sweep's planning and analysis without GL: tests/accuracy.
 # `speculum bench --quick` on tiny scenes made by the test (the binary renders on EGL: gl tier).
 speculum_add_test(test_bench_cli TIER gl USES_CLI

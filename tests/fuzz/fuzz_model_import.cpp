@@ -5,8 +5,8 @@
 // the fuzzer gets past "file not found" into the readers; an OBJ's mtllib gets a small material library.
 // The read runs in a child process (ModelImportProcess): a crash or hang inside Assimp is a refusal, not
 // a finding, and the CPU limit is set low so that a hang ends well inside libFuzzer's -timeout.
-#include "editor/document/ModelImport.hpp"
-#include "editor/document/ModelPrecheck.hpp"
+#include "scene/import/ModelImport.hpp"
+#include "scene/import/ModelPrecheck.hpp"
 
 #include <QByteArray>
 #include <QJsonArray>

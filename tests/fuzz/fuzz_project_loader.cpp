@@ -1,7 +1,7 @@
 // libFuzzer target for the project loader: any bytes must give either a scene or an error message —
 // never a crash, a hang or a sanitizer report — and whatever loads must save and load back to the same
 // bytes (so a file speculum accepted is never damaged by saving it).
-#include "editor/document/ProjectFile.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QByteArray>
 #include <QDir>

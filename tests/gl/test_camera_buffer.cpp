@@ -5,11 +5,11 @@
 // for scenes made to tell the two apart; a frame that needs the half-float buffer keeps it, and float
 // outputs (EXR stills) stay linear and unclamped.
 #include "GlTest.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "render/gl/Memory.hpp"
 #include "render/gl/Objects.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <algorithm>
 #include <cmath>

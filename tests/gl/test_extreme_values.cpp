@@ -3,8 +3,8 @@
 // finite pixels. "Right" is the tracer's image, compared as the accuracy tests compare: flat colours that
 // say which object each pixel shows, or the lit colour within a relative tolerance.
 #include "GlTest.hpp"
-#include "render/SceneLimits.hpp"
-#include "render/image/ImageWriter.hpp"
+#include "render/frame/SceneLimits.hpp"
+#include "render/imageio/ImageWriter.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/plan/Planner.hpp"
 #include "render/reference/Tracer.hpp"

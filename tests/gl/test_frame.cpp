@@ -95,9 +95,9 @@ TEST_F(GlTest, SupersamplingAveragesSubPixelSamples) {
 } // namespace
 } // namespace speculum::test
 
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 namespace speculum::test {
 namespace {

@@ -4,9 +4,9 @@
 // (what `speculum explain` prints) says the size used. Real 8192² maps on this machine's driver, and a
 // test limit (gl::setAllocationLimitForTesting) that makes any GPU refuse large allocations.
 #include "GlTest.hpp"
-#include "render/envmap/EnvironmentCapture.hpp"
 #include "render/gl/Allocation.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "render/passes/EnvironmentCapture.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -365,11 +365,11 @@ TEST(SizeFallback, HalvesToTheLargestSizeThatWorksAndRemembersFailures) {
     render::gl::SizeFallback fallback;
     std::vector<int> tried;
     auto upTo = [&](int largest) {
-        return [&tried, largest](int size) -> render::Status {
+        return [&tried, largest](int size) -> base::Status {
             tried.push_back(size);
             if (size > largest)
-                return render::Error{"did not fit in GPU memory"};
-            return render::Done{};
+                return base::Error{"did not fit in GPU memory"};
+            return base::Done{};
         };
     };
     auto fitted = fallback.fit(8192, 16, upTo(3000));

@@ -1,9 +1,9 @@
 // Map sizes beyond what the GPU holds: a shadow map or reflector resolution larger than the context's
 // limits is drawn at the largest size it holds, with a warning in the frame report, and no GL error.
 #include "GlTest.hpp"
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,10 +2,10 @@
 // with glTF's own texture coordinates (v = 0 at the image's TOP), imported through the editor's model
 // import. Seen from the front it must show the image as an image viewer shows the file, the way Blender
 // and three.js put it; a flip anywhere between the file's uvs and the pixel fails it.
-#include "editor/document/ModelImport.hpp"
 #include "gl/GlTest.hpp"
 #include "render/MaterialScenes.hpp"
 #include "render/reference/Tracer.hpp"
+#include "scene/import/ModelImport.hpp"
 
 #include <QByteArray>
 #include <fstream>

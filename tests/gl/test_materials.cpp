@@ -6,8 +6,8 @@
 #include "render/MaterialScenes.hpp"
 #include "render/gl/Program.hpp"
 #include "render/image/ColorSpace.hpp"
-#include "render/image/ImageWriter.hpp"
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/ImageWriter.hpp"
+#include "render/imageio/TextureLoader.hpp"
 
 #include <cstdlib>
 

@@ -2,9 +2,9 @@
 // image's view, and gives the pixels of the untiled still; progress counts tiles × samples and cancel
 // stops between them; sizes beyond the GPU's limits render; absurd sizes are refused before any work.
 #include "GlTest.hpp"
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,9 +7,9 @@
 // The compared images show side by side and in a flip view; chart points label themselves on hover; clear()
 // (New, Open) forgets it all.
 #include "GuiTestSupport.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
 #include "editor/ui/SweepChart.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QAction>
 #include <QChart>

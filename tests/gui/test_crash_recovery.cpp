@@ -6,8 +6,8 @@
 // user's.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Commands.hpp"
-#include "editor/document/ProjectFile.hpp"
 #include "editor/ui/Editor.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -5,13 +5,13 @@
 #include "GuiTestSupport.hpp"
 #include "editor/document/NewScene.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/NodeMath.hpp"
-#include "editor/document/PickScene.hpp"
-#include "editor/document/Picking.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/SceneTreePanel.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/evaluate/PickScene.hpp"
+#include "scene/evaluate/Picking.hpp"
+#include "scene/model/NodeMath.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QAction>
 #include <QDir>

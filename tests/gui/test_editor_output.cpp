@@ -3,7 +3,6 @@
 // reference, as `speculum render --reference`) for the same file and settings (and a cancel writes
 // nothing), the dialog states its time, and pictures of the window with each demo scene.
 #include "GuiTestSupport.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/ExportStillDialog.hpp"
 #include "editor/ui/Gizmo.hpp"
 #include "editor/ui/Inspector.hpp"
@@ -11,6 +10,7 @@
 #include "editor/ui/RenderPassesPanel.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>

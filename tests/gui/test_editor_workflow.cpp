@@ -6,9 +6,6 @@
 #include "GuiTestSupport.hpp"
 #include "editor/document/Commands.hpp"
 #include "editor/document/NewScene.hpp"
-#include "editor/document/PickScene.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/Gizmo.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/PropertyEditors.hpp"
@@ -16,6 +13,9 @@
 #include "editor/ui/SceneTreePanel.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/evaluate/PickScene.hpp"
+#include "scene/model/Scene.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QAction>
 #include <QDir>

@@ -1,8 +1,8 @@
 // How a handle drag of the current node carries over to the other selected nodes: the same world
 // displacement in each one's parent space, the same angles, the same factors.
-#include "editor/document/NodeMath.hpp"
-#include "editor/document/SceneData.hpp"
 #include "editor/ui/Gizmo.hpp"
+#include "scene/model/NodeMath.hpp"
+#include "scene/model/SceneData.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // has no step more, and the document is not modified (no '*' in the title). A drag that ends where it
 // began leaves no step either.
 #include "GuiTestSupport.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QMouseEvent>
 #include <QTest>

@@ -11,9 +11,9 @@
 // should the process still be stuck after that, the watchdog ends it with a message.
 #include "GuiTestSupport.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
 #include "editor/view/AnimationClock.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -3,8 +3,8 @@
 // and then stop; an animated scene that plays keeps drawing until paused.
 #include "GuiTestSupport.hpp"
 #include "editor/document/Commands.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/view/AnimationClock.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QUndoStack>
 #include <QWheelEvent>

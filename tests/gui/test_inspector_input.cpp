@@ -4,12 +4,12 @@
 // image and a cancelled one writes nothing; the Accuracy panel explains its numbers, labels chart points
 // with their settings and forgets the previous document on New.
 #include "GuiTestSupport.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/PropertyEditors.hpp"
 #include "editor/ui/SweepChart.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QAction>
 #include <QApplication>

@@ -3,11 +3,11 @@
 // file leaves the open document alone.
 #include "editor/document/Commands.hpp"
 #include "editor/document/NewScene.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/ui/AppIdentity.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -5,13 +5,13 @@
 // cancelled import, leaves the document as it was. The pick hierarchy of a big model is built on the
 // worker, so the first click does not build it and the first frame does not read the file again.
 #include "GuiTestSupport.hpp"
-#include "editor/document/ModelImport.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/PickScene.hpp"
-#include "editor/document/Picking.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/evaluate/PickScene.hpp"
+#include "scene/evaluate/Picking.hpp"
+#include "scene/import/ModelImport.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QFile>
 #include <QProgressBar>

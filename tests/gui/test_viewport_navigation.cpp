@@ -3,12 +3,12 @@
 // without adaptive resolution), the view presets and guides actions, the vertical orbit's direction, and
 // a saved editor view placed after the reset of a newly opened document.
 #include "GuiTestSupport.hpp"
-#include "editor/document/Scene.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "editor/ui/ViewPresetActions.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
 #include "editor/view/ViewPresets.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QAction>
 #include <QMouseEvent>

@@ -1,9 +1,9 @@
 // Built against speculum_render_core alone, with no other include path: if the planner (or anything it
 // pulls in) included a GL, Embree or OpenImageIO header, this would not compile, and if it used one of
 // their symbols, it would not link. The test then plans a small frame, so the planner's code is linked.
-#include "render/FrameInput.hpp"
-#include "render/FrameReport.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "render/plan/FrameReport.hpp"
 #include "render/plan/Planner.hpp"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 
 // Scenes shared by the rasterizer's and the tracer's texture and material tests (tests/gl and
 // tests/render/reference), so both renderers are held to the same pictures.
-#include "render/FrameInput.hpp"
+#include "render/frame/FrameInput.hpp"
 #include "render/image/Image.hpp"
 #include "render/mesh/Primitives.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 
 // The small scene the command, undo and edit-operation tests share: A, B (with children B1, B2), C.
-#include "editor/document/Scene.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <string>
 #include <utility>

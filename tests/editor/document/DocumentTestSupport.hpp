@@ -1,6 +1,6 @@
 #pragma once
 
-#include "editor/document/ProjectFile.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QFile>
 #include <filesystem>

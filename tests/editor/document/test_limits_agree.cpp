@@ -1,11 +1,11 @@
 // The project reader and the inspector offer exactly the same range for every limited field, and both take
 // it from render/SceneLimits.hpp: each end loads and can be set in the inspector, one step beyond each end
 // is refused by both. The choices (map types, fills, ...) are spelled once, in render/SceneNames.hpp.
-#include "editor/document/ProjectFile.hpp"
 #include "editor/document/Properties.hpp"
-#include "render/GlossyLimits.hpp"
-#include "render/SceneLimits.hpp"
-#include "render/SceneNames.hpp"
+#include "render/frame/GlossyLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
+#include "render/frame/SceneNames.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QDir>
 #include <algorithm>
@@ -19,7 +19,7 @@
 namespace speculum::document {
 namespace {
 
-render::Result<SceneData> parse(const std::string& json) {
+base::Result<SceneData> parse(const std::string& json) {
     std::vector<std::string> warnings;
     return parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
 }
@@ -123,7 +123,7 @@ std::vector<LimitedField> limitedFields() {
 // The inspector's description of a field and whether it accepts a value, on the data the reader made.
 struct Inspected {
     const PropertyInfo* info = nullptr;
-    std::function<render::Status(const QVariant&)> set;
+    std::function<base::Status(const QVariant&)> set;
 };
 
 Inspected inspect(const LimitedField& field, SceneData& data) {

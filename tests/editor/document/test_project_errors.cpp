@@ -1,4 +1,4 @@
-#include "editor/document/ProjectFile.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QJsonArray>
 #include <QJsonObject>

@@ -1,8 +1,8 @@
 #include "DocumentTestSupport.hpp"
 #include "editor/document/Commands.hpp"
 #include "editor/document/DocumentSession.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/project/ProjectFile.hpp"
 #include "support/ThreeNodeScene.hpp"
 #include "support/UndoStackState.hpp"
 

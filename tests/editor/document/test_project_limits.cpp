@@ -1,8 +1,8 @@
 // Every kind of number a project holds is refused outside render/SceneLimits.hpp, with its JSON path and
 // the real cause, and accepted right at the limit; the inspector applies the same limits.
-#include "editor/document/ProjectFile.hpp"
 #include "editor/document/Properties.hpp"
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QDir>
 #include <gtest/gtest.h>
@@ -20,7 +20,7 @@ std::string oneNode(const std::string& node) {
     return document(R"("nodes": [ )" + node + " ]");
 }
 
-render::Result<SceneData> parse(const std::string& json) {
+base::Result<SceneData> parse(const std::string& json) {
     std::vector<std::string> warnings;
     return parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
 }

@@ -1,8 +1,8 @@
 // The scene-file fields imported models use (issue 13): material textures, wrap, alpha, a mesh's `part`.
 // Defaults are not written, so files without them keep their exact bytes.
 #include "DocumentTestSupport.hpp"
-#include "editor/document/ProjectFile.hpp"
 #include "editor/document/Properties.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QDir>
 

@@ -1,7 +1,7 @@
 #include "DocumentTestSupport.hpp"
-#include "editor/document/NodeMath.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/model/NodeMath.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QFileInfo>
 #include <cmath>

@@ -4,10 +4,10 @@
 // that is one undo step and names the settings the scene has no place for.
 #include "DocumentTestSupport.hpp"
 #include "accuracy/Analysis.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/document/SweepResults.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "scene/model/Scene.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QUndoStack>
 #include <gtest/gtest.h>

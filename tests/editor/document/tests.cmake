@@ -9,4 +9,4 @@ speculum_add_test(test_editor_document TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_project_limits.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_printable.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_limits_agree.cpp
-    LIBS speculum_document)
+    LIBS speculum_editor_document speculum_scene_export)

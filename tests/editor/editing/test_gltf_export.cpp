@@ -3,12 +3,12 @@
 // inside it as PNG/JPEG, no path), the camera and the lights are there, extensionsUsed lists exactly what
 // is used, and the uvs come back as they went out.
 #include "editor/document/Commands.hpp"
-#include "editor/document/GltfExport.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "render/image/FillingDisk.hpp"
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/TextureLoader.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/export/GltfExport.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -674,7 +674,7 @@ TEST(GltfExport, ADiskFillingUpKeepsEveryPreviousFile) {
         const speculum::render::test::ChildOutcome child =
             speculum::render::test::inChild([&](std::string& text) {
                 speculum::render::test::limitFileSize(1024);
-                const speculum::render::Status status =
+                const speculum::base::Status status =
                     exportGltf(scene, QString::fromStdString(target.string()), meshes, warnings);
                 text = status.ok() ? std::string("(exported)") : status.error();
                 return status.ok() ? 1 : 0;

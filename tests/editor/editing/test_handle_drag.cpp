@@ -1,10 +1,10 @@
 // The handle-drag state machine without a widget: mouse positions in, undoable edits out. A drag is one
 // undo step; Esc (cancel) puts every node back and leaves the undo stack and its clean state as they were.
 #include "editor/document/Commands.hpp"
-#include "editor/document/NodeMath.hpp"
-#include "editor/document/Scene.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "editor/ui/HandleDrag.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/model/NodeMath.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QUndoStack>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // unique, and a second curved reflector is refused. Imports are placed on the ground beside what is there.
 #include "editor/document/Commands.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/ProjectFile.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QDir>
 #include <QUndoStack>

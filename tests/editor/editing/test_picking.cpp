@@ -3,10 +3,10 @@
 // document (node ids, parents' transforms, animations).
 #include "editor/document/Commands.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/PickScene.hpp"
-#include "editor/document/Picking.hpp"
-#include "editor/document/ProjectFile.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "scene/evaluate/PickScene.hpp"
+#include "scene/evaluate/Picking.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QUndoStack>
 #include <cmath>

@@ -1,8 +1,8 @@
 // The inspector's property descriptions: every property reads what the model holds, writes valid values,
 // and refuses invalid ones with a message naming the property, leaving the value untouched (never clamps).
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/ProjectFile.hpp"
 #include "editor/document/Properties.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QDir>
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // Crash recovery: an editor's autosave is invisible to itself, offered to the next editor once its process
 // is gone, restores the same document (paths included), and a clean discard leaves nothing behind.
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Recovery.hpp"
+#include "scene/project/ProjectFile.hpp"
+#include "scene/project/Recovery.hpp"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -4,8 +4,8 @@
 // must be refused within seconds with one line naming the cause. Every import runs in a child process
 // under a time and address-space limit, so a regression fails the test instead of hanging or swapping CI;
 // the child's time and peak RSS are printed for each file.
-#include "editor/document/ModelImport.hpp"
-#include "editor/document/ModelPrecheck.hpp"
+#include "scene/import/ModelImport.hpp"
+#include "scene/import/ModelPrecheck.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -410,7 +410,7 @@ TEST(ModelPrecheck, AcceptsEveryFileOfTheAssimpCorpusThatHasNoNesting) {
         if (!fs::exists(file)) {
             continue;
         }
-        const render::Status status = detail::precheckModel(file);
+        const base::Status status = detail::precheckModel(file);
         EXPECT_TRUE(status.ok()) << name << ": " << (status ? "" : status.error());
     }
 }

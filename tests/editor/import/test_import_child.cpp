@@ -2,9 +2,9 @@
 // refusal naming the file while this process goes on, no child is left behind, and a model read in the
 // child arrives exactly as the same read in-process gives it (parts, meshes, materials, embedded textures,
 // node tree, unit scale, bounds, warnings).
-#include "editor/document/ModelImport.hpp"
-#include "editor/document/ModelImportProcess.hpp"
-#include "editor/document/ModelSerialization.hpp"
+#include "scene/import/ModelImport.hpp"
+#include "scene/import/ModelImportProcess.hpp"
+#include "scene/import/ModelSerialization.hpp"
 
 #include <QJsonArray>
 #include <atomic>

@@ -3,7 +3,7 @@
 // after it are still tried. A file that imports gives a well-formed mesh; one that does not is refused
 // with a message that names it. All 595 files take about 5 s (in-process imports alone about 1.5 s), so
 // the whole corpus is part of the default run.
-#include "editor/document/ModelImport.hpp"
+#include "scene/import/ModelImport.hpp"
 #include "tests/render/mesh/MeshChecks.hpp"
 
 #include <algorithm>

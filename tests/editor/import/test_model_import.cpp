@@ -1,4 +1,4 @@
-#include "editor/document/ModelImport.hpp"
+#include "scene/import/ModelImport.hpp"
 #include "tests/render/mesh/MeshChecks.hpp"
 
 #include <assimp/Importer.hpp>
@@ -44,7 +44,7 @@ fs::path writeFile(const fs::path& path, const std::string& content) {
 }
 
 struct Imported {
-    render::Result<MeshData> mesh;
+    base::Result<MeshData> mesh;
     std::vector<std::string> warnings;
 };
 

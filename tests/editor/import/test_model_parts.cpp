@@ -1,10 +1,10 @@
 // Imports that keep the file's parts, materials, textures, node tree and units (issue 13): real files
 // from Debian's assimp-testmodels and a small glTF written here whose every value is known.
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/ModelImport.hpp"
-#include "editor/document/ModelNodes.hpp"
-#include "editor/document/NodeMath.hpp"
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/TextureLoader.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/import/ModelImport.hpp"
+#include "scene/import/ModelNodes.hpp"
+#include "scene/model/NodeMath.hpp"
 
 #include <QByteArray>
 #include <QString>

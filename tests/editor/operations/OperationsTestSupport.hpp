@@ -1,7 +1,7 @@
 #pragma once
 
 #include "editor/document/Commands.hpp"
-#include "editor/document/Scene.hpp"
+#include "scene/model/Scene.hpp"
 #include "support/ThreeNodeScene.hpp"
 
 #include <QUndoStack>

@@ -4,7 +4,7 @@
 #include "OperationsTestSupport.hpp"
 #include "editor/document/EditOperations.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 
 namespace speculum::document {
 namespace {

@@ -2,13 +2,13 @@
 // floor at the view's focus and beside what is already there; the first mirror faces the view (or lies
 // flat under a view from above) instead of lying edge-on; Duplicate moves the copy beside its original.
 #include "editor/document/EditOperations.hpp"
-#include "editor/document/MeshLibrary.hpp"
 #include "editor/document/NewScene.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/NodeMath.hpp"
-#include "editor/document/PickScene.hpp"
-#include "editor/document/Picking.hpp"
-#include "editor/document/Scene.hpp"
+#include "scene/evaluate/PickScene.hpp"
+#include "scene/evaluate/Picking.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/model/NodeMath.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QUndoStack>
 #include <glm/geometric.hpp>

@@ -5,4 +5,4 @@ speculum_add_test(test_editor_operations TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_edit_operations.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_document_session.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_placement.cpp
-    LIBS speculum_document)
+    LIBS speculum_editor_document speculum_scene_export)

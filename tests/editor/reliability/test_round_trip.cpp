@@ -1,6 +1,6 @@
 // Inputs the fuzzer found: whatever loads must save and load back to the same bytes.
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Recovery.hpp"
+#include "scene/project/ProjectFile.hpp"
+#include "scene/project/Recovery.hpp"
 
 #include <QDir>
 #include <QTemporaryDir>

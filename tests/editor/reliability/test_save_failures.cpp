@@ -1,9 +1,9 @@
 // Saving never loses the previous file: into a folder the user may not write, and when the disk fills
 // up part-way through the write. Each case runs in a child process (a death test), so it can drop root
 // privileges or lower its file-size limit without affecting the other tests.
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Recovery.hpp"
 #include "render/image/FillingDisk.hpp"
+#include "scene/project/ProjectFile.hpp"
+#include "scene/project/Recovery.hpp"
 
 #include <QDir>
 #include <QFile>
@@ -39,7 +39,7 @@ SceneData bigScene() {
     // Root may write anywhere: become an ordinary user first, as a user of the editor would be.
     if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0))
         std::_Exit(3);
-    const render::Status saved = saveProject(bigScene(), path);
+    const base::Status saved = saveProject(bigScene(), path);
     if (saved.ok())
         std::_Exit(4);
     if (saved.error().find("scene.speculum.json") == std::string::npos)
@@ -90,7 +90,7 @@ TEST_F(SaveFailures, DiskFillingUpDuringTheWriteReportsTheErrorAndKeepsThePrevio
 TEST_F(SaveFailures, DiskFullErrorIsOneLineNamingTheFileAndTheCause) {
     const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
         render::test::limitFileSize(256);
-        const render::Status saved = saveProject(bigScene(), m_path);
+        const base::Status saved = saveProject(bigScene(), m_path);
         text = saved.ok() ? std::string("(saved)") : saved.error();
         return saved.ok() ? 1 : 0;
     });
@@ -124,7 +124,7 @@ TEST(SaveFailuresOnASmallDisk, FullFileSystemKeepsThePreviousProject) {
             node.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
             huge.nodes.push_back(node);
         }
-        const render::Status saved = saveProject(huge, path);
+        const base::Status saved = saveProject(huge, path);
         text = saved.ok() ? std::string("(saved)") : saved.error();
         if (saved.ok())
             return 1;
@@ -154,8 +154,7 @@ TEST(RecoveryFailures, AutosaveOntoAFillingDiskKeepsTheEarlierRecovery) {
 
     const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
         render::test::limitFileSize(256);
-        const render::Status written =
-            store.write(bigScene(), QStringLiteral("/projects/room.speculum.json"));
+        const base::Status written = store.write(bigScene(), QStringLiteral("/projects/room.speculum.json"));
         text = written.ok() ? std::string("(written)") : written.error();
         return written.ok() ? 1 : 0;
     });
@@ -179,7 +178,7 @@ TEST(RecoveryFailures, NoteThatDoesNotFitKeepsTheEarlierNote) {
         QStringLiteral("/") + QString(3000, QLatin1Char('p')) + QStringLiteral(".speculum.json");
     const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
         render::test::limitFileSize(2048); // an empty scene fits, a 3000-byte note does not
-        const render::Status written = store.write(SceneData{}, longOriginal);
+        const base::Status written = store.write(SceneData{}, longOriginal);
         text = written.ok() ? std::string("(written)") : written.error();
         return written.ok() ? 1 : 0;
     });

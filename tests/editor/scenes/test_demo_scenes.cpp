@@ -1,8 +1,8 @@
 // The demo projects shipped in resources/scenes: each loads without warnings, is already in the form
 // speculum writes (so opening and saving one changes nothing), and snapshots into a renderable frame.
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QDir>
 #include <QFile>

@@ -1,8 +1,8 @@
 // issue 16: what is animated in a scene (a static one need not be drawn again while the clock runs) and
 // how long one loop of its animation lasts (the time slider's range), and the clock looping over it.
-#include "editor/document/Scene.hpp"
-#include "editor/document/SceneAnimation.hpp"
 #include "editor/view/AnimationClock.hpp"
+#include "scene/model/Scene.hpp"
+#include "scene/model/SceneAnimation.hpp"
 
 #include <QThread>
 #include <cmath>

@@ -2,8 +2,8 @@
 // selected alone, nodes that leave the scene let go of, the roots an action on the selection acts on.
 #include "editor/document/Commands.hpp"
 #include "editor/document/NodeFactory.hpp"
-#include "editor/document/Scene.hpp"
 #include "editor/view/Selection.hpp"
+#include "scene/model/Scene.hpp"
 
 #include <QCoreApplication>
 #include <QSignalSpy>

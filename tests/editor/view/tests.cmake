@@ -9,4 +9,4 @@ speculum_add_test(test_editor_view TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_animation_clock.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_animation_loop.cpp
             ${CMAKE_CURRENT_LIST_DIR}/view_main.cpp
-    LIBS speculum_view Qt6::Test)
+    LIBS speculum_editor_view speculum_editor_document Qt6::Test)

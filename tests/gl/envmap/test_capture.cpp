@@ -3,7 +3,7 @@
 // back right. The scene: a box room with one colour per wall around an off-origin capture point, and
 // small targets in front of the walls on the seams, drawn by a callback with a tiny shader of its own.
 #include "GlslRunner.hpp"
-#include "render/envmap/EnvironmentCapture.hpp"
+#include "render/passes/EnvironmentCapture.hpp"
 #include "tests/gl/GlTest.hpp"
 #include "tests/render/envmap/Directions.hpp"
 

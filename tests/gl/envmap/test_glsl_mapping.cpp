@@ -3,7 +3,7 @@
 #include "GlslRunner.hpp"
 #include "render/envmap/CaptureMath.hpp"
 #include "render/envmap/CpuMap.hpp"
-#include "render/envmap/EnvironmentCapture.hpp"
+#include "render/passes/EnvironmentCapture.hpp"
 #include "tests/gl/GlTest.hpp"
 #include "tests/render/envmap/Directions.hpp"
 #include "tests/render/envmap/Seams.hpp"

@@ -5,7 +5,7 @@
 // grazing, close), and that the blur grows with the distance beyond the mirror, which is what the
 // Footprint filter exists for.
 #include "gl/GlTest.hpp"
-#include "render/image/ImageWriter.hpp"
+#include "render/imageio/ImageWriter.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/reference/SceneBuilder.hpp"
 #include "render/reference/Tracer.hpp"

@@ -3,7 +3,7 @@
 // highlight, an alpha-masked quad and its shadow, a normal map, an emission texture with clamped uvs).
 #include "gl/GlTest.hpp"
 #include "render/MaterialScenes.hpp"
-#include "render/image/ImageWriter.hpp"
+#include "render/imageio/ImageWriter.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/reference/Tracer.hpp"
 

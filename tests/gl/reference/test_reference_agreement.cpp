@@ -1,12 +1,12 @@
 // The rasterizer against the exact reference on the demo scenes: on planar mirrors only, both show the
 // same object in (almost) every pixel; the teapot demo matches within a stated PSNR and has no NaN.
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
 #include "gl/GlTest.hpp"
-#include "render/image/ImageWriter.hpp"
+#include "render/imageio/ImageWriter.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/reference/Tracer.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <QString>
 #include <array>

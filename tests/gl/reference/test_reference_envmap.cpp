@@ -2,7 +2,7 @@
 // environment map's resolution rises, for every map type and fill; and on a reflector close to the walls,
 // parallax correction with a box proxy of the room lowers that error.
 #include "gl/GlTest.hpp"
-#include "render/image/ImageWriter.hpp"
+#include "render/imageio/ImageWriter.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/plan/Planner.hpp"

@@ -2,9 +2,9 @@
 // planes (and, exactly on them, at some frames), checking every frame for NaN pixels and GL errors, and
 // that memory stays flat. Labelled "slow": run with `ctest -L slow` (figures go in the benchmarks notes).
 #include "../GlTest.hpp"
-#include "editor/document/MeshLibrary.hpp"
-#include "editor/document/ProjectFile.hpp"
-#include "editor/document/Snapshot.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/project/ProjectFile.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,6 @@
 #include "TestFolder.hpp"
 #include "render/image/ColorSpace.hpp"
-#include "render/image/ImageWriter.hpp"
+#include "render/imageio/ImageWriter.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
@@ -191,7 +191,7 @@ TEST(ImageWriter, OtherFormatsGoThroughOpenImageIO) {
     for (const char* ext : {".tga", ".bmp", ".ppm", ".sgi", ".dpx", ".hdr"}) {
         const fs::path path = folder / (std::string("frame") + ext);
         ASSERT_TRUE(isSupportedImagePath(path.string())) << ext;
-        const Status written = writeImage(path.string(), frame, testMetadata());
+        const base::Status written = writeImage(path.string(), frame, testMetadata());
         ASSERT_TRUE(written.ok()) << ext << ": " << written.error();
         const ReadBack back = readBack(path);
         ASSERT_EQ(back.spec.width, frame.width) << ext;
@@ -220,7 +220,7 @@ TEST(ImageWriter, OtherFormatsGoThroughOpenImageIO) {
     const Image flat = flatFrame(64, 32, 0.2f, 0.5f, 0.8f);
     for (const char* ext : {".webp", ".jp2"}) {
         const fs::path path = folder / (std::string("flat") + ext);
-        const Status written = writeImage(path.string(), flat, testMetadata());
+        const base::Status written = writeImage(path.string(), flat, testMetadata());
         ASSERT_TRUE(written.ok()) << ext << ": " << written.error();
         const ReadBack back = readBack(path);
         ASSERT_EQ(back.spec.width, 64) << ext;
@@ -273,7 +273,7 @@ TEST(ImageWriter, WritesToARelativePathInTheWorkingFolder) {
     const fs::path folder = test::freshTestFolder();
     const fs::path previous = fs::current_path();
     fs::current_path(folder);
-    const Status status = writeImage("relative.png", flatFrame(2, 2, 0, 0, 0));
+    const base::Status status = writeImage("relative.png", flatFrame(2, 2, 0, 0, 0));
     fs::current_path(previous);
     ASSERT_TRUE(status.ok()) << status.error();
     EXPECT_EQ(filesIn(folder), std::vector<std::string>{"relative.png"});
@@ -281,14 +281,14 @@ TEST(ImageWriter, WritesToARelativePathInTheWorkingFolder) {
 
 TEST(ImageWriter, UnknownExtensionIsRefusedAndNothingIsWritten) {
     const fs::path folder = test::freshTestFolder();
-    const Status status = writeImage((folder / "frame.bmpx").string(), flatFrame(2, 2, 1, 0, 0));
+    const base::Status status = writeImage((folder / "frame.bmpx").string(), flatFrame(2, 2, 1, 0, 0));
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find(".bmpx"), std::string::npos) << status.error();
     EXPECT_NE(status.error().find(".png"), std::string::npos) << status.error();
     EXPECT_NE(status.error().find(".exr"), std::string::npos) << status.error();
     EXPECT_TRUE(filesIn(folder).empty());
 
-    const Status noExtension = writeImage((folder / "frame").string(), flatFrame(2, 2, 1, 0, 0));
+    const base::Status noExtension = writeImage((folder / "frame").string(), flatFrame(2, 2, 1, 0, 0));
     ASSERT_FALSE(noExtension.ok());
     EXPECT_NE(noExtension.error().find("extension"), std::string::npos) << noExtension.error();
     EXPECT_TRUE(filesIn(folder).empty());
@@ -296,7 +296,7 @@ TEST(ImageWriter, UnknownExtensionIsRefusedAndNothingIsWritten) {
 
 TEST(ImageWriter, MissingFolderIsAnErrorNamingThePath) {
     const fs::path path = test::freshTestFolder() / "no-such-folder" / "frame.png";
-    const Status status = writeImage(path.string(), flatFrame(2, 2, 1, 0, 0));
+    const base::Status status = writeImage(path.string(), flatFrame(2, 2, 1, 0, 0));
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find(path.string()), std::string::npos) << status.error();
     EXPECT_NE(status.error().find("does not exist"), std::string::npos) << status.error();
@@ -308,7 +308,7 @@ TEST(ImageWriter, FolderThatIsAFileIsAnError) {
     const fs::path file = folder / "file.png";
     std::ofstream(file) << "not a folder";
     const fs::path path = file / "frame.png";
-    const Status status = writeImage(path.string(), flatFrame(2, 2, 1, 0, 0));
+    const base::Status status = writeImage(path.string(), flatFrame(2, 2, 1, 0, 0));
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find(path.string()), std::string::npos) << status.error();
     EXPECT_NE(status.error().find("not a folder"), std::string::npos) << status.error();
@@ -322,7 +322,7 @@ TEST(ImageWriter, ReadOnlyFolderIsAnError) {
     const fs::path folder = test::freshTestFolder() / "locked";
     fs::create_directory(folder);
     fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec);
-    const Status status = writeImage((folder / "frame.png").string(), flatFrame(2, 2, 1, 0, 0));
+    const base::Status status = writeImage((folder / "frame.png").string(), flatFrame(2, 2, 1, 0, 0));
     fs::permissions(folder, fs::perms::owner_all);
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find("not writable"), std::string::npos) << status.error();
@@ -332,7 +332,7 @@ TEST(ImageWriter, ReadOnlyFolderIsAnError) {
 TEST(ImageWriter, TargetThatIsAFolderIsAnError) {
     const fs::path folder = test::freshTestFolder();
     fs::create_directory(folder / "frame.png");
-    const Status status = writeImage((folder / "frame.png").string(), flatFrame(2, 2, 1, 0, 0));
+    const base::Status status = writeImage((folder / "frame.png").string(), flatFrame(2, 2, 1, 0, 0));
     ASSERT_FALSE(status.ok());
     EXPECT_TRUE(fs::is_directory(folder / "frame.png"));
     EXPECT_EQ(filesIn(folder), std::vector<std::string>{"frame.png"});
@@ -340,7 +340,7 @@ TEST(ImageWriter, TargetThatIsAFolderIsAnError) {
 
 TEST(ImageWriter, EmptyImageIsAnError) {
     const fs::path folder = test::freshTestFolder();
-    const Status status = writeImage((folder / "frame.png").string(), Image{});
+    const base::Status status = writeImage((folder / "frame.png").string(), Image{});
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find("empty"), std::string::npos) << status.error();
     EXPECT_TRUE(filesIn(folder).empty());
@@ -351,7 +351,7 @@ TEST(ImageWriter, FailureInsideTheEncoderLeavesTheOldFileAndNoTemporaryFile) {
     const fs::path folder = test::freshTestFolder();
     const fs::path path = folder / "frame.png";
     std::ofstream(path) << "precious";
-    const Status status = writeImage(path.string(), flatFrame(1000001, 1, 0.5f, 0.5f, 0.5f));
+    const base::Status status = writeImage(path.string(), flatFrame(1000001, 1, 0.5f, 0.5f, 0.5f));
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find(path.string()), std::string::npos) << status.error();
     EXPECT_EQ(contentsOf(path), "precious");
@@ -363,7 +363,7 @@ TEST(ImageWriter, JpegTooLargeIsAnErrorNotAnExit) {
     const fs::path folder = test::freshTestFolder();
     const fs::path path = folder / "frame.jpg";
     std::ofstream(path) << "precious";
-    const Status status = writeImage(path.string(), flatFrame(65501, 1, 0.5f, 0.5f, 0.5f));
+    const base::Status status = writeImage(path.string(), flatFrame(65501, 1, 0.5f, 0.5f, 0.5f));
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find("65500"), std::string::npos) << status.error();
     EXPECT_EQ(contentsOf(path), "precious");

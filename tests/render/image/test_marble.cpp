@@ -1,5 +1,5 @@
-#include "render/image/Marble.hpp"
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/TextureLoader.hpp"
+#include "tools/marble/Marble.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -101,7 +101,7 @@ TEST(Marble, TilesSeamlessly) {
 
 TEST(Marble, CommittedTextureMatchesTheGenerator) {
     const std::string path = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/textures/marble.png";
-    const Result<TextureImage> committed = loadTexture(path);
+    const base::Result<TextureImage> committed = loadTexture(path);
     ASSERT_TRUE(committed.ok()) << committed.error();
     const TextureImage generated = generateMarble(512, kCommittedSeed);
     ASSERT_EQ(committed->width, 512);

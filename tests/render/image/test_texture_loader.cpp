@@ -1,6 +1,6 @@
 #include "TestFolder.hpp"
 #include "render/image/ColorSpace.hpp"
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/TextureLoader.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <cstdint>
@@ -84,7 +84,7 @@ void expectTwoByTwoBottomRowFirst(const TextureImage& texture) {
 TEST(TextureLoader, RgbaPngKeepsExactBytesStraightAlphaAndPutsTheBottomRowFirst) {
     const fs::path path = test::freshTestFolder() / "rgba.png";
     writeRaw<std::uint8_t>(path, 2, 2, 4, OIIO::TypeDesc::UINT8, kTwoByTwo);
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_TRUE(texture.ok()) << texture.error();
     expectTwoByTwoBottomRowFirst(*texture);
 }
@@ -93,7 +93,7 @@ TEST(TextureLoader, TallImageRowsAreTurnedOver) {
     // 1×3: rows 10, 20, 30 from the top of the file come out as 30, 20, 10.
     const fs::path path = test::freshTestFolder() / "tall.png";
     writeRaw<std::uint8_t>(path, 1, 3, 1, OIIO::TypeDesc::UINT8, {10, 20, 30});
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_TRUE(texture.ok()) << texture.error();
     EXPECT_EQ(texture->rgba8, (Bytes{30, 30, 30, 255, 20, 20, 20, 255, 10, 10, 10, 255}));
 }
@@ -105,9 +105,10 @@ TEST(TextureLoader, DecodesPngAndTgaFromMemoryLikeFromTheirFiles) {
         const std::string bytes = contentsOf(folder / name);
         ASSERT_FALSE(bytes.empty());
         // The name has no extension, as an embedded texture's ("model.glb#*0"): the bytes decide.
-        const Result<TextureImage> decoded = decodeTexture(bytes.data(), bytes.size(), "/abs/model.glb#*0");
+        const base::Result<TextureImage> decoded =
+            decodeTexture(bytes.data(), bytes.size(), "/abs/model.glb#*0");
         ASSERT_TRUE(decoded.ok()) << name << ": " << decoded.error();
-        const Result<TextureImage> loaded = loadTexture((folder / name).string());
+        const base::Result<TextureImage> loaded = loadTexture((folder / name).string());
         ASSERT_TRUE(loaded.ok()) << loaded.error();
         EXPECT_EQ(decoded->width, 2) << name;
         EXPECT_EQ(decoded->rgba8, loaded->rgba8) << name;
@@ -118,10 +119,10 @@ TEST(TextureLoader, DecodesPngAndTgaFromMemoryLikeFromTheirFiles) {
 
 TEST(TextureLoader, GarbageInMemoryIsAnErrorNamingTheTexture) {
     const Bytes noise = noisyBytes(4000);
-    const Result<TextureImage> texture = decodeTexture(noise.data(), noise.size(), "/abs/duck.glb#*3");
+    const base::Result<TextureImage> texture = decodeTexture(noise.data(), noise.size(), "/abs/duck.glb#*3");
     ASSERT_FALSE(texture.ok());
     EXPECT_NE(texture.error().find("/abs/duck.glb#*3"), std::string::npos) << texture.error();
-    const Result<TextureImage> empty = decodeTexture(nullptr, 0, "/abs/duck.glb#*4");
+    const base::Result<TextureImage> empty = decodeTexture(nullptr, 0, "/abs/duck.glb#*4");
     ASSERT_FALSE(empty.ok());
     EXPECT_NE(empty.error().find("/abs/duck.glb#*4"), std::string::npos) << empty.error();
     // A PNG cut short in memory fails like a truncated file.
@@ -131,7 +132,7 @@ TEST(TextureLoader, GarbageInMemoryIsAnErrorNamingTheTexture) {
 #if defined(__SANITIZE_ADDRESS__)
     __lsan_disable(); // OIIO's PNG reader leaks its error string on a truncated read (see below)
 #endif
-    const Result<TextureImage> cut = decodeTexture(whole.data(), whole.size() / 2, "/abs/cut.glb#*0");
+    const base::Result<TextureImage> cut = decodeTexture(whole.data(), whole.size() / 2, "/abs/cut.glb#*0");
 #if defined(__SANITIZE_ADDRESS__)
     __lsan_enable();
 #endif
@@ -141,7 +142,7 @@ TEST(TextureLoader, GarbageInMemoryIsAnErrorNamingTheTexture) {
 TEST(TextureLoader, RgbPngGetsOpaqueAlpha) {
     const fs::path path = test::freshTestFolder() / "rgb.png";
     writeRaw<std::uint8_t>(path, 2, 1, 3, OIIO::TypeDesc::UINT8, {10, 20, 30, 40, 50, 60});
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_TRUE(texture.ok()) << texture.error();
     EXPECT_EQ(texture->rgba8, (Bytes{10, 20, 30, 255, 40, 50, 60, 255}));
 }
@@ -149,12 +150,12 @@ TEST(TextureLoader, RgbPngGetsOpaqueAlpha) {
 TEST(TextureLoader, GreyIsSpreadToRgb) {
     const fs::path folder = test::freshTestFolder();
     writeRaw<std::uint8_t>(folder / "grey.png", 2, 1, 1, OIIO::TypeDesc::UINT8, {0, 77});
-    const Result<TextureImage> grey = loadTexture((folder / "grey.png").string());
+    const base::Result<TextureImage> grey = loadTexture((folder / "grey.png").string());
     ASSERT_TRUE(grey.ok()) << grey.error();
     EXPECT_EQ(grey->rgba8, (Bytes{0, 0, 0, 255, 77, 77, 77, 255}));
 
     writeRaw<std::uint8_t>(folder / "grey-alpha.png", 1, 1, 2, OIIO::TypeDesc::UINT8, {90, 30});
-    const Result<TextureImage> greyAlpha = loadTexture((folder / "grey-alpha.png").string());
+    const base::Result<TextureImage> greyAlpha = loadTexture((folder / "grey-alpha.png").string());
     ASSERT_TRUE(greyAlpha.ok()) << greyAlpha.error();
     EXPECT_EQ(greyAlpha->rgba8, (Bytes{90, 90, 90, 30}));
 }
@@ -164,7 +165,7 @@ TEST(TextureLoader, SixteenBitIsDecodedFromSrgbToLinearFloat) {
     // 33024 lies between the 8-bit codes 128 and 129 (×257): it must not be rounded to either.
     writeRaw<std::uint16_t>(path, 3, 1, 3, OIIO::TypeDesc::UINT16,
                             {0, 65535, 33024, 257, 254 * 257, 32768, 65535, 0, 1000});
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_TRUE(texture.ok()) << texture.error();
     ASSERT_TRUE(texture->highPrecision());
     EXPECT_TRUE(texture->rgba8.empty());
@@ -183,7 +184,7 @@ TEST(TextureLoader, SixteenBitIsDecodedFromSrgbToLinearFloat) {
 TEST(TextureLoader, SixteenBitRowsAreTurnedOverToo) {
     const fs::path path = test::freshTestFolder() / "deep-tall.png";
     writeRaw<std::uint16_t>(path, 1, 2, 1, OIIO::TypeDesc::UINT16, {65535, 0});
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_TRUE(texture.ok()) << texture.error();
     ASSERT_EQ(texture->linear.size(), 8u);
     EXPECT_EQ(texture->linear[0], 0.0f); // the file's bottom row (black) first
@@ -197,7 +198,7 @@ TEST(TextureLoader, JpegLoadsCloseToItsColour) {
         flat.insert(flat.end(), {200, 120, 40});
     }
     writeRaw(path, 16, 16, 3, OIIO::TypeDesc::UINT8, flat);
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_TRUE(texture.ok()) << texture.error();
     ASSERT_EQ(texture->width, 16);
     const Bytes p = pixel(*texture, 7, 7);
@@ -212,7 +213,7 @@ TEST(TextureLoader, FloatFilesStayLinearAndStraight) {
     // EXR holds premultiplied linear values: they come out unpremultiplied, not encoded, not rounded.
     writeRaw<float>(folder / "linear.exr", 1, 1, 4, OIIO::TypeDesc::FLOAT,
                     {0.2158605f * 0.5f, 0.5f, 0.0f, 0.5f});
-    const Result<TextureImage> texture = loadTexture((folder / "linear.exr").string());
+    const base::Result<TextureImage> texture = loadTexture((folder / "linear.exr").string());
     ASSERT_TRUE(texture.ok()) << texture.error();
     ASSERT_TRUE(texture->highPrecision());
     EXPECT_FALSE(texture->decodedFromSrgb);
@@ -223,7 +224,7 @@ TEST(TextureLoader, FloatFilesStayLinearAndStraight) {
     EXPECT_EQ(texture->linear[3], 0.5f);
     // Half floats, values above 1 kept.
     writeRaw<float>(folder / "half.exr", 1, 1, 3, OIIO::TypeDesc::HALF, {4.0f, 0.25f, 0.125f});
-    const Result<TextureImage> half = loadTexture((folder / "half.exr").string());
+    const base::Result<TextureImage> half = loadTexture((folder / "half.exr").string());
     ASSERT_TRUE(half.ok()) << half.error();
     ASSERT_EQ(half->linear.size(), 4u);
     EXPECT_EQ(half->linear[0], 4.0f);
@@ -233,7 +234,7 @@ TEST(TextureLoader, FloatFilesStayLinearAndStraight) {
 
 TEST(TextureLoader, MissingFileIsAnErrorNamingThePath) {
     const fs::path path = test::freshTestFolder() / "missing.png";
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_FALSE(texture.ok());
     EXPECT_NE(texture.error().find(path.string()), std::string::npos) << texture.error();
     EXPECT_NE(texture.error().find("does not exist"), std::string::npos) << texture.error();
@@ -245,7 +246,7 @@ TEST(TextureLoader, GarbageBytesAreAnError) {
     const std::string garbage(noise.begin(), noise.end());
     for (const char* name : {"garbage.png", "garbage.jpg", "garbage.tif", "garbage.exr", "garbage.xyz"}) {
         writeBytes(folder / name, garbage);
-        const Result<TextureImage> texture = loadTexture((folder / name).string());
+        const base::Result<TextureImage> texture = loadTexture((folder / name).string());
         ASSERT_FALSE(texture.ok()) << name;
         EXPECT_NE(texture.error().find(name), std::string::npos) << texture.error();
     }
@@ -258,7 +259,7 @@ void expectTruncatedFileFails(const fs::path& path) {
     const std::string whole = contentsOf(path);
     ASSERT_GT(whole.size(), 2000u);
     writeBytes(path, whole.substr(0, whole.size() / 2));
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_FALSE(texture.ok()) << path << " was cut to " << whole.size() / 2 << " bytes but loaded";
     EXPECT_NE(texture.error().find(path.string()), std::string::npos) << texture.error();
 }
@@ -287,14 +288,14 @@ TEST(TextureLoader, AbsurdSizeIsRefused) {
     const fs::path path = test::freshTestFolder() / "wide.png";
     writeRaw(path, kMaxTextureSide + 1, 1, 1, OIIO::TypeDesc::UINT8,
              std::vector<std::uint8_t>(kMaxTextureSide + 1));
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_FALSE(texture.ok());
     EXPECT_NE(texture.error().find("16384"), std::string::npos) << texture.error();
 }
 
 TEST(TextureLoader, FolderIsAnError) {
     const fs::path folder = test::freshTestFolder();
-    const Result<TextureImage> texture = loadTexture(folder.string());
+    const base::Result<TextureImage> texture = loadTexture(folder.string());
     ASSERT_FALSE(texture.ok());
     EXPECT_NE(texture.error().find("folder"), std::string::npos) << texture.error();
 }
@@ -303,14 +304,14 @@ TEST(TextureLoader, FifoIsRefusedWithoutOpeningIt) {
     // Opening a FIFO for reading blocks until a writer comes: the loader must not even try.
     const fs::path path = test::freshTestFolder() / "pipe.png";
     ASSERT_EQ(mkfifo(path.c_str(), 0600), 0);
-    const Result<TextureImage> texture = loadTexture(path.string());
+    const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_FALSE(texture.ok());
     EXPECT_NE(texture.error().find(path.string()), std::string::npos) << texture.error();
     EXPECT_NE(texture.error().find("not a regular file"), std::string::npos) << texture.error();
 }
 
 TEST(TextureLoader, DeviceIsRefused) {
-    const Result<TextureImage> texture = loadTexture("/dev/zero");
+    const base::Result<TextureImage> texture = loadTexture("/dev/zero");
     ASSERT_FALSE(texture.ok());
     EXPECT_NE(texture.error().find("not a regular file"), std::string::npos) << texture.error();
 }

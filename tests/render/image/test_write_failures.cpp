@@ -1,11 +1,11 @@
 // Writes that fail half-way: every image format writeImage() supports, written over an existing file
 // onto a "full disk" (a child's file-size limit, and with root a real 64 KiB tmpfs), must fail with one
 // line naming the file and the cause, keep the previous file byte-identical and leave no temporary.
-// Also the staged-write primitive itself (render::AtomicFile, render::StagedPath).
+// Also the staged-write primitive itself (base::AtomicFile, base::StagedPath).
 #include "FillingDisk.hpp"
 #include "TestFolder.hpp"
-#include "render/image/ImageWriter.hpp"
-#include "render/io/AtomicFile.hpp"
+#include "base/AtomicFile.hpp"
+#include "render/imageio/ImageWriter.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <cmath>
@@ -57,7 +57,7 @@ TEST_P(WriteFailures, FileSizeLimitKeepsThePreviousFileAndLeavesNoTemporary) {
         if (!test::limitFileSize(4096)) {
             return 3;
         }
-        const Status written = writeImage(target.string(), noisyFrame(192, 1));
+        const base::Status written = writeImage(target.string(), noisyFrame(192, 1));
         text = written.ok() ? std::string("(succeeded)") : written.error();
         return written.ok() ? 1 : 0;
     });
@@ -79,7 +79,7 @@ TEST_P(WriteFailures, FileSizeLimitWithNoPreviousFileLeavesNothing) {
         if (!test::limitFileSize(4096)) {
             return 3;
         }
-        const Status written = writeImage(target.string(), noisyFrame(192, 2));
+        const base::Status written = writeImage(target.string(), noisyFrame(192, 2));
         text = written.ok() ? std::string("(succeeded)") : written.error();
         return written.ok() ? 1 : 0;
     });
@@ -105,7 +105,7 @@ TEST_P(WriteFailures, SmallFullFileSystemKeepsThePreviousFile) {
             return 2;
         }
         const std::string before = fileBytes(target);
-        const Status written = writeImage(target.string(), noisyFrame(256, 3));
+        const base::Status written = writeImage(target.string(), noisyFrame(256, 3));
         if (written.ok()) {
             text = "a 256x256 noise image fitted on a 64 KiB disk";
             return 1;
@@ -149,7 +149,7 @@ TEST(WriteFailures, SrgbBytesOntoAFillingDiskFailToo) {
         for (std::uint8_t& b : big.rgba8) {
             b = static_cast<std::uint8_t>(random());
         }
-        const Status written = writeImage(target.string(), big);
+        const base::Status written = writeImage(target.string(), big);
         text = written.ok() ? std::string("(succeeded)") : written.error();
         return written.ok() ? 1 : 0;
     });
@@ -167,13 +167,13 @@ TEST(WriteFailures, DeviceAndFifoTargetsAreRefusedAndLeftAlone) {
         // An image name that leads to the device, through a link.
         const fs::path link = folder / "full.png";
         fs::create_symlink("/dev/full", link);
-        const Status written = writeImage(link.string(), flat(4, 0.5f));
+        const base::Status written = writeImage(link.string(), flat(4, 0.5f));
         ASSERT_FALSE(written.ok());
         EXPECT_NE(written.error().find("it is a device, not a regular file"), std::string::npos)
             << written.error();
         ASSERT_EQ(::stat("/dev/full", &st), 0);
         EXPECT_TRUE(S_ISCHR(st.st_mode)) << "/dev/full must still be a device";
-        const Status raw = writeFileAtomically("/dev/full", "bytes");
+        const base::Status raw = base::writeFileAtomically("/dev/full", "bytes");
         EXPECT_FALSE(raw.ok());
         ASSERT_EQ(::stat("/dev/full", &st), 0);
         EXPECT_TRUE(S_ISCHR(st.st_mode));
@@ -183,7 +183,7 @@ TEST(WriteFailures, DeviceAndFifoTargetsAreRefusedAndLeftAlone) {
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
     const test::ChildOutcome child = inChild(
         [&](std::string& text) {
-            const Status written = writeImage(fifo.string(), flat(4, 0.5f));
+            const base::Status written = writeImage(fifo.string(), flat(4, 0.5f));
             text = written.ok() ? std::string("(succeeded)") : written.error();
             return written.ok() ? 1 : 0;
         },
@@ -232,9 +232,9 @@ TEST(ExrRange, OutOfRangeAndNanPixelsAreWrittenFinite) {
 TEST(AtomicFile, CommitReplacesTheFileKeepingItsPermissions) {
     const fs::path folder = test::freshTestFolder();
     const fs::path target = folder / "a.txt";
-    ASSERT_TRUE(writeFileAtomically(target.string(), "old").ok());
+    ASSERT_TRUE(base::writeFileAtomically(target.string(), "old").ok());
     ASSERT_EQ(::chmod(target.c_str(), 0640), 0);
-    ASSERT_TRUE(writeFileAtomically(target.string(), "new contents").ok());
+    ASSERT_TRUE(base::writeFileAtomically(target.string(), "new contents").ok());
     EXPECT_EQ(fileBytes(target), "new contents");
     struct stat st {};
     ASSERT_EQ(::stat(target.c_str(), &st), 0);
@@ -245,9 +245,9 @@ TEST(AtomicFile, CommitReplacesTheFileKeepingItsPermissions) {
 TEST(AtomicFile, DestroyedWithoutCommitLeavesTheTargetAndNoTemporary) {
     const fs::path folder = test::freshTestFolder();
     const fs::path target = folder / "a.txt";
-    ASSERT_TRUE(writeFileAtomically(target.string(), "old").ok());
+    ASSERT_TRUE(base::writeFileAtomically(target.string(), "old").ok());
     {
-        Result<AtomicFile> file = AtomicFile::create(target.string());
+        base::Result<base::AtomicFile> file = base::AtomicFile::create(target.string());
         ASSERT_TRUE(file.ok()) << file.error();
         ASSERT_TRUE(file->write("half of it").ok());
         EXPECT_TRUE(fs::exists(file->temporaryPath()));
@@ -259,8 +259,8 @@ TEST(AtomicFile, DestroyedWithoutCommitLeavesTheTargetAndNoTemporary) {
 
 TEST(AtomicFile, TemporaryNamesAreUniqueAndKeepTheExtension) {
     const fs::path folder = test::freshTestFolder();
-    Result<AtomicFile> a = AtomicFile::create((folder / "x.exr").string());
-    Result<AtomicFile> b = AtomicFile::create((folder / "x.exr").string());
+    base::Result<base::AtomicFile> a = base::AtomicFile::create((folder / "x.exr").string());
+    base::Result<base::AtomicFile> b = base::AtomicFile::create((folder / "x.exr").string());
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_NE(a->temporaryPath(), b->temporaryPath());
     EXPECT_EQ(fs::path(a->temporaryPath()).extension(), ".exr");
@@ -270,11 +270,11 @@ TEST(AtomicFile, TemporaryNamesAreUniqueAndKeepTheExtension) {
 TEST(AtomicFile, ShortWritesUnderALimitAreAnError) {
     const fs::path folder = test::freshTestFolder();
     const fs::path target = folder / "big.bin";
-    ASSERT_TRUE(writeFileAtomically(target.string(), "previous").ok());
+    ASSERT_TRUE(base::writeFileAtomically(target.string(), "previous").ok());
     const test::ChildOutcome child = inChild([&](std::string& text) {
         test::limitFileSize(1000);
         const std::string bytes(5000, 'x'); // the first write() is cut short at 1000, the next fails
-        const Status written = writeFileAtomically(target.string(), bytes);
+        const base::Status written = base::writeFileAtomically(target.string(), bytes);
         text = written.ok() ? std::string("(succeeded)") : written.error();
         return written.ok() ? 1 : 0;
     });
@@ -288,15 +288,15 @@ TEST(AtomicFile, FollowsASymbolicLinkAndKeepsTheLink) {
     const fs::path folder = test::freshTestFolder();
     const fs::path real = folder / "real.txt";
     const fs::path link = folder / "link.txt";
-    ASSERT_TRUE(writeFileAtomically(real.string(), "old").ok());
+    ASSERT_TRUE(base::writeFileAtomically(real.string(), "old").ok());
     fs::create_symlink("real.txt", link);
-    ASSERT_TRUE(writeFileAtomically(link.string(), "new").ok());
+    ASSERT_TRUE(base::writeFileAtomically(link.string(), "new").ok());
     EXPECT_TRUE(fs::is_symlink(link));
     EXPECT_EQ(fileBytes(real), "new");
 }
 
 TEST(AtomicFile, UnwritableFolderIsOneLine) {
-    const Status written = writeFileAtomically("/nonexistent-folder-speculum/x.txt", "bytes");
+    const base::Status written = base::writeFileAtomically("/nonexistent-folder-speculum/x.txt", "bytes");
     ASSERT_FALSE(written.ok());
     EXPECT_EQ(written.error(),
               "/nonexistent-folder-speculum/x.txt: the folder does not exist (No such file or "
@@ -306,25 +306,25 @@ TEST(AtomicFile, UnwritableFolderIsOneLine) {
 TEST(StagedPath, RefusesAWriterErrorOrAnEmptyFile) {
     const fs::path folder = test::freshTestFolder();
     const fs::path target = folder / "t.bin";
-    ASSERT_TRUE(writeFileAtomically(target.string(), "old").ok());
+    ASSERT_TRUE(base::writeFileAtomically(target.string(), "old").ok());
     {
-        Result<StagedPath> staged = StagedPath::create(target.string());
+        base::Result<base::StagedPath> staged = base::StagedPath::create(target.string());
         ASSERT_TRUE(staged.ok());
         std::ofstream(staged->path()) << "partial";
-        const Status s = staged->commit("write error at close");
+        const base::Status s = staged->commit("write error at close");
         ASSERT_FALSE(s.ok());
         EXPECT_EQ(s.error(), target.string() + ": write error at close; the previous file is unchanged");
     }
     {
-        Result<StagedPath> staged = StagedPath::create(target.string());
+        base::Result<base::StagedPath> staged = base::StagedPath::create(target.string());
         ASSERT_TRUE(staged.ok());
-        const Status s = staged->commit(); // the writer wrote nothing
+        const base::Status s = staged->commit(); // the writer wrote nothing
         ASSERT_FALSE(s.ok());
         EXPECT_NE(s.error().find("empty file"), std::string::npos);
     }
     EXPECT_EQ(fileBytes(target), "old");
     EXPECT_EQ(folderEntries(folder).size(), 1u);
-    Result<StagedPath> staged = StagedPath::create(target.string());
+    base::Result<base::StagedPath> staged = base::StagedPath::create(target.string());
     ASSERT_TRUE(staged.ok());
     std::ofstream(staged->path()) << "complete";
     ASSERT_TRUE(staged->commit().ok());

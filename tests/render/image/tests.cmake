@@ -5,4 +5,4 @@ speculum_add_test(test_render_image TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_texture_loader.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_marble.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_write_failures.cpp
-    LIBS speculum_render PkgConfig::OIIO)
+    LIBS speculum_render_renderer speculum_render_reference speculum_render_metrics speculum_render_imageio speculum_tools_marble PkgConfig::OIIO)

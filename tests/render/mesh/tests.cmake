@@ -4,4 +4,4 @@ speculum_add_test(test_render_mesh TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_primitives.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_mesh_repair.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_simplify.cpp
-    LIBS speculum_render_core)
+    LIBS speculum_render_plan)

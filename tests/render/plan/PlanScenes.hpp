@@ -1,6 +1,6 @@
 #pragma once
 // Small scenes the planner tests share: mirrors facing a camera at the origin that looks down −Z.
-#include "render/FrameInput.hpp"
+#include "render/frame/FrameInput.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>

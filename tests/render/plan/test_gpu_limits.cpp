@@ -1,6 +1,6 @@
 // Map sizes the GPU cannot hold, without GL: fitToGpuLimits brings each within its own limit (cube maps,
 // 2D maps, the tennis-ball map's 3n height) and says what it did.
-#include "render/GpuLimits.hpp"
+#include "render/plan/GpuLimits.hpp"
 
 #include <gtest/gtest.h>
 

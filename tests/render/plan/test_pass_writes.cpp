@@ -1,7 +1,7 @@
 // How each planned pass writes (PassWrites) and each shadowed light's one frustum (ShadowPlan), decided by
 // the planner without GL: the renderer only carries them out. Links the core library only.
 #include "PlanScenes.hpp"
-#include "render/SceneLimits.hpp"
+#include "render/frame/SceneLimits.hpp"
 #include "render/math/ShadowFrustum.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/plan/Planner.hpp"

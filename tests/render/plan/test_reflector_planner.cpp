@@ -1,7 +1,7 @@
 // The environment pass of the curved reflector, planned without GL: it runs only when the reflector can
 // be seen (directly or in a mirror), after the shadow passes and before the main pass, and its update
 // policy reuses the map when nothing the map sees changed.
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/TextureLoader.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/plan/Planner.hpp"
 

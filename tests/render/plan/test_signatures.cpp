@@ -3,7 +3,7 @@
 // else. One table row per field of FrameInput's structs: how to perturb it, whether each signature must
 // see it, and why. The field lists below are structured bindings, so a field added to FrameInput.hpp
 // stops this file from compiling until it has a row.
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/TextureLoader.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/plan/Planner.hpp"
 

@@ -5,9 +5,9 @@ speculum_add_test(test_render_plan TIER unit
             ${CMAKE_CURRENT_LIST_DIR}/test_envmap_mirrors.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_reflected_detail.cpp
             ${CMAKE_CURRENT_LIST_DIR}/test_prefilter_planner.cpp
-    LIBS speculum_render)
+    LIBS speculum_render_renderer speculum_render_reference speculum_render_metrics speculum_render_imageio)
 # What the planner declares for the executor (PassWrites, ShadowPlan), against the core library alone: it
 # builds and runs while the GL libraries change.
 speculum_add_test(test_render_plan_writes TIER unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_pass_writes.cpp
-    LIBS speculum_render_core)
+    LIBS speculum_render_plan)

@@ -4,8 +4,8 @@
 #include "SceneBuilder.hpp"
 #include "render/MaterialScenes.hpp"
 #include "render/image/ColorSpace.hpp"
-#include "render/image/ImageWriter.hpp"
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/ImageWriter.hpp"
+#include "render/imageio/TextureLoader.hpp"
 #include "render/reference/Tracer.hpp"
 
 #include <cstdlib>

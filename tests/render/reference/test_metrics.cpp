@@ -1,6 +1,6 @@
 // Error metrics on images whose errors are known by construction.
 #include "render/image/ColorSpace.hpp"
-#include "render/image/TextureLoader.hpp"
+#include "render/imageio/TextureLoader.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/reference/IdBuffer.hpp"
 

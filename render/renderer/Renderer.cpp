@@ -1,0 +1,374 @@
+#include "render/renderer/Renderer.hpp"
+
+#include "render/gl/GpuTimer.hpp"
+#include "render/gl/Objects.hpp"
+#include "render/math/Projection.hpp"
+#include "render/mesh/Primitives.hpp"
+#include "render/passes/LightingVariant.hpp"
+#include "render/passes/PassExecutors.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace speculum::render {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+gl::Texture makeDummyDepth(GLenum target) {
+    gl::Texture t = gl::makeTexture();
+    glBindTexture(target, t.id());
+    const float one = 1.0f;
+    if (target == GL_TEXTURE_CUBE_MAP) {
+        for (int face = 0; face < 6; ++face)
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_DEPTH_COMPONENT24, 1, 1, 0,
+                         GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+    } else {
+        glTexImage2D(target, 0, GL_DEPTH_COMPONENT24, 1, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+    }
+    glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindTexture(target, 0);
+    return t;
+}
+
+} // namespace
+
+struct Renderer::State {
+    passes::FrameResources resources;
+    gl::GpuTimer timer;
+    PlannerState plannerState;
+    GpuLimits limits;
+    bool released = false;
+};
+
+Renderer::Renderer()
+    : m_state(std::make_unique<State>()) {}
+
+Renderer::~Renderer() = default;
+
+base::Result<std::unique_ptr<Renderer>> Renderer::create() {
+    std::unique_ptr<Renderer> renderer(new Renderer);
+    State& state = *renderer->m_state;
+    passes::FrameResources& s = state.resources;
+    auto mesh = gl::Program::build("mesh.vert", "mesh.frag");
+    if (!mesh)
+        return base::Error{mesh.error()};
+    auto shadow = gl::Program::build("shadow.vert", "shadow.frag");
+    if (!shadow)
+        return base::Error{shadow.error()};
+    auto flat = gl::Program::build("shadow.vert", "flat.frag");
+    if (!flat)
+        return base::Error{flat.error()};
+    auto mirror = gl::Program::build("mesh.vert", "mirror.frag");
+    if (!mirror)
+        return base::Error{mirror.error()};
+    auto composite = gl::Program::build("fullscreen.vert", "composite.frag");
+    if (!composite)
+        return base::Error{composite.error()};
+    s.meshProgram = std::move(*mesh);
+    s.shadowProgram = std::move(*shadow);
+    s.mirrorProgram = std::move(*mirror);
+    s.flatProgram = std::move(*flat);
+    s.compositeProgram = std::move(*composite);
+    s.emptyVao = gl::makeVertexArray();
+    s.dummyShadow2D = makeDummyDepth(GL_TEXTURE_2D);
+    s.dummyShadowCube = makeDummyDepth(GL_TEXTURE_CUBE_MAP);
+    s.unitPlane = std::make_shared<const MeshData>(makePlane(1));
+    state.limits = queryGpuLimits();
+    if (base::Status reflector = s.reflector.init(); !reflector)
+        return base::Error{reflector.error()};
+    return renderer;
+}
+
+void Renderer::releaseGlResources() {
+    // Destroying the state deletes every GL object while the caller's context is current.
+    m_state = std::make_unique<State>();
+    m_state->released = true;
+}
+
+const GpuLimits& Renderer::gpuLimits() const {
+    return m_state->limits;
+}
+
+void Renderer::lowerGpuLimits(const GpuLimits& limits) {
+    GpuLimits& l = m_state->limits;
+    l.maxTextureSize = std::min(l.maxTextureSize, limits.maxTextureSize);
+    l.maxCubeMapSize = std::min(l.maxCubeMapSize, limits.maxCubeMapSize);
+    l.maxRenderbufferSize = std::min(l.maxRenderbufferSize, limits.maxRenderbufferSize);
+    l.maxViewportSize = std::min(l.maxViewportSize, limits.maxViewportSize);
+}
+
+namespace {
+
+// Maps that do not fit in GPU memory (or that the driver cannot draw into) are allocated smaller, with a
+// warning, and the frame is planned again, explained and drawn with the sizes that worked. Failed sizes
+// are remembered by the passes, so later frames go straight to the size that works. Returns false where
+// the reflector's map could not be allocated at all: its pass does not run, and the reflector is drawn
+// without it.
+bool allocateMaps(const FrameInput& requested, std::optional<FrameInput>& fitted, FramePlan& plan,
+                  const PlannerState& plannerState, const PlanViewport& viewport, passes::FrameResources& r,
+                  std::vector<std::string>& warnings) {
+    auto current = [&]() -> const FrameInput& { return fitted ? *fitted : requested; };
+    auto edit = [&]() -> FrameInput& {
+        if (!fitted)
+            fitted = requested;
+        return *fitted;
+    };
+    bool changed = false;
+    for (const ShadowPlan& shadow : plan.shadows) {
+        const int size = r.shadows.allocate(current(), shadow, warnings);
+        if (size == shadow.mapSize)
+            continue;
+        changed = true;
+        Light& light = edit().lights[static_cast<std::size_t>(shadow.light)];
+        if (size == 0)
+            light.shadows.enabled = false;
+        else
+            light.shadows.mapSize = size;
+    }
+    bool envmapAllocated = true;
+    const bool capturing = std::any_of(plan.passes.begin(), plan.passes.end(),
+                                       [](const PlannedPass& p) { return p.kind == PassKind::Envmap; });
+    if (capturing) {
+        const int asked = current().reflector->resolution;
+        const int n = r.reflector.allocate(*current().reflector, warnings);
+        if (n == 0) {
+            envmapAllocated = false;
+        } else if (n != asked) {
+            edit().reflector->resolution = n;
+            changed = true;
+        }
+    }
+    if (changed)
+        plan = planFrame(*fitted, plannerState, viewport);
+    return envmapAllocated;
+}
+
+// The lit shaders, built for this frame's lights. A variant that fails to build leaves the shaders that
+// read the lights from uniforms: the same image, slower.
+void selectLighting(passes::FrameResources& r, const FrameInput& input, const FramePlan& plan,
+                    const RenderOptions& options, std::vector<std::string>& warnings) {
+    const bool variants = options.lightingVariants;
+    const std::string lighting = variants ? passes::lightingVariant(input, plan.shadowedLights) : "";
+    base::Status selected = r.meshProgram.select(lighting, variants);
+    if (selected)
+        selected = r.mirrorProgram.select(lighting, variants);
+    if (selected && input.reflector) // the reflector's programs build their variants only when needed
+        selected = r.reflector.selectLighting(lighting, variants);
+    if (!selected) {
+        warnings.push_back(
+            "lit shaders for this frame's lights did not build; drawn with the general ones: " +
+            selected.error());
+        (void)r.meshProgram.select({}, variants);
+        (void)r.mirrorProgram.select({}, variants);
+        (void)r.reflector.selectLighting({}, variants);
+    }
+}
+
+// The target the passes draw at: the caller's, or a fraction of its size for a preview (scaled up by the
+// composite). A tile is a part of an exact image: always drawn whole.
+RenderTarget drawnTarget(const RenderTarget& target, const RenderOptions& options) {
+    const double scale = options.resolutionScale;
+    if (options.tile || !(scale < 1.0)) { // NaN draws every pixel too
+        return target;
+    }
+    const double clamped = std::max(scale, kMinResolutionScale);
+    RenderTarget drawn = target;
+    drawn.width = std::max(1, static_cast<int>(std::lround(target.width * clamped)));
+    drawn.height = std::max(1, static_cast<int>(std::lround(target.height * clamped)));
+    return drawn;
+}
+
+// Why a view draws nothing: the reason of the first view found hidden that it is, or lies inside; null if
+// it draws (and for passes of no view).
+const std::string* hiddenReason(const passes::FrameExecution& frame, int view) {
+    if (view < 0)
+        return nullptr;
+    for (std::size_t v = 0; v < frame.hidden.size(); ++v) {
+        if (frame.hidden[v].empty())
+            continue;
+        for (int u = view; u >= 0; u = frame.plan.views[static_cast<std::size_t>(u)].parent)
+            if (u == static_cast<int>(v))
+                return &frame.hidden[v];
+    }
+    return nullptr;
+}
+
+} // namespace
+
+FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& target,
+                             const RenderOptions& options) {
+    const auto frameStart = Clock::now();
+    State& s = *m_state;
+    passes::FrameResources& r = s.resources;
+    FrameReport report;
+    if (s.released || target.width <= 0 || target.height <= 0)
+        return report;
+
+    // Every pass but the composite draws at `drawn` (the target's size, or less for a preview); the
+    // composite writes the target.
+    const RenderTarget drawn = drawnTarget(target, options);
+    report.drawnWidth = drawn.width;
+    report.drawnHeight = drawn.height;
+
+    // Planning. Map sizes beyond the GPU's limits would fail to allocate: the frame is planned and drawn
+    // with sizes it can hold, and says so.
+    std::optional<FrameInput> fitted = fitToGpuLimits(requested, s.limits, report.warnings);
+    // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
+    // untiled frame would, with the same sub-pixel sample positions.
+    const bool eightBitOutput = target.encodeSrgb && !options.halfFloatCameraBuffer;
+    const bool drawnWhole = !options.tile && drawn.width == target.width && drawn.height == target.height;
+    const PlanViewport viewport{options.tile ? options.tile->imageWidth : drawn.width,
+                                options.tile ? options.tile->imageHeight : drawn.height, options.jitterPixels,
+                                eightBitOutput, eightBitOutput && drawnWhole && target.srgbDepthStencil};
+    const PlannerState freshState;
+    const PlannerState& plannerState = options.reuseMaps ? s.plannerState : freshState;
+    FramePlan& plan = report.plan;
+    plan = planFrame(fitted ? *fitted : requested, plannerState, viewport);
+    const bool envmapAllocated =
+        allocateMaps(requested, fitted, plan, plannerState, viewport, r, report.warnings);
+    const FrameInput& input = fitted ? *fitted : requested;
+    glm::dmat4 projection = cameraProjection(input, viewport);
+    if (options.tile) {
+        const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,
+                                   options.tile->y + target.height};
+        restrictToTile(plan, tile, viewport);
+        projection = math::tileProjection(projection, tile.x0, tile.y0, target.width, target.height,
+                                          viewport.width, viewport.height);
+    }
+    report.skipped = plan.skipped;
+
+    // Execution: the plan as it is, pass by pass.
+    selectLighting(r, input, plan, options, report.warnings);
+    // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
+    // face instead of clamping (which would leak light or shadow along the seams).
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    const bool srgbBuffer = plan.cameraBuffer == CameraBuffer::Srgb8;
+    // Drawn straight into the output, the frame needs no buffer of its own.
+    if (base::Status linear = plan.cameraBufferIsOutput
+                                  ? base::Status{base::Done{}}
+                                  : r.linear.ensure(drawn.width, drawn.height,
+                                                    srgbBuffer ? GL_SRGB8_ALPHA8 : GL_RGBA16F, false);
+        !linear) {
+        // Without its colour buffer the frame cannot be drawn at all: say so instead of an empty image.
+        report.error = "the frame could not be drawn: " + linear.error();
+        report.warnings.push_back(report.error);
+        report.cpuMs = msSince(frameStart);
+        return report;
+    }
+    r.shadows.boundLookups(options.boundShadowLookups);
+    passes::MainPassContext context{
+        r.meshProgram,          r.meshes,   r.textures, r.shadows, plan.shadows, r.dummyShadow2D.id(),
+        r.dummyShadowCube.id(), r.unitPlane};
+    context.depthOnlyProgram = &r.flatProgram;
+    context.coarseItems = plan.coarseItems;
+    r.meshFacts.purge();
+    context.meshFacts = options.cullHiddenBackFaces ? &r.meshFacts : nullptr;
+    // Every view the main pass draws (the camera's and each mirror's) draws the reflector with its map.
+    context.drawReflector = [&r](const FrameInput& in, const passes::ViewSetup& view,
+                                 passes::MainPassContext& c) { return r.reflector.drawSurface(in, view, c); };
+    r.occlusion.beginFrame(plan);
+    int deepestSlot = -1;
+    for (const MirrorView& v : plan.views)
+        deepestSlot = std::max(deepestSlot, v.textureSlot);
+    if (static_cast<int>(r.reflectionTextures.size()) <= deepestSlot)
+        r.reflectionTextures.resize(static_cast<std::size_t>(deepestSlot + 1));
+
+    passes::FrameExecution frame{input, plan,    drawn,          projection,     options.tile.has_value(),
+                                 r,     context, s.plannerState, report.warnings};
+    frame.output = &target;
+    frame.envmapAllocated = envmapAllocated;
+    frame.hidden.resize(plan.views.size());
+    gl::FramebufferBinding keepCallerBinding;
+    // Only sRGB attachments are affected: the camera's buffer when it is one. Maps, reflection textures and
+    // float outputs store what the shaders write.
+    (srgbBuffer ? glEnable : glDisable)(GL_FRAMEBUFFER_SRGB);
+    for (std::size_t i = 0; i < plan.passes.size(); ++i) {
+        const PlannedPass& pass = plan.passes[i];
+        // A view inside a mirror found hidden runs nothing; its reflection is reported skipped.
+        if (const std::string* why = hiddenReason(frame, pass.view)) {
+            if (pass.kind == PassKind::Mirror)
+                frame.skipped.push_back({pass.target, "no reflection: " + *why});
+            continue;
+        }
+        const auto passStart = Clock::now();
+        if (options.gpuTimings)
+            s.timer.begin(i);
+        passes::PassResult result = passes::runPass(pass, frame);
+        if (options.gpuTimings)
+            s.timer.end();
+        if (result.ran)
+            report.ran.push_back({static_cast<int>(i), std::move(result.outcome), -1.0, msSince(passStart)});
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+    passes::resetPassState();
+    glDisable(GL_FRAMEBUFFER_SRGB); // the caller's drawing after ours (the editor's overlays) is not ours
+
+    // The report: what ran, what it cost, and what execution found it could not draw.
+    if (options.gpuTimings) {
+        const std::vector<double> gpu = s.timer.collect(plan.passes.size());
+        report.gpuMs = 0.0;
+        for (PassRun& run : report.ran) {
+            const auto i = static_cast<std::size_t>(run.pass);
+            run.gpuMs = i < gpu.size() ? gpu[i] : -1.0;
+            if (run.gpuMs > 0)
+                report.gpuMs += run.gpuMs;
+        }
+    }
+    for (SkippedEffect& skip : frame.skipped)
+        report.skipped.push_back(std::move(skip));
+    report.memory.main = plan.cameraBufferIsOutput ? 0 : r.linear.bytes();
+    for (int slot = 0; slot <= deepestSlot; ++slot)
+        report.memory.mirrors += r.reflectionTextures[static_cast<std::size_t>(slot)].bytes();
+    for (int lightIndex : plan.shadowedLights)
+        report.memory.shadows += r.shadows.bytes(lightIndex);
+    if (input.reflector)
+        report.memory.envmap = r.reflector.mapBytes(*input.reflector);
+    r.meshes.purge();
+    r.reflector.purge();
+    for (std::string& warning : r.meshes.takeWarnings())
+        report.warnings.push_back(std::move(warning));
+    for (std::string& warning : r.textures.takeWarnings())
+        report.warnings.push_back(std::move(warning));
+    report.occlusionWaits = r.occlusion.waits();
+    report.cpuMs = msSince(frameStart);
+    return report;
+}
+
+bool composeSrgbTextureAsStored(unsigned framebuffer) {
+    gl::FramebufferBinding keep;
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    GLint type = GL_NONE;
+    GLint name = 0;
+    GLint encoding = GL_LINEAR;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_TEXTURE)
+        return false;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                          GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
+    if (encoding != GL_SRGB || name == 0)
+        return false;
+    GLint bound = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(name));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SRGB_DECODE_EXT, GL_SKIP_DECODE_EXT);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
+    return glGetError() == GL_NO_ERROR;
+}
+
+} // namespace speculum::render

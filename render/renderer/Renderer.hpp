@@ -1,0 +1,55 @@
+#pragma once
+
+#include "base/Result.hpp"
+#include "render/frame/FrameInput.hpp"
+#include "render/plan/FramePlan.hpp"
+#include "render/plan/FrameReport.hpp"
+#include "render/plan/GpuLimits.hpp"
+#include "render/plan/RenderOptions.hpp"
+
+#include <cstddef>
+#include <glm/vec2.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace speculum::render {
+
+// Draws FrameInput snapshots with OpenGL 3.3 core. Needs a current context for its whole life, from
+// create() to destruction (or releaseGlResources() when the context is going away first).
+class Renderer {
+public:
+    static base::Result<std::unique_ptr<Renderer>> create();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    FrameReport render(const FrameInput& input, const RenderTarget& target,
+                       const RenderOptions& options = {});
+
+    // Frees every GL object now, while the context is still current. The renderer is unusable after.
+    void releaseGlResources();
+
+    // What the context can hold (queried by create()); frames asking for more are fitted to it, with a
+    // warning (fitToGpuLimits). Tests lower the limits to see that happen without allocating gigabytes;
+    // each limit only ever goes down.
+    const GpuLimits& gpuLimits() const;
+    void lowerGpuLimits(const GpuLimits& limits);
+
+private:
+    Renderer();
+    struct State;
+    std::unique_ptr<State> m_state;
+};
+
+// For a caller whose framebuffer's colour texture is 8-bit sRGB and is then drawn into a plain 8-bit window
+// by a compositor that does not expect sRGB (Qt's widget compositor samples it as an ordinary texture):
+// makes sampling that texture return the bytes it stores, already encoded (EXT_texture_sRGB_decode), so
+// the window shows what a plain 8-bit target would. Rendering into it still encodes. The caller checks
+// for the extension once per context (this runs every frame). False where the colour attachment is not an
+// sRGB texture, or the parameter is refused (no extension after all): the caller should then not declare
+// the target RenderTarget::srgbDepthStencil.
+bool composeSrgbTextureAsStored(unsigned framebuffer);
+
+} // namespace speculum::render

@@ -1,0 +1,161 @@
+#include "render/renderer/StillRenderer.hpp"
+
+#include "render/frame/SceneLimits.hpp"
+#include "render/gl/Objects.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <new>
+
+namespace speculum::render {
+
+namespace {
+
+std::string sizeText(int width, int height) {
+    return std::to_string(width) + "x" + std::to_string(height);
+}
+
+// The tiles of a still: a grid of equal tiles from the image's bottom-left corner (GL window
+// coordinates), so every tile renders into the same buffers; the top row and the right column may reach
+// past the image's edge, by a few pixels. Tile sides are even: the GPU shades pixels in 2×2 quads aligned
+// to the target's origin and takes texture-LOD derivatives within them, so a tile starting at an odd
+// pixel would group pixels differently from the untiled image and sample textures differently.
+struct TileGrid {
+    int columns = 1, rows = 1;
+    int width = 0, height = 0; // of each tile
+    int count() const { return columns * rows; }
+};
+
+TileGrid tileGrid(int width, int height, int tileSize) {
+    TileGrid grid;
+    if (width <= tileSize && height <= tileSize) { // one tile: exactly the image
+        grid.width = width;
+        grid.height = height;
+        return grid;
+    }
+    const int side = std::max(2, tileSize & ~1);
+    grid.columns = (width + side - 1) / side;
+    grid.rows = (height + side - 1) / side;
+    auto evenShare = [](int size, int parts) { return ((size + parts - 1) / parts + 1) & ~1; };
+    grid.width = std::min(side, evenShare(width, grid.columns));
+    grid.height = std::min(side, evenShare(height, grid.rows));
+    return grid;
+}
+
+} // namespace
+
+int maxStillSize() {
+    GLint renderbuffer = 0, texture = 0, viewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    return std::min({renderbuffer, texture, viewport[0], viewport[1]});
+}
+
+base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input,
+                                      const StillSettings& settings, const ProgressCallback& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    if (base::Status size = checkStillSize(settings.width, settings.height); !size)
+        return base::Error{size.error()};
+    const int n = std::clamp(settings.ssaa, kMinSsaa, kMaxSsaa);
+    const int limit = maxStillSize();
+    const int tileSize = std::min(settings.tileSize > 0 ? settings.tileSize : kDefaultTileSize, limit);
+    if (tileSize < 1)
+        return base::Error{"this OpenGL context cannot render any image (its size limit is " +
+                           std::to_string(limit) + ")"};
+    const TileGrid grid = tileGrid(settings.width, settings.height, tileSize);
+    const bool tiled = grid.count() > 1;
+
+    StillResult result;
+    result.samples = n * n;
+    result.tiles = grid.count();
+    result.image.width = settings.width;
+    result.image.height = settings.height;
+    try {
+        result.image.rgba.resize(std::size_t(settings.width) * std::size_t(settings.height) * 4);
+    } catch (const std::bad_alloc&) {
+        return base::Error{"not enough memory for a " + sizeText(settings.width, settings.height) + " still"};
+    }
+
+    // A float target keeps the samples linear and unclamped until they are averaged.
+    gl::FramebufferBinding keepBinding;
+    gl::Texture color = gl::makeTexture();
+    glBindTexture(GL_TEXTURE_2D, color.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, grid.width, grid.height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    gl::Framebuffer framebuffer = gl::makeFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        return base::Error{"cannot create a " + sizeText(grid.width, grid.height) +
+                           " float render target on this GPU"};
+
+    const std::size_t tilePixels = std::size_t(grid.width) * std::size_t(grid.height);
+    std::vector<float> sample(tilePixels * 4);
+    std::vector<double> sum(n > 1 ? tilePixels * 4 : 0);
+    const RenderTarget target{framebuffer.id(), grid.width, grid.height, false};
+    const int steps = grid.count() * n * n;
+
+    for (int t = 0; t < grid.count(); ++t) {
+        // Tiles in reading order: the top row first (GL rows count from the bottom).
+        const int x0 = (t % grid.columns) * grid.width;
+        const int y0 = (grid.rows - 1 - t / grid.columns) * grid.height;
+        std::fill(sum.begin(), sum.end(), 0.0);
+        for (int k = 0; k < n * n; ++k) {
+            const int step = t * n * n + k;
+            std::string stage = "sample " + std::to_string(k + 1) + "/" + std::to_string(n * n);
+            if (tiled)
+                stage = "tile " + std::to_string(t + 1) + "/" + std::to_string(grid.count()) + ", " + stage;
+            if (progress && !progress(double(step) / steps, stage))
+                return base::Error{"render cancelled"};
+            RenderOptions options;
+            options.jitterPixels = {(k % n + 0.5) / n - 0.5, (k / n + 0.5) / n - 0.5};
+            if (tiled)
+                options.tile = ImageTile{settings.width, settings.height, x0, y0};
+            options.reuseMaps = settings.reuseMaps || step > 0;
+            options.lightingVariants = settings.lightingVariants;
+            options.boundShadowLookups = settings.boundShadowLookups;
+            options.cullHiddenBackFaces = settings.cullHiddenBackFaces;
+            FrameReport report = renderer.render(input, target, options);
+            // A frame the renderer could not draw at all (its colour buffer did not fit) is no still.
+            if (!report.error.empty())
+                return base::Error{report.error};
+            if (step == 0)
+                result.firstSample = std::move(report);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
+            glReadBuffer(GL_COLOR_ATTACHMENT0);
+            glPixelStorei(GL_PACK_ALIGNMENT, 4);
+            glReadPixels(0, 0, grid.width, grid.height, GL_RGBA, GL_FLOAT, sample.data());
+            if (n > 1)
+                for (std::size_t i = 0; i < sample.size(); ++i)
+                    sum[i] += sample[i];
+        }
+        if (n > 1)
+            for (std::size_t i = 0; i < sample.size(); ++i)
+                sample[i] = static_cast<float>(sum[i] / (n * n));
+
+        // Into the image: GL rows run bottom to top, image rows top to bottom; the parts of the tile past
+        // the image's edge are dropped.
+        const int columns = std::min(grid.width, settings.width - x0);
+        const std::size_t tileRow = std::size_t(grid.width) * 4;
+        for (int row = 0; row < grid.height; ++row) {
+            const int y = y0 + row; // GL row in the image
+            if (y >= settings.height)
+                break;
+            const std::size_t from = std::size_t(row) * tileRow;
+            const std::size_t to =
+                (std::size_t(settings.height - 1 - y) * std::size_t(settings.width) + std::size_t(x0)) * 4;
+            std::copy_n(sample.begin() + std::ptrdiff_t(from), std::size_t(columns) * 4,
+                        result.image.rgba.begin() + std::ptrdiff_t(to));
+        }
+    }
+    if (progress)
+        progress(1.0, "done");
+    result.totalMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace speculum::render

@@ -1,0 +1,294 @@
+#include "scene/evaluate/Snapshot.hpp"
+
+#include "base/Printable.hpp"
+#include "scene/import/ModelNodes.hpp"
+#include "scene/model/NodeMath.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace speculum::document {
+
+render::Settings toRender(const SceneSettings& settings) {
+    return render::Settings{settings.background,
+                            settings.mirrorDepth,
+                            settings.ambient,
+                            settings.simplifyReflections,
+                            settings.glossyFilter == GlossyFilter::Mip ? render::GlossyFilter::Mip
+                                                                       : render::GlossyFilter::Footprint,
+                            settings.glossyTaps,
+                            settings.prefilterSamples};
+}
+
+render::Camera toRender(const CameraData& camera) {
+    return render::Camera{camera.position, camera.target, camera.up, camera.fovY, camera.near, camera.far};
+}
+
+render::Material toRender(const MaterialComponent& material) {
+    render::Material m;
+    m.color = material.color;
+    m.ambient = material.ambient;
+    m.diffuse = material.diffuse;
+    m.specular = material.specular;
+    m.shininess = material.shininess;
+    m.emission = material.emission;
+    m.specularColor = material.specularColor;
+    // Paths are already absolute in the model; embedded textures ("/abs/model.glb#*0") are resolved to
+    // their decoded image by the snapshot, which has the MeshLibrary.
+    m.texture.path = material.texture;
+    m.emissionTexture.path = material.emissionTexture;
+    m.normalTexture.path = material.normalTexture;
+    const auto wrap = [](TextureWrap w) {
+        switch (w) {
+        case TextureWrap::Repeat:
+            return render::TextureWrap::Repeat;
+        case TextureWrap::Clamp:
+            return render::TextureWrap::ClampToEdge;
+        case TextureWrap::Mirror:
+            return render::TextureWrap::MirroredRepeat;
+        }
+        return render::TextureWrap::Repeat;
+    };
+    for (render::TextureSource* source : {&m.texture, &m.emissionTexture, &m.normalTexture}) {
+        source->wrapS = wrap(material.wrap[0]);
+        source->wrapT = wrap(material.wrap[1]);
+    }
+    m.normalScale = material.normalScale;
+    m.opacity = material.opacity;
+    switch (material.alphaMode) {
+    case AlphaMode::Opaque:
+        m.alphaMode = render::AlphaMode::Opaque;
+        break;
+    case AlphaMode::Mask:
+        m.alphaMode = render::AlphaMode::Mask;
+        break;
+    case AlphaMode::Blend:
+        m.alphaMode = render::AlphaMode::Blend;
+        break;
+    }
+    m.alphaCutoff = material.alphaCutoff;
+    return m;
+}
+
+namespace {
+
+render::LightType toRender(LightType type) {
+    switch (type) {
+    case LightType::Point:
+        return render::LightType::Point;
+    case LightType::Directional:
+        return render::LightType::Directional;
+    case LightType::Spot:
+        return render::LightType::Spot;
+    }
+    return render::LightType::Point;
+}
+
+render::ReflectorMap toRender(ReflectorMap map) {
+    switch (map) {
+    case ReflectorMap::Cube:
+        return render::ReflectorMap::Cube;
+    case ReflectorMap::DualParaboloid:
+        return render::ReflectorMap::DualParaboloid;
+    case ReflectorMap::TennisBall:
+        return render::ReflectorMap::TennisBall;
+    }
+    return render::ReflectorMap::Cube;
+}
+
+class SnapshotBuilder {
+public:
+    SnapshotBuilder(const Scene& scene, double time, MeshLibrary& meshes, std::vector<std::string>& warnings)
+        : m_projectDir(QFileInfo(scene.projectPath()).absoluteDir())
+        , m_hasProject(!scene.projectPath().isEmpty())
+        , m_time(time)
+        , m_meshes(meshes)
+        , m_warnings(warnings) {}
+
+    void visit(const Node& node, const glm::dmat4& parentWorld, render::FrameInput& frame) {
+        const NodeData& d = node.data();
+        const glm::dmat4 world = parentWorld * animatedLocalMatrix(d, m_time);
+        render::Material material = d.material ? resolved(*d.material) : render::Material{};
+
+        render::MeshHandle mesh;
+        // A whole model file on a plain node without a material of its own draws every part with the
+        // file's own material, where the file's node tree places it (a material on the node overrides
+        // them all, and mirrors and reflectors need the one flattened surface).
+        if (d.mesh && !d.mesh->builtin && !d.mesh->part && !d.material && !d.reflector && !d.mirror) {
+            addModelParts(d, world, frame);
+        } else if (d.mesh) {
+            MeshComponent source = *d.mesh;
+            source.file = absolute(source.file);
+            base::Result<render::MeshHandle> loaded = m_meshes.get(source, m_warnings);
+            if (loaded) {
+                mesh = *loaded;
+            } else {
+                warn(d, "mesh skipped: " + loaded.error());
+            }
+        }
+
+        if (d.reflector) {
+            addReflector(d, world, mesh, material, frame);
+        } else if (mesh) {
+            frame.items.push_back(render::DrawItem{d.name, world, mesh, material, true});
+        }
+        if (d.light) {
+            frame.lights.push_back(light(d, world));
+        }
+        if (d.mirror) {
+            render::Mirror mirror;
+            mirror.name = d.name;
+            mirror.world = world;
+            mirror.size = d.mirror->size;
+            mirror.reflectivity = d.mirror->reflectivity;
+            mirror.technique = d.mirror->technique == MirrorTechnique::Texture
+                                   ? render::MirrorTechnique::Texture
+                                   : render::MirrorTechnique::Stencil;
+            mirror.tint = d.mirror->tint;
+            mirror.fresnel = d.mirror->fresnel;
+            mirror.roughness = d.mirror->roughness;
+            mirror.hasMaterial = d.material.has_value();
+            mirror.material = material;
+            frame.mirrors.push_back(std::move(mirror));
+        }
+        for (const auto& child : node.children()) {
+            visit(*child, world, frame);
+        }
+    }
+
+private:
+    // The render material with its paths made absolute and embedded textures decoded.
+    render::Material resolved(const MaterialComponent& component) {
+        render::Material material = toRender(component);
+        for (render::TextureSource* source :
+             {&material.texture, &material.emissionTexture, &material.normalTexture}) {
+            if (source->path.empty()) {
+                continue;
+            }
+            source->path = absolute(source->path);
+            source->image = m_meshes.embeddedTexture(source->path, m_warnings);
+        }
+        return material;
+    }
+
+    void addModelParts(const NodeData& d, const glm::dmat4& world, render::FrameInput& frame) {
+        const std::string file = absolute(d.mesh->file);
+        const auto model = m_meshes.model(file, m_warnings);
+        if (!model) {
+            warn(d, "mesh skipped: " + model.error());
+            return;
+        }
+        const ImportedModel& m = **model;
+        detail::forEachPlacedPart(m, [&](int index, const glm::dmat4& placement) {
+            const ImportedPart& part = m.parts[static_cast<std::size_t>(index)];
+            if (!part.mesh) {
+                return;
+            }
+            const bool hasMaterial =
+                part.material >= 0 && part.material < static_cast<int>(m.materials.size());
+            render::Material material = hasMaterial
+                                            ? resolved(m.materials[static_cast<std::size_t>(part.material)])
+                                            : render::Material{};
+            const std::string name =
+                d.name + "/" + (part.name.empty() ? "part " + std::to_string(index) : part.name);
+            frame.items.push_back(render::DrawItem{name, world * placement, part.mesh, material, true});
+        });
+    }
+
+    // The model holds absolute paths (the reader resolves them); a relative one set by code is taken relative
+    // to the project file, as in the file format.
+    std::string absolute(const std::string& path) const {
+        if (path.empty() || !m_hasProject || !QDir::isRelativePath(QString::fromStdString(path))) {
+            return path;
+        }
+        return QDir::cleanPath(m_projectDir.absoluteFilePath(QString::fromStdString(path))).toStdString();
+    }
+
+    void warn(const NodeData& d, const std::string& what) {
+        m_warnings.push_back("node " + base::quoted(d.name) + ": " + what);
+    }
+
+    void addReflector(const NodeData& d, const glm::dmat4& world, const render::MeshHandle& mesh,
+                      const render::Material& material, render::FrameInput& frame) {
+        if (frame.reflector) {
+            warn(d, "reflector skipped: the scene already has one (" + base::quoted(frame.reflector->name) +
+                        ")");
+            return;
+        }
+        if (!mesh) {
+            warn(d, "reflector skipped: it needs a mesh on the same node");
+            return;
+        }
+        render::Reflector r;
+        r.name = d.name;
+        r.world = world;
+        r.mesh = mesh;
+        r.material = material;
+        r.map = toRender(d.reflector->map);
+        r.resolution = d.reflector->resolution;
+        r.reflectivity = d.reflector->reflectivity;
+        r.fresnel = d.reflector->fresnel;
+        r.fill = d.reflector->fill == ReflectorFill::Direct ? render::ReflectorFill::Direct
+                                                            : render::ReflectorFill::Resampled;
+        r.update = d.reflector->update == ReflectorUpdate::Always ? render::ReflectorUpdate::Always
+                   : d.reflector->update == ReflectorUpdate::Once ? render::ReflectorUpdate::Once
+                                                                  : render::ReflectorUpdate::OnChange;
+        r.mirrorDepth = d.reflector->mirrorDepth;
+        r.roughness = d.reflector->roughness;
+        if (const auto& p = d.reflector->parallax) {
+            r.parallax.shape = p->shape == ParallaxShape::Sphere ? render::ParallaxProxy::Shape::Sphere
+                                                                 : render::ParallaxProxy::Shape::Box;
+            r.parallax.radius = p->radius;
+            r.parallax.min = p->min;
+            r.parallax.max = p->max;
+        }
+        frame.reflector = std::move(r);
+    }
+
+    static render::Light light(const NodeData& d, const glm::dmat4& world) {
+        const LightComponent& l = *d.light;
+        render::Light out;
+        out.name = d.name;
+        out.type = toRender(l.type);
+        out.position = glm::dvec3(world[3]);
+        // Directions transform with the linear part; normalise away any scale. A degenerate matrix keeps −Y.
+        const glm::dvec3 down = glm::dvec3(world * glm::dvec4(0.0, -1.0, 0.0, 0.0));
+        const double length = glm::length(down);
+        out.direction = length > 0.0 && std::isfinite(length) ? down / length : glm::dvec3(0.0, -1.0, 0.0);
+        out.color = l.color;
+        out.intensity = l.intensity;
+        out.spotAngle = l.spotAngle;
+        out.spotBlend = l.spotBlend;
+        if (l.shadows) {
+            out.shadows.enabled = true;
+            out.shadows.mapSize = l.shadows->mapSize;
+            out.shadows.pcf = l.shadows->pcf;
+        }
+        return out;
+    }
+
+    QDir m_projectDir;
+    bool m_hasProject;
+    double m_time;
+    MeshLibrary& m_meshes;
+    std::vector<std::string>& m_warnings;
+};
+
+} // namespace
+
+render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary& meshes,
+                            std::vector<std::string>& warnings) {
+    render::FrameInput frame;
+    frame.settings = toRender(scene.settings());
+    frame.camera = toRender(scene.camera());
+    frame.time = timeSeconds;
+    SnapshotBuilder builder(scene, timeSeconds, meshes, warnings);
+    for (const auto& node : scene.topLevelNodes()) {
+        builder.visit(*node, glm::dmat4(1.0), frame);
+    }
+    return frame;
+}
+
+} // namespace speculum::document

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "render/frame/FrameInput.hpp"
+#include "scene/import/MeshLibrary.hpp"
+#include "scene/model/Scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace speculum::document {
+
+// The renderer's per-frame input: the scene with animations evaluated at timeSeconds, world matrices
+// composed in double (parent world × T × R × S), absolute texture paths and meshes from `meshes`.
+//
+// Per node, in file order (parents before children):
+//   mesh (and no reflector) → a DrawItem with the node's material, or the default material;
+//   light                   → a Light at the world origin of the node, pointing along its world −Y;
+//   mirror                  → a Mirror (world matrix, size, reflectivity, technique, material if any);
+//   reflector               → the Reflector, whose surface is the node's mesh (not also a DrawItem).
+// A mesh that cannot be loaded, a reflector without a mesh or a second reflector give a warning naming the
+// node, and that part of the node is skipped; snapshot never fails.
+render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary& meshes,
+                            std::vector<std::string>& warnings);
+
+// Conversions the snapshot uses, for callers that build FrameInput parts themselves.
+render::Settings toRender(const SceneSettings& settings);
+render::Camera toRender(const CameraData& camera);
+render::Material toRender(const MaterialComponent& material);
+
+} // namespace speculum::document
