@@ -154,10 +154,10 @@ int run(const Options& options) {
     // Built-in teapots are the mesh library's, one shared mesh per tessellation: swap them by identity.
     std::set<const render::MeshData*> teapotMeshes;
     for (int t : project->teapotTessellations)
-        teapotMeshes.insert(project->meshes->builtin(document::BuiltinMesh::Teapot, t).get());
+        teapotMeshes.insert(project->meshes->builtin(scene::BuiltinMesh::Teapot, t).get());
     input.tessellate = [&](const render::MeshHandle& mesh, int tessellation) {
         return teapotMeshes.count(mesh.get())
-                   ? project->meshes->builtin(document::BuiltinMesh::Teapot, tessellation)
+                   ? project->meshes->builtin(scene::BuiltinMesh::Teapot, tessellation)
                    : mesh;
     };
 

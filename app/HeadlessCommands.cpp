@@ -481,12 +481,12 @@ int runExport(const CliOptions& options) {
         fail("export: " + distinct.error());
         return 1;
     }
-    document::Scene scene;
+    scene::Scene scene;
     if (base::Status opened = loadProjectScene(options.project, scene); !opened) {
         fail(opened.error());
         return 1;
     }
-    document::MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const ProjectFiles files = checkProjectFiles(options.project, scene, meshes, warnings);
     if (base::Status missing = applyMissingFiles(files, policyOf(options)); !missing) {
@@ -498,7 +498,7 @@ int runExport(const CliOptions& options) {
         return 1;
     }
     const base::Status exported =
-        document::exportGltf(scene, QString::fromStdString(options.output), meshes, warnings);
+        scene::exportGltf(scene, QString::fromStdString(options.output), meshes, warnings);
     if (!exported) {
         fail("export: " + exported.error()); // alone: a failure is one line
         return 1;

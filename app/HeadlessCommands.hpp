@@ -9,7 +9,7 @@ namespace speculum::app {
 int runRender(const CliOptions& options);
 int runExplain(const CliOptions& options);
 int runBench(const CliOptions& options);
-// `export PROJECT -o OUT.glb|OUT.gltf`: the scene as glTF 2.0 (document::exportGltf); prints OUT.
+// `export PROJECT -o OUT.glb|OUT.gltf`: the scene as glTF 2.0 (scene::exportGltf); prints OUT.
 int runExport(const CliOptions& options);
 
 } // namespace speculum::app

@@ -78,20 +78,20 @@ void printError(const std::string& message) {
     std::cerr << "speculum: error: " << oneLine(message) << "\n";
 }
 
-base::Status loadProjectScene(const std::string& project, document::Scene& scene) {
+base::Status loadProjectScene(const std::string& project, scene::Scene& scene) {
     const QString path = QString::fromStdString(project);
     // Only a regular file is read: a FIFO or /dev/stdin would block the command for good.
     if (const base::Status regular = base::requireRegularFile(project); !regular)
         return base::Error{base::quoted(project) + ": " + regular.error()};
     std::vector<std::string> warnings;
-    if (base::Status opened = document::openProject(scene, path, warnings); !opened)
+    if (base::Status opened = scene::openProject(scene, path, warnings); !opened)
         return base::Error{base::quoted(project) + ": " + opened.error()};
     printWarnings(warnings);
     return base::Done{};
 }
 
-ProjectFiles checkProjectFiles(const std::string& project, const document::Scene& scene,
-                               document::MeshLibrary& meshes, std::vector<std::string>& warnings) {
+ProjectFiles checkProjectFiles(const std::string& project, const scene::Scene& scene,
+                               scene::MeshLibrary& meshes, std::vector<std::string>& warnings) {
     ProjectFiles files;
     files.inputs.push_back(project);
     std::set<std::string> checked;
@@ -109,13 +109,13 @@ ProjectFiles checkProjectFiles(const std::string& project, const document::Scene
             files.badTextures.insert(path);
         }
     };
-    const auto textures = [&](const std::string& node, const document::MaterialComponent& m) {
+    const auto textures = [&](const std::string& node, const scene::MaterialComponent& m) {
         texture(node, m.texture);
         texture(node, m.emissionTexture);
         texture(node, m.normalTexture);
     };
-    scene.forEachNode([&](const document::Node& node) {
-        const document::NodeData& d = node.data();
+    scene.forEachNode([&](const scene::Node& node) {
+        const scene::NodeData& d = node.data();
         if (d.material)
             textures(d.name, *d.material);
         if (!d.mesh || d.mesh->builtin)
@@ -130,7 +130,7 @@ ProjectFiles checkProjectFiles(const std::string& project, const document::Scene
                 files.problems.push_back("node " + base::quoted(d.name) + ": model " + model.error());
                 return;
             }
-            for (const document::MaterialComponent& m : (*model)->materials)
+            for (const scene::MaterialComponent& m : (*model)->materials)
                 textures(d.name, m);
         } else if (auto mesh = meshes.get(*d.mesh, warnings); !mesh) {
             files.problems.push_back("node " + base::quoted(d.name) + ": model " + mesh.error());
@@ -154,24 +154,24 @@ base::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy) {
 }
 
 base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time, MissingFiles policy) {
-    auto owned = std::make_unique<document::Scene>();
-    document::Scene& scene = *owned;
+    auto owned = std::make_unique<scene::Scene>();
+    scene::Scene& scene = *owned;
     if (base::Status opened = loadProjectScene(project, scene); !opened)
         return base::Error{opened.error()};
     ProjectFrame frame;
-    frame.meshes = std::make_unique<document::MeshLibrary>();
+    frame.meshes = std::make_unique<scene::MeshLibrary>();
     std::vector<std::string> warnings;
     const ProjectFiles files = checkProjectFiles(project, scene, *frame.meshes, warnings);
     if (base::Status missing = applyMissingFiles(files, policy); !missing)
         return base::Error{missing.error()};
     frame.inputs = files.inputs;
-    frame.input = document::snapshot(scene, time, *frame.meshes, warnings);
+    frame.input = scene::snapshot(scene, time, *frame.meshes, warnings);
     if (policy == MissingFiles::KeepGoing)
         dropTextures(frame.input, files.badTextures);
     printWarnings(warnings);
-    scene.forEachNode([&](const document::Node& node) {
+    scene.forEachNode([&](const scene::Node& node) {
         const auto& mesh = node.data().mesh;
-        if (mesh && mesh->builtin == document::BuiltinMesh::Teapot)
+        if (mesh && mesh->builtin == scene::BuiltinMesh::Teapot)
             frame.teapotTessellations.insert(mesh->tessellation);
     });
     frame.scene = std::move(owned);

@@ -33,21 +33,21 @@ struct ProjectFiles {
 // from (kept, so that a command can ask for other tessellations of the same built-ins).
 struct ProjectFrame {
     render::FrameInput input;
-    std::unique_ptr<document::MeshLibrary> meshes;
+    std::unique_ptr<scene::MeshLibrary> meshes;
     std::set<int> teapotTessellations; // of the built-in teapots the scene has (empty: none)
     std::vector<std::string> inputs;   // as ProjectFiles::inputs: what no output may overwrite
     // The scene itself, for commands that evaluate it at other times too (`time --animated`).
-    std::unique_ptr<document::Scene> scene;
+    std::unique_ptr<scene::Scene> scene;
 };
 
 // Opens PROJECT into `scene`; load warnings go to stderr. Errors name the file and, for a bad file, the
 // JSON path.
-base::Status loadProjectScene(const std::string& project, document::Scene& scene);
+base::Status loadProjectScene(const std::string& project, scene::Scene& scene);
 
 // The models and textures `scene` names, each imported (into `meshes`, so a later snapshot reuses it) or
 // checked to be a readable regular file. Import warnings are appended to `warnings`.
-ProjectFiles checkProjectFiles(const std::string& project, const document::Scene& scene,
-                               document::MeshLibrary& meshes, std::vector<std::string>& warnings);
+ProjectFiles checkProjectFiles(const std::string& project, const scene::Scene& scene,
+                               scene::MeshLibrary& meshes, std::vector<std::string>& warnings);
 
 // Applies `policy` to the problems found: Fail gives one error line (the first problem, how many more, and
 // the option that goes on); KeepGoing prints each as a warning; Report does nothing.

@@ -113,8 +113,8 @@ int runTime(const CliOptions& options) {
     int frameNumber = 0;
     auto frameInput = [&]() -> const render::FrameInput& {
         if (options.animated) {
-            project->input = document::snapshot(*project->scene, options.time + frameNumber * kFrameStep,
-                                                *project->meshes, snapshotWarnings);
+            project->input = scene::snapshot(*project->scene, options.time + frameNumber * kFrameStep,
+                                             *project->meshes, snapshotWarnings);
             snapshotWarnings.clear();
         }
         ++frameNumber;

@@ -136,19 +136,20 @@ render::MeshHandle bigMesh() {
 void BM_PickHierarchyBuild2MTriangles(benchmark::State& state) {
     const render::MeshHandle mesh = bigMesh();
     for (auto _ : state) {
-        document::MeshPickAccel accel(*mesh);
+        speculum::scene::MeshPickAccel accel(*mesh);
         benchmark::DoNotOptimize(accel.nodeCount());
     }
 }
 
 void BM_PickClick2MTrianglesCached(benchmark::State& state) {
-    document::PickScene scene;
+    speculum::scene::PickScene scene;
     scene.meshes.push_back({1, bigMesh(), glm::dmat4(1.0)});
-    document::meshPickAccel(bigMesh()); // built once, as the import worker does
+    speculum::scene::meshPickAccel(bigMesh()); // built once, as the import worker does
     int i = 0;
     for (auto _ : state) {
         const double x = -0.9 + 0.0018 * (i++ % 1000);
-        benchmark::DoNotOptimize(document::pick(scene, document::Ray{{x, 5, 0.3}, {0.05, -1, 0.02}}));
+        benchmark::DoNotOptimize(
+            speculum::scene::pick(scene, speculum::scene::Ray{{x, 5, 0.3}, {0.05, -1, 0.02}}));
     }
 }
 
@@ -199,7 +200,7 @@ int main(int argc, char** argv) {
     }
     g_window->clock().setPlaying(false);
     g_window->clock().setTime(0.0);
-    g_window->scene().forEachNode([&](const document::Node& node) {
+    g_window->scene().forEachNode([&](const speculum::scene::Node& node) {
         if (node.name() == "Teapot") {
             g_window->selection().selectNode(node.id());
         }

@@ -17,8 +17,8 @@ using namespace speculum;
 struct Fixture {
     std::unique_ptr<render::gl::HeadlessContext> context;
     std::unique_ptr<render::Renderer> renderer;
-    document::Scene scene;
-    document::MeshLibrary meshes;
+    speculum::scene::Scene scene;
+    speculum::scene::MeshLibrary meshes;
     render::gl::Texture color;
     render::gl::Framebuffer framebuffer;
 };
@@ -37,7 +37,7 @@ Fixture* fixture(int width, int height) {
         f->renderer = std::move(*renderer);
         std::vector<std::string> warnings;
         const QString demo = QString(SPECULUM_SOURCE_DIR) + "/resources/scenes/teapot.speculum.json";
-        if (!document::openProject(f->scene, demo, warnings))
+        if (!speculum::scene::openProject(f->scene, demo, warnings))
             return nullptr;
     }
     // An 8-bit target like a window's, so the composite pass does what it does on screen.
@@ -64,7 +64,7 @@ void frame(benchmark::State& state, bool animated) {
     std::int64_t frames = 0;
     for (auto _ : state) {
         std::vector<std::string> warnings;
-        const render::FrameInput input = document::snapshot(f->scene, t, f->meshes, warnings);
+        const render::FrameInput input = speculum::scene::snapshot(f->scene, t, f->meshes, warnings);
         // Timer queries wait for the GPU at the end of the frame, so wall time includes the GPU's work.
         const render::FrameReport report =
             f->renderer->render(input, {f->framebuffer.id(), width, height, true}, {});

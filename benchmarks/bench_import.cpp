@@ -95,7 +95,7 @@ void BM_ImportModel(benchmark::State& state) {
     const std::string& path = plyFile(state.range(0) != 0);
     for (auto _ : state) {
         std::vector<std::string> warnings;
-        auto mesh = document::importModel(path, warnings);
+        auto mesh = speculum::scene::importModel(path, warnings);
         if (!mesh) {
             state.SkipWithError(mesh.error().c_str());
             return;
@@ -109,7 +109,7 @@ void BM_ImportModelFile(benchmark::State& state) {
     const std::string& path = plyFile(state.range(0) != 0);
     for (auto _ : state) {
         std::vector<std::string> warnings;
-        auto model = document::importModelFile(path, warnings);
+        auto model = speculum::scene::importModelFile(path, warnings);
         if (!model) {
             state.SkipWithError(model.error().c_str());
             return;

@@ -17,8 +17,8 @@ QString quoted(const std::string& name) {
 
 // A command made for (or run on) a node that is not in the scene is a programmer error: the undo stack and
 // the scene went out of step. Continuing would corrupt the document, so stop loudly.
-const Node& requireNode(const Scene& scene, NodeId id, const char* where) {
-    const Node* node = scene.findNode(id);
+const scene::Node& requireNode(const scene::Scene& scene, scene::NodeId id, const char* where) {
+    const scene::Node* node = scene.findNode(id);
     if (!node) {
         qFatal("%s", where);
     }
@@ -39,8 +39,8 @@ bool pushEdit(QUndoStack& stack, QUndoCommand* command) {
 
 // ---- SetNodesDataCommand ----
 
-SetNodesDataCommand::SetNodesDataCommand(Scene& scene, std::vector<Change> changes, const QString& text,
-                                         const QString& mergeKey, QUndoCommand* parent)
+SetNodesDataCommand::SetNodesDataCommand(scene::Scene& scene, std::vector<Change> changes,
+                                         const QString& text, const QString& mergeKey, QUndoCommand* parent)
     : QUndoCommand(parent)
     , m_scene(scene)
     , m_mergeKey(mergeKey) {
@@ -92,8 +92,8 @@ bool SetNodesDataCommand::mergeWith(const QUndoCommand* other) {
 
 // ---- SetNodeDataCommand ----
 
-SetNodeDataCommand::SetNodeDataCommand(Scene& scene, NodeId id, NodeData data, const QString& text,
-                                       const QString& mergeKey, QUndoCommand* parent)
+SetNodeDataCommand::SetNodeDataCommand(scene::Scene& scene, scene::NodeId id, scene::NodeData data,
+                                       const QString& text, const QString& mergeKey, QUndoCommand* parent)
     : SetNodesDataCommand(scene, {{id, std::move(data)}}, text, mergeKey, parent) {}
 
 int SetNodeDataCommand::id() const {
@@ -102,7 +102,8 @@ int SetNodeDataCommand::id() const {
 
 // ---- RenameNodeCommand ----
 
-RenameNodeCommand::RenameNodeCommand(Scene& scene, NodeId id, std::string name, QUndoCommand* parent)
+RenameNodeCommand::RenameNodeCommand(scene::Scene& scene, scene::NodeId id, std::string name,
+                                     QUndoCommand* parent)
     : QUndoCommand(parent)
     , m_scene(scene)
     , m_node(id)
@@ -113,20 +114,21 @@ RenameNodeCommand::RenameNodeCommand(Scene& scene, NodeId id, std::string name, 
 }
 
 void RenameNodeCommand::undo() {
-    NodeData data = requireNode(m_scene, m_node, "RenameNodeCommand::undo(): no such node").data();
+    scene::NodeData data = requireNode(m_scene, m_node, "RenameNodeCommand::undo(): no such node").data();
     data.name = m_before;
     m_scene.setNodeData(m_node, data);
 }
 
 void RenameNodeCommand::redo() {
-    NodeData data = requireNode(m_scene, m_node, "RenameNodeCommand::redo(): no such node").data();
+    scene::NodeData data = requireNode(m_scene, m_node, "RenameNodeCommand::redo(): no such node").data();
     data.name = m_after;
     m_scene.setNodeData(m_node, data);
 }
 
 // ---- AddNodeCommand ----
 
-AddNodeCommand::AddNodeCommand(Scene& scene, NodeTree tree, NodeId parent, int index, QUndoCommand* parent_)
+AddNodeCommand::AddNodeCommand(scene::Scene& scene, scene::NodeTree tree, scene::NodeId parent, int index,
+                               QUndoCommand* parent_)
     : QUndoCommand(parent_)
     , m_scene(scene)
     , m_tree(std::move(tree))
@@ -149,7 +151,7 @@ void AddNodeCommand::undo() {
 
 // ---- RemoveNodeCommand ----
 
-RemoveNodeCommand::RemoveNodeCommand(Scene& scene, NodeId id, QUndoCommand* parent)
+RemoveNodeCommand::RemoveNodeCommand(scene::Scene& scene, scene::NodeId id, QUndoCommand* parent)
     : QUndoCommand(parent)
     , m_scene(scene)
     , m_node(id) {
@@ -170,7 +172,7 @@ void RemoveNodeCommand::undo() {
 
 // ---- MoveNodeCommand ----
 
-MoveNodeCommand::MoveNodeCommand(Scene& scene, NodeId id, NodeId newParent, int newIndex,
+MoveNodeCommand::MoveNodeCommand(scene::Scene& scene, scene::NodeId id, scene::NodeId newParent, int newIndex,
                                  QUndoCommand* parent)
     : QUndoCommand(parent)
     , m_scene(scene)
@@ -196,7 +198,7 @@ bool MoveNodeCommand::movesNothing() const {
     return landing == m_oldIndex;
 }
 
-void MoveNodeCommand::move(NodeId parent, int index) {
+void MoveNodeCommand::move(scene::NodeId parent, int index) {
     m_scene.insertNode(parent, index, m_scene.takeNode(m_node));
 }
 
@@ -209,7 +211,7 @@ void MoveNodeCommand::undo() {
 
 // ---- SetSettingsCommand ----
 
-SetSettingsCommand::SetSettingsCommand(Scene& scene, SceneSettings settings, bool mergeable,
+SetSettingsCommand::SetSettingsCommand(scene::Scene& scene, scene::SceneSettings settings, bool mergeable,
                                        QUndoCommand* parent)
     : QUndoCommand(parent)
     , m_scene(scene)
@@ -242,7 +244,8 @@ bool SetSettingsCommand::mergeWith(const QUndoCommand* other) {
 
 // ---- SetCameraCommand ----
 
-SetCameraCommand::SetCameraCommand(Scene& scene, CameraData camera, bool mergeable, QUndoCommand* parent)
+SetCameraCommand::SetCameraCommand(scene::Scene& scene, scene::CameraData camera, bool mergeable,
+                                   QUndoCommand* parent)
     : QUndoCommand(parent)
     , m_scene(scene)
     , m_before(scene.camera())

@@ -32,10 +32,10 @@ bool pushEdit(QUndoStack& stack, QUndoCommand* command);
 class SetNodesDataCommand : public QUndoCommand {
 public:
     struct Change {
-        NodeId id = kNoNode;
-        NodeData data;
+        scene::NodeId id = scene::kNoNode;
+        scene::NodeData data;
     };
-    SetNodesDataCommand(Scene& scene, std::vector<Change> changes, const QString& text = {},
+    SetNodesDataCommand(scene::Scene& scene, std::vector<Change> changes, const QString& text = {},
                         const QString& mergeKey = {}, QUndoCommand* parent = nullptr);
     void undo() override;
     void redo() override;
@@ -43,10 +43,10 @@ public:
     bool mergeWith(const QUndoCommand* other) override;
 
 private:
-    Scene& m_scene;
-    std::vector<NodeId> m_nodes;
-    std::vector<NodeData> m_before;
-    std::vector<NodeData> m_after;
+    scene::Scene& m_scene;
+    std::vector<scene::NodeId> m_nodes;
+    std::vector<scene::NodeData> m_before;
+    std::vector<scene::NodeData> m_after;
     QString m_mergeKey;
 };
 
@@ -56,7 +56,7 @@ private:
 // an inspector edit never merges into a handle drag over the same node.
 class SetNodeDataCommand : public SetNodesDataCommand {
 public:
-    SetNodeDataCommand(Scene& scene, NodeId id, NodeData data, const QString& text = {},
+    SetNodeDataCommand(scene::Scene& scene, scene::NodeId id, scene::NodeData data, const QString& text = {},
                        const QString& mergeKey = {}, QUndoCommand* parent = nullptr);
     int id() const override;
 };
@@ -64,13 +64,14 @@ public:
 // Changes only the name (a separate command so the undo text reads "Rename").
 class RenameNodeCommand : public QUndoCommand {
 public:
-    RenameNodeCommand(Scene& scene, NodeId id, std::string name, QUndoCommand* parent = nullptr);
+    RenameNodeCommand(scene::Scene& scene, scene::NodeId id, std::string name,
+                      QUndoCommand* parent = nullptr);
     void undo() override;
     void redo() override;
 
 private:
-    Scene& m_scene;
-    NodeId m_node;
+    scene::Scene& m_scene;
+    scene::NodeId m_node;
     std::string m_before;
     std::string m_after;
 };
@@ -79,34 +80,34 @@ private:
 // the first redo() (i.e. after push) and stays the same over undo/redo.
 class AddNodeCommand : public QUndoCommand {
 public:
-    AddNodeCommand(Scene& scene, NodeTree tree, NodeId parent = kNoNode, int index = -1,
-                   QUndoCommand* parent_ = nullptr);
+    AddNodeCommand(scene::Scene& scene, scene::NodeTree tree, scene::NodeId parent = scene::kNoNode,
+                   int index = -1, QUndoCommand* parent_ = nullptr);
     void undo() override;
     void redo() override;
-    NodeId nodeId() const { return m_node; }
+    scene::NodeId nodeId() const { return m_node; }
 
 private:
-    Scene& m_scene;
-    NodeTree m_tree;
-    NodeId m_parent;
+    scene::Scene& m_scene;
+    scene::NodeTree m_tree;
+    scene::NodeId m_parent;
     int m_index;
-    NodeId m_node = kNoNode;
-    std::unique_ptr<Node> m_detached; // held while undone
+    scene::NodeId m_node = scene::kNoNode;
+    std::unique_ptr<scene::Node> m_detached; // held while undone
 };
 
 // Removes a node and its subtree; undo puts the same nodes (same ids) back at the same place.
 class RemoveNodeCommand : public QUndoCommand {
 public:
-    RemoveNodeCommand(Scene& scene, NodeId id, QUndoCommand* parent = nullptr);
+    RemoveNodeCommand(scene::Scene& scene, scene::NodeId id, QUndoCommand* parent = nullptr);
     void undo() override;
     void redo() override;
 
 private:
-    Scene& m_scene;
-    NodeId m_node;
-    NodeId m_parent = kNoNode;
+    scene::Scene& m_scene;
+    scene::NodeId m_node;
+    scene::NodeId m_parent = scene::kNoNode;
     int m_index = -1;
-    std::unique_ptr<Node> m_detached; // held while done
+    std::unique_ptr<scene::Node> m_detached; // held while done
 };
 
 // Moves a node (with its subtree) under another parent / to another position. newIndex counts positions in
@@ -114,25 +115,26 @@ private:
 // programmer error (check Scene::isAncestor first).
 class MoveNodeCommand : public QUndoCommand {
 public:
-    MoveNodeCommand(Scene& scene, NodeId id, NodeId newParent, int newIndex, QUndoCommand* parent = nullptr);
+    MoveNodeCommand(scene::Scene& scene, scene::NodeId id, scene::NodeId newParent, int newIndex,
+                    QUndoCommand* parent = nullptr);
     void undo() override;
     void redo() override;
 
 private:
-    void move(NodeId parent, int index);
+    void move(scene::NodeId parent, int index);
     bool movesNothing() const;
-    Scene& m_scene;
-    NodeId m_node;
-    NodeId m_oldParent;
+    scene::Scene& m_scene;
+    scene::NodeId m_node;
+    scene::NodeId m_oldParent;
     int m_oldIndex;
-    NodeId m_newParent;
+    scene::NodeId m_newParent;
     int m_newIndex;
 };
 
 // Scene settings; consecutive commands merge (one undo step per slider drag) when mergeable is true.
 class SetSettingsCommand : public QUndoCommand {
 public:
-    SetSettingsCommand(Scene& scene, SceneSettings settings, bool mergeable = false,
+    SetSettingsCommand(scene::Scene& scene, scene::SceneSettings settings, bool mergeable = false,
                        QUndoCommand* parent = nullptr);
     void undo() override;
     void redo() override;
@@ -143,9 +145,9 @@ public:
     void setMergeKey(const QString& key) { m_mergeKey = key; }
 
 private:
-    Scene& m_scene;
-    SceneSettings m_before;
-    SceneSettings m_after;
+    scene::Scene& m_scene;
+    scene::SceneSettings m_before;
+    scene::SceneSettings m_after;
     bool m_mergeable;
     QString m_mergeKey;
 };
@@ -153,7 +155,8 @@ private:
 // Camera; consecutive mergeable commands merge (one undo step per orbit/pan drag).
 class SetCameraCommand : public QUndoCommand {
 public:
-    SetCameraCommand(Scene& scene, CameraData camera, bool mergeable = false, QUndoCommand* parent = nullptr);
+    SetCameraCommand(scene::Scene& scene, scene::CameraData camera, bool mergeable = false,
+                     QUndoCommand* parent = nullptr);
     void undo() override;
     void redo() override;
     int id() const override;
@@ -163,9 +166,9 @@ public:
     void setMergeKey(const QString& key) { m_mergeKey = key; }
 
 private:
-    Scene& m_scene;
-    CameraData m_before;
-    CameraData m_after;
+    scene::Scene& m_scene;
+    scene::CameraData m_before;
+    scene::CameraData m_after;
     bool m_mergeable;
     QString m_mergeKey;
 };

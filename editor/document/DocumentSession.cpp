@@ -8,11 +8,11 @@ namespace speculum::document {
 
 DocumentSession::DocumentSession(QObject* parent)
     : QObject(parent)
-    , m_scene(new Scene(this))
+    , m_scene(new scene::Scene(this))
     , m_undoStack(new QUndoStack(this)) {
     // Every reset is a new document (New, Open, Restore): its meshes start from nothing, and before the
     // scene's sceneReset, so whoever draws the new scene finds no mesh of the old one.
-    connect(m_scene, &Scene::aboutToReset, this, [this] { m_meshes = MeshLibrary(); });
+    connect(m_scene, &scene::Scene::aboutToReset, this, [this] { m_meshes = scene::MeshLibrary(); });
 }
 
 DocumentSession::~DocumentSession() {
@@ -31,14 +31,14 @@ void DocumentSession::clearHistory(bool unsaved) {
     m_restoredUnsaved = unsaved;
 }
 
-void DocumentSession::replace(SceneData data, const QString& projectPath, bool unsaved) {
+void DocumentSession::replace(scene::SceneData data, const QString& projectPath, bool unsaved) {
     m_scene->reset(std::move(data));
     m_scene->setProjectPath(projectPath);
     clearHistory(unsaved);
 }
 
 base::Status DocumentSession::open(const QString& absolutePath, std::vector<std::string>& warnings) {
-    base::Status status = openProject(*m_scene, absolutePath, warnings);
+    base::Status status = scene::openProject(*m_scene, absolutePath, warnings);
     if (status) {
         clearHistory(false); // the old document's commands refer to nodes that no longer exist
     }
@@ -46,7 +46,7 @@ base::Status DocumentSession::open(const QString& absolutePath, std::vector<std:
 }
 
 base::Status DocumentSession::save(const QString& absolutePath) {
-    base::Status status = saveProject(*m_scene, absolutePath);
+    base::Status status = scene::saveProject(*m_scene, absolutePath);
     if (status) {
         m_scene->setProjectPath(absolutePath);
         m_undoStack->setClean();

@@ -25,17 +25,17 @@ public:
     explicit DocumentSession(QObject* parent = nullptr);
     ~DocumentSession() override;
 
-    Scene& scene() { return *m_scene; }
-    const Scene& scene() const { return *m_scene; }
+    scene::Scene& scene() { return *m_scene; }
+    const scene::Scene& scene() const { return *m_scene; }
     QUndoStack& undoStack() { return *m_undoStack; }
-    MeshLibrary& meshes() { return m_meshes; }
+    scene::MeshLibrary& meshes() { return m_meshes; }
 
     // Unsaved changes: edits since the last save, or a document restored from a recovery file.
     bool isModified() const;
 
     // The document becomes `data` titled `projectPath` (empty: untitled), with no history. `unsaved`: it
     // counts as modified until saved (a restored recovery file).
-    void replace(SceneData data, const QString& projectPath, bool unsaved = false);
+    void replace(scene::SceneData data, const QString& projectPath, bool unsaved = false);
     // Opens a project file; on failure the open document stays exactly as it was. Load warnings are appended.
     base::Status open(const QString& absolutePath, std::vector<std::string>& warnings);
     // Writes the document; on success the file becomes the document's and the history is clean.
@@ -44,9 +44,9 @@ public:
 private:
     void clearHistory(bool unsaved);
 
-    Scene* m_scene = nullptr;          // QObject child
+    scene::Scene* m_scene = nullptr;   // QObject child
     QUndoStack* m_undoStack = nullptr; // QObject child
-    MeshLibrary m_meshes;
+    scene::MeshLibrary m_meshes;
     bool m_restoredUnsaved = false;
 };
 

@@ -29,18 +29,19 @@ QString quoted(const std::string& name) {
     return QStringLiteral("\u201c%1\u201d").arg(QString::fromStdString(name));
 }
 
-std::vector<NodeId> existing(const Scene& scene, const std::vector<NodeId>& ids) {
-    std::vector<NodeId> kept;
+std::vector<scene::NodeId> existing(const scene::Scene& scene, const std::vector<scene::NodeId>& ids) {
+    std::vector<scene::NodeId> kept;
     std::copy_if(ids.begin(), ids.end(), std::back_inserter(kept),
-                 [&](NodeId id) { return scene.findNode(id) != nullptr; });
+                 [&](scene::NodeId id) { return scene.findNode(id) != nullptr; });
     return kept;
 }
 
 // The scene index `id` gets when moved under newParent before scene position `index` (-1: at the end),
 // counted as MoveNodeCommand wants it (after the node has been taken out); nothing when that changes
 // nothing.
-std::optional<int> moveTarget(const Scene& scene, NodeId id, NodeId newParent, int index) {
-    const NodeId oldParent = scene.parentOf(id);
+std::optional<int> moveTarget(const scene::Scene& scene, scene::NodeId id, scene::NodeId newParent,
+                              int index) {
+    const scene::NodeId oldParent = scene.parentOf(id);
     const int oldIndex = scene.indexOf(id);
     int newIndex = index;
     if (newIndex >= 0 && oldParent == newParent && oldIndex < newIndex) {
@@ -58,15 +59,15 @@ std::optional<int> moveTarget(const Scene& scene, NodeId id, NodeId newParent, i
 
 // What a node draws itself (its mesh, its mirror), in world space; empty when it draws nothing or its
 // mesh is a model file and `files` is null (a duplicate must not read files on the GUI thread).
-render::math::Box ownWorldBox(const NodeData& d, const glm::dmat4& world, MeshLibrary& builtins,
-                              MeshLibrary* files) {
+render::math::Box ownWorldBox(const scene::NodeData& d, const glm::dmat4& world, scene::MeshLibrary& builtins,
+                              scene::MeshLibrary* files) {
     render::math::Box box;
     std::vector<std::string> ignored;
     if (d.mesh) {
-        MeshLibrary* library = d.mesh->builtin ? (files ? files : &builtins) : files;
+        scene::MeshLibrary* library = d.mesh->builtin ? (files ? files : &builtins) : files;
         if (library) {
             if (auto mesh = library->get(*d.mesh, ignored); mesh && *mesh) {
-                box.add(render::math::worldBounds(meshBounds(*mesh), world));
+                box.add(render::math::worldBounds(scene::meshBounds(*mesh), world));
             }
         }
     }
@@ -79,10 +80,11 @@ render::math::Box ownWorldBox(const NodeData& d, const glm::dmat4& world, MeshLi
 
 // A node's subtree as a world box: what it draws, or a half-unit box around its origin when it draws
 // nothing measurable (an empty, a light, a model not read yet), so that even those step aside.
-render::math::Box subtreeWorldBox(const Node& node, const std::unordered_map<NodeId, glm::dmat4>& worlds,
-                                  MeshLibrary& builtins, MeshLibrary* files) {
+render::math::Box subtreeWorldBox(const scene::Node& node,
+                                  const std::unordered_map<scene::NodeId, glm::dmat4>& worlds,
+                                  scene::MeshLibrary& builtins, scene::MeshLibrary* files) {
     render::math::Box box;
-    std::function<void(const Node&)> add = [&](const Node& n) {
+    std::function<void(const scene::Node&)> add = [&](const scene::Node& n) {
         if (const auto it = worlds.find(n.id()); it != worlds.end()) {
             box.add(ownWorldBox(n.data(), it->second, builtins, files));
         }
@@ -138,7 +140,7 @@ double duplicateShift(const render::math::Box& box, const std::vector<render::ma
 
 } // namespace
 
-base::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree) {
+base::Result<scene::NodeId> addNodeTree(scene::Scene& scene, QUndoStack& undo, scene::NodeTree tree) {
     if (auto ok = canAdd(scene, tree); !ok) {
         return base::Error{ok.error()};
     }
@@ -146,28 +148,29 @@ base::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree) 
     EditTransaction edit(undo);
     auto* command = new AddNodeCommand(scene, std::move(tree));
     edit.push(command);
-    const NodeId id = command->nodeId();
+    const scene::NodeId id = command->nodeId();
     edit.commit();
     return id;
 }
 
-base::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots) {
-    const std::vector<NodeId> nodes = existing(scene, roots);
+base::Status deleteNodes(scene::Scene& scene, QUndoStack& undo, const std::vector<scene::NodeId>& roots) {
+    const std::vector<scene::NodeId> nodes = existing(scene, roots);
     if (nodes.empty()) {
         return base::Error{"nothing is selected"};
     }
     EditTransaction edit(undo,
                          nodes.size() > 1 ? QStringLiteral("Delete %1 nodes").arg(nodes.size()) : QString());
-    for (NodeId id : nodes) {
+    for (scene::NodeId id : nodes) {
         edit.push(new RemoveNodeCommand(scene, id));
     }
     edit.commit();
     return base::Done{};
 }
 
-base::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
-                                        NodeId current, MeshLibrary* meshes, double timeSeconds) {
-    const std::vector<NodeId> nodes = existing(scene, roots);
+base::Result<Duplicates> duplicateNodes(scene::Scene& scene, QUndoStack& undo,
+                                        const std::vector<scene::NodeId>& roots, scene::NodeId current,
+                                        scene::MeshLibrary* meshes, double timeSeconds) {
+    const std::vector<scene::NodeId> nodes = existing(scene, roots);
     if (nodes.empty()) {
         return base::Error{"nothing is selected"};
     }
@@ -175,25 +178,25 @@ base::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const st
                                                 : QString());
     Duplicates result;
     // What is already there, measured once; each copy placed joins it, so copies do not land in each other.
-    MeshLibrary builtins; // built-in shapes only: cheap, and never a file read
-    const auto worlds = worldMatrices(scene, timeSeconds);
+    scene::MeshLibrary builtins; // built-in shapes only: cheap, and never a file read
+    const auto worlds = scene::worldMatrices(scene, timeSeconds);
     std::vector<render::math::Box> occupied;
-    scene.forEachNode([&](const Node& n) {
+    scene.forEachNode([&](const scene::Node& n) {
         if (const auto it = worlds.find(n.id()); it != worlds.end()) {
             if (auto box = ownWorldBox(n.data(), it->second, builtins, meshes); !box.empty()) {
                 occupied.push_back(box);
             }
         }
     });
-    for (NodeId id : nodes) {
+    for (scene::NodeId id : nodes) {
         // One at a time: each copy's name is made unique against the copies made before it.
         bool dropped = false;
-        NodeTree copy = duplicateTree(scene, id, &dropped);
+        scene::NodeTree copy = duplicateTree(scene, id, &dropped);
         const render::math::Box box = subtreeWorldBox(*scene.findNode(id), worlds, builtins, meshes);
         if (!box.empty()) {
             const double shift = duplicateShift(box, occupied);
             // The world +X shift in the parent's space (its rotation and scale undone).
-            const glm::dmat4 parent = parentWorldMatrix(scene, id, timeSeconds);
+            const glm::dmat4 parent = scene::parentWorldMatrix(scene, id, timeSeconds);
             const glm::dvec3 local = glm::dvec3(glm::inverse(parent) * glm::dvec4(shift, 0.0, 0.0, 0.0));
             if (std::isfinite(local.x) && std::isfinite(local.y) && std::isfinite(local.z)) {
                 copy.data.transform.translate += local;
@@ -216,8 +219,8 @@ base::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const st
     return result;
 }
 
-base::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name) {
-    const Node* node = scene.findNode(id);
+base::Status renameNode(scene::Scene& scene, QUndoStack& undo, scene::NodeId id, const std::string& name) {
+    const scene::Node* node = scene.findNode(id);
     if (!node) {
         return base::Error{"no such node"};
     }
@@ -234,30 +237,31 @@ base::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::st
     return base::Done{};
 }
 
-std::vector<NodeId> outermostInTreeOrder(const Scene& scene, const std::vector<NodeId>& ids) {
+std::vector<scene::NodeId> outermostInTreeOrder(const scene::Scene& scene,
+                                                const std::vector<scene::NodeId>& ids) {
     // A node's tree position as the scene indexes from the top level down: these compare in tree order,
     // whatever order the ids came in.
-    auto path = [&scene](NodeId id) {
+    auto path = [&scene](scene::NodeId id) {
         std::vector<int> indexes;
-        for (NodeId n = id; n != kNoNode; n = scene.parentOf(n)) {
+        for (scene::NodeId n = id; n != scene::kNoNode; n = scene.parentOf(n)) {
             indexes.push_back(scene.indexOf(n));
         }
         std::reverse(indexes.begin(), indexes.end());
         return indexes;
     };
-    std::vector<std::pair<std::vector<int>, NodeId>> sorted;
-    for (NodeId id : ids) {
+    std::vector<std::pair<std::vector<int>, scene::NodeId>> sorted;
+    for (scene::NodeId id : ids) {
         if (scene.findNode(id)) {
             sorted.emplace_back(path(id), id);
         }
     }
     std::sort(sorted.begin(), sorted.end());
     // Ancestors sort before their descendants, so each node need only be checked against those kept.
-    std::vector<NodeId> outermost;
+    std::vector<scene::NodeId> outermost;
     for (const auto& entry : sorted) {
-        const NodeId id = entry.second;
+        const scene::NodeId id = entry.second;
         const bool underKept = std::any_of(outermost.begin(), outermost.end(),
-                                           [&](NodeId kept) { return scene.isAncestor(kept, id); });
+                                           [&](scene::NodeId kept) { return scene.isAncestor(kept, id); });
         if (!underKept) {
             outermost.push_back(id); // also drops repeats: isAncestor() holds for the node itself
         }
@@ -265,15 +269,16 @@ std::vector<NodeId> outermostInTreeOrder(const Scene& scene, const std::vector<N
     return outermost;
 }
 
-base::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& ids, NodeId newParent,
-                       int index) {
-    if (newParent != kNoNode && !scene.findNode(newParent)) {
+base::Status moveNodes(scene::Scene& scene, QUndoStack& undo, const std::vector<scene::NodeId>& ids,
+                       scene::NodeId newParent, int index) {
+    if (newParent != scene::kNoNode && !scene.findNode(newParent)) {
         return base::Error{"no such parent node"};
     }
-    if (std::any_of(ids.begin(), ids.end(), [&](NodeId id) { return scene.isAncestor(id, newParent); })) {
+    if (std::any_of(ids.begin(), ids.end(),
+                    [&](scene::NodeId id) { return scene.isAncestor(id, newParent); })) {
         return base::Error{"a node cannot go into its own subtree"};
     }
-    const std::vector<NodeId> nodes = outermostInTreeOrder(scene, ids);
+    const std::vector<scene::NodeId> nodes = outermostInTreeOrder(scene, ids);
     if (nodes.empty()) {
         return base::Error{"nothing to move"};
     }
@@ -283,7 +288,7 @@ base::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>
     EditTransaction edit(undo,
                          nodes.size() > 1 ? QStringLiteral("Move %1 nodes").arg(nodes.size()) : QString());
     int next = index;
-    for (NodeId id : nodes) {
+    for (scene::NodeId id : nodes) {
         if (const std::optional<int> newIndex = moveTarget(scene, id, newParent, next)) {
             edit.push(new MoveNodeCommand(scene, id, newParent, *newIndex));
         }
@@ -296,8 +301,8 @@ base::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>
     return base::Done{};
 }
 
-base::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Camera& view) {
-    CameraData camera = scene.camera();
+base::Status setCameraFromView(scene::Scene& scene, QUndoStack& undo, const render::Camera& view) {
+    scene::CameraData camera = scene.camera();
     camera.position = view.position;
     camera.target = view.target;
     camera.up = view.up;
@@ -311,8 +316,9 @@ base::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Cam
     return base::Done{};
 }
 
-PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const ImportedModel& model,
-                               const std::string& absolutePath, const ImportPlacement& placement) {
+PlacedModel placeImportedModel(const scene::Scene& scene, scene::MeshLibrary& meshes,
+                               const scene::ImportedModel& model, const std::string& absolutePath,
+                               const ImportPlacement& placement) {
     PlacedModel placed;
     const QString path = QString::fromStdString(absolutePath);
     // The box the nodes fill in the coordinates they are added in (the top level). A reflector draws the
@@ -321,8 +327,8 @@ PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const Im
     if (placement.asReflector) {
         placed.tree = makeModelNode(path, glm::dvec3(0.0), true);
     } else {
-        placed.tree = modelNodeTree(model, absolutePath, QFileInfo(path).completeBaseName().toStdString(),
-                                    &placed.warnings);
+        placed.tree = scene::modelNodeTree(
+            model, absolutePath, QFileInfo(path).completeBaseName().toStdString(), &placed.warnings);
     }
     if (placement.fitToUnitBox) {
         const glm::dvec3 extent = box.max - box.min;
@@ -340,12 +346,12 @@ PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const Im
     return placed;
 }
 
-NodeTree placeNewNode(const Scene& scene, MeshLibrary& meshes, NewNodeKind kind,
-                      const NewNodePlacement& placement) {
+scene::NodeTree placeNewNode(const scene::Scene& scene, scene::MeshLibrary& meshes, NewNodeKind kind,
+                             const NewNodePlacement& placement) {
     const bool light = kind == NewNodeKind::PointLight || kind == NewNodeKind::DirectionalLight ||
                        kind == NewNodeKind::SpotLight;
-    NodeTree tree = makeNode(kind, glm::dvec3(0.0));
-    NodeData& d = tree.data;
+    scene::NodeTree tree = makeNode(kind, glm::dvec3(0.0));
+    scene::NodeData& d = tree.data;
     bool flat = kind == NewNodeKind::Plane;
     if (d.mirror) {
         const glm::dvec3 toView = placement.viewPosition - placement.focus;
@@ -359,7 +365,7 @@ NodeTree placeNewNode(const Scene& scene, MeshLibrary& meshes, NewNodeKind kind,
             flat = true;
         }
     }
-    const glm::dmat4 local = localMatrix(d.transform);
+    const glm::dmat4 local = scene::localMatrix(d.transform);
     render::math::Box box;
     if (light) {
         box.add(glm::dvec3(-0.1));

@@ -24,16 +24,16 @@ namespace speculum::document {
 
 // Adds `tree` at the top level, its name made unique ("Sphere 2"): "Add “Sphere 2”". Refused when the scene
 // would get a second curved reflector (the message names the node that has it). Returns the new node.
-base::Result<NodeId> addNodeTree(Scene& scene, QUndoStack& undo, NodeTree tree);
+base::Result<scene::NodeId> addNodeTree(scene::Scene& scene, QUndoStack& undo, scene::NodeTree tree);
 
 // Deletes the nodes with their subtrees: "Delete “Box”", or "Delete 3 nodes". `roots` are outermost nodes
 // (view::Selection::roots()): none under another. Unknown ids are skipped; none left is an error.
-base::Status deleteNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots);
+base::Status deleteNodes(scene::Scene& scene, QUndoStack& undo, const std::vector<scene::NodeId>& roots);
 
 struct Duplicates {
-    std::vector<NodeId> copies;    // one per root, in the same order
-    NodeId currentCopy = kNoNode;  // the copy of `current`, or of the root it lies under
-    bool droppedReflector = false; // a copy lost its reflector: a scene holds at most one
+    std::vector<scene::NodeId> copies;          // one per root, in the same order
+    scene::NodeId currentCopy = scene::kNoNode; // the copy of `current`, or of the root it lies under
+    bool droppedReflector = false;              // a copy lost its reflector: a scene holds at most one
 };
 // Copies each root (with its subtree) right after itself under the same parent, each copy's name unique
 // against the copies made before it: "Duplicate “Box”", or "Duplicate 3 nodes". Each copy is moved along
@@ -41,25 +41,27 @@ struct Duplicates {
 // never lands exactly on the original. `meshes` gives the boxes of model files (without it only built-in
 // shapes and mirrors are measured: a file is never read here); `timeSeconds` is the animation time at
 // which they are measured.
-base::Result<Duplicates> duplicateNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& roots,
-                                        NodeId current = kNoNode, MeshLibrary* meshes = nullptr,
-                                        double timeSeconds = 0.0);
+base::Result<Duplicates> duplicateNodes(scene::Scene& scene, QUndoStack& undo,
+                                        const std::vector<scene::NodeId>& roots,
+                                        scene::NodeId current = scene::kNoNode,
+                                        scene::MeshLibrary* meshes = nullptr, double timeSeconds = 0.0);
 
 // "Rename “A” to “B”". The name is trimmed; an empty or unchanged name is refused.
-base::Status renameNode(Scene& scene, QUndoStack& undo, NodeId id, const std::string& name);
+base::Status renameNode(scene::Scene& scene, QUndoStack& undo, scene::NodeId id, const std::string& name);
 
 // Moves the nodes under newParent (kNoNode: the top level) before scene position `index` of its current
 // children (-1: at the end), one after the other in tree order; a node under another of them goes with
 // that one. "Move “A”", or "Move 3 nodes". Refused when a node would go into its own subtree; a move that
 // changes no position leaves no step (and is an error).
-base::Status moveNodes(Scene& scene, QUndoStack& undo, const std::vector<NodeId>& ids, NodeId newParent,
-                       int index);
+base::Status moveNodes(scene::Scene& scene, QUndoStack& undo, const std::vector<scene::NodeId>& ids,
+                       scene::NodeId newParent, int index);
 // Of `ids`, those that exist and lie under no other of them, sorted in tree order (repeats dropped).
-std::vector<NodeId> outermostInTreeOrder(const Scene& scene, const std::vector<NodeId>& ids);
+std::vector<scene::NodeId> outermostInTreeOrder(const scene::Scene& scene,
+                                                const std::vector<scene::NodeId>& ids);
 
 // Makes the scene camera look like `view` (position, target, up; far kept within the depth range the
 // renderer allows): "Set scene camera from view". A view that already is the scene camera leaves no step.
-base::Status setCameraFromView(Scene& scene, QUndoStack& undo, const render::Camera& view);
+base::Status setCameraFromView(scene::Scene& scene, QUndoStack& undo, const render::Camera& view);
 
 // How an imported model lands in the scene.
 struct ImportPlacement {
@@ -70,15 +72,16 @@ struct ImportPlacement {
     double timeSeconds = 0.0;  // the animation time at which "what is already there" is measured
 };
 struct PlacedModel {
-    NodeTree tree;                     // ready for addNodeTree
+    scene::NodeTree tree;              // ready for addNodeTree
     double fit = 1.0;                  // the scale fitting applied (1: real size)
     glm::dvec3 size{0.0};              // of the placed model, scene units
     std::vector<std::string> warnings; // about the node tree (transforms that had to be approximated)
 };
 // The nodes for an imported model, placed (nothing changes yet): a node tree like the file's, or one
 // reflector node for the whole file. `meshes` gives the boxes of the nodes already in the scene.
-PlacedModel placeImportedModel(const Scene& scene, MeshLibrary& meshes, const ImportedModel& model,
-                               const std::string& absolutePath, const ImportPlacement& placement);
+PlacedModel placeImportedModel(const scene::Scene& scene, scene::MeshLibrary& meshes,
+                               const scene::ImportedModel& model, const std::string& absolutePath,
+                               const ImportPlacement& placement);
 
 // Where Add ▸ … puts a new node: on the ground at the view's focus, moved along +X past what is there
 // (placeOnGround, as an import). A new mirror stands upright facing the view (turned about Y toward the
@@ -90,7 +93,7 @@ struct NewNodePlacement {
     glm::dvec3 viewPosition{0.0, 0.0, 1.0}; // the view's camera: a new mirror faces it
     double timeSeconds = 0.0;               // when "what is already there" is measured
 };
-NodeTree placeNewNode(const Scene& scene, MeshLibrary& meshes, NewNodeKind kind,
-                      const NewNodePlacement& placement);
+scene::NodeTree placeNewNode(const scene::Scene& scene, scene::MeshLibrary& meshes, NewNodeKind kind,
+                             const NewNodePlacement& placement);
 
 } // namespace speculum::document

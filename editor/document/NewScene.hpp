@@ -8,6 +8,6 @@ namespace speculum::document {
 // and a camera raised above the floor looking down at its middle, so the first things added stand on
 // something and are seen from above, never edge-on at eye level y = 0. A project file without a camera
 // still reads with CameraData's own defaults; only new documents start like this.
-SceneData newSceneData();
+scene::SceneData newSceneData();
 
 } // namespace speculum::document

@@ -12,26 +12,26 @@ namespace speculum::document {
 
 namespace {
 
-MaterialComponent material(const glm::dvec3& color, double specular = 0.3, double shininess = 32.0) {
-    MaterialComponent m;
+scene::MaterialComponent material(const glm::dvec3& color, double specular = 0.3, double shininess = 32.0) {
+    scene::MaterialComponent m;
     m.color = color;
     m.specular = specular;
     m.shininess = shininess;
     return m;
 }
 
-NodeTree node(const std::string& name, const glm::dvec3& at) {
-    NodeTree tree;
+scene::NodeTree node(const std::string& name, const glm::dvec3& at) {
+    scene::NodeTree tree;
     tree.data.name = name;
     tree.data.transform.translate = at;
     return tree;
 }
 
-bool hasReflector(const NodeTree& tree) {
+bool hasReflector(const scene::NodeTree& tree) {
     if (tree.data.reflector) {
         return true;
     }
-    for (const NodeTree& child : tree.children) {
+    for (const scene::NodeTree& child : tree.children) {
         if (hasReflector(child)) {
             return true;
         }
@@ -39,12 +39,12 @@ bool hasReflector(const NodeTree& tree) {
     return false;
 }
 
-void dropReflectors(NodeTree& tree, bool& dropped) {
+void dropReflectors(scene::NodeTree& tree, bool& dropped) {
     if (tree.data.reflector) {
         tree.data.reflector.reset();
         dropped = true;
     }
-    for (NodeTree& child : tree.children) {
+    for (scene::NodeTree& child : tree.children) {
         dropReflectors(child, dropped);
     }
 }
@@ -79,55 +79,55 @@ QString displayName(NewNodeKind kind) {
     return QStringLiteral("Node");
 }
 
-NodeTree makeNode(NewNodeKind kind, const glm::dvec3& at) {
-    NodeTree tree = node(displayName(kind).toStdString(), at);
-    NodeData& d = tree.data;
+scene::NodeTree makeNode(NewNodeKind kind, const glm::dvec3& at) {
+    scene::NodeTree tree = node(displayName(kind).toStdString(), at);
+    scene::NodeData& d = tree.data;
     switch (kind) {
     case NewNodeKind::Empty:
         break;
     case NewNodeKind::Teapot:
         // Newell's teapot is about 3 units tall-ish wide; a quarter of that fits next to the other shapes.
         d.transform.scale = glm::dvec3(0.25);
-        d.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Teapot);
+        d.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Teapot);
         d.material = material({0.9, 0.9, 0.9}, 0.5);
         break;
     case NewNodeKind::Sphere:
         d.transform.scale = glm::dvec3(0.5);
-        d.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
+        d.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Sphere);
         d.material = material({0.8, 0.3, 0.25});
         break;
     case NewNodeKind::Box:
         d.transform.scale = glm::dvec3(0.5);
-        d.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Box);
+        d.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Box);
         d.material = material({0.3, 0.5, 0.8});
         break;
     case NewNodeKind::Plane:
         d.transform.scale = {2.0, 1.0, 2.0};
-        d.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Plane);
+        d.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Plane);
         d.material = material({0.8, 0.8, 0.8}, 0.1, 16.0);
         break;
     case NewNodeKind::Mirror:
-        d.mirror = MirrorComponent{};
+        d.mirror = scene::MirrorComponent{};
         d.mirror->size = {2.0, 2.0};
         d.mirror->reflectivity = 0.9;
         break;
     case NewNodeKind::ReflectorSphere:
     case NewNodeKind::ReflectorTeapot:
         d.transform.scale = glm::dvec3(kind == NewNodeKind::ReflectorSphere ? 0.4 : 0.25);
-        d.mesh = MeshComponent::fromBuiltin(kind == NewNodeKind::ReflectorSphere ? BuiltinMesh::Sphere
-                                                                                 : BuiltinMesh::Teapot);
+        d.mesh = scene::MeshComponent::fromBuiltin(
+            kind == NewNodeKind::ReflectorSphere ? scene::BuiltinMesh::Sphere : scene::BuiltinMesh::Teapot);
         d.material = material({0.95, 0.95, 0.95}, 1.0, 96.0);
-        d.reflector = ReflectorComponent{};
-        d.reflector->map = ReflectorMap::DualParaboloid;
+        d.reflector = scene::ReflectorComponent{};
+        d.reflector->map = scene::ReflectorMap::DualParaboloid;
         break;
     case NewNodeKind::PointLight:
     case NewNodeKind::DirectionalLight:
     case NewNodeKind::SpotLight:
-        d.light = LightComponent{};
-        d.light->type = kind == NewNodeKind::PointLight         ? LightType::Point
-                        : kind == NewNodeKind::DirectionalLight ? LightType::Directional
-                                                                : LightType::Spot;
-        d.light->shadows = ShadowComponent{};
+        d.light = scene::LightComponent{};
+        d.light->type = kind == NewNodeKind::PointLight         ? scene::LightType::Point
+                        : kind == NewNodeKind::DirectionalLight ? scene::LightType::Directional
+                                                                : scene::LightType::Spot;
+        d.light->shadows = scene::ShadowComponent{};
         d.light->shadows->pcf = 3;
         // Lights go above the point: they light it from there (directional and spot look down −Y).
         d.transform.translate = at + glm::dvec3(0.0, 2.0, 0.0);
@@ -136,13 +136,13 @@ NodeTree makeNode(NewNodeKind kind, const glm::dvec3& at) {
     return tree;
 }
 
-NodeTree makeModelNode(const QString& absolutePath, const glm::dvec3& at, bool asReflector) {
+scene::NodeTree makeModelNode(const QString& absolutePath, const glm::dvec3& at, bool asReflector) {
     const QFileInfo info(absolutePath);
-    NodeTree tree = node(info.completeBaseName().toStdString(), at);
-    tree.data.mesh = MeshComponent::fromFile(info.absoluteFilePath().toStdString());
+    scene::NodeTree tree = node(info.completeBaseName().toStdString(), at);
+    tree.data.mesh = scene::MeshComponent::fromFile(info.absoluteFilePath().toStdString());
     tree.data.material = material({0.8, 0.8, 0.8});
     if (asReflector) {
-        tree.data.reflector = ReflectorComponent{};
+        tree.data.reflector = scene::ReflectorComponent{};
         tree.data.material = material({0.95, 0.95, 0.95}, 1.0, 96.0);
     }
     return tree;
@@ -203,19 +203,20 @@ glm::dvec3 placeOnGround(const render::math::Box& model, const glm::dvec3& focus
     return offset;
 }
 
-std::vector<render::math::Box> occupiedBoxes(const Scene& scene, double timeSeconds, MeshLibrary& meshes) {
+std::vector<render::math::Box> occupiedBoxes(const scene::Scene& scene, double timeSeconds,
+                                             scene::MeshLibrary& meshes) {
     std::vector<render::math::Box> boxes;
-    const auto worlds = worldMatrices(scene, timeSeconds);
+    const auto worlds = scene::worldMatrices(scene, timeSeconds);
     std::vector<std::string> ignored; // the viewport reports load problems already
-    scene.forEachNode([&](const Node& node) {
-        const NodeData& d = node.data();
+    scene.forEachNode([&](const scene::Node& node) {
+        const scene::NodeData& d = node.data();
         const auto it = worlds.find(node.id());
         if (it == worlds.end()) {
             return;
         }
         if (d.mesh) {
             if (auto mesh = meshes.get(*d.mesh, ignored); mesh && *mesh) {
-                boxes.push_back(render::math::worldBounds(meshBounds(*mesh), it->second));
+                boxes.push_back(render::math::worldBounds(scene::meshBounds(*mesh), it->second));
             }
         }
         if (d.mirror) {
@@ -227,14 +228,14 @@ std::vector<render::math::Box> occupiedBoxes(const Scene& scene, double timeSeco
     return boxes;
 }
 
-void scaleAboutParentOrigin(NodeData& node, double factor) {
+void scaleAboutParentOrigin(scene::NodeData& node, double factor) {
     node.transform.translate *= factor;
     node.transform.scale *= factor;
 }
 
-std::string uniqueName(const Scene& scene, const std::string& base) {
+std::string uniqueName(const scene::Scene& scene, const std::string& base) {
     std::set<std::string> names;
-    scene.forEachNode([&](const Node& n) { names.insert(n.name()); });
+    scene.forEachNode([&](const scene::Node& n) { names.insert(n.name()); });
     if (!names.count(base)) {
         return base;
     }
@@ -246,21 +247,21 @@ std::string uniqueName(const Scene& scene, const std::string& base) {
     }
 }
 
-NodeId reflectorNode(const Scene& scene) {
-    NodeId found = kNoNode;
-    scene.forEachNode([&](const Node& n) {
-        if (found == kNoNode && n.data().reflector) {
+scene::NodeId reflectorNode(const scene::Scene& scene) {
+    scene::NodeId found = scene::kNoNode;
+    scene.forEachNode([&](const scene::Node& n) {
+        if (found == scene::kNoNode && n.data().reflector) {
             found = n.id();
         }
     });
     return found;
 }
 
-base::Status canAdd(const Scene& scene, const NodeTree& tree) {
+base::Status canAdd(const scene::Scene& scene, const scene::NodeTree& tree) {
     if (!hasReflector(tree)) {
         return base::Done{};
     }
-    if (const NodeId existing = reflectorNode(scene); existing != kNoNode) {
+    if (const scene::NodeId existing = reflectorNode(scene); existing != scene::kNoNode) {
         return base::Error{"A scene has at most one curved reflector, and \"" +
                            scene.findNode(existing)->name() +
                            "\" already is one. Remove its reflector first, or make this a mirror."};
@@ -268,12 +269,12 @@ base::Status canAdd(const Scene& scene, const NodeTree& tree) {
     return base::Done{};
 }
 
-NodeTree duplicateTree(const Scene& scene, NodeId id, bool* droppedReflector) {
-    const Node* n = scene.findNode(id);
+scene::NodeTree duplicateTree(const scene::Scene& scene, scene::NodeId id, bool* droppedReflector) {
+    const scene::Node* n = scene.findNode(id);
     if (!n) {
         return {};
     }
-    NodeTree tree = n->toTree();
+    scene::NodeTree tree = n->toTree();
     tree.data.name = uniqueName(scene, tree.data.name);
     bool dropped = false;
     dropReflectors(tree, dropped);

@@ -31,12 +31,12 @@ enum class NewNodeKind {
 // "Teapot", "Mirror", "Point light", ...: the base of the new node's name and the menu text.
 QString displayName(NewNodeKind kind);
 
-NodeTree makeNode(NewNodeKind kind, const glm::dvec3& at = glm::dvec3(0.0));
+scene::NodeTree makeNode(NewNodeKind kind, const glm::dvec3& at = glm::dvec3(0.0));
 
 // A node showing a model file (any format Assimp reads), named after the file. An imported reflector
 // uses the file as the reflector's surface.
-NodeTree makeModelNode(const QString& absolutePath, const glm::dvec3& at = glm::dvec3(0.0),
-                       bool asReflector = false);
+scene::NodeTree makeModelNode(const QString& absolutePath, const glm::dvec3& at = glm::dvec3(0.0),
+                              bool asReflector = false);
 
 // Where an imported model goes: its box `model` (in the coordinates it will be placed in) is moved so that
 // it stands on the ground, centred on `focus` in x and z, and then along +X past every box of `occupied`
@@ -50,23 +50,24 @@ glm::dvec3 placeOnGround(const render::math::Box& model, const glm::dvec3& focus
 // The world boxes of the scene's meshes and mirrors at an animation time, one per node (what an import
 // must not land in). Meshes come from `meshes` (already cached ones cost nothing); missing ones are
 // skipped.
-std::vector<render::math::Box> occupiedBoxes(const Scene& scene, double timeSeconds, MeshLibrary& meshes);
+std::vector<render::math::Box> occupiedBoxes(const scene::Scene& scene, double timeSeconds,
+                                             scene::MeshLibrary& meshes);
 
 // Scales a node about the origin of its parent's space by `factor` (translation and scale alike): what
 // fitting an imported model into a unit box does to its root.
-void scaleAboutParentOrigin(NodeData& node, double factor);
+void scaleAboutParentOrigin(scene::NodeData& node, double factor);
 
 // `base` if no node of the scene has that name, else "base 2", "base 3", ...
-std::string uniqueName(const Scene& scene, const std::string& base);
+std::string uniqueName(const scene::Scene& scene, const std::string& base);
 
 // The node that carries the scene's curved reflector (at most one per scene), kNoNode if none.
-NodeId reflectorNode(const Scene& scene);
+scene::NodeId reflectorNode(const scene::Scene& scene);
 
 // Whether `tree` may be added: a scene has at most one reflector. The message says which node has it.
-base::Status canAdd(const Scene& scene, const NodeTree& tree);
+base::Status canAdd(const scene::Scene& scene, const scene::NodeTree& tree);
 
 // Copy of a node's subtree for "Duplicate": the copy's name is made unique, and a reflector in the copy is
 // dropped (with the returned flag set) since the scene may hold only one.
-NodeTree duplicateTree(const Scene& scene, NodeId id, bool* droppedReflector = nullptr);
+scene::NodeTree duplicateTree(const scene::Scene& scene, scene::NodeId id, bool* droppedReflector = nullptr);
 
 } // namespace speculum::document

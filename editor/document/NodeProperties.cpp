@@ -13,7 +13,8 @@ namespace speculum::document::groups {
 
 using namespace makers;
 
-// The project reader's limits (render/SceneLimits.hpp), so an edit never makes a file that does not load.
+// The project reader's limits (render/frame/SceneLimits.hpp), so an edit never makes a file that does not
+// load.
 namespace {
 const NumberRange kCoordinate{-render::kMaxCoordinate, render::kMaxCoordinate};
 const NumberRange kLength{0.0, render::kMaxCoordinate};
@@ -26,13 +27,13 @@ ComponentInfo nodeGroup() {
     c.key = QStringLiteral("node");
     c.title = QStringLiteral("Node");
     c.optional = false;
-    c.present = [](const NodeData&) { return true; };
-    Property<NodeData> name;
+    c.present = [](const scene::NodeData&) { return true; };
+    Property<scene::NodeData> name;
     name.info.key = QStringLiteral("node.name");
     name.info.label = QStringLiteral("Name");
     name.info.kind = PropertyKind::Text;
-    name.get = [](const NodeData& d) { return QVariant(QString::fromStdString(d.name)); };
-    name.set = [](NodeData& d, const QVariant& v) -> base::Status {
+    name.get = [](const scene::NodeData& d) { return QVariant(QString::fromStdString(d.name)); };
+    name.set = [](scene::NodeData& d, const QVariant& v) -> base::Status {
         const QString text = v.toString().trimmed();
         if (text.isEmpty()) {
             return base::Error{"Name must not be empty"};
@@ -49,20 +50,20 @@ ComponentInfo transformGroup() {
     c.key = QStringLiteral("transform");
     c.title = QStringLiteral("Transform");
     c.optional = false;
-    c.present = [](const NodeData&) { return true; };
-    using V3 = Access<NodeData, glm::dvec3>;
-    c.properties.push_back(vector<NodeData, 3>(
+    c.present = [](const scene::NodeData&) { return true; };
+    using V3 = Access<scene::NodeData, glm::dvec3>;
+    c.properties.push_back(vector<scene::NodeData, 3>(
         QStringLiteral("transform.translate"), QStringLiteral("Translate"),
-        V3([](NodeData& d) { return &d.transform.translate; }), kCoordinate, QStringLiteral(" u")));
-    c.properties.push_back(vector<NodeData, 3>(QStringLiteral("transform.rotate"), QStringLiteral("Rotate"),
-                                               V3([](NodeData& d) { return &d.transform.rotate; }), {},
-                                               QStringLiteral("°")));
+        V3([](scene::NodeData& d) { return &d.transform.translate; }), kCoordinate, QStringLiteral(" u")));
+    c.properties.push_back(vector<scene::NodeData, 3>(
+        QStringLiteral("transform.rotate"), QStringLiteral("Rotate"),
+        V3([](scene::NodeData& d) { return &d.transform.rotate; }), {}, QStringLiteral("°")));
     c.properties.back().info.tooltip =
         QStringLiteral("XYZ Euler angles in degrees, applied X, then Y, then Z");
     c.properties.back().info.step = 5.0;
-    c.properties.push_back(vector<NodeData, 3>(QStringLiteral("transform.scale"), QStringLiteral("Scale"),
-                                               V3([](NodeData& d) { return &d.transform.scale; }), {}, {},
-                                               nonZeroScale));
+    c.properties.push_back(vector<scene::NodeData, 3>(
+        QStringLiteral("transform.scale"), QStringLiteral("Scale"),
+        V3([](scene::NodeData& d) { return &d.transform.scale; }), {}, {}, nonZeroScale));
     return c;
 }
 
@@ -70,25 +71,26 @@ ComponentInfo meshGroup() {
     ComponentInfo c;
     c.key = QStringLiteral("mesh");
     c.title = QStringLiteral("Mesh");
-    c.present = [](const NodeData& d) { return d.mesh.has_value(); };
-    c.add = [](NodeData& d) {
-        d.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
+    c.present = [](const scene::NodeData& d) { return d.mesh.has_value(); };
+    c.add = [](scene::NodeData& d) {
+        d.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Sphere);
         return ok();
     };
-    c.remove = [](NodeData& d) -> base::Status {
+    c.remove = [](scene::NodeData& d) -> base::Status {
         if (d.reflector) {
             return base::Error{"The reflector's surface is this mesh: remove the reflector first"};
         }
         d.mesh.reset();
         return ok();
     };
-    static const std::array<BuiltinMesh, 4> kinds{BuiltinMesh::Teapot, BuiltinMesh::Sphere, BuiltinMesh::Box,
-                                                  BuiltinMesh::Plane};
-    c.properties.push_back(enumeration<NodeData>(
+    static const std::array<scene::BuiltinMesh, 4> kinds{scene::BuiltinMesh::Teapot,
+                                                         scene::BuiltinMesh::Sphere, scene::BuiltinMesh::Box,
+                                                         scene::BuiltinMesh::Plane};
+    c.properties.push_back(enumeration<scene::NodeData>(
         QStringLiteral("mesh.source"), QStringLiteral("Shape"),
         {QStringLiteral("Teapot"), QStringLiteral("Sphere"), QStringLiteral("Box"), QStringLiteral("Plane"),
          QStringLiteral("Model file")},
-        [](const NodeData& d) {
+        [](const scene::NodeData& d) {
             if (!d.mesh) {
                 return -1;
             }
@@ -97,7 +99,7 @@ ComponentInfo meshGroup() {
             }
             return static_cast<int>(std::find(kinds.begin(), kinds.end(), *d.mesh->builtin) - kinds.begin());
         },
-        [](NodeData& d, int i) -> base::Status {
+        [](scene::NodeData& d, int i) -> base::Status {
             if (!d.mesh) {
                 return base::Error{"Shape does not apply to this node"};
             }
@@ -105,47 +107,50 @@ ComponentInfo meshGroup() {
                 if (d.mesh->file.empty()) {
                     return base::Error{"Shape: choose the model file in the File field"};
                 }
-                d.mesh = MeshComponent::fromFile(d.mesh->file);
+                d.mesh = scene::MeshComponent::fromFile(d.mesh->file);
                 return ok();
             }
-            const BuiltinMesh kind = kinds[static_cast<std::size_t>(i)];
+            const scene::BuiltinMesh kind = kinds[static_cast<std::size_t>(i)];
             if (d.mesh->builtin != kind) {
-                d.mesh = MeshComponent::fromBuiltin(kind);
+                d.mesh = scene::MeshComponent::fromBuiltin(kind);
             }
             return ok();
         }));
-    c.properties.push_back(integer<NodeData>(
+    c.properties.push_back(integer<scene::NodeData>(
         QStringLiteral("mesh.tessellation"), QStringLiteral("Tessellation"),
-        in(&NodeData::mesh, &MeshComponent::tessellation),
+        in(&scene::NodeData::mesh, &scene::MeshComponent::tessellation),
         {render::kMinTessellation, render::kMaxTessellation}, {}, {},
         QStringLiteral("Subdivisions of the built-in shape (teapot: per patch edge, sphere: rings)")));
-    c.properties.back().visible = [](const NodeData& d) { return d.mesh && d.mesh->builtin.has_value(); };
-    Property<NodeData> file = filePath(QStringLiteral("mesh.file"), QStringLiteral("File"),
-                                       in(&NodeData::mesh, &MeshComponent::file),
-                                       QStringLiteral("3D models (*.obj *.gltf *.glb *.fbx *.dae *.ply *.stl "
-                                                      "*.3ds *.blend *.off);;All files (*)"),
-                                       false);
+    c.properties.back().visible = [](const scene::NodeData& d) {
+        return d.mesh && d.mesh->builtin.has_value();
+    };
+    Property<scene::NodeData> file =
+        filePath(QStringLiteral("mesh.file"), QStringLiteral("File"),
+                 in(&scene::NodeData::mesh, &scene::MeshComponent::file),
+                 QStringLiteral("3D models (*.obj *.gltf *.glb *.fbx *.dae *.ply *.stl "
+                                "*.3ds *.blend *.off);;All files (*)"),
+                 false);
     // Choosing a file makes it the mesh's source.
     auto setFile = file.set;
-    file.set = [setFile](NodeData& d, const QVariant& v) -> base::Status {
-        NodeData copy = d;
+    file.set = [setFile](scene::NodeData& d, const QVariant& v) -> base::Status {
+        scene::NodeData copy = d;
         if (auto status = setFile(copy, v); !status) {
             return status;
         }
-        copy.mesh = MeshComponent::fromFile(copy.mesh->file);
+        copy.mesh = scene::MeshComponent::fromFile(copy.mesh->file);
         d = std::move(copy);
         return ok();
     };
     c.properties.push_back(file);
     // One part of the model file (Assimp's scene order), or -1 for the whole file.
-    Property<NodeData> part = integer<NodeData>(
-        QStringLiteral("mesh.part"), QStringLiteral("Part"), [](NodeData&) -> int* { return nullptr; },
+    Property<scene::NodeData> part = integer<scene::NodeData>(
+        QStringLiteral("mesh.part"), QStringLiteral("Part"), [](scene::NodeData&) -> int* { return nullptr; },
         {-1, 1e9}, {}, {},
         QStringLiteral("Which mesh of the file this node draws, in its own coordinates; -1 for all of it"));
-    part.get = [](const NodeData& d) {
+    part.get = [](const scene::NodeData& d) {
         return d.mesh && !d.mesh->builtin ? QVariant(d.mesh->part.value_or(-1)) : QVariant();
     };
-    part.set = [](NodeData& d, const QVariant& v) -> base::Status {
+    part.set = [](scene::NodeData& d, const QVariant& v) -> base::Status {
         if (!d.mesh || d.mesh->builtin) {
             return base::Error{"Part: only model files have parts"};
         }
@@ -161,7 +166,7 @@ ComponentInfo meshGroup() {
         }
         return ok();
     };
-    part.visible = [](const NodeData& d) { return d.mesh && !d.mesh->builtin.has_value(); };
+    part.visible = [](const scene::NodeData& d) { return d.mesh && !d.mesh->builtin.has_value(); };
     c.properties.push_back(part);
     return c;
 }
@@ -170,80 +175,85 @@ ComponentInfo materialGroup() {
     ComponentInfo c;
     c.key = QStringLiteral("material");
     c.title = QStringLiteral("Material");
-    c.present = [](const NodeData& d) { return d.material.has_value(); };
-    c.add = [](NodeData& d) {
-        d.material = MaterialComponent{};
+    c.present = [](const scene::NodeData& d) { return d.material.has_value(); };
+    c.add = [](scene::NodeData& d) {
+        d.material = scene::MaterialComponent{};
         return ok();
     };
-    c.remove = [](NodeData& d) {
+    c.remove = [](scene::NodeData& d) {
         d.material.reset();
         return ok();
     };
-    using M = MaterialComponent;
-    c.properties.push_back(color<NodeData>(QStringLiteral("material.color"), QStringLiteral("Colour"),
-                                           in(&NodeData::material, &M::color)));
+    using M = scene::MaterialComponent;
+    c.properties.push_back(color<scene::NodeData>(QStringLiteral("material.color"), QStringLiteral("Colour"),
+                                                  in(&scene::NodeData::material, &M::color)));
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("material.ambient"), QStringLiteral("Ambient"),
-                                in(&NodeData::material, &M::ambient), kIntensity),
+        slider(number<scene::NodeData>(QStringLiteral("material.ambient"), QStringLiteral("Ambient"),
+                                       in(&scene::NodeData::material, &M::ambient), kIntensity),
                0.0, 2.0));
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("material.diffuse"), QStringLiteral("Diffuse"),
-                                in(&NodeData::material, &M::diffuse), kIntensity),
+        slider(number<scene::NodeData>(QStringLiteral("material.diffuse"), QStringLiteral("Diffuse"),
+                                       in(&scene::NodeData::material, &M::diffuse), kIntensity),
                0.0, 2.0));
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("material.specular"), QStringLiteral("Specular"),
-                                in(&NodeData::material, &M::specular), kIntensity),
+        slider(number<scene::NodeData>(QStringLiteral("material.specular"), QStringLiteral("Specular"),
+                                       in(&scene::NodeData::material, &M::specular), kIntensity),
                0.0, 2.0));
+    c.properties.push_back(slider(
+        number<scene::NodeData>(QStringLiteral("material.shininess"), QStringLiteral("Shininess"),
+                                in(&scene::NodeData::material, &M::shininess), {0.0, render::kMaxShininess}),
+        1.0, 256.0, 1, 1.0));
+    c.properties.push_back(color<scene::NodeData>(QStringLiteral("material.emission"),
+                                                  QStringLiteral("Emission"),
+                                                  in(&scene::NodeData::material, &M::emission)));
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("material.shininess"), QStringLiteral("Shininess"),
-                                in(&NodeData::material, &M::shininess), {0.0, render::kMaxShininess}),
-               1.0, 256.0, 1, 1.0));
-    c.properties.push_back(color<NodeData>(QStringLiteral("material.emission"), QStringLiteral("Emission"),
-                                           in(&NodeData::material, &M::emission)));
-    c.properties.push_back(filePath(
-        QStringLiteral("material.texture"), QStringLiteral("Texture"), in(&NodeData::material, &M::texture),
-        QStringLiteral("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.hdr);;All "
-                       "files (*)"),
-        true));
+        filePath(QStringLiteral("material.texture"), QStringLiteral("Texture"),
+                 in(&scene::NodeData::material, &M::texture),
+                 QStringLiteral("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.hdr);;All "
+                                "files (*)"),
+                 true));
     c.properties.back().info.tooltip = QStringLiteral("Empty for none");
     // What imported models bring (glTF, OBJ, FBX, Collada materials).
-    c.properties.push_back(color<NodeData>(QStringLiteral("material.specularColor"),
-                                           QStringLiteral("Highlight colour"),
-                                           in(&NodeData::material, &M::specularColor)));
+    c.properties.push_back(color<scene::NodeData>(QStringLiteral("material.specularColor"),
+                                                  QStringLiteral("Highlight colour"),
+                                                  in(&scene::NodeData::material, &M::specularColor)));
     const QString images =
         QStringLiteral("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.hdr);;All files (*)");
     c.properties.push_back(filePath(QStringLiteral("material.emissionTexture"),
                                     QStringLiteral("Emission texture"),
-                                    in(&NodeData::material, &M::emissionTexture), images, true));
+                                    in(&scene::NodeData::material, &M::emissionTexture), images, true));
     c.properties.back().info.tooltip = QStringLiteral("Multiplies the emission; empty for none");
     c.properties.push_back(filePath(QStringLiteral("material.normalTexture"), QStringLiteral("Normal map"),
-                                    in(&NodeData::material, &M::normalTexture), images, true));
+                                    in(&scene::NodeData::material, &M::normalTexture), images, true));
     c.properties.back().info.tooltip = QStringLiteral("Tangent-space normal map; empty for none");
-    c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("material.normalScale"), QStringLiteral("Normal strength"),
-                                in(&NodeData::material, &M::normalScale),
+    c.properties.push_back(slider(
+        number<scene::NodeData>(QStringLiteral("material.normalScale"), QStringLiteral("Normal strength"),
+                                in(&scene::NodeData::material, &M::normalScale),
                                 {-render::kMaxNormalScale, render::kMaxNormalScale}),
-               0.0, 2.0));
-    static const std::array<TextureWrap, 3> wraps{TextureWrap::Repeat, TextureWrap::Clamp,
-                                                  TextureWrap::Mirror};
+        0.0, 2.0));
+    static const std::array<scene::TextureWrap, 3> wraps{
+        scene::TextureWrap::Repeat, scene::TextureWrap::Clamp, scene::TextureWrap::Mirror};
     const QStringList wrapNames{QStringLiteral("Repeat"), QStringLiteral("Clamp"), QStringLiteral("Mirror")};
     for (int axis = 0; axis < 2; ++axis) {
-        c.properties.push_back(enumField<TextureWrap, 3>(
+        c.properties.push_back(enumField<scene::TextureWrap, 3>(
             axis == 0 ? QStringLiteral("material.wrapU") : QStringLiteral("material.wrapV"),
             axis == 0 ? QStringLiteral("Wrap u") : QStringLiteral("Wrap v"), wrapNames, wraps,
-            [axis](NodeData& d) -> TextureWrap* { return d.material ? &d.material->wrap[axis] : nullptr; }));
+            [axis](scene::NodeData& d) -> scene::TextureWrap* {
+                return d.material ? &d.material->wrap[axis] : nullptr;
+            }));
     }
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("material.opacity"), QStringLiteral("Opacity"),
-                                in(&NodeData::material, &M::opacity), {0.0, 1.0}),
+        slider(number<scene::NodeData>(QStringLiteral("material.opacity"), QStringLiteral("Opacity"),
+                                       in(&scene::NodeData::material, &M::opacity), {0.0, 1.0}),
                0.0, 1.0));
-    c.properties.push_back(enumField<AlphaMode, 3>(
+    c.properties.push_back(enumField<scene::AlphaMode, 3>(
         QStringLiteral("material.alphaMode"), QStringLiteral("Alpha"),
         {QStringLiteral("Opaque"), QStringLiteral("Mask"), QStringLiteral("Blend (drawn as mask)")},
-        {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend}, in(&NodeData::material, &M::alphaMode)));
+        {scene::AlphaMode::Opaque, scene::AlphaMode::Mask, scene::AlphaMode::Blend},
+        in(&scene::NodeData::material, &M::alphaMode)));
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("material.alphaCutoff"), QStringLiteral("Alpha cutoff"),
-                                in(&NodeData::material, &M::alphaCutoff), {0.0, 1.0}),
+        slider(number<scene::NodeData>(QStringLiteral("material.alphaCutoff"), QStringLiteral("Alpha cutoff"),
+                                       in(&scene::NodeData::material, &M::alphaCutoff), {0.0, 1.0}),
                0.0, 1.0));
     return c;
 }
@@ -252,67 +262,70 @@ ComponentInfo lightGroup() {
     ComponentInfo c;
     c.key = QStringLiteral("light");
     c.title = QStringLiteral("Light");
-    c.present = [](const NodeData& d) { return d.light.has_value(); };
-    c.add = [](NodeData& d) {
-        d.light = LightComponent{};
+    c.present = [](const scene::NodeData& d) { return d.light.has_value(); };
+    c.add = [](scene::NodeData& d) {
+        d.light = scene::LightComponent{};
         return ok();
     };
-    c.remove = [](NodeData& d) {
+    c.remove = [](scene::NodeData& d) {
         d.light.reset();
         return ok();
     };
-    using L = LightComponent;
-    c.properties.push_back(namedField<LightType>(QStringLiteral("light.type"), QStringLiteral("Type"),
-                                                 render::names::kLightTypes, in(&NodeData::light, &L::type)));
-    c.properties.push_back(color<NodeData>(QStringLiteral("light.color"), QStringLiteral("Colour"),
-                                           in(&NodeData::light, &L::color)));
+    using L = scene::LightComponent;
+    c.properties.push_back(namedField<scene::LightType>(QStringLiteral("light.type"), QStringLiteral("Type"),
+                                                        render::names::kLightTypes,
+                                                        in(&scene::NodeData::light, &L::type)));
+    c.properties.push_back(color<scene::NodeData>(QStringLiteral("light.color"), QStringLiteral("Colour"),
+                                                  in(&scene::NodeData::light, &L::color)));
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("light.intensity"), QStringLiteral("Intensity"),
-                                in(&NodeData::light, &L::intensity), kIntensity),
+        slider(number<scene::NodeData>(QStringLiteral("light.intensity"), QStringLiteral("Intensity"),
+                                       in(&scene::NodeData::light, &L::intensity), kIntensity),
                0.0, 5.0));
-    const auto isSpot = [](const NodeData& d) { return d.light && d.light->type == LightType::Spot; };
+    const auto isSpot = [](const scene::NodeData& d) {
+        return d.light && d.light->type == scene::LightType::Spot;
+    };
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("light.spotAngle"), QStringLiteral("Spot angle"),
-                                in(&NodeData::light, &L::spotAngle), {0.0, 90.0, true, false},
-                                QStringLiteral("°"), QStringLiteral("Outer half angle of the cone")),
+        slider(number<scene::NodeData>(QStringLiteral("light.spotAngle"), QStringLiteral("Spot angle"),
+                                       in(&scene::NodeData::light, &L::spotAngle), {0.0, 90.0, true, false},
+                                       QStringLiteral("°"), QStringLiteral("Outer half angle of the cone")),
                1.0, 90.0, 1, 1.0));
     c.properties.back().visible = isSpot;
     c.properties.push_back(
-        slider(number<NodeData>(QStringLiteral("light.spotBlend"), QStringLiteral("Spot blend"),
-                                in(&NodeData::light, &L::spotBlend), {0.0, 1.0}, {},
-                                QStringLiteral("Fraction of the cone over which the edge fades")),
+        slider(number<scene::NodeData>(QStringLiteral("light.spotBlend"), QStringLiteral("Spot blend"),
+                                       in(&scene::NodeData::light, &L::spotBlend), {0.0, 1.0}, {},
+                                       QStringLiteral("Fraction of the cone over which the edge fades")),
                0.0, 1.0));
     c.properties.back().visible = isSpot;
-    c.properties.push_back(boolean<NodeData>(
+    c.properties.push_back(boolean<scene::NodeData>(
         QStringLiteral("light.shadows"), QStringLiteral("Casts shadows"),
-        [](const NodeData& d) { return d.light && d.light->shadows.has_value(); },
-        [](NodeData& d, bool on) -> base::Status {
+        [](const scene::NodeData& d) { return d.light && d.light->shadows.has_value(); },
+        [](scene::NodeData& d, bool on) -> base::Status {
             if (!d.light) {
                 return base::Error{"Casts shadows does not apply to this node"};
             }
             if (on && !d.light->shadows) {
-                d.light->shadows = ShadowComponent{};
+                d.light->shadows = scene::ShadowComponent{};
             } else if (!on) {
                 d.light->shadows.reset();
             }
             return ok();
         }));
-    const auto hasShadows = [](const NodeData& d) { return d.light && d.light->shadows; };
-    const auto shadowField = [](int ShadowComponent::*field) -> Access<NodeData, int> {
-        return [field](NodeData& d) -> int* {
+    const auto hasShadows = [](const scene::NodeData& d) { return d.light && d.light->shadows; };
+    const auto shadowField = [](int scene::ShadowComponent::*field) -> Access<scene::NodeData, int> {
+        return [field](scene::NodeData& d) -> int* {
             return d.light && d.light->shadows ? &((*d.light->shadows).*field) : nullptr;
         };
     };
-    c.properties.push_back(integer<NodeData>(
+    c.properties.push_back(integer<scene::NodeData>(
         QStringLiteral("light.shadows.mapSize"), QStringLiteral("Shadow map size"),
-        shadowField(&ShadowComponent::mapSize), {render::kMinShadowMapSize, render::kMaxShadowMapSize},
+        shadowField(&scene::ShadowComponent::mapSize), {render::kMinShadowMapSize, render::kMaxShadowMapSize},
         QStringLiteral(" px"), [](int v) {
             return render::isPowerOfTwo(v) ? QString() : QStringLiteral("must be a power of two");
         }));
     c.properties.back().visible = hasShadows;
-    c.properties.push_back(integer<NodeData>(
+    c.properties.push_back(integer<scene::NodeData>(
         QStringLiteral("light.shadows.pcf"), QStringLiteral("Shadow softness (PCF)"),
-        shadowField(&ShadowComponent::pcf), {render::kMinPcfWidth, render::kMaxPcfWidth},
+        shadowField(&scene::ShadowComponent::pcf), {render::kMinPcfWidth, render::kMaxPcfWidth},
         QStringLiteral(" texels"),
         [](int v) { return v % 2 == 1 ? QString() : QStringLiteral("must be an odd kernel width"); },
         QStringLiteral("Odd filter width in shadow-map texels; 1 = hard shadows")));
@@ -325,60 +338,60 @@ ComponentInfo animationGroup() {
     ComponentInfo c;
     c.key = QStringLiteral("animation");
     c.title = QStringLiteral("Animation");
-    c.present = [](const NodeData& d) { return d.animation.has_value(); };
-    c.add = [](NodeData& d) {
-        d.animation = AnimationComponent{};
-        d.animation->bounce = BounceAnimation{};
+    c.present = [](const scene::NodeData& d) { return d.animation.has_value(); };
+    c.add = [](scene::NodeData& d) {
+        d.animation = scene::AnimationComponent{};
+        d.animation->bounce = scene::BounceAnimation{};
         return ok();
     };
-    c.remove = [](NodeData& d) {
+    c.remove = [](scene::NodeData& d) {
         d.animation.reset();
         return ok();
     };
-    c.properties.push_back(boolean<NodeData>(
+    c.properties.push_back(boolean<scene::NodeData>(
         QStringLiteral("animation.bounce"), QStringLiteral("Bounce"),
-        [](const NodeData& d) { return d.animation && d.animation->bounce.has_value(); },
-        [](NodeData& d, bool on) -> base::Status {
+        [](const scene::NodeData& d) { return d.animation && d.animation->bounce.has_value(); },
+        [](scene::NodeData& d, bool on) -> base::Status {
             if (!d.animation) {
                 return base::Error{"Bounce does not apply to this node"};
             }
             if (on && !d.animation->bounce) {
-                d.animation->bounce = BounceAnimation{};
+                d.animation->bounce = scene::BounceAnimation{};
             } else if (!on) {
                 d.animation->bounce.reset();
             }
             return ok();
         }));
-    const auto bounce = [](double BounceAnimation::*f) -> Access<NodeData, double> {
-        return [f](NodeData& d) -> double* {
+    const auto bounce = [](double scene::BounceAnimation::*f) -> Access<scene::NodeData, double> {
+        return [f](scene::NodeData& d) -> double* {
             return d.animation && d.animation->bounce ? &((*d.animation->bounce).*f) : nullptr;
         };
     };
-    const auto orbit = [](auto OrbitAnimation::*f) {
-        using V = std::remove_reference_t<decltype(std::declval<OrbitAnimation&>().*f)>;
-        return Access<NodeData, V>([f](NodeData& d) -> V* {
+    const auto orbit = [](auto scene::OrbitAnimation::*f) {
+        using V = std::remove_reference_t<decltype(std::declval<scene::OrbitAnimation&>().*f)>;
+        return Access<scene::NodeData, V>([f](scene::NodeData& d) -> V* {
             return d.animation && d.animation->orbit ? &((*d.animation->orbit).*f) : nullptr;
         });
     };
-    const auto hasBounce = [](const NodeData& d) { return d.animation && d.animation->bounce; };
-    const auto hasOrbit = [](const NodeData& d) { return d.animation && d.animation->orbit; };
-    c.properties.push_back(number<NodeData>(QStringLiteral("animation.bounce.height"),
-                                            QStringLiteral("Bounce height"), bounce(&BounceAnimation::height),
-                                            kCoordinate, QStringLiteral(" u")));
+    const auto hasBounce = [](const scene::NodeData& d) { return d.animation && d.animation->bounce; };
+    const auto hasOrbit = [](const scene::NodeData& d) { return d.animation && d.animation->orbit; };
+    c.properties.push_back(
+        number<scene::NodeData>(QStringLiteral("animation.bounce.height"), QStringLiteral("Bounce height"),
+                                bounce(&scene::BounceAnimation::height), kCoordinate, QStringLiteral(" u")));
     c.properties.back().visible = hasBounce;
-    c.properties.push_back(number<NodeData>(QStringLiteral("animation.bounce.period"),
-                                            QStringLiteral("Bounce period"), bounce(&BounceAnimation::period),
-                                            kPeriod, QStringLiteral(" s")));
+    c.properties.push_back(
+        number<scene::NodeData>(QStringLiteral("animation.bounce.period"), QStringLiteral("Bounce period"),
+                                bounce(&scene::BounceAnimation::period), kPeriod, QStringLiteral(" s")));
     c.properties.back().visible = hasBounce;
-    c.properties.push_back(boolean<NodeData>(
+    c.properties.push_back(boolean<scene::NodeData>(
         QStringLiteral("animation.orbit"), QStringLiteral("Orbit"),
-        [](const NodeData& d) { return d.animation && d.animation->orbit.has_value(); },
-        [](NodeData& d, bool on) -> base::Status {
+        [](const scene::NodeData& d) { return d.animation && d.animation->orbit.has_value(); },
+        [](scene::NodeData& d, bool on) -> base::Status {
             if (!d.animation) {
                 return base::Error{"Orbit does not apply to this node"};
             }
             if (on && !d.animation->orbit) {
-                OrbitAnimation o;
+                scene::OrbitAnimation o;
                 o.center = d.transform.translate; // orbit around where the node stands
                 d.animation->orbit = o;
             } else if (!on) {
@@ -386,17 +399,17 @@ ComponentInfo animationGroup() {
             }
             return ok();
         }));
-    c.properties.push_back(vector<NodeData, 3>(QStringLiteral("animation.orbit.center"),
-                                               QStringLiteral("Orbit centre"), orbit(&OrbitAnimation::center),
-                                               kCoordinate, QStringLiteral(" u")));
+    c.properties.push_back(
+        vector<scene::NodeData, 3>(QStringLiteral("animation.orbit.center"), QStringLiteral("Orbit centre"),
+                                   orbit(&scene::OrbitAnimation::center), kCoordinate, QStringLiteral(" u")));
     c.properties.back().visible = hasOrbit;
-    c.properties.push_back(number<NodeData>(QStringLiteral("animation.orbit.radius"),
-                                            QStringLiteral("Orbit radius"), orbit(&OrbitAnimation::radius),
-                                            kLength, QStringLiteral(" u")));
+    c.properties.push_back(
+        number<scene::NodeData>(QStringLiteral("animation.orbit.radius"), QStringLiteral("Orbit radius"),
+                                orbit(&scene::OrbitAnimation::radius), kLength, QStringLiteral(" u")));
     c.properties.back().visible = hasOrbit;
-    c.properties.push_back(number<NodeData>(QStringLiteral("animation.orbit.period"),
-                                            QStringLiteral("Orbit period"), orbit(&OrbitAnimation::period),
-                                            kPeriod, QStringLiteral(" s")));
+    c.properties.push_back(
+        number<scene::NodeData>(QStringLiteral("animation.orbit.period"), QStringLiteral("Orbit period"),
+                                orbit(&scene::OrbitAnimation::period), kPeriod, QStringLiteral(" s")));
     c.properties.back().visible = hasOrbit;
     return c;
 }

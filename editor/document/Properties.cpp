@@ -32,21 +32,23 @@ QString rangeText(const PropertyInfo& info) {
     return QStringLiteral("at most %1").arg(formatNumber(info.maximum));
 }
 
-std::vector<Property<SceneSettings>> makeSettingsProperties() {
-    std::vector<Property<SceneSettings>> list;
-    list.push_back(color<SceneSettings>(QStringLiteral("settings.background"), QStringLiteral("Background"),
-                                        [](SceneSettings& s) { return &s.background; }));
-    list.push_back(integer<SceneSettings>(
+std::vector<Property<scene::SceneSettings>> makeSettingsProperties() {
+    std::vector<Property<scene::SceneSettings>> list;
+    list.push_back(color<scene::SceneSettings>(QStringLiteral("settings.background"),
+                                               QStringLiteral("Background"),
+                                               [](scene::SceneSettings& s) { return &s.background; }));
+    list.push_back(integer<scene::SceneSettings>(
         QStringLiteral("settings.mirrorDepth"), QStringLiteral("Mirror depth"),
-        [](SceneSettings& s) { return &s.mirrorDepth; }, {0, render::kMaxMirrorDepth}, {}, {},
+        [](scene::SceneSettings& s) { return &s.mirrorDepth; }, {0, render::kMaxMirrorDepth}, {}, {},
         QStringLiteral("How many reflections of reflections are drawn")));
-    list.push_back(slider(number<SceneSettings>(QStringLiteral("settings.ambient"), QStringLiteral("Ambient"),
-                                                [](SceneSettings& s) { return &s.ambient; }, {0.0, 1.0}),
-                          0.0, 1.0));
-    list.push_back(boolean<SceneSettings>(
+    list.push_back(
+        slider(number<scene::SceneSettings>(QStringLiteral("settings.ambient"), QStringLiteral("Ambient"),
+                                            [](scene::SceneSettings& s) { return &s.ambient; }, {0.0, 1.0}),
+               0.0, 1.0));
+    list.push_back(boolean<scene::SceneSettings>(
         QStringLiteral("settings.simplifyReflections"), QStringLiteral("Simplify big meshes in reflections"),
-        [](const SceneSettings& s) { return s.simplifyReflections; },
-        [](SceneSettings& s, bool on) -> base::Status {
+        [](const scene::SceneSettings& s) { return s.simplifyReflections; },
+        [](scene::SceneSettings& s, bool on) -> base::Status {
             s.simplifyReflections = on;
             return base::Done{};
         },
@@ -55,42 +57,43 @@ std::vector<Property<SceneSettings>> makeSettingsProperties() {
     QStringList filters;
     for (const render::names::Name& n : render::names::kGlossyFilters)
         filters << QString::fromUtf8(n.label.data(), qsizetype(n.label.size()));
-    list.push_back(enumeration<SceneSettings>(
+    list.push_back(enumeration<scene::SceneSettings>(
         QStringLiteral("settings.glossyFilter"), QStringLiteral("Rough reflections"), filters,
-        [](const SceneSettings& s) { return static_cast<int>(s.glossyFilter); },
-        [](SceneSettings& s, int i) -> base::Status {
-            s.glossyFilter = static_cast<GlossyFilter>(i);
+        [](const scene::SceneSettings& s) { return static_cast<int>(s.glossyFilter); },
+        [](scene::SceneSettings& s, int i) -> base::Status {
+            s.glossyFilter = static_cast<scene::GlossyFilter>(i);
             return base::Done{};
         }));
     list.back().info.tooltip =
         QStringLiteral("How rough mirrors and the rough reflector are approximated: one mip level chosen by "
                        "the roughness (cheap), or the GGX lobe's footprint on planar mirrors and a "
                        "pre-filtered map chain on the reflector");
-    list.push_back(integer<SceneSettings>(
+    list.push_back(integer<scene::SceneSettings>(
         QStringLiteral("settings.glossyTaps"), QStringLiteral("Rough mirror taps"),
-        [](SceneSettings& s) { return &s.glossyTaps; }, {render::kMinGlossyTaps, render::kMaxGlossyTaps}, {},
-        {}, QStringLiteral("Samples of the GGX lobe per pixel of a rough planar mirror (lobe footprint)")));
-    list.push_back(integer<SceneSettings>(
+        [](scene::SceneSettings& s) { return &s.glossyTaps; },
+        {render::kMinGlossyTaps, render::kMaxGlossyTaps}, {}, {},
+        QStringLiteral("Samples of the GGX lobe per pixel of a rough planar mirror (lobe footprint)")));
+    list.push_back(integer<scene::SceneSettings>(
         QStringLiteral("settings.prefilterSamples"), QStringLiteral("Pre-filter samples"),
-        [](SceneSettings& s) { return &s.prefilterSamples; },
+        [](scene::SceneSettings& s) { return &s.prefilterSamples; },
         {render::kMinPrefilterSamples, render::kMaxPrefilterSamples}, {}, {},
         QStringLiteral("Samples of the GGX lobe per texel when the reflector's map is pre-filtered")));
     return list;
 }
 
-std::vector<Property<CameraData>> makeCameraProperties() {
-    std::vector<Property<CameraData>> list;
+std::vector<Property<scene::CameraData>> makeCameraProperties() {
+    std::vector<Property<scene::CameraData>> list;
     const NumberRange kCoordinate{-render::kMaxCoordinate, render::kMaxCoordinate};
     // Position and target must differ and up must not be parallel to the view: checked on the whole camera.
-    const auto checkCamera = [](Property<CameraData> p) {
+    const auto checkCamera = [](Property<scene::CameraData> p) {
         auto set = p.set;
-        p.set = [set](CameraData& c, const QVariant& v) -> base::Status {
-            CameraData copy = c;
+        p.set = [set](scene::CameraData& c, const QVariant& v) -> base::Status {
+            scene::CameraData copy = c;
             if (auto s = set(copy, v); !s) {
                 return s;
             }
             // The project reader's rule for the whole camera (SceneChecks.hpp), word for word.
-            if (const std::optional<FieldProblem> problem = cameraProblem(copy)) {
+            if (const std::optional<scene::FieldProblem> problem = scene::cameraProblem(copy)) {
                 static const std::map<std::string, std::string> labels{
                     {"position", "Position"},  {"target", "Target"}, {"up", "Up"},
                     {"fovY", "Field of view"}, {"near", "Near"},     {"far", "Far"}};
@@ -103,27 +106,29 @@ std::vector<Property<CameraData>> makeCameraProperties() {
         };
         return p;
     };
-    using V3 = Access<CameraData, glm::dvec3>;
-    list.push_back(checkCamera(vector<CameraData, 3>(
+    using V3 = Access<scene::CameraData, glm::dvec3>;
+    list.push_back(checkCamera(vector<scene::CameraData, 3>(
         QStringLiteral("camera.position"), QStringLiteral("Position"),
-        V3([](CameraData& c) { return &c.position; }), kCoordinate, QStringLiteral(" u"))));
-    list.push_back(checkCamera(vector<CameraData, 3>(
+        V3([](scene::CameraData& c) { return &c.position; }), kCoordinate, QStringLiteral(" u"))));
+    list.push_back(checkCamera(vector<scene::CameraData, 3>(
         QStringLiteral("camera.target"), QStringLiteral("Target"),
-        V3([](CameraData& c) { return &c.target; }), kCoordinate, QStringLiteral(" u"))));
-    list.push_back(checkCamera(vector<CameraData, 3>(QStringLiteral("camera.up"), QStringLiteral("Up"),
-                                                     V3([](CameraData& c) { return &c.up; }), kCoordinate)));
-    list.push_back(checkCamera(slider(number<CameraData>(
-                                          QStringLiteral("camera.fovY"), QStringLiteral("Field of view"),
-                                          [](CameraData& c) { return &c.fovY; }, {0.0, 180.0, true, true},
-                                          QStringLiteral("°"), QStringLiteral("Vertical, in degrees")),
-                                      10.0, 120.0, 1, 1.0)));
-    list.push_back(checkCamera(number<CameraData>(
-        QStringLiteral("camera.near"), QStringLiteral("Near"), [](CameraData& c) { return &c.near; },
+        V3([](scene::CameraData& c) { return &c.target; }), kCoordinate, QStringLiteral(" u"))));
+    list.push_back(checkCamera(vector<scene::CameraData, 3>(QStringLiteral("camera.up"), QStringLiteral("Up"),
+                                                            V3([](scene::CameraData& c) { return &c.up; }),
+                                                            kCoordinate)));
+    list.push_back(
+        checkCamera(slider(number<scene::CameraData>(
+                               QStringLiteral("camera.fovY"), QStringLiteral("Field of view"),
+                               [](scene::CameraData& c) { return &c.fovY; }, {0.0, 180.0, true, true},
+                               QStringLiteral("°"), QStringLiteral("Vertical, in degrees")),
+                           10.0, 120.0, 1, 1.0)));
+    list.push_back(checkCamera(number<scene::CameraData>(
+        QStringLiteral("camera.near"), QStringLiteral("Near"), [](scene::CameraData& c) { return &c.near; },
         {render::kMinNear, render::kMaxCoordinate}, QStringLiteral(" u"),
         QStringLiteral("At most %1 times nearer than Far (depth-buffer precision)")
             .arg(formatNumber(render::kMaxFarNearRatio)))));
-    list.push_back(checkCamera(number<CameraData>(
-        QStringLiteral("camera.far"), QStringLiteral("Far"), [](CameraData& c) { return &c.far; },
+    list.push_back(checkCamera(number<scene::CameraData>(
+        QStringLiteral("camera.far"), QStringLiteral("Far"), [](scene::CameraData& c) { return &c.far; },
         {0.0, kInf, true}, QStringLiteral(" u"))));
     return list;
 }
@@ -166,7 +171,7 @@ const ComponentInfo* findComponent(const QString& key) {
     return nullptr;
 }
 
-const Property<NodeData>* findNodeProperty(const QString& key) {
+const Property<scene::NodeData>* findNodeProperty(const QString& key) {
     for (const ComponentInfo& c : nodeComponents()) {
         for (const auto& p : c.properties) {
             if (p.info.key == key) {
@@ -177,17 +182,17 @@ const Property<NodeData>* findNodeProperty(const QString& key) {
     return nullptr;
 }
 
-const std::vector<Property<SceneSettings>>& settingsProperties() {
+const std::vector<Property<scene::SceneSettings>>& settingsProperties() {
     static const auto list = makeSettingsProperties();
     return list;
 }
 
-const std::vector<Property<CameraData>>& cameraProperties() {
+const std::vector<Property<scene::CameraData>>& cameraProperties() {
     static const auto list = makeCameraProperties();
     return list;
 }
 
-const Property<SceneSettings>* findSettingsProperty(const QString& key) {
+const Property<scene::SceneSettings>* findSettingsProperty(const QString& key) {
     for (const auto& p : settingsProperties()) {
         if (p.info.key == key) {
             return &p;
@@ -196,7 +201,7 @@ const Property<SceneSettings>* findSettingsProperty(const QString& key) {
     return nullptr;
 }
 
-const Property<CameraData>* findCameraProperty(const QString& key) {
+const Property<scene::CameraData>* findCameraProperty(const QString& key) {
     for (const auto& p : cameraProperties()) {
         if (p.info.key == key) {
             return &p;

@@ -60,22 +60,22 @@ struct ComponentInfo {
     QString key;   // "material"; "node" and "transform" are always present
     QString title; // "Material"
     bool optional = true;
-    std::function<bool(const NodeData&)> present;
+    std::function<bool(const scene::NodeData&)> present;
     // Adds the component with defaults / removes it. Fails with a message when the node would become
     // invalid (a reflector needs a mesh).
-    std::function<base::Status(NodeData&)> add;
-    std::function<base::Status(NodeData&)> remove;
-    std::vector<Property<NodeData>> properties;
+    std::function<base::Status(scene::NodeData&)> add;
+    std::function<base::Status(scene::NodeData&)> remove;
+    std::vector<Property<scene::NodeData>> properties;
 };
 
 const std::vector<ComponentInfo>& nodeComponents();
 const ComponentInfo* findComponent(const QString& key);
-const Property<NodeData>* findNodeProperty(const QString& key);
+const Property<scene::NodeData>* findNodeProperty(const QString& key);
 
-const std::vector<Property<SceneSettings>>& settingsProperties();
-const std::vector<Property<CameraData>>& cameraProperties();
-const Property<SceneSettings>* findSettingsProperty(const QString& key);
-const Property<CameraData>* findCameraProperty(const QString& key);
+const std::vector<Property<scene::SceneSettings>>& settingsProperties();
+const std::vector<Property<scene::CameraData>>& cameraProperties();
+const Property<scene::SceneSettings>* findSettingsProperty(const QString& key);
+const Property<scene::CameraData>* findCameraProperty(const QString& key);
 
 // The checks of a number against info's range; the message names the label ("Reflectivity must be in
 // 0..1, got 2").

@@ -41,18 +41,18 @@ PropertyInfo numberInfo(QString key, QString label, PropertyKind kind, NumberRan
     return info;
 }
 
-Property<NodeData> filePath(QString key, QString label, Access<NodeData, std::string> access, QString filter,
-                            bool allowEmpty) {
-    Property<NodeData> p;
+Property<scene::NodeData> filePath(QString key, QString label, Access<scene::NodeData, std::string> access,
+                                   QString filter, bool allowEmpty) {
+    Property<scene::NodeData> p;
     p.info.key = std::move(key);
     p.info.label = std::move(label);
     p.info.kind = PropertyKind::FilePath;
     p.info.fileFilter = std::move(filter);
-    p.get = [access](const NodeData& d) {
+    p.get = [access](const scene::NodeData& d) {
         const std::string* s = read(access, d);
         return s ? QVariant(QString::fromStdString(*s)) : QVariant();
     };
-    p.set = [access, info = p.info, allowEmpty](NodeData& d, const QVariant& value) -> base::Status {
+    p.set = [access, info = p.info, allowEmpty](scene::NodeData& d, const QVariant& value) -> base::Status {
         const QString path = value.toString().trimmed();
         std::string* field = access(d);
         if (!field) {
@@ -90,12 +90,12 @@ QString nonZeroScale(const glm::dvec3& s) {
         if (s[i] == 0.0) {
             return QStringLiteral("components must be non-zero (a zero scale flattens the node)");
         }
-        // The project reader's limits (render/SceneLimits.hpp): beyond them float maths overflows.
+        // The project reader's limits (render/frame/SceneLimits.hpp): beyond them float maths overflows.
         if (std::abs(s[i]) < render::kMinScale || std::abs(s[i]) > render::kMaxScale) {
             return QStringLiteral("components must be in %1..%2 in size (negative mirrors), got %3")
-                .arg(QString::fromStdString(formatLimit(render::kMinScale)),
-                     QString::fromStdString(formatLimit(render::kMaxScale)),
-                     QString::fromStdString(formatLimit(s[i])));
+                .arg(QString::fromStdString(scene::formatLimit(render::kMinScale)),
+                     QString::fromStdString(scene::formatLimit(render::kMaxScale)),
+                     QString::fromStdString(scene::formatLimit(s[i])));
         }
     }
     return {};
@@ -108,9 +108,9 @@ QString positiveExtents(const glm::dvec2& s) {
     for (int i = 0; i < 2; ++i) {
         if (s[i] < render::kMinScale || s[i] > render::kMaxCoordinate) {
             return QStringLiteral("extents must be in %1..%2, got %3")
-                .arg(QString::fromStdString(formatLimit(render::kMinScale)),
-                     QString::fromStdString(formatLimit(render::kMaxCoordinate)),
-                     QString::fromStdString(formatLimit(s[i])));
+                .arg(QString::fromStdString(scene::formatLimit(render::kMinScale)),
+                     QString::fromStdString(scene::formatLimit(render::kMaxCoordinate)),
+                     QString::fromStdString(scene::formatLimit(s[i])));
         }
     }
     return {};

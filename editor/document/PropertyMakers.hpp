@@ -231,11 +231,11 @@ Property<T> enumeration(QString key, QString label, QStringList options, std::fu
 
 // An enum property over a component field whose values are listed in option order.
 template <typename E, std::size_t N>
-Property<NodeData> enumField(QString key, QString label, QStringList options, std::array<E, N> values,
-                             Access<NodeData, E> access) {
-    return enumeration<NodeData>(
+Property<scene::NodeData> enumField(QString key, QString label, QStringList options, std::array<E, N> values,
+                                    Access<scene::NodeData, E> access) {
+    return enumeration<scene::NodeData>(
         std::move(key), std::move(label), std::move(options),
-        [access, values](const NodeData& d) {
+        [access, values](const scene::NodeData& d) {
             const E* e = read(access, d);
             for (std::size_t i = 0; e && i < N; ++i) {
                 if (values[i] == *e) {
@@ -244,7 +244,7 @@ Property<NodeData> enumField(QString key, QString label, QStringList options, st
             }
             return -1;
         },
-        [access, values](NodeData& d, int i) -> base::Status {
+        [access, values](scene::NodeData& d, int i) -> base::Status {
             E* e = access(d);
             if (!e) {
                 return base::Error{"this property does not apply to this node"};
@@ -254,10 +254,11 @@ Property<NodeData> enumField(QString key, QString label, QStringList options, st
         });
 }
 
-// An enum property whose options are the labels of a render/SceneNames.hpp table, in enum order.
+// An enum property whose options are the labels of a render/frame/SceneNames.hpp table, in enum order.
 template <typename E, std::size_t N>
-Property<NodeData> namedField(QString key, QString label, const std::array<render::names::Name, N>& names,
-                              Access<NodeData, E> access) {
+Property<scene::NodeData> namedField(QString key, QString label,
+                                     const std::array<render::names::Name, N>& names,
+                                     Access<scene::NodeData, E> access) {
     QStringList options;
     std::array<E, N> values{};
     for (std::size_t i = 0; i < N; ++i) {
@@ -268,13 +269,13 @@ Property<NodeData> namedField(QString key, QString label, const std::array<rende
 }
 
 // A path to an existing file, stored absolute; allowEmpty accepts "" for none.
-Property<NodeData> filePath(QString key, QString label, Access<NodeData, std::string> access, QString filter,
-                            bool allowEmpty);
+Property<scene::NodeData> filePath(QString key, QString label, Access<scene::NodeData, std::string> access,
+                                   QString filter, bool allowEmpty);
 
 // Accessor shorthands for optional components.
 template <typename C, typename V>
-Access<NodeData, V> in(std::optional<C> NodeData::*component, V C::*field) {
-    return [component, field](NodeData& d) -> V* {
+Access<scene::NodeData, V> in(std::optional<C> scene::NodeData::*component, V C::*field) {
+    return [component, field](scene::NodeData& d) -> V* {
         auto& c = d.*component;
         return c ? &((*c).*field) : nullptr;
     };

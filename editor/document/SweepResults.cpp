@@ -30,31 +30,32 @@ base::Result<SweepResults> loadSweepResults(const QString& path) {
     if (json.isNull()) {
         return base::Error{name + ": not JSON (" + parseError.errorString().toStdString() + ")"};
     }
-    if (const std::optional<std::string> duplicate = findDuplicateKey(*bytes)) {
+    if (const std::optional<std::string> duplicate = scene::findDuplicateKey(*bytes)) {
         return base::Error{name + ": " + *duplicate};
     }
     return accuracy::readJson(json.object(), name);
 }
 
-std::optional<ReflectorParallax> sweepParallaxProxy(const render::FrameInput& scene) {
+std::optional<scene::ReflectorParallax> sweepParallaxProxy(const render::FrameInput& scene) {
     const accuracy::SceneTraits traits = accuracy::sceneTraits(scene, std::nullopt);
     if (!traits.proxyMakesSense || traits.ownProxy) {
         return std::nullopt;
     }
-    ReflectorParallax proxy;
-    proxy.shape = ParallaxShape::Box;
+    scene::ReflectorParallax proxy;
+    proxy.shape = scene::ParallaxShape::Box;
     proxy.min = traits.proxy.min;
     proxy.max = traits.proxy.max;
     return proxy;
 }
 
-SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& settings, const QString& text,
-                                    const std::optional<ReflectorParallax>& derivedProxy) {
+SweepApplication applySweepSettings(scene::Scene& scene, const accuracy::Settings& settings,
+                                    const QString& text,
+                                    const std::optional<scene::ReflectorParallax>& derivedProxy) {
     SweepApplication out;
     // Edited copies of the nodes that change, in file order; settings.mirrorDepth separately.
-    std::map<NodeId, NodeData> edited;
-    std::vector<NodeId> order;
-    auto edit = [&](const Node& node) -> NodeData& {
+    std::map<scene::NodeId, scene::NodeData> edited;
+    std::vector<scene::NodeId> order;
+    auto edit = [&](const scene::Node& node) -> scene::NodeData& {
         auto [it, fresh] = edited.try_emplace(node.id(), node.data());
         if (fresh) {
             order.push_back(node.id());
@@ -62,11 +63,11 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
         return it->second;
     };
     // What a node holds so far: earlier keys of the record may have edited it already.
-    auto sofar = [&](const Node& node) -> const NodeData& {
+    auto sofar = [&](const scene::Node& node) -> const scene::NodeData& {
         const auto it = edited.find(node.id());
         return it != edited.end() ? it->second : node.data();
     };
-    std::optional<SceneSettings> sceneSettings;
+    std::optional<scene::SceneSettings> sceneSettings;
 
     for (const auto& setting : settings) {
         // Named copies, not a structured binding: clang 14 (the fuzz and sanitizer builds) cannot
@@ -82,22 +83,22 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
         QString problem;
         if (key == QStringLiteral("map") || key == QStringLiteral("resolution") ||
             key == QStringLiteral("fill") || key == QStringLiteral("parallax")) {
-            scene.forEachNode([&](const Node& node) {
+            scene.forEachNode([&](const scene::Node& node) {
                 if (!node.data().reflector || matched > 0) {
                     return; // at most one reflector; the first is the one the snapshot draws
                 }
                 ++matched;
-                const ReflectorComponent& current = *sofar(node).reflector;
-                ReflectorComponent r = current;
+                const scene::ReflectorComponent& current = *sofar(node).reflector;
+                scene::ReflectorComponent r = current;
                 if (key == QStringLiteral("map")) {
-                    const auto map = reflectorMapFromString(value.toStdString());
+                    const auto map = scene::reflectorMapFromString(value.toStdString());
                     map ? void(r.map = *map) : void(problem = QStringLiteral("unknown map type"));
                 } else if (key == QStringLiteral("resolution")) {
                     isInt&& n >= 8 && n <= 8192
                         ? void(r.resolution = n)
                         : void(problem = QStringLiteral("not a resolution in 8..8192"));
                 } else if (key == QStringLiteral("fill")) {
-                    const auto fill = reflectorFillFromString(value.toStdString());
+                    const auto fill = scene::reflectorFillFromString(value.toStdString());
                     fill ? void(r.fill = *fill) : void(problem = QStringLiteral("unknown fill"));
                 } else if (value == QStringLiteral("off")) {
                     r.parallax.reset();
@@ -119,8 +120,8 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
                 problem = QStringLiteral("the scene has no curved reflector");
             }
         } else if (key == QStringLiteral("technique")) {
-            const auto technique = mirrorTechniqueFromString(value.toStdString());
-            scene.forEachNode([&](const Node& node) {
+            const auto technique = scene::mirrorTechniqueFromString(value.toStdString());
+            scene.forEachNode([&](const scene::Node& node) {
                 if (node.data().mirror) {
                     ++matched;
                     if (technique && sofar(node).mirror->technique != *technique) {
@@ -133,7 +134,7 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
                                      : QString();
         } else if (key == QStringLiteral("mirrorDepth")) {
             if (isInt && n >= 0 && n <= 16) {
-                SceneSettings s = sceneSettings.value_or(scene.settings());
+                scene::SceneSettings s = sceneSettings.value_or(scene.settings());
                 s.mirrorDepth = n;
                 sceneSettings = s;
             } else {
@@ -141,7 +142,7 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
             }
         } else if (key == QStringLiteral("pcf")) {
             const bool valid = isInt && n >= 1 && n <= 15 && n % 2 == 1;
-            scene.forEachNode([&](const Node& node) {
+            scene.forEachNode([&](const scene::Node& node) {
                 if (node.data().light && node.data().light->shadows) {
                     ++matched;
                     if (valid && sofar(node).light->shadows->pcf != n) {
@@ -154,9 +155,9 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
                                      : QString();
         } else if (key == QStringLiteral("tessellation")) {
             const bool valid = isInt && n >= 1 && n <= 64;
-            scene.forEachNode([&](const Node& node) {
+            scene.forEachNode([&](const scene::Node& node) {
                 const auto& mesh = node.data().mesh;
-                if (mesh && mesh->builtin == BuiltinMesh::Teapot) {
+                if (mesh && mesh->builtin == scene::BuiltinMesh::Teapot) {
                     ++matched;
                     if (valid && sofar(node).mesh->tessellation != n) {
                         edit(node).mesh->tessellation = n;
@@ -168,7 +169,7 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
                                      : QString();
         } else if (key == QStringLiteral("reflectedDetail")) {
             if (value == QStringLiteral("simplified") || value == QStringLiteral("full")) {
-                SceneSettings s = sceneSettings.value_or(scene.settings());
+                scene::SceneSettings s = sceneSettings.value_or(scene.settings());
                 s.simplifyReflections = value == QStringLiteral("simplified");
                 sceneSettings = s;
             } else {
@@ -183,8 +184,8 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
 
     // A later key of the record can undo an earlier one (map = cube, then map = the current type): a node
     // edited back to what it holds is no change, and an application of nothing gets no command.
-    std::erase_if(order, [&](NodeId id) {
-        const Node* node = scene.findNode(id);
+    std::erase_if(order, [&](scene::NodeId id) {
+        const scene::Node* node = scene.findNode(id);
         return node && edited.at(id) == node->data();
     });
     if (sceneSettings && *sceneSettings == scene.settings()) {
@@ -194,7 +195,7 @@ SweepApplication applySweepSettings(Scene& scene, const accuracy::Settings& sett
         return out;
     }
     out.command = std::make_unique<QUndoCommand>(text);
-    for (NodeId id : order) {
+    for (scene::NodeId id : order) {
         new SetNodeDataCommand(scene, id, edited.at(id), text, {}, out.command.get());
     }
     if (sceneSettings) {

@@ -179,7 +179,7 @@ QString findingsMarkdown(const std::vector<accuracy::FamilyFindings>& findings) 
 
 } // namespace
 
-AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, Viewport& viewport,
+AccuracyPanel::AccuracyPanel(scene::Scene& scene, QUndoStack& undoStack, Viewport& viewport,
                              view::AnimationClock& clock, QWidget* parent)
     : QWidget(parent)
     , m_scene(scene)
@@ -430,14 +430,14 @@ AccuracyPanel::AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, View
     connect(m_sweep, &SweepRunJob::finished, this, &AccuracyPanel::sweepFinished);
     connect(m_sweep, &SweepRunJob::failed, this, &AccuracyPanel::sweepFailed);
     connect(m_chart, &SweepChart::recordChosen, this, &AccuracyPanel::applyRecord);
-    connect(&m_scene, &document::Scene::changed, this, [this] {
+    connect(&m_scene, &scene::Scene::changed, this, [this] {
         if (m_last && !m_comparison->running()) {
             m_status->setText(tr("The scene changed since these numbers: compare again."));
         }
         m_sceneChangedDuringSweep = m_sceneChangedDuringSweep || m_sweep->running();
     });
     // A measurement of the previous document says nothing about the new one.
-    connect(&m_scene, &document::Scene::sceneReset, this, &AccuracyPanel::clear);
+    connect(&m_scene, &scene::Scene::sceneReset, this, &AccuracyPanel::clear);
 }
 
 QString AccuracyPanel::explanationText() const {
@@ -603,13 +603,13 @@ QString AccuracyPanel::applyRecord(int index) {
         return busy;
     }
     const auto& record = records[std::size_t(index)];
-    std::optional<document::ReflectorParallax> proxy;
+    std::optional<scene::ReflectorParallax> proxy;
     if (m_last) {
         proxy = document::sweepParallaxProxy(m_last->input);
     } else {
         std::vector<std::string> ignored;
         proxy = document::sweepParallaxProxy(
-            document::snapshot(m_scene, m_clock.time(), m_viewport.meshes(), ignored));
+            scene::snapshot(m_scene, m_clock.time(), m_viewport.meshes(), ignored));
     }
     const QString family = QString::fromStdString(accuracy::familyName(record.config.family));
     const QString label = QString::fromStdString(record.config.label);

@@ -17,9 +17,9 @@ class QPushButton;
 class QSpinBox;
 class QUndoStack;
 
-namespace speculum::document {
+namespace speculum::scene {
 class Scene;
-}
+} // namespace speculum::scene
 
 namespace speculum::view {
 class AnimationClock;
@@ -76,8 +76,8 @@ class AccuracyPanel : public QWidget {
     Q_OBJECT
 
 public:
-    AccuracyPanel(document::Scene& scene, QUndoStack& undoStack, Viewport& viewport,
-                  view::AnimationClock& clock, QWidget* parent = nullptr);
+    AccuracyPanel(scene::Scene& scene, QUndoStack& undoStack, Viewport& viewport, view::AnimationClock& clock,
+                  QWidget* parent = nullptr);
 
     const std::optional<ComparisonResult>& lastComparison() const { return m_last; }
     bool comparing() const { return m_comparison->running(); }
@@ -126,7 +126,7 @@ private:
     void sweepFinished(const accuracy::ResultsFile& results);
     void sweepFailed(const QString& text, bool cancelled);
 
-    document::Scene& m_scene;
+    scene::Scene& m_scene;
     QUndoStack& m_undoStack;
     Viewport& m_viewport;
     view::AnimationClock& m_clock;

@@ -58,7 +58,7 @@ int runEditor(int& argc, char** argv, const std::string& projectPath) {
     window.restoreLayout();
     // A live view where something moves (Space pauses); a static scene stays paused and draws nothing
     // until something changes.
-    window.clock().setPlaying(document::sceneHasAnimation(window.scene()));
+    window.clock().setPlaying(scene::sceneHasAnimation(window.scene()));
     window.show();
     if (openError.isEmpty() && projectPath.empty()) {
         // A previous session that crashed left unsaved work: offer it (only when no file was asked for).

@@ -31,7 +31,7 @@ QImage toQImage(const render::Image& linear) {
     return out;
 }
 
-ExactComparison::ExactComparison(document::Scene& scene, Viewport& viewport, QObject* parent)
+ExactComparison::ExactComparison(scene::Scene& scene, Viewport& viewport, QObject* parent)
     : QObject(parent)
     , m_scene(scene)
     , m_viewport(viewport) {}
@@ -71,7 +71,7 @@ bool ExactComparison::start(int width, double time) {
     result->width = w;
     result->height = h;
     std::vector<std::string> warnings;
-    result->input = document::snapshot(m_scene, time, m_viewport.meshes(), warnings);
+    result->input = scene::snapshot(m_scene, time, m_viewport.meshes(), warnings);
     result->input.camera = m_viewport.viewCamera();
 
     // The raster frame: the second of two, so shader compilation and first-use costs are not timed; every

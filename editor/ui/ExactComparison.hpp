@@ -11,9 +11,9 @@
 #include <optional>
 #include <thread>
 
-namespace speculum::document {
+namespace speculum::scene {
 class Scene;
-}
+} // namespace speculum::scene
 
 namespace speculum::ui {
 
@@ -47,7 +47,7 @@ class ExactComparison : public QObject {
     Q_OBJECT
 
 public:
-    ExactComparison(document::Scene& scene, Viewport& viewport, QObject* parent = nullptr);
+    ExactComparison(scene::Scene& scene, Viewport& viewport, QObject* parent = nullptr);
     ~ExactComparison() override; // cancels and waits for a running trace
 
     // Starts a comparison of the current view at `width` pixels wide (the viewport's aspect). Returns false
@@ -65,7 +65,7 @@ private:
     void poll();
     void join();
 
-    document::Scene& m_scene;
+    scene::Scene& m_scene;
     Viewport& m_viewport;
     std::thread m_thread;
     std::atomic<double> m_fraction{0.0};

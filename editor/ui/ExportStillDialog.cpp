@@ -199,8 +199,8 @@ bool ExportStillDialog::useCurrentView() const {
     return m_camera->currentIndex() == 1;
 }
 
-document::StillExportSettings ExportStillDialog::settings() const {
-    document::StillExportSettings s;
+scene::StillExportSettings ExportStillDialog::settings() const {
+    scene::StillExportSettings s;
     s.width = m_width->value();
     s.height = m_height->value();
     s.ssaa = m_ssaa->value();
@@ -210,7 +210,7 @@ document::StillExportSettings ExportStillDialog::settings() const {
 }
 
 void ExportStillDialog::accept() {
-    if (auto valid = document::validateStillExport(settings(), outputPath()); !valid) {
+    if (auto valid = scene::validateStillExport(settings(), outputPath()); !valid) {
         m_error->setText(QString::fromStdString(valid.error()));
         m_error->show();
         return;

@@ -25,7 +25,7 @@ public:
     ExportStillDialog(const QString& suggestedPath, double time, QWidget* parent = nullptr);
 
     QString outputPath() const;
-    document::StillExportSettings settings() const; // camera: scene camera (set by the caller for "view")
+    scene::StillExportSettings settings() const; // camera: scene camera (set by the caller for "view")
     bool useCurrentView() const;
     QString timeNote() const; // "Renders the scene at t = 0.000 s, its start …"
 

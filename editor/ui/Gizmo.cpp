@@ -137,8 +137,8 @@ int Gizmo::hitTest(QPointF point) const {
     return best;
 }
 
-document::NodeData Gizmo::drag(const document::NodeData& start, int axis, QPointF from, QPointF to) const {
-    document::NodeData out = start;
+scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from, QPointF to) const {
+    scene::NodeData out = start;
     if (!m_valid || axis < 0 || axis > 2) {
         return out;
     }
@@ -176,10 +176,10 @@ document::NodeData Gizmo::drag(const document::NodeData& start, int axis, QPoint
     return out;
 }
 
-document::NodeData followDrag(HandleMode mode, const document::NodeData& leadStart,
-                              const document::NodeData& leadNow, const glm::dmat4& leadParentWorld,
-                              const document::NodeData& start, const glm::dmat4& parentWorld) {
-    document::NodeData out = start;
+scene::NodeData followDrag(HandleMode mode, const scene::NodeData& leadStart, const scene::NodeData& leadNow,
+                           const glm::dmat4& leadParentWorld, const scene::NodeData& start,
+                           const glm::dmat4& parentWorld) {
+    scene::NodeData out = start;
     if (mode == HandleMode::Move) {
         const glm::dvec3 worldDelta(
             leadParentWorld * glm::dvec4(leadNow.transform.translate - leadStart.transform.translate, 0.0));

@@ -61,7 +61,7 @@ public:
     int hitTest(QPointF point) const;
 
     // The node data after dragging `axis` from `from` to `to` (widget pixels), starting from `start`.
-    document::NodeData drag(const document::NodeData& start, int axis, QPointF from, QPointF to) const;
+    scene::NodeData drag(const scene::NodeData& start, int axis, QPointF from, QPointF to) const;
 
 private:
     bool m_valid = false;
@@ -79,8 +79,8 @@ private:
 // same world-space displacement, expressed in its own parent's space; Rotate adds the same Euler-angle
 // change, so it turns about its own origin; Scale multiplies each axis by the lead node's factor (an axis on
 // which the lead node started at zero scale has no factor and stays as it is). Only the transform changes.
-document::NodeData followDrag(HandleMode mode, const document::NodeData& leadStart,
-                              const document::NodeData& leadNow, const glm::dmat4& leadParentWorld,
-                              const document::NodeData& start, const glm::dmat4& parentWorld);
+scene::NodeData followDrag(HandleMode mode, const scene::NodeData& leadStart, const scene::NodeData& leadNow,
+                           const glm::dmat4& leadParentWorld, const scene::NodeData& start,
+                           const glm::dmat4& parentWorld);
 
 } // namespace speculum::ui

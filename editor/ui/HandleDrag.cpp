@@ -7,7 +7,7 @@
 
 namespace speculum::ui {
 
-HandleDrag::HandleDrag(document::Scene& scene, QUndoStack& undoStack)
+HandleDrag::HandleDrag(scene::Scene& scene, QUndoStack& undoStack)
     : m_scene(scene)
     , m_undoStack(undoStack) {}
 
@@ -15,20 +15,20 @@ QString HandleDrag::mergeKey() const {
     return QStringLiteral("handle#%1").arg(m_serial);
 }
 
-bool HandleDrag::press(const Gizmo& gizmo, int axis, QPointF position, document::NodeId lead,
-                       const std::vector<document::NodeId>& nodes, double time) {
+bool HandleDrag::press(const Gizmo& gizmo, int axis, QPointF position, scene::NodeId lead,
+                       const std::vector<scene::NodeId>& nodes, double time) {
     release(); // a press while a drag is under way (its release was lost) ends that drag first
-    const document::Node* leadNode = m_scene.findNode(lead);
+    const scene::Node* leadNode = m_scene.findNode(lead);
     if (!gizmo.isValid() || axis < 0 || axis > 2 || !leadNode) {
         return false;
     }
     std::vector<DraggedNode> dragged;
-    for (document::NodeId id : nodes) {
-        const document::Node* node = m_scene.findNode(id);
+    for (scene::NodeId id : nodes) {
+        const scene::Node* node = m_scene.findNode(id);
         if (!node) {
             return false;
         }
-        dragged.push_back({id, node->data(), document::parentWorldMatrix(m_scene, id, time)});
+        dragged.push_back({id, node->data(), scene::parentWorldMatrix(m_scene, id, time)});
     }
     ++m_serial;
     m_state = State::Pressed;
@@ -37,7 +37,7 @@ bool HandleDrag::press(const Gizmo& gizmo, int axis, QPointF position, document:
     m_pressPosition = position;
     m_lead = lead;
     m_leadStart = leadNode->data();
-    m_leadParentWorld = document::parentWorldMatrix(m_scene, lead, time);
+    m_leadParentWorld = scene::parentWorldMatrix(m_scene, lead, time);
     m_nodes = std::move(dragged);
     return true;
 }
@@ -50,7 +50,7 @@ void HandleDrag::move(QPointF position) {
         return;
     }
     m_state = State::Dragging;
-    const document::NodeData lead = m_gizmo.drag(m_leadStart, m_axis, m_pressPosition, position);
+    const scene::NodeData lead = m_gizmo.drag(m_leadStart, m_axis, m_pressPosition, position);
     std::vector<document::SetNodesDataCommand::Change> changes;
     for (const DraggedNode& dragged : m_nodes) {
         if (!m_scene.findNode(dragged.id)) {

@@ -28,13 +28,13 @@ class HandleDrag {
 public:
     enum class State { Idle, Pressed, Dragging, Committed, Cancelled };
 
-    HandleDrag(document::Scene& scene, QUndoStack& undoStack);
+    HandleDrag(scene::Scene& scene, QUndoStack& undoStack);
 
     // Starts a drag of `axis` of `gizmo` (set up on the node `lead` as drawn at animation time `time`) at
     // `position`. The drag moves `nodes` (the selection's roots); lead's handles measure it. Returns false
     // (and starts nothing) when the handles, the axis or a node is not valid. A drag under way ends first.
-    bool press(const Gizmo& gizmo, int axis, QPointF position, document::NodeId lead,
-               const std::vector<document::NodeId>& nodes, double time);
+    bool press(const Gizmo& gizmo, int axis, QPointF position, scene::NodeId lead,
+               const std::vector<scene::NodeId>& nodes, double time);
     // The mouse is at `position`: the nodes follow (Pressed becomes Dragging once the mouse has moved).
     void move(QPointF position);
     // Mouse released: the drag's step (if it changed anything) stays.
@@ -50,21 +50,21 @@ public:
 
 private:
     struct DraggedNode {
-        document::NodeId id = document::kNoNode;
-        document::NodeData start;
+        scene::NodeId id = scene::kNoNode;
+        scene::NodeData start;
         glm::dmat4 parentWorld{1.0};
     };
     QString mergeKey() const;
 
-    document::Scene& m_scene;
+    scene::Scene& m_scene;
     QUndoStack& m_undoStack;
     State m_state = State::Idle;
     Gizmo m_gizmo;
     int m_axis = -1;
     QPointF m_pressPosition;
     // The node the handles sit on, as it was at the press; the drag is measured on it.
-    document::NodeId m_lead = document::kNoNode;
-    document::NodeData m_leadStart;
+    scene::NodeId m_lead = scene::kNoNode;
+    scene::NodeData m_leadStart;
     glm::dmat4 m_leadParentWorld{1.0};
     std::vector<DraggedNode> m_nodes;
     int m_serial = 0; // one merge key per drag

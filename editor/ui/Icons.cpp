@@ -8,7 +8,7 @@
 
 namespace speculum::ui {
 
-NodeKind nodeKind(const document::NodeData& d) {
+NodeKind nodeKind(const scene::NodeData& d) {
     if (d.reflector) {
         return NodeKind::Reflector;
     }

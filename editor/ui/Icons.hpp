@@ -10,7 +10,7 @@ namespace speculum::ui {
 // What a node is, for icons and tooltips: the most specific of its components wins.
 enum class NodeKind { Empty, Mesh, Mirror, Reflector, Light, Camera };
 
-NodeKind nodeKind(const document::NodeData& data);
+NodeKind nodeKind(const scene::NodeData& data);
 QString kindName(NodeKind kind); // "Mesh", "Planar mirror", ...
 
 // Icons drawn with QPainter (crisp at any size, no resource files to ship), cached per kind.

@@ -19,7 +19,7 @@
 namespace speculum::ui {
 
 using document::ComponentInfo;
-using document::NodeData;
+using scene::NodeData;
 
 namespace {
 
@@ -29,8 +29,7 @@ QString quoted(const std::string& name) {
 
 } // namespace
 
-Inspector::Inspector(document::Scene& scene, QUndoStack& undoStack, view::Selection& selection,
-                     QWidget* parent)
+Inspector::Inspector(scene::Scene& scene, QUndoStack& undoStack, view::Selection& selection, QWidget* parent)
     : QWidget(parent)
     , m_scene(scene)
     , m_undoStack(undoStack)
@@ -62,14 +61,14 @@ Inspector::Inspector(document::Scene& scene, QUndoStack& undoStack, view::Select
         clearError();
         rebuild();
     });
-    connect(&scene, &document::Scene::sceneReset, this, &Inspector::rebuild);
-    connect(&scene, &document::Scene::nodeChanged, this, [this](document::NodeId id) {
+    connect(&scene, &scene::Scene::sceneReset, this, &Inspector::rebuild);
+    connect(&scene, &scene::Scene::nodeChanged, this, [this](scene::NodeId id) {
         if (id == m_selection.node()) {
             refresh();
         }
     });
-    connect(&scene, &document::Scene::settingsChanged, this, &Inspector::refresh);
-    connect(&scene, &document::Scene::cameraChanged, this, &Inspector::refresh);
+    connect(&scene, &scene::Scene::settingsChanged, this, &Inspector::refresh);
+    connect(&scene, &scene::Scene::cameraChanged, this, &Inspector::refresh);
     // A new undo step elsewhere (or an undo) ends the current gesture.
     connect(&undoStack, &QUndoStack::indexChanged, this, [this] {
         if (!m_committing) {
@@ -88,7 +87,7 @@ QString Inspector::layoutSignature() const {
     if (m_selection.isCamera()) {
         return QStringLiteral("camera");
     }
-    const document::Node* node = m_selection.selectedNode();
+    const scene::Node* node = m_selection.selectedNode();
     if (!node) {
         return QStringLiteral("scene");
     }
@@ -115,7 +114,7 @@ void Inspector::rebuild() {
     m_contentLayout = new QVBoxLayout(m_content);
     m_contentLayout->setContentsMargins(0, 0, 0, 0);
 
-    if (const document::Node* node = m_selection.selectedNode()) {
+    if (const scene::Node* node = m_selection.selectedNode()) {
         const NodeData& d = node->data();
         m_header->setText(
             QStringLiteral("%1  ·  %2").arg(QString::fromStdString(d.name), kindName(nodeKind(d))));
@@ -162,7 +161,7 @@ void Inspector::refresh() {
         rebuild();
         return;
     }
-    if (const document::Node* node = m_selection.selectedNode()) {
+    if (const scene::Node* node = m_selection.selectedNode()) {
         m_header->setText(
             QStringLiteral("%1  ·  %2")
                 .arg(QString::fromStdString(node->data().name), kindName(nodeKind(node->data()))));
@@ -234,14 +233,14 @@ void Inspector::addComponentButton(const NodeData& d) {
 }
 
 void Inspector::changeComponent(const QString& key, bool add) {
-    const document::Node* node = m_selection.selectedNode();
+    const scene::Node* node = m_selection.selectedNode();
     const ComponentInfo* c = document::findComponent(key);
     if (!node || !c) {
         return;
     }
     if (add && key == QStringLiteral("reflector")) {
-        const document::NodeId other = document::reflectorNode(m_scene);
-        if (other != document::kNoNode && other != node->id()) {
+        const scene::NodeId other = document::reflectorNode(m_scene);
+        if (other != scene::kNoNode && other != node->id()) {
             showError(key, tr("A scene has at most one curved reflector, and %1 already is one.")
                                .arg(quoted(m_scene.findNode(other)->name())));
             return;
@@ -277,7 +276,7 @@ base::Status Inspector::applyValue(const QString& key, const QVariant& value) {
 }
 
 base::Status Inspector::commitNode(const QString& key, const QVariant& value) {
-    const document::Node* node = m_selection.selectedNode();
+    const scene::Node* node = m_selection.selectedNode();
     const auto* p = document::findNodeProperty(key);
     if (!node || !p) {
         return base::Error{"no such property: " + key.toStdString()};
@@ -304,7 +303,7 @@ base::Status Inspector::commitSettings(const QString& key, const QVariant& value
     if (!p) {
         return base::Error{"no such property: " + key.toStdString()};
     }
-    document::SceneSettings settings = m_scene.settings();
+    scene::SceneSettings settings = m_scene.settings();
     if (auto status = p->set(settings, value); !status) {
         return status;
     }
@@ -325,7 +324,7 @@ base::Status Inspector::commitCamera(const QString& key, const QVariant& value) 
     if (!p) {
         return base::Error{"no such property: " + key.toStdString()};
     }
-    document::CameraData camera = m_scene.camera();
+    scene::CameraData camera = m_scene.camera();
     if (auto status = p->set(camera, value); !status) {
         return status;
     }

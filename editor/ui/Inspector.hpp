@@ -28,7 +28,7 @@ class Inspector : public QWidget {
     Q_OBJECT
 
 public:
-    Inspector(document::Scene& scene, QUndoStack& undoStack, view::Selection& selection,
+    Inspector(scene::Scene& scene, QUndoStack& undoStack, view::Selection& selection,
               QWidget* parent = nullptr);
 
     // The editor of a property key ("mirror.reflectivity"), if shown.
@@ -50,7 +50,7 @@ private:
     void clearError();
     void addEditor(QWidget* group, const document::PropertyInfo& info, const QVariant& value);
     QWidget* addGroup(const QString& title, const QString& componentKey, bool removable);
-    void addComponentButton(const document::NodeData& data);
+    void addComponentButton(const scene::NodeData& data);
     void changeComponent(const QString& key, bool add);
     QString mergeKey(const QString& key) const { return key + QLatin1Char('#') + QString::number(m_gesture); }
 
@@ -58,7 +58,7 @@ private:
     base::Status commitSettings(const QString& key, const QVariant& value);
     base::Status commitCamera(const QString& key, const QVariant& value);
 
-    document::Scene& m_scene;
+    scene::Scene& m_scene;
     QUndoStack& m_undoStack;
     view::Selection& m_selection;
     QLabel* m_header = nullptr;

@@ -74,7 +74,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
     , m_session(new document::DocumentSession(this))
     , m_clock(new view::AnimationClock(this))
-    , m_recovery(std::make_unique<document::RecoveryStore>(document::RecoveryStore::forThisProcess())) {
+    , m_recovery(std::make_unique<scene::RecoveryStore>(scene::RecoveryStore::forThisProcess())) {
     m_selection = new view::Selection(scene(), this);
     m_viewport = new Viewport(scene(), m_session->meshes(), *m_clock, this);
     m_viewport->setEditing(m_selection, &undoStack());
@@ -90,7 +90,7 @@ MainWindow::MainWindow(QWidget* parent)
     createViewPlacement();
 
     connect(&undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-    connect(&scene(), &document::Scene::projectPathChanged, this, &MainWindow::updateTitle);
+    connect(&scene(), &scene::Scene::projectPathChanged, this, &MainWindow::updateTitle);
     connect(m_selection, &view::Selection::changed, this, &MainWindow::updateEditActions);
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::onFrameRendered);
     connect(m_viewport, &Viewport::warningsChanged, this, &MainWindow::onWarningsChanged);
@@ -183,8 +183,8 @@ void MainWindow::logMessage(const QString& message) {
 
 // ---- recovery ----
 
-void MainWindow::setRecoveryStore(const document::RecoveryStore& store) {
-    m_recovery = std::make_unique<document::RecoveryStore>(store);
+void MainWindow::setRecoveryStore(const scene::RecoveryStore& store) {
+    m_recovery = std::make_unique<scene::RecoveryStore>(store);
 }
 
 base::Status MainWindow::autosaveNow() {
@@ -199,15 +199,15 @@ base::Status MainWindow::autosaveNow() {
     return status;
 }
 
-base::Status MainWindow::restoreRecovery(const document::RecoveryStore::Recovered& recovered) {
+base::Status MainWindow::restoreRecovery(const scene::RecoveryStore::Recovered& recovered) {
     std::vector<std::string> warnings;
-    auto data = document::RecoveryStore::load(recovered, warnings);
+    auto data = scene::RecoveryStore::load(recovered, warnings);
     if (!data) {
         return base::Error{data.error()};
     }
     cancelImports();
     m_session->replace(std::move(*data), recovered.originalPath, true); // modified until saved
-    document::RecoveryStore::remove(recovered);
+    scene::RecoveryStore::remove(recovered);
     autosaveNow(); // this session now owns the unsaved document
     logMessage(
         tr("Restored unsaved changes of %1 from %2")
@@ -237,10 +237,10 @@ void MainWindow::offerRecovery() {
                                   QString::fromStdString(status.error()));
         }
     } else {
-        document::RecoveryStore::remove(newest);
+        scene::RecoveryStore::remove(newest);
     }
     for (std::size_t i = 1; i < orphans.size(); ++i) {
-        document::RecoveryStore::remove(orphans[i]); // older ones: only the newest is offered
+        scene::RecoveryStore::remove(orphans[i]); // older ones: only the newest is offered
     }
 }
 
@@ -338,8 +338,7 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
     }
     for (const QUrl& url : mime->urls()) {
         const QString path = url.toLocalFile();
-        if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive) ||
-            document::isImportableModel(path)) {
+        if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive) || scene::isImportableModel(path)) {
             event->acceptProposedAction();
             return;
         }
@@ -358,7 +357,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
                                          QString::fromStdString(status.error()));
                 }
             }
-        } else if (document::isImportableModel(path)) {
+        } else if (scene::isImportableModel(path)) {
             // On the worker, one file after the other; a file that fails there shows its own box.
             if (auto status = startModelImport(path, false, true); !status) {
                 failures << QString::fromStdString(status.error());

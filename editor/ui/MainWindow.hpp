@@ -64,8 +64,8 @@ public:
     ~MainWindow() override;
 
     document::DocumentSession& session() { return *m_session; }
-    document::Scene& scene() { return m_session->scene(); }
-    const document::Scene& scene() const { return m_session->scene(); }
+    scene::Scene& scene() { return m_session->scene(); }
+    const scene::Scene& scene() const { return m_session->scene(); }
     QUndoStack& undoStack() { return m_session->undoStack(); }
     Viewport& viewport() { return *m_viewport; }
     view::AnimationClock& clock() { return *m_clock; }
@@ -122,18 +122,18 @@ public:
     base::Status exportGltfFile(const QString& path);
     // File ▸ Export Still, without the dialog: renders on the viewport's context with the same code as
     // `speculum render`. `progress` may cancel (return false).
-    base::Result<document::StillExportResult> exportStillFile(const QString& path,
-                                                              const document::StillExportSettings& settings,
-                                                              const render::ProgressCallback& progress = {});
+    base::Result<scene::StillExportResult> exportStillFile(const QString& path,
+                                                           const scene::StillExportSettings& settings,
+                                                           const render::ProgressCallback& progress = {});
 
     // Crash recovery. The store defaults to RecoveryStore::forThisProcess(); tests use their own folder.
-    void setRecoveryStore(const document::RecoveryStore& store);
-    const document::RecoveryStore& recoveryStore() const { return *m_recovery; }
+    void setRecoveryStore(const scene::RecoveryStore& store);
+    const scene::RecoveryStore& recoveryStore() const { return *m_recovery; }
     // Writes the recovery file now if there are unsaved changes (the timer does it every 30 s, or every
     // SPECULUM_AUTOSAVE_SECONDS).
     base::Status autosaveNow();
     // Loads an orphaned recovery file as the open document, marked modified and titled as its project.
-    base::Status restoreRecovery(const document::RecoveryStore::Recovered& recovered);
+    base::Status restoreRecovery(const scene::RecoveryStore::Recovered& recovered);
     // At start-up: asks whether to restore documents of a crashed session (declined ones are removed).
     void offerRecovery();
 
@@ -179,7 +179,7 @@ private:
     void createDocks();
     void rebuildRecentMenu();
     void addRecentFile(const QString& path);
-    base::Status addTree(document::NodeTree tree);
+    base::Status addTree(scene::NodeTree tree);
     void createImportStatus();
     void startNextImport();
     void onImportDone(); // the running job's finished()
@@ -199,7 +199,7 @@ private:
     Inspector* m_inspector = nullptr;
     RenderPassesPanel* m_passesPanel = nullptr;
     AccuracyPanel* m_accuracyPanel = nullptr;
-    std::unique_ptr<document::RecoveryStore> m_recovery;
+    std::unique_ptr<scene::RecoveryStore> m_recovery;
     QTimer m_autosave;
 
     QMenu* m_viewMenu = nullptr;

@@ -70,7 +70,7 @@ void MainWindow::setInvertVerticalOrbit(bool on) {
 
 // ---- editing ----
 
-base::Status MainWindow::addTree(document::NodeTree tree) {
+base::Status MainWindow::addTree(scene::NodeTree tree) {
     auto added = document::addNodeTree(scene(), undoStack(), std::move(tree));
     if (!added) {
         statusBar()->showMessage(QString::fromStdString(added.error()), 8000);
@@ -106,8 +106,8 @@ base::Status MainWindow::duplicateSelected() {
 }
 
 void MainWindow::selectAll() {
-    std::vector<document::NodeId> all;
-    scene().forEachNode([&](const document::Node& node) { all.push_back(node.id()); });
+    std::vector<scene::NodeId> all;
+    scene().forEachNode([&](const scene::Node& node) { all.push_back(node.id()); });
     m_selection->setNodes(all, m_selection->node());
 }
 
@@ -123,7 +123,7 @@ void MainWindow::updateEditActions() {
 base::Status MainWindow::exportGltfFile(const QString& path) {
     std::vector<std::string> warnings;
     m_viewport->waitForModels(); // read on workers: none may be missing from the file
-    auto status = document::exportGltf(scene(), path, m_viewport->meshes(), warnings);
+    auto status = scene::exportGltf(scene(), path, m_viewport->meshes(), warnings);
     warnings = m_viewport->correctModelWarnings(std::move(warnings));
     for (const auto& w : warnings) {
         logMessage(QString::fromStdString(w));
@@ -137,10 +137,10 @@ base::Status MainWindow::exportGltfFile(const QString& path) {
     return status;
 }
 
-base::Result<document::StillExportResult>
-MainWindow::exportStillFile(const QString& path, const document::StillExportSettings& settings,
-                            const render::ProgressCallback& progress) {
-    if (auto valid = document::validateStillExport(settings, path); !valid) {
+base::Result<scene::StillExportResult> MainWindow::exportStillFile(const QString& path,
+                                                                   const scene::StillExportSettings& settings,
+                                                                   const render::ProgressCallback& progress) {
+    if (auto valid = scene::validateStillExport(settings, path); !valid) {
         return base::Error{valid.error()};
     }
     if (!m_viewport->isValid() || !m_viewport->renderer()) {
@@ -158,8 +158,8 @@ MainWindow::exportStillFile(const QString& path, const document::StillExportSett
         m_viewport->makeCurrent();
         return goOn;
     };
-    auto result = document::exportStill(*m_viewport->renderer(), scene(), m_viewport->meshes(), settings,
-                                        path, keepContext, "editor viewport context");
+    auto result = scene::exportStill(*m_viewport->renderer(), scene(), m_viewport->meshes(), settings, path,
+                                     keepContext, "editor viewport context");
     m_viewport->doneCurrent();
     m_viewport->update();
     if (result) {
@@ -256,7 +256,7 @@ bool MainWindow::onSaveAs() {
 void MainWindow::onImportModel(bool asReflector) {
     const QString path =
         QFileDialog::getOpenFileName(this, asReflector ? tr("Import Reflector Surface") : tr("Import Model"),
-                                     dialogFolder(), document::modelFileFilter());
+                                     dialogFolder(), scene::modelFileFilter());
     if (path.isEmpty()) {
         return;
     }
@@ -296,7 +296,7 @@ void MainWindow::onExportStill() {
     if (dialog.exec() != QDialog::Accepted) {
         return;
     }
-    document::StillExportSettings settings = dialog.settings();
+    scene::StillExportSettings settings = dialog.settings();
     if (dialog.useCurrentView()) {
         settings.camera = m_viewport->viewCamera();
     }

@@ -184,7 +184,7 @@ void MainWindow::onImportDone() {
         finish(false, error);
         return;
     }
-    document::ImportedModel& model = out.model.value();
+    scene::ImportedModel& model = out.model.value();
 
     document::ImportPlacement placement;
     placement.asReflector = request.asReflector;
@@ -206,7 +206,7 @@ void MainWindow::onImportDone() {
     // The document's mesh library gets the model now (through the viewport, which tracks the reads of its
     // files), so the first frame does not read the file again (on the GUI thread).
     m_viewport->adoptModel(request.path.toStdString(),
-                           std::make_shared<const document::ImportedModel>(std::move(model)));
+                           std::make_shared<const scene::ImportedModel>(std::move(model)));
 
     if (auto added = addTree(std::move(placed.tree)); !added) {
         logMessage(tr("Could not import %1: %2").arg(request.path, QString::fromStdString(added.error())));

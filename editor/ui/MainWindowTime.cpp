@@ -26,10 +26,10 @@ void MainWindow::createTimeline() {
     addToolBar(Qt::BottomToolBarArea, bar);
     m_viewMenu->addAction(bar->toggleViewAction());
 
-    connect(&scene(), &document::Scene::changed, this, &MainWindow::updateTimelineRange);
+    connect(&scene(), &scene::Scene::changed, this, &MainWindow::updateTimelineRange);
     // A new document starts at t = 0, paused: the last one's clock means nothing for it (Blender opens a
     // file on its first frame and does not play it).
-    connect(&scene(), &document::Scene::sceneReset, this, [this] {
+    connect(&scene(), &scene::Scene::sceneReset, this, [this] {
         updateTimelineRange();
         resetClock();
     });
@@ -37,9 +37,9 @@ void MainWindow::createTimeline() {
 }
 
 void MainWindow::updateTimelineRange() {
-    const double loop = document::animationLoopSeconds(scene());
+    const double loop = scene::animationLoopSeconds(scene());
     m_clock->setLoopSeconds(loop);
-    m_timeSlider->setDuration(loop, document::sceneHasAnimation(scene()));
+    m_timeSlider->setDuration(loop, scene::sceneHasAnimation(scene()));
 }
 
 void MainWindow::resetClock() {

@@ -22,7 +22,7 @@ void MainWindow::createViewPlacement() {
 
 void MainWindow::rememberEditorView() {
     const auto [position, target] = m_viewport->viewPositionTarget();
-    document::EditorView view;
+    scene::EditorView view;
     view.position = position;
     view.target = target;
     if (const auto& old = scene().editorView()) {

@@ -52,17 +52,17 @@ void ModelImportJob::run() {
         QMetaObject::invokeMethod(
             this, [this, fraction, text] { emit progress(fraction, text); }, Qt::QueuedConnection);
     };
-    document::ImportControl control{report, &m_cancel};
+    scene::ImportControl control{report, &m_cancel};
     report(0.0, "reading");
     Output out;
-    out.model = document::importModelFile(m_path.toStdString(), out.warnings, control);
+    out.model = scene::importModelFile(m_path.toStdString(), out.warnings, control);
     if (out.model && !m_cancel) {
         // The pick hierarchies (cached per mesh) now, off the GUI thread.
         const auto& parts = out.model->parts;
         for (std::size_t i = 0; i < parts.size() && !m_cancel; ++i) {
             report(0.95 + 0.04 * double(i) / double(parts.size()), "pick structure");
             if (parts[i].mesh) {
-                document::meshPickAccel(parts[i].mesh);
+                scene::meshPickAccel(parts[i].mesh);
             }
         }
     }

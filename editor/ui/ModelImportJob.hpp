@@ -16,7 +16,7 @@ class QThread;
 
 namespace speculum::ui {
 
-// One model file read on a worker thread: document::importModelFile with progress and cancel, then the
+// One model file read on a worker thread: scene::importModelFile with progress and cancel, then the
 // pick hierarchies of its parts (so the first click on a big model does not build them on the GUI thread).
 // The worker touches no document and no widget: it only fills the result, which the GUI thread takes after
 // finished(). Progress reaches the GUI thread through queued signals. Destroying a running job cancels it and
@@ -26,7 +26,7 @@ class ModelImportJob : public QObject {
 
 public:
     struct Output {
-        base::Result<document::ImportedModel> model = base::Error{"not run"};
+        base::Result<scene::ImportedModel> model = base::Error{"not run"};
         std::vector<std::string> warnings;
     };
 

@@ -12,14 +12,14 @@
 
 namespace speculum::ui {
 
-using document::kNoNode;
-using document::NodeId;
+using scene::kNoNode;
+using scene::NodeId;
 
-SceneTreeModel::SceneTreeModel(document::Scene& scene, QUndoStack& undoStack, QObject* parent)
+SceneTreeModel::SceneTreeModel(scene::Scene& scene, QUndoStack& undoStack, QObject* parent)
     : QAbstractItemModel(parent)
     , m_scene(scene)
     , m_undoStack(undoStack) {
-    using document::Scene;
+    using scene::Scene;
     connect(&scene, &Scene::aboutToReset, this, [this] { beginResetModel(); });
     connect(&scene, &Scene::sceneReset, this, [this] { endResetModel(); });
     connect(&scene, &Scene::nodeAboutToBeAdded, this, [this](NodeId parent, int index) {
@@ -83,7 +83,7 @@ QModelIndex SceneTreeModel::index(int row, int column, const QModelIndex& parent
         }
         return createIndex(row, 0, quintptr(nodes[std::size_t(row - 1)]->id()));
     }
-    const document::Node* node = m_scene.findNode(nodeId(parent));
+    const scene::Node* node = m_scene.findNode(nodeId(parent));
     if (!node || row >= node->childCount()) {
         return {};
     }
@@ -126,7 +126,7 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
             return {};
         }
     }
-    const document::Node* node = m_scene.findNode(nodeId(index));
+    const scene::Node* node = m_scene.findNode(nodeId(index));
     if (!node) {
         return {};
     }
@@ -145,7 +145,7 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
 
 bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, int role) {
     const NodeId id = nodeId(index);
-    const document::Node* node = m_scene.findNode(id);
+    const scene::Node* node = m_scene.findNode(id);
     if (role != Qt::EditRole || !node) {
         return false;
     }

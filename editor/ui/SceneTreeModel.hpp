@@ -20,12 +20,12 @@ public:
     static constexpr quintptr kCameraId = ~quintptr(0);
     static constexpr const char* kMimeType = "application/x-speculum-node-ids";
 
-    SceneTreeModel(document::Scene& scene, QUndoStack& undoStack, QObject* parent = nullptr);
+    SceneTreeModel(scene::Scene& scene, QUndoStack& undoStack, QObject* parent = nullptr);
 
-    QModelIndex indexOf(document::NodeId id) const;
+    QModelIndex indexOf(scene::NodeId id) const;
     QModelIndex cameraIndex() const;
     // kNoNode for the camera row and invalid indexes.
-    document::NodeId nodeId(const QModelIndex& index) const;
+    scene::NodeId nodeId(const QModelIndex& index) const;
     bool isCamera(const QModelIndex& index) const;
     // True while rows are being removed: views move their current index then, which is no user's choice.
     bool isRemovingRows() const { return m_removing; }
@@ -51,17 +51,17 @@ public:
     // current children (-1 = at the end), one after the other in tree order, as one undo step
     // (document::moveNodes). False when a move is impossible (a target in one of their subtrees) or
     // nothing changes.
-    bool moveNodes(const std::vector<document::NodeId>& ids, document::NodeId newParent, int index);
+    bool moveNodes(const std::vector<scene::NodeId>& ids, scene::NodeId newParent, int index);
 
 private:
     // Top-level scene index <-> model row (the camera row comes first).
-    static int rowOf(document::NodeId parent, int sceneIndex) {
-        return parent == document::kNoNode ? sceneIndex + 1 : sceneIndex;
+    static int rowOf(scene::NodeId parent, int sceneIndex) {
+        return parent == scene::kNoNode ? sceneIndex + 1 : sceneIndex;
     }
-    QModelIndex parentIndexOf(document::NodeId parent) const;
-    std::vector<document::NodeId> decode(const QMimeData* data) const;
+    QModelIndex parentIndexOf(scene::NodeId parent) const;
+    std::vector<scene::NodeId> decode(const QMimeData* data) const;
 
-    document::Scene& m_scene;
+    scene::Scene& m_scene;
     QUndoStack& m_undoStack;
     bool m_removing = false;
 };

@@ -91,7 +91,7 @@ void SceneTreePanel::syncFromSelection() {
     if (m_selection.isCamera()) {
         add(m_model.cameraIndex());
     } else {
-        for (document::NodeId id : m_selection.nodes()) { // the current node is last
+        for (scene::NodeId id : m_selection.nodes()) { // the current node is last
             add(m_model.indexOf(id));
         }
     }
@@ -116,7 +116,7 @@ void SceneTreePanel::syncToSelection() {
     const QModelIndex currentIndex = model->currentIndex();
     const bool currentSelected = currentIndex.isValid() && model->isSelected(currentIndex);
     bool camera = false;
-    std::vector<document::NodeId> ids;
+    std::vector<scene::NodeId> ids;
     for (const QModelIndex& index : model->selectedIndexes()) {
         if (m_model.isCamera(index)) {
             camera = true;
@@ -134,18 +134,18 @@ void SceneTreePanel::syncToSelection() {
         m_selection.clear();
     } else {
         // Keep the order in which the nodes were picked: those already selected first, in their order.
-        std::vector<document::NodeId> ordered;
-        for (document::NodeId id : m_selection.nodes()) {
+        std::vector<scene::NodeId> ordered;
+        for (scene::NodeId id : m_selection.nodes()) {
             if (std::find(ids.begin(), ids.end(), id) != ids.end()) {
                 ordered.push_back(id);
             }
         }
-        for (document::NodeId id : ids) {
+        for (scene::NodeId id : ids) {
             if (std::find(ordered.begin(), ordered.end(), id) == ordered.end()) {
                 ordered.push_back(id);
             }
         }
-        m_selection.setNodes(ordered, currentSelected ? m_model.nodeId(currentIndex) : document::kNoNode);
+        m_selection.setNodes(ordered, currentSelected ? m_model.nodeId(currentIndex) : scene::kNoNode);
     }
     m_syncing = false;
     if (mixed) {

@@ -23,17 +23,17 @@ SweepRunJob::~SweepRunJob() {
     }
 }
 
-accuracy::SweepInput SweepRunJob::inputFor(const document::Scene& scene, document::MeshLibrary& meshes,
+accuracy::SweepInput SweepRunJob::inputFor(const scene::Scene& scene, scene::MeshLibrary& meshes,
                                            const QString& sceneName, bool quick,
                                            std::vector<std::string>& warnings) {
     accuracy::SweepInput input;
     input.sceneName = sceneName.toStdString();
     input.quick = quick;
-    input.scene = document::snapshot(scene, 0.0, meshes, warnings);
+    input.scene = scene::snapshot(scene, 0.0, meshes, warnings);
     std::set<int> tessellations;
-    scene.forEachNode([&](const document::Node& node) {
+    scene.forEachNode([&](const scene::Node& node) {
         const auto& mesh = node.data().mesh;
-        if (mesh && mesh->builtin == document::BuiltinMesh::Teapot) {
+        if (mesh && mesh->builtin == scene::BuiltinMesh::Teapot) {
             tessellations.insert(mesh->tessellation);
         }
     });
@@ -44,11 +44,11 @@ accuracy::SweepInput SweepRunJob::inputFor(const document::Scene& scene, documen
     // a library of its own (a MeshLibrary is not shared across threads) and swaps by identity, as the bench.
     std::set<const render::MeshData*> teapots;
     for (int t : tessellations) {
-        teapots.insert(meshes.builtin(document::BuiltinMesh::Teapot, t).get());
+        teapots.insert(meshes.builtin(scene::BuiltinMesh::Teapot, t).get());
     }
-    auto own = std::make_shared<document::MeshLibrary>();
+    auto own = std::make_shared<scene::MeshLibrary>();
     input.tessellate = [teapots, own](const render::MeshHandle& mesh, int tessellation) {
-        return teapots.count(mesh.get()) ? own->builtin(document::BuiltinMesh::Teapot, tessellation) : mesh;
+        return teapots.count(mesh.get()) ? own->builtin(scene::BuiltinMesh::Teapot, tessellation) : mesh;
     };
     return input;
 }

@@ -9,10 +9,10 @@
 #include <thread>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 class MeshLibrary;
 class Scene;
-} // namespace speculum::document
+} // namespace speculum::scene
 
 namespace speculum::ui {
 
@@ -29,7 +29,7 @@ public:
 
     // The frame `speculum bench` measures: the scene at t = 0 through its own camera. `meshes` is the
     // library the snapshot's meshes came from (its built-in teapots are swapped by identity).
-    static accuracy::SweepInput inputFor(const document::Scene& scene, document::MeshLibrary& meshes,
+    static accuracy::SweepInput inputFor(const scene::Scene& scene, scene::MeshLibrary& meshes,
                                          const QString& sceneName, bool quick,
                                          std::vector<std::string>& warnings);
 

@@ -47,8 +47,7 @@ constexpr unsigned kSrgbTextureFormat = 0x8C43;
 
 } // namespace
 
-Viewport::Viewport(document::Scene& scene, document::MeshLibrary& meshes, AnimationClock& clock,
-                   QWidget* parent)
+Viewport::Viewport(scene::Scene& scene, scene::MeshLibrary& meshes, AnimationClock& clock, QWidget* parent)
     : QOpenGLWidget(parent)
     , m_scene(scene)
     , m_clock(clock)
@@ -60,7 +59,7 @@ Viewport::Viewport(document::Scene& scene, document::MeshLibrary& meshes, Animat
     // An sRGB colour texture: the renderer draws a frame that needs no half-float buffer straight into it
     // (render::RenderTarget::srgbDepthStencil), with no copy; Qt composes it into the window as sRGB.
     setTextureFormat(kSrgbTextureFormat);
-    m_view.reset(document::toRender(m_scene.camera()));
+    m_view.reset(scene::toRender(m_scene.camera()));
     m_overlay = new ViewportOverlay(*this);
     m_models = new ViewportModels(m_meshes, this);
     connect(m_models, &ViewportModels::changed, this, qOverload<>(&Viewport::update));
@@ -68,17 +67,17 @@ Viewport::Viewport(document::Scene& scene, document::MeshLibrary& meshes, Animat
     // The viewport draws only when what it shows changes (issue 16: a static scene costs nothing at idle):
     // an edit, a new document, navigation, a time jump, a model read in, a resize, or the clock running
     // over a scene where something moves. Nothing the frame reports leads back to another frame.
-    connect(&m_scene, &document::Scene::changed, this, [this] {
+    connect(&m_scene, &scene::Scene::changed, this, [this] {
         updateTicking(); // an edit may add or remove the scene's only animation
         update();
     });
     // A camera edit or a newly opened document: show the document's camera again.
-    connect(&m_scene, &document::Scene::cameraChanged, this, &Viewport::resetView);
+    connect(&m_scene, &scene::Scene::cameraChanged, this, &Viewport::resetView);
     // The session has replaced its mesh library by then (on aboutToReset): the reads running for the old
     // document are of no use.
     // Connected here, in the constructor, so it runs before any connection made to sceneReset once the
     // viewport exists: viewReset() is emitted when the view is back on the new scene camera.
-    connect(&m_scene, &document::Scene::sceneReset, this, [this] {
+    connect(&m_scene, &scene::Scene::sceneReset, this, [this] {
         m_models->clear();
         updateTicking();
         resetView();
@@ -104,7 +103,7 @@ Viewport::~Viewport() {
     releaseGlResources();
 }
 
-document::MeshLibrary& Viewport::meshes() {
+scene::MeshLibrary& Viewport::meshes() {
     m_models->prepare(m_scene);
     return m_meshes;
 }
@@ -134,7 +133,7 @@ std::vector<std::string> Viewport::correctModelWarnings(std::vector<std::string>
 }
 
 void Viewport::adoptModel(const std::string& absolutePath,
-                          std::shared_ptr<const document::ImportedModel> model) {
+                          std::shared_ptr<const scene::ImportedModel> model) {
     m_models->adopt(absolutePath, std::move(model));
 }
 
@@ -168,12 +167,12 @@ void Viewport::setLookThroughSceneCamera(bool on) {
 }
 
 void Viewport::resetView() {
-    m_view.reset(document::toRender(m_scene.camera()));
+    m_view.reset(scene::toRender(m_scene.camera()));
     update();
 }
 
 render::Camera Viewport::sceneCamera() const {
-    return document::toRender(m_scene.camera());
+    return scene::toRender(m_scene.camera());
 }
 
 void Viewport::setViewCamera(const render::Camera& camera) {
@@ -250,21 +249,21 @@ void Viewport::frameOnScreen() {
 void Viewport::frameSelected() {
     m_models->prepare(m_scene);
     const double t = m_clock.time();
-    const auto worlds = document::worldMatrices(m_scene, t);
+    const auto worlds = scene::worldMatrices(m_scene, t);
     render::math::Box box;
     std::vector<std::string> ignored;
     // What a node draws (its mesh, its mirror), without its children; false when it draws nothing.
-    auto addOwn = [&](const document::Node& node) {
+    auto addOwn = [&](const scene::Node& node) {
         const auto it = worlds.find(node.id());
         if (it == worlds.end()) {
             return false;
         }
-        const document::NodeData& d = node.data();
+        const scene::NodeData& d = node.data();
         const glm::dmat4& world = it->second;
         bool added = false;
         if (d.mesh) {
             if (auto mesh = m_meshes.get(*d.mesh, ignored)) {
-                box.add(render::math::worldBounds(document::meshBounds(*mesh), world));
+                box.add(render::math::worldBounds(scene::meshBounds(*mesh), world));
                 added = true;
             }
         }
@@ -276,14 +275,14 @@ void Viewport::frameSelected() {
         return added;
     };
     // A selected group (an imported model's root) frames everything under it.
-    std::function<bool(const document::Node&)> addSubtree = [&](const document::Node& node) {
+    std::function<bool(const scene::Node&)> addSubtree = [&](const scene::Node& node) {
         bool added = addOwn(node);
         for (const auto& child : node.children()) {
             added = addSubtree(*child) || added;
         }
         return added;
     };
-    auto addNode = [&](const document::Node& node) {
+    auto addNode = [&](const scene::Node& node) {
         if (!addSubtree(node)) {
             const auto it = worlds.find(node.id());
             if (it == worlds.end()) {
@@ -296,8 +295,8 @@ void Viewport::frameSelected() {
     };
     bool any = false;
     if (m_selection) {
-        for (document::NodeId id : m_selection->nodes()) {
-            if (const document::Node* node = m_scene.findNode(id)) {
+        for (scene::NodeId id : m_selection->nodes()) {
+            if (const scene::Node* node = m_scene.findNode(id)) {
                 addNode(*node);
                 any = true;
             }
@@ -317,7 +316,7 @@ void Viewport::frameSelected() {
 }
 
 void Viewport::updateTicking() {
-    m_sceneAnimated = document::sceneHasAnimation(m_scene);
+    m_sceneAnimated = scene::sceneHasAnimation(m_scene);
     // A clock running over a scene where nothing moves draws nothing new: no frames then.
     if (m_clock.isPlaying() && m_sceneAnimated) {
         m_tick.start();
@@ -378,7 +377,7 @@ void Viewport::paintGL() {
     std::vector<std::string> warnings;
     // Model files are read on workers (ViewportModels), never here: a file still loading draws nothing yet.
     m_models->prepare(m_scene);
-    render::FrameInput input = document::snapshot(m_scene, time, m_meshes, warnings);
+    render::FrameInput input = scene::snapshot(m_scene, time, m_meshes, warnings);
     warnings = m_models->correct(std::move(warnings));
     input.camera = m_view.camera();
 
@@ -483,14 +482,14 @@ ScreenProjection Viewport::projection() const {
 }
 
 void Viewport::updateGizmo() {
-    const document::Node* node = m_selection ? m_selection->selectedNode() : nullptr;
+    const scene::Node* node = m_selection ? m_selection->selectedNode() : nullptr;
     if (!node || !m_undoStack) {
         m_gizmo = Gizmo{};
         return;
     }
     const double t = m_lastFrameTime;
-    const glm::dmat4 parent = document::parentWorldMatrix(m_scene, node->id(), t);
-    const glm::dmat4 world = parent * document::animatedLocalMatrix(node->data(), t);
+    const glm::dmat4 parent = scene::parentWorldMatrix(m_scene, node->id(), t);
+    const glm::dmat4 world = parent * scene::animatedLocalMatrix(node->data(), t);
     m_gizmo.setUp(m_handleMode, projection(), parent, world);
 }
 
@@ -517,8 +516,8 @@ std::uint64_t Viewport::pickAt(QPointF position, bool mirrorItself) {
     // Lights have no surface: they are picked by their marker.
     std::uint64_t light = 0;
     double nearest = kLightPickPixels;
-    const auto worlds = document::worldMatrices(m_scene, t);
-    m_scene.forEachNode([&](const document::Node& node) {
+    const auto worlds = scene::worldMatrices(m_scene, t);
+    m_scene.forEachNode([&](const scene::Node& node) {
         if (!node.data().light) {
             return;
         }
@@ -534,14 +533,14 @@ std::uint64_t Viewport::pickAt(QPointF position, bool mirrorItself) {
         return light;
     }
     m_models->prepare(m_scene);
-    document::PickScene pickScene = document::buildPickScene(m_scene, t, m_meshes);
+    scene::PickScene pickScene = scene::buildPickScene(m_scene, t, m_meshes);
     if (mirrorItself) {
         pickScene.mirrorDepth = 0;
     }
     const double w = std::max(width(), 1), h = std::max(height(), 1);
-    const document::Ray ray = document::cameraRay(m_view.camera(), w / h, position.x() / w * 2.0 - 1.0,
-                                                  1.0 - position.y() / h * 2.0);
-    const auto hit = document::pick(pickScene, ray);
+    const scene::Ray ray =
+        scene::cameraRay(m_view.camera(), w / h, position.x() / w * 2.0 - 1.0, 1.0 - position.y() / h * 2.0);
+    const auto hit = scene::pick(pickScene, ray);
     return hit ? hit->id : 0;
 }
 
@@ -552,10 +551,10 @@ void Viewport::paintOverlay(QPainter& painter) {
     }
     const ScreenProjection screen = projection();
     const double t = m_lastFrameTime;
-    const auto worlds = document::worldMatrices(m_scene, t);
+    const auto worlds = scene::worldMatrices(m_scene, t);
 
     // Light markers: lights have no surface in the frame, so show where they are.
-    m_scene.forEachNode([&](const document::Node& node) {
+    m_scene.forEachNode([&](const scene::Node& node) {
         if (!node.data().light) {
             return;
         }
@@ -579,14 +578,14 @@ void Viewport::paintOverlay(QPainter& painter) {
     // Selection outlines: each selected node's local box (mesh bounds, or the mirror rectangle) in world
     // space; the current node's is brighter and drawn last, on top.
     std::vector<std::string> ignored;
-    for (document::NodeId id : m_selection->nodes()) {
-        const document::Node* node = m_scene.findNode(id);
+    for (scene::NodeId id : m_selection->nodes()) {
+        const scene::Node* node = m_scene.findNode(id);
         const auto found = worlds.find(id);
         if (!node || found == worlds.end()) {
             continue;
         }
         const glm::dmat4& world = found->second;
-        const document::NodeData& d = node->data();
+        const scene::NodeData& d = node->data();
         std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
         auto addBox = [&](glm::dvec3 lo, glm::dvec3 hi) {
             glm::dvec3 c[8];
@@ -602,7 +601,7 @@ void Viewport::paintOverlay(QPainter& painter) {
         };
         if (d.mesh) {
             if (auto mesh = m_meshes.get(*d.mesh, ignored)) {
-                const render::Bounds b = document::meshBounds(*mesh);
+                const render::Bounds b = scene::meshBounds(*mesh);
                 addBox(glm::dvec3(b.min), glm::dvec3(b.max));
             }
         }
@@ -664,7 +663,7 @@ void Viewport::paintOverlay(QPainter& painter) {
 void Viewport::navigated() {
     if (m_sceneCameraMode && m_undoStack) {
         // Looking through the scene camera: the navigation is an edit of the document's camera.
-        document::CameraData camera = m_scene.camera();
+        scene::CameraData camera = m_scene.camera();
         const render::Camera& v = m_view.camera();
         camera.position = v.position;
         camera.target = v.target;
@@ -758,9 +757,9 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         const std::uint64_t id = pickAt(m_pressPosition, m_pressAlt);
         if (m_pressCtrl) {
             // Ctrl+click adds or removes; Ctrl+click on nothing keeps the selection.
-            m_selection->toggleNode(document::NodeId(id));
+            m_selection->toggleNode(scene::NodeId(id));
         } else if (id) {
-            m_selection->selectNode(document::NodeId(id));
+            m_selection->selectNode(scene::NodeId(id));
         } else {
             m_selection->clear();
         }

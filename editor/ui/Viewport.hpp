@@ -19,9 +19,9 @@
 class QPainter;
 class QUndoStack;
 
-namespace speculum::document {
+namespace speculum::scene {
 class Scene;
-}
+} // namespace speculum::scene
 namespace speculum::view {
 class AnimationClock;
 class Selection;
@@ -60,7 +60,7 @@ class Viewport : public QOpenGLWidget {
 public:
     // `meshes` is the document session's mesh library: the viewport draws and picks with it, and hands it
     // the models its workers read.
-    Viewport(document::Scene& scene, document::MeshLibrary& meshes, view::AnimationClock& clock,
+    Viewport(scene::Scene& scene, scene::MeshLibrary& meshes, view::AnimationClock& clock,
              QWidget* parent = nullptr);
     ~Viewport() override;
 
@@ -84,7 +84,7 @@ public:
     // The document's mesh library. Asking for it starts the reads of the scene's model files on workers
     // (ViewportModels): a file not read yet is an empty stand-in until it is; waitForModels() waits for
     // them (export does, so a still never lacks a model that is still loading).
-    document::MeshLibrary& meshes();
+    scene::MeshLibrary& meshes();
     bool modelsLoading() const;
     // Runs the event loop until every model file the scene references is read (or failed).
     void waitForModels();
@@ -92,7 +92,7 @@ public:
     // that failed on the workers put right (the stand-ins would make them say "no triangles", or nothing).
     std::vector<std::string> correctModelWarnings(std::vector<std::string> warnings);
     // A model read elsewhere (Import's worker), so the viewport does not read the file again.
-    void adoptModel(const std::string& absolutePath, std::shared_ptr<const document::ImportedModel> model);
+    void adoptModel(const std::string& absolutePath, std::shared_ptr<const scene::ImportedModel> model);
     const render::Camera& viewCamera() const { return m_view.camera(); }
     // The document's camera (what `speculum render` draws), as the renderer takes it.
     render::Camera sceneCamera() const;
@@ -100,7 +100,7 @@ public:
     // plane stay the view's. Looking through the scene camera, it is an edit of that camera, as
     // navigation is. Repaints.
     void setViewCamera(const render::Camera& camera);
-    // Where the view looks from and at, for the project's saved editor view (document::EditorView).
+    // Where the view looks from and at, for the project's saved editor view (scene::EditorView).
     std::pair<glm::dvec3, glm::dvec3> viewPositionTarget() const;
     // Puts the view at `position` looking at `target` (a saved editor view: view::ViewCamera::place),
     // keeping the view's up, field of view and near plane (the scene camera's right after a reset);
@@ -202,17 +202,17 @@ private:
     void updateGizmo();
     ScreenProjection projection() const;
 
-    document::Scene& m_scene;
+    scene::Scene& m_scene;
     view::AnimationClock& m_clock;
     view::Selection* m_selection = nullptr;
     QUndoStack* m_undoStack = nullptr;
-    document::MeshLibrary& m_meshes; // kept across frames: the renderer keys GPU meshes on the handles
+    scene::MeshLibrary& m_meshes; // kept across frames: the renderer keys GPU meshes on the handles
     std::unique_ptr<render::Renderer> m_renderer;
     QString m_rendererError;
     bool m_skipsSrgbDecode = false; // the context has EXT_texture_sRGB_decode (initializeGL)
     view::ViewCamera m_view;
     QTimer m_tick;                // drives repaints while the animation plays over a scene that moves
-    bool m_sceneAnimated = false; // document::sceneHasAnimation, kept up to date on every change
+    bool m_sceneAnimated = false; // scene::sceneHasAnimation, kept up to date on every change
     ViewportOverlay* m_overlay = nullptr;
     ViewportModels* m_models = nullptr; // reads the scene's model files off the GUI thread
 

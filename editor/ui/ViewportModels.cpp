@@ -26,7 +26,7 @@ std::string fileName(const std::string& path) {
 
 } // namespace
 
-ViewportModels::ViewportModels(document::MeshLibrary& meshes, QObject* parent)
+ViewportModels::ViewportModels(scene::MeshLibrary& meshes, QObject* parent)
     : QObject(parent)
     , m_meshes(meshes) {}
 
@@ -56,19 +56,19 @@ void ViewportModels::clear() {
     m_pendingWarnings.clear();
 }
 
-void ViewportModels::prepare(const document::Scene& scene) {
+void ViewportModels::prepare(const scene::Scene& scene) {
     m_users.clear();
     const bool hasProject = !scene.projectPath().isEmpty();
     const QDir projectDir = QFileInfo(scene.projectPath()).absoluteDir();
-    // As document::snapshot resolves them: relative paths (set by code) against the project's folder.
+    // As scene::snapshot resolves them: relative paths (set by code) against the project's folder.
     auto absolute = [&](const std::string& path) {
         if (path.empty() || !hasProject || !QDir::isRelativePath(QString::fromStdString(path))) {
             return path;
         }
         return QDir::cleanPath(projectDir.absoluteFilePath(QString::fromStdString(path))).toStdString();
     };
-    scene.forEachNode([&](const document::Node& node) {
-        const document::NodeData& d = node.data();
+    scene.forEachNode([&](const scene::Node& node) {
+        const scene::NodeData& d = node.data();
         if (d.mesh && !d.mesh->builtin && !d.mesh->file.empty()) {
             need(d.name, absolute(d.mesh->file));
         }
@@ -126,7 +126,7 @@ void ViewportModels::need(const std::string& node, const std::string& path) {
 
 void ViewportModels::start(const std::string& path, Entry& entry) {
     // The stand-in, keyed by the file as it is now, keeps the library from reading the file itself.
-    m_meshes.addModel(path, std::make_shared<const document::ImportedModel>());
+    m_meshes.addModel(path, std::make_shared<const scene::ImportedModel>());
     auto* job = new ModelImportJob(QString::fromStdString(path), this);
     connect(job, &ModelImportJob::finished, this, [this, job] { finished(job); });
     entry.state = State::Loading;
@@ -149,7 +149,7 @@ void ViewportModels::finished(ModelImportJob* job) {
     }
     if (out.model) {
         m_meshes.addModel(it->first,
-                          std::make_shared<const document::ImportedModel>(std::move(out.model).value()));
+                          std::make_shared<const scene::ImportedModel>(std::move(out.model).value()));
         e.state = State::Ready;
     } else {
         e.state = State::Failed;
@@ -159,7 +159,7 @@ void ViewportModels::finished(ModelImportJob* job) {
 }
 
 void ViewportModels::adopt(const std::string& absolutePath,
-                           std::shared_ptr<const document::ImportedModel> model) {
+                           std::shared_ptr<const scene::ImportedModel> model) {
     const QFileInfo info(QString::fromStdString(absolutePath));
     if (!model || !info.isFile()) {
         return;

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 class MeshLibrary;
 class Scene;
-} // namespace speculum::document
+} // namespace speculum::scene
 
 namespace speculum::ui {
 
@@ -34,18 +34,18 @@ class ViewportModels : public QObject {
     Q_OBJECT
 
 public:
-    explicit ViewportModels(document::MeshLibrary& meshes, QObject* parent = nullptr);
+    explicit ViewportModels(scene::MeshLibrary& meshes, QObject* parent = nullptr);
     ~ViewportModels() override;
 
     // Starts the reads the scene needs (a stat per referenced file when nothing changed).
-    void prepare(const document::Scene& scene);
+    void prepare(const scene::Scene& scene);
     // A model read elsewhere (Import's worker) for the file as it is now.
-    void adopt(const std::string& absolutePath, std::shared_ptr<const document::ImportedModel> model);
+    void adopt(const std::string& absolutePath, std::shared_ptr<const scene::ImportedModel> model);
     // The document was replaced (the library was cleared): forget everything; running reads are cancelled.
     void clear();
     bool isLoading() const;
 
-    // The frame's warnings (document::snapshot's) with those about nodes whose file is still loading or
+    // The frame's warnings (scene::snapshot's) with those about nodes whose file is still loading or
     // failed replaced by what is true ("loading", the real error), plus the warnings of reads that ended
     // since the last call (unless takePending is false: an export's warnings, the viewport shows those).
     std::vector<std::string> correct(std::vector<std::string> warnings, bool takePending = true);
@@ -71,7 +71,7 @@ private:
     void retire(ModelImportJob* job);
     void need(const std::string& node, const std::string& path);
 
-    document::MeshLibrary& m_meshes;
+    scene::MeshLibrary& m_meshes;
     std::map<std::string, Entry> m_entries;
     std::vector<User> m_users;                  // of the last prepare()
     std::vector<std::string> m_pendingWarnings; // of reads that ended, not shown yet

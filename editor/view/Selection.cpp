@@ -4,34 +4,34 @@
 
 namespace speculum::view {
 
-Selection::Selection(document::Scene& scene, QObject* parent)
+Selection::Selection(scene::Scene& scene, QObject* parent)
     : QObject(parent)
     , m_scene(scene) {
     // Queued: a move takes the node out and puts it back within one command; only a node still gone
     // after the command is deselected.
     connect(
-        &scene, &document::Scene::nodeRemoved, this,
+        &scene, &scene::Scene::nodeRemoved, this,
         [this] {
-            std::vector<document::NodeId> kept;
+            std::vector<scene::NodeId> kept;
             std::copy_if(m_nodes.begin(), m_nodes.end(), std::back_inserter(kept),
-                         [this](document::NodeId id) { return m_scene.findNode(id) != nullptr; });
+                         [this](scene::NodeId id) { return m_scene.findNode(id) != nullptr; });
             assign(std::move(kept), m_camera);
         },
         Qt::QueuedConnection);
-    connect(&scene, &document::Scene::sceneReset, this, &Selection::clear);
+    connect(&scene, &scene::Scene::sceneReset, this, &Selection::clear);
 }
 
-bool Selection::contains(document::NodeId id) const {
+bool Selection::contains(scene::NodeId id) const {
     return std::find(m_nodes.begin(), m_nodes.end(), id) != m_nodes.end();
 }
 
-std::vector<document::NodeId> Selection::roots() const {
-    std::vector<document::NodeId> roots;
-    for (document::NodeId id : m_nodes) {
+std::vector<scene::NodeId> Selection::roots() const {
+    std::vector<scene::NodeId> roots;
+    for (scene::NodeId id : m_nodes) {
         if (!m_scene.findNode(id)) {
             continue;
         }
-        const bool underAnother = std::any_of(m_nodes.begin(), m_nodes.end(), [&](document::NodeId other) {
+        const bool underAnother = std::any_of(m_nodes.begin(), m_nodes.end(), [&](scene::NodeId other) {
             return other != id && m_scene.isAncestor(other, id);
         });
         if (!underAnother) {
@@ -41,7 +41,7 @@ std::vector<document::NodeId> Selection::roots() const {
     return roots;
 }
 
-void Selection::assign(std::vector<document::NodeId> nodes, bool camera) {
+void Selection::assign(std::vector<scene::NodeId> nodes, bool camera) {
     if (nodes == m_nodes && camera == m_camera) {
         return;
     }
@@ -50,19 +50,19 @@ void Selection::assign(std::vector<document::NodeId> nodes, bool camera) {
     emit changed();
 }
 
-void Selection::selectNode(document::NodeId id) {
-    if (id == document::kNoNode || !m_scene.findNode(id)) {
+void Selection::selectNode(scene::NodeId id) {
+    if (id == scene::kNoNode || !m_scene.findNode(id)) {
         assign({}, false);
     } else {
         assign({id}, false);
     }
 }
 
-void Selection::toggleNode(document::NodeId id) {
-    if (id == document::kNoNode || !m_scene.findNode(id)) {
+void Selection::toggleNode(scene::NodeId id) {
+    if (id == scene::kNoNode || !m_scene.findNode(id)) {
         return;
     }
-    std::vector<document::NodeId> nodes = m_nodes;
+    std::vector<scene::NodeId> nodes = m_nodes;
     if (const auto it = std::find(nodes.begin(), nodes.end(), id); it != nodes.end()) {
         nodes.erase(it);
     } else {
@@ -71,11 +71,11 @@ void Selection::toggleNode(document::NodeId id) {
     assign(std::move(nodes), false);
 }
 
-void Selection::setNodes(const std::vector<document::NodeId>& ids, document::NodeId current) {
-    std::vector<document::NodeId> nodes;
+void Selection::setNodes(const std::vector<scene::NodeId>& ids, scene::NodeId current) {
+    std::vector<scene::NodeId> nodes;
     bool hasCurrent = false;
-    for (document::NodeId id : ids) {
-        if (id == document::kNoNode || !m_scene.findNode(id) ||
+    for (scene::NodeId id : ids) {
+        if (id == scene::kNoNode || !m_scene.findNode(id) ||
             std::find(nodes.begin(), nodes.end(), id) != nodes.end()) {
             continue;
         }

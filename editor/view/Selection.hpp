@@ -15,29 +15,28 @@ class Selection : public QObject {
     Q_OBJECT
 
 public:
-    explicit Selection(document::Scene& scene, QObject* parent = nullptr);
+    explicit Selection(scene::Scene& scene, QObject* parent = nullptr);
 
     // The current node (the last one selected), kNoNode when no node is selected.
-    document::NodeId node() const { return m_nodes.empty() ? document::kNoNode : m_nodes.back(); }
+    scene::NodeId node() const { return m_nodes.empty() ? scene::kNoNode : m_nodes.back(); }
     // All selected nodes in the order they were selected: the current node is last.
-    const std::vector<document::NodeId>& nodes() const { return m_nodes; }
-    bool contains(document::NodeId id) const;
+    const std::vector<scene::NodeId>& nodes() const { return m_nodes; }
+    bool contains(scene::NodeId id) const;
     // The selected nodes that have no selected ancestor, in selection order: what an action on the whole
     // selection acts on (a node under a selected ancestor goes with it; acting on both would act twice).
-    std::vector<document::NodeId> roots() const;
+    std::vector<scene::NodeId> roots() const;
     bool isCamera() const { return m_camera; }
     bool isEmpty() const { return m_nodes.empty() && !m_camera; }
-    const document::Node* selectedNode() const { return m_scene.findNode(node()); }
+    const scene::Node* selectedNode() const { return m_scene.findNode(node()); }
 
 public slots:
     // Selects only this node (kNoNode, or a node not in the scene: nothing).
-    void selectNode(speculum::document::NodeId id);
+    void selectNode(scene::NodeId id);
     // Ctrl+click: adds the node (it becomes the current one) or takes it out of the selection.
-    void toggleNode(speculum::document::NodeId id);
+    void toggleNode(scene::NodeId id);
     // Selects these nodes (unknown ids and repeats are skipped); `current` becomes the current node when it
     // is among them, otherwise the last one is.
-    void setNodes(const std::vector<speculum::document::NodeId>& ids,
-                  speculum::document::NodeId current = document::kNoNode);
+    void setNodes(const std::vector<scene::NodeId>& ids, scene::NodeId current = scene::kNoNode);
     void selectCamera();
     void clear();
 
@@ -45,10 +44,10 @@ signals:
     void changed();
 
 private:
-    void assign(std::vector<document::NodeId> nodes, bool camera);
+    void assign(std::vector<scene::NodeId> nodes, bool camera);
 
-    document::Scene& m_scene;
-    std::vector<document::NodeId> m_nodes;
+    scene::Scene& m_scene;
+    std::vector<scene::NodeId> m_nodes;
     bool m_camera = false;
 };
 

@@ -10,7 +10,7 @@ namespace speculum::render::names {
 
 // How each choice a scene makes is spelled: `file` in project files, on the command line and in bench
 // results ("dual-paraboloid"), `label` for people (the inspector's options, reports: "Dual paraboloid").
-// Each table is in the order of its enum, here (FrameInput.hpp) and in editor/document/SceneData.hpp
+// Each table is in the order of its enum, here (FrameInput.hpp) and in scene/model/SceneData.hpp
 // alike: the index is the enum's value. Qt-free and GL-free, so every layer reads the same list.
 struct Name {
     std::string_view file;
@@ -54,7 +54,7 @@ inline constexpr std::array<Name, 3> kAlphaModes{{
     {"mask", "Mask"},
     {"blend", "Blend (drawn as mask)"},
 }};
-// The document's own enums (editor/document/SceneData.hpp): the built-in meshes, and a reflector's parallax
+// The document's own enums (scene/model/SceneData.hpp): the built-in meshes, and a reflector's parallax
 // proxy, which the frame input spells with a None first (FrameInput's ParallaxProxy::Shape).
 inline constexpr std::array<Name, 4> kBuiltinMeshes{{
     {"teapot", "Teapot"},

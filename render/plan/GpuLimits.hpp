@@ -21,7 +21,7 @@ struct GpuLimits {
 // header is GL-free.
 GpuLimits queryGpuLimits();
 
-// Smallest sizes the passes work with (render/SceneLimits.hpp): a shadow map below 16 texels is no map,
+// Smallest sizes the passes work with (render/frame/SceneLimits.hpp): a shadow map below 16 texels is no map,
 // and the environment maps' guard bands need a few texels each side.
 inline constexpr int kMinEnvmapResolution = kMinEnvironmentMapSize;
 

@@ -2,7 +2,7 @@
 
 #include "scene/model/NodeMath.hpp"
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -57,4 +57,4 @@ PickScene buildPickScene(const Scene& scene, double timeSeconds, MeshLibrary& me
     return out;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

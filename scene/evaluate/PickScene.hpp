@@ -7,7 +7,7 @@
 #include <glm/mat4x4.hpp>
 #include <unordered_map>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // The pickable geometry of a scene at an animation time: every node's mesh (the reflector's included) and
 // every mirror, with ids = NodeIds, and the scene's mirror depth. Meshes that fail to load are left out.
@@ -19,4 +19,4 @@ std::unordered_map<NodeId, glm::dmat4> worldMatrices(const Scene& scene, double 
 // The world matrix of a node's parent (identity for top-level nodes) at an animation time.
 glm::dmat4 parentWorldMatrix(const Scene& scene, NodeId id, double timeSeconds);
 
-} // namespace speculum::document
+} // namespace speculum::scene

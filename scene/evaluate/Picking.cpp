@@ -12,7 +12,7 @@
 #include <thread>
 #include <unordered_map>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -553,4 +553,4 @@ Ray cameraRay(const render::Camera& camera, double aspect, double ndcX, double n
     return Ray{camera.position, forward + right * (ndcX * h * aspect) + up * (ndcY * h)};
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

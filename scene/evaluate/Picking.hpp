@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Click-to-select on the CPU: a ray against the triangles of the scene's meshes and against its planar
 // mirrors. A ray that first meets the reflective (+Y) side of a mirror is reflected and goes on, up to
@@ -102,4 +102,4 @@ struct PickCacheStats {
 };
 PickCacheStats pickCacheStats();
 
-} // namespace speculum::document
+} // namespace speculum::scene

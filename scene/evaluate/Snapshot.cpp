@@ -9,7 +9,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 render::Settings toRender(const SceneSettings& settings) {
     return render::Settings{settings.background,
@@ -291,4 +291,4 @@ render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary&
     return frame;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // The renderer's per-frame input: the scene with animations evaluated at timeSeconds, world matrices
 // composed in double (parent world × T × R × S), absolute texture paths and meshes from `meshes`.
@@ -27,4 +27,4 @@ render::Settings toRender(const SceneSettings& settings);
 render::Camera toRender(const CameraData& camera);
 render::Material toRender(const MaterialComponent& material);
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -16,7 +16,7 @@
 #include <optional>
 #include <set>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -524,4 +524,4 @@ GltfAsset buildGltf(const Scene& scene, MeshLibrary& meshes, const GltfLayout& l
     return Builder(meshes, layout, warnings).build(scene);
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

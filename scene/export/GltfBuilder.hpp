@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // How the document refers to its binary data and images.
 struct GltfLayout {
@@ -36,4 +36,4 @@ struct GltfAsset {
 GltfAsset buildGltf(const Scene& scene, MeshLibrary& meshes, const GltfLayout& layout,
                     std::vector<std::string>& warnings);
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace fs = std::filesystem;
 
@@ -136,4 +136,4 @@ base::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& me
     return writeAllOrNothing(files);
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Writes the scene as a self-contained glTF 2.0 asset for Blender, three.js and other tools, by the
 // extension: `.glb` (one binary file, images inside it) or `.gltf` (JSON, with `<name>.bin` and the images
@@ -42,4 +42,4 @@ namespace speculum::document {
 base::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& meshes,
                         std::vector<std::string>& warnings);
 
-} // namespace speculum::document
+} // namespace speculum::scene

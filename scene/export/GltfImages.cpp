@@ -16,7 +16,7 @@
 #include <fstream>
 #include <iterator>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace fs = std::filesystem;
 
@@ -194,4 +194,4 @@ base::Result<GltfImage> GltfImageSource::loadEmbedded(const std::string& model, 
     return encodePng(image);
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

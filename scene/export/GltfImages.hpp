@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // An image as glTF 2.0 may hold it: PNG or JPEG bytes, top row first as those files store it.
 struct GltfImage {
@@ -50,4 +50,4 @@ private:
     std::unique_ptr<Models> m_models;
 };
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -10,7 +10,7 @@
 #include <QFileInfo>
 #include <sstream>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 base::Status validateStillExport(const StillExportSettings& settings, const QString& outputPath) {
     const std::string path = outputPath.toStdString();
@@ -120,4 +120,4 @@ base::Result<StillExportResult> exportStill(render::Renderer& renderer, const Sc
     return result;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

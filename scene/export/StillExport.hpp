@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // A still image of a document: what `speculum render` does and what the editor's Export Still dialog does,
 // in one place so the two give the same pixels for the same settings (the scene camera, animations at
@@ -48,4 +48,4 @@ base::Result<StillExportResult> exportStill(render::Renderer& renderer, const Sc
                                             const render::ProgressCallback& progress = {},
                                             const std::string& rendererDescription = {});
 
-} // namespace speculum::document
+} // namespace speculum::scene

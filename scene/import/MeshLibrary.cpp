@@ -10,7 +10,7 @@
 #include <QFileInfo>
 #include <memory>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 render::MeshHandle MeshLibrary::builtin(BuiltinMesh kind, int tessellation) {
     auto& slot = m_builtins[{kind, tessellation}];
@@ -193,4 +193,4 @@ void MeshLibrary::clear() {
     m_bounds.clear();
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

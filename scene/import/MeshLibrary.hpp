@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // CPU meshes for snapshots, cached so that a node's MeshHandle is the same pointer frame after frame (the
 // renderer keys its GPU buffers on that identity). Built-ins are cached by (kind, tessellation); files by
@@ -81,4 +81,4 @@ private:
     std::unordered_map<const render::MeshData*, BoundsEntry> m_bounds;
 };
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -4,7 +4,7 @@
 #include <QStringList>
 #include <assimp/Importer.hpp>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 bool isImportableModel(const QString& path) {
     const QString suffix = QFileInfo(path).suffix();
@@ -25,4 +25,4 @@ QString modelFileFilter() {
     return QStringLiteral("3D models (%1);;All files (*)").arg(patterns.join(QLatin1Char(' ')));
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -2,7 +2,7 @@
 
 #include <QString>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // What Assimp can import, for file dialogs and drag-and-drop.
 
@@ -12,4 +12,4 @@ bool isImportableModel(const QString& path);
 // A file-dialog filter: "3D models (*.obj *.fbx ...);;All files (*)".
 QString modelFileFilter();
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -28,7 +28,7 @@
 #include <system_error>
 #include <utility>
 
-namespace speculum::document {
+namespace speculum::scene {
 namespace {
 
 namespace fs = std::filesystem;
@@ -581,4 +581,4 @@ base::Result<MeshData> importModel(const std::string& path, std::vector<std::str
     return flat;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

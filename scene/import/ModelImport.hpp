@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // A model file as speculum keeps it: its meshes ("parts", Assimp's scene order), its materials already
 // converted to speculum's, the textures embedded in it, and its node tree. One Assimp read gives all of it;
@@ -84,4 +84,4 @@ base::Result<render::MeshData> importModel(const std::string& path, std::vector<
 NodeTree modelNodeTree(const ImportedModel& model, const std::string& path, const std::string& rootName,
                        std::vector<std::string>* warnings = nullptr);
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -25,7 +25,7 @@
 #include <sanitizer/common_interface_defs.h>
 #endif
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 namespace {
 
 std::atomic<void (*)()> g_testAction{nullptr};
@@ -339,4 +339,4 @@ ChildRun runInChildProcess(const std::function<std::string(const ChildProgress&)
     return run;
 }
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 
 // Sends one progress step from the import child to the editor process.
 using ChildProgress = std::function<void(double fraction, const char* phase)>;
@@ -45,4 +45,4 @@ base::Result<ImportedModel> importModelFileInProcess(const std::string& path,
                                                      std::vector<std::string>& warnings,
                                                      const ImportControl& control = {});
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

@@ -12,7 +12,7 @@
 #include <unistd.h>
 #include <utility>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 namespace {
 
 namespace fs = std::filesystem;
@@ -92,4 +92,4 @@ Assimp::IOStream* ModelIoSystem::Open(const char* file, const char* mode) {
     return new RegularFileStream(stream, path);
 }
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

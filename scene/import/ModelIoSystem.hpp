@@ -3,7 +3,7 @@
 #include <assimp/DefaultIOSystem.h>
 #include <string>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 
 // The file access Assimp gets while reading a model: the model itself and every file it references
 // (glTF buffers and images, OBJ mtllib, ...). Only regular files open: a FIFO, a device, /dev/stdin or a
@@ -30,4 +30,4 @@ private:
     std::string m_refusal;
 };
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

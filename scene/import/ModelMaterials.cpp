@@ -35,7 +35,7 @@
 #include <glm/common.hpp>
 #include <system_error>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 namespace {
 
 namespace fs = std::filesystem;
@@ -392,4 +392,4 @@ void decodeEmbeddedTextures(const std::map<std::string, EmbeddedBytes>& compress
     }
 }
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

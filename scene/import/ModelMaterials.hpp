@@ -10,7 +10,7 @@
 struct aiMaterial;
 struct aiScene;
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 
 // A compressed embedded texture as the file holds it, and the name the file gives it ("*0").
 struct EmbeddedBytes {
@@ -67,4 +67,4 @@ private:
 void decodeEmbeddedTextures(const std::map<std::string, EmbeddedBytes>& compressed, ImportedModel& model,
                             ImportNotes& notes);
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

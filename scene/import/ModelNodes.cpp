@@ -13,7 +13,7 @@
 #include <limits>
 #include <sstream>
 
-namespace speculum::document {
+namespace speculum::scene {
 namespace detail {
 
 void forEachPlacedPart(const ImportedModel& model, const std::function<void(int, const glm::dmat4&)>& visit) {
@@ -287,4 +287,4 @@ NodeTree modelNodeTree(const ImportedModel& model, const std::string& path, cons
     return root;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

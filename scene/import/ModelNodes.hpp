@@ -4,7 +4,7 @@
 
 #include <functional>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 
 // Every part the node tree draws, with its world matrix (root.local first), depth first in file order.
 void forEachPlacedPart(const ImportedModel& model,
@@ -23,4 +23,4 @@ bool decomposeTransform(const glm::dmat4& matrix, Transform& out);
 double shortestFloat(double value);
 glm::dvec3 shortestFloat(const glm::dvec3& value);
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

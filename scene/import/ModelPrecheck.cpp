@@ -28,7 +28,7 @@
 #include <unistd.h>
 #include <vector>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 namespace {
 
 using base::Error;
@@ -754,4 +754,4 @@ base::Status precheckModel(const std::filesystem::path& file) {
     return status;
 }
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 
 // Deeper node hierarchies than this are treated as broken: no real model needs them, and every reader
 // (Assimp's and ours) walks them recursively.
@@ -33,4 +33,4 @@ base::Status precheckModel(const std::filesystem::path& file);
 // The same on bytes in memory (the fuzz target and tests use it directly).
 base::Status precheckModelBytes(const char* bytes, std::size_t size);
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

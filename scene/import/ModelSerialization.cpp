@@ -8,7 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <utility>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 namespace {
 
 using base::Error;
@@ -337,4 +337,4 @@ base::Result<ChildImport> deserializeChildImport(std::string_view bytes) {
     return result;
 }
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

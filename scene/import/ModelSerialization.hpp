@@ -11,7 +11,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 
 // What the import child (ModelImportProcess) hands back to the editor process: the model, or the reason
 // it was refused, and the notes either way. Compressed embedded textures travel as their file bytes and
@@ -122,4 +122,4 @@ std::string serializeChildImport(const ChildImport& result);
 // Every length, count and index is checked: a truncated or inconsistent stream is an error.
 base::Result<ChildImport> deserializeChildImport(std::string_view bytes);
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

@@ -5,7 +5,7 @@
 #include <meshoptimizer.h>
 #include <vector>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 
 namespace {
 
@@ -99,4 +99,4 @@ void computeTangents(render::MeshData& mesh) {
     }
 }
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

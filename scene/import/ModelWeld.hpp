@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-namespace speculum::document::detail {
+namespace speculum::scene::detail {
 
 // Merges vertices whose every stream (position, normal, uv, colour) is bitwise identical
 // (meshopt_generateVertexRemapMulti) and renumbers the triangles; what Assimp's JoinIdenticalVertices did,
@@ -16,4 +16,4 @@ void weldVertices(render::MeshData& mesh);
 // otherwise.
 void computeTangents(render::MeshData& mesh);
 
-} // namespace speculum::document::detail
+} // namespace speculum::scene::detail

@@ -3,7 +3,7 @@
 #include <QJsonObject>
 #include <glm/vec3.hpp>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // The editor's own view saved with a project: the optional top-level "editorView" of the file (added in
 // issue 16; older files have none and open in the scene camera). Where the editor looked from and at when
@@ -20,4 +20,4 @@ struct EditorView {
     bool operator==(const EditorView&) const = default;
 };
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -5,7 +5,7 @@
 #include <glm/trigonometric.hpp>
 #include <numbers>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 glm::dmat4 rotationMatrix(const glm::dvec3& eulerDegrees) {
     const glm::dmat4 identity(1.0);
@@ -67,4 +67,4 @@ glm::dmat4 animatedLocalMatrix(const NodeData& node, double timeSeconds) {
     return localMatrix(animatedTranslate(node, timeSeconds), node.transform.rotate, node.transform.scale);
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -4,7 +4,7 @@
 
 #include <glm/mat4x4.hpp>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Transforms and animations of a node, all in double (DESIGN.md: CPU-side transforms are composed in double).
 
@@ -28,4 +28,4 @@ glm::dvec3 animatedTranslate(const NodeData& node, double timeSeconds);
 // localMatrix with the animated translate.
 glm::dmat4 animatedLocalMatrix(const NodeData& node, double timeSeconds);
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cassert>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 Node* Node::child(int index) const {
     assert(index >= 0 && index < childCount() && "Node::child(): index out of range");
@@ -202,4 +202,4 @@ void Scene::unindex(const Node& node) {
     }
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -10,7 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Stable identity of a node for the lifetime of a Scene (undo commands, tree models). Never reused, never
 // written to the file. 0 means "none" (as a parent: the scene's top level).
@@ -112,11 +112,11 @@ signals:
     void projectPathChanged(const QString& path);
     void settingsChanged();
     void cameraChanged();
-    void nodeChanged(speculum::document::NodeId id);
-    void nodeAboutToBeAdded(speculum::document::NodeId parent, int index);
-    void nodeAdded(speculum::document::NodeId id, speculum::document::NodeId parent, int index);
-    void nodeAboutToBeRemoved(speculum::document::NodeId id, speculum::document::NodeId parent, int index);
-    void nodeRemoved(speculum::document::NodeId id, speculum::document::NodeId parent, int index);
+    void nodeChanged(speculum::scene::NodeId id);
+    void nodeAboutToBeAdded(speculum::scene::NodeId parent, int index);
+    void nodeAdded(speculum::scene::NodeId id, speculum::scene::NodeId parent, int index);
+    void nodeAboutToBeRemoved(speculum::scene::NodeId id, speculum::scene::NodeId parent, int index);
+    void nodeRemoved(speculum::scene::NodeId id, speculum::scene::NodeId parent, int index);
     // After any change of content above (not projectPathChanged): for views that simply redraw.
     void changed();
 
@@ -142,4 +142,4 @@ private:
     std::unordered_map<NodeId, Node*> m_byId;
 };
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -7,7 +7,7 @@
 #include <numeric>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -74,4 +74,4 @@ double animationLoopSeconds(const Scene& scene) {
     return double(loop) / 1000.0;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

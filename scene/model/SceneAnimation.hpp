@@ -1,6 +1,6 @@
 #pragma once
 
-namespace speculum::document {
+namespace speculum::scene {
 
 class Scene;
 struct NodeData;
@@ -22,4 +22,4 @@ double animationLoopSeconds(const Scene& scene);
 inline constexpr double kMaxAnimationLoopSeconds = 600.0;
 inline constexpr double kStaticTimelineSeconds = 10.0;
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -117,4 +117,4 @@ std::optional<FieldProblem> editorViewProblem(const EditorView& view) {
     return targetDistance(view.position, view.target, "the view position");
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -5,11 +5,11 @@
 #include <optional>
 #include <string>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Rules over several numbers at once that both the project reader and the inspector apply, so that an
-// edit can never make a value the reader refuses. Single numbers are checked against render/SceneLimits.hpp
-// where they are read or edited.
+// edit can never make a value the reader refuses. Single numbers are checked against
+// render/frame/SceneLimits.hpp where they are read or edited.
 
 // The first problem of a camera: which field ("position", "target", "up", "fovY", "near", "far") and what
 // is wrong with it, in the reader's words ("must differ from the camera position"). Computed so that it
@@ -31,4 +31,4 @@ std::optional<FieldProblem> editorViewProblem(const EditorView& view);
 // Numbers as messages show them: shortest round-trip form ("1e+12", "0.001").
 std::string formatLimit(double value);
 
-} // namespace speculum::document
+} // namespace speculum::scene

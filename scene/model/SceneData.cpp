@@ -4,13 +4,13 @@
 
 #include <utility>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
 namespace names = render::names;
 
-// The spellings are render/SceneNames.hpp's, indexed by the enum's value: each table has one name per
+// The spellings are render/frame/SceneNames.hpp's, indexed by the enum's value: each table has one name per
 // value, in the enum's order.
 static_assert(int(BuiltinMesh::Plane) + 1 == names::kBuiltinMeshes.size());
 static_assert(int(LightType::Spot) + 1 == names::kLightTypes.size());
@@ -109,4 +109,4 @@ std::optional<AlphaMode> alphaModeFromString(std::string_view name) {
     return names::fromFileName<AlphaMode>(names::kAlphaModes, name);
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Plain value types for everything a project file holds. The Scene (Scene.hpp) owns a tree of these; the
 // project reader produces them and the writer consumes them, so "load → save → load" can be checked with ==.
@@ -258,4 +258,4 @@ std::optional<ParallaxShape> parallaxShapeFromString(std::string_view name);
 std::optional<TextureWrap> textureWrapFromString(std::string_view name); // "repeat", "clamp", "mirror"
 std::optional<AlphaMode> alphaModeFromString(std::string_view name);     // "opaque", "mask", "blend"
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -5,7 +5,7 @@
 #include <set>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -197,4 +197,4 @@ std::optional<std::string> findDuplicateKey(std::string_view json) {
     return std::nullopt;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // QJsonDocument keeps only one value of a key that appears twice in an object, silently: a file with two
 // "name"s (or two "transform"s, one of them hand-edited) would load with one of them thrown away, and
@@ -20,4 +20,4 @@ namespace speculum::document {
 // keys shown through base::printable.
 std::optional<std::string> findDuplicateKey(std::string_view json);
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 QByteArray JsonWriter::formatNumber(double number) {
     assert(std::isfinite(number) && "JsonWriter::formatNumber(): JSON has no NaN or infinity");
@@ -232,4 +232,4 @@ QByteArray JsonWriter::finish() {
     return out;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

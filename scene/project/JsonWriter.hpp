@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Streams JSON with keys in the order they are written (QJsonDocument sorts them), 2-space indentation,
 // arrays of numbers on one line, and numbers in their shortest round-trip form (integers without ".0").
@@ -51,4 +51,4 @@ private:
     bool m_afterKey = false;
 };
 
-} // namespace speculum::document
+} // namespace speculum::scene

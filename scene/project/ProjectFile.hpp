@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Project files (*.speculum.json), format "speculum-scene" version 1 as DESIGN.md fixes it (the version
 // check and the place for upgrading older versions: ProjectVersion.hpp).
@@ -47,4 +47,4 @@ QByteArray serializeProject(const SceneData& data, const QDir& baseDir);
 base::Status saveProject(const SceneData& data, const QString& path);
 base::Status saveProject(const Scene& scene, const QString& path);
 
-} // namespace speculum::document
+} // namespace speculum::scene

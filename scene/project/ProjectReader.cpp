@@ -20,7 +20,7 @@
 #include <functional>
 #include <glm/geometric.hpp>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -61,7 +61,7 @@ double readNumber(const QJsonValue& v, const std::string& path) {
     return d;
 }
 
-// A length or position: every coordinate within ±kMaxCoordinate (render/SceneLimits.hpp).
+// A length or position: every coordinate within ±kMaxCoordinate (render/frame/SceneLimits.hpp).
 void requireCoordinate(double v, const std::string& path) {
     if (std::abs(v) > render::kMaxCoordinate) {
         fail(path, "must be within ±" + num(render::kMaxCoordinate) +
@@ -193,7 +193,8 @@ static_assert(int(ReflectorMap::TennisBall) + 1 == render::names::kReflectorMaps
 static_assert(int(ReflectorFill::Resampled) + 1 == render::names::kReflectorFills.size());
 static_assert(int(ReflectorUpdate::Once) + 1 == render::names::kReflectorUpdates.size());
 
-// A choice spelled as in render/SceneNames.hpp: the one list the writer, the inspector and the sweep use.
+// A choice spelled as in render/frame/SceneNames.hpp: the one list the writer, the inspector and the sweep
+// use.
 template <typename E, std::size_t N>
 E readNamed(const QJsonValue& v, const std::string& path, const char* what,
             const std::array<render::names::Name, N>& names) {
@@ -825,4 +826,4 @@ base::Status openProject(Scene& scene, const QString& path, std::vector<std::str
     return base::Done{};
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -7,7 +7,7 @@
 #include <cassert>
 #include <cmath>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -69,4 +69,4 @@ void upgradeToCurrentVersion(QJsonObject& root, int version) {
     (void)version;
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

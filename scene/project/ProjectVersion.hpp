@@ -4,7 +4,7 @@
 
 #include <QJsonObject>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // The format version of project files: what this program writes and the newest it reads.
 //
@@ -25,4 +25,4 @@ base::Result<int> readProjectHeader(const QJsonObject& root);
 // format, so there is nothing to convert yet.
 void upgradeToCurrentVersion(QJsonObject& root, int version);
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -7,7 +7,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -346,4 +346,4 @@ base::Status saveProject(const Scene& scene, const QString& path) {
     return saveProject(scene.toData(), path);
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

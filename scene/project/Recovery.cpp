@@ -18,7 +18,7 @@
 #include <signal.h>
 #include <sys/types.h>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 namespace {
 
@@ -118,4 +118,4 @@ void RecoveryStore::remove(const Recovered& recovered) {
     QFile::remove(note);
 }
 
-} // namespace speculum::document
+} // namespace speculum::scene

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace speculum::document {
+namespace speculum::scene {
 
 // Autosave for crash recovery. Each running editor writes its unsaved document to its own recovery file
 // in `folder` (named after the process id, so two editors never overwrite each other), beside a small
@@ -49,4 +49,4 @@ private:
     qint64 m_pid;
 };
 
-} // namespace speculum::document
+} // namespace speculum::scene

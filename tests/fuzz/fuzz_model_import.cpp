@@ -114,23 +114,23 @@ std::vector<fs::path> writeObjReferences(const std::string& text) {
     return written;
 }
 
-const char* extensionFor(ModelContent content) {
+const char* extensionFor(speculum::scene::ModelContent content) {
     switch (content) {
-    case ModelContent::GltfJson:
+    case speculum::scene::ModelContent::GltfJson:
         return ".gltf";
-    case ModelContent::Glb:
+    case speculum::scene::ModelContent::Glb:
         return ".glb";
-    case ModelContent::Xml:
+    case speculum::scene::ModelContent::Xml:
         return ".dae";
-    case ModelContent::Off:
+    case speculum::scene::ModelContent::Off:
         return ".off";
-    case ModelContent::Ply:
+    case speculum::scene::ModelContent::Ply:
         return ".ply";
-    case ModelContent::FbxBinary:
+    case speculum::scene::ModelContent::FbxBinary:
         return ".fbx";
-    case ModelContent::Text:
+    case speculum::scene::ModelContent::Text:
         return ".obj";
-    case ModelContent::Unknown:
+    case speculum::scene::ModelContent::Unknown:
         break;
     }
     return ".bin";
@@ -140,22 +140,24 @@ const char* extensionFor(ModelContent content) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace speculum::document;
-    setModelImportCpuLimit(5);
+    using namespace speculum::scene;
+    speculum::scene::setModelImportCpuLimit(5);
     const std::string bytes(reinterpret_cast<const char*>(data), size);
-    const ModelContent content = detail::identifyModelContent(bytes.data(), bytes.size());
+    const speculum::scene::ModelContent content =
+        speculum::scene::detail::identifyModelContent(bytes.data(), bytes.size());
     const fs::path model = folder() / (std::string("model") + extensionFor(content));
     writeFile(model, bytes);
     std::vector<fs::path> references;
-    if (content == ModelContent::GltfJson) {
+    if (content == speculum::scene::ModelContent::GltfJson) {
         references = writeGltfReferences(QByteArray::fromRawData(bytes.data(), qsizetype(bytes.size())));
-    } else if (content == ModelContent::Text) {
+    } else if (content == speculum::scene::ModelContent::Text) {
         references = writeObjReferences(bytes);
     }
     std::vector<std::string> warnings;
-    const auto imported = importModelFile(model.string(), warnings);
+    const auto imported = speculum::scene::importModelFile(model.string(), warnings);
     if (imported.ok()) {
-        (void)flattenModel(*imported);
-        (void)modelNodeTree(*imported, model.string(), "model", &warnings);
+        (void)speculum::scene::flattenModel(*imported);
+        (void)speculum::scene::modelNodeTree(*imported, model.string(), "model", &warnings);
     } else {
         // Every refusal names the file, in one line.
         const std::string& message = imported.error();

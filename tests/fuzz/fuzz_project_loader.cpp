@@ -11,19 +11,20 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace speculum::document;
+    using namespace speculum::scene;
     const QByteArray json(reinterpret_cast<const char*>(data), static_cast<qsizetype>(size));
     const QDir base(QStringLiteral("/nonexistent/project"));
     std::vector<std::string> warnings;
-    auto scene = parseProject(json, base, warnings);
+    auto scene = speculum::scene::parseProject(json, base, warnings);
     if (!scene.ok()) {
         if (scene.error().empty())
             std::abort(); // every failure must say what is wrong
         return 0;
     }
-    const QByteArray saved = serializeProject(*scene, base);
+    const QByteArray saved = speculum::scene::serializeProject(*scene, base);
     std::vector<std::string> again;
-    auto reloaded = parseProject(saved, base, again);
-    if (!reloaded.ok() || serializeProject(*reloaded, base) != saved)
+    auto reloaded = speculum::scene::parseProject(saved, base, again);
+    if (!reloaded.ok() || speculum::scene::serializeProject(*reloaded, base) != saved)
         std::abort();
     return 0;
 }

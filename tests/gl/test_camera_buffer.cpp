@@ -59,12 +59,12 @@ FrameInput mirrorScene(MirrorTechnique technique, double reflectivity, glm::dvec
 }
 
 FrameInput demo(const std::string& name) {
-    document::Scene scene;
-    document::MeshLibrary meshes;
+    scene::Scene scene;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const QString path = QString(SPECULUM_SOURCE_DIR) + "/resources/scenes/" + QString::fromStdString(name);
-    EXPECT_TRUE(document::openProject(scene, path, warnings)) << name;
-    return document::snapshot(scene, 0.4, meshes, warnings);
+    EXPECT_TRUE(scene::openProject(scene, path, warnings)) << name;
+    return scene::snapshot(scene, 0.4, meshes, warnings);
 }
 
 class CameraBufferTest : public GlTest {

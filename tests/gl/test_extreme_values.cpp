@@ -1,5 +1,5 @@
-// Values at the edges of what a project may hold (render/SceneLimits.hpp) render finite and right in both
-// renderers, and values beyond them (NaN, 1e39: only reachable by bypassing the reader) still give only
+// Values at the edges of what a project may hold (render/frame/SceneLimits.hpp) render finite and right in
+// both renderers, and values beyond them (NaN, 1e39: only reachable by bypassing the reader) still give only
 // finite pixels. "Right" is the tracer's image, compared as the accuracy tests compare: flat colours that
 // say which object each pixel shows, or the lit colour within a relative tolerance.
 #include "GlTest.hpp"

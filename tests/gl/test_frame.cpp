@@ -106,13 +106,13 @@ namespace {
 // (shadow maps, environment maps) between them.
 TEST_F(GlTest, ConsecutiveFramesOfAnUnchangedDemoSceneAreIdentical) {
     for (const char* name : {"teapot.speculum.json", "mirrors.speculum.json", "chrome.speculum.json"}) {
-        document::Scene scene;
+        scene::Scene scene;
         std::vector<std::string> warnings;
         ASSERT_TRUE(
-            document::openProject(scene, QString(SPECULUM_SOURCE_DIR "/resources/scenes/") + name, warnings)
+            scene::openProject(scene, QString(SPECULUM_SOURCE_DIR "/resources/scenes/") + name, warnings)
                 .ok());
-        document::MeshLibrary meshes;
-        const render::FrameInput input = document::snapshot(scene, 0.25, meshes, warnings);
+        scene::MeshLibrary meshes;
+        const render::FrameInput input = scene::snapshot(scene, 0.25, meshes, warnings);
         const render::Image first = renderImage(input, 160, 90);
         const render::Image second = renderImage(input, 160, 90);
         const render::Image third = renderImage(input, 160, 90);

@@ -16,13 +16,13 @@ using namespace render;
 // The chrome demo (a point light with a cube shadow map, the chrome ball) with a spot light added, so
 // both kinds of shadow map are drawn.
 FrameInput chromeScene() {
-    document::Scene scene;
+    scene::Scene scene;
     std::vector<std::string> warnings;
     EXPECT_TRUE(
-        document::openProject(scene, SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json", warnings)
+        scene::openProject(scene, SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json", warnings)
             .ok());
-    document::MeshLibrary meshes;
-    FrameInput input = document::snapshot(scene, 0.0, meshes, warnings);
+    scene::MeshLibrary meshes;
+    FrameInput input = scene::snapshot(scene, 0.0, meshes, warnings);
     EXPECT_TRUE(input.reflector.has_value());
     Light spot;
     spot.name = "Spot";

@@ -56,7 +56,7 @@ fs::path writeTexturedQuadGltf(const fs::path& folder) {
 render::FrameInput importedQuadScene() {
     const fs::path file = writeTexturedQuadGltf(freshFolder());
     std::vector<std::string> warnings;
-    auto model = document::importModelFile(file.string(), warnings);
+    auto model = scene::importModelFile(file.string(), warnings);
     EXPECT_TRUE(model.ok()) << (model.ok() ? "" : model.error());
     render::FrameInput input = orientationScene(View::BoxFromFront, render::Material{});
     if (!model.ok()) {
@@ -64,7 +64,7 @@ render::FrameInput importedQuadScene() {
     }
     EXPECT_EQ(model->parts.size(), 1u);
     EXPECT_GE(model->parts.front().material, 0);
-    const document::MaterialComponent& imported = model->materials.at(model->parts.front().material);
+    const scene::MaterialComponent& imported = model->materials.at(model->parts.front().material);
     EXPECT_EQ(fs::path(imported.texture).filename(), "quadrants.png");
     input.items.front().mesh = model->parts.front().mesh;
     input.items.front().material = showTexture(imported.texture);

@@ -18,13 +18,13 @@ using namespace render;
 // reflector: nested mirror views of both techniques and an environment map in one frame. The texture
 // mirror's blur is off (see the blur test below).
 FrameInput mirrorsAndReflector() {
-    document::Scene scene;
+    scene::Scene scene;
     std::vector<std::string> warnings;
     EXPECT_TRUE(
-        document::openProject(scene, SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json", warnings)
+        scene::openProject(scene, SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json", warnings)
             .ok());
-    document::MeshLibrary meshes;
-    FrameInput input = document::snapshot(scene, 0.25, meshes, warnings);
+    scene::MeshLibrary meshes;
+    FrameInput input = scene::snapshot(scene, 0.25, meshes, warnings);
     for (Mirror& mirror : input.mirrors)
         mirror.roughness = 0.0;
     const auto ball = std::find_if(input.items.begin(), input.items.end(),

@@ -97,9 +97,9 @@ const char* kTinyScene = R"({
   ]
 })";
 
-const document::ReflectorComponent* reflectorOf(const document::Scene& scene) {
-    const document::ReflectorComponent* found = nullptr;
-    scene.forEachNode([&](const document::Node& node) {
+const scene::ReflectorComponent* reflectorOf(const scene::Scene& scene) {
+    const scene::ReflectorComponent* found = nullptr;
+    scene.forEachNode([&](const scene::Node& node) {
         if (node.data().reflector && !found) {
             found = &*node.data().reflector;
         }
@@ -199,9 +199,9 @@ TEST_F(AccuracyPanelTest, ClickingASweepPointAppliesItsSettingsAsOneUndoStep) {
     ASSERT_TRUE(panel().loadSweepFile(path).ok());
     SweepChart& chart = panel().chart();
     EXPECT_EQ(chart.seriesCount(), 4); // one per family: scene, envmap, mirror-depth, shadows
-    const document::SceneData before = m_window->scene().toData();
+    const scene::SceneData before = m_window->scene().toData();
     ASSERT_NE(reflectorOf(m_window->scene()), nullptr);
-    EXPECT_EQ(reflectorOf(m_window->scene())->map, document::ReflectorMap::Cube);
+    EXPECT_EQ(reflectorOf(m_window->scene())->map, scene::ReflectorMap::Cube);
 
     // A real mouse click on the envmap point.
     QScatterSeries* envmap = nullptr;
@@ -218,12 +218,12 @@ TEST_F(AccuracyPanelTest, ClickingASweepPointAppliesItsSettingsAsOneUndoStep) {
         << "the click at " << at.x() << "," << at.y() << " applied nothing";
 
     const auto* reflector = reflectorOf(m_window->scene());
-    EXPECT_EQ(reflector->map, document::ReflectorMap::TennisBall);
+    EXPECT_EQ(reflector->map, scene::ReflectorMap::TennisBall);
     EXPECT_EQ(reflector->resolution, 64);
-    EXPECT_EQ(reflector->fill, document::ReflectorFill::Direct);
+    EXPECT_EQ(reflector->fill, scene::ReflectorFill::Direct);
     EXPECT_EQ(m_window->scene().settings().mirrorDepth, 2);
     int pcf = 0;
-    m_window->scene().forEachNode([&](const document::Node& node) {
+    m_window->scene().forEachNode([&](const scene::Node& node) {
         if (node.data().light && node.data().light->shadows) {
             pcf = node.data().light->shadows->pcf;
         }
@@ -235,7 +235,7 @@ TEST_F(AccuracyPanelTest, ClickingASweepPointAppliesItsSettingsAsOneUndoStep) {
     m_window->undoStack().undo();
     EXPECT_EQ(m_window->scene().toData(), before);
     m_window->undoStack().redo();
-    EXPECT_EQ(reflectorOf(m_window->scene())->map, document::ReflectorMap::TennisBall);
+    EXPECT_EQ(reflectorOf(m_window->scene())->map, scene::ReflectorMap::TennisBall);
 
     // Settings the scene cannot take are named, the rest still applied.
     m_window->undoStack().undo();
@@ -254,7 +254,7 @@ TEST_F(AccuracyPanelTest, RunSweepFillsTheChartAsItGoesAndShowsTheFindings) {
     }
     ASSERT_TRUE(m_window->openProjectFile(scene).ok());
     ASSERT_TRUE(waitForFrames(*m_window, 2));
-    const document::SceneData before = m_window->scene().toData();
+    const scene::SceneData before = m_window->scene().toData();
     ASSERT_EQ(m_window->undoStack().count(), 0);
 
     panel().findChild<QPushButton*>(QStringLiteral("runSweep"))->click();
@@ -315,7 +315,7 @@ TEST_F(AccuracyPanelTest, CancelStopsTheSweepAndLeavesEverythingAsItWas) {
     ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
     const int pointsBefore = panel().chart().pointCount();
     ASSERT_EQ(pointsBefore, 5);
-    const document::SceneData before = m_window->scene().toData();
+    const scene::SceneData before = m_window->scene().toData();
 
     panel().runSweep(true);
     ASSERT_TRUE(panel().sweeping());

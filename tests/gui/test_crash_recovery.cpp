@@ -38,7 +38,7 @@ void nameTheApplication() {
     QApplication::setApplicationName(QStringLiteral("speculum"));
 }
 
-const document::Node* teapot(const document::Scene& scene) {
+const speculum::scene::Node* teapot(const speculum::scene::Scene& scene) {
     for (const auto& node : scene.topLevelNodes()) {
         if (node->data().name == "Teapot") {
             return node.get();
@@ -49,7 +49,7 @@ const document::Node* teapot(const document::Scene& scene) {
 
 std::optional<double> teapotHeight(const QString& projectPath) {
     std::vector<std::string> warnings;
-    auto data = document::loadProject(projectPath, warnings);
+    auto data = speculum::scene::loadProject(projectPath, warnings);
     if (!data) {
         return std::nullopt;
     }
@@ -73,11 +73,11 @@ int editThenWait(int argc, char** argv, const QString& project) {
     if (!window.openProjectFile(project)) {
         return 2;
     }
-    const document::Node* node = teapot(window.scene());
+    const speculum::scene::Node* node = teapot(window.scene());
     if (!node) {
         return 3;
     }
-    document::NodeData moved = node->data();
+    speculum::scene::NodeData moved = node->data();
     moved.transform.translate.y += kMovedBy;
     window.undoStack().push(
         new document::SetNodeDataCommand(window.scene(), node->id(), moved, QStringLiteral("Move Teapot")));
@@ -99,7 +99,7 @@ protected:
         m_height = teapotHeight(m_project).value_or(-1e9);
         ASSERT_NE(m_height, -1e9);
         // Where every editor keeps its recovery files (RecoveryStore::forThisProcess); empty to begin with.
-        m_recovery = document::RecoveryStore::forThisProcess().folder();
+        m_recovery = speculum::scene::RecoveryStore::forThisProcess().folder();
         ASSERT_TRUE(m_recovery.startsWith(qEnvironmentVariable("XDG_DATA_HOME"))) << m_recovery.toStdString();
         QDir(m_recovery).removeRecursively();
     }
@@ -170,7 +170,7 @@ TEST_F(CrashRecovery, NextEditorOffersTheKilledEditorsEditAndRestoresIt) {
     window.offerRecovery();
     EXPECT_TRUE(m_question.contains(QStringLiteral("teapot.speculum.json"))) << m_question.toStdString();
 
-    const document::Node* node = teapot(window.scene());
+    const speculum::scene::Node* node = teapot(window.scene());
     ASSERT_NE(node, nullptr) << "the project is open again";
     EXPECT_NEAR(node->data().transform.translate.y, m_height + kMovedBy, 1e-9) << "with the edit";
     EXPECT_EQ(window.scene().projectPath(), QFileInfo(m_project).absoluteFilePath());

@@ -48,7 +48,7 @@ protected:
     }
 
     QTreeView& tree() { return m_window->sceneTree().view(); }
-    document::Scene& scene() { return m_window->scene(); }
+    scene::Scene& scene() { return m_window->scene(); }
 
     // Keyboard focus in the scene tree, as after a click on a row.
     void focusTree() {
@@ -57,18 +57,18 @@ protected:
     }
 
     // The world box of what `id` draws (its mesh and mirror, children included).
-    render::math::Box box(document::NodeId id) {
+    render::math::Box box(scene::NodeId id) {
         render::math::Box b;
-        const auto worlds = document::worldMatrices(scene(), 0.0);
+        const auto worlds = scene::worldMatrices(scene(), 0.0);
         std::vector<std::string> ignored;
-        scene().forEachNode([&](const document::Node& n) {
+        scene().forEachNode([&](const scene::Node& n) {
             if (!scene().isAncestor(id, n.id())) {
                 return;
             }
             const glm::dmat4& world = worlds.at(n.id());
             if (n.data().mesh) {
                 if (auto mesh = m_window->viewport().meshes().get(*n.data().mesh, ignored); mesh && *mesh) {
-                    b.add(render::math::worldBounds(document::meshBounds(*mesh), world));
+                    b.add(render::math::worldBounds(scene::meshBounds(*mesh), world));
                 }
             }
             if (n.data().mirror) {
@@ -93,7 +93,7 @@ protected:
 };
 
 TEST_F(EditorInput, ANewSceneHasAFloorASunAndACameraAboveThem) {
-    const document::SceneData data = scene().toData();
+    const scene::SceneData data = scene().toData();
     EXPECT_TRUE(data == document::newSceneData());
     ASSERT_EQ(data.nodes.size(), 2u);
     EXPECT_EQ(data.nodes[0].data.name, "Floor");
@@ -109,10 +109,10 @@ TEST_F(EditorInput, ANewSceneHasAFloorASunAndACameraAboveThem) {
 
 TEST_F(EditorInput, TheFirstMirrorFacesTheViewAndStandsOnTheFloor) {
     ASSERT_TRUE(m_window->addNode(document::NewNodeKind::Mirror).ok());
-    const document::NodeId id = m_window->selection().node();
-    const document::Node* mirror = scene().findNode(id);
+    const scene::NodeId id = m_window->selection().node();
+    const scene::Node* mirror = scene().findNode(id);
     ASSERT_TRUE(mirror && mirror->data().mirror);
-    const glm::dmat4 world = document::worldMatrices(scene(), 0.0).at(id);
+    const glm::dmat4 world = scene::worldMatrices(scene(), 0.0).at(id);
     const glm::dvec3 normal = glm::normalize(glm::dvec3(world * glm::dvec4(0.0, 1.0, 0.0, 0.0)));
     const glm::dvec3 centre(world[3]);
     const glm::dvec3 toView = glm::normalize(m_window->viewport().viewCamera().position - centre);
@@ -124,14 +124,14 @@ TEST_F(EditorInput, TheFirstMirrorFacesTheViewAndStandsOnTheFloor) {
 
 TEST_F(EditorInput, NewObjectsDoNotLandInsideEachOtherAndADuplicateStepsAside) {
     ASSERT_TRUE(m_window->addNode(document::NewNodeKind::Teapot).ok());
-    const document::NodeId first = m_window->selection().node();
+    const scene::NodeId first = m_window->selection().node();
     ASSERT_TRUE(m_window->addNode(document::NewNodeKind::Teapot).ok());
-    const document::NodeId second = m_window->selection().node();
+    const scene::NodeId second = m_window->selection().node();
     EXPECT_FALSE(overlap(box(first), box(second))) << "the second teapot lands beside the first";
     EXPECT_NEAR(box(second).min.y, 0.0, 1e-6) << "on the floor";
 
     ASSERT_TRUE(m_window->duplicateSelected().ok());
-    const document::NodeId copy = m_window->selection().node();
+    const scene::NodeId copy = m_window->selection().node();
     ASSERT_NE(copy, second);
     EXPECT_FALSE(overlap(box(copy), box(second))) << "the duplicate steps aside from its original";
     EXPECT_FALSE(overlap(box(copy), box(first)));
@@ -140,7 +140,7 @@ TEST_F(EditorInput, NewObjectsDoNotLandInsideEachOtherAndADuplicateStepsAside) {
 
 TEST_F(EditorInput, DeleteDuplicateAndHandleKeysWorkFromTheSceneTree) {
     ASSERT_TRUE(m_window->addNode(document::NewNodeKind::Teapot).ok());
-    const document::NodeId teapot = m_window->selection().node();
+    const scene::NodeId teapot = m_window->selection().node();
     focusTree();
     const std::size_t nodes = scene().topLevelNodes().size();
 

@@ -30,7 +30,7 @@ namespace {
 
 using namespace speculum;
 using namespace speculum::ui::test;
-using document::NodeId;
+using speculum::scene::NodeId;
 using ui::MainWindow;
 
 const QString kScenes = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes");
@@ -64,7 +64,7 @@ protected:
 
     std::optional<NodeId> nodeNamed(const std::string& name) {
         std::optional<NodeId> found;
-        m_window->scene().forEachNode([&](const document::Node& node) {
+        m_window->scene().forEachNode([&](const speculum::scene::Node& node) {
             if (node.name() == name && !found) {
                 found = node.id();
             }
@@ -168,7 +168,7 @@ TEST_F(EditorOutput, ExportStillMatchesTheCommandLine) {
     ASSERT_TRUE(dir.isValid());
     const QString editorPng = dir.filePath(QStringLiteral("editor.png"));
     const QString cliPng = dir.filePath(QStringLiteral("cli.png"));
-    document::StillExportSettings settings;
+    speculum::scene::StillExportSettings settings;
     settings.width = 320;
     settings.height = 180;
     settings.ssaa = 2;
@@ -222,7 +222,7 @@ TEST_F(EditorOutput, ExactReferenceExportMatchesTheCommandLine) {
     ASSERT_TRUE(dir.isValid());
     const QString editorPng = dir.filePath(QStringLiteral("editor-reference.png"));
     const QString cliPng = dir.filePath(QStringLiteral("cli-reference.png"));
-    document::StillExportSettings settings;
+    speculum::scene::StillExportSettings settings;
     settings.width = 48;
     settings.height = 32;
     settings.reference = true;
@@ -327,7 +327,7 @@ TEST_F(EditorOutput, ScreenshotsOfEachDemoScene) {
     for (const QString& name : scenes) {
         open(QDir(kScenes).filePath(name));
         // Select the first mesh so the inspector and the handles show, as a user would see it.
-        m_window->scene().forEachNode([&](const document::Node& node) {
+        m_window->scene().forEachNode([&](const speculum::scene::Node& node) {
             if (node.data().mesh && m_window->selection().isEmpty()) {
                 m_window->selection().selectNode(node.id());
             }

@@ -41,7 +41,7 @@ namespace {
 
 using namespace speculum;
 using namespace speculum::ui::test;
-using document::NodeId;
+using speculum::scene::NodeId;
 using ui::MainWindow;
 
 const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
@@ -101,11 +101,11 @@ protected:
         }
     }
 
-    const document::Node* selected() { return m_window->selection().selectedNode(); }
+    const speculum::scene::Node* selected() { return m_window->selection().selectedNode(); }
 
     std::optional<NodeId> nodeNamed(const std::string& name) {
         std::optional<NodeId> found;
-        m_window->scene().forEachNode([&](const document::Node& node) {
+        m_window->scene().forEachNode([&](const speculum::scene::Node& node) {
             if (node.name() == name && !found) {
                 found = node.id();
             }
@@ -146,8 +146,8 @@ protected:
     // Every node with its parent and its index there, in tree order.
     std::vector<std::tuple<NodeId, NodeId, int>> layout() {
         std::vector<std::tuple<NodeId, NodeId, int>> nodes;
-        const document::Scene& scene = m_window->scene();
-        scene.forEachNode([&](const document::Node& node) {
+        const speculum::scene::Scene& scene = m_window->scene();
+        scene.forEachNode([&](const speculum::scene::Node& node) {
             nodes.emplace_back(node.id(), scene.parentOf(node.id()), scene.indexOf(node.id()));
         });
         return nodes;
@@ -163,7 +163,7 @@ TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndR
     m_window->newProject();
     QUndoStack& undo = m_window->undoStack();
     // A new document holds its floor and sun (document::newSceneData); what is built comes after them.
-    const document::SceneData fresh = m_window->scene().toData();
+    const speculum::scene::SceneData fresh = m_window->scene().toData();
     EXPECT_TRUE(fresh == document::newSceneData());
     ASSERT_EQ(fresh.nodes.size(), 2u);
     EXPECT_EQ(fresh.nodes[0].data.name, "Floor");
@@ -206,7 +206,7 @@ TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndR
     EXPECT_EQ(tree.index(3, 0).data().toString(), QStringLiteral("Teapot"));
     EXPECT_EQ(tree.index(7, 0).data().toString(), QStringLiteral("Point light"));
 
-    const document::SceneData built = m_window->scene().toData();
+    const speculum::scene::SceneData built = m_window->scene().toData();
     ASSERT_EQ(built.nodes.size(), 7u);
     EXPECT_EQ(built.nodes[3].data.mirror->size, glm::dvec2(4.0, 4.0));
     EXPECT_DOUBLE_EQ(built.nodes[3].data.mirror->reflectivity, 0.6);
@@ -240,8 +240,8 @@ TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndR
     ASSERT_TRUE(m_window->saveProjectFile(path).ok());
     EXPECT_FALSE(m_window->isWindowModified());
     EXPECT_EQ(m_window->recentFiles().value(0), path);
-    document::SceneData saved = built;
-    saved.editorView = document::EditorView{{3.0, 4.0, 5.0}, {0.0, 0.5, -3.0}, {}};
+    speculum::scene::SceneData saved = built;
+    saved.editorView = speculum::scene::EditorView{{3.0, 4.0, 5.0}, {0.0, 0.5, -3.0}, {}};
     m_window->newProject();
     EXPECT_TRUE(m_window->scene().toData() == fresh);
     EXPECT_NE(m_window->viewport().viewCamera().position, glm::dvec3(3.0, 4.0, 5.0));
@@ -327,7 +327,7 @@ TEST_F(EditorWorkflow, SceneTreeRenamesReparentsDeletesAndDuplicatesUndoably) {
     std::unique_ptr<QMimeData> up(tree.mimeData({tree.indexOf(teapot)}));
     EXPECT_FALSE(tree.canDropMimeData(up.get(), Qt::MoveAction, -1, 0, tree.indexOf(light)));
     undo.undo();
-    EXPECT_EQ(m_window->scene().parentOf(light), document::kNoNode);
+    EXPECT_EQ(m_window->scene().parentOf(light), speculum::scene::kNoNode);
     EXPECT_EQ(tree.rowCount(), 4);
 
     // Delete and duplicate through the Edit menu.
@@ -549,22 +549,23 @@ TEST_F(EditorWorkflow, CtrlClickInTheTreeSelectsSeveralNodesThatDeleteAndDuplica
     // the drop row shifts the rows after it.
     std::unique_ptr<QMimeData> potAndLight2(tree.mimeData({tree.indexOf(light), tree.indexOf(teapot)}));
     ASSERT_TRUE(tree.dropMimeData(potAndLight2.get(), Qt::MoveAction, 3, 0, {})); // before the light
-    EXPECT_EQ(layout(), (Layout{{table, document::kNoNode, 0},
-                                {teapot, document::kNoNode, 1},
-                                {light, document::kNoNode, 2}}));
+    EXPECT_EQ(layout(), (Layout{{table, speculum::scene::kNoNode, 0},
+                                {teapot, speculum::scene::kNoNode, 1},
+                                {light, speculum::scene::kNoNode, 2}}));
     EXPECT_EQ(undo.undoText().toStdString(), "Move 2 nodes");
     undo.undo();
     EXPECT_EQ(layout(), flat);
     std::unique_ptr<QMimeData> lightAndTable(tree.mimeData({tree.indexOf(light), tree.indexOf(table)}));
     ASSERT_TRUE(tree.dropMimeData(lightAndTable.get(), Qt::MoveAction, 1, 0, {})); // at the top
-    EXPECT_EQ(layout(), (Layout{{table, document::kNoNode, 0},
-                                {light, document::kNoNode, 1},
-                                {teapot, document::kNoNode, 2}}));
+    EXPECT_EQ(layout(), (Layout{{table, speculum::scene::kNoNode, 0},
+                                {light, speculum::scene::kNoNode, 1},
+                                {teapot, speculum::scene::kNoNode, 2}}));
     undo.undo();
     EXPECT_EQ(layout(), flat);
     ASSERT_TRUE(tree.dropMimeData(potAndTable.get(), Qt::MoveAction, 4, 0, {})); // at the end
-    const Layout atEnd{
-        {light, document::kNoNode, 0}, {teapot, document::kNoNode, 1}, {table, document::kNoNode, 2}};
+    const Layout atEnd{{light, speculum::scene::kNoNode, 0},
+                       {teapot, speculum::scene::kNoNode, 1},
+                       {table, speculum::scene::kNoNode, 2}};
     EXPECT_EQ(layout(), atEnd);
     undo.undo();
     EXPECT_EQ(layout(), flat);
@@ -598,7 +599,8 @@ TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandleDragsActOnTh
     const NodeId light = *nodeNamed("Light");
     const glm::dvec3 body(0.0, -1.0 + 1.0 * 0.25, -3.0);
     const glm::dvec3 reflection(0.0, -1.0 - 1.0 * 0.25, -3.0);
-    const glm::dvec3 lamp(document::worldMatrices(m_window->scene(), viewport.lastFrameTime()).at(light)[3]);
+    const glm::dvec3 lamp(
+        speculum::scene::worldMatrices(m_window->scene(), viewport.lastFrameTime()).at(light)[3]);
 
     QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, onScreen(body));
     EXPECT_EQ(selection.nodes(), Ids{teapot});
@@ -633,7 +635,7 @@ TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandleDragsActOnTh
         }
         QTest::mouseRelease(&viewport, Qt::LeftButton, Qt::NoModifier, start + QPoint(pixels, 0));
     };
-    const document::Transform teapot0 = transformOf(teapot), table0 = transformOf(table);
+    const speculum::scene::Transform teapot0 = transformOf(teapot), table0 = transformOf(table);
     const int steps = m_window->undoStack().count();
 
     // Move: both by the same world displacement (both are top-level nodes, so also the same translate
@@ -735,10 +737,10 @@ TEST_F(EditorWorkflow, ImportsDroppedModelsAndOffersRecoveredWork) {
     EXPECT_TRUE(m_window->isImporting()) << "the file is read on a worker";
     ASSERT_TRUE(waitFor([&] { return !m_window->isImporting(); }));
     ASSERT_EQ(m_window->scene().topLevelNodes().size(), 3u) << "the floor, the sun and the model";
-    const document::Node& root = *m_window->scene().topLevelNodes().back();
+    const speculum::scene::Node& root = *m_window->scene().topLevelNodes().back();
     EXPECT_EQ(root.data().name, "box");
     std::vector<std::string> files; // the parts under the model's root draw the dropped file
-    m_window->scene().forEachNode([&](const document::Node& n) {
+    m_window->scene().forEachNode([&](const speculum::scene::Node& n) {
         if (n.data().mesh && m_window->scene().isAncestor(root.id(), n.id())) {
             files.push_back(n.data().mesh->file);
         }
@@ -750,10 +752,12 @@ TEST_F(EditorWorkflow, ImportsDroppedModelsAndOffersRecoveredWork) {
 
     // The unsaved document goes to a recovery file; a later editor restores it, marked modified.
     QTemporaryDir dir;
-    m_window->setRecoveryStore(document::RecoveryStore(dir.path(), 4194303 + 99)); // as if this process died
+    m_window->setRecoveryStore(
+        speculum::scene::RecoveryStore(dir.path(), 4194303 + 99)); // as if this process died
     ASSERT_TRUE(m_window->autosaveNow().ok());
     const auto data = m_window->scene().toData();
-    m_window->setRecoveryStore(document::RecoveryStore(dir.path(), QCoreApplication::applicationPid()));
+    m_window->setRecoveryStore(
+        speculum::scene::RecoveryStore(dir.path(), QCoreApplication::applicationPid()));
     m_window->undoStack().setClean();
     m_window->newProject();
     const auto orphans = m_window->recoveryStore().orphans();

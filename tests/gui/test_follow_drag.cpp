@@ -11,15 +11,15 @@ namespace {
 using namespace speculum;
 
 TEST(FollowDrag, MovesByTheSameWorldDisplacementInEachParentsSpace) {
-    document::NodeData leadStart, leadNow, other;
+    speculum::scene::NodeData leadStart, leadNow, other;
     leadStart.transform.translate = {1, 1, 1};
     leadNow.transform.translate = {2, 3, 1}; // under a parent scaled by 2: a world move of (2, 4, 0)
-    const glm::dmat4 leadParent = document::localMatrix({7, 0, 0}, {0, 0, 0}, {2, 2, 2});
+    const glm::dmat4 leadParent = speculum::scene::localMatrix({7, 0, 0}, {0, 0, 0}, {2, 2, 2});
     other.transform.translate = {5, 0, 0};
-    other.material = document::MaterialComponent{};
+    other.material = speculum::scene::MaterialComponent{};
     // Under a parent turned 90° about Z: world +X is the parent's -Y, world +Y its +X.
-    const glm::dmat4 otherParent = document::localMatrix({0, 0, -3}, {0, 0, 90}, {1, 1, 1});
-    const document::NodeData out =
+    const glm::dmat4 otherParent = speculum::scene::localMatrix({0, 0, -3}, {0, 0, 90}, {1, 1, 1});
+    const speculum::scene::NodeData out =
         ui::followDrag(ui::HandleMode::Move, leadStart, leadNow, leadParent, other, otherParent);
     EXPECT_NEAR(out.transform.translate.x, 5.0 + 4.0, 1e-12);
     EXPECT_NEAR(out.transform.translate.y, 0.0 - 2.0, 1e-12);
@@ -28,12 +28,12 @@ TEST(FollowDrag, MovesByTheSameWorldDisplacementInEachParentsSpace) {
     EXPECT_EQ(out.material, other.material) << "only the transform changes";
 
     // A parent scaled to zero cannot take a world displacement: the node stays.
-    const glm::dmat4 flat = document::localMatrix({0, 0, 0}, {0, 0, 0}, {0, 0, 0});
+    const glm::dmat4 flat = speculum::scene::localMatrix({0, 0, 0}, {0, 0, 0}, {0, 0, 0});
     EXPECT_EQ(ui::followDrag(ui::HandleMode::Move, leadStart, leadNow, leadParent, other, flat), other);
 }
 
 TEST(FollowDrag, RotatesByTheSameAnglesAndScalesByTheSameFactors) {
-    document::NodeData leadStart, leadNow, other;
+    speculum::scene::NodeData leadStart, leadNow, other;
     leadStart.transform.rotate = {10, 0, 0};
     leadNow.transform.rotate = {10, 0, 30};
     other.transform.rotate = {0, 45, 5};

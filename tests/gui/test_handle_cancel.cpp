@@ -16,7 +16,7 @@ namespace {
 
 using namespace speculum;
 using namespace speculum::ui::test;
-using document::NodeId;
+using speculum::scene::NodeId;
 
 const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
 
@@ -34,12 +34,12 @@ protected:
         ASSERT_TRUE(status.ok()) << status.error();
         ASSERT_TRUE(waitForFrames(*m_window));
         ASSERT_TRUE(m_window->viewport().rendererError().isEmpty());
-        m_window->scene().forEachNode([&](const document::Node& node) {
+        m_window->scene().forEachNode([&](const speculum::scene::Node& node) {
             if (node.name() == "Teapot") {
                 m_teapot = node.id();
             }
         });
-        ASSERT_NE(m_teapot, document::kNoNode);
+        ASSERT_NE(m_teapot, speculum::scene::kNoNode);
         m_window->selection().selectNode(m_teapot);
         m_window->viewport().setHandleMode(ui::HandleMode::Move);
         ASSERT_TRUE(waitForFrames(*m_window));
@@ -63,12 +63,12 @@ protected:
         QCoreApplication::sendEvent(&viewport, &move);
     }
 
-    document::Transform teapotTransform() const {
+    speculum::scene::Transform teapotTransform() const {
         return m_window->scene().findNode(m_teapot)->data().transform;
     }
 
     std::unique_ptr<ui::MainWindow> m_window;
-    NodeId m_teapot = document::kNoNode;
+    NodeId m_teapot = speculum::scene::kNoNode;
 };
 
 TEST_F(HandleCancel, EscPutsTheNodeBackAndLeavesTheDocumentClean) {
@@ -77,7 +77,7 @@ TEST_F(HandleCancel, EscPutsTheNodeBackAndLeavesTheDocumentClean) {
     ASSERT_TRUE(undo.isClean());
     ASSERT_FALSE(shownTitle().contains(QLatin1Char('*'))) << shownTitle().toStdString();
     const int steps = undo.count();
-    const document::Transform start = teapotTransform();
+    const speculum::scene::Transform start = teapotTransform();
 
     const auto handle = viewport.handlePoint(0);
     ASSERT_TRUE(handle);
@@ -111,7 +111,7 @@ TEST_F(HandleCancel, ADragBackToItsStartLeavesNoStepAndARealDragStillUndoes) {
     ui::Viewport& viewport = m_window->viewport();
     QUndoStack& undo = m_window->undoStack();
     const int steps = undo.count();
-    const document::Transform start = teapotTransform();
+    const speculum::scene::Transform start = teapotTransform();
     const auto handle = viewport.handlePoint(0);
     ASSERT_TRUE(handle);
     const QPoint grip = handle->toPoint();
@@ -129,7 +129,7 @@ TEST_F(HandleCancel, ADragBackToItsStartLeavesNoStepAndARealDragStillUndoes) {
     QTest::mousePress(&viewport, Qt::LeftButton, Qt::NoModifier, grip);
     moveMouse(QPointF(grip) + QPointF(40, 0));
     QTest::mouseRelease(&viewport, Qt::LeftButton, Qt::NoModifier, grip + QPoint(40, 0));
-    const document::Transform moved = teapotTransform();
+    const speculum::scene::Transform moved = teapotTransform();
     ASSERT_NE(moved, start);
     EXPECT_EQ(undo.count(), steps + 1);
     EXPECT_EQ(undo.undoText().toStdString(), "Move \u201cTeapot\u201d");

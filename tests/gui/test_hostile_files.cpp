@@ -143,7 +143,7 @@ std::ostream& operator<<(std::ostream& out, const DocumentState& s) {
 DocumentState stateOf(MainWindow& window) {
     DocumentState s;
     window.scene().forEachNode(
-        [&](const document::Node& node) { s.nodes << QString::fromStdString(node.name()); });
+        [&](const speculum::scene::Node& node) { s.nodes << QString::fromStdString(node.name()); });
     s.undoCount = window.undoStack().count();
     s.undoIndex = window.undoStack().index();
     s.modified = window.isModified();

@@ -98,8 +98,8 @@ TEST_F(IdleRedraw, AStaticDemoDrawsNothingEvenWhileTheClockRuns) {
 
 TEST_F(IdleRedraw, AnEditAndItsUndoEachDrawThenStop) {
     open(kChromeProject);
-    const document::Node* first = m_window->scene().topLevelNodes().front().get();
-    document::NodeData data = first->data();
+    const speculum::scene::Node* first = m_window->scene().topLevelNodes().front().get();
+    speculum::scene::NodeData data = first->data();
     data.transform.translate.x += 0.25;
     ASSERT_TRUE(document::pushEdit(m_window->undoStack(),
                                    new document::SetNodeDataCommand(m_window->scene(), first->id(), data)));
@@ -146,8 +146,8 @@ TEST_F(IdleRedraw, RemovingTheLastAnimationStopsTheFrames) {
     m_window->clock().setPlaying(true);
     ASSERT_TRUE(viewport().isAnimating());
     // Clears every node's animation, one undo step each: the scene becomes static while it plays.
-    std::vector<std::pair<document::NodeId, document::NodeData>> animated;
-    m_window->scene().forEachNode([&](const document::Node& node) {
+    std::vector<std::pair<speculum::scene::NodeId, speculum::scene::NodeData>> animated;
+    m_window->scene().forEachNode([&](const speculum::scene::Node& node) {
         if (node.data().animation) {
             animated.emplace_back(node.id(), node.data());
         }

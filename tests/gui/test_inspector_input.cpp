@@ -35,17 +35,17 @@ using test::waitForFrames;
 
 const QString kChrome = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json");
 
-document::NodeId findNode(const document::Scene& scene, bool (*pick)(const document::NodeData&)) {
-    document::NodeId found = document::kNoNode;
-    scene.forEachNode([&](const document::Node& node) {
-        if (found == document::kNoNode && pick(node.data())) {
+scene::NodeId findNode(const scene::Scene& scene, bool (*pick)(const scene::NodeData&)) {
+    scene::NodeId found = scene::kNoNode;
+    scene.forEachNode([&](const scene::Node& node) {
+        if (found == scene::kNoNode && pick(node.data())) {
             found = node.id();
         }
     });
     return found;
 }
 
-bool isReflector(const document::NodeData& d) {
+bool isReflector(const scene::NodeData& d) {
     return d.reflector.has_value();
 }
 
@@ -67,7 +67,7 @@ protected:
         ASSERT_TRUE(m_window->openProjectFile(kChrome).ok());
         ASSERT_TRUE(waitForFrames(*m_window, 1));
     }
-    document::Scene& scene() { return m_window->scene(); }
+    scene::Scene& scene() { return m_window->scene(); }
     template <typename W>
     W* field(const char* name) {
         return m_window->inspector().findChild<W*>(QString::fromLatin1(name));
@@ -77,15 +77,15 @@ protected:
 };
 
 TEST_F(InspectorInputTest, WheelOverAnUnfocusedFieldScrollsThePanelAndEditsNothing) {
-    const document::NodeId id = findNode(scene(), isReflector);
-    ASSERT_NE(id, document::kNoNode);
+    const scene::NodeId id = findNode(scene(), isReflector);
+    ASSERT_NE(id, scene::kNoNode);
     m_window->selection().selectNode(id);
     QCoreApplication::processEvents();
     auto* scroll = m_window->inspector().findChild<QScrollArea*>();
     ASSERT_NE(scroll, nullptr);
     ASSERT_GT(scroll->verticalScrollBar()->maximum(), 0) << "the panel should be taller than the window";
     const int undoBefore = m_window->undoStack().count();
-    const document::NodeData before = scene().findNode(id)->data();
+    const scene::NodeData before = scene().findNode(id)->data();
     m_window->viewport().setFocus();
     for (const char* name : {"reflector.resolution", "reflector.map", "reflector.reflectivity.slider",
                              "transform.translate.x"}) {
@@ -115,8 +115,8 @@ TEST_F(InspectorInputTest, WheelOverAnUnfocusedFieldScrollsThePanelAndEditsNothi
 }
 
 TEST_F(InspectorInputTest, ATinyScaleShowsAsItselfAndEditsInOneStep) {
-    const document::NodeId id = findNode(scene(), isReflector);
-    document::NodeData data = scene().findNode(id)->data();
+    const scene::NodeId id = findNode(scene(), isReflector);
+    scene::NodeData data = scene().findNode(id)->data();
     data.transform.scale = glm::dvec3(5e-5);
     scene().setNodeData(id, data);
     m_window->selection().selectNode(id);
@@ -154,7 +154,7 @@ TEST_F(InspectorInputTest, ATinyScaleShowsAsItselfAndEditsInOneStep) {
 }
 
 TEST_F(InspectorInputTest, ParallaxProxyIsEditableAndRoundTrips) {
-    const document::NodeId id = findNode(scene(), isReflector);
+    const scene::NodeId id = findNode(scene(), isReflector);
     m_window->selection().selectNode(id);
     QCoreApplication::processEvents();
     ASSERT_NE(m_window->inspector().editor(QStringLiteral("reflector.parallax")), nullptr);
@@ -171,23 +171,23 @@ TEST_F(InspectorInputTest, ParallaxProxyIsEditableAndRoundTrips) {
                     .ok());
     const auto proxy = scene().findNode(id)->data().reflector->parallax;
     ASSERT_TRUE(proxy.has_value());
-    EXPECT_EQ(proxy->shape, document::ParallaxShape::Box);
+    EXPECT_EQ(proxy->shape, scene::ParallaxShape::Box);
 
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("proxy.speculum.json"));
     ASSERT_TRUE(m_window->saveProjectFile(path).ok());
     ASSERT_TRUE(m_window->openProjectFile(path).ok());
-    const document::NodeId again = findNode(scene(), isReflector);
+    const scene::NodeId again = findNode(scene(), isReflector);
     const auto loaded = scene().findNode(again)->data().reflector->parallax;
     ASSERT_TRUE(loaded.has_value());
-    EXPECT_EQ(loaded->shape, document::ParallaxShape::Box);
+    EXPECT_EQ(loaded->shape, scene::ParallaxShape::Box);
     EXPECT_EQ(loaded->max, glm::dvec3(3.0, 4.0, 5.0));
     m_window->undoStack().clear();
 }
 
 TEST_F(InspectorInputTest, ExportStillExactReferenceWritesAndCancelWritesNothing) {
     QTemporaryDir dir;
-    document::StillExportSettings settings;
+    scene::StillExportSettings settings;
     settings.width = 48;
     settings.height = 32;
     settings.reference = true;

@@ -27,7 +27,7 @@
 
 namespace {
 
-using speculum::document::NodeId;
+using speculum::scene::NodeId;
 using speculum::ui::MainWindow;
 
 const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
@@ -121,7 +121,7 @@ protected:
 
     std::optional<NodeId> nodeNamed(const std::string& name) {
         std::optional<NodeId> found;
-        m_window->scene().forEachNode([&](const speculum::document::Node& node) {
+        m_window->scene().forEachNode([&](const speculum::scene::Node& node) {
             if (node.name() == name && !found) {
                 found = node.id();
             }

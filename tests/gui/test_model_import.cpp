@@ -56,7 +56,7 @@ protected:
 
     // How many top-level nodes the imports added, and the i-th of them.
     std::size_t importedCount() const { return m_window->scene().topLevelNodes().size() - m_startNodes; }
-    const document::Node& imported(std::size_t i) const {
+    const speculum::scene::Node& imported(std::size_t i) const {
         return *m_window->scene().topLevelNodes().at(m_startNodes + i);
     }
 
@@ -72,13 +72,13 @@ protected:
     }
 
     // The world box of every vertex the scene draws under `root` (the whole scene when kNoNode).
-    render::math::Box worldBox(document::NodeId root = document::kNoNode) {
+    render::math::Box worldBox(speculum::scene::NodeId root = speculum::scene::kNoNode) {
         render::math::Box box;
-        const auto worlds = document::worldMatrices(m_window->scene(), 0.0);
+        const auto worlds = speculum::scene::worldMatrices(m_window->scene(), 0.0);
         std::vector<std::string> ignored;
-        m_window->scene().forEachNode([&](const document::Node& n) {
+        m_window->scene().forEachNode([&](const speculum::scene::Node& n) {
             if (!n.data().mesh ||
-                (root != document::kNoNode && !m_window->scene().isAncestor(root, n.id()))) {
+                (root != speculum::scene::kNoNode && !m_window->scene().isAncestor(root, n.id()))) {
                 return;
             }
             auto mesh = m_window->viewport().meshes().get(*n.data().mesh, ignored);
@@ -129,7 +129,7 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
     ASSERT_TRUE(status.ok()) << status.error();
     EXPECT_EQ(undo.count(), steps + 1) << "the whole model is one undo step";
     ASSERT_EQ(importedCount(), 1u);
-    const document::Node& root = imported(0);
+    const speculum::scene::Node& root = imported(0);
     EXPECT_EQ(root.data().name, "2CylinderEngine");
     EXPECT_EQ(m_window->selection().node(), root.id()) << "the import is selected";
 
@@ -138,7 +138,7 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
     std::set<std::string> names;
     int parts = 0;
     std::set<std::tuple<float, float, float>> colours;
-    m_window->scene().forEachNode([&](const document::Node& n) {
+    m_window->scene().forEachNode([&](const speculum::scene::Node& n) {
         if (!m_window->scene().isAncestor(root.id(), n.id())) {
             return; // the new scene's floor and sun
         }
@@ -162,7 +162,7 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
 
     // Real size (the file's metres, not a unit box), standing on the ground where the view looks.
     std::vector<std::string> warnings;
-    auto model = document::importModelFile(kEngine.toStdString(), warnings);
+    auto model = speculum::scene::importModelFile(kEngine.toStdString(), warnings);
     ASSERT_TRUE(model) << model.error();
     const glm::dvec3 fileSize = glm::dvec3(model->bounds.max) - glm::dvec3(model->bounds.min);
     const render::math::Box placed = worldBox(root.id());
@@ -177,7 +177,7 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
     EXPECT_NEAR(placed.center().z, focus.z, 1e-3 * size.z);
 
     // Undo takes all of it away in one step; redo brings back the same nodes.
-    const document::SceneData imported = m_window->scene().toData();
+    const speculum::scene::SceneData imported = m_window->scene().toData();
     undo.undo();
     EXPECT_EQ(importedCount(), 0u);
     undo.redo();
@@ -201,7 +201,7 @@ TEST_F(ModelImportGui, SecondImportLandsBesideTheFirstAndFittingIsAnOption) {
     EXPECT_NEAR(second.center().z, first.center().z, 1e-6 * (first.max.z - first.min.z + 1.0));
     const glm::dvec3 realSize = first.max - first.min;
     std::vector<std::string> warnings;
-    auto model = document::importModelFile(kDuck.toStdString(), warnings);
+    auto model = speculum::scene::importModelFile(kDuck.toStdString(), warnings);
     ASSERT_TRUE(model) << model.error();
     const glm::dvec3 fileSize = glm::dvec3(model->bounds.max) - glm::dvec3(model->bounds.min);
     EXPECT_NEAR(realSize.x, fileSize.x, 1e-4 * fileSize.x)
@@ -230,7 +230,7 @@ TEST_F(ModelImportGui, ReflectorSurfaceIsTheWholeFileOnTheGround) {
     }
     ASSERT_TRUE(m_window->importModelFile(kDuck, true).ok());
     ASSERT_EQ(importedCount(), 1u);
-    const document::Node& node = imported(0);
+    const speculum::scene::Node& node = imported(0);
     EXPECT_TRUE(node.data().reflector);
     ASSERT_TRUE(node.data().mesh);
     EXPECT_EQ(node.data().mesh->file, kDuck.toStdString());
@@ -244,7 +244,7 @@ TEST_F(ModelImportGui, ReflectorSurfaceIsTheWholeFileOnTheGround) {
 TEST_F(ModelImportGui, MissingOrBrokenFilesLeaveTheDocumentUnmodified) {
     m_window->addNode(document::NewNodeKind::Teapot);
     m_window->undoStack().setClean();
-    const document::SceneData before = m_window->scene().toData();
+    const speculum::scene::SceneData before = m_window->scene().toData();
     const int steps = m_window->undoStack().count();
     QTemporaryDir dir;
     const QString garbage = dir.filePath(QStringLiteral("garbage.obj"));
@@ -326,7 +326,7 @@ TEST_F(ModelImportGui, WindowRepaintsDuringABigImportAndCancelLeavesTheDocument)
             ->openProjectFile(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json"))
             .ok());
     ASSERT_TRUE(waitForFrames(*m_window));
-    const document::SceneData before = m_window->scene().toData();
+    const speculum::scene::SceneData before = m_window->scene().toData();
 
     // Hold the worker inside the import until the window has painted a few frames: the import is
     // certainly in flight while the GUI thread draws.
@@ -369,8 +369,9 @@ TEST_F(ModelImportGui, WindowRepaintsDuringABigImportAndCancelLeavesTheDocument)
     EXPECT_FALSE(m_window->isModified());
 
     // Every mesh already there has its pick hierarchy after one click.
-    document::pick(document::buildPickScene(m_window->scene(), 0.0, m_window->viewport().meshes()),
-                   document::Ray{{0.0, 10.0, 0.0}, {0.0, -1.0, 0.0}});
+    speculum::scene::pick(
+        speculum::scene::buildPickScene(m_window->scene(), 0.0, m_window->viewport().meshes()),
+        speculum::scene::Ray{{0.0, 10.0, 0.0}, {0.0, -1.0, 0.0}});
 
     // The same file, not cancelled: in it comes, with its pick hierarchy built on the worker, so neither
     // the next frames nor a click on it builds one (nor reads the file again: that would make new meshes).
@@ -379,19 +380,19 @@ TEST_F(ModelImportGui, WindowRepaintsDuringABigImportAndCancelLeavesTheDocument)
     auto status = m_window->importModelFile(ply);
     ASSERT_TRUE(status.ok()) << status.error();
     EXPECT_GT(progressReports, 2);
-    const document::NodeId scan = m_window->scene().topLevelNodes().back()->id();
+    const speculum::scene::NodeId scan = m_window->scene().topLevelNodes().back()->id();
     EXPECT_EQ(m_window->scene().findNode(scan)->data().name, "scan");
-    const auto builds = document::pickCacheStats().accelBuilds;
+    const auto builds = speculum::scene::pickCacheStats().accelBuilds;
     ASSERT_TRUE(waitForFrames(*m_window, 2));
     const render::math::Box box = worldBox(scan);
     ASSERT_FALSE(box.empty());
-    const document::PickScene picks =
-        document::buildPickScene(m_window->scene(), 0.0, m_window->viewport().meshes());
+    const speculum::scene::PickScene picks =
+        speculum::scene::buildPickScene(m_window->scene(), 0.0, m_window->viewport().meshes());
     const glm::dvec3 above(box.center().x, box.max.y + 1.0, box.center().z);
-    const auto hit = document::pick(picks, document::Ray{above, {0.0, -1.0, 0.0}});
+    const auto hit = speculum::scene::pick(picks, speculum::scene::Ray{above, {0.0, -1.0, 0.0}});
     ASSERT_TRUE(hit);
     EXPECT_TRUE(m_window->scene().isAncestor(scan, hit->id));
-    EXPECT_EQ(document::pickCacheStats().accelBuilds, builds) << "built on the worker, once";
+    EXPECT_EQ(speculum::scene::pickCacheStats().accelBuilds, builds) << "built on the worker, once";
 }
 
 } // namespace

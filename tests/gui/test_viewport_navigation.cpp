@@ -240,7 +240,7 @@ TEST_F(AdaptiveResolution, TheWheelAndAHandleDragPreviewToo) {
     EXPECT_FALSE(afterWheel[0].reduced);
 
     // The first top-level node with a mesh, and its move handle.
-    std::optional<document::NodeId> node;
+    std::optional<speculum::scene::NodeId> node;
     for (const auto& n : m_window->scene().topLevelNodes()) {
         if (n->data().mesh) {
             node = n->id();
@@ -305,8 +305,8 @@ protected:
         return glm::normalize(c.target - c.position);
     }
 
-    document::Scene m_scene;
-    document::MeshLibrary m_meshes;
+    speculum::scene::Scene m_scene;
+    speculum::scene::MeshLibrary m_meshes;
     std::unique_ptr<view::AnimationClock> m_clock;
     QWidget m_host;
     ui::Viewport* m_viewport = nullptr;
@@ -339,7 +339,7 @@ TEST_F(ViewportActions, NumpadKeysTurnTheViewAroundItsTarget) {
         EXPECT_NEAR(glm::length(m_viewport->viewCamera().target - target), 0.0, 1e-9) << "same pivot";
         EXPECT_TRUE(waitFor([&] { return m_viewport->framesRendered() > frames; }, 30000)) << "drawn";
     }
-    EXPECT_TRUE(m_scene.camera() == document::CameraData{}) << "the scene camera is not edited";
+    EXPECT_TRUE(m_scene.camera() == speculum::scene::CameraData{}) << "the scene camera is not edited";
 }
 
 TEST_F(ViewportActions, ShowGuidesTogglesTheOverlayGuides) {
@@ -384,7 +384,7 @@ TEST_F(ViewportActions, ASavedViewIsPlacedAfterTheResetOfANewDocument) {
         ++resets;
         m_viewport->placeView(position, target);
     });
-    document::SceneData data;
+    speculum::scene::SceneData data;
     data.camera.position = {0.0, 1.0, 9.0};
     m_scene.reset(std::move(data));
     EXPECT_EQ(resets, 1);
@@ -394,10 +394,10 @@ TEST_F(ViewportActions, ASavedViewIsPlacedAfterTheResetOfANewDocument) {
     EXPECT_EQ(m_viewport->viewCamera().up, m_viewport->sceneCamera().up);
 
     // A caller connected to Scene::sceneReset itself, after the viewport: its placement stays too.
-    QObject::connect(&m_scene, &document::Scene::sceneReset, m_viewport, [&] {
+    QObject::connect(&m_scene, &speculum::scene::Scene::sceneReset, m_viewport, [&] {
         m_viewport->placeView({5.0, 5.0, 5.0}, {0.0, 0.0, 0.0});
     });
-    m_scene.reset(document::SceneData{});
+    m_scene.reset(speculum::scene::SceneData{});
     EXPECT_EQ(m_viewport->viewPositionTarget().first, glm::dvec3(5.0, 5.0, 5.0));
     // Double-click still goes back to the scene camera.
     m_viewport->resetView();

@@ -9,23 +9,23 @@
 
 namespace speculum::document::test {
 
-inline NodeTree named(const std::string& name, std::vector<NodeTree> children = {}) {
-    NodeTree node;
+inline scene::NodeTree named(const std::string& name, std::vector<scene::NodeTree> children = {}) {
+    scene::NodeTree node;
     node.data.name = name;
     node.children = std::move(children);
     return node;
 }
 
-inline SceneData threeNodeScene() {
-    SceneData data;
+inline scene::SceneData threeNodeScene() {
+    scene::SceneData data;
     data.nodes = {named("A"), named("B", {named("B1"), named("B2")}), named("C")};
     return data;
 }
 
 // The id of the node called `name`, or kNoNode.
-inline NodeId nodeIdByName(const Scene& scene, const std::string& name) {
-    NodeId found = kNoNode;
-    scene.forEachNode([&](const Node& node) {
+inline scene::NodeId nodeIdByName(const scene::Scene& scene, const std::string& name) {
+    scene::NodeId found = scene::kNoNode;
+    scene.forEachNode([&](const scene::Node& node) {
         if (node.name() == name) {
             found = node.id();
         }

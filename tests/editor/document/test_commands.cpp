@@ -15,10 +15,10 @@ protected:
     void SetUp() override {
         scene.reset(test::threeNodeScene());
         original = scene.toData();
-        QObject::connect(&scene, &Scene::changed, [this] { ++changes; });
+        QObject::connect(&scene, &scene::Scene::changed, [this] { ++changes; });
     }
 
-    NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
+    scene::NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
 
     std::vector<std::string> topLevelNames() const {
         std::vector<std::string> names;
@@ -28,19 +28,19 @@ protected:
         return names;
     }
 
-    Scene scene;
+    scene::Scene scene;
     QUndoStack stack;
-    SceneData original;
+    scene::SceneData original;
     int changes = 0;
 };
 
 TEST_F(CommandsTest, SetNodeDataUndoesAndRedoes) {
-    const NodeId a = idOf("A");
-    NodeData data = scene.findNode(a)->data();
+    const scene::NodeId a = idOf("A");
+    scene::NodeData data = scene.findNode(a)->data();
     data.transform.translate = {1, 2, 3};
-    data.material = MaterialComponent{};
-    NodeId signalled = kNoNode;
-    QObject::connect(&scene, &Scene::nodeChanged, [&](NodeId id) { signalled = id; });
+    data.material = scene::MaterialComponent{};
+    scene::NodeId signalled = scene::kNoNode;
+    QObject::connect(&scene, &scene::Scene::nodeChanged, [&](scene::NodeId id) { signalled = id; });
     stack.push(new SetNodeDataCommand(scene, a, data));
     EXPECT_EQ(signalled, a);
     EXPECT_EQ(scene.findNode(a)->data(), data);
@@ -52,9 +52,9 @@ TEST_F(CommandsTest, SetNodeDataUndoesAndRedoes) {
 }
 
 TEST_F(CommandsTest, ASliderDragIsOneUndoStep) {
-    const NodeId a = idOf("A");
+    const scene::NodeId a = idOf("A");
     for (int i = 1; i <= 10; ++i) {
-        NodeData data = scene.findNode(a)->data();
+        scene::NodeData data = scene.findNode(a)->data();
         data.transform.rotate.y = i * 10.0;
         stack.push(new SetNodeDataCommand(scene, a, data, "Rotate", "transform.rotate#1"));
     }
@@ -66,10 +66,10 @@ TEST_F(CommandsTest, ASliderDragIsOneUndoStep) {
     EXPECT_EQ(scene.findNode(a)->data().transform.rotate.y, 100.0);
 
     // Another key, another node, or no key: separate steps.
-    NodeData data = scene.findNode(a)->data();
+    scene::NodeData data = scene.findNode(a)->data();
     data.transform.scale.x = 2;
     stack.push(new SetNodeDataCommand(scene, a, data, "Scale", "transform.scale#2"));
-    NodeData c = scene.findNode(idOf("C"))->data();
+    scene::NodeData c = scene.findNode(idOf("C"))->data();
     c.transform.scale.x = 3;
     stack.push(new SetNodeDataCommand(scene, idOf("C"), c, "Scale", "transform.scale#2"));
     // Without a key each edit is a step of its own (an edit that changes nothing is none: exact undo).
@@ -86,9 +86,9 @@ TEST_F(CommandsTest, ASliderDragIsOneUndoStep) {
 }
 
 TEST_F(CommandsTest, SetNodesDataChangesSeveralNodesAsOneStep) {
-    const NodeId a = idOf("A"), b1 = idOf("B1"), c = idOf("C");
-    auto moved = [&](NodeId id, double x) {
-        NodeData data = scene.findNode(id)->data();
+    const scene::NodeId a = idOf("A"), b1 = idOf("B1"), c = idOf("C");
+    auto moved = [&](scene::NodeId id, double x) {
+        scene::NodeData data = scene.findNode(id)->data();
         data.transform.translate.x = x;
         return SetNodesDataCommand::Change{id, data};
     };
@@ -98,7 +98,7 @@ TEST_F(CommandsTest, SetNodesDataChangesSeveralNodesAsOneStep) {
     EXPECT_EQ(scene.findNode(a)->data().transform.translate.x, 1.0);
     EXPECT_EQ(scene.findNode(b1)->data().transform.translate.x, 2.0);
     EXPECT_EQ(scene.findNode(c)->data().transform.translate.x, 3.0);
-    const SceneData after = scene.toData();
+    const scene::SceneData after = scene.toData();
     stack.undo();
     EXPECT_EQ(scene.toData(), original) << "undo restores every node";
     stack.redo();
@@ -113,9 +113,9 @@ TEST_F(CommandsTest, SetNodesDataChangesSeveralNodesAsOneStep) {
 }
 
 TEST_F(CommandsTest, AHandleDragOverSeveralNodesIsOneUndoStep) {
-    const NodeId a = idOf("A"), c = idOf("C");
-    auto turned = [&](NodeId id, double degrees) {
-        NodeData data = scene.findNode(id)->data();
+    const scene::NodeId a = idOf("A"), c = idOf("C");
+    auto turned = [&](scene::NodeId id, double degrees) {
+        scene::NodeData data = scene.findNode(id)->data();
         data.transform.rotate.z = degrees;
         return SetNodesDataCommand::Change{id, data};
     };
@@ -147,7 +147,7 @@ TEST_F(CommandsTest, AHandleDragOverSeveralNodesIsOneUndoStep) {
 }
 
 TEST_F(CommandsTest, RenameUndoesAndRedoes) {
-    const NodeId b = idOf("B");
+    const scene::NodeId b = idOf("B");
     stack.push(new RenameNodeCommand(scene, b, "Bee"));
     EXPECT_EQ(scene.findNode(b)->name(), "Bee");
     EXPECT_NE(stack.text(0).indexOf("Bee"), -1);
@@ -159,20 +159,21 @@ TEST_F(CommandsTest, RenameUndoesAndRedoes) {
 }
 
 TEST_F(CommandsTest, AddKeepsItsIdOverUndoRedo) {
-    const NodeId b = idOf("B");
-    std::vector<std::tuple<NodeId, NodeId, int>> added;
-    QObject::connect(&scene, &Scene::nodeAdded,
-                     [&](NodeId id, NodeId parent, int index) { added.emplace_back(id, parent, index); });
+    const scene::NodeId b = idOf("B");
+    std::vector<std::tuple<scene::NodeId, scene::NodeId, int>> added;
+    QObject::connect(
+        &scene, &scene::Scene::nodeAdded,
+        [&](scene::NodeId id, scene::NodeId parent, int index) { added.emplace_back(id, parent, index); });
     auto* command = new AddNodeCommand(scene, named("New", {named("New child")}), b, 1);
     stack.push(command);
-    const NodeId id = command->nodeId();
-    ASSERT_NE(id, kNoNode);
+    const scene::NodeId id = command->nodeId();
+    ASSERT_NE(id, scene::kNoNode);
     ASSERT_EQ(scene.findNode(b)->childCount(), 3);
     EXPECT_EQ(scene.findNode(b)->child(1)->id(), id);
     EXPECT_EQ(scene.findNode(id)->child(0)->name(), "New child");
     ASSERT_EQ(added.size(), 1u);
     EXPECT_EQ(added[0], std::make_tuple(id, b, 1));
-    const NodeId childId = scene.findNode(id)->child(0)->id();
+    const scene::NodeId childId = scene.findNode(id)->child(0)->id();
 
     stack.undo();
     EXPECT_EQ(scene.findNode(id), nullptr);
@@ -189,14 +190,14 @@ TEST_F(CommandsTest, AddKeepsItsIdOverUndoRedo) {
 }
 
 TEST_F(CommandsTest, RemoveRestoresTheSameNodesAtTheSamePlace) {
-    const NodeId b = idOf("B");
-    const NodeId b2 = idOf("B2");
+    const scene::NodeId b = idOf("B");
+    const scene::NodeId b2 = idOf("B2");
     int aboutToRemove = 0;
-    auto connection =
-        QObject::connect(&scene, &Scene::nodeAboutToBeRemoved, [&](NodeId id, NodeId parent, int index) {
+    auto connection = QObject::connect(
+        &scene, &scene::Scene::nodeAboutToBeRemoved, [&](scene::NodeId id, scene::NodeId parent, int index) {
             ++aboutToRemove;
             EXPECT_EQ(id, b);
-            EXPECT_EQ(parent, kNoNode);
+            EXPECT_EQ(parent, scene::kNoNode);
             EXPECT_EQ(index, 1);
             EXPECT_NE(scene.findNode(id), nullptr) << "still there when views are told it is about to go";
         });
@@ -225,8 +226,8 @@ TEST_F(CommandsTest, RemoveRestoresTheSameNodesAtTheSamePlace) {
 }
 
 TEST_F(CommandsTest, MoveReparentsAndUndoes) {
-    const NodeId c = idOf("C");
-    const NodeId b = idOf("B");
+    const scene::NodeId c = idOf("C");
+    const scene::NodeId b = idOf("B");
     stack.push(new MoveNodeCommand(scene, c, b, 0));
     EXPECT_EQ(scene.parentOf(c), b);
     EXPECT_EQ(scene.indexOf(c), 0);
@@ -234,7 +235,7 @@ TEST_F(CommandsTest, MoveReparentsAndUndoes) {
     EXPECT_TRUE(scene.isAncestor(b, c));
     stack.undo();
     EXPECT_EQ(scene.toData(), original);
-    EXPECT_EQ(scene.parentOf(c), kNoNode);
+    EXPECT_EQ(scene.parentOf(c), scene::kNoNode);
     stack.redo();
     EXPECT_EQ(scene.findNode(b)->child(0)->id(), c);
 }
@@ -242,10 +243,10 @@ TEST_F(CommandsTest, MoveReparentsAndUndoes) {
 TEST_F(CommandsTest, SettingsAndCameraUndoAndMerge) {
     int settingsSignals = 0;
     int cameraSignals = 0;
-    QObject::connect(&scene, &Scene::settingsChanged, [&] { ++settingsSignals; });
-    QObject::connect(&scene, &Scene::cameraChanged, [&] { ++cameraSignals; });
+    QObject::connect(&scene, &scene::Scene::settingsChanged, [&] { ++settingsSignals; });
+    QObject::connect(&scene, &scene::Scene::cameraChanged, [&] { ++cameraSignals; });
 
-    SceneSettings settings = scene.settings();
+    scene::SceneSettings settings = scene.settings();
     for (double ambient : {0.3, 0.4, 0.5}) {
         settings.ambient = ambient;
         stack.push(new SetSettingsCommand(scene, settings, true));
@@ -256,7 +257,7 @@ TEST_F(CommandsTest, SettingsAndCameraUndoAndMerge) {
     stack.push(new SetSettingsCommand(scene, settings));
     EXPECT_EQ(stack.count(), 2);
 
-    CameraData camera = scene.camera();
+    scene::CameraData camera = scene.camera();
     for (double x : {1.0, 2.0}) {
         camera.position.x = x;
         stack.push(new SetCameraCommand(scene, camera, true));
@@ -286,14 +287,14 @@ TEST_F(CommandsTest, SettingsAndCameraUndoAndMerge) {
 }
 
 TEST_F(CommandsTest, ResetGivesFreshIdsAndSignals) {
-    std::vector<NodeId> before;
-    scene.forEachNode([&](const Node& node) { before.push_back(node.id()); });
+    std::vector<scene::NodeId> before;
+    scene.forEachNode([&](const scene::Node& node) { before.push_back(node.id()); });
     int resets = 0;
-    QObject::connect(&scene, &Scene::sceneReset, [&] { ++resets; });
+    QObject::connect(&scene, &scene::Scene::sceneReset, [&] { ++resets; });
     scene.reset(original);
     EXPECT_EQ(resets, 1);
     EXPECT_EQ(scene.toData(), original);
-    for (NodeId id : before) {
+    for (scene::NodeId id : before) {
         EXPECT_EQ(scene.findNode(id), nullptr) << "ids are never reused";
     }
 }

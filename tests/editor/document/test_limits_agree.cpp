@@ -1,6 +1,7 @@
 // The project reader and the inspector offer exactly the same range for every limited field, and both take
-// it from render/SceneLimits.hpp: each end loads and can be set in the inspector, one step beyond each end
-// is refused by both. The choices (map types, fills, ...) are spelled once, in render/SceneNames.hpp.
+// it from render/frame/SceneLimits.hpp: each end loads and can be set in the inspector, one step beyond each
+// end is refused by both. The choices (map types, fills, ...) are spelled once, in
+// render/frame/SceneNames.hpp.
 #include "editor/document/Properties.hpp"
 #include "render/frame/GlossyLimits.hpp"
 #include "render/frame/SceneLimits.hpp"
@@ -19,9 +20,9 @@
 namespace speculum::document {
 namespace {
 
-base::Result<SceneData> parse(const std::string& json) {
+base::Result<scene::SceneData> parse(const std::string& json) {
     std::vector<std::string> warnings;
-    return parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
+    return scene::parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
 }
 
 std::string number(double v) {
@@ -126,7 +127,7 @@ struct Inspected {
     std::function<base::Status(const QVariant&)> set;
 };
 
-Inspected inspect(const LimitedField& field, SceneData& data) {
+Inspected inspect(const LimitedField& field, scene::SceneData& data) {
     const QString key = QString::fromLatin1(field.key);
     if (const auto* p = findSettingsProperty(key)) {
         return {&p->info, [p, &data](const QVariant& v) { return p->set(data.settings, v); }};
@@ -154,7 +155,7 @@ TEST(LimitsAgree, TheReaderAcceptsExactlyTheRangeTheInspectorOffers) {
 
         // The inspector: the same range (its spin box and slider are built from these), both ends set, one
         // step beyond refused, on the very data the reader made.
-        SceneData data = *atMinimum;
+        scene::SceneData data = *atMinimum;
         const Inspected inspected = inspect(field, data);
         ASSERT_NE(inspected.info, nullptr) << "no inspector property";
         EXPECT_EQ(inspected.info->minimum, field.minimum);
@@ -216,7 +217,7 @@ TEST(LimitsAgree, EveryChoiceIsSpelledOnceForFileInspectorAndMessages) {
             ASSERT_TRUE(loaded) << loaded.error();
             EXPECT_EQ(p->get(loaded->nodes.at(0).data).toInt(), int(i)) << c.names[i].file;
             EXPECT_EQ(p->info.options[qsizetype(i)].toStdString(), std::string(c.names[i].label));
-            const QByteArray saved = serializeProject(*loaded, QDir("/tmp"));
+            const QByteArray saved = scene::serializeProject(*loaded, QDir("/tmp"));
             EXPECT_TRUE(saved.contains(QByteArray("\"") +
                                        QByteArray(c.names[i].file.data(), qsizetype(c.names[i].file.size())) +
                                        "\""))

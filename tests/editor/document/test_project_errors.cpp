@@ -29,7 +29,7 @@ std::string thirdNode(const std::string& node) {
 
 std::string message(const std::string& json) {
     std::vector<std::string> warnings = {"earlier warning"};
-    auto result = parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
+    auto result = scene::parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
     EXPECT_EQ(warnings.size(), 1u) << "a failed load adds no warnings";
     return result.ok() ? std::string("<loaded>") : result.error();
 }
@@ -303,13 +303,13 @@ TEST(ProjectErrors, EveryValidationErrorNamesItsJsonPath) {
 // and an error in it never names the scene camera.
 TEST(ProjectErrors, TheEditorViewIsCheckedOnItsOwn) {
     std::vector<std::string> warnings;
-    auto top = parseProject(QByteArray::fromStdString(
-                                document(R"("editorView": { "position": [0, 10, 0], "target": [0, 0, 0] })")),
-                            QDir("/tmp"), warnings);
+    auto top = scene::parseProject(QByteArray::fromStdString(document(
+                                       R"("editorView": { "position": [0, 10, 0], "target": [0, 0, 0] })")),
+                                   QDir("/tmp"), warnings);
     ASSERT_TRUE(top.ok()) << top.error();
     ASSERT_TRUE(top->editorView.has_value());
     EXPECT_EQ(top->editorView->position, glm::dvec3(0, 10, 0));
-    EXPECT_EQ(top->camera, CameraData{});
+    EXPECT_EQ(top->camera, scene::CameraData{});
     EXPECT_TRUE(warnings.empty());
 
     const std::string m = message(document(R"("camera": { "position": [0, 0, 5] },
@@ -336,13 +336,16 @@ TEST(ProjectErrors, EmptyFileIsReported) {
 
 TEST(ProjectErrors, MinimalDocumentLoadsWithDefaults) {
     std::vector<std::string> warnings;
-    auto scene = parseProject(R"({ "format": "speculum-scene", "version": 1 })", QDir("/tmp"), warnings);
+    auto scene =
+        scene::parseProject(R"({ "format": "speculum-scene", "version": 1 })", QDir("/tmp"), warnings);
     ASSERT_TRUE(scene.ok()) << scene.error();
-    EXPECT_EQ(*scene, SceneData{});
-    auto sphere = parseProject(QByteArray::fromStdString(thirdNode(R"({ "mesh": { "builtin": "sphere" } })")),
-                               QDir("/tmp"), warnings);
+    EXPECT_EQ(*scene, scene::SceneData{});
+    auto sphere =
+        scene::parseProject(QByteArray::fromStdString(thirdNode(R"({ "mesh": { "builtin": "sphere" } })")),
+                            QDir("/tmp"), warnings);
     ASSERT_TRUE(sphere.ok()) << sphere.error();
-    EXPECT_EQ(sphere->nodes[2].data.mesh->tessellation, defaultTessellation(BuiltinMesh::Sphere));
+    EXPECT_EQ(sphere->nodes[2].data.mesh->tessellation,
+              scene::defaultTessellation(scene::BuiltinMesh::Sphere));
     EXPECT_TRUE(warnings.empty());
 }
 
@@ -356,12 +359,12 @@ namespace {
 // every file passes before the readers see it.
 TEST(ProjectVersion, CurrentVersionFilesPassTheHeaderAndUpgradeUnchanged) {
     const QJsonObject root{
-        {"format", "speculum-scene"}, {"version", kProjectFormatVersion}, {"nodes", QJsonArray{}}};
-    const auto version = readProjectHeader(root);
+        {"format", "speculum-scene"}, {"version", scene::kProjectFormatVersion}, {"nodes", QJsonArray{}}};
+    const auto version = scene::readProjectHeader(root);
     ASSERT_TRUE(version.ok()) << version.error();
-    EXPECT_EQ(*version, kProjectFormatVersion);
+    EXPECT_EQ(*version, scene::kProjectFormatVersion);
     QJsonObject upgraded = root;
-    upgradeToCurrentVersion(upgraded, *version);
+    scene::upgradeToCurrentVersion(upgraded, *version);
     EXPECT_EQ(upgraded, root);
 }
 
@@ -395,7 +398,7 @@ bool hasRawControl(const std::string& s) {
 
 std::string bad(const std::string& json) {
     std::vector<std::string> warnings;
-    auto result = parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
+    auto result = scene::parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
     return result.ok() ? std::string("<loaded>") : result.error();
 }
 
@@ -442,9 +445,9 @@ TEST(ProjectMessages, ControlCharactersInStringValuesAreEscapedOnOneLine) {
 
 TEST(ProjectMessages, UnknownKeysInWarningsAreEscaped) {
     std::vector<std::string> warnings;
-    auto scene = parseProject(QByteArray(R"({ "format": "speculum-scene", "version": 1,
+    auto scene = scene::parseProject(QByteArray(R"({ "format": "speculum-scene", "version": 1,
                                               "x\nspeculum: error: y\u001b": 1 })"),
-                              QDir("/tmp"), warnings);
+                                     QDir("/tmp"), warnings);
     ASSERT_TRUE(scene.ok()) << scene.error();
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_FALSE(hasRawControl(warnings[0])) << warnings[0];
@@ -566,7 +569,7 @@ std::string loadWithTimeout(const std::function<std::string()>& load, int fifoWr
 
 std::string projectError(const QString& path) {
     std::vector<std::string> warnings;
-    auto result = loadProject(path, warnings);
+    auto result = scene::loadProject(path, warnings);
     return result.ok() ? std::string("<loaded>") : result.error();
 }
 

@@ -22,13 +22,13 @@ using test::readBytes;
 using test::writeBytes;
 
 // A scene that uses every component and every non-default value the format has.
-SceneData everythingScene(const QDir& folder) {
-    SceneData scene;
+scene::SceneData everythingScene(const QDir& folder) {
+    scene::SceneData scene;
     scene.settings.background = {0.05, 0.2, 0.3};
     scene.settings.mirrorDepth = 5;
     scene.settings.ambient = 0.35;
     scene.settings.simplifyReflections = false;
-    scene.settings.glossyFilter = GlossyFilter::Mip;
+    scene.settings.glossyFilter = scene::GlossyFilter::Mip;
     scene.settings.glossyTaps = 7;
     scene.settings.prefilterSamples = 333;
     scene.camera.position = {1e5 + 0.125, -2.5, 7};
@@ -38,52 +38,55 @@ SceneData everythingScene(const QDir& folder) {
     scene.camera.near = 0.001;
     scene.camera.far = 999.875; // within render::kMaxFarNearRatio of near
 
-    NodeTree ball;
+    scene::NodeTree ball;
     ball.data.name = "Chrome \"ball\" \u00e9\t";
     ball.data.transform = {{1, -0.5, -3}, {10, 20, 30}, {0.4, 0.4, -0.4}, {}};
-    ball.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere, 48);
-    ball.data.reflector =
-        ReflectorComponent{ReflectorMap::TennisBall,
-                           512,
-                           0.75,
-                           true,
-                           ReflectorFill::Direct,
-                           ReflectorParallax{ParallaxShape::Box, 5, {-1, -2, -3}, {4, 5, 6}, {}},
-                           ReflectorUpdate::Once,
-                           3,
-                           0.25,
-                           {}};
-    ball.data.material = MaterialComponent{{0.1, 0.2, 0.3},
-                                           0.5,
-                                           0.25,
-                                           0.75,
-                                           100,
-                                           {0.01, 0.02, 0.03},
-                                           folder.absoluteFilePath("textures/chrome.png").toStdString(),
-                                           {}};
+    ball.data.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Sphere, 48);
+    ball.data.reflector = scene::ReflectorComponent{
+        scene::ReflectorMap::TennisBall,
+        512,
+        0.75,
+        true,
+        scene::ReflectorFill::Direct,
+        scene::ReflectorParallax{scene::ParallaxShape::Box, 5, {-1, -2, -3}, {4, 5, 6}, {}},
+        scene::ReflectorUpdate::Once,
+        3,
+        0.25,
+        {}};
+    ball.data.material =
+        scene::MaterialComponent{{0.1, 0.2, 0.3},
+                                 0.5,
+                                 0.25,
+                                 0.75,
+                                 100,
+                                 {0.01, 0.02, 0.03},
+                                 folder.absoluteFilePath("textures/chrome.png").toStdString(),
+                                 {}};
 
-    NodeTree mirror;
+    scene::NodeTree mirror;
     mirror.data.name = "Wall mirror";
     mirror.data.transform.rotate = {90, 0, 0};
-    mirror.data.mirror = MirrorComponent{{3, 1.5}, 0.9, MirrorTechnique::Texture, {}};
+    mirror.data.mirror = scene::MirrorComponent{{3, 1.5}, 0.9, scene::MirrorTechnique::Texture, {}};
 
-    NodeTree spot;
+    scene::NodeTree spot;
     spot.data.name = "Spot";
-    spot.data.light =
-        LightComponent{LightType::Spot, {1, 0.9, 0.8}, 2.5, 40, 0.3, ShadowComponent{2048, 7, {}}, {}};
-    spot.data.animation =
-        AnimationComponent{BounceAnimation{0.3, 1.5, {}}, OrbitAnimation{{0, 2, -3}, 1.5, 6, {}}, {}};
+    spot.data.light = scene::LightComponent{
+        scene::LightType::Spot, {1, 0.9, 0.8}, 2.5, 40, 0.3, scene::ShadowComponent{2048, 7, {}}, {}};
+    spot.data.animation = scene::AnimationComponent{
+        scene::BounceAnimation{0.3, 1.5, {}}, scene::OrbitAnimation{{0, 2, -3}, 1.5, 6, {}}, {}};
 
-    NodeTree sun;
+    scene::NodeTree sun;
     sun.data.name = "Sun";
-    sun.data.light = LightComponent{LightType::Directional, {1, 1, 1}, 0.5, 30, 0.15, std::nullopt, {}};
+    sun.data.light =
+        scene::LightComponent{scene::LightType::Directional, {1, 1, 1}, 0.5, 30, 0.15, std::nullopt, {}};
 
-    NodeTree model;
+    scene::NodeTree model;
     model.data.name = "Imported";
-    model.data.mesh = MeshComponent::fromFile(folder.absoluteFilePath("models/bunny.obj").toStdString());
+    model.data.mesh =
+        scene::MeshComponent::fromFile(folder.absoluteFilePath("models/bunny.obj").toStdString());
     model.children = {spot, sun};
 
-    NodeTree group;
+    scene::NodeTree group;
     group.data.name = "Group";
     group.children = {mirror, model};
 
@@ -93,14 +96,14 @@ SceneData everythingScene(const QDir& folder) {
 
 TEST(ProjectFile, DemoSceneLoadsWithoutWarnings) {
     std::vector<std::string> warnings;
-    auto loaded = loadProject(demoScenePath(), warnings);
+    auto loaded = scene::loadProject(demoScenePath(), warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_TRUE(warnings.empty());
-    const SceneData& scene = *loaded;
+    const scene::SceneData& scene = *loaded;
     ASSERT_EQ(scene.nodes.size(), 3u);
     EXPECT_EQ(scene.nodes[0].data.name, "Teapot");
     ASSERT_TRUE(scene.nodes[0].data.mesh && scene.nodes[0].data.mesh->builtin);
-    EXPECT_EQ(*scene.nodes[0].data.mesh->builtin, BuiltinMesh::Teapot);
+    EXPECT_EQ(*scene.nodes[0].data.mesh->builtin, scene::BuiltinMesh::Teapot);
     EXPECT_EQ(scene.nodes[0].data.mesh->tessellation, 8);
     EXPECT_EQ(scene.camera.fovY, 65.0);
     // The texture path is relative in the file and absolute in the model.
@@ -116,16 +119,16 @@ TEST(ProjectFile, DemoSceneLoadsWithoutWarnings) {
 TEST(ProjectFile, DemoSceneSavesTwiceToIdenticalBytes) {
     const auto folder = freshTestFolder();
     std::vector<std::string> warnings;
-    auto original = loadProject(demoScenePath(), warnings);
+    auto original = scene::loadProject(demoScenePath(), warnings);
     ASSERT_TRUE(original.ok()) << original.error();
 
     const QString first = qpath(folder / "first.speculum.json");
     const QString second = qpath(folder / "second.speculum.json");
-    ASSERT_TRUE(saveProject(*original, first).ok());
-    auto reloaded = loadProject(first, warnings);
+    ASSERT_TRUE(scene::saveProject(*original, first).ok());
+    auto reloaded = scene::loadProject(first, warnings);
     ASSERT_TRUE(reloaded.ok()) << reloaded.error();
     EXPECT_EQ(*reloaded, *original); // the texture resolves to the same file from the other folder
-    ASSERT_TRUE(saveProject(*reloaded, second).ok());
+    ASSERT_TRUE(scene::saveProject(*reloaded, second).ok());
     EXPECT_EQ(readBytes(first), readBytes(second));
     EXPECT_TRUE(warnings.empty());
 }
@@ -134,21 +137,21 @@ TEST(ProjectFile, DemoSceneIsWrittenInCanonicalForm) {
     // Saving the demo next to itself reproduces the committed file byte for byte, so the committed file
     // shows exactly what speculum writes.
     std::vector<std::string> warnings;
-    auto scene = loadProject(demoScenePath(), warnings);
+    auto scene = scene::loadProject(demoScenePath(), warnings);
     ASSERT_TRUE(scene.ok()) << scene.error();
-    const QByteArray written = serializeProject(*scene, QFileInfo(demoScenePath()).absoluteDir());
+    const QByteArray written = scene::serializeProject(*scene, QFileInfo(demoScenePath()).absoluteDir());
     EXPECT_EQ(written.toStdString(), readBytes(demoScenePath()).toStdString());
 }
 
 TEST(ProjectFile, EveryComponentRoundTrips) {
     const auto folder = freshTestFolder();
     const QDir dir(qpath(folder));
-    const SceneData scene = everythingScene(dir);
+    const scene::SceneData scene = everythingScene(dir);
     const QString path = qpath(folder / "all.speculum.json");
-    ASSERT_TRUE(saveProject(scene, path).ok());
+    ASSERT_TRUE(scene::saveProject(scene, path).ok());
 
     std::vector<std::string> warnings;
-    auto loaded = loadProject(path, warnings);
+    auto loaded = scene::loadProject(path, warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_TRUE(warnings.empty());
     EXPECT_EQ(*loaded, scene);
@@ -159,23 +162,23 @@ TEST(ProjectFile, EveryComponentRoundTrips) {
     EXPECT_TRUE(bytes.contains("\"far\": 999.875"));
     EXPECT_TRUE(bytes.contains("\"mapSize\": 2048"));
     EXPECT_FALSE(bytes.contains(".0,")) << "integers are written without a fraction";
-    EXPECT_EQ(serializeProject(*loaded, dir), bytes);
+    EXPECT_EQ(scene::serializeProject(*loaded, dir), bytes);
 }
 
 TEST(ProjectFile, ReflectorOptionsHaveDefaultsAndAreWrittenInAFixedOrder) {
     const QByteArray json = R"({ "format": "speculum-scene", "version": 1, "nodes": [
         { "name": "Ball", "mesh": { "builtin": "sphere" }, "reflector": { "map": "dual-paraboloid" } } ] })";
     std::vector<std::string> warnings;
-    auto loaded = parseProject(json, QDir("/tmp"), warnings);
+    auto loaded = scene::parseProject(json, QDir("/tmp"), warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
-    const ReflectorComponent& r = *loaded->nodes[0].data.reflector;
+    const scene::ReflectorComponent& r = *loaded->nodes[0].data.reflector;
     EXPECT_FALSE(r.fresnel);
-    EXPECT_EQ(r.fill, ReflectorFill::Resampled);
+    EXPECT_EQ(r.fill, scene::ReflectorFill::Resampled);
     EXPECT_FALSE(r.parallax.has_value()) << "parallax correction is off by default";
-    EXPECT_EQ(r.update, ReflectorUpdate::OnChange);
+    EXPECT_EQ(r.update, scene::ReflectorUpdate::OnChange);
     EXPECT_EQ(r.mirrorDepth, 1);
 
-    const std::string written = serializeProject(*loaded, QDir("/tmp")).toStdString();
+    const std::string written = scene::serializeProject(*loaded, QDir("/tmp")).toStdString();
     std::size_t last = 0;
     for (const char* key : {"\"map\"", "\"resolution\"", "\"reflectivity\"", "\"fresnel\"", "\"fill\"",
                             "\"update\"", "\"mirrorDepth\""}) {
@@ -187,15 +190,16 @@ TEST(ProjectFile, ReflectorOptionsHaveDefaultsAndAreWrittenInAFixedOrder) {
     EXPECT_EQ(written.find("parallax"), std::string::npos);
 
     // A sphere proxy round-trips with its radius only.
-    SceneData withProxy = *loaded;
-    withProxy.nodes[0].data.reflector->parallax = ReflectorParallax{ParallaxShape::Sphere, 7.5, {}, {}, {}};
-    withProxy.nodes[0].data.reflector->parallax->min = ReflectorParallax{}.min;
-    withProxy.nodes[0].data.reflector->parallax->max = ReflectorParallax{}.max;
-    const QByteArray bytes = serializeProject(withProxy, QDir("/tmp"));
+    scene::SceneData withProxy = *loaded;
+    withProxy.nodes[0].data.reflector->parallax =
+        scene::ReflectorParallax{scene::ParallaxShape::Sphere, 7.5, {}, {}, {}};
+    withProxy.nodes[0].data.reflector->parallax->min = scene::ReflectorParallax{}.min;
+    withProxy.nodes[0].data.reflector->parallax->max = scene::ReflectorParallax{}.max;
+    const QByteArray bytes = scene::serializeProject(withProxy, QDir("/tmp"));
     EXPECT_TRUE(bytes.contains("\"parallax\": {\n")) << bytes.toStdString();
     EXPECT_TRUE(bytes.contains("\"radius\": 7.5")) << bytes.toStdString();
     EXPECT_FALSE(bytes.contains("\"min\"")) << bytes.toStdString();
-    auto again = parseProject(bytes, QDir("/tmp"), warnings);
+    auto again = scene::parseProject(bytes, QDir("/tmp"), warnings);
     ASSERT_TRUE(again.ok()) << again.error();
     EXPECT_EQ(*again, withProxy);
     EXPECT_TRUE(warnings.empty());
@@ -204,19 +208,19 @@ TEST(ProjectFile, ReflectorOptionsHaveDefaultsAndAreWrittenInAFixedOrder) {
 TEST(ProjectFile, SavingIntoAnotherFolderKeepsPathsPointingAtTheSameFiles) {
     const auto folder = freshTestFolder();
     const QDir dir(qpath(folder));
-    const SceneData scene = everythingScene(dir);
+    const scene::SceneData scene = everythingScene(dir);
     std::filesystem::create_directories(folder / "sub" / "deeper");
     const QString path = qpath(folder / "sub" / "deeper" / "moved.speculum.json");
-    ASSERT_TRUE(saveProject(scene, path).ok());
+    ASSERT_TRUE(scene::saveProject(scene, path).ok());
     EXPECT_TRUE(readBytes(path).contains("\"texture\": \"../../textures/chrome.png\""));
     std::vector<std::string> warnings;
-    auto loaded = loadProject(path, warnings);
+    auto loaded = scene::loadProject(path, warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_EQ(*loaded, scene);
 }
 
 TEST(ProjectFile, KeyOrderAndLayoutFollowTheDesign) {
-    const QByteArray bytes = serializeProject(everythingScene(QDir("/tmp")), QDir("/tmp"));
+    const QByteArray bytes = scene::serializeProject(everythingScene(QDir("/tmp")), QDir("/tmp"));
     const std::string text = bytes.toStdString();
     auto at = [&](const char* key) { return text.find(std::string("\"") + key + "\""); };
     EXPECT_EQ(text.rfind("{\n  \"format\": \"speculum-scene\",\n  \"version\": 1,\n  \"settings\": {", 0),
@@ -235,19 +239,19 @@ TEST(ProjectFile, KeyOrderAndLayoutFollowTheDesign) {
 
 TEST(ProjectFile, NumbersRoundTripExactly) {
     const auto folder = freshTestFolder();
-    SceneData scene;
-    NodeTree node;
+    scene::SceneData scene;
+    scene::NodeTree node;
     node.data.name = "n";
     node.data.transform.translate = {0.1, 1.0 / 3.0, -1e-7};
     node.data.transform.rotate = {123456789.123, 2.5e-300, -0.0};
     node.data.transform.scale = {1e9, 3.0000000000000004e-9, -7}; // render::kMaxScale, near kMinScale
     scene.nodes.push_back(node);
     const QString path = qpath(folder / "numbers.speculum.json");
-    ASSERT_TRUE(saveProject(scene, path).ok());
+    ASSERT_TRUE(scene::saveProject(scene, path).ok());
     std::vector<std::string> warnings;
-    auto loaded = loadProject(path, warnings);
+    auto loaded = scene::loadProject(path, warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
-    const Transform& t = loaded->nodes[0].data.transform;
+    const scene::Transform& t = loaded->nodes[0].data.transform;
     EXPECT_EQ(t.translate, node.data.transform.translate);
     EXPECT_EQ(t.rotate, node.data.transform.rotate);
     EXPECT_EQ(t.scale, node.data.transform.scale);
@@ -266,7 +270,7 @@ TEST(ProjectFile, UnknownFieldsWarnWithTheirPathAndSurviveASave) {
   ]
 })";
     std::vector<std::string> warnings;
-    auto loaded = parseProject(json, QDir("/tmp"), warnings);
+    auto loaded = scene::parseProject(json, QDir("/tmp"), warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     const std::vector<std::string> expected = {"comment",
                                                "settings.fog",
@@ -283,27 +287,28 @@ TEST(ProjectFile, UnknownFieldsWarnWithTheirPathAndSurviveASave) {
     }
     EXPECT_EQ(warnings.size(), expected.size());
 
-    const QByteArray saved = serializeProject(*loaded, QDir("/tmp"));
+    const QByteArray saved = scene::serializeProject(*loaded, QDir("/tmp"));
     std::vector<std::string> again;
-    auto reloaded = parseProject(saved, QDir("/tmp"), again);
+    auto reloaded = scene::parseProject(saved, QDir("/tmp"), again);
     ASSERT_TRUE(reloaded.ok()) << reloaded.error();
     EXPECT_EQ(*reloaded, *loaded);
     EXPECT_EQ(again.size(), expected.size()) << "unknown fields are written back";
-    EXPECT_EQ(serializeProject(*reloaded, QDir("/tmp")), saved);
+    EXPECT_EQ(scene::serializeProject(*reloaded, QDir("/tmp")), saved);
     EXPECT_TRUE(saved.contains("\"tags\": [\n")) << saved.toStdString();
     EXPECT_TRUE(saved.contains("\"lod\": [1, 2]")) << saved.toStdString();
 }
 
 TEST(ProjectFile, FailedOpenLeavesTheSceneUntouched) {
     const auto folder = freshTestFolder();
-    Scene scene;
+    scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(openProject(scene, demoScenePath(), warnings).ok());
-    const SceneData before = scene.toData();
+    ASSERT_TRUE(scene::openProject(scene, demoScenePath(), warnings).ok());
+    const scene::SceneData before = scene.toData();
     const QString pathBefore = scene.projectPath();
-    const std::vector<NodeId> idsBefore = {scene.topLevelNodes()[0]->id(), scene.topLevelNodes()[2]->id()};
+    const std::vector<scene::NodeId> idsBefore = {scene.topLevelNodes()[0]->id(),
+                                                  scene.topLevelNodes()[2]->id()};
     int resets = 0;
-    QObject::connect(&scene, &Scene::aboutToReset, [&] { ++resets; });
+    QObject::connect(&scene, &scene::Scene::aboutToReset, [&] { ++resets; });
 
     // A file that is valid up to its last node: nothing of it may leak into the scene.
     QByteArray broken = readBytes(demoScenePath());
@@ -311,10 +316,10 @@ TEST(ProjectFile, FailedOpenLeavesTheSceneUntouched) {
     const QString brokenPath = qpath(folder / "broken.speculum.json");
     writeBytes(brokenPath, broken);
     warnings.clear();
-    auto status = openProject(scene, brokenPath, warnings);
+    auto status = scene::openProject(scene, brokenPath, warnings);
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find("nodes[2].light.type"), std::string::npos) << status.error();
-    auto missing = openProject(scene, qpath(folder / "nope.speculum.json"), warnings);
+    auto missing = scene::openProject(scene, qpath(folder / "nope.speculum.json"), warnings);
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().find("nope.speculum.json"), std::string::npos) << missing.error();
 
@@ -329,7 +334,7 @@ TEST(ProjectFile, FailedOpenLeavesTheSceneUntouched) {
 TEST(ProjectFile, SaveIntoAMissingFolderFails) {
     const auto folder = freshTestFolder();
     const QString path = qpath(folder / "no" / "such" / "folder" / "x.speculum.json");
-    auto status = saveProject(SceneData{}, path);
+    auto status = scene::saveProject(scene::SceneData{}, path);
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find("x.speculum.json"), std::string::npos) << status.error();
     EXPECT_FALSE(QFileInfo::exists(path));
@@ -348,7 +353,7 @@ TEST(ProjectFile, SaveIntoAReadOnlyFolderFailsAndKeepsTheOldFile) {
         std::filesystem::permissions(folder, std::filesystem::perms::owner_all);
         GTEST_SKIP() << "running with privileges that ignore folder permissions (root)";
     }
-    auto status = saveProject(SceneData{}, path);
+    auto status = scene::saveProject(scene::SceneData{}, path);
     std::filesystem::permissions(folder, std::filesystem::perms::owner_all);
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find("scene.speculum.json"), std::string::npos) << status.error();
@@ -358,11 +363,11 @@ TEST(ProjectFile, SaveIntoAReadOnlyFolderFailsAndKeepsTheOldFile) {
 TEST(ProjectFile, AModelTheReaderWouldRejectIsNotSavedAndTheOldFileStays) {
     const auto folder = freshTestFolder();
     const QString path = qpath(folder / "scene.speculum.json");
-    ASSERT_TRUE(saveProject(SceneData{}, path).ok());
+    ASSERT_TRUE(scene::saveProject(scene::SceneData{}, path).ok());
     const QByteArray before = readBytes(path);
-    SceneData bad;
+    scene::SceneData bad;
     bad.camera.far = bad.camera.near / 2;
-    auto status = saveProject(bad, path);
+    auto status = scene::saveProject(bad, path);
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find("camera.far"), std::string::npos) << status.error();
     EXPECT_EQ(readBytes(path), before);
@@ -370,12 +375,12 @@ TEST(ProjectFile, AModelTheReaderWouldRejectIsNotSavedAndTheOldFileStays) {
 }
 
 TEST(ProjectFile, OpenSetsTheProjectPathAndFreshIds) {
-    Scene scene;
+    scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(openProject(scene, demoScenePath(), warnings).ok());
+    ASSERT_TRUE(scene::openProject(scene, demoScenePath(), warnings).ok());
     EXPECT_EQ(scene.projectPath(), QFileInfo(demoScenePath()).absoluteFilePath());
-    std::vector<NodeId> ids;
-    scene.forEachNode([&](const Node& node) { ids.push_back(node.id()); });
+    std::vector<scene::NodeId> ids;
+    scene.forEachNode([&](const scene::Node& node) { ids.push_back(node.id()); });
     ASSERT_EQ(ids.size(), 3u);
     EXPECT_NE(ids[0], ids[1]);
     EXPECT_NE(ids[1], ids[2]);
@@ -384,8 +389,8 @@ TEST(ProjectFile, OpenSetsTheProjectPathAndFreshIds) {
 
 // ---- the editor's view (issue 16): saved with the project, never the scene camera ----
 
-EditorView someEditorView() {
-    EditorView view;
+scene::EditorView someEditorView() {
+    scene::EditorView view;
     view.position = {0.1, 1.0 / 3.0, -1e-7};
     view.target = {1e5 + 0.125, -2.5, 7};
     view.extra.insert(QStringLiteral("orthographic"), false); // a later version's field
@@ -395,13 +400,13 @@ EditorView someEditorView() {
 TEST(ProjectFile, TheEditorViewRoundTripsWithItsUnknownFields) {
     const auto folder = freshTestFolder();
     const QDir dir(qpath(folder));
-    SceneData scene = everythingScene(dir);
+    scene::SceneData scene = everythingScene(dir);
     scene.editorView = someEditorView();
     const QString path = qpath(folder / "view.speculum.json");
-    ASSERT_TRUE(saveProject(scene, path).ok());
+    ASSERT_TRUE(scene::saveProject(scene, path).ok());
 
     std::vector<std::string> warnings;
-    auto loaded = loadProject(path, warnings);
+    auto loaded = scene::loadProject(path, warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_EQ(*loaded, scene);
     ASSERT_TRUE(loaded->editorView.has_value());
@@ -420,20 +425,20 @@ TEST(ProjectFile, TheEditorViewRoundTripsWithItsUnknownFields) {
               std::string::npos)
         << text;
     EXPECT_LT(text.find("\"camera\""), text.find("\"editorView\""));
-    EXPECT_EQ(serializeProject(*loaded, dir), bytes) << "saving a loaded file gives the same bytes";
+    EXPECT_EQ(scene::serializeProject(*loaded, dir), bytes) << "saving a loaded file gives the same bytes";
 }
 
 TEST(ProjectFile, AFileWithoutAnEditorViewLoadsWithNoneAndIsWrittenWithout) {
     std::vector<std::string> warnings;
-    auto demo = loadProject(demoScenePath(), warnings);
+    auto demo = scene::loadProject(demoScenePath(), warnings);
     ASSERT_TRUE(demo.ok()) << demo.error();
     EXPECT_FALSE(demo->editorView.has_value());
     EXPECT_FALSE(readBytes(demoScenePath()).contains("editorView"));
-    const QByteArray written = serializeProject(*demo, QFileInfo(demoScenePath()).absoluteDir());
+    const QByteArray written = scene::serializeProject(*demo, QFileInfo(demoScenePath()).absoluteDir());
     EXPECT_FALSE(written.contains("editorView")) << written.toStdString();
 
     // Through a Scene too: nothing appears on the way.
-    Scene scene;
+    scene::Scene scene;
     scene.reset(*demo);
     EXPECT_FALSE(scene.editorView().has_value());
     EXPECT_EQ(scene.toData(), *demo);
@@ -442,29 +447,29 @@ TEST(ProjectFile, AFileWithoutAnEditorViewLoadsWithNoneAndIsWrittenWithout) {
 
 TEST(ProjectFile, TheEditorViewLeavesTheSceneCameraAndWhatRenderDrawsAlone) {
     // `speculum render` draws snapshot(scene): its camera is SceneData::camera, whatever the editor saved.
-    const QByteArray withoutView = serializeProject(everythingScene(QDir("/tmp")), QDir("/tmp"));
-    SceneData viewed = everythingScene(QDir("/tmp"));
-    viewed.editorView = EditorView{{5, 6, 7}, {-1, -2, -3}, {}};
-    const QByteArray withView = serializeProject(viewed, QDir("/tmp"));
+    const QByteArray withoutView = scene::serializeProject(everythingScene(QDir("/tmp")), QDir("/tmp"));
+    scene::SceneData viewed = everythingScene(QDir("/tmp"));
+    viewed.editorView = scene::EditorView{{5, 6, 7}, {-1, -2, -3}, {}};
+    const QByteArray withView = scene::serializeProject(viewed, QDir("/tmp"));
     ASSERT_NE(withView, withoutView);
 
     std::vector<std::string> warnings;
-    auto plain = parseProject(withoutView, QDir("/tmp"), warnings);
-    auto loaded = parseProject(withView, QDir("/tmp"), warnings);
+    auto plain = scene::parseProject(withoutView, QDir("/tmp"), warnings);
+    auto loaded = scene::parseProject(withView, QDir("/tmp"), warnings);
     ASSERT_TRUE(plain.ok()) << plain.error();
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_EQ(loaded->camera, plain->camera);
     EXPECT_EQ(loaded->camera, everythingScene(QDir("/tmp")).camera);
 
-    Scene plainScene;
+    scene::Scene plainScene;
     plainScene.reset(*plain);
-    Scene viewedScene;
+    scene::Scene viewedScene;
     viewedScene.reset(*loaded);
     ASSERT_TRUE(viewedScene.editorView().has_value());
     EXPECT_EQ(viewedScene.camera(), plainScene.camera());
-    MeshLibrary meshes;
-    const render::Camera drawn = snapshot(viewedScene, 0.0, meshes, warnings).camera;
-    const render::Camera expected = toRender(plain->camera);
+    scene::MeshLibrary meshes;
+    const render::Camera drawn = scene::snapshot(viewedScene, 0.0, meshes, warnings).camera;
+    const render::Camera expected = scene::toRender(plain->camera);
     EXPECT_EQ(drawn.position, expected.position);
     EXPECT_EQ(drawn.target, expected.target);
     EXPECT_EQ(drawn.up, expected.up);
@@ -475,31 +480,31 @@ TEST(ProjectFile, TheEditorViewLeavesTheSceneCameraAndWhatRenderDrawsAlone) {
 }
 
 TEST(SceneEditorView, ResetTakesItAndToDataGivesItBack) {
-    SceneData data;
+    scene::SceneData data;
     data.editorView = someEditorView();
-    Scene scene;
-    std::optional<EditorView> seenAtReset;
-    QObject::connect(&scene, &Scene::sceneReset, [&] { seenAtReset = scene.editorView(); });
+    scene::Scene scene;
+    std::optional<scene::EditorView> seenAtReset;
+    QObject::connect(&scene, &scene::Scene::sceneReset, [&] { seenAtReset = scene.editorView(); });
     scene.reset(data);
     EXPECT_EQ(seenAtReset, data.editorView) << "in place when views hear of the new document";
     EXPECT_EQ(scene.editorView(), data.editorView);
     EXPECT_EQ(scene.toData(), data);
 
-    scene.reset(SceneData{});
+    scene.reset(scene::SceneData{});
     EXPECT_FALSE(scene.editorView().has_value()) << "a new document brings its own view, or none";
 }
 
 TEST(SceneEditorView, SettingItIsNoEditAndMarksNothingModified) {
     DocumentSession session;
-    Scene& scene = session.scene();
+    scene::Scene& scene = session.scene();
     QUndoStack& stack = session.undoStack();
     session.replace(test::threeNodeScene(), QStringLiteral("/projects/room.speculum.json"));
     int emitted = 0;
-    for (auto signal : {&Scene::changed, &Scene::cameraChanged, &Scene::settingsChanged, &Scene::sceneReset,
-                        &Scene::aboutToReset}) {
+    for (auto signal : {&scene::Scene::changed, &scene::Scene::cameraChanged, &scene::Scene::settingsChanged,
+                        &scene::Scene::sceneReset, &scene::Scene::aboutToReset}) {
         QObject::connect(&scene, signal, [&] { ++emitted; });
     }
-    const CameraData camera = scene.camera();
+    const scene::CameraData camera = scene.camera();
 
     scene.setEditorView(someEditorView());
     EXPECT_EQ(scene.editorView(), someEditorView());
@@ -510,13 +515,13 @@ TEST(SceneEditorView, SettingItIsNoEditAndMarksNothingModified) {
     EXPECT_EQ(scene.toData().editorView, someEditorView());
 
     // After an edit and a save, moving the view leaves the stack where it is: still clean, one step.
-    CameraData edited = camera;
+    scene::CameraData edited = camera;
     edited.fovY = 40;
     stack.push(new SetCameraCommand(scene, edited));
     stack.setClean();
     const test::UndoStackState saved = test::undoStackState(stack);
     const int emittedBefore = emitted;
-    scene.setEditorView(EditorView{{3, 3, 3}, {0, 0, 0}, {}});
+    scene.setEditorView(scene::EditorView{{3, 3, 3}, {0, 0, 0}, {}});
     scene.setEditorView(std::nullopt);
     EXPECT_EQ(test::undoStackState(stack), saved);
     EXPECT_TRUE(stack.isClean());
@@ -533,20 +538,20 @@ TEST(SceneEditorView, SettingItIsNoEditAndMarksNothingModified) {
 
 TEST(SceneEditorView, AViewTheReaderWouldRefuseIsNotKeptSoTheFileStillSaves) {
     const auto folder = freshTestFolder();
-    Scene scene;
+    scene::Scene scene;
     scene.setEditorView(someEditorView());
-    scene.setEditorView(EditorView{{1, 2, 3}, {1, 2, 3}, {}}); // panned into one point
+    scene.setEditorView(scene::EditorView{{1, 2, 3}, {1, 2, 3}, {}}); // panned into one point
     EXPECT_FALSE(scene.editorView().has_value());
-    scene.setEditorView(EditorView{{2e300, 0, 0}, {0, 0, 0}, {}}); // panned out of range
+    scene.setEditorView(scene::EditorView{{2e300, 0, 0}, {0, 0, 0}, {}}); // panned out of range
     EXPECT_FALSE(scene.editorView().has_value());
     // JSON has no such numbers (the parser refuses 1e999), but a view computed into one is not kept either.
-    scene.setEditorView(EditorView{{0, 0, 1}, {0, std::nan(""), 0}, {}});
+    scene.setEditorView(scene::EditorView{{0, 0, 1}, {0, std::nan(""), 0}, {}});
     EXPECT_FALSE(scene.editorView().has_value());
-    scene.setEditorView(EditorView{{0, 0, 1}, {0, 0, HUGE_VAL}, {}});
+    scene.setEditorView(scene::EditorView{{0, 0, 1}, {0, 0, HUGE_VAL}, {}});
     EXPECT_FALSE(scene.editorView().has_value());
-    ASSERT_TRUE(saveProject(scene, qpath(folder / "scene.speculum.json")).ok());
+    ASSERT_TRUE(scene::saveProject(scene, qpath(folder / "scene.speculum.json")).ok());
     std::vector<std::string> warnings;
-    auto loaded = loadProject(qpath(folder / "scene.speculum.json"), warnings);
+    auto loaded = scene::loadProject(qpath(folder / "scene.speculum.json"), warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_FALSE(loaded->editorView.has_value());
 }
@@ -557,7 +562,7 @@ TEST(SceneEditorView, AViewTheReaderWouldRefuseIsNotKeptSoTheFileStillSaves) {
 TEST(ProjectFile, BlurLoadsAsRoughnessAndGlossySettingsRoundTrip) {
     auto load = [](const std::string& text) {
         std::vector<std::string> warnings;
-        auto scene = parseProject(QByteArray::fromStdString(text), QDir("/tmp"), warnings);
+        auto scene = scene::parseProject(QByteArray::fromStdString(text), QDir("/tmp"), warnings);
         EXPECT_TRUE(warnings.empty()) << warnings.front();
         return scene;
     };
@@ -565,7 +570,7 @@ TEST(ProjectFile, BlurLoadsAsRoughnessAndGlossySettingsRoundTrip) {
     auto old = load(head + R"("nodes": [ { "name": "M", "mirror": { "blur": 0.15 } } ] })");
     ASSERT_TRUE(old) << old.error();
     EXPECT_DOUBLE_EQ(old->nodes.at(0).data.mirror->roughness, 0.15);
-    const QByteArray saved = serializeProject(*old, QDir("/tmp"));
+    const QByteArray saved = scene::serializeProject(*old, QDir("/tmp"));
     EXPECT_TRUE(saved.contains("\"roughness\": 0.15")) << saved.toStdString();
     EXPECT_FALSE(saved.contains("\"blur\"")) << saved.toStdString();
     EXPECT_FALSE(saved.contains("glossy")) << saved.toStdString();
@@ -579,27 +584,27 @@ TEST(ProjectFile, BlurLoadsAsRoughnessAndGlossySettingsRoundTrip) {
         load(head + R"("settings": { "glossyFilter": "mip", "glossyTaps": 5, "prefilterSamples": 9 },
         "nodes": [ { "name": "B", "mesh": { "builtin": "sphere" }, "reflector": { "roughness": 0.5 } } ] })");
     ASSERT_TRUE(settings) << settings.error();
-    EXPECT_EQ(settings->settings.glossyFilter, GlossyFilter::Mip);
+    EXPECT_EQ(settings->settings.glossyFilter, scene::GlossyFilter::Mip);
     EXPECT_EQ(settings->settings.glossyTaps, 5);
     EXPECT_EQ(settings->settings.prefilterSamples, 9);
     EXPECT_DOUBLE_EQ(settings->nodes.at(0).data.reflector->roughness, 0.5);
-    Scene scene;
+    scene::Scene scene;
     scene.reset(*settings);
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
-    const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
     EXPECT_EQ(frame.settings.glossyFilter, render::GlossyFilter::Mip);
     EXPECT_EQ(frame.settings.glossyTaps, 5);
     EXPECT_EQ(frame.settings.prefilterSamples, 9);
     EXPECT_DOUBLE_EQ(frame.reflector->roughness, 0.5);
-    auto again = load(serializeProject(*settings, QDir("/tmp")).toStdString());
+    auto again = load(scene::serializeProject(*settings, QDir("/tmp")).toStdString());
     ASSERT_TRUE(again) << again.error();
     EXPECT_EQ(again->settings, settings->settings);
 
     auto refused = [&](const std::string& settingsJson, const std::string& path) {
         std::vector<std::string> warnings;
-        auto bad = parseProject(QByteArray::fromStdString(head + R"("settings": )" + settingsJson + "}"),
-                                QDir("/tmp"), warnings);
+        auto bad = scene::parseProject(
+            QByteArray::fromStdString(head + R"("settings": )" + settingsJson + "}"), QDir("/tmp"), warnings);
         ASSERT_FALSE(bad) << settingsJson;
         EXPECT_NE(bad.error().find(path), std::string::npos) << bad.error();
     };

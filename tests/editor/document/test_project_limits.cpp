@@ -1,5 +1,5 @@
-// Every kind of number a project holds is refused outside render/SceneLimits.hpp, with its JSON path and
-// the real cause, and accepted right at the limit; the inspector applies the same limits.
+// Every kind of number a project holds is refused outside render/frame/SceneLimits.hpp, with its JSON path
+// and the real cause, and accepted right at the limit; the inspector applies the same limits.
 #include "editor/document/Properties.hpp"
 #include "render/frame/SceneLimits.hpp"
 #include "scene/project/ProjectFile.hpp"
@@ -20,9 +20,9 @@ std::string oneNode(const std::string& node) {
     return document(R"("nodes": [ )" + node + " ]");
 }
 
-base::Result<SceneData> parse(const std::string& json) {
+base::Result<scene::SceneData> parse(const std::string& json) {
     std::vector<std::string> warnings;
-    return parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
+    return scene::parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
 }
 
 struct LimitCase {
@@ -209,22 +209,22 @@ TEST(ProjectLimits, AValueAtEveryLimitSavesAndLoadsBack) {
                    "animation": { "orbit": { "center": [0, 0, 0], "radius": 0, "period": 1e9 } } } ])");
     const auto first = parse(json);
     ASSERT_TRUE(first.ok()) << first.error();
-    const QByteArray saved = serializeProject(*first, QDir("/tmp"));
+    const QByteArray saved = scene::serializeProject(*first, QDir("/tmp"));
     std::vector<std::string> warnings;
-    const auto second = parseProject(saved, QDir("/tmp"), warnings);
+    const auto second = scene::parseProject(saved, QDir("/tmp"), warnings);
     ASSERT_TRUE(second.ok()) << second.error();
     EXPECT_EQ(*second, *first);
 }
 
 // ---- the inspector: the same limits, refused with a message, never clamped ----
 
-NodeData fullNode() {
-    NodeData d;
+scene::NodeData fullNode() {
+    scene::NodeData d;
     d.name = "n";
-    d.material = MaterialComponent{};
-    d.light = LightComponent{};
-    d.mirror = MirrorComponent{};
-    d.animation = AnimationComponent{BounceAnimation{}, OrbitAnimation{}, {}};
+    d.material = scene::MaterialComponent{};
+    d.light = scene::LightComponent{};
+    d.mirror = scene::MirrorComponent{};
+    d.animation = scene::AnimationComponent{scene::BounceAnimation{}, scene::OrbitAnimation{}, {}};
     return d;
 }
 
@@ -255,25 +255,26 @@ TEST(ProjectLimits, TheInspectorRefusesWhatTheReaderRefuses) {
     for (const Case& k : cases) {
         const auto* p = findNodeProperty(QString::fromLatin1(k.key));
         ASSERT_TRUE(p) << k.key;
-        NodeData d = fullNode();
+        scene::NodeData d = fullNode();
         const auto in = p->set(d, k.inside);
         EXPECT_TRUE(in.ok()) << k.key << ": " << in.error();
-        const NodeData before = d;
+        const scene::NodeData before = d;
         const auto out = p->set(d, k.outside);
         ASSERT_FALSE(out.ok()) << k.key << " accepted " << k.outside.toString().toStdString();
         EXPECT_NE(out.error().find(k.mentions), std::string::npos) << k.key << ": " << out.error();
         EXPECT_TRUE(d == before) << k.key << ": refused but changed";
         // What the inspector accepted, the reader loads.
-        SceneData scene;
-        scene.nodes.push_back(NodeTree{before, {}});
+        scene::SceneData scene;
+        scene.nodes.push_back(scene::NodeTree{before, {}});
         std::vector<std::string> warnings;
-        const auto loaded = parseProject(serializeProject(scene, QDir("/tmp")), QDir("/tmp"), warnings);
+        const auto loaded =
+            scene::parseProject(scene::serializeProject(scene, QDir("/tmp")), QDir("/tmp"), warnings);
         EXPECT_TRUE(loaded.ok()) << k.key << ": " << loaded.error();
     }
 }
 
 TEST(ProjectLimits, TheInspectorAppliesTheReadersCameraRules) {
-    CameraData camera;
+    scene::CameraData camera;
     const auto* near = findCameraProperty(QStringLiteral("camera.near"));
     const auto* far = findCameraProperty(QStringLiteral("camera.far"));
     const auto* position = findCameraProperty(QStringLiteral("camera.position"));
@@ -288,7 +289,7 @@ TEST(ProjectLimits, TheInspectorAppliesTheReadersCameraRules) {
     const auto huge = position->set(camera, QVariantList{1e300, 0.0, 0.0});
     ASSERT_FALSE(huge.ok());
     EXPECT_NE(huge.error().find("Position"), std::string::npos) << huge.error();
-    EXPECT_TRUE(camera == CameraData{}) << "refused edits changed the camera";
+    EXPECT_TRUE(camera == scene::CameraData{}) << "refused edits changed the camera";
     ASSERT_TRUE(near->set(camera, 0.5).ok());
     EXPECT_TRUE(far->set(camera, 5e5).ok()) << "far = 1e6 × near is the limit itself";
 }

@@ -14,13 +14,13 @@ using test::freshTestFolder;
 using test::qpath;
 using test::readBytes;
 
-SceneData importedScene(const QDir& folder) {
-    SceneData scene;
-    NodeTree part;
+scene::SceneData importedScene(const QDir& folder) {
+    scene::SceneData scene;
+    scene::NodeTree part;
     part.data.name = "Wheel";
-    part.data.mesh = MeshComponent::fromFile(folder.absoluteFilePath("models/car.glb").toStdString());
+    part.data.mesh = scene::MeshComponent::fromFile(folder.absoluteFilePath("models/car.glb").toStdString());
     part.data.mesh->part = 3;
-    MaterialComponent m;
+    scene::MaterialComponent m;
     m.color = {0.9, 0.1, 0.1};
     m.specular = 1.0;
     m.shininess = 30.0;
@@ -29,18 +29,18 @@ SceneData importedScene(const QDir& folder) {
     m.emissionTexture = folder.absoluteFilePath("textures/glow.png").toStdString();
     m.normalTexture = folder.absoluteFilePath("models/car.glb#*1").toStdString();
     m.normalScale = 0.75;
-    m.wrap = {TextureWrap::Clamp, TextureWrap::Mirror};
+    m.wrap = {scene::TextureWrap::Clamp, scene::TextureWrap::Mirror};
     m.opacity = 0.5;
-    m.alphaMode = AlphaMode::Mask;
+    m.alphaMode = scene::AlphaMode::Mask;
     m.alphaCutoff = 0.25;
     part.data.material = m;
 
-    NodeTree whole;
+    scene::NodeTree whole;
     whole.data.name = "Whole";
-    whole.data.mesh = MeshComponent::fromFile(folder.absoluteFilePath("models/car.glb").toStdString());
-    MaterialComponent clamped;
-    clamped.wrap = {TextureWrap::Clamp, TextureWrap::Clamp};
-    clamped.alphaMode = AlphaMode::Blend;
+    whole.data.mesh = scene::MeshComponent::fromFile(folder.absoluteFilePath("models/car.glb").toStdString());
+    scene::MaterialComponent clamped;
+    clamped.wrap = {scene::TextureWrap::Clamp, scene::TextureWrap::Clamp};
+    clamped.alphaMode = scene::AlphaMode::Blend;
     whole.data.material = clamped;
     scene.nodes = {part, whole};
     return scene;
@@ -49,11 +49,11 @@ SceneData importedScene(const QDir& folder) {
 TEST(ProjectMaterials, NewFieldsRoundTrip) {
     const auto folder = freshTestFolder();
     const QDir dir(qpath(folder));
-    const SceneData scene = importedScene(dir);
+    const scene::SceneData scene = importedScene(dir);
     const QString path = qpath(folder / "imported.speculum.json");
-    ASSERT_TRUE(saveProject(scene, path).ok());
+    ASSERT_TRUE(scene::saveProject(scene, path).ok());
     std::vector<std::string> warnings;
-    auto loaded = loadProject(path, warnings);
+    auto loaded = scene::loadProject(path, warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_TRUE(warnings.empty()) << ::testing::PrintToString(warnings);
     EXPECT_EQ(*loaded, scene);
@@ -67,16 +67,16 @@ TEST(ProjectMaterials, NewFieldsRoundTrip) {
     EXPECT_TRUE(bytes.contains("\"alphaMode\": \"mask\"")) << bytes.toStdString();
     EXPECT_TRUE(bytes.contains("\"alphaMode\": \"blend\"")) << bytes.toStdString();
     EXPECT_TRUE(bytes.contains("\"wrap\": \"clamp\"")) << bytes.toStdString();
-    EXPECT_EQ(serializeProject(*loaded, dir), bytes);
+    EXPECT_EQ(scene::serializeProject(*loaded, dir), bytes);
 }
 
 TEST(ProjectMaterials, DefaultsAreNotWritten) {
-    SceneData scene;
-    NodeTree node;
-    node.data.mesh = MeshComponent::fromFile("/tmp/models/a.obj");
-    node.data.material = MaterialComponent{};
+    scene::SceneData scene;
+    scene::NodeTree node;
+    node.data.mesh = scene::MeshComponent::fromFile("/tmp/models/a.obj");
+    node.data.material = scene::MaterialComponent{};
     scene.nodes = {node};
-    const std::string text = serializeProject(scene, QDir("/tmp")).toStdString();
+    const std::string text = scene::serializeProject(scene, QDir("/tmp")).toStdString();
     for (const char* key : {"part", "specularColor", "emissionTexture", "normalTexture", "normalScale",
                             "wrap", "opacity", "alphaMode", "alphaCutoff"}) {
         EXPECT_EQ(text.find(std::string("\"") + key + "\""), std::string::npos) << key << " in\n" << text;
@@ -90,9 +90,9 @@ TEST(ProjectMaterials, DemoScenesStillRoundTripByteForByte) {
           QStringLiteral("chrome.speculum.json"), QStringLiteral("glossy.speculum.json")}) {
         const QString path = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/") + name;
         std::vector<std::string> warnings;
-        auto loaded = loadProject(path, warnings);
+        auto loaded = scene::loadProject(path, warnings);
         ASSERT_TRUE(loaded.ok()) << name.toStdString() << ": " << loaded.error();
-        EXPECT_TRUE(serializeProject(*loaded, QFileInfo(path).absoluteDir()) == readBytes(path))
+        EXPECT_TRUE(scene::serializeProject(*loaded, QFileInfo(path).absoluteDir()) == readBytes(path))
             << name.toStdString();
     }
 }
@@ -102,7 +102,7 @@ std::string loadError(const std::string& node) {
                              R"({ "name": "b" }, )" +
                              node + "] }";
     std::vector<std::string> warnings;
-    auto result = parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
+    auto result = scene::parseProject(QByteArray::fromStdString(json), QDir("/tmp"), warnings);
     return result.ok() ? std::string("<loaded>") : result.error();
 }
 
@@ -139,19 +139,21 @@ TEST(ProjectMaterials, BadValuesNameTheirPath) {
 
 TEST(ProjectMaterials, WrapReadsOneNameOrAPair) {
     std::vector<std::string> warnings;
-    auto scene = parseProject(R"({ "format": "speculum-scene", "version": 1, "nodes": [
+    auto scene = scene::parseProject(R"({ "format": "speculum-scene", "version": 1, "nodes": [
         { "material": { "wrap": "mirror" } }, { "material": { "wrap": ["clamp", "repeat"] } } ] })",
-                              QDir("/tmp"), warnings);
+                                     QDir("/tmp"), warnings);
     ASSERT_TRUE(scene.ok()) << scene.error();
-    EXPECT_EQ(scene->nodes[0].data.material->wrap, (std::array{TextureWrap::Mirror, TextureWrap::Mirror}));
-    EXPECT_EQ(scene->nodes[1].data.material->wrap, (std::array{TextureWrap::Clamp, TextureWrap::Repeat}));
+    EXPECT_EQ(scene->nodes[0].data.material->wrap,
+              (std::array{scene::TextureWrap::Mirror, scene::TextureWrap::Mirror}));
+    EXPECT_EQ(scene->nodes[1].data.material->wrap,
+              (std::array{scene::TextureWrap::Clamp, scene::TextureWrap::Repeat}));
 }
 
 // The inspector edits the new fields: a file mesh's part (-1 for the whole file), alpha mode, wrap modes.
 TEST(ProjectMaterials, InspectorEditsPartAlphaAndWrap) {
-    NodeData d;
-    d.mesh = MeshComponent::fromFile("/tmp/models/car.glb");
-    d.material = MaterialComponent{};
+    scene::NodeData d;
+    d.mesh = scene::MeshComponent::fromFile("/tmp/models/car.glb");
+    d.material = scene::MaterialComponent{};
     const auto* part = findNodeProperty(QStringLiteral("mesh.part"));
     ASSERT_NE(part, nullptr);
     EXPECT_TRUE(part->isVisible(d));
@@ -162,20 +164,20 @@ TEST(ProjectMaterials, InspectorEditsPartAlphaAndWrap) {
     EXPECT_FALSE(d.mesh->part.has_value());
     EXPECT_FALSE(part->set(d, 1.5).ok());
     EXPECT_FALSE(part->set(d, -2).ok());
-    NodeData builtin;
-    builtin.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Box);
+    scene::NodeData builtin;
+    builtin.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Box);
     EXPECT_FALSE(part->isVisible(builtin));
     EXPECT_FALSE(part->set(builtin, 0).ok());
 
     const auto* alpha = findNodeProperty(QStringLiteral("material.alphaMode"));
     ASSERT_NE(alpha, nullptr);
     ASSERT_TRUE(alpha->set(d, 1).ok());
-    EXPECT_EQ(d.material->alphaMode, AlphaMode::Mask);
+    EXPECT_EQ(d.material->alphaMode, scene::AlphaMode::Mask);
     const auto* wrapV = findNodeProperty(QStringLiteral("material.wrapV"));
     ASSERT_NE(wrapV, nullptr);
     ASSERT_TRUE(wrapV->set(d, 2).ok());
-    EXPECT_EQ(d.material->wrap[1], TextureWrap::Mirror);
-    EXPECT_EQ(d.material->wrap[0], TextureWrap::Repeat);
+    EXPECT_EQ(d.material->wrap[1], scene::TextureWrap::Mirror);
+    EXPECT_EQ(d.material->wrap[0], scene::TextureWrap::Repeat);
     const auto* opacity = findNodeProperty(QStringLiteral("material.opacity"));
     ASSERT_NE(opacity, nullptr);
     EXPECT_FALSE(opacity->set(d, 1.5).ok());

@@ -28,35 +28,35 @@ void expectNear(const glm::dvec3& actual, const glm::dvec3& expected, double tol
     EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
-NodeTree boxNode(const std::string& name, const Transform& transform) {
-    NodeTree node;
+scene::NodeTree boxNode(const std::string& name, const scene::Transform& transform) {
+    scene::NodeTree node;
     node.data.name = name;
     node.data.transform = transform;
-    node.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Box);
+    node.data.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Box);
     return node;
 }
 
-render::FrameInput snap(const SceneData& data, double time, MeshLibrary& meshes,
+render::FrameInput snap(const scene::SceneData& data, double time, scene::MeshLibrary& meshes,
                         std::vector<std::string>& warnings) {
-    Scene scene;
+    scene::Scene scene;
     scene.reset(data);
-    return snapshot(scene, time, meshes, warnings);
+    return scene::snapshot(scene, time, meshes, warnings);
 }
 
 TEST(Snapshot, EulerAnglesApplyXThenYThenZ) {
     // +Y turned 90° about X is +Z; then 90° about Y is +X. The other order would give +Z.
-    expectNear(apply(rotationMatrix({90, 90, 0}), {0, 1, 0}), {1, 0, 0});
+    expectNear(apply(scene::rotationMatrix({90, 90, 0}), {0, 1, 0}), {1, 0, 0});
     // +X turned about Y (90°) is −Z; then about Z nothing changes for −Z.
-    expectNear(apply(rotationMatrix({0, 90, 90}), {1, 0, 0}), {0, 0, -1});
+    expectNear(apply(scene::rotationMatrix({0, 90, 90}), {1, 0, 0}), {0, 0, -1});
     // X then Z: +Y → +Z (X) → +Z (Z).
-    expectNear(apply(rotationMatrix({90, 0, 90}), {0, 1, 0}), {0, 0, 1});
+    expectNear(apply(scene::rotationMatrix({90, 0, 90}), {0, 1, 0}), {0, 0, 1});
 }
 
 TEST(Snapshot, LocalMatrixIsTranslateRotateScale) {
     // (1,0,0) scaled by 2 on X → (2,0,0), turned 90° about Z → (0,2,0), moved by (10,0,0).
-    SceneData data;
+    scene::SceneData data;
     data.nodes.push_back(boxNode("n", {{10, 0, 0}, {0, 0, 90}, {2, 1, 1}, {}}));
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 1u);
@@ -65,13 +65,13 @@ TEST(Snapshot, LocalMatrixIsTranslateRotateScale) {
 }
 
 TEST(Snapshot, ChildWorldIsParentWorldTimesLocal) {
-    SceneData data;
-    NodeTree parent = boxNode("parent", {{0, 5, 0}, {0, 90, 0}, {2, 2, 2}, {}});
-    NodeTree child = boxNode("child", {{1, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}});
+    scene::SceneData data;
+    scene::NodeTree parent = boxNode("parent", {{0, 5, 0}, {0, 90, 0}, {2, 2, 2}, {}});
+    scene::NodeTree child = boxNode("child", {{1, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}});
     child.children.push_back(boxNode("grandchild", {{0, 0, 1}, {0, 0, 0}, {0.5, 0.5, 0.5}, {}}));
     parent.children.push_back(child);
     data.nodes.push_back(parent);
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 3u);
@@ -85,11 +85,11 @@ TEST(Snapshot, ChildWorldIsParentWorldTimesLocal) {
 }
 
 TEST(Snapshot, WorldMatricesKeepDoublePrecisionFarFromTheOrigin) {
-    SceneData data;
-    NodeTree far = boxNode("far", {{1e8, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}});
+    scene::SceneData data;
+    scene::NodeTree far = boxNode("far", {{1e8, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}});
     far.children.push_back(boxNode("near it", {{0.125 + 1e-6, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}}));
     data.nodes.push_back(far);
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 2u);
@@ -98,11 +98,11 @@ TEST(Snapshot, WorldMatricesKeepDoublePrecisionFarFromTheOrigin) {
 }
 
 TEST(Snapshot, BounceFollowsItsDefinition) {
-    SceneData data;
-    NodeTree node = boxNode("hopper", {{0, -1, -3}, {0, 0, 0}, {1, 1, 1}, {}});
-    node.data.animation = AnimationComponent{BounceAnimation{1.0, 2.0, {}}, std::nullopt, {}};
+    scene::SceneData data;
+    scene::NodeTree node = boxNode("hopper", {{0, -1, -3}, {0, 0, 0}, {1, 1, 1}, {}});
+    node.data.animation = scene::AnimationComponent{scene::BounceAnimation{1.0, 2.0, {}}, std::nullopt, {}};
     data.nodes.push_back(node);
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     auto yAt = [&](double t) { return snap(data, t, meshes, warnings).items.at(0).world[3].y; };
     EXPECT_NEAR(yAt(0.0), -1.0, kTolerance);
@@ -114,18 +114,19 @@ TEST(Snapshot, BounceFollowsItsDefinition) {
 }
 
 TEST(Snapshot, OrbitFollowsItsDefinitionInTheParentsSpace) {
-    SceneData data;
-    NodeTree parent;
+    scene::SceneData data;
+    scene::NodeTree parent;
     parent.data.name = "pivot";
     parent.data.transform.translate = {100, 0, 0};
-    NodeTree light;
+    scene::NodeTree light;
     light.data.name = "Light";
     light.data.transform.translate = {0, 2, -2}; // replaced by the orbit
-    light.data.light = LightComponent{};
-    light.data.animation = AnimationComponent{std::nullopt, OrbitAnimation{{0, 2, -3}, 1.5, 6.0, {}}, {}};
+    light.data.light = scene::LightComponent{};
+    light.data.animation =
+        scene::AnimationComponent{std::nullopt, scene::OrbitAnimation{{0, 2, -3}, 1.5, 6.0, {}}, {}};
     parent.children.push_back(light);
     data.nodes.push_back(parent);
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     auto at = [&](double t) { return snap(data, t, meshes, warnings).lights.at(0).position; };
     expectNear(at(0.0), {101.5, 2, -3});
@@ -135,24 +136,25 @@ TEST(Snapshot, OrbitFollowsItsDefinitionInTheParentsSpace) {
 }
 
 TEST(Snapshot, BounceLiftsAnOrbit) {
-    NodeData node;
-    node.animation =
-        AnimationComponent{BounceAnimation{0.5, 2.0, {}}, OrbitAnimation{{0, 0, 0}, 1.0, 4.0, {}}, {}};
-    expectNear(animatedTranslate(node, 1.0), {0, 0.5, 1});
+    scene::NodeData node;
+    node.animation = scene::AnimationComponent{
+        scene::BounceAnimation{0.5, 2.0, {}}, scene::OrbitAnimation{{0, 0, 0}, 1.0, 4.0, {}}, {}};
+    expectNear(scene::animatedTranslate(node, 1.0), {0, 0.5, 1});
 }
 
 TEST(Snapshot, LightsPointAlongTheirWorldMinusY) {
-    SceneData data;
-    NodeTree sun;
+    scene::SceneData data;
+    scene::NodeTree sun;
     sun.data.name = "Sun";
     sun.data.transform = {{3, 4, 5}, {0, 0, 90}, {1, 7, 1}, {}};
-    sun.data.light = LightComponent{LightType::Directional, {1, 0.5, 0.25}, 2.0, 30, 0.15, std::nullopt, {}};
-    NodeTree spot;
+    sun.data.light =
+        scene::LightComponent{scene::LightType::Directional, {1, 0.5, 0.25}, 2.0, 30, 0.15, std::nullopt, {}};
+    scene::NodeTree spot;
     spot.data.name = "Spot";
-    spot.data.light =
-        LightComponent{LightType::Spot, {1, 1, 1}, 1.0, 25, 0.2, ShadowComponent{512, 3, {}}, {}};
+    spot.data.light = scene::LightComponent{
+        scene::LightType::Spot, {1, 1, 1}, 1.0, 25, 0.2, scene::ShadowComponent{512, 3, {}}, {}};
     data.nodes = {sun, spot};
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.lights.size(), 2u);
@@ -175,27 +177,28 @@ TEST(Snapshot, LightsPointAlongTheirWorldMinusY) {
 }
 
 TEST(Snapshot, MirrorsAndTheReflector) {
-    SceneData data;
-    NodeTree table;
+    scene::SceneData data;
+    scene::NodeTree table;
     table.data.name = "Table";
     table.data.transform.translate = {0, -1, -3};
-    table.data.mirror = MirrorComponent{{4, 2}, 0.5, MirrorTechnique::Texture, {}};
-    table.data.material = MaterialComponent{};
+    table.data.mirror = scene::MirrorComponent{{4, 2}, 0.5, scene::MirrorTechnique::Texture, {}};
+    table.data.material = scene::MaterialComponent{};
     table.data.material->texture = "/abs/marble.png";
-    NodeTree plain;
+    scene::NodeTree plain;
     plain.data.name = "Plain";
-    plain.data.mirror = MirrorComponent{};
-    NodeTree ball;
+    plain.data.mirror = scene::MirrorComponent{};
+    scene::NodeTree ball;
     ball.data.name = "Ball";
-    ball.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere, 12);
-    ball.data.reflector = ReflectorComponent{ReflectorMap::DualParaboloid, 128, 0.9, {}};
+    ball.data.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Sphere, 12);
+    ball.data.reflector = scene::ReflectorComponent{scene::ReflectorMap::DualParaboloid, 128, 0.9, {}};
     ball.data.reflector->fresnel = true;
-    ball.data.reflector->fill = ReflectorFill::Direct;
-    ball.data.reflector->update = ReflectorUpdate::Once;
+    ball.data.reflector->fill = scene::ReflectorFill::Direct;
+    ball.data.reflector->update = scene::ReflectorUpdate::Once;
     ball.data.reflector->mirrorDepth = 2;
-    ball.data.reflector->parallax = ReflectorParallax{ParallaxShape::Box, 1, {-1, -2, -3}, {4, 5, 6}, {}};
+    ball.data.reflector->parallax =
+        scene::ReflectorParallax{scene::ParallaxShape::Box, 1, {-1, -2, -3}, {4, 5, 6}, {}};
     data.nodes = {table, plain, ball};
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     EXPECT_TRUE(warnings.empty());
@@ -216,7 +219,7 @@ TEST(Snapshot, MirrorsAndTheReflector) {
     EXPECT_EQ(frame.reflector->map, render::ReflectorMap::DualParaboloid);
     EXPECT_EQ(frame.reflector->resolution, 128);
     EXPECT_EQ(frame.reflector->reflectivity, 0.9);
-    EXPECT_EQ(frame.reflector->mesh, meshes.builtin(BuiltinMesh::Sphere, 12));
+    EXPECT_EQ(frame.reflector->mesh, meshes.builtin(scene::BuiltinMesh::Sphere, 12));
     EXPECT_TRUE(frame.reflector->fresnel);
     EXPECT_EQ(frame.reflector->fill, render::ReflectorFill::Direct);
     EXPECT_EQ(frame.reflector->update, render::ReflectorUpdate::Once);
@@ -227,18 +230,18 @@ TEST(Snapshot, MirrorsAndTheReflector) {
 }
 
 TEST(Snapshot, ABrokenReflectorBecomesAWarning) {
-    SceneData data;
-    NodeTree first;
+    scene::SceneData data;
+    scene::NodeTree first;
     first.data.name = "First";
-    first.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere, 8);
-    first.data.reflector = ReflectorComponent{};
-    NodeTree second = first;
+    first.data.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Sphere, 8);
+    first.data.reflector = scene::ReflectorComponent{};
+    scene::NodeTree second = first;
     second.data.name = "Second";
-    NodeTree meshless;
+    scene::NodeTree meshless;
     meshless.data.name = "Meshless";
-    meshless.data.reflector = ReflectorComponent{};
+    meshless.data.reflector = scene::ReflectorComponent{};
     data.nodes = {first, second, meshless};
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_TRUE(frame.reflector.has_value());
@@ -250,10 +253,10 @@ TEST(Snapshot, ABrokenReflectorBecomesAWarning) {
 
 TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {
     std::vector<std::string> warnings;
-    Scene scene;
-    ASSERT_TRUE(openProject(scene, test::demoScenePath(), warnings).ok());
-    MeshLibrary meshes;
-    const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+    scene::Scene scene;
+    ASSERT_TRUE(scene::openProject(scene, test::demoScenePath(), warnings).ok());
+    scene::MeshLibrary meshes;
+    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
     EXPECT_TRUE(warnings.empty());
     ASSERT_EQ(frame.items.size(), 1u);
     EXPECT_EQ(frame.items[0].name, "Teapot");
@@ -274,7 +277,7 @@ TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {
     EXPECT_EQ(frame.camera.fovY, 65.0);
 
     // A mesh node without a material gets DESIGN.md's default material.
-    SceneData data;
+    scene::SceneData data;
     data.nodes.push_back(boxNode("bare", {}));
     const render::FrameInput bare = snap(data, 0.0, meshes, warnings);
     const render::Material defaults;
@@ -284,50 +287,50 @@ TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {
 }
 
 TEST(Snapshot, ARelativePathSetByCodeIsTakenRelativeToTheProject) {
-    SceneData data;
-    NodeTree node = boxNode("textured", {});
-    node.data.material = MaterialComponent{};
+    scene::SceneData data;
+    scene::NodeTree node = boxNode("textured", {});
+    node.data.material = scene::MaterialComponent{};
     node.data.material->texture = "textures/wood.png";
     data.nodes.push_back(node);
-    Scene scene;
+    scene::Scene scene;
     scene.reset(data);
     scene.setProjectPath("/projects/demo/scene.speculum.json");
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
-    const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
     EXPECT_EQ(frame.items.at(0).material.texture.path, "/projects/demo/textures/wood.png");
 }
 
 TEST(Snapshot, MeshHandlesAreStableAcrossFrames) {
-    SceneData data;
+    scene::SceneData data;
     data.nodes.push_back(boxNode("a", {}));
-    NodeTree teapot = boxNode("b", {});
-    teapot.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Teapot, 3);
+    scene::NodeTree teapot = boxNode("b", {});
+    teapot.data.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Teapot, 3);
     data.nodes.push_back(teapot);
-    Scene scene;
+    scene::Scene scene;
     scene.reset(data);
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
-    const render::FrameInput one = snapshot(scene, 0.0, meshes, warnings);
-    const render::FrameInput two = snapshot(scene, 1.0, meshes, warnings);
+    const render::FrameInput one = scene::snapshot(scene, 0.0, meshes, warnings);
+    const render::FrameInput two = scene::snapshot(scene, 1.0, meshes, warnings);
     EXPECT_EQ(one.items[0].mesh, two.items[0].mesh);
     EXPECT_EQ(one.items[1].mesh, two.items[1].mesh);
-    EXPECT_NE(meshes.builtin(BuiltinMesh::Teapot, 3), meshes.builtin(BuiltinMesh::Teapot, 4));
+    EXPECT_NE(meshes.builtin(scene::BuiltinMesh::Teapot, 3), meshes.builtin(scene::BuiltinMesh::Teapot, 4));
     EXPECT_EQ(meshes.size(), 3u);
 }
 
 TEST(Snapshot, AMissingMeshFileIsAWarningNotACrash) {
     const auto folder = freshTestFolder();
-    SceneData data;
-    NodeTree missing;
+    scene::SceneData data;
+    scene::NodeTree missing;
     missing.data.name = "Ghost";
-    missing.data.mesh = MeshComponent::fromFile((folder / "ghost.obj").string());
-    NodeTree garbage;
+    missing.data.mesh = scene::MeshComponent::fromFile((folder / "ghost.obj").string());
+    scene::NodeTree garbage;
     garbage.data.name = "Garbage";
-    garbage.data.mesh = MeshComponent::fromFile((folder / "garbage.obj").string());
+    garbage.data.mesh = scene::MeshComponent::fromFile((folder / "garbage.obj").string());
     test::writeBytes(qpath(folder / "garbage.obj"), "this is not a model\n\x01\x02\x03");
     data.nodes = {missing, garbage, boxNode("Box", {})};
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 1u);
@@ -346,7 +349,7 @@ TEST(Snapshot, MeshFilesAreImportedOnceAndAgainWhenTheyChange) {
     const auto folder = freshTestFolder();
     const QString path = qpath(folder / "tri.obj");
     test::writeBytes(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     auto first = meshes.file(path.toStdString(), warnings);
     ASSERT_TRUE(first.ok()) << first.error();
@@ -371,23 +374,23 @@ TEST(Snapshot, ImportedPartMaterialReachesTheRenderer) {
     if (!std::filesystem::is_regular_file(glb)) {
         GTEST_SKIP() << "assimp-testmodels not installed";
     }
-    SceneData data;
-    NodeTree node;
+    scene::SceneData data;
+    scene::NodeTree node;
     node.data.name = "box";
-    node.data.mesh = MeshComponent::fromFile(glb);
+    node.data.mesh = scene::MeshComponent::fromFile(glb);
     node.data.mesh->part = 0;
-    MaterialComponent m;
+    scene::MaterialComponent m;
     m.texture = glb + "#*0";
     m.normalTexture = "/nowhere/normal.png";
     m.specularColor = {0.5, 0.25, 1};
-    m.wrap = {TextureWrap::Clamp, TextureWrap::Mirror};
-    m.alphaMode = AlphaMode::Blend;
+    m.wrap = {scene::TextureWrap::Clamp, scene::TextureWrap::Mirror};
+    m.alphaMode = scene::AlphaMode::Blend;
     m.alphaCutoff = 0.25;
     m.opacity = 0.75;
     m.normalScale = 0.5;
     node.data.material = m;
     data.nodes.push_back(node);
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 1u) << ::testing::PrintToString(warnings);

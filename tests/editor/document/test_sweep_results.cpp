@@ -76,7 +76,7 @@ TEST(SweepResults, TheParallaxProxyIsTheSweeps) {
     ASSERT_TRUE(traits.proxyMakesSense);
     const auto proxy = sweepParallaxProxy(frame);
     ASSERT_TRUE(proxy.has_value());
-    EXPECT_EQ(proxy->shape, ParallaxShape::Box);
+    EXPECT_EQ(proxy->shape, scene::ParallaxShape::Box);
     EXPECT_EQ(proxy->min, traits.proxy.min);
     EXPECT_EQ(proxy->max, traits.proxy.max);
     // Outside the room there is nothing around the ball for a box to stand for.
@@ -102,11 +102,11 @@ TEST(SweepResults, BrokenFilesSayWhatIsWrong) {
 }
 
 TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
-    Scene scene;
+    scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(
-        openProject(scene, test::demoScenePath(), warnings).ok()); // teapot, marble mirror, no reflector
-    const SceneData before = scene.toData();
+    ASSERT_TRUE(scene::openProject(scene, test::demoScenePath(), warnings)
+                    .ok()); // teapot, marble mirror, no reflector
+    const scene::SceneData before = scene.toData();
     QUndoStack stack;
     auto application = applySweepSettings(scene,
                                           {{"map", "cube"},
@@ -124,12 +124,12 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
     EXPECT_EQ(scene.settings().mirrorDepth, 1);
     EXPECT_FALSE(scene.settings().simplifyReflections);
     int mirrors = 0, teapots = 0;
-    scene.forEachNode([&](const Node& node) {
+    scene.forEachNode([&](const scene::Node& node) {
         if (node.data().mirror) {
             ++mirrors;
-            EXPECT_EQ(node.data().mirror->technique, MirrorTechnique::Texture);
+            EXPECT_EQ(node.data().mirror->technique, scene::MirrorTechnique::Texture);
         }
-        if (node.data().mesh && node.data().mesh->builtin == BuiltinMesh::Teapot) {
+        if (node.data().mesh && node.data().mesh->builtin == scene::BuiltinMesh::Teapot) {
             ++teapots;
             EXPECT_EQ(node.data().mesh->tessellation, 4);
         }
@@ -147,21 +147,23 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
 }
 
 TEST(SweepResults, SettingsThatCancelOutGiveNoCommand) {
-    Scene scene;
+    scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(openProject(scene, test::demoScenePath(), warnings).ok());
-    std::optional<MirrorTechnique> current;
-    scene.forEachNode([&](const Node& node) {
+    ASSERT_TRUE(scene::openProject(scene, test::demoScenePath(), warnings).ok());
+    std::optional<scene::MirrorTechnique> current;
+    scene.forEachNode([&](const scene::Node& node) {
         if (node.data().mirror && !current)
             current = node.data().mirror->technique;
     });
     ASSERT_TRUE(current);
-    const MirrorTechnique other =
-        *current == MirrorTechnique::Stencil ? MirrorTechnique::Texture : MirrorTechnique::Stencil;
+    const scene::MirrorTechnique other = *current == scene::MirrorTechnique::Stencil
+                                             ? scene::MirrorTechnique::Texture
+                                             : scene::MirrorTechnique::Stencil;
     // A later key edits the mirrors back to what they hold: nothing changes, so nothing is pushed.
-    auto application = applySweepSettings(
-        scene, {{"technique", std::string(toString(other))}, {"technique", std::string(toString(*current))}},
-        QStringLiteral("cancelled"));
+    auto application = applySweepSettings(scene,
+                                          {{"technique", std::string(scene::toString(other))},
+                                           {"technique", std::string(scene::toString(*current))}},
+                                          QStringLiteral("cancelled"));
     EXPECT_FALSE(application.command);
     EXPECT_EQ(application.applied.size(), 2);
 

@@ -20,14 +20,14 @@ class ExactUndo : public ::testing::Test {
 protected:
     void SetUp() override { scene.reset(test::threeNodeScene()); }
 
-    NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
+    scene::NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
 
-    NodeData dataOf(const std::string& name) const { return scene.findNode(idOf(name))->data(); }
+    scene::NodeData dataOf(const std::string& name) const { return scene.findNode(idOf(name))->data(); }
 
     // Two real steps, saved after the second, then one undone: the stack has a redo step and its clean
     // state lies in it, the case QUndoStack::push would lose.
     void makeHistory() {
-        NodeData c = dataOf("C");
+        scene::NodeData c = dataOf("C");
         c.transform.translate.x = 5.0;
         stack.push(new SetNodeDataCommand(scene, idOf("C"), c));
         c.transform.translate.y = 6.0;
@@ -42,39 +42,39 @@ protected:
     using StackState = test::UndoStackState;
     StackState state() const { return test::undoStackState(stack); }
 
-    Scene scene;
+    scene::Scene scene;
     QUndoStack stack;
 };
 
 // One factory per command kind, each making a command that changes nothing in the scene as it is.
 struct NoOpCase {
     const char* name;
-    std::function<QUndoCommand*(Scene&, const std::function<NodeId(const std::string&)>&)> make;
+    std::function<QUndoCommand*(scene::Scene&, const std::function<scene::NodeId(const std::string&)>&)> make;
 };
 
 std::vector<NoOpCase> noOpCases() {
     return {
         {"set node data to its own value",
-         [](Scene& s, const auto& id) {
+         [](scene::Scene& s, const auto& id) {
              return new SetNodeDataCommand(s, id("A"), s.findNode(id("A"))->data(), {}, QStringLiteral("k"));
          }},
         {"set several nodes' data to their own values",
-         [](Scene& s, const auto& id) {
+         [](scene::Scene& s, const auto& id) {
              return new SetNodesDataCommand(
                  s, {{id("A"), s.findNode(id("A"))->data()}, {id("B1"), s.findNode(id("B1"))->data()}});
          }},
         {"rename to the same name",
-         [](Scene& s, const auto& id) { return new RenameNodeCommand(s, id("B"), "B"); }},
+         [](scene::Scene& s, const auto& id) { return new RenameNodeCommand(s, id("B"), "B"); }},
         {"move to the same place",
-         [](Scene& s, const auto& id) { return new MoveNodeCommand(s, id("B2"), id("B"), 1); }},
+         [](scene::Scene& s, const auto& id) { return new MoveNodeCommand(s, id("B2"), id("B"), 1); }},
         {"move to the end where it is",
-         [](Scene& s, const auto& id) { return new MoveNodeCommand(s, id("C"), kNoNode, -1); }},
+         [](scene::Scene& s, const auto& id) { return new MoveNodeCommand(s, id("C"), scene::kNoNode, -1); }},
         {"move past the end where it is",
-         [](Scene& s, const auto& id) { return new MoveNodeCommand(s, id("B2"), id("B"), 99); }},
+         [](scene::Scene& s, const auto& id) { return new MoveNodeCommand(s, id("B2"), id("B"), 99); }},
         {"settings to their own value",
-         [](Scene& s, const auto&) { return new SetSettingsCommand(s, s.settings(), true); }},
+         [](scene::Scene& s, const auto&) { return new SetSettingsCommand(s, s.settings(), true); }},
         {"camera to its own value",
-         [](Scene& s, const auto&) { return new SetCameraCommand(s, s.camera(), true); }},
+         [](scene::Scene& s, const auto&) { return new SetCameraCommand(s, s.camera(), true); }},
     };
 }
 
@@ -89,7 +89,7 @@ TEST_F(ExactUndo, ANoOpCommandOfEveryKindIsObsoleteFromTheStart) {
 TEST_F(ExactUndo, ANoOpPushKeepsTheRedoStepsAndTheCleanState) {
     makeHistory();
     const StackState before = state();
-    const SceneData sceneBefore = scene.toData();
+    const scene::SceneData sceneBefore = scene.toData();
     for (const NoOpCase& c : noOpCases()) {
         QSignalSpy cleanChanged(&stack, &QUndoStack::cleanChanged);
         QSignalSpy indexChanged(&stack, &QUndoStack::indexChanged);
@@ -107,7 +107,7 @@ TEST_F(ExactUndo, ANoOpPushKeepsTheRedoStepsAndTheCleanState) {
 
 TEST_F(ExactUndo, ANoOpPushedStraightOnACleanStackLeavesItClean) {
     // Even a caller that bypasses pushEdit() gets no step: QUndoStack drops obsolete commands.
-    NodeData a = dataOf("A");
+    scene::NodeData a = dataOf("A");
     a.transform.translate.z = 1.0;
     stack.push(new SetNodeDataCommand(scene, idOf("A"), a));
     stack.setClean();
@@ -136,19 +136,19 @@ TEST_F(ExactUndo, ANoOpInATransactionLeavesNoStep) {
 struct MergeCase {
     const char* name;
     // Pushes the edit that sets the scene to step k (0 = the start value) under one merge key.
-    std::function<void(Scene&, QUndoStack&, NodeId a, NodeId b, int step)> push;
+    std::function<void(scene::Scene&, QUndoStack&, scene::NodeId a, scene::NodeId b, int step)> push;
 };
 
 std::vector<MergeCase> mergeCases() {
-    auto translated = [](const NodeData& start, int step) {
-        NodeData d = start;
+    auto translated = [](const scene::NodeData& start, int step) {
+        scene::NodeData d = start;
         d.transform.translate.x += 0.25 * step;
         return d;
     };
     return {
         {"node data (slider)",
-         [translated](Scene& s, QUndoStack& u, NodeId a, NodeId, int step) {
-             static NodeData start;
+         [translated](scene::Scene& s, QUndoStack& u, scene::NodeId a, scene::NodeId, int step) {
+             static scene::NodeData start;
              if (step == 1) {
                  start = s.findNode(a)->data();
              }
@@ -156,8 +156,8 @@ std::vector<MergeCase> mergeCases() {
                       new SetNodeDataCommand(s, a, translated(start, step), {}, QStringLiteral("slider#1")));
          }},
         {"several nodes (handle drag)",
-         [translated](Scene& s, QUndoStack& u, NodeId a, NodeId b, int step) {
-             static NodeData startA, startB;
+         [translated](scene::Scene& s, QUndoStack& u, scene::NodeId a, scene::NodeId b, int step) {
+             static scene::NodeData startA, startB;
              if (step == 1) {
                  startA = s.findNode(a)->data();
                  startB = s.findNode(b)->data();
@@ -167,24 +167,24 @@ std::vector<MergeCase> mergeCases() {
                                             {}, QStringLiteral("handle#1")));
          }},
         {"settings",
-         [](Scene& s, QUndoStack& u, NodeId, NodeId, int step) {
-             static SceneSettings start;
+         [](scene::Scene& s, QUndoStack& u, scene::NodeId, scene::NodeId, int step) {
+             static scene::SceneSettings start;
              if (step == 1) {
                  start = s.settings();
              }
-             SceneSettings v = start;
+             scene::SceneSettings v = start;
              v.ambient = start.ambient + 0.125 * step;
              auto* command = new SetSettingsCommand(s, v, true);
              command->setMergeKey(QStringLiteral("settings.ambient#1"));
              pushEdit(u, command);
          }},
         {"camera",
-         [](Scene& s, QUndoStack& u, NodeId, NodeId, int step) {
-             static CameraData start;
+         [](scene::Scene& s, QUndoStack& u, scene::NodeId, scene::NodeId, int step) {
+             static scene::CameraData start;
              if (step == 1) {
                  start = s.camera();
              }
-             CameraData v = start;
+             scene::CameraData v = start;
              v.position.x = start.position.x + 0.5 * step;
              auto* command = new SetCameraCommand(s, v, true);
              command->setMergeKey(QStringLiteral("navigate#1"));
@@ -197,11 +197,11 @@ TEST_F(ExactUndo, AMergeChainBackToTheStartDisappears) {
     for (const MergeCase& c : mergeCases()) {
         stack.clear();
         // A saved step first, so the chain starts above the clean state.
-        NodeData b = dataOf("B");
+        scene::NodeData b = dataOf("B");
         b.transform.rotate.y += 10.0;
         stack.push(new SetNodeDataCommand(scene, idOf("B"), b));
         stack.setClean();
-        const SceneData start = scene.toData();
+        const scene::SceneData start = scene.toData();
         QSignalSpy cleanChanged(&stack, &QUndoStack::cleanChanged);
 
         for (int step : {1, 2, 3, 2}) {
@@ -222,11 +222,11 @@ TEST_F(ExactUndo, AMergeChainBackToTheStartDisappears) {
 TEST_F(ExactUndo, AMergeChainEndingElsewhereIsOneStepThatUndoesAndRedoes) {
     for (const MergeCase& c : mergeCases()) {
         stack.clear();
-        const SceneData start = scene.toData();
+        const scene::SceneData start = scene.toData();
         for (int step : {1, 2, 0, 3}) { // passing the start on the way does not end the step
             c.push(scene, stack, idOf("A"), idOf("C"), step);
         }
-        const SceneData end = scene.toData();
+        const scene::SceneData end = scene.toData();
         ASSERT_NE(end, start) << c.name;
         EXPECT_EQ(stack.count(), 1) << c.name;
         stack.undo();
@@ -239,26 +239,26 @@ TEST_F(ExactUndo, AMergeChainEndingElsewhereIsOneStepThatUndoesAndRedoes) {
 }
 
 TEST_F(ExactUndo, RealEditsOfEveryKindStillUndoAndRedo) {
-    const SceneData start = scene.toData();
-    NodeData a = dataOf("A");
-    a.material = MaterialComponent{};
+    const scene::SceneData start = scene.toData();
+    scene::NodeData a = dataOf("A");
+    a.material = scene::MaterialComponent{};
     EXPECT_TRUE(pushEdit(stack, new SetNodeDataCommand(scene, idOf("A"), a)));
-    NodeData b1 = dataOf("B1");
+    scene::NodeData b1 = dataOf("B1");
     b1.transform.scale = {2, 2, 2};
     EXPECT_TRUE(pushEdit(stack, new SetNodesDataCommand(scene, {{idOf("B1"), b1}})));
     EXPECT_TRUE(pushEdit(stack, new RenameNodeCommand(scene, idOf("C"), "D")));
     EXPECT_TRUE(pushEdit(stack, new MoveNodeCommand(scene, idOf("B2"), idOf("B"), 0)));
-    EXPECT_TRUE(pushEdit(stack, new MoveNodeCommand(scene, idOf("A"), kNoNode, -1)));
-    SceneSettings settings = scene.settings();
+    EXPECT_TRUE(pushEdit(stack, new MoveNodeCommand(scene, idOf("A"), scene::kNoNode, -1)));
+    scene::SceneSettings settings = scene.settings();
     settings.mirrorDepth += 1;
     EXPECT_TRUE(pushEdit(stack, new SetSettingsCommand(scene, settings)));
-    CameraData camera = scene.camera();
+    scene::CameraData camera = scene.camera();
     camera.fovY += 5.0;
     EXPECT_TRUE(pushEdit(stack, new SetCameraCommand(scene, camera)));
     EXPECT_TRUE(pushEdit(stack, new AddNodeCommand(scene, named("E"))));
     EXPECT_TRUE(pushEdit(stack, new RemoveNodeCommand(scene, idOf("B1"))));
     EXPECT_EQ(stack.count(), 9);
-    const SceneData end = scene.toData();
+    const scene::SceneData end = scene.toData();
     ASSERT_NE(end, start);
     while (stack.canUndo()) {
         stack.undo();

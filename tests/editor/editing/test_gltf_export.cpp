@@ -33,6 +33,7 @@
 namespace {
 
 using namespace speculum::document;
+using namespace speculum::scene;
 
 std::filesystem::path folder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -55,23 +56,24 @@ const aiNode* findNode(const aiNode* node, const std::string& name) {
 }
 
 TEST(GltfExport, TheDemoSceneReadsBackWithItsNodesAndMeshes) {
-    Scene scene;
+    speculum::scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(openProject(scene,
-                            QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json"),
-                            warnings)
-                    .ok());
+    ASSERT_TRUE(
+        speculum::scene::openProject(
+            scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json"), warnings)
+            .ok());
     QUndoStack stack;
-    NodeTree mirror = makeNode(NewNodeKind::Mirror, {0, 0, -4});
+    speculum::scene::NodeTree mirror = makeNode(NewNodeKind::Mirror, {0, 0, -4});
     mirror.data.mirror->size = {3.0, 1.5};
     mirror.children.push_back(makeNode(NewNodeKind::Sphere, {0, 1, 0}));
     stack.push(new AddNodeCommand(scene, mirror));
 
     for (const char* name : {"scene.gltf", "scene.glb"}) {
         const auto path = folder() / name;
-        MeshLibrary meshes;
+        speculum::scene::MeshLibrary meshes;
         std::vector<std::string> exportWarnings;
-        const auto status = exportGltf(scene, QString::fromStdString(path.string()), meshes, exportWarnings);
+        const auto status =
+            speculum::scene::exportGltf(scene, QString::fromStdString(path.string()), meshes, exportWarnings);
         ASSERT_TRUE(status.ok()) << status.error();
         EXPECT_TRUE(exportWarnings.empty());
         ASSERT_TRUE(std::filesystem::exists(path));
@@ -82,7 +84,7 @@ TEST(GltfExport, TheDemoSceneReadsBackWithItsNodesAndMeshes) {
         const aiNode* teapot = findNode(read->mRootNode, "Teapot");
         ASSERT_TRUE(teapot) << name;
         ASSERT_EQ(teapot->mNumMeshes, 1u);
-        MeshLibrary check;
+        speculum::scene::MeshLibrary check;
         std::vector<std::string> ignored;
         const auto teapotMesh = check.get(*scene.topLevelNodes()[0]->data().mesh, ignored);
         ASSERT_TRUE(teapotMesh.ok());
@@ -113,19 +115,21 @@ TEST(GltfExport, TheDemoSceneReadsBackWithItsNodesAndMeshes) {
 }
 
 TEST(GltfExport, BadNamesAreErrors) {
-    Scene scene;
-    MeshLibrary meshes;
+    speculum::scene::Scene scene;
+    speculum::scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const auto dir = folder();
-    EXPECT_FALSE(
-        exportGltf(scene, QString::fromStdString((dir / "scene.obj").string()), meshes, warnings).ok());
-    const auto missing =
-        exportGltf(scene, QString::fromStdString((dir / "no" / "scene.gltf").string()), meshes, warnings);
+    EXPECT_FALSE(speculum::scene::exportGltf(scene, QString::fromStdString((dir / "scene.obj").string()),
+                                             meshes, warnings)
+                     .ok());
+    const auto missing = speculum::scene::exportGltf(
+        scene, QString::fromStdString((dir / "no" / "scene.gltf").string()), meshes, warnings);
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().find("does not exist"), std::string::npos);
     // An empty scene still exports.
-    EXPECT_TRUE(
-        exportGltf(scene, QString::fromStdString((dir / "empty.gltf").string()), meshes, warnings).ok());
+    EXPECT_TRUE(speculum::scene::exportGltf(scene, QString::fromStdString((dir / "empty.gltf").string()),
+                                            meshes, warnings)
+                    .ok());
 }
 
 // ---- self-contained export: images, camera, lights, extensions, uvs ----
@@ -215,38 +219,38 @@ void expectTexels(const std::string& label, std::unique_ptr<OIIO::ImageInput> in
 }
 
 // A scene with a TGA-textured plane, an emissive box, three kinds of light and a camera.
-SceneData exportScene(const std::filesystem::path& dir) {
+speculum::scene::SceneData exportScene(const std::filesystem::path& dir) {
     writeTga(dir / "checker.tga");
-    SceneData data;
+    speculum::scene::SceneData data;
     data.camera.position = {1.0, 2.0, 5.0};
     data.camera.target = {0.0, 0.5, 0.0};
     data.camera.fovY = 50.0;
     data.camera.near = 0.25;
     data.camera.far = 40.0;
 
-    NodeTree plane = makeNode(NewNodeKind::Plane);
+    speculum::scene::NodeTree plane = makeNode(NewNodeKind::Plane);
     plane.data.name = "Floor";
-    plane.data.material = MaterialComponent{};
+    plane.data.material = speculum::scene::MaterialComponent{};
     plane.data.material->texture = (dir / "checker.tga").string();
-    plane.data.material->wrap = {TextureWrap::Clamp, TextureWrap::Mirror};
+    plane.data.material->wrap = {speculum::scene::TextureWrap::Clamp, speculum::scene::TextureWrap::Mirror};
     plane.data.material->opacity = 0.5;
-    plane.data.material->alphaMode = AlphaMode::Mask;
+    plane.data.material->alphaMode = speculum::scene::AlphaMode::Mask;
     plane.data.material->alphaCutoff = 0.3;
     plane.data.material->shininess = 32.0;
     data.nodes.push_back(plane);
 
-    NodeTree point = makeNode(NewNodeKind::PointLight, {0, 3, 0});
+    speculum::scene::NodeTree point = makeNode(NewNodeKind::PointLight, {0, 3, 0});
     point.data.name = "Bulb";
     point.data.light->color = {1.0, 0.5, 0.25};
     point.data.light->intensity = 2.0;
     data.nodes.push_back(point);
-    NodeTree spot = makeNode(NewNodeKind::SpotLight, {2, 3, 0});
+    speculum::scene::NodeTree spot = makeNode(NewNodeKind::SpotLight, {2, 3, 0});
     spot.data.name = "Spot";
     spot.data.transform.rotate = {-30.0, 20.0, 0.0};
     spot.data.light->spotAngle = 40.0;
     spot.data.light->spotBlend = 0.25;
     data.nodes.push_back(spot);
-    NodeTree sun = makeNode(NewNodeKind::DirectionalLight, {0, 5, 0});
+    speculum::scene::NodeTree sun = makeNode(NewNodeKind::DirectionalLight, {0, 5, 0});
     sun.data.name = "Sun";
     data.nodes.push_back(sun);
     return data;
@@ -266,12 +270,13 @@ aiMatrix4x4 globalTransform(const aiNode* node) {
 
 TEST(GltfExport, GlbIsSelfContainedWithCameraLightsAndOnlyUsedExtensions) {
     const auto dir = folder();
-    Scene scene;
+    speculum::scene::Scene scene;
     scene.reset(exportScene(dir));
     const auto path = dir / "scene.glb";
-    MeshLibrary meshes;
+    speculum::scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
-    const auto status = exportGltf(scene, QString::fromStdString(path.string()), meshes, warnings);
+    const auto status =
+        speculum::scene::exportGltf(scene, QString::fromStdString(path.string()), meshes, warnings);
     ASSERT_TRUE(status.ok()) << status.error();
     EXPECT_TRUE(warnings.empty()) << warnings.front();
 
@@ -400,7 +405,7 @@ TEST(GltfExport, GlbIsSelfContainedWithCameraLightsAndOnlyUsedExtensions) {
     // Lights by type, each shining where speculum's does.
     ASSERT_EQ(read->mNumLights, 3u);
     std::vector<std::string> snapshotWarnings;
-    const auto frame = snapshot(scene, 0.0, meshes, snapshotWarnings);
+    const auto frame = speculum::scene::snapshot(scene, 0.0, meshes, snapshotWarnings);
     std::set<aiLightSourceType> types;
     for (unsigned i = 0; i < read->mNumLights; ++i) {
         const aiLight* light = read->mLights[i];
@@ -428,8 +433,8 @@ TEST(GltfExport, GlbIsSelfContainedWithCameraLightsAndOnlyUsedExtensions) {
 
 TEST(GltfExport, GltfWritesItsImagesBesideItWithRelativeUris) {
     const auto dir = folder();
-    Scene scene;
-    SceneData data = exportScene(dir);
+    speculum::scene::Scene scene;
+    speculum::scene::SceneData data = exportScene(dir);
     // A PNG texture is copied byte for byte; the same texture twice is stored once.
     std::filesystem::create_directories(dir / "maps");
     {
@@ -439,9 +444,9 @@ TEST(GltfExport, GltfWritesItsImagesBesideItWithRelativeUris) {
         ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, &kTexels[0][0][0]));
         ASSERT_TRUE(out->close());
     }
-    NodeTree box = makeNode(NewNodeKind::Box, {0, 1, 0});
+    speculum::scene::NodeTree box = makeNode(NewNodeKind::Box, {0, 1, 0});
     box.data.name = "Lamp";
-    box.data.material = MaterialComponent{};
+    box.data.material = speculum::scene::MaterialComponent{};
     box.data.material->emission = {4.0, 2.0, 0.0};
     box.data.material->color = {0.8, 0.4, 0.2};
     box.data.material->specularColor = glm::mix(glm::dvec3(1.0), box.data.material->color, 0.75);
@@ -453,9 +458,10 @@ TEST(GltfExport, GltfWritesItsImagesBesideItWithRelativeUris) {
     const auto out = dir / "out";
     std::filesystem::create_directories(out);
     const auto path = out / "my scene.gltf";
-    MeshLibrary meshes;
+    speculum::scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
-    const auto status = exportGltf(scene, QString::fromStdString(path.string()), meshes, warnings);
+    const auto status =
+        speculum::scene::exportGltf(scene, QString::fromStdString(path.string()), meshes, warnings);
     ASSERT_TRUE(status.ok()) << status.error();
 
     std::ifstream in(path);
@@ -524,18 +530,19 @@ TEST(GltfExport, GltfWritesItsImagesBesideItWithRelativeUris) {
 
 TEST(GltfExport, MissingTexturesAreSkippedWithAWarning) {
     const auto dir = folder();
-    SceneData data;
-    NodeTree box = makeNode(NewNodeKind::Box);
+    speculum::scene::SceneData data;
+    speculum::scene::NodeTree box = makeNode(NewNodeKind::Box);
     box.data.name = "Box";
-    box.data.material = MaterialComponent{};
+    box.data.material = speculum::scene::MaterialComponent{};
     box.data.material->texture = (dir / "gone.png").string();
     data.nodes.push_back(box);
-    Scene scene;
+    speculum::scene::Scene scene;
     scene.reset(data);
-    MeshLibrary meshes;
+    speculum::scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const auto path = dir / "scene.glb";
-    ASSERT_TRUE(exportGltf(scene, QString::fromStdString(path.string()), meshes, warnings).ok());
+    ASSERT_TRUE(
+        speculum::scene::exportGltf(scene, QString::fromStdString(path.string()), meshes, warnings).ok());
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("gone.png"), std::string::npos) << warnings[0];
     const Glb glb = parseGlb(readBytes(path));
@@ -549,14 +556,15 @@ TEST(GltfExport, EmbeddedTexturesAndVertexColoursAreKept) {
     const auto dir = folder();
     // The model: our own .glb of the TGA-textured plane (its image is an embedded PNG).
     {
-        Scene source;
-        SceneData data = exportScene(dir);
+        speculum::scene::Scene source;
+        speculum::scene::SceneData data = exportScene(dir);
         data.nodes.resize(1);
         source.reset(data);
-        MeshLibrary meshes;
+        speculum::scene::MeshLibrary meshes;
         std::vector<std::string> warnings;
-        ASSERT_TRUE(
-            exportGltf(source, QString::fromStdString((dir / "model.glb").string()), meshes, warnings).ok());
+        ASSERT_TRUE(speculum::scene::exportGltf(source, QString::fromStdString((dir / "model.glb").string()),
+                                                meshes, warnings)
+                        .ok());
     }
     // A triangle with vertex colours.
     std::ofstream(dir / "colours.ply")
@@ -565,24 +573,25 @@ TEST(GltfExport, EmbeddedTexturesAndVertexColoursAreKept) {
            "property uchar red\nproperty uchar green\nproperty uchar blue\n"
            "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
            "0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n";
-    SceneData data;
-    NodeTree model;
+    speculum::scene::SceneData data;
+    speculum::scene::NodeTree model;
     model.data.name = "Model";
-    model.data.mesh = MeshComponent::fromFile((dir / "model.glb").string());
-    model.data.material = MaterialComponent{};
+    model.data.mesh = speculum::scene::MeshComponent::fromFile((dir / "model.glb").string());
+    model.data.material = speculum::scene::MaterialComponent{};
     model.data.material->texture = (dir / "model.glb").string() + "#*0";
     data.nodes.push_back(model);
-    NodeTree colours;
+    speculum::scene::NodeTree colours;
     colours.data.name = "Colours";
-    colours.data.mesh = MeshComponent::fromFile((dir / "colours.ply").string());
+    colours.data.mesh = speculum::scene::MeshComponent::fromFile((dir / "colours.ply").string());
     data.nodes.push_back(colours);
-    Scene scene;
+    speculum::scene::Scene scene;
     scene.reset(data);
 
     const auto path = dir / "again.glb";
-    MeshLibrary meshes;
+    speculum::scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
-    const auto status = exportGltf(scene, QString::fromStdString(path.string()), meshes, warnings);
+    const auto status =
+        speculum::scene::exportGltf(scene, QString::fromStdString(path.string()), meshes, warnings);
     ASSERT_TRUE(status.ok()) << status.error();
     for (const std::string& w : warnings) {
         EXPECT_EQ(w.find("texture"), std::string::npos) << w;
@@ -632,14 +641,14 @@ TEST(GltfExport, EmbeddedTexturesAndVertexColoursAreKept) {
 // folder), the existing .gltf is left as it was and no temporary remains.
 TEST(GltfExport, AFailedExportLeavesNoPartialOutput) {
     const auto dir = folder();
-    Scene scene;
+    speculum::scene::Scene scene;
     scene.reset(exportScene(dir));
     std::filesystem::create_directories(dir / "scene.bin");
     std::ofstream(dir / "scene.gltf") << "precious";
-    MeshLibrary meshes;
+    speculum::scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
-    const auto status =
-        exportGltf(scene, QString::fromStdString((dir / "scene.gltf").string()), meshes, warnings);
+    const auto status = speculum::scene::exportGltf(
+        scene, QString::fromStdString((dir / "scene.gltf").string()), meshes, warnings);
     ASSERT_FALSE(status.ok());
     EXPECT_NE(status.error().find("scene.bin"), std::string::npos) << status.error();
     std::ifstream in(dir / "scene.gltf");
@@ -658,14 +667,16 @@ TEST(GltfExport, AFailedExportLeavesNoPartialOutput) {
 TEST(GltfExport, ADiskFillingUpKeepsEveryPreviousFile) {
     namespace fs = std::filesystem;
     const auto dir = folder();
-    Scene scene;
+    speculum::scene::Scene scene;
     scene.reset(exportScene(dir));
-    MeshLibrary meshes;
+    speculum::scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     for (const char* name : {"scene.gltf", "scene.glb"}) {
         SCOPED_TRACE(name);
         const fs::path target = dir / name;
-        ASSERT_TRUE(exportGltf(scene, QString::fromStdString(target.string()), meshes, warnings).ok());
+        ASSERT_TRUE(
+            speculum::scene::exportGltf(scene, QString::fromStdString(target.string()), meshes, warnings)
+                .ok());
         std::map<std::string, std::string> before;
         for (const auto& entry : fs::directory_iterator(dir)) {
             std::ifstream in(entry.path(), std::ios::binary);
@@ -674,8 +685,8 @@ TEST(GltfExport, ADiskFillingUpKeepsEveryPreviousFile) {
         const speculum::render::test::ChildOutcome child =
             speculum::render::test::inChild([&](std::string& text) {
                 speculum::render::test::limitFileSize(1024);
-                const speculum::base::Status status =
-                    exportGltf(scene, QString::fromStdString(target.string()), meshes, warnings);
+                const speculum::base::Status status = speculum::scene::exportGltf(
+                    scene, QString::fromStdString(target.string()), meshes, warnings);
                 text = status.ok() ? std::string("(exported)") : status.error();
                 return status.ok() ? 1 : 0;
             });

@@ -12,14 +12,14 @@
 namespace speculum::ui {
 namespace {
 
-using document::NodeId;
+using scene::NodeId;
 using State = HandleDrag::State;
 
 class HandleDragTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        document::SceneData data;
-        document::NodeTree a, b;
+        scene::SceneData data;
+        scene::NodeTree a, b;
         a.data.name = "A";
         b.data.name = "B";
         b.data.transform.translate = {1.5, 0.0, -0.5};
@@ -30,7 +30,7 @@ protected:
         a_ = scene.topLevelNodes()[0]->id();
         b_ = scene.topLevelNodes()[1]->id();
         // Something saved already, so the drag starts above a clean state with history below it.
-        document::NodeData first = scene.findNode(b_)->data();
+        scene::NodeData first = scene.findNode(b_)->data();
         first.transform.rotate.y = 30.0;
         stack.push(new document::SetNodeDataCommand(scene, b_, first));
         stack.setClean();
@@ -41,9 +41,8 @@ protected:
     // The handles on node A as the viewport draws them: a 800×600 view through the scene's camera.
     Gizmo gizmo(HandleMode mode) const {
         Gizmo g;
-        const ScreenProjection projection(document::toRender(scene.camera()), QSizeF(800, 600));
-        g.setUp(mode, projection, glm::dmat4(1.0),
-                document::localMatrix(scene.findNode(a_)->data().transform));
+        const ScreenProjection projection(scene::toRender(scene.camera()), QSizeF(800, 600));
+        g.setUp(mode, projection, glm::dmat4(1.0), scene::localMatrix(scene.findNode(a_)->data().transform));
         return g;
     }
     // A point on the x handle, where a user grabs it.
@@ -52,10 +51,10 @@ protected:
         return line.front() + (line.back() - line.front()) * 0.9;
     }
 
-    document::Scene scene;
+    scene::Scene scene;
     QUndoStack stack;
     NodeId a_ = 0, b_ = 0;
-    document::NodeData startA, startB;
+    scene::NodeData startA, startB;
 };
 
 TEST_F(HandleDragTest, PressMoveReleaseIsOneUndoStep) {
@@ -170,7 +169,7 @@ TEST_F(HandleDragTest, EachDragIsItsOwnStep) {
     }
     EXPECT_EQ(stack.count(), 3) << "two drags, two steps";
     // Cancelling a third drag takes back only that one.
-    const document::NodeData afterTwo = scene.findNode(a_)->data();
+    const scene::NodeData afterTwo = scene.findNode(a_)->data();
     ASSERT_TRUE(drag.press(g, 0, p, a_, {a_}, 0.0));
     drag.move(p + QPointF(50, 0));
     drag.cancel();

@@ -11,9 +11,10 @@
 namespace {
 
 using namespace speculum::document;
+using namespace speculum::scene;
 
 TEST(NodeFactory, EachKindHasItsComponentAndLoads) {
-    SceneData scene;
+    speculum::scene::SceneData scene;
     const NewNodeKind kinds[] = {NewNodeKind::Empty,
                                  NewNodeKind::Teapot,
                                  NewNodeKind::Sphere,
@@ -25,31 +26,32 @@ TEST(NodeFactory, EachKindHasItsComponentAndLoads) {
                                  NewNodeKind::DirectionalLight,
                                  NewNodeKind::SpotLight};
     for (NewNodeKind kind : kinds) {
-        NodeTree t = makeNode(kind, {1.0, 2.0, 3.0});
+        speculum::scene::NodeTree t = makeNode(kind, {1.0, 2.0, 3.0});
         EXPECT_EQ(QString::fromStdString(t.data.name), displayName(kind));
         scene.nodes.push_back(t);
     }
     EXPECT_TRUE(scene.nodes[5].data.mirror);
     EXPECT_FALSE(scene.nodes[5].data.mesh) << "a mirror is its rectangle";
     EXPECT_TRUE(scene.nodes[6].data.reflector && scene.nodes[6].data.mesh);
-    EXPECT_EQ(scene.nodes[6].data.mesh->builtin, BuiltinMesh::Sphere);
-    EXPECT_EQ(scene.nodes[9].data.light->type, LightType::Spot);
+    EXPECT_EQ(scene.nodes[6].data.mesh->builtin, speculum::scene::BuiltinMesh::Sphere);
+    EXPECT_EQ(scene.nodes[9].data.light->type, speculum::scene::LightType::Spot);
     EXPECT_EQ(scene.nodes[1].data.transform.translate, glm::dvec3(1.0, 2.0, 3.0));
     EXPECT_GT(scene.nodes[7].data.transform.translate.y, 3.0) << "lights go above the point";
 
     std::vector<std::string> warnings;
-    auto loaded = parseProject(serializeProject(scene, QDir::temp()), QDir::temp(), warnings);
+    auto loaded = speculum::scene::parseProject(speculum::scene::serializeProject(scene, QDir::temp()),
+                                                QDir::temp(), warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_TRUE(*loaded == scene);
 }
 
 TEST(NodeFactory, NamesBecomeUniqueAndOneReflectorPerScene) {
-    Scene scene;
+    speculum::scene::Scene scene;
     QUndoStack stack;
     EXPECT_EQ(uniqueName(scene, "Mirror"), "Mirror");
     stack.push(new AddNodeCommand(scene, makeNode(NewNodeKind::Mirror)));
     EXPECT_EQ(uniqueName(scene, "Mirror"), "Mirror 2");
-    NodeTree second = makeNode(NewNodeKind::Mirror);
+    speculum::scene::NodeTree second = makeNode(NewNodeKind::Mirror);
     second.data.name = uniqueName(scene, second.data.name);
     stack.push(new AddNodeCommand(scene, second));
     EXPECT_EQ(uniqueName(scene, "Mirror"), "Mirror 3");
@@ -62,7 +64,7 @@ TEST(NodeFactory, NamesBecomeUniqueAndOneReflectorPerScene) {
     EXPECT_TRUE(canAdd(scene, makeNode(NewNodeKind::Teapot)).ok());
 
     bool dropped = false;
-    const NodeTree copy = duplicateTree(scene, reflectorNode(scene), &dropped);
+    const speculum::scene::NodeTree copy = duplicateTree(scene, reflectorNode(scene), &dropped);
     EXPECT_TRUE(dropped);
     EXPECT_FALSE(copy.data.reflector);
     EXPECT_EQ(copy.data.name, "Chrome sphere 2");
@@ -109,14 +111,14 @@ TEST(NodeFactory, ImportsStandOnTheGroundAtTheFocusBesideWhatIsThere) {
 }
 
 TEST(NodeFactory, OccupiedBoxesCoverMeshesAndMirrorsInWorldSpace) {
-    Scene scene;
+    speculum::scene::Scene scene;
     QUndoStack stack;
-    NodeTree parent = makeNode(NewNodeKind::Empty, {2, 0, 0});
+    speculum::scene::NodeTree parent = makeNode(NewNodeKind::Empty, {2, 0, 0});
     parent.children.push_back(makeNode(NewNodeKind::Box, {0, 0.5, 0}));
     stack.push(new AddNodeCommand(scene, parent));
     stack.push(new AddNodeCommand(scene, makeNode(NewNodeKind::Mirror, {-3, 1, 0})));
     stack.push(new AddNodeCommand(scene, makeNode(NewNodeKind::PointLight, {0, 3, 0})));
-    MeshLibrary meshes;
+    speculum::scene::MeshLibrary meshes;
     const auto boxes = occupiedBoxes(scene, 0.0, meshes);
     ASSERT_EQ(boxes.size(), 2u) << "the box and the mirror; a light takes no room";
     const auto b = boxes[0];
@@ -125,7 +127,7 @@ TEST(NodeFactory, OccupiedBoxesCoverMeshesAndMirrorsInWorldSpace) {
     EXPECT_NEAR(boxes[1].center().x, -3.0, 1e-6);
     EXPECT_NEAR(boxes[1].max.y, 1.0, 1e-6);
 
-    NodeData node;
+    speculum::scene::NodeData node;
     node.transform.translate = {1, 2, 3};
     node.transform.scale = {2, 2, 4};
     scaleAboutParentOrigin(node, 0.5);

@@ -10,21 +10,22 @@
 namespace {
 
 using namespace speculum::document;
+using namespace speculum::scene;
 
-NodeData fullNode() {
-    NodeData d = makeNode(NewNodeKind::SpotLight).data;
-    d.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
-    d.material = MaterialComponent{};
-    d.mirror = MirrorComponent{};
-    d.reflector = ReflectorComponent{};
-    d.animation = AnimationComponent{};
-    d.animation->bounce = BounceAnimation{};
-    d.animation->orbit = OrbitAnimation{};
+speculum::scene::NodeData fullNode() {
+    speculum::scene::NodeData d = makeNode(NewNodeKind::SpotLight).data;
+    d.mesh = speculum::scene::MeshComponent::fromBuiltin(speculum::scene::BuiltinMesh::Sphere);
+    d.material = speculum::scene::MaterialComponent{};
+    d.mirror = speculum::scene::MirrorComponent{};
+    d.reflector = speculum::scene::ReflectorComponent{};
+    d.animation = speculum::scene::AnimationComponent{};
+    d.animation->bounce = speculum::scene::BounceAnimation{};
+    d.animation->orbit = speculum::scene::OrbitAnimation{};
     return d;
 }
 
 TEST(Properties, KeysAreUniqueAndEveryVisiblePropertyReadsAValue) {
-    const NodeData d = fullNode();
+    const speculum::scene::NodeData d = fullNode();
     QStringList keys;
     for (const ComponentInfo& c : nodeComponents()) {
         EXPECT_TRUE(c.present(d)) << c.key.toStdString();
@@ -43,7 +44,7 @@ TEST(Properties, KeysAreUniqueAndEveryVisiblePropertyReadsAValue) {
 }
 
 TEST(Properties, ValidValuesAreWrittenAndReadBack) {
-    NodeData d = fullNode();
+    speculum::scene::NodeData d = fullNode();
     const auto* reflectivity = findNodeProperty(QStringLiteral("mirror.reflectivity"));
     ASSERT_TRUE(reflectivity);
     ASSERT_TRUE(reflectivity->set(d, 0.25).ok());
@@ -60,7 +61,7 @@ TEST(Properties, ValidValuesAreWrittenAndReadBack) {
 
     const auto* type = findNodeProperty(QStringLiteral("light.type"));
     ASSERT_TRUE(type->set(d, 1).ok());
-    EXPECT_EQ(d.light->type, LightType::Directional);
+    EXPECT_EQ(d.light->type, speculum::scene::LightType::Directional);
     EXPECT_FALSE(findNodeProperty(QStringLiteral("light.spotAngle"))->isVisible(d))
         << "spot-only field shown";
 
@@ -71,12 +72,12 @@ TEST(Properties, ValidValuesAreWrittenAndReadBack) {
 
     const auto* shape = findNodeProperty(QStringLiteral("mesh.source"));
     ASSERT_TRUE(shape->set(d, 2).ok());
-    EXPECT_EQ(d.mesh->builtin, BuiltinMesh::Box);
+    EXPECT_EQ(d.mesh->builtin, speculum::scene::BuiltinMesh::Box);
 }
 
 TEST(Properties, InvalidValuesAreRefusedWithAMessageAndNotClamped) {
-    NodeData d = fullNode();
-    const NodeData before = d;
+    speculum::scene::NodeData d = fullNode();
+    const speculum::scene::NodeData before = d;
     struct Case {
         const char* key;
         QVariant value;
@@ -110,7 +111,7 @@ TEST(Properties, InvalidValuesAreRefusedWithAMessageAndNotClamped) {
 }
 
 TEST(Properties, TexturesMayNameAnImageEmbeddedInAModel) {
-    NodeData d = fullNode();
+    speculum::scene::NodeData d = fullNode();
     const std::string model = std::string(SPECULUM_SOURCE_DIR) + "/resources/models/toyset.glb";
     const auto* texture = findNodeProperty(QStringLiteral("material.texture"));
     ASSERT_TRUE(texture);
@@ -125,7 +126,7 @@ TEST(Properties, TexturesMayNameAnImageEmbeddedInAModel) {
 }
 
 TEST(Properties, CameraRulesCoverTheWholeCamera) {
-    CameraData camera;
+    speculum::scene::CameraData camera;
     const auto* far = findCameraProperty(QStringLiteral("camera.far"));
     ASSERT_TRUE(far);
     auto status = far->set(camera, 0.05); // below near (0.1)
@@ -133,16 +134,16 @@ TEST(Properties, CameraRulesCoverTheWholeCamera) {
     EXPECT_NE(status.error().find("greater than near"), std::string::npos) << status.error();
     const auto* target = findCameraProperty(QStringLiteral("camera.target"));
     EXPECT_FALSE(target->set(camera, QVariantList{0.0, 0.0, 1.0}).ok()) << "target on the position";
-    EXPECT_TRUE(camera == CameraData{});
+    EXPECT_TRUE(camera == speculum::scene::CameraData{});
     const auto* depth = findSettingsProperty(QStringLiteral("settings.mirrorDepth"));
-    SceneSettings settings;
+    speculum::scene::SceneSettings settings;
     EXPECT_FALSE(depth->set(settings, 17).ok());
     EXPECT_TRUE(depth->set(settings, 5).ok());
     EXPECT_EQ(settings.mirrorDepth, 5);
 }
 
 TEST(Properties, ComponentsAddAndRemoveKeepTheNodeLoadable) {
-    NodeData d;
+    speculum::scene::NodeData d;
     d.name = "Thing";
     const auto* reflector = findComponent(QStringLiteral("reflector"));
     ASSERT_TRUE(reflector->add(d).ok());
@@ -157,10 +158,11 @@ TEST(Properties, ComponentsAddAndRemoveKeepTheNodeLoadable) {
             ASSERT_TRUE(c.add(d).ok()) << c.key.toStdString();
         }
     }
-    SceneData scene;
-    scene.nodes.push_back(NodeTree{d, {}});
+    speculum::scene::SceneData scene;
+    scene.nodes.push_back(speculum::scene::NodeTree{d, {}});
     std::vector<std::string> warnings;
-    const auto loaded = parseProject(serializeProject(scene, QDir::temp()), QDir::temp(), warnings);
+    const auto loaded = speculum::scene::parseProject(speculum::scene::serializeProject(scene, QDir::temp()),
+                                                      QDir::temp(), warnings);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     EXPECT_TRUE(loaded->nodes.front().data == d);
 }
@@ -170,7 +172,7 @@ TEST(Properties, ComponentsAddAndRemoveKeepTheNodeLoadable) {
 namespace {
 
 TEST(Properties, MirrorTintFresnelAndRoughnessAreEditable) {
-    NodeData d = fullNode();
+    speculum::scene::NodeData d = fullNode();
     const auto* tint = findNodeProperty(QStringLiteral("mirror.tint"));
     const auto* fresnel = findNodeProperty(QStringLiteral("mirror.fresnel"));
     const auto* roughness = findNodeProperty(QStringLiteral("mirror.roughness"));
@@ -190,7 +192,7 @@ TEST(Properties, MirrorTintFresnelAndRoughnessAreEditable) {
 }
 
 TEST(Properties, ReflectorFresnelFillUpdateAndMirrorDepthAreEditable) {
-    NodeData d = fullNode();
+    speculum::scene::NodeData d = fullNode();
     const auto* fresnel = findNodeProperty(QStringLiteral("reflector.fresnel"));
     const auto* fill = findNodeProperty(QStringLiteral("reflector.fill"));
     const auto* update = findNodeProperty(QStringLiteral("reflector.update"));
@@ -199,9 +201,9 @@ TEST(Properties, ReflectorFresnelFillUpdateAndMirrorDepthAreEditable) {
     ASSERT_TRUE(fresnel->set(d, true).ok());
     EXPECT_TRUE(d.reflector->fresnel);
     ASSERT_TRUE(fill->set(d, 0).ok());
-    EXPECT_EQ(d.reflector->fill, ReflectorFill::Direct);
+    EXPECT_EQ(d.reflector->fill, speculum::scene::ReflectorFill::Direct);
     ASSERT_TRUE(update->set(d, 2).ok());
-    EXPECT_EQ(d.reflector->update, ReflectorUpdate::Once);
+    EXPECT_EQ(d.reflector->update, speculum::scene::ReflectorUpdate::Once);
     ASSERT_TRUE(depth->set(d, 3).ok());
     EXPECT_EQ(d.reflector->mirrorDepth, 3);
     EXPECT_FALSE(depth->set(d, 17).ok());

@@ -12,6 +12,7 @@
 namespace {
 
 using namespace speculum::document;
+using namespace speculum::scene;
 
 QString folder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -26,37 +27,37 @@ constexpr qint64 kDeadPid = 4194303 + 17;
 
 TEST(Recovery, AnOrphanIsOfferedAndRestoresTheDocument) {
     const QString dir = folder();
-    SceneData data;
+    speculum::scene::SceneData data;
     std::vector<std::string> warnings;
-    auto demo =
-        loadProject(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json"), warnings);
+    auto demo = speculum::scene::loadProject(
+        QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json"), warnings);
     ASSERT_TRUE(demo.ok());
     data = *demo;
     data.nodes.push_back(makeNode(NewNodeKind::Mirror));
 
-    RecoveryStore crashed(dir, kDeadPid);
+    speculum::scene::RecoveryStore crashed(dir, kDeadPid);
     ASSERT_TRUE(crashed.write(data, QStringLiteral("/home/me/teapot.speculum.json")).ok());
     EXPECT_TRUE(crashed.orphans().empty()) << "a store never offers its own file";
 
-    RecoveryStore next(dir, QCoreApplication::applicationPid());
+    speculum::scene::RecoveryStore next(dir, QCoreApplication::applicationPid());
     const auto orphans = next.orphans();
     ASSERT_EQ(orphans.size(), 1u);
     EXPECT_EQ(orphans.front().originalPath, QStringLiteral("/home/me/teapot.speculum.json"));
     EXPECT_TRUE(orphans.front().savedAt.isValid());
-    auto restored = RecoveryStore::load(orphans.front(), warnings);
+    auto restored = speculum::scene::RecoveryStore::load(orphans.front(), warnings);
     ASSERT_TRUE(restored.ok()) << restored.error();
     EXPECT_TRUE(*restored == data) << "texture paths and nodes come back as they were";
 
-    RecoveryStore::remove(orphans.front());
+    speculum::scene::RecoveryStore::remove(orphans.front());
     EXPECT_TRUE(next.orphans().empty());
     EXPECT_TRUE(QDir(dir).entryList(QDir::Files).isEmpty());
 }
 
 TEST(Recovery, RunningEditorsAreNotOrphansAndDiscardCleansUp) {
     const QString dir = folder();
-    RecoveryStore mine(dir, QCoreApplication::applicationPid());
-    ASSERT_TRUE(mine.write(SceneData{}, QString()).ok());
-    RecoveryStore other(dir, kDeadPid);
+    speculum::scene::RecoveryStore mine(dir, QCoreApplication::applicationPid());
+    ASSERT_TRUE(mine.write(speculum::scene::SceneData{}, QString()).ok());
+    speculum::scene::RecoveryStore other(dir, kDeadPid);
     EXPECT_TRUE(other.orphans().empty()) << "the writer is alive";
     mine.discard();
     EXPECT_TRUE(QDir(dir).entryList(QDir::Files).isEmpty());

@@ -20,8 +20,8 @@ protected:
 
     // Two real steps, saved after the second, then one undone: a redo step holding the clean state.
     void makeHistory() {
-        const NodeId id = test::nodeIdByName(scene, "C");
-        NodeData c = scene.findNode(id)->data();
+        const scene::NodeId id = test::nodeIdByName(scene, "C");
+        scene::NodeData c = scene.findNode(id)->data();
         c.transform.translate.x = 5.0;
         ASSERT_TRUE(pushEdit(stack, new SetNodeDataCommand(scene, id, c)));
         c.transform.translate.y = 6.0;
@@ -41,14 +41,14 @@ protected:
     using StackState = test::UndoStackState;
     StackState state() const { return test::undoStackState(stack); }
 
-    Scene scene;
+    scene::Scene scene;
     QUndoStack stack;
 };
 
 TEST_F(SweepUndo, ARecordTheDocumentAlreadyHasLeavesTheStackAsItWas) {
     makeHistory();
     const StackState before = state();
-    const SceneData sceneBefore = scene.toData();
+    const scene::SceneData sceneBefore = scene.toData();
     QSignalSpy cleanChanged(&stack, &QUndoStack::cleanChanged);
     QSignalSpy indexChanged(&stack, &QUndoStack::indexChanged);
 
@@ -66,7 +66,7 @@ TEST_F(SweepUndo, ARecordTheDocumentAlreadyHasLeavesTheStackAsItWas) {
 
 TEST_F(SweepUndo, ARecordThatChangesSomethingIsOneStepBackToTheCleanState) {
     stack.setClean();
-    const SceneData before = scene.toData();
+    const scene::SceneData before = scene.toData();
     const int depth = scene.settings().mirrorDepth == 3 ? 2 : 3;
     EXPECT_TRUE(apply({{"mirrorDepth", std::to_string(depth)}}));
     EXPECT_EQ(stack.count(), 1);

@@ -73,7 +73,7 @@ Outcome importInChild(const fs::path& file) {
 #endif
         ::alarm(kLimitSeconds);
         std::vector<std::string> warnings;
-        const auto model = importModelFile(file.string(), warnings);
+        const auto model = scene::importModelFile(file.string(), warnings);
         // The reader runs in a process of its own (ModelImportProcess): its peak, reaped by now, is this
         // process's largest child's.
         rusage reader{};
@@ -382,9 +382,9 @@ TEST_F(HostileModels, OrdinaryFilesStillImport) {
 }
 
 TEST(ModelPrecheck, IdentifiesByContent) {
-    using detail::ModelContent;
+    using scene::detail::ModelContent;
     const auto kind = [](const std::string& bytes) {
-        return detail::identifyModelContent(bytes.data(), bytes.size());
+        return scene::detail::identifyModelContent(bytes.data(), bytes.size());
     };
     EXPECT_EQ(kind("glTF\x02"), ModelContent::Glb);
     EXPECT_EQ(kind("\xEF\xBB\xBF  {\"asset\":{}}"), ModelContent::GltfJson);
@@ -410,7 +410,7 @@ TEST(ModelPrecheck, AcceptsEveryFileOfTheAssimpCorpusThatHasNoNesting) {
         if (!fs::exists(file)) {
             continue;
         }
-        const base::Status status = detail::precheckModel(file);
+        const base::Status status = scene::detail::precheckModel(file);
         EXPECT_TRUE(status.ok()) << name << ": " << (status ? "" : status.error());
     }
 }

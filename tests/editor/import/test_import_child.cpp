@@ -58,8 +58,8 @@ bool noChildren() {
 // Restores the defaults a test changed.
 struct ChildSettings {
     ~ChildSettings() {
-        detail::setImportChildTestAction(nullptr);
-        setModelImportCpuLimit(kDefaultModelImportCpuSeconds);
+        scene::detail::setImportChildTestAction(nullptr);
+        scene::setModelImportCpuLimit(scene::kDefaultModelImportCpuSeconds);
     }
 };
 
@@ -74,20 +74,20 @@ TEST(ImportChild, AssimpCrashIsARefusalNamingTheFile) {
     const fs::path file = folder / "model.ply";
     fs::copy_file(kSeeds / "ply-postprocess-crash.ply", file);
     std::vector<std::string> warnings;
-    const auto result = importModelFile(file.string(), warnings);
+    const auto result = scene::importModelFile(file.string(), warnings);
     ASSERT_FALSE(result.ok());
     expectOneLineNaming(result.error(), "model.ply");
     EXPECT_NE(result.error().find("crashed on this file (SIG"), std::string::npos) << result.error();
     EXPECT_TRUE(noChildren());
     // And this process reads the next file as usual.
-    EXPECT_TRUE(importModelFile(writeTriangleObj(folder).string(), warnings).ok());
+    EXPECT_TRUE(scene::importModelFile(writeTriangleObj(folder).string(), warnings).ok());
 }
 
 TEST(ImportChild, ReaderThatAbortsIsARefusal) {
     ChildSettings restore;
-    detail::setImportChildTestAction([] { std::abort(); });
+    scene::detail::setImportChildTestAction([] { std::abort(); });
     std::vector<std::string> warnings;
-    const auto result = importModelFile(writeTriangleObj(freshFolder()).string(), warnings);
+    const auto result = scene::importModelFile(writeTriangleObj(freshFolder()).string(), warnings);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error(),
               "triangle.obj: the model reader crashed on this file (SIGABRT); it is probably damaged");
@@ -96,8 +96,8 @@ TEST(ImportChild, ReaderThatAbortsIsARefusal) {
 
 TEST(ImportChild, HangingReaderIsStoppedByTheCpuLimit) {
     ChildSettings restore;
-    setModelImportCpuLimit(1);
-    detail::setImportChildTestAction([] {
+    scene::setModelImportCpuLimit(1);
+    scene::detail::setImportChildTestAction([] {
         volatile unsigned long spin = 0;
         for (;;) {
             spin = spin + 1;
@@ -105,7 +105,7 @@ TEST(ImportChild, HangingReaderIsStoppedByTheCpuLimit) {
     });
     std::vector<std::string> warnings;
     const auto started = Clock::now();
-    const auto result = importModelFile(writeTriangleObj(freshFolder()).string(), warnings);
+    const auto result = scene::importModelFile(writeTriangleObj(freshFolder()).string(), warnings);
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error(), "triangle.obj: took more than 1 s of CPU to read; stopped");
@@ -116,11 +116,11 @@ TEST(ImportChild, HangingReaderIsStoppedByTheCpuLimit) {
 TEST(ImportChild, PlyThatHangsAssimpIsStoppedByTheCpuLimit) {
     // A 288-byte PLY on which Assimp 5.2's reader never finishes (found by fuzzing).
     ChildSettings restore;
-    setModelImportCpuLimit(2);
+    scene::setModelImportCpuLimit(2);
     const fs::path file = freshFolder() / "model.ply";
     fs::copy_file(kSeeds / "ply-reader-hang.ply", file);
     std::vector<std::string> warnings;
-    const auto result = importModelFile(file.string(), warnings);
+    const auto result = scene::importModelFile(file.string(), warnings);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error(), "model.ply: took more than 2 s of CPU to read; stopped");
     EXPECT_TRUE(noChildren());
@@ -128,9 +128,9 @@ TEST(ImportChild, PlyThatHangsAssimpIsStoppedByTheCpuLimit) {
 
 TEST(ImportChild, CancelStopsASlowReadPromptlyAndReapsTheChild) {
     ChildSettings restore;
-    detail::setImportChildTestAction([] { ::sleep(60); }); // a reader that takes its time
+    scene::detail::setImportChildTestAction([] { ::sleep(60); }); // a reader that takes its time
     std::atomic<bool> cancel{false};
-    ImportControl control;
+    scene::ImportControl control;
     control.cancel = &cancel;
     std::vector<std::string> warnings;
     Clock::time_point cancelledAt;
@@ -139,7 +139,7 @@ TEST(ImportChild, CancelStopsASlowReadPromptlyAndReapsTheChild) {
         cancelledAt = Clock::now();
         cancel = true;
     });
-    const auto result = importModelFile(writeTriangleObj(freshFolder()).string(), warnings, control);
+    const auto result = scene::importModelFile(writeTriangleObj(freshFolder()).string(), warnings, control);
     const auto returnedAt = Clock::now();
     canceller.join();
     ASSERT_FALSE(result.ok());
@@ -151,13 +151,13 @@ TEST(ImportChild, CancelStopsASlowReadPromptlyAndReapsTheChild) {
 TEST(ImportChild, ProgressArrivesFromTheChildInOrder) {
     std::vector<double> fractions;
     std::vector<std::string> phases;
-    ImportControl control;
+    scene::ImportControl control;
     control.progress = [&](double fraction, const char* phase) {
         fractions.push_back(fraction);
         phases.emplace_back(phase);
     };
     std::vector<std::string> warnings;
-    ASSERT_TRUE(importModelFile(writeTriangleObj(freshFolder()).string(), warnings, control).ok());
+    ASSERT_TRUE(scene::importModelFile(writeTriangleObj(freshFolder()).string(), warnings, control).ok());
     ASSERT_GE(fractions.size(), 3u);
     EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
     EXPECT_EQ(fractions.back(), 1.0);
@@ -170,8 +170,8 @@ TEST(ImportChild, RefusalsOfTheReaderKeepTheirMessages) {
     const fs::path points = folder / "points.obj";
     std::ofstream(points) << "v 0 0 0\nv 1 0 0\np 1\np 2\n";
     std::vector<std::string> warnings, inProcessWarnings;
-    const auto child = importModelFile(points.string(), warnings);
-    const auto inProcess = detail::importModelFileInProcess(points.string(), inProcessWarnings);
+    const auto child = scene::importModelFile(points.string(), warnings);
+    const auto inProcess = scene::detail::importModelFileInProcess(points.string(), inProcessWarnings);
     ASSERT_FALSE(child.ok());
     ASSERT_FALSE(inProcess.ok());
     EXPECT_EQ(child.error(), inProcess.error());
@@ -195,8 +195,8 @@ TEST(ImportChild, DISABLED_Overhead) {
             for (int inChild = 0; inChild < 2; ++inChild) {
                 std::vector<std::string> warnings;
                 const auto started = Clock::now();
-                const auto model = inChild ? importModelFile(file, warnings)
-                                           : detail::importModelFileInProcess(file, warnings);
+                const auto model = inChild ? scene::importModelFile(file, warnings)
+                                           : scene::detail::importModelFileInProcess(file, warnings);
                 const double ms = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
                 ASSERT_TRUE(model.ok()) << model.error();
                 best[inChild] = std::min(best[inChild], ms);
@@ -217,7 +217,7 @@ void expectSameMesh(const render::MeshData& a, const render::MeshData& b, const 
     EXPECT_TRUE(a.indices == b.indices) << what;
 }
 
-void expectSameNodes(const ImportedNode& a, const ImportedNode& b) {
+void expectSameNodes(const scene::ImportedNode& a, const scene::ImportedNode& b) {
     EXPECT_EQ(a.name, b.name);
     EXPECT_TRUE(a.local == b.local) << a.name;
     EXPECT_EQ(a.parts, b.parts) << a.name;
@@ -227,7 +227,7 @@ void expectSameNodes(const ImportedNode& a, const ImportedNode& b) {
     }
 }
 
-void expectSameModel(const ImportedModel& a, const ImportedModel& b) {
+void expectSameModel(const scene::ImportedModel& a, const scene::ImportedModel& b) {
     ASSERT_EQ(a.parts.size(), b.parts.size());
     for (std::size_t i = 0; i < a.parts.size(); ++i) {
         EXPECT_EQ(a.parts[i].name, b.parts[i].name);
@@ -253,9 +253,9 @@ void expectSameModel(const ImportedModel& a, const ImportedModel& b) {
     EXPECT_TRUE(a.bounds.min == b.bounds.min && a.bounds.max == b.bounds.max);
 }
 
-std::size_t triangles(const ImportedModel& model) {
+std::size_t triangles(const scene::ImportedModel& model) {
     std::size_t count = 0;
-    for (const ImportedPart& part : model.parts) {
+    for (const scene::ImportedPart& part : model.parts) {
         count += part.mesh ? part.mesh->triangleCount() : 0;
     }
     return count;
@@ -267,8 +267,8 @@ TEST_P(SameAsInProcess, PartsMaterialsTexturesNodesAndWarnings) {
     REQUIRE_TEST_MODELS();
     const fs::path file = kModels / GetParam();
     std::vector<std::string> warnings, inProcessWarnings;
-    const auto child = importModelFile(file.string(), warnings);
-    const auto inProcess = detail::importModelFileInProcess(file.string(), inProcessWarnings);
+    const auto child = scene::importModelFile(file.string(), warnings);
+    const auto inProcess = scene::detail::importModelFileInProcess(file.string(), inProcessWarnings);
     ASSERT_TRUE(child.ok()) << child.error();
     ASSERT_TRUE(inProcess.ok()) << inProcess.error();
     EXPECT_GT(child->parts.size(), 0u);
@@ -287,7 +287,7 @@ TEST(ImportChild, KnownValuesOfTheTexturedGlb) {
     REQUIRE_TEST_MODELS();
     const fs::path glb = kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
     std::vector<std::string> warnings;
-    const auto model = importModelFile(glb.string(), warnings);
+    const auto model = scene::importModelFile(glb.string(), warnings);
     ASSERT_TRUE(model.ok()) << model.error();
     ASSERT_EQ(model->parts.size(), 1u);
     EXPECT_EQ(model->parts[0].mesh->triangleCount(), 12u);
@@ -299,8 +299,8 @@ TEST(ImportChild, KnownValuesOfTheTexturedGlb) {
 
 // --- The stream between them ---
 
-MaterialComponent everyFieldSet() {
-    MaterialComponent m;
+scene::MaterialComponent everyFieldSet() {
+    scene::MaterialComponent m;
     m.color = {0.1, 0.2, 0.3};
     m.ambient = 0.4;
     m.diffuse = 0.5;
@@ -312,9 +312,9 @@ MaterialComponent everyFieldSet() {
     m.emissionTexture = "/a/glow.png";
     m.normalTexture = "/a/normal.png";
     m.normalScale = 0.75;
-    m.wrap = {TextureWrap::Clamp, TextureWrap::Mirror};
+    m.wrap = {scene::TextureWrap::Clamp, scene::TextureWrap::Mirror};
     m.opacity = 0.25;
-    m.alphaMode = AlphaMode::Mask;
+    m.alphaMode = scene::AlphaMode::Mask;
     m.alphaCutoff = 0.3;
     m.extra.insert(QStringLiteral("note"), QStringLiteral("kept"));
     m.extra.insert(QStringLiteral("list"), QJsonArray{1, 2});
@@ -324,23 +324,23 @@ MaterialComponent everyFieldSet() {
 TEST(ImportChildStream, MaterialRoundTripsEveryField) {
     // ModelSerialization.cpp asserts sizeof(MaterialComponent): a field added there fails the build until
     // it is written and read, and set above.
-    const MaterialComponent material = everyFieldSet();
-    EXPECT_FALSE(material == MaterialComponent{});
-    detail::ByteWriter out;
-    detail::writeMaterial(out, material);
-    detail::ByteReader in(out.out);
-    MaterialComponent back;
-    ASSERT_TRUE(detail::readMaterial(in, back));
+    const scene::MaterialComponent material = everyFieldSet();
+    EXPECT_FALSE(material == scene::MaterialComponent{});
+    scene::detail::ByteWriter out;
+    scene::detail::writeMaterial(out, material);
+    scene::detail::ByteReader in(out.out);
+    scene::MaterialComponent back;
+    ASSERT_TRUE(scene::detail::readMaterial(in, back));
     EXPECT_TRUE(in.atEnd());
     EXPECT_TRUE(back == material);
 }
 
-detail::ChildImport sampleAnswer() {
-    detail::ChildImport answer;
+scene::detail::ChildImport sampleAnswer() {
+    scene::detail::ChildImport answer;
     answer.ok = true;
     answer.notes = {"only the first texture coordinate set is used"};
-    ImportedModel& model = answer.model;
-    model.materials = {everyFieldSet(), MaterialComponent{}};
+    scene::ImportedModel& model = answer.model;
+    model.materials = {everyFieldSet(), scene::MaterialComponent{}};
     render::MeshData mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     mesh.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
@@ -367,18 +367,19 @@ detail::ChildImport sampleAnswer() {
 }
 
 TEST(ImportChildStream, ModelRoundTrips) {
-    const detail::ChildImport answer = sampleAnswer();
-    const auto back = detail::deserializeChildImport(detail::serializeChildImport(answer));
+    const scene::detail::ChildImport answer = sampleAnswer();
+    const auto back = scene::detail::deserializeChildImport(scene::detail::serializeChildImport(answer));
     ASSERT_TRUE(back.ok()) << back.error();
     EXPECT_TRUE(back->ok);
     EXPECT_EQ(back->notes, answer.notes);
     EXPECT_TRUE(back->compressedTextures == answer.compressedTextures);
     expectSameModel(back->model, answer.model);
 
-    detail::ChildImport refused;
+    scene::detail::ChildImport refused;
     refused.error = "no triangles";
     refused.notes = {"a note"};
-    const auto refusedBack = detail::deserializeChildImport(detail::serializeChildImport(refused));
+    const auto refusedBack =
+        scene::detail::deserializeChildImport(scene::detail::serializeChildImport(refused));
     ASSERT_TRUE(refusedBack.ok());
     EXPECT_FALSE(refusedBack->ok);
     EXPECT_EQ(refusedBack->error, "no triangles");
@@ -386,9 +387,9 @@ TEST(ImportChildStream, ModelRoundTrips) {
 }
 
 TEST(ImportChildStream, CutShortOrDamagedStreamIsAnError) {
-    const std::string bytes = detail::serializeChildImport(sampleAnswer());
+    const std::string bytes = scene::detail::serializeChildImport(sampleAnswer());
     for (std::size_t length = 0; length < bytes.size(); ++length) {
-        EXPECT_FALSE(detail::deserializeChildImport(std::string_view(bytes).substr(0, length)).ok())
+        EXPECT_FALSE(scene::detail::deserializeChildImport(std::string_view(bytes).substr(0, length)).ok())
             << length;
     }
     // Every byte flipped in turn: an error or a model that passed every check, never a crash or a
@@ -396,7 +397,7 @@ TEST(ImportChildStream, CutShortOrDamagedStreamIsAnError) {
     for (std::size_t at = 0; at < bytes.size(); ++at) {
         std::string damaged = bytes;
         damaged[at] = static_cast<char>(damaged[at] ^ 0xff);
-        (void)detail::deserializeChildImport(damaged);
+        (void)scene::detail::deserializeChildImport(damaged);
     }
 }
 

@@ -39,7 +39,7 @@ struct Outcome {
 // The child's whole answer in one write of at most PIPE_BUF bytes: atomic, and it never blocks.
 std::string childReport(const fs::path& file) {
     std::vector<std::string> warnings;
-    const auto mesh = importModel(file.string(), warnings);
+    const auto mesh = scene::importModel(file.string(), warnings);
     std::string report;
     if (!mesh.ok()) {
         report = "R" + mesh.error();

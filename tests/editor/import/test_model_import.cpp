@@ -50,7 +50,7 @@ struct Imported {
 
 Imported import(const fs::path& path) {
     std::vector<std::string> warnings;
-    auto mesh = importModel(path.string(), warnings);
+    auto mesh = scene::importModel(path.string(), warnings);
     return {std::move(mesh), std::move(warnings)};
 }
 

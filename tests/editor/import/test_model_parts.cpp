@@ -44,26 +44,26 @@ fs::path writeFile(const fs::path& path, const std::string& content) {
     return path;
 }
 
-ImportedModel importOk(const fs::path& path, std::vector<std::string>* warningsOut = nullptr) {
+scene::ImportedModel importOk(const fs::path& path, std::vector<std::string>* warningsOut = nullptr) {
     std::vector<std::string> warnings;
-    auto model = importModelFile(path.string(), warnings);
+    auto model = scene::importModelFile(path.string(), warnings);
     EXPECT_TRUE(model.ok()) << path << ": " << (model.ok() ? "" : model.error());
     if (warningsOut != nullptr) {
         *warningsOut = warnings;
     }
-    return model.ok() ? std::move(model).value() : ImportedModel{};
+    return model.ok() ? std::move(model).value() : scene::ImportedModel{};
 }
 
-void collectNames(const NodeTree& tree, std::vector<std::string>& names) {
+void collectNames(const scene::NodeTree& tree, std::vector<std::string>& names) {
     names.push_back(tree.data.name);
-    for (const NodeTree& child : tree.children) {
+    for (const scene::NodeTree& child : tree.children) {
         collectNames(child, names);
     }
 }
 
-void forEachNode(const NodeTree& tree, const std::function<void(const NodeTree&)>& visit) {
+void forEachNode(const scene::NodeTree& tree, const std::function<void(const scene::NodeTree&)>& visit) {
     visit(tree);
-    for (const NodeTree& child : tree.children) {
+    for (const scene::NodeTree& child : tree.children) {
         forEachNode(child, visit);
     }
 }
@@ -124,7 +124,7 @@ fs::path writeQuadGltf(const fs::path& folder) {
 TEST(ModelParts, GltfQuadKeepsUvsWithVAtTheBottom) {
     REQUIRE_TEST_MODELS();
     const fs::path file = writeQuadGltf(freshFolder());
-    const ImportedModel model = importOk(file);
+    const scene::ImportedModel model = importOk(file);
     ASSERT_EQ(model.parts.size(), 2u);
     const render::MeshData& mesh = *model.parts[0].mesh;
     ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
@@ -143,13 +143,13 @@ TEST(ModelParts, GltfMaterialsAreConvertedPerPart) {
     const fs::path folder = freshFolder();
     const fs::path file = writeQuadGltf(folder);
     std::vector<std::string> warnings;
-    const ImportedModel model = importOk(file, &warnings);
+    const scene::ImportedModel model = importOk(file, &warnings);
     ASSERT_EQ(model.parts.size(), 2u);
     ASSERT_GE(model.parts[0].material, 0);
     ASSERT_GE(model.parts[1].material, 0);
     ASSERT_NE(model.parts[0].material, model.parts[1].material);
-    const MaterialComponent& red = model.materials[model.parts[0].material];
-    const MaterialComponent& blue = model.materials[model.parts[1].material];
+    const scene::MaterialComponent& red = model.materials[model.parts[0].material];
+    const scene::MaterialComponent& blue = model.materials[model.parts[1].material];
 
     // Metal, roughness 0.5: alpha 0.25, shininess 2/0.0625 − 2 = 30, specular min(1·38/8, 1).
     EXPECT_EQ(red.color, glm::dvec3(1, 0, 0));
@@ -158,9 +158,9 @@ TEST(ModelParts, GltfMaterialsAreConvertedPerPart) {
     EXPECT_EQ(red.specularColor, glm::dvec3(1, 0, 0)); // a metal's highlight takes its colour
     EXPECT_NEAR(red.diffuse, 0.0, 1e-9);
     EXPECT_EQ(fs::path(red.texture), fs::absolute(folder / "logo.png").lexically_normal());
-    EXPECT_EQ(red.wrap[0], TextureWrap::Clamp);
-    EXPECT_EQ(red.wrap[1], TextureWrap::Mirror);
-    EXPECT_EQ(red.alphaMode, AlphaMode::Opaque);
+    EXPECT_EQ(red.wrap[0], scene::TextureWrap::Clamp);
+    EXPECT_EQ(red.wrap[1], scene::TextureWrap::Mirror);
+    EXPECT_EQ(red.alphaMode, scene::AlphaMode::Opaque);
 
     // Dielectric, roughness 1: shininess clamps to 1, specular 0.04·9/8, white highlight.
     EXPECT_EQ(blue.color, glm::dvec3(0, 0, 1));
@@ -169,7 +169,7 @@ TEST(ModelParts, GltfMaterialsAreConvertedPerPart) {
     EXPECT_EQ(blue.specularColor, glm::dvec3(1.0));
     EXPECT_NEAR(blue.diffuse, 1.0, 1e-9);
     EXPECT_NEAR(blue.opacity, 0.5, 1e-6);
-    EXPECT_EQ(blue.alphaMode, AlphaMode::Mask);
+    EXPECT_EQ(blue.alphaMode, scene::AlphaMode::Mask);
     EXPECT_NEAR(blue.alphaCutoff, 0.3, 1e-6);
     EXPECT_NEAR(blue.emission.x, 0.5, 1e-6);
     EXPECT_NEAR(blue.emission.y, 0.25, 1e-6);
@@ -195,26 +195,26 @@ TEST(ModelParts, GltfMaterialsAreConvertedPerPart) {
 TEST(ModelParts, GltfQuadNodeTree) {
     REQUIRE_TEST_MODELS();
     const fs::path file = writeQuadGltf(freshFolder());
-    const ImportedModel model = importOk(file);
+    const scene::ImportedModel model = importOk(file);
     EXPECT_EQ(model.unitScale, 1.0); // glTF is in metres
     // Placed by the node's translation.
     EXPECT_NEAR(model.bounds.min.z, 2.0f, 1e-6f);
     EXPECT_NEAR(model.bounds.max.x, 1.0f, 1e-6f);
 
-    const NodeTree tree = modelNodeTree(model, file.string(), "quad");
+    const scene::NodeTree tree = scene::modelNodeTree(model, file.string(), "quad");
     EXPECT_EQ(tree.data.name, "quad");
     std::vector<std::string> names;
     collectNames(tree, names);
     EXPECT_NE(std::find(names.begin(), names.end(), "Quad"), names.end()) << ::testing::PrintToString(names);
-    std::vector<const NodeTree*> meshes;
-    forEachNode(tree, [&](const NodeTree& node) {
+    std::vector<const scene::NodeTree*> meshes;
+    forEachNode(tree, [&](const scene::NodeTree& node) {
         if (node.data.mesh) {
             meshes.push_back(&node);
         }
     });
     ASSERT_EQ(meshes.size(), 2u);
     std::set<int> parts;
-    for (const NodeTree* node : meshes) {
+    for (const scene::NodeTree* node : meshes) {
         EXPECT_EQ(node->data.mesh->file, file.string());
         ASSERT_TRUE(node->data.mesh->part.has_value());
         parts.insert(*node->data.mesh->part);
@@ -223,7 +223,7 @@ TEST(ModelParts, GltfQuadNodeTree) {
     }
     EXPECT_EQ(parts, (std::set<int>{0, 1}));
     // The "Quad" node carries the translation.
-    forEachNode(tree, [&](const NodeTree& node) {
+    forEachNode(tree, [&](const scene::NodeTree& node) {
         if (node.data.name == "Quad") {
             EXPECT_EQ(node.data.transform.translate, glm::dvec3(0, 0, 2));
         }
@@ -234,10 +234,11 @@ TEST(ModelParts, GltfQuadNodeTree) {
 
 TEST(ModelParts, MultiMaterialGlbKeepsDistinctMaterials) {
     REQUIRE_TEST_MODELS();
-    const ImportedModel model = importOk(kModels / "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+    const scene::ImportedModel model =
+        importOk(kModels / "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
     ASSERT_GT(model.parts.size(), 10u);
     std::set<std::vector<double>> colours;
-    for (const ImportedPart& part : model.parts) {
+    for (const scene::ImportedPart& part : model.parts) {
         ASSERT_TRUE(part.mesh);
         ASSERT_GE(part.material, 0) << part.name;
         const glm::dvec3 c = model.materials[part.material].color;
@@ -252,10 +253,10 @@ TEST(ModelParts, MultiMaterialGlbKeepsDistinctMaterials) {
 TEST(ModelParts, ObjMaterialsFindTheirTexturesBesideTheFile) {
     REQUIRE_TEST_MODELS();
     // spider.mtl names its textures ".\wal67ar_small.jpg" (Windows separators).
-    const ImportedModel model = importOk(kModels / "OBJ/spider.obj");
+    const scene::ImportedModel model = importOk(kModels / "OBJ/spider.obj");
     ASSERT_GT(model.parts.size(), 4u);
     std::set<std::string> textures;
-    for (const ImportedPart& part : model.parts) {
+    for (const scene::ImportedPart& part : model.parts) {
         if (part.material >= 0 && !model.materials[part.material].texture.empty()) {
             const std::string& texture = model.materials[part.material].texture;
             EXPECT_TRUE(fs::path(texture).is_absolute()) << texture;
@@ -269,10 +270,10 @@ TEST(ModelParts, ObjMaterialsFindTheirTexturesBesideTheFile) {
 
 TEST(ModelParts, ColladaVertexColoursAreKept) {
     REQUIRE_TEST_MODELS();
-    const ImportedModel model = importOk(kModels / "Collada/kwxport_test_vcolors.dae");
+    const scene::ImportedModel model = importOk(kModels / "Collada/kwxport_test_vcolors.dae");
     ASSERT_FALSE(model.parts.empty());
     bool anyColoured = false;
-    for (const ImportedPart& part : model.parts) {
+    for (const scene::ImportedPart& part : model.parts) {
         ASSERT_TRUE(part.mesh);
         ASSERT_EQ(part.mesh->colors.size(), part.mesh->positions.size()) << part.name;
         for (const glm::vec4& c : part.mesh->colors) {
@@ -281,7 +282,7 @@ TEST(ModelParts, ColladaVertexColoursAreKept) {
     }
     EXPECT_TRUE(anyColoured);
     // The flattened mesh carries them too.
-    auto flat = flattenModel(model);
+    auto flat = scene::flattenModel(model);
     ASSERT_TRUE(flat.ok()) << flat.error();
     EXPECT_EQ(flat->colors.size(), flat->positions.size());
     EXPECT_EQ(flat->uvs.size(), flat->positions.size());
@@ -290,7 +291,7 @@ TEST(ModelParts, ColladaVertexColoursAreKept) {
 TEST(ModelParts, GlbEmbeddedTextureIsDecodedOnceAndMatchesTheExternalFile) {
     REQUIRE_TEST_MODELS();
     const fs::path glb = kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
-    const ImportedModel model = importOk(glb);
+    const scene::ImportedModel model = importOk(glb);
     ASSERT_EQ(model.parts.size(), 1u);
     ASSERT_GE(model.parts[0].material, 0);
     const std::string& name = model.materials[model.parts[0].material].texture;
@@ -305,7 +306,7 @@ TEST(ModelParts, GlbEmbeddedTextureIsDecodedOnceAndMatchesTheExternalFile) {
     EXPECT_TRUE(embedded.rgba8 == external->rgba8);
 
     // The library hands it out by name, and the part by index.
-    MeshLibrary library;
+    scene::MeshLibrary library;
     std::vector<std::string> warnings;
     const auto image = library.embeddedTexture(name, warnings);
     ASSERT_TRUE(image);
@@ -317,8 +318,8 @@ TEST(ModelParts, GlbEmbeddedTextureIsDecodedOnceAndMatchesTheExternalFile) {
 TEST(ModelParts, FbxUnitScaleGivesMetres) {
     REQUIRE_TEST_MODELS();
     // The same two cubes, once in centimetres (UnitScaleFactor 1) and once in metres (100).
-    const ImportedModel cm = importOk(kModels / "FBX/cubes_with_names.fbx");
-    const ImportedModel m = importOk(kModels / "FBX/cubes_with_mirroring_and_pivot.fbx");
+    const scene::ImportedModel cm = importOk(kModels / "FBX/cubes_with_names.fbx");
+    const scene::ImportedModel m = importOk(kModels / "FBX/cubes_with_mirroring_and_pivot.fbx");
     EXPECT_DOUBLE_EQ(cm.unitScale, 0.01);
     EXPECT_DOUBLE_EQ(m.unitScale, 1.0);
     const glm::vec3 sizeCm = cm.bounds.max - cm.bounds.min;
@@ -326,7 +327,7 @@ TEST(ModelParts, FbxUnitScaleGivesMetres) {
     EXPECT_NEAR(sizeCm.x, 0.209328f, 1e-4f);
     EXPECT_NEAR(sizeM.x, 0.209328f, 1e-4f);
     // The flattened mesh has the unit scale applied.
-    auto flat = flattenModel(cm);
+    auto flat = scene::flattenModel(cm);
     ASSERT_TRUE(flat.ok());
     const render::Bounds b = render::computeBounds(*flat);
     EXPECT_NEAR(b.max.x - b.min.x, sizeCm.x, 1e-5f);
@@ -335,8 +336,8 @@ TEST(ModelParts, FbxUnitScaleGivesMetres) {
 TEST(ModelParts, FbxNodeTreeHasTheFileNames) {
     REQUIRE_TEST_MODELS();
     const fs::path file = kModels / "FBX/cubes_with_names.fbx";
-    const ImportedModel model = importOk(file);
-    const NodeTree tree = modelNodeTree(model, file.string(), "cubes");
+    const scene::ImportedModel model = importOk(file);
+    const scene::NodeTree tree = scene::modelNodeTree(model, file.string(), "cubes");
     std::vector<std::string> names;
     collectNames(tree, names);
     EXPECT_NE(std::find(names.begin(), names.end(), "Cube2"), names.end()) << ::testing::PrintToString(names);
@@ -352,12 +353,12 @@ TEST(ModelParts, NodeTreeTransformsReproduceTheFlattenedModel) {
          {"FBX/cubes_with_names.fbx", "FBX/spider.fbx", "Collada/teapot_instancenodes.DAE"}) {
         SCOPED_TRACE(name);
         const fs::path file = kModels / name;
-        const ImportedModel model = importOk(file);
-        const NodeTree tree = modelNodeTree(model, file.string(), "root");
+        const scene::ImportedModel model = importOk(file);
+        const scene::NodeTree tree = scene::modelNodeTree(model, file.string(), "root");
         render::Bounds fromTree{glm::vec3(1e30f), glm::vec3(-1e30f)};
-        std::function<void(const NodeTree&, const glm::dmat4&)> walk = [&](const NodeTree& node,
-                                                                           const glm::dmat4& parent) {
-            const glm::dmat4 world = parent * localMatrix(node.data.transform);
+        std::function<void(const scene::NodeTree&, const glm::dmat4&)> walk = [&](const scene::NodeTree& node,
+                                                                                  const glm::dmat4& parent) {
+            const glm::dmat4 world = parent * scene::localMatrix(node.data.transform);
             if (node.data.mesh && node.data.mesh->part) {
                 for (const glm::vec3& p : model.parts[*node.data.mesh->part].mesh->positions) {
                     const glm::vec3 q(world * glm::dvec4(glm::dvec3(p), 1.0));
@@ -365,7 +366,7 @@ TEST(ModelParts, NodeTreeTransformsReproduceTheFlattenedModel) {
                     fromTree.max = glm::max(fromTree.max, q);
                 }
             }
-            for (const NodeTree& child : node.children) {
+            for (const scene::NodeTree& child : node.children) {
                 walk(child, world);
             }
         };
@@ -389,10 +390,10 @@ TEST(ModelParts, DecomposeRoundTripsTranslateRotateScale) {
         if (i % 5 == 0) {
             s.x = -s.x; // mirrored
         }
-        const glm::dmat4 matrix = localMatrix(t, r, s);
-        Transform out;
-        ASSERT_TRUE(detail::decomposeTransform(matrix, out)) << i;
-        const glm::dmat4 back = localMatrix(out);
+        const glm::dmat4 matrix = scene::localMatrix(t, r, s);
+        scene::Transform out;
+        ASSERT_TRUE(scene::detail::decomposeTransform(matrix, out)) << i;
+        const glm::dmat4 back = scene::localMatrix(out);
         for (int c = 0; c < 4; ++c) {
             for (int k = 0; k < 4; ++k) {
                 ASSERT_NEAR(back[c][k], matrix[c][k], 1e-9) << i;
@@ -402,8 +403,8 @@ TEST(ModelParts, DecomposeRoundTripsTranslateRotateScale) {
     // Shear cannot be expressed: reported.
     glm::dmat4 shear(1.0);
     shear[1][0] = 0.5;
-    Transform out;
-    EXPECT_FALSE(detail::decomposeTransform(shear, out));
+    scene::Transform out;
+    EXPECT_FALSE(scene::detail::decomposeTransform(shear, out));
 }
 
 // --- library, errors, control ----------------------------------------------------------------------------
@@ -411,9 +412,9 @@ TEST(ModelParts, DecomposeRoundTripsTranslateRotateScale) {
 TEST(ModelParts, LibraryServesPartsAndNamesABadPart) {
     REQUIRE_TEST_MODELS();
     const fs::path file = writeQuadGltf(freshFolder());
-    MeshLibrary library;
+    scene::MeshLibrary library;
     std::vector<std::string> warnings;
-    MeshComponent component = MeshComponent::fromFile(file.string());
+    scene::MeshComponent component = scene::MeshComponent::fromFile(file.string());
     component.part = 1;
     auto part = library.get(component, warnings);
     ASSERT_TRUE(part.ok()) << part.error();
@@ -440,17 +441,17 @@ TEST(ModelParts, ProgressAndCancel) {
     REQUIRE_TEST_MODELS();
     const fs::path file = kModels / "OBJ/spider.obj";
     std::vector<double> fractions;
-    ImportControl control;
+    scene::ImportControl control;
     control.progress = [&](double fraction, const char*) { fractions.push_back(fraction); };
     std::vector<std::string> warnings;
-    ASSERT_TRUE(importModelFile(file.string(), warnings, control).ok());
+    ASSERT_TRUE(scene::importModelFile(file.string(), warnings, control).ok());
     ASSERT_GE(fractions.size(), 3u);
     EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
     EXPECT_EQ(fractions.back(), 1.0);
 
     std::atomic<bool> cancel{true};
     control.cancel = &cancel;
-    auto cancelled = importModelFile(file.string(), warnings, control);
+    auto cancelled = scene::importModelFile(file.string(), warnings, control);
     ASSERT_FALSE(cancelled.ok());
     EXPECT_EQ(cancelled.error(), "cancelled");
 }
@@ -461,7 +462,7 @@ TEST(ModelParts, SeparateVerticesAreWeldedAndSmoothed) {
     const fs::path file = writeFile(freshFolder() / "fold.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\n"
                                                                 "v 0 0 0\nv 1 1 0\nv 0 1 1\n"
                                                                 "f 1 2 3\nf 4 5 6\n");
-    const ImportedModel model = importOk(file);
+    const scene::ImportedModel model = importOk(file);
     ASSERT_EQ(model.parts.size(), 1u);
     const render::MeshData& mesh = *model.parts[0].mesh;
     EXPECT_EQ(mesh.vertexCount(), 4u);
@@ -498,7 +499,7 @@ TEST(ModelParts, BinaryPlyGridKeepsItsTopology) {
             }
         }
     }
-    const ImportedModel model = importOk(file);
+    const scene::ImportedModel model = importOk(file);
     ASSERT_EQ(model.parts.size(), 1u);
     const render::MeshData& mesh = *model.parts[0].mesh;
     EXPECT_EQ(mesh.triangleCount(), static_cast<std::size_t>(2 * quads * quads));
@@ -509,7 +510,7 @@ TEST(ModelParts, BinaryPlyGridKeepsItsTopology) {
     EXPECT_NEAR(model.bounds.max.x, 1.0f, 1e-6f);
     EXPECT_NEAR(model.bounds.max.z, 1.0f, 1e-6f);
     // The whole file drawn as one mesh is that part itself, not a copy.
-    MeshLibrary library;
+    scene::MeshLibrary library;
     std::vector<std::string> warnings;
     auto whole = library.file(file.string(), warnings);
     ASSERT_TRUE(whole.ok());

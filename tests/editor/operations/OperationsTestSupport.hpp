@@ -17,14 +17,14 @@ protected:
     void SetUp() override {
         scene.reset(test::threeNodeScene());
         original = scene.toData();
-        QObject::connect(&scene, &Scene::changed, [this] { ++changes; });
+        QObject::connect(&scene, &scene::Scene::changed, [this] { ++changes; });
     }
 
-    NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
+    scene::NodeId idOf(const std::string& name) const { return test::nodeIdByName(scene, name); }
 
-    std::vector<std::string> namesUnder(NodeId parent) const {
+    std::vector<std::string> namesUnder(scene::NodeId parent) const {
         std::vector<std::string> names;
-        if (parent == kNoNode) {
+        if (parent == scene::kNoNode) {
             for (const auto& node : scene.topLevelNodes()) {
                 names.push_back(node->name());
             }
@@ -35,22 +35,22 @@ protected:
         }
         return names;
     }
-    std::vector<std::string> topLevelNames() const { return namesUnder(kNoNode); }
+    std::vector<std::string> topLevelNames() const { return namesUnder(scene::kNoNode); }
 
     // One undo step labelled `label`; undoing it gives back the scene as it was before.
-    void expectOneStepThatUndoesExactly(const std::string& label, const SceneData& before) {
+    void expectOneStepThatUndoesExactly(const std::string& label, const scene::SceneData& before) {
         EXPECT_EQ(undo.count(), 1);
         EXPECT_EQ(undo.undoText().toStdString(), label);
-        const SceneData after = scene.toData();
+        const scene::SceneData after = scene.toData();
         undo.undo();
         EXPECT_EQ(scene.toData(), before) << "undo restores exactly";
         undo.redo();
         EXPECT_EQ(scene.toData(), after) << "redo does it again";
     }
 
-    Scene scene;
+    scene::Scene scene;
     QUndoStack undo;
-    SceneData original;
+    scene::SceneData original;
     int changes = 0;
 };
 

@@ -23,8 +23,8 @@ std::string toyset() {
 
 TEST(DocumentSession, OpenReplacesTheSceneTheHistoryAndTheMeshLibrary) {
     DocumentSession session;
-    MeshLibrary& library = session.meshes();
-    const render::MeshHandle sphere = library.builtin(BuiltinMesh::Sphere, 16);
+    scene::MeshLibrary& library = session.meshes();
+    const render::MeshHandle sphere = library.builtin(scene::BuiltinMesh::Sphere, 16);
     ASSERT_TRUE(addNodeTree(session.scene(), session.undoStack(), makeNode(NewNodeKind::Box)));
     ASSERT_TRUE(session.isModified());
 
@@ -35,30 +35,30 @@ TEST(DocumentSession, OpenReplacesTheSceneTheHistoryAndTheMeshLibrary) {
     EXPECT_FALSE(session.isModified());
     EXPECT_EQ(&session.meshes(), &library) << "the same library object: references stay valid";
     EXPECT_EQ(library.size(), 0u) << "the old document's meshes are let go";
-    EXPECT_NE(library.builtin(BuiltinMesh::Sphere, 16), sphere);
+    EXPECT_NE(library.builtin(scene::BuiltinMesh::Sphere, 16), sphere);
 }
 
 TEST(DocumentSession, AFailedOpenChangesNothing) {
     DocumentSession session;
     ASSERT_TRUE(addNodeTree(session.scene(), session.undoStack(), makeNode(NewNodeKind::Box)));
-    const SceneData before = session.scene().toData();
-    const render::MeshHandle sphere = session.meshes().builtin(BuiltinMesh::Sphere, 16);
+    const scene::SceneData before = session.scene().toData();
+    const render::MeshHandle sphere = session.meshes().builtin(scene::BuiltinMesh::Sphere, 16);
     std::vector<std::string> warnings;
     EXPECT_FALSE(
         session.open(QStringLiteral(SPECULUM_SOURCE_DIR "/no/such/project.speculum.json"), warnings));
     EXPECT_EQ(session.scene().toData(), before);
     EXPECT_EQ(session.undoStack().count(), 1);
     EXPECT_TRUE(session.isModified());
-    EXPECT_EQ(session.meshes().builtin(BuiltinMesh::Sphere, 16), sphere) << "the library is kept";
+    EXPECT_EQ(session.meshes().builtin(scene::BuiltinMesh::Sphere, 16), sphere) << "the library is kept";
 }
 
 TEST(DocumentSession, NewAndRestoreReplaceTheDocumentARestoredOneIsModifiedUntilSaved) {
     DocumentSession session;
     ASSERT_TRUE(addNodeTree(session.scene(), session.undoStack(), makeNode(NewNodeKind::Box)));
-    SceneData recovered = session.scene().toData();
-    session.meshes().builtin(BuiltinMesh::Box, 1);
+    scene::SceneData recovered = session.scene().toData();
+    session.meshes().builtin(scene::BuiltinMesh::Box, 1);
 
-    session.replace(SceneData{}, QString());
+    session.replace(scene::SceneData{}, QString());
     EXPECT_TRUE(session.scene().topLevelNodes().empty());
     EXPECT_EQ(session.undoStack().count(), 0);
     EXPECT_FALSE(session.isModified());
@@ -77,11 +77,11 @@ TEST(DocumentSession, NewAndRestoreReplaceTheDocumentARestoredOneIsModifiedUntil
 
 TEST(PlaceImportedModel, StandsOnTheGroundWhereTheViewLooksBesideWhatIsThere) {
     std::vector<std::string> warnings;
-    auto model = importModelFile(toyset(), warnings);
+    auto model = scene::importModelFile(toyset(), warnings);
     ASSERT_TRUE(model) << model.error();
-    Scene scene;
+    scene::Scene scene;
     QUndoStack undo;
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
     ImportPlacement placement;
     placement.focus = {3.0, 1.0, -2.0};
 
@@ -91,7 +91,7 @@ TEST(PlaceImportedModel, StandsOnTheGroundWhereTheViewLooksBesideWhatIsThere) {
     const render::math::Box box = render::math::worldBounds(model->bounds, glm::dmat4(1.0));
     // What placing added to the root's own transform: the box moves by that much.
     const glm::dvec3 at = first.tree.data.transform.translate -
-                          modelNodeTree(*model, toyset(), "toyset").data.transform.translate;
+                          scene::modelNodeTree(*model, toyset(), "toyset").data.transform.translate;
     EXPECT_NEAR(box.min.y + at.y, 0.0, 1e-9) << "on the ground: nothing is under it";
     EXPECT_NEAR((box.min.x + box.max.x) * 0.5 + at.x, 3.0, 1e-9);
     EXPECT_NEAR((box.min.z + box.max.z) * 0.5 + at.z, -2.0, 1e-9);
@@ -100,7 +100,7 @@ TEST(PlaceImportedModel, StandsOnTheGroundWhereTheViewLooksBesideWhatIsThere) {
     auto added = addNodeTree(scene, undo, first.tree);
     ASSERT_TRUE(added);
     EXPECT_EQ(undo.count(), 1);
-    meshes.addModel(toyset(), std::make_shared<const ImportedModel>(*model));
+    meshes.addModel(toyset(), std::make_shared<const scene::ImportedModel>(*model));
     const PlacedModel second = placeImportedModel(scene, meshes, *model, toyset(), placement);
     EXPECT_GE(second.tree.data.transform.translate.x,
               first.tree.data.transform.translate.x + (box.max.x - box.min.x) - 1e-9)

@@ -32,7 +32,7 @@ TEST_F(EditOperationsTest, AddNodeTreeAddsAtTheTopLevelWithAUniqueName) {
 
 TEST_F(EditOperationsTest, AddNodeTreeRefusesASecondReflector) {
     ASSERT_TRUE(addNodeTree(scene, undo, makeNode(NewNodeKind::ReflectorSphere)));
-    const SceneData withOne = scene.toData();
+    const scene::SceneData withOne = scene.toData();
     undo.clear();
     auto second = addNodeTree(scene, undo, makeNode(NewNodeKind::ReflectorTeapot));
     ASSERT_FALSE(second);
@@ -44,7 +44,7 @@ TEST_F(EditOperationsTest, AddNodeTreeRefusesASecondReflector) {
 TEST_F(EditOperationsTest, DeleteOneNodeOrSeveralIsOneStep) {
     ASSERT_TRUE(deleteNodes(scene, undo, {idOf("B")}));
     EXPECT_EQ(topLevelNames(), (Names{"A", "C"}));
-    EXPECT_EQ(idOf("B1"), kNoNode) << "the subtree goes with it";
+    EXPECT_EQ(idOf("B1"), scene::kNoNode) << "the subtree goes with it";
     expectOneStepThatUndoesExactly("Delete \u201cB\u201d", original);
 
     undo.undo();
@@ -56,7 +56,7 @@ TEST_F(EditOperationsTest, DeleteOneNodeOrSeveralIsOneStep) {
 
 TEST_F(EditOperationsTest, DeleteOfNothingIsRefused) {
     EXPECT_FALSE(deleteNodes(scene, undo, {}));
-    EXPECT_FALSE(deleteNodes(scene, undo, {NodeId(987654)}));
+    EXPECT_FALSE(deleteNodes(scene, undo, {scene::NodeId(987654)}));
     expectNoStepAndNoChange();
 }
 
@@ -84,7 +84,7 @@ TEST_F(EditOperationsTest, DuplicatePutsEachCopyAfterItsOriginalWithAUniqueName)
 TEST_F(EditOperationsTest, DuplicateOfTheReflectorDropsItFromTheCopy) {
     auto reflector = addNodeTree(scene, undo, makeNode(NewNodeKind::ReflectorSphere));
     ASSERT_TRUE(reflector);
-    const SceneData before = scene.toData();
+    const scene::SceneData before = scene.toData();
     undo.clear();
     auto copy = duplicateNodes(scene, undo, {*reflector});
     ASSERT_TRUE(copy);
@@ -104,7 +104,7 @@ TEST_F(EditOperationsTest, RenameTrimsAndRefusesEmptyOrUnchangedNames) {
     undo.clear();
     EXPECT_FALSE(renameNode(scene, undo, idOf("A"), "   "));
     EXPECT_FALSE(renameNode(scene, undo, idOf("A"), "A"));
-    EXPECT_FALSE(renameNode(scene, undo, NodeId(987654), "X"));
+    EXPECT_FALSE(renameNode(scene, undo, scene::NodeId(987654), "X"));
     expectNoStepAndNoChange();
 }
 
@@ -117,7 +117,7 @@ TEST_F(EditOperationsTest, MoveOneNodeUnderAnother) {
 
 TEST_F(EditOperationsTest, MoveSeveralKeepsTreeOrderAndTakesChildrenWithTheirParent) {
     // Listed out of order, with B1 under B: B and C move, B1 goes with B.
-    ASSERT_TRUE(moveNodes(scene, undo, {idOf("C"), idOf("B1"), idOf("B")}, kNoNode, 0));
+    ASSERT_TRUE(moveNodes(scene, undo, {idOf("C"), idOf("B1"), idOf("B")}, scene::kNoNode, 0));
     EXPECT_EQ(topLevelNames(), (Names{"B", "C", "A"}));
     EXPECT_EQ(namesUnder(idOf("B")), (Names{"B1", "B2"}));
     expectOneStepThatUndoesExactly("Move 2 nodes", original);
@@ -126,15 +126,15 @@ TEST_F(EditOperationsTest, MoveSeveralKeepsTreeOrderAndTakesChildrenWithTheirPar
 TEST_F(EditOperationsTest, MoveIntoItsOwnSubtreeOrToWhereItIsIsRefused) {
     EXPECT_FALSE(moveNodes(scene, undo, {idOf("B")}, idOf("B1"), 0));
     EXPECT_FALSE(moveNodes(scene, undo, {idOf("A"), idOf("B")}, idOf("B2"), -1));
-    EXPECT_FALSE(moveNodes(scene, undo, {idOf("A")}, kNoNode, 0)) << "already first";
+    EXPECT_FALSE(moveNodes(scene, undo, {idOf("A")}, scene::kNoNode, 0)) << "already first";
     EXPECT_FALSE(moveNodes(scene, undo, {idOf("B1"), idOf("B2")}, idOf("B"), 0)) << "already in that order";
-    EXPECT_FALSE(moveNodes(scene, undo, {}, kNoNode, 0));
+    EXPECT_FALSE(moveNodes(scene, undo, {}, scene::kNoNode, 0));
     expectNoStepAndNoChange();
 }
 
 TEST_F(EditOperationsTest, OutermostInTreeOrder) {
     EXPECT_EQ(outermostInTreeOrder(scene, {idOf("C"), idOf("B2"), idOf("B"), idOf("A"), idOf("C"), 987654}),
-              (std::vector<NodeId>{idOf("A"), idOf("B"), idOf("C")}));
+              (std::vector<scene::NodeId>{idOf("A"), idOf("B"), idOf("C")}));
 }
 
 TEST_F(EditOperationsTest, SetCameraFromViewTakesTheViewAndKeepsTheDepthRange) {

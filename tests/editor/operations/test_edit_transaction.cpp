@@ -73,7 +73,7 @@ TEST_F(EditTransactionTest, ReturningEarlyUndoesWhatRanAndKeepsTheRedoHistory) {
 
 TEST_F(EditTransactionTest, AnExceptionUndoesWhatRan) {
     undo.push(new RenameNodeCommand(scene, idOf("A"), "Eh"));
-    const SceneData before = scene.toData();
+    const scene::SceneData before = scene.toData();
     undo.setClean();
     try {
         EditTransaction edit(undo, QStringLiteral("Throws"));
@@ -89,10 +89,10 @@ TEST_F(EditTransactionTest, AnExceptionUndoesWhatRan) {
 }
 
 TEST_F(EditTransactionTest, MergeableCommandsMergeInsideTheTransaction) {
-    const NodeId a = idOf("A");
-    NodeData first = scene.findNode(a)->data();
+    const scene::NodeId a = idOf("A");
+    scene::NodeData first = scene.findNode(a)->data();
     first.transform.translate = {1, 0, 0};
-    NodeData second = first;
+    scene::NodeData second = first;
     second.transform.translate = {2, 0, 0};
     EditTransaction edit(undo, QStringLiteral("Drag"));
     edit.push(new SetNodeDataCommand(scene, a, first, {}, QStringLiteral("drag#1")));

@@ -22,26 +22,26 @@ protected:
     void SetUp() override { scene.reset(newSceneData()); }
 
     // Adds what placeNewNode gives, seen from the new scene's camera unless told otherwise.
-    NodeId add(NewNodeKind kind, glm::dvec3 viewPosition = glm::dvec3(0.0),
-               glm::dvec3 focus = glm::dvec3(0.0)) {
+    scene::NodeId add(NewNodeKind kind, glm::dvec3 viewPosition = glm::dvec3(0.0),
+                      glm::dvec3 focus = glm::dvec3(0.0)) {
         NewNodePlacement placement;
         placement.focus = focus == glm::dvec3(0.0) ? scene.camera().target : focus;
         placement.viewPosition = viewPosition == glm::dvec3(0.0) ? scene.camera().position : viewPosition;
         auto added = addNodeTree(scene, undo, placeNewNode(scene, meshes, kind, placement));
         EXPECT_TRUE(added) << added.error();
-        return added ? *added : kNoNode;
+        return added ? *added : scene::kNoNode;
     }
 
-    glm::dmat4 world(NodeId id) { return worldMatrices(scene, 0.0).at(id); }
+    glm::dmat4 world(scene::NodeId id) { return scene::worldMatrices(scene, 0.0).at(id); }
 
-    render::math::Box box(NodeId id) {
+    render::math::Box box(scene::NodeId id) {
         render::math::Box b;
-        const NodeData& d = scene.findNode(id)->data();
+        const scene::NodeData& d = scene.findNode(id)->data();
         std::vector<std::string> ignored;
         if (d.mesh) {
             auto mesh = meshes.get(*d.mesh, ignored);
             EXPECT_TRUE(mesh && *mesh);
-            b.add(render::math::worldBounds(meshBounds(*mesh), world(id)));
+            b.add(render::math::worldBounds(scene::meshBounds(*mesh), world(id)));
         }
         if (d.mirror) {
             const glm::dvec2 h = d.mirror->size * 0.5;
@@ -60,17 +60,17 @@ protected:
         return true;
     }
 
-    glm::dvec3 mirrorNormal(NodeId id) {
+    glm::dvec3 mirrorNormal(scene::NodeId id) {
         return glm::normalize(glm::dvec3(world(id) * glm::dvec4(0.0, 1.0, 0.0, 0.0)));
     }
 
-    Scene scene;
+    scene::Scene scene;
     QUndoStack undo;
-    MeshLibrary meshes;
+    scene::MeshLibrary meshes;
 };
 
 TEST_F(Placement, TheNewSceneIsAFloorASunAndARaisedCameraLookingDownAtIt) {
-    const SceneData data = scene.toData();
+    const scene::SceneData data = scene.toData();
     ASSERT_EQ(data.nodes.size(), 2u);
     EXPECT_TRUE(data.nodes[0].data.mesh);
     ASSERT_TRUE(data.nodes[1].data.light);
@@ -84,7 +84,7 @@ TEST_F(Placement, TheNewSceneIsAFloorASunAndARaisedCameraLookingDownAtIt) {
 }
 
 TEST_F(Placement, TheFirstMirrorStandsOnTheFloorFacingTheView) {
-    const NodeId mirror = add(NewNodeKind::Mirror);
+    const scene::NodeId mirror = add(NewNodeKind::Mirror);
     const glm::dvec3 centre(world(mirror)[3]);
     const glm::dvec3 toView = glm::normalize(scene.camera().position - centre);
     EXPECT_GT(glm::dot(mirrorNormal(mirror), toView), 0.5) << "facing the view";
@@ -96,7 +96,7 @@ TEST_F(Placement, TheFirstMirrorStandsOnTheFloorFacingTheView) {
 
 TEST_F(Placement, UnderAViewFromAboveAMirrorLiesFlatJustAboveTheFloor) {
     const glm::dvec3 focus(0.5, 0.0, 0.5);
-    const NodeId mirror = add(NewNodeKind::Mirror, focus + glm::dvec3(0.1, 6.0, 0.0), focus);
+    const scene::NodeId mirror = add(NewNodeKind::Mirror, focus + glm::dvec3(0.1, 6.0, 0.0), focus);
     EXPECT_GT(mirrorNormal(mirror).y, 0.999) << "facing up at the view";
     const render::math::Box b = box(mirror);
     EXPECT_GT(b.min.y, 0.0) << "a hair above the floor, so the two do not fight for depth";
@@ -104,9 +104,9 @@ TEST_F(Placement, UnderAViewFromAboveAMirrorLiesFlatJustAboveTheFloor) {
 }
 
 TEST_F(Placement, NewObjectsLandOnTheFloorBesideEachOther) {
-    const NodeId a = add(NewNodeKind::Teapot);
-    const NodeId b = add(NewNodeKind::Teapot);
-    const NodeId c = add(NewNodeKind::Box);
+    const scene::NodeId a = add(NewNodeKind::Teapot);
+    const scene::NodeId b = add(NewNodeKind::Teapot);
+    const scene::NodeId c = add(NewNodeKind::Box);
     EXPECT_NEAR(box(a).min.y, 0.0, 1e-9);
     EXPECT_NEAR(box(b).min.y, 0.0, 1e-9);
     EXPECT_NEAR(box(c).min.y, 0.0, 1e-9);
@@ -119,7 +119,7 @@ TEST_F(Placement, NewObjectsLandOnTheFloorBesideEachOther) {
 }
 
 TEST_F(Placement, ALightGoesAboveTheFocus) {
-    const NodeId light = add(NewNodeKind::PointLight);
+    const scene::NodeId light = add(NewNodeKind::PointLight);
     const glm::dvec3 at(world(light)[3]);
     EXPECT_NEAR(at.x, scene.camera().target.x, 1e-9);
     EXPECT_NEAR(at.z, scene.camera().target.z, 1e-9);
@@ -127,11 +127,11 @@ TEST_F(Placement, ALightGoesAboveTheFocus) {
 }
 
 TEST_F(Placement, ADuplicateStepsAsideAlongXAndCopiesDoNotLandInEachOther) {
-    const NodeId teapot = add(NewNodeKind::Teapot);
+    const scene::NodeId teapot = add(NewNodeKind::Teapot);
     undo.clear();
     auto first = duplicateNodes(scene, undo, {teapot}, teapot, &meshes, 0.0);
     ASSERT_TRUE(first) << first.error();
-    const NodeId copy = first->copies.at(0);
+    const scene::NodeId copy = first->copies.at(0);
     EXPECT_EQ(undo.count(), 1);
     EXPECT_FALSE(overlap(box(copy), box(teapot)));
     EXPECT_GT(box(copy).min.x, box(teapot).max.x) << "along +X";
@@ -140,7 +140,7 @@ TEST_F(Placement, ADuplicateStepsAsideAlongXAndCopiesDoNotLandInEachOther) {
 
     auto second = duplicateNodes(scene, undo, {teapot}, teapot, &meshes, 0.0);
     ASSERT_TRUE(second) << second.error();
-    const NodeId again = second->copies.at(0);
+    const scene::NodeId again = second->copies.at(0);
     EXPECT_FALSE(overlap(box(again), box(copy))) << "past the first copy, not onto it";
     EXPECT_FALSE(overlap(box(again), box(teapot)));
 

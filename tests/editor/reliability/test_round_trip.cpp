@@ -12,12 +12,12 @@ namespace {
 void expectStableRoundTrip(const QByteArray& json) {
     const QDir base(QStringLiteral("/nonexistent/project"));
     std::vector<std::string> warnings;
-    auto first = parseProject(json, base, warnings);
+    auto first = scene::parseProject(json, base, warnings);
     ASSERT_TRUE(first.ok()) << first.error();
-    const QByteArray saved = serializeProject(*first, base);
-    auto second = parseProject(saved, base, warnings);
+    const QByteArray saved = scene::serializeProject(*first, base);
+    auto second = scene::parseProject(saved, base, warnings);
     ASSERT_TRUE(second.ok()) << second.error();
-    EXPECT_EQ(serializeProject(*second, base), saved);
+    EXPECT_EQ(scene::serializeProject(*second, base), saved);
 }
 
 TEST(RoundTrip, ByteOrderMarkInsideAnUnknownFieldSurvivesSaving) {
@@ -43,15 +43,15 @@ TEST(RoundTrip, TheEditorViewAndItsUnknownFieldsAreKept) {
 TEST(RoundTrip, TheEditorViewSurvivesARecoveryFile) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
-    SceneData data;
+    scene::SceneData data;
     data.camera.fovY = 40;
-    data.editorView = EditorView{{4, 5, 6}, {0.5, 0.25, -1.0 / 3.0}, {}};
+    data.editorView = scene::EditorView{{4, 5, 6}, {0.5, 0.25, -1.0 / 3.0}, {}};
     data.editorView->extra.insert(QStringLiteral("later"), 2);
-    RecoveryStore store(dir.path(), 4244);
+    scene::RecoveryStore store(dir.path(), 4244);
     ASSERT_TRUE(store.write(data, QStringLiteral("/projects/room.speculum.json")).ok());
 
     std::vector<std::string> warnings;
-    auto restored = RecoveryStore::load({store.scenePath(), QString(), QDateTime()}, warnings);
+    auto restored = scene::RecoveryStore::load({store.scenePath(), QString(), QDateTime()}, warnings);
     ASSERT_TRUE(restored.ok()) << restored.error();
     EXPECT_EQ(*restored, data);
     EXPECT_EQ(restored->camera, data.camera);

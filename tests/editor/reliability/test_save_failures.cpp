@@ -23,12 +23,12 @@ QByteArray readAll(const QString& path) {
 }
 
 // A scene big enough that saving it takes more than a few hundred bytes.
-SceneData bigScene() {
-    SceneData data;
+scene::SceneData bigScene() {
+    scene::SceneData data;
     for (int i = 0; i < 50; ++i) {
-        NodeTree node;
+        scene::NodeTree node;
         node.data.name = "Node " + std::to_string(i);
-        node.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
+        node.data.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Sphere);
         data.nodes.push_back(node);
     }
     return data;
@@ -39,7 +39,7 @@ SceneData bigScene() {
     // Root may write anywhere: become an ordinary user first, as a user of the editor would be.
     if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0))
         std::_Exit(3);
-    const base::Status saved = saveProject(bigScene(), path);
+    const base::Status saved = scene::saveProject(bigScene(), path);
     if (saved.ok())
         std::_Exit(4);
     if (saved.error().find("scene.speculum.json") == std::string::npos)
@@ -55,7 +55,7 @@ SceneData bigScene() {
     limit.rlim_cur = limit.rlim_max = 256;
     if (::setrlimit(RLIMIT_FSIZE, &limit) != 0)
         std::_Exit(3);
-    std::_Exit(saveProject(bigScene(), path).ok() ? 4 : 0);
+    std::_Exit(scene::saveProject(bigScene(), path).ok() ? 4 : 0);
 }
 
 class SaveFailures : public ::testing::Test {
@@ -63,7 +63,7 @@ protected:
     void SetUp() override {
         ASSERT_TRUE(m_dir.isValid());
         m_path = m_dir.filePath("scene.speculum.json");
-        ASSERT_TRUE(saveProject(SceneData{}, m_path).ok());
+        ASSERT_TRUE(scene::saveProject(scene::SceneData{}, m_path).ok());
         m_original = readAll(m_path);
         ASSERT_FALSE(m_original.isEmpty());
     }
@@ -90,7 +90,7 @@ TEST_F(SaveFailures, DiskFillingUpDuringTheWriteReportsTheErrorAndKeepsThePrevio
 TEST_F(SaveFailures, DiskFullErrorIsOneLineNamingTheFileAndTheCause) {
     const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
         render::test::limitFileSize(256);
-        const base::Status saved = saveProject(bigScene(), m_path);
+        const base::Status saved = scene::saveProject(bigScene(), m_path);
         text = saved.ok() ? std::string("(saved)") : saved.error();
         return saved.ok() ? 1 : 0;
     });
@@ -114,17 +114,17 @@ TEST(SaveFailuresOnASmallDisk, FullFileSystemKeepsThePreviousProject) {
             return 77;
         }
         const QString path = dir.filePath("scene.speculum.json");
-        if (!saveProject(SceneData{}, path).ok())
+        if (!scene::saveProject(scene::SceneData{}, path).ok())
             return 2;
         const QByteArray before = readAll(path);
-        SceneData huge;
+        scene::SceneData huge;
         for (int i = 0; i < 400; ++i) {
-            NodeTree node;
+            scene::NodeTree node;
             node.data.name = "A node with a long enough name " + std::to_string(i);
-            node.data.mesh = MeshComponent::fromBuiltin(BuiltinMesh::Sphere);
+            node.data.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Sphere);
             huge.nodes.push_back(node);
         }
-        const base::Status saved = saveProject(huge, path);
+        const base::Status saved = scene::saveProject(huge, path);
         text = saved.ok() ? std::string("(saved)") : saved.error();
         if (saved.ok())
             return 1;
@@ -144,8 +144,8 @@ TEST(SaveFailuresOnASmallDisk, FullFileSystemKeepsThePreviousProject) {
 TEST(RecoveryFailures, AutosaveOntoAFillingDiskKeepsTheEarlierRecovery) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
-    RecoveryStore store(dir.path(), 4242);
-    ASSERT_TRUE(store.write(SceneData{}, QStringLiteral("/projects/room.speculum.json")).ok());
+    scene::RecoveryStore store(dir.path(), 4242);
+    ASSERT_TRUE(store.write(scene::SceneData{}, QStringLiteral("/projects/room.speculum.json")).ok());
     const QStringList before = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
     ASSERT_EQ(before.size(), 2);
     std::vector<QByteArray> beforeBytes;
@@ -169,8 +169,8 @@ TEST(RecoveryFailures, AutosaveOntoAFillingDiskKeepsTheEarlierRecovery) {
 TEST(RecoveryFailures, NoteThatDoesNotFitKeepsTheEarlierNote) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
-    RecoveryStore store(dir.path(), 4243);
-    ASSERT_TRUE(store.write(SceneData{}, QStringLiteral("/a.speculum.json")).ok());
+    scene::RecoveryStore store(dir.path(), 4243);
+    ASSERT_TRUE(store.write(scene::SceneData{}, QStringLiteral("/a.speculum.json")).ok());
     const QString note = dir.filePath(QStringLiteral("recovery-4243.note.json"));
     const QByteArray beforeNote = readAll(note);
     ASSERT_FALSE(beforeNote.isEmpty());
@@ -178,7 +178,7 @@ TEST(RecoveryFailures, NoteThatDoesNotFitKeepsTheEarlierNote) {
         QStringLiteral("/") + QString(3000, QLatin1Char('p')) + QStringLiteral(".speculum.json");
     const render::test::ChildOutcome child = render::test::inChild([&](std::string& text) {
         render::test::limitFileSize(2048); // an empty scene fits, a 3000-byte note does not
-        const base::Status written = store.write(SceneData{}, longOriginal);
+        const base::Status written = store.write(scene::SceneData{}, longOriginal);
         text = written.ok() ? std::string("(written)") : written.error();
         return written.ok() ? 1 : 0;
     });

@@ -30,18 +30,18 @@ TEST(DemoScenes, EachLoadsCleanlyAndIsInTheFormSpeculumWrites) {
     for (const QString& path : demoScenes()) {
         SCOPED_TRACE(path.toStdString());
         std::vector<std::string> warnings;
-        auto data = loadProject(path, warnings);
+        auto data = scene::loadProject(path, warnings);
         ASSERT_TRUE(data.ok()) << data.error();
         EXPECT_TRUE(warnings.empty()) << warnings.front();
         QFile file(path);
         ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-        EXPECT_EQ(serializeProject(*data, QFileInfo(path).dir()), file.readAll());
+        EXPECT_EQ(scene::serializeProject(*data, QFileInfo(path).dir()), file.readAll());
 
-        Scene scene;
-        ASSERT_TRUE(openProject(scene, path, warnings).ok());
-        MeshLibrary meshes;
+        scene::Scene scene;
+        ASSERT_TRUE(scene::openProject(scene, path, warnings).ok());
+        scene::MeshLibrary meshes;
         warnings.clear();
-        const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+        const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
         EXPECT_TRUE(warnings.empty());
         EXPECT_FALSE(frame.items.empty() && frame.mirrors.empty());
         EXPECT_FALSE(frame.lights.empty());
@@ -50,13 +50,13 @@ TEST(DemoScenes, EachLoadsCleanlyAndIsInTheFormSpeculumWrites) {
 
 TEST(DemoScenes, MirrorRoomHasTwoFacingMirrorsAndObjectsBetween) {
     std::vector<std::string> warnings;
-    Scene scene;
-    ASSERT_TRUE(openProject(scene,
-                            QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json"),
-                            warnings)
-                    .ok());
-    MeshLibrary meshes;
-    const render::FrameInput frame = snapshot(scene, 0.0, meshes, warnings);
+    scene::Scene scene;
+    ASSERT_TRUE(
+        scene::openProject(
+            scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json"), warnings)
+            .ok());
+    scene::MeshLibrary meshes;
+    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
     ASSERT_GE(frame.mirrors.size(), 3u);
     // Two of them face each other: opposite normals, each in front of the other.
     auto normal = [](const render::Mirror& m) {

@@ -11,62 +11,62 @@
 
 namespace {
 
-using namespace speculum::document;
+using namespace speculum::scene;
 using speculum::view::AnimationClock;
 
-NodeTree nodeWith(std::optional<double> bouncePeriod, std::optional<double> orbitPeriod) {
-    NodeTree tree;
+speculum::scene::NodeTree nodeWith(std::optional<double> bouncePeriod, std::optional<double> orbitPeriod) {
+    speculum::scene::NodeTree tree;
     tree.data.name = "n";
     if (bouncePeriod || orbitPeriod) {
         tree.data.animation.emplace();
         if (bouncePeriod) {
-            tree.data.animation->bounce = BounceAnimation{1.0, *bouncePeriod, {}};
+            tree.data.animation->bounce = speculum::scene::BounceAnimation{1.0, *bouncePeriod, {}};
         }
         if (orbitPeriod) {
-            tree.data.animation->orbit = OrbitAnimation{{}, 1.0, *orbitPeriod, {}};
+            tree.data.animation->orbit = speculum::scene::OrbitAnimation{{}, 1.0, *orbitPeriod, {}};
         }
     }
     return tree;
 }
 
-void fill(Scene& scene, std::vector<NodeTree> nodes) {
-    SceneData data;
+void fill(speculum::scene::Scene& scene, std::vector<speculum::scene::NodeTree> nodes) {
+    speculum::scene::SceneData data;
     data.nodes = std::move(nodes);
     scene.reset(std::move(data));
 }
 
 TEST(SceneAnimation, AStaticSceneHasNoAnimationAndATenSecondTimeline) {
-    Scene scene;
-    EXPECT_FALSE(sceneHasAnimation(scene));
+    speculum::scene::Scene scene;
+    EXPECT_FALSE(speculum::scene::sceneHasAnimation(scene));
     fill(scene, {nodeWith(std::nullopt, std::nullopt)});
-    EXPECT_FALSE(sceneHasAnimation(scene));
-    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), kStaticTimelineSeconds);
+    EXPECT_FALSE(speculum::scene::sceneHasAnimation(scene));
+    EXPECT_DOUBLE_EQ(speculum::scene::animationLoopSeconds(scene), speculum::scene::kStaticTimelineSeconds);
 }
 
 TEST(SceneAnimation, APeriodThatIsNotPositiveMovesNothing) {
-    Scene scene;
+    speculum::scene::Scene scene;
     fill(scene, {nodeWith(0.0, -1.0), nodeWith(std::numeric_limits<double>::infinity(), std::nullopt)});
-    EXPECT_FALSE(sceneHasAnimation(scene));
+    EXPECT_FALSE(speculum::scene::sceneHasAnimation(scene));
 }
 
 TEST(SceneAnimation, AnAnimatedChildMakesTheSceneAnimated) {
-    Scene scene;
-    NodeTree parent = nodeWith(std::nullopt, std::nullopt);
+    speculum::scene::Scene scene;
+    speculum::scene::NodeTree parent = nodeWith(std::nullopt, std::nullopt);
     parent.children.push_back(nodeWith(2.0, std::nullopt));
     fill(scene, {parent});
-    EXPECT_TRUE(sceneHasAnimation(scene));
-    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), 2.0);
+    EXPECT_TRUE(speculum::scene::sceneHasAnimation(scene));
+    EXPECT_DOUBLE_EQ(speculum::scene::animationLoopSeconds(scene), 2.0);
 }
 
 TEST(SceneAnimation, OneLoopIsTheLeastCommonMultipleOfThePeriods) {
-    Scene scene;
+    speculum::scene::Scene scene;
     fill(scene, {nodeWith(2.0, std::nullopt), nodeWith(std::nullopt, 6.0)}); // the teapot demo
-    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), 6.0);
+    EXPECT_DOUBLE_EQ(speculum::scene::animationLoopSeconds(scene), 6.0);
     fill(scene, {nodeWith(2.5, 6.0)});
-    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), 30.0);
+    EXPECT_DOUBLE_EQ(speculum::scene::animationLoopSeconds(scene), 30.0);
     // No short common loop: the longest period.
     fill(scene, {nodeWith(1.001, 7.0), nodeWith(std::nullopt, 9.973)});
-    EXPECT_DOUBLE_EQ(animationLoopSeconds(scene), 9.973);
+    EXPECT_DOUBLE_EQ(speculum::scene::animationLoopSeconds(scene), 9.973);
 }
 
 TEST(AnimationClockLoop, PlayingWrapsAtTheLoopsEndAndPausedHoldsAnyTime) {

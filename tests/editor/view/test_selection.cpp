@@ -13,7 +13,7 @@
 namespace {
 
 using namespace speculum;
-using document::NodeId;
+using speculum::scene::NodeId;
 using Ids = std::vector<NodeId>;
 
 class SelectionTest : public ::testing::Test {
@@ -24,7 +24,7 @@ protected:
         return command->nodeId();
     }
 
-    document::Scene m_scene;
+    speculum::scene::Scene m_scene;
     QUndoStack m_undo;
     view::Selection m_selection{m_scene};
 };
@@ -64,7 +64,7 @@ TEST_F(SelectionTest, HoldsSeveralNodesInTheOrderPickedWithTheLastOneCurrent) {
     EXPECT_EQ(m_selection.nodes(), (Ids{a, c, b}));
     m_selection.setNodes({a, c}, 9999);
     EXPECT_EQ(m_selection.node(), c) << "without a current among them, the last one is";
-    m_selection.selectNode(document::kNoNode);
+    m_selection.selectNode(speculum::scene::kNoNode);
     EXPECT_TRUE(m_selection.isEmpty());
 }
 
@@ -75,7 +75,7 @@ TEST_F(SelectionTest, TheCameraIsSelectedAlone) {
     m_selection.selectCamera();
     EXPECT_TRUE(m_selection.isCamera());
     EXPECT_TRUE(m_selection.nodes().empty());
-    EXPECT_EQ(m_selection.node(), document::kNoNode);
+    EXPECT_EQ(m_selection.node(), speculum::scene::kNoNode);
     m_selection.toggleNode(a);
     EXPECT_FALSE(m_selection.isCamera());
     EXPECT_EQ(m_selection.nodes(), Ids{a});

@@ -23,12 +23,12 @@ namespace reference = render::reference;
 namespace metrics = render::metrics;
 
 FrameInput loadDemo(const char* name) {
-    document::Scene scene;
+    scene::Scene scene;
     std::vector<std::string> warnings;
     const QString path = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/") + QString::fromUtf8(name);
-    EXPECT_TRUE(document::openProject(scene, path, warnings).ok()) << name;
-    document::MeshLibrary meshes;
-    return document::snapshot(scene, 0.0, meshes, warnings);
+    EXPECT_TRUE(scene::openProject(scene, path, warnings).ok()) << name;
+    scene::MeshLibrary meshes;
+    return scene::snapshot(scene, 0.0, meshes, warnings);
 }
 
 reference::TraceResult traceFrame(const FrameInput& input, int width, int height, int ssaa,

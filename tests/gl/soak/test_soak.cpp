@@ -33,19 +33,19 @@ struct Sweep {
 };
 
 void soak(render::Renderer& renderer, const Sweep& sweep, int frames) {
-    document::Scene scene;
+    scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(document::openProject(scene, QString(SPECULUM_SOURCE_DIR "/resources/scenes/") + sweep.scene,
-                                      warnings)
-                    .ok());
-    document::MeshLibrary meshes;
+    ASSERT_TRUE(
+        scene::openProject(scene, QString(SPECULUM_SOURCE_DIR "/resources/scenes/") + sweep.scene, warnings)
+            .ok());
+    scene::MeshLibrary meshes;
     // Memory is compared from a frame after the warm-up (and, when the map type cycles, after the last
     // switch, which legitimately allocates the new map) to the end.
     const int baselineFrame = sweep.cycleMaps ? frames * 2 / 3 + 50 : 100;
     double memoryAtBaseline = 0.0;
     int nanFrames = 0;
     for (int i = 0; i < frames; ++i) {
-        render::FrameInput input = document::snapshot(scene, i / 30.0, meshes, warnings);
+        render::FrameInput input = scene::snapshot(scene, i / 30.0, meshes, warnings);
         input.camera.position = sweep.position(i, frames);
         input.camera.target = sweep.target;
         if (sweep.cycleMaps && input.reflector)
