@@ -1,5 +1,4 @@
-# The accuracy sweep's planning and analysis, its results files and its output folder, without GL.
-speculum_add_test(test_accuracy TIER unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_sweep.cpp ${CMAKE_CURRENT_LIST_DIR}/test_staging.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_results.cpp
+# accuracy/: the sweep's planning and analysis, its results files and its output folder. Unit tier, no GL.
+speculum_add_test(AccuracyTest TIER unit
+    SOURCES SweepTest.cpp ResultsTest.cpp StagedOutputTest.cpp
     LIBS speculum_accuracy Qt6::Core)

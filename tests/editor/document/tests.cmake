@@ -1,12 +1,9 @@
-# The scene document: model, project files, snapshot, undo commands. Unit tier, no GL.
-speculum_add_test(test_editor_document TIER unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_project_file.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_project_errors.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_project_materials.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_snapshot.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_commands.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_sweep_results.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_project_limits.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_printable.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_limits_agree.cpp
-    LIBS speculum_editor_document speculum_scene_export)
+# editor/document: undo commands and exact undo, the document session, editing operations in
+# transactions and where new things land, the node factory, the inspector's properties and limits,
+# applying bench results. Unit tier, no GL, no widgets.
+find_package(Qt6 REQUIRED COMPONENTS Test) # QSignalSpy
+speculum_add_test(EditorDocumentTest TIER unit
+    SOURCES CommandsTest.cpp CommandsExactUndoTest.cpp DocumentSessionTest.cpp EditOperationsTest.cpp
+            EditOperationsPlacementTest.cpp EditTransactionTest.cpp NodeFactoryTest.cpp PropertiesTest.cpp
+            PropertiesLimitsTest.cpp SweepResultsTest.cpp SweepResultsUndoTest.cpp
+    LIBS speculum_editor_document Qt6::Test)

@@ -1,4 +1,8 @@
-speculum_add_test(test_render_envmap TIER unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_mapping.cpp ${CMAKE_CURRENT_LIST_DIR}/test_seams.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_solid_angle.cpp ${CMAKE_CURRENT_LIST_DIR}/test_capture_math.cpp
-    LIBS speculum_render_plan)
+# render/envmap: environment-map mappings, layouts, seams, CPU maps and solid angles. Unit tier.
+speculum_add_test(RenderEnvmapTest TIER unit
+    SOURCES CaptureMathTest.cpp MappingTest.cpp CpuMapSeamsTest.cpp SolidAngleTest.cpp
+    LIBS speculum_render_envmap)
+# The GLSL twins of the mappings, compared with the C++ ones on a headless context. Gl tier.
+speculum_add_test(RenderEnvmapGLTest TIER gl
+    SOURCES MappingGLTest.cpp ${SPECULUM_TEST_SUPPORT}/GlslRunner.cpp
+    LIBS speculum_render_envmap speculum_render_passes speculum_render_renderer)

@@ -1,3 +1,4 @@
-speculum_add_test(test_render_math TIER unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_mirror_math.cpp ${CMAKE_CURRENT_LIST_DIR}/test_ggx.cpp
-    LIBS speculum_render_plan)
+# render/math: mirror planes and matrices, oblique projections, GGX. Unit tier.
+speculum_add_test(RenderMathTest TIER unit
+    SOURCES GgxTest.cpp MirrorTest.cpp
+    LIBS speculum_render_math speculum_render_plan)

@@ -1,7 +1,4 @@
-# Built-in meshes (teapot, primitives), bounds and mesh repair: unit tier, no GL.
-speculum_add_test(test_render_mesh TIER unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_teapot.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_primitives.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_mesh_repair.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_simplify.cpp
-    LIBS speculum_render_plan)
+# render/mesh: built-in meshes (teapot, primitives), bounds, mesh repair and simplification. Unit tier.
+speculum_add_test(RenderMeshTest TIER unit
+    SOURCES MeshRepairTest.cpp PrimitivesTest.cpp SimplifyTest.cpp TeapotTest.cpp
+    LIBS speculum_render_mesh)

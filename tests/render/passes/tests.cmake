@@ -1,4 +1,17 @@
-# The CPU side of render passes (mesh subdivision for the direct environment fill): unit tier, no GL.
-speculum_add_test(test_render_passes TIER unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_warp_meshes.cpp
-    LIBS speculum_render_renderer speculum_render_reference speculum_render_metrics speculum_render_imageio)
+# render/passes: the CPU side of the passes (mesh subdivision for the direct environment fill). Unit tier.
+speculum_add_test(RenderPassesTest TIER unit SOURCES WarpMeshesTest.cpp LIBS speculum_render_passes)
+# The pass executors on a headless context: shadow maps, mirrors and their occlusion, lighting variants,
+# the main pass's back faces and materials, reflected detail, the reflector, environment capture and its
+# fill, GGX pre-filtering, GPU allocations that do not fit. Gl tier.
+speculum_add_test(RenderPassesGLTest TIER gl
+    SOURCES ShadowMapsGLTest.cpp MirrorPassesGLTest.cpp MirrorOcclusionGLTest.cpp LightingVariantGLTest.cpp
+            MainPassBackFaceCullingGLTest.cpp MainPassMaterialsGLTest.cpp ReflectedDetailGLTest.cpp
+            ReflectorPassGLTest.cpp EnvironmentCaptureGLTest.cpp EnvironmentCaptureFillGLTest.cpp
+            GgxPrefilterGLTest.cpp GpuAllocationGLTest.cpp ${SPECULUM_TEST_SUPPORT}/GlslRunner.cpp
+    LIBS speculum_render_passes speculum_render_renderer speculum_render_metrics speculum_render_imageio
+         PkgConfig::OIIO)
+# Real 8192 reflectors drawn at the size the driver holds (seconds each on llvmpipe): slow.
+speculum_add_test(RenderPassesSlowGLTest TIER gl LABELS slow
+    SOURCES GpuAllocationGLTest.cpp
+    LIBS speculum_render_passes speculum_render_renderer)
+target_compile_definitions(RenderPassesSlowGLTest PRIVATE SPECULUM_SLOW_ALLOCATION_TESTS=1)

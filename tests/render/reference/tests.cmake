@@ -1,6 +1,12 @@
-# The exact reference tracer (Embree) and the error metrics: unit tier, no GL.
-speculum_add_test(test_render_reference TIER unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_tracer.cpp ${CMAKE_CURRENT_LIST_DIR}/test_tracer_robustness.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_metrics.cpp ${CMAKE_CURRENT_LIST_DIR}/test_material_tracing.cpp
-            ${CMAKE_CURRENT_LIST_DIR}/test_glossy_tracer.cpp
-    LIBS speculum_render_renderer speculum_render_reference speculum_render_metrics speculum_render_imageio PkgConfig::OIIO)
+# render/reference: the exact reference tracer (Embree): geometry, robustness, glossy sampling,
+# materials. Unit tier.
+speculum_add_test(RenderReferenceTest TIER unit
+    SOURCES TracerTest.cpp TracerRobustnessTest.cpp TracerGlossyTest.cpp TracerMaterialsTest.cpp
+    LIBS speculum_render_reference speculum_render_imageio PkgConfig::OIIO)
+# The tracer against the rasterizer: the demo scenes, rough mirrors, materials, the curved reflector's
+# error, values at the scene limits. Gl tier.
+speculum_add_test(RenderReferenceGLTest TIER gl
+    SOURCES DemoScenesAgreementGLTest.cpp GlossyAgreementGLTest.cpp MaterialAgreementGLTest.cpp
+            ReflectorAgreementGLTest.cpp SceneLimitsAgreementGLTest.cpp
+    LIBS speculum_render_reference speculum_render_renderer speculum_render_metrics speculum_render_imageio
+         PkgConfig::OIIO speculum_scene_project speculum_scene_evaluate)

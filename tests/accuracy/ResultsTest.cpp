@@ -1,0 +1,139 @@
+// results.json written by the sweep reads back into the same records (the one record type the bench
+// writes and the editor's chart reads), and the findings the panel shows are the report's.
+#include "accuracy/Results.hpp"
+
+#include "accuracy/Report.hpp"
+
+#include <QFile>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <gtest/gtest.h>
+
+namespace speculum::accuracy {
+namespace {
+
+Record record(Family family, const std::string& id, double gpuMs, double psnr, bool scene = false) {
+    Record r;
+    r.config.family = family;
+    r.config.id = id;
+    r.config.label = (family == Family::Shadows ? "pcf " : "") + id.substr(id.rfind('-') + 1);
+    r.config.series = family == Family::Envmap ? "cube" : "PCF kernel";
+    r.config.reference = family == Family::Shadows ? ReferenceKind::HardShadows : ReferenceKind::Scene;
+    r.settings = {{"map", "cube"}, {"resolution", "128"}, {"parallax", "off"}, {"pcf", "3"}};
+    r.sceneSetting = scene;
+    r.gpuMs = gpuMs;
+    r.cpuMs = gpuMs + 1.25;
+    r.memory = {1000, 0, 2048, 4096};
+    r.rmse = 0.015625;
+    r.psnr = psnr;
+    r.psnrReflector = psnr - 3.5;
+    r.errorMap = "errors/" + id + ".png";
+    return r;
+}
+
+QJsonObject readBack(const std::string& path) {
+    QFile file(QString::fromStdString(path));
+    EXPECT_TRUE(file.open(QIODevice::ReadOnly));
+    return QJsonDocument::fromJson(file.readAll()).object();
+}
+
+TEST(Results, JsonRoundTripGivesTheSameRecords) {
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("results.json").toStdString();
+    RunInfo run;
+    run.scene = "/scenes/chrome.speculum.json";
+    run.sceneName = "chrome.speculum.json";
+    run.width = 480;
+    run.height = 270;
+    run.quick = true;
+    run.warmUpFrames = 2;
+    run.timedFrames = 7;
+    run.renderer = "llvmpipe";
+    run.references = {{ReferenceKind::Scene, 812.5, 16, "reference.png"},
+                      {ReferenceKind::HardShadows, 700.0, 16, "reference-hard-shadows.png"}};
+    std::vector<Record> records = {record(Family::Scene, "scene", 4.0, 34.0, true),
+                                   record(Family::Envmap, "envmap-cube-64", 2.5, 30.0),
+                                   record(Family::Shadows, "pcf-5", -1.0, 28.0)};
+    records[1].psnrMirrors = 22.0;
+    records[2].psnrReflector.reset();
+    ASSERT_TRUE(writeJson(path, run, records).ok());
+
+    auto read = readJson(readBack(path), "results.json");
+    ASSERT_TRUE(read.ok()) << read.error();
+    EXPECT_EQ(read->size(), "480x270");
+    EXPECT_EQ(read->run.scene, run.scene);
+    EXPECT_EQ(read->run.sceneName, run.sceneName);
+    EXPECT_EQ(read->run.timedFrames, 7);
+    ASSERT_EQ(read->run.references.size(), 2u);
+    EXPECT_EQ(read->run.references[1].kind, ReferenceKind::HardShadows);
+    EXPECT_DOUBLE_EQ(read->run.references[0].traceMs, 812.5);
+    EXPECT_TRUE(read->gpuTimes());
+    ASSERT_EQ(read->records.size(), records.size());
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const Record& a = records[i];
+        const Record& b = read->records[i];
+        EXPECT_EQ(b.config.family, a.config.family);
+        EXPECT_EQ(b.config.id, a.config.id);
+        EXPECT_EQ(b.config.label, a.config.label);
+        EXPECT_EQ(b.config.series, a.config.series);
+        EXPECT_EQ(b.config.reference, a.config.reference);
+        EXPECT_EQ(b.settings, a.settings) << a.config.id;
+        EXPECT_EQ(b.sceneSetting, a.sceneSetting);
+        EXPECT_DOUBLE_EQ(b.gpuMs, a.gpuMs);
+        EXPECT_DOUBLE_EQ(b.cpuMs, a.cpuMs);
+        EXPECT_EQ(b.memory.total(), a.memory.total());
+        EXPECT_EQ(b.memory.shadows, a.memory.shadows);
+        EXPECT_DOUBLE_EQ(b.rmse, a.rmse);
+        EXPECT_DOUBLE_EQ(b.psnr, a.psnr);
+        EXPECT_EQ(b.psnrMirrors, a.psnrMirrors);
+        EXPECT_EQ(b.psnrReflector, a.psnrReflector);
+        EXPECT_EQ(b.errorMap, a.errorMap);
+        EXPECT_DOUBLE_EQ(frameMs(b), a.gpuMs >= 0.0 ? a.gpuMs : a.cpuMs);
+    }
+}
+
+TEST(Results, UnknownFamiliesAreLeftOutAndCounted) {
+    const QJsonObject root = QJsonDocument::fromJson(R"({"format": "speculum-bench", "size": [64, 32],
+        "results": [{"family": "future", "cpuMs": 1, "psnr": 20, "rmse": 0.1},
+                    {"family": "scene", "cpuMs": 2, "psnr": 30, "rmse": 0.01, "gpuMs": null}]})")
+                                 .object();
+    auto read = readJson(root, "results.json");
+    ASSERT_TRUE(read.ok()) << read.error();
+    EXPECT_EQ(read->unknownFamilies, 1u);
+    ASSERT_EQ(read->records.size(), 1u);
+    EXPECT_EQ(read->size(), "64x32");
+    EXPECT_FALSE(read->gpuTimes());
+    EXPECT_DOUBLE_EQ(frameMs(read->records[0]), 2.0);
+}
+
+TEST(Results, FindingsAreTheReportsLines) {
+    const std::vector<Record> records = {
+        record(Family::Scene, "scene", 4.0, 34.0, true), record(Family::Shadows, "pcf-1", 2.0, 27.0),
+        record(Family::Shadows, "pcf-3", 3.0, 30.0, true), record(Family::Shadows, "pcf-5", 6.0, 30.5)};
+    const std::vector<FamilyFindings> found = findings(records);
+    ASSERT_EQ(found.size(), 1u); // the scene row is no family of its own
+    EXPECT_EQ(found[0].family, Family::Shadows);
+    EXPECT_EQ(found[0].judgedBy, "PSNR of the whole frame");
+    ASSERT_GE(found[0].lines.size(), 3u);
+    EXPECT_EQ(found[0].lines[0].rfind("Best: **pcf 5**: 30.50 dB", 0), 0u) << found[0].lines[0];
+    EXPECT_EQ(found[0].lines[1].rfind("Cheapest within 1 dB of the best: **pcf 3**", 0), 0u)
+        << found[0].lines[1];
+
+    QTemporaryDir dir;
+    RunInfo run;
+    run.sceneName = "scene";
+    run.width = 64;
+    run.height = 32;
+    // No plots without a QGuiApplication: one shadow row would plot, so give the report a single row.
+    const std::vector<Record> one = {records[0], records[2]};
+    ASSERT_TRUE(writeReport(dir.path().toStdString(), run, one).ok());
+    QFile report(dir.filePath("report.md"));
+    ASSERT_TRUE(report.open(QIODevice::ReadOnly));
+    const std::string md = report.readAll().toStdString();
+    for (const FamilyFindings& f : findings(one))
+        for (const std::string& line : f.lines)
+            EXPECT_NE(md.find("- " + line + "\n"), std::string::npos) << line;
+}
+
+} // namespace
+} // namespace speculum::accuracy

@@ -1,0 +1,153 @@
+// What a frame reports about its own cost: the memory of the render targets it used, the GPU time of its
+// passes, and, when asked not to reuse maps, a static scene rendering its shadow and environment maps on
+// every frame.
+#include "render/gl/GpuTimer.hpp"
+#include "render/mesh/Primitives.hpp"
+#include "support/GlTest.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace speculum::test {
+namespace {
+
+using namespace render;
+
+constexpr int kWidth = 96;
+constexpr int kHeight = 64;
+
+// A floor, a box, a reflecting ball and a point light with shadows: every kind of map a frame can have.
+FrameInput roomWithBall(int resolution) {
+    FrameInput input;
+    input.camera.position = {0.0, 1.5, 4.0};
+    input.camera.target = {0.0, 0.5, 0.0};
+    input.camera.far = 50.0;
+    const auto plane = std::make_shared<const MeshData>(makePlane(1));
+    const auto box = std::make_shared<const MeshData>(makeBox());
+    input.items.push_back({"Floor", glm::scale(glm::dmat4(1.0), glm::dvec3(5.0)), plane, Material{}, true});
+    input.items.push_back({"Box",
+                           glm::translate(glm::dmat4(1.0), glm::dvec3(-1.5, 0.5, 0.0)) *
+                               glm::scale(glm::dmat4(1.0), glm::dvec3(0.5)),
+                           box, Material{}, true});
+    Light light;
+    light.name = "Lamp";
+    light.position = {1.0, 3.0, 1.0};
+    light.shadows.enabled = true;
+    light.shadows.mapSize = 256;
+    light.shadows.pcf = 3;
+    input.lights.push_back(light);
+    Reflector r;
+    r.name = "Ball";
+    r.mesh = std::make_shared<const MeshData>(makeSphere(32));
+    r.world = glm::translate(glm::dmat4(1.0), glm::dvec3(0.8, 0.6, 0.0)) *
+              glm::scale(glm::dmat4(1.0), glm::dvec3(0.6));
+    r.map = ReflectorMap::Cube;
+    r.resolution = resolution;
+    input.reflector = r;
+    return input;
+}
+
+FrameReport renderFrame(Renderer& renderer, const FrameInput& input, bool reuseMaps) {
+    StillSettings settings{kWidth, kHeight, 1};
+    settings.reuseMaps = reuseMaps;
+    auto still = renderStill(renderer, input, settings);
+    EXPECT_TRUE(still.ok()) << (still.ok() ? "" : still.error());
+    return still.ok() ? still->firstSample : FrameReport{};
+}
+
+int countPasses(const FrameReport& report, PassKind kind) {
+    return static_cast<int>(report.countRan(kind));
+}
+
+class FrameReportTest : public GlTest {};
+
+TEST_F(FrameReportTest, StaticSceneRendersEveryMapAgainWhenAskedNotToReuse) {
+    const FrameInput input = roomWithBall(64);
+    renderFrame(renderer(), input, true);
+    const FrameReport reused = renderFrame(renderer(), input, true);
+    EXPECT_EQ(countPasses(reused, PassKind::Shadow), 0);
+    EXPECT_EQ(countPasses(reused, PassKind::Envmap), 0);
+    // A benchmark times what an animated scene pays: every map, every frame.
+    for (int frame = 0; frame < 2; ++frame) {
+        const FrameReport fresh = renderFrame(renderer(), input, false);
+        EXPECT_EQ(countPasses(fresh, PassKind::Shadow), 1) << "frame " << frame;
+        EXPECT_EQ(countPasses(fresh, PassKind::Envmap), 1) << "frame " << frame;
+    }
+}
+
+TEST_F(FrameReportTest, MemoryCountsEachRenderTargetFromItsSizeAndFormat) {
+    const FrameReport small = renderFrame(renderer(), roomWithBall(64), false);
+    // The linear half-float colour buffer (8 bytes a pixel) and its depth-stencil buffer (4).
+    EXPECT_EQ(small.memory.main, std::size_t(kWidth) * kHeight * 12);
+    // A point light's cube of six 256² 24-bit depth faces (stored in 32 bits).
+    EXPECT_EQ(small.memory.shadows, std::size_t(6) * 256 * 256 * 4);
+    EXPECT_EQ(small.memory.mirrors, 0u) << "no texture-technique mirror";
+    // Six half-float faces with their mip chains, and one face-sized depth buffer.
+    std::size_t chain = 0;
+    for (int n = 64; n >= 1; n /= 2)
+        chain += std::size_t(n) * n;
+    EXPECT_EQ(small.memory.envmap, 6 * chain * 8 + std::size_t(64) * 64 * 4);
+    EXPECT_EQ(small.memory.total(),
+              small.memory.main + small.memory.shadows + small.memory.envmap + small.memory.mirrors);
+
+    // Twice the resolution, four times the map; nothing else changes.
+    const FrameReport large = renderFrame(renderer(), roomWithBall(128), false);
+    EXPECT_NEAR(double(large.memory.envmap) / double(small.memory.envmap), 4.0, 0.01);
+    EXPECT_EQ(large.memory.main, small.memory.main);
+    EXPECT_EQ(large.memory.shadows, small.memory.shadows);
+
+    // A texture-technique mirror in view adds a mipmapped reflection texture of the frame's size.
+    FrameInput withMirror = roomWithBall(64);
+    Mirror mirror;
+    mirror.name = "Mirror";
+    mirror.world = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, -2.0)) *
+                   glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(1, 0, 0));
+    mirror.size = {3.0, 2.0};
+    mirror.technique = MirrorTechnique::Texture;
+    withMirror.mirrors.push_back(mirror);
+    const FrameReport mirrored = renderFrame(renderer(), withMirror, false);
+    EXPECT_GE(mirrored.memory.mirrors, std::size_t(kWidth) * kHeight * 12);
+}
+
+TEST_F(FrameReportTest, EveryPassThatRanHasAGpuTimeAndTheyAddUpToTheFrame) {
+    FrameReport report;
+    for (int frame = 0; frame < 2; ++frame) // the second frame reuses the timer's queries
+        report = renderFrame(renderer(), roomWithBall(32), false);
+    ASSERT_GE(report.ran.size(), 3u);
+    double sum = 0.0;
+    int previous = -1;
+    for (const PassRun& run : report.ran) {
+        // In the plan's order, each planned pass at most once.
+        ASSERT_GT(run.pass, previous);
+        ASSERT_LT(std::size_t(run.pass), report.plan.passes.size());
+        previous = run.pass;
+        EXPECT_GE(run.gpuMs, 0.0) << toString(report.planned(run).kind);
+        EXPECT_GE(run.cpuMs, 0.0) << toString(report.planned(run).kind);
+        sum += run.gpuMs;
+    }
+    EXPECT_NEAR(sum, report.gpuMs, 1e-6);
+}
+
+// Back-to-back passes share the timestamp between them; a pass after untimed work takes its own.
+TEST_F(FrameReportTest, GpuTimerTakesOneTimestampPerPassBoundary) {
+    gl::GpuTimer timer;
+    for (int frame = 0; frame < 2; ++frame) {
+        timer.begin(0);
+        timer.end();
+        timer.begin(1);
+        timer.end();
+        EXPECT_EQ(timer.queriesThisFrame(), 3u);
+        timer.begin(3); // pass 2 skipped: nothing ran in between
+        timer.end();
+        EXPECT_EQ(timer.queriesThisFrame(), 4u);
+        const std::vector<double> ms = timer.collect(4);
+        ASSERT_EQ(ms.size(), 4u);
+        EXPECT_GE(ms[0], 0.0);
+        EXPECT_GE(ms[1], 0.0);
+        EXPECT_EQ(ms[2], -1.0) << "a pass that did not run has no time";
+        EXPECT_GE(ms[3], 0.0);
+        EXPECT_EQ(timer.queriesThisFrame(), 0u);
+    }
+}
+
+} // namespace
+} // namespace speculum::test
