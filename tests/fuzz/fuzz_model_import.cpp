@@ -26,7 +26,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-using speculum::document::detail::ModelContent;
+using speculum::scene::detail::ModelContent;
 
 const fs::path& folder() {
     static const fs::path dir = [] {
@@ -114,23 +114,23 @@ std::vector<fs::path> writeObjReferences(const std::string& text) {
     return written;
 }
 
-const char* extensionFor(speculum::scene::ModelContent content) {
+const char* extensionFor(ModelContent content) {
     switch (content) {
-    case speculum::scene::ModelContent::GltfJson:
+    case ModelContent::GltfJson:
         return ".gltf";
-    case speculum::scene::ModelContent::Glb:
+    case ModelContent::Glb:
         return ".glb";
-    case speculum::scene::ModelContent::Xml:
+    case ModelContent::Xml:
         return ".dae";
-    case speculum::scene::ModelContent::Off:
+    case ModelContent::Off:
         return ".off";
-    case speculum::scene::ModelContent::Ply:
+    case ModelContent::Ply:
         return ".ply";
-    case speculum::scene::ModelContent::FbxBinary:
+    case ModelContent::FbxBinary:
         return ".fbx";
-    case speculum::scene::ModelContent::Text:
+    case ModelContent::Text:
         return ".obj";
-    case speculum::scene::ModelContent::Unknown:
+    case ModelContent::Unknown:
         break;
     }
     return ".bin";
@@ -139,18 +139,16 @@ const char* extensionFor(speculum::scene::ModelContent content) {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    using namespace speculum::document;
     using namespace speculum::scene;
     speculum::scene::setModelImportCpuLimit(5);
     const std::string bytes(reinterpret_cast<const char*>(data), size);
-    const speculum::scene::ModelContent content =
-        speculum::scene::detail::identifyModelContent(bytes.data(), bytes.size());
+    const ModelContent content = speculum::scene::detail::identifyModelContent(bytes.data(), bytes.size());
     const fs::path model = folder() / (std::string("model") + extensionFor(content));
     writeFile(model, bytes);
     std::vector<fs::path> references;
-    if (content == speculum::scene::ModelContent::GltfJson) {
+    if (content == ModelContent::GltfJson) {
         references = writeGltfReferences(QByteArray::fromRawData(bytes.data(), qsizetype(bytes.size())));
-    } else if (content == speculum::scene::ModelContent::Text) {
+    } else if (content == ModelContent::Text) {
         references = writeObjReferences(bytes);
     }
     std::vector<std::string> warnings;

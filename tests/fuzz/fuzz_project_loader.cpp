@@ -10,7 +10,6 @@
 #include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    using namespace speculum::document;
     using namespace speculum::scene;
     const QByteArray json(reinterpret_cast<const char*>(data), static_cast<qsizetype>(size));
     const QDir base(QStringLiteral("/nonexistent/project"));
