@@ -17,7 +17,7 @@ namespace {
 
 const std::vector<Family> kFamilies = {Family::Envmap,          Family::Parallax, Family::MirrorTechnique,
                                        Family::MirrorDepth,     Family::Shadows,  Family::Tessellation,
-                                       Family::ReflectedDetail, Family::Glossy};
+                                       Family::ReflectedDetail, Family::Glossy,  Family::Setting};
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -55,6 +55,8 @@ std::string familyTitle(Family family) {
         return "Big meshes in reflections: whole or simplified";
     case Family::Glossy:
         return "Rough reflections: which approximation at which roughness";
+    case Family::Setting:
+        return "Other settings";
     default:
         return "The scene as saved";
     }
@@ -93,6 +95,9 @@ std::string familyIntro(Family family) {
                "which grows with the distance beyond the mirror; the reflector reads its GGX pre-filtered "
                "map chain) at rising quality. Rows of one roughness compare with each other; the "
                "roughnesses are separate questions.";
+    case Family::Setting:
+        return "Each setting declared with values to sweep, one series per setting, each value against the "
+               "scene's reference, everything else as saved.";
     default:
         return {};
     }

@@ -2,7 +2,7 @@
 
 #include "accuracy/Sweep.hpp"
 #include "base/Result.hpp"
-#include "render/renderer/Renderer.hpp"
+#include "render/plan/FrameReport.hpp"
 
 #include <QJsonObject>
 #include <optional>

@@ -55,8 +55,8 @@ std::string methodId(const MapMethod& m) {
 
 int firstShadowPcf(const render::FrameInput& scene) {
     for (const render::Light& light : scene.lights)
-        if (light.shadows.enabled)
-            return light.shadows.pcf;
+        if (light.shadows.has_value())
+            return light.shadows->pcf;
     return 1;
 }
 
@@ -116,6 +116,8 @@ std::string familyName(Family family) {
         return "reflected-detail";
     case Family::Glossy:
         return "glossy";
+    case Family::Setting:
+        return "setting";
     }
     return "scene";
 }
@@ -123,7 +125,7 @@ std::string familyName(Family family) {
 std::optional<Family> familyFromName(const std::string& name) {
     for (Family f :
          {Family::Scene, Family::Envmap, Family::Parallax, Family::MirrorTechnique, Family::MirrorDepth,
-          Family::Shadows, Family::Tessellation, Family::ReflectedDetail, Family::Glossy})
+          Family::Shadows, Family::Tessellation, Family::ReflectedDetail, Family::Glossy, Family::Setting})
         if (familyName(f) == name)
             return f;
     return std::nullopt;
@@ -192,7 +194,7 @@ SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int
     SceneTraits t;
     t.mirrors = scene.mirrors.size();
     for (const render::Light& light : scene.lights)
-        t.shadowedLights += light.shadows.enabled ? 1 : 0;
+        t.shadowedLights += light.shadows.has_value() ? 1 : 0;
     t.teapotTessellation = teapotTessellation;
     for (const render::Mirror& m : scene.mirrors)
         t.roughMirrors += m.roughness > 0.0 ? 1 : 0;
@@ -203,218 +205,173 @@ SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int
     if (!scene.reflector || !scene.reflector->mesh)
         return t;
     t.reflector = true;
-    if (scene.reflector->parallax.shape != render::ParallaxProxy::Shape::None) {
-        t.ownProxy = true;
-        t.proxy = scene.reflector->parallax;
-        t.proxyMakesSense = true;
-        return t;
-    }
-    // No proxy of its own: a box around what the map sees, if that box encloses the reflector (a reflector
-    // outside the scene's bounds has nothing around it for a box to stand for).
-    render::FrameInput environment = scene;
-    environment.reflector.reset();
-    const render::math::Box around = render::math::sceneBounds(environment);
-    const render::math::Box own =
-        render::math::worldBounds(render::computeBounds(*scene.reflector->mesh), scene.reflector->world);
-    if (around.empty() || own.empty())
-        return t;
-    const double tolerance = 1e-6 * std::max(1.0, glm::length(around.max - around.min));
-    const bool encloses = glm::all(glm::lessThanEqual(around.min, own.min + tolerance)) &&
-                          glm::all(glm::greaterThanEqual(around.max, own.max - tolerance));
-    if (!encloses)
-        return t;
-    const glm::dvec3 centre = render::envmapCapture(scene).centre;
-    t.proxy.shape = render::ParallaxProxy::Shape::Box;
-    t.proxy.min = around.min - centre;
-    t.proxy.max = around.max - centre;
-    t.proxyMakesSense = true;
+    t.ownProxy = scene.reflector->parallax.has_value();
+    t.proxy = t.ownProxy ? scene.reflector->parallax : sceneProxy(scene);
+    t.proxyMakesSense = t.proxy.has_value();
     return t;
 }
 
-std::vector<Configuration> planSweep(const render::FrameInput& scene, const SceneTraits& traits,
-                                     const SweepOptions& options) {
-    std::vector<Configuration> out;
-    out.push_back({Family::Scene, "scene", "scene", "scene", {}, ReferenceKind::Scene});
+namespace {
 
-    if (traits.reflector) {
-        const render::Reflector& r = *scene.reflector;
-        const std::vector<int> resolutions = withSceneValue(
-            options.quick ? std::vector<int>{64, 128, 256} : std::vector<int>{64, 128, 256, 512},
-            r.resolution);
-        for (const MapMethod& method : kMethods)
-            for (int n : resolutions) {
-                Configuration c{Family::Envmap,
-                                "envmap-" + methodId(method) + "-" + std::to_string(n),
-                                std::to_string(n),
-                                methodName(method),
-                                {},
-                                ReferenceKind::Scene};
-                c.variation.map = method.map;
-                c.variation.fill = method.fill;
-                c.variation.resolution = n;
-                out.push_back(std::move(c));
-            }
-        if (traits.proxyMakesSense) {
-            // Quick: the scene's resolution only; full: how the benefit changes with resolution.
-            const std::vector<int> parallaxResolutions =
-                options.quick ? std::vector<int>{r.resolution} : resolutions;
-            for (bool on : {false, true})
-                for (int n : parallaxResolutions) {
-                    Configuration c{Family::Parallax,
-                                    std::string("parallax-") + (on ? "on" : "off") + "-" + std::to_string(n),
-                                    std::to_string(n),
-                                    on ? "parallax on" : "parallax off",
-                                    {},
-                                    ReferenceKind::Scene};
-                    c.variation.parallax = on;
-                    c.variation.resolution = n;
-                    out.push_back(std::move(c));
-                }
+using Configurations = std::vector<Configuration>;
+
+Configuration configuration(Family family, std::string id, std::string label, std::string series,
+                            Variation variation, ReferenceKind reference = ReferenceKind::Scene) {
+    return {family, std::move(id), std::move(label), std::move(series), std::move(variation), reference};
+}
+
+// Each map method at each resolution; parallax off and on where a proxy makes sense.
+void planEnvmap(Configurations& out, const render::FrameInput& scene, const SceneTraits& traits,
+                const SweepOptions& options) {
+    if (!traits.reflector)
+        return;
+    const int own = scene.reflector->resolution;
+    const std::vector<int> resolutions =
+        withSceneValue(options.quick ? std::vector<int>{64, 128, 256} : std::vector<int>{64, 128, 256, 512}, own);
+    for (const MapMethod& method : kMethods)
+        for (int n : resolutions) {
+            Variation v;
+            v.set(Part::Reflector, "map", int(method.map))
+                .set(Part::Reflector, "fill", int(method.fill))
+                .set(Part::Reflector, "resolution", n);
+            out.push_back(configuration(Family::Envmap, "envmap-" + methodId(method) + "-" + std::to_string(n),
+                                        std::to_string(n), methodName(method), v));
         }
+    if (!traits.proxyMakesSense)
+        return;
+    // Quick: the scene's resolution only; full: how the benefit changes with resolution.
+    for (bool on : {false, true})
+        for (int n : options.quick ? std::vector<int>{own} : resolutions) {
+            Variation v;
+            v.parallax = on;
+            v.set(Part::Reflector, "resolution", n);
+            out.push_back(configuration(Family::Parallax,
+                                        std::string("parallax-") + (on ? "on" : "off") + "-" + std::to_string(n),
+                                        std::to_string(n), on ? "parallax on" : "parallax off", v));
+        }
+}
+
+// Every mirror with each technique, and the mirror depth from 1 to a little beyond the scene's own.
+void planMirrors(Configurations& out, const render::FrameInput& scene, const SceneTraits& traits,
+                 const SweepOptions& options) {
+    if (traits.mirrors == 0)
+        return;
+    for (MirrorTechnique t : {MirrorTechnique::Stencil, MirrorTechnique::Texture}) {
+        Variation v;
+        v.set(Part::Mirrors, "technique", int(t));
+        out.push_back(configuration(Family::MirrorTechnique, "mirror-technique-" + techniqueName(t),
+                                    techniqueName(t), "technique", v));
     }
-
-    if (traits.mirrors > 0) {
-        for (MirrorTechnique t : {MirrorTechnique::Stencil, MirrorTechnique::Texture}) {
-            Configuration c{Family::MirrorTechnique,
-                            "mirror-technique-" + techniqueName(t),
-                            techniqueName(t),
-                            "technique",
-                            {},
-                            ReferenceKind::Scene};
-            c.variation.technique = t;
-            out.push_back(std::move(c));
-        }
-        const int own = scene.settings.mirrorDepth;
-        const int cap = options.quick ? std::min(std::max(own, 1), 4) : std::min(std::max(own, 1) + 2, 8);
-        std::vector<int> depths;
-        for (int d = 1; d <= cap; ++d)
-            depths.push_back(d);
-        for (int d : withSceneValue(depths, own)) {
-            Configuration c{Family::MirrorDepth,
-                            "mirror-depth-" + std::to_string(d),
-                            "depth " + std::to_string(d),
-                            "mirror depth",
-                            {},
-                            ReferenceKind::DeepMirrors};
-            c.variation.mirrorDepth = d;
-            out.push_back(std::move(c));
-        }
+    const int own = scene.settings.mirrorDepth;
+    const int cap = options.quick ? std::min(std::max(own, 1), 4) : std::min(std::max(own, 1) + 2, 8);
+    std::vector<int> depths;
+    for (int d = 1; d <= cap; ++d)
+        depths.push_back(d);
+    for (int d : withSceneValue(depths, own)) {
+        Variation v;
+        v.set(Part::Settings, "mirrorDepth", d);
+        out.push_back(configuration(Family::MirrorDepth, "mirror-depth-" + std::to_string(d),
+                                    "depth " + std::to_string(d), "mirror depth", v, ReferenceKind::DeepMirrors));
     }
+}
 
-    if (traits.shadowedLights > 0) {
+// PCF kernels against exact hard shadows; teapot tessellations against the finest.
+void planShadowsAndMeshes(Configurations& out, const render::FrameInput& scene, const SceneTraits& traits,
+                          const SweepOptions& options) {
+    if (traits.shadowedLights > 0)
         for (int k : withSceneValue({1, 3, 5, 7}, firstShadowPcf(scene))) {
-            Configuration c{Family::Shadows,
-                            "pcf-" + std::to_string(k),
-                            "pcf " + std::to_string(k),
-                            "PCF kernel",
-                            {},
-                            ReferenceKind::HardShadows};
-            c.variation.pcf = k;
-            out.push_back(std::move(c));
+            Variation v;
+            v.set(Part::Shadows, "pcf", k);
+            out.push_back(configuration(Family::Shadows, "pcf-" + std::to_string(k), "pcf " + std::to_string(k),
+                                        "PCF kernel", v, ReferenceKind::HardShadows));
         }
-    }
-
     if (traits.teapotTessellation) {
-        const std::vector<int> levels =
-            withSceneValue(options.quick ? std::vector<int>{2, 4, 8, 16} : std::vector<int>{2, 4, 8, 16, 32},
-                           *traits.teapotTessellation);
+        const std::vector<int> levels = withSceneValue(
+            options.quick ? std::vector<int>{2, 4, 8, 16} : std::vector<int>{2, 4, 8, 16, 32},
+            *traits.teapotTessellation);
         for (int n : levels) {
-            Configuration c{Family::Tessellation,
-                            "tessellation-" + std::to_string(n),
-                            std::to_string(n),
-                            "teapot tessellation",
-                            {},
-                            ReferenceKind::FineMesh};
-            c.variation.tessellation = n;
-            out.push_back(std::move(c));
+            Variation v;
+            v.tessellation = n;
+            out.push_back(configuration(Family::Tessellation, "tessellation-" + std::to_string(n),
+                                        std::to_string(n), "teapot tessellation", v, ReferenceKind::FineMesh));
         }
     }
-
-    if (traits.simplifiableMeshes > 0) {
+    if (traits.simplifiableMeshes > 0)
         // Against the scene's reference, which traces every mesh whole: what drawing reflections from the
         // simplified level costs in accuracy, and what it saves in time.
         for (bool simplified : {false, true}) {
-            Configuration c{Family::ReflectedDetail,
-                            std::string("reflected-detail-") + (simplified ? "simplified" : "full"),
-                            simplified ? "simplified" : "full",
-                            "reflected detail",
-                            {},
-                            ReferenceKind::Scene};
-            c.variation.simplifyReflections = simplified;
-            out.push_back(std::move(c));
+            Variation v;
+            v.set(Part::Settings, "simplifyReflections", simplified);
+            const std::string name = simplified ? "simplified" : "full";
+            out.push_back(
+                configuration(Family::ReflectedDetail, "reflected-detail-" + name, name, "reflected detail", v));
         }
-    }
-
-    if (traits.roughMirrors > 0 || traits.roughReflector) {
-        // At three roughnesses, each against its own traced reference: the cheap mip level, then the
-        // footprint (planar lobe taps, the reflector's pre-filtered chain) at rising quality.
-        const std::vector<GlossyQuality> qualities =
-            options.quick ? std::vector<GlossyQuality>{{4, 16}, {16, 64}}
-                          : std::vector<GlossyQuality>{{4, 16}, {16, 64}, {64, 256}};
-        const ReferenceKind kinds[3] = {ReferenceKind::RoughLow, ReferenceKind::RoughMid,
-                                        ReferenceKind::RoughHigh};
-        for (ReferenceKind kind : kinds) {
-            const double roughness = *referenceRoughness(kind);
-            const std::string r = roughnessText(roughness);
-            Configuration mip{Family::Glossy, "glossy-r" + r + "-mip", "mip", "r " + r + " mip", {}, kind};
-            mip.variation.roughness = roughness;
-            mip.variation.glossyFilter = render::GlossyFilter::Mip;
-            out.push_back(std::move(mip));
-            for (const GlossyQuality& q : qualities) {
-                Configuration c{Family::Glossy,
-                                "glossy-r" + r + "-footprint-" + std::to_string(q.taps) + "-" +
-                                    std::to_string(q.samples),
-                                qualityLabel(q, traits),
-                                "r " + r + " footprint",
-                                {},
-                                kind};
-                c.variation.roughness = roughness;
-                c.variation.glossyFilter = render::GlossyFilter::Footprint;
-                c.variation.glossyTaps = q.taps;
-                c.variation.prefilterSamples = q.samples;
-                out.push_back(std::move(c));
-            }
-        }
-    }
-    return out;
 }
 
-render::FrameInput applyVariation(const render::FrameInput& scene, const SceneTraits& traits,
-                                  const Variation& v, const TessellateTeapot& tessellate) {
-    render::FrameInput out = scene;
-    if (out.reflector) {
-        render::Reflector& r = *out.reflector;
-        r.map = v.map.value_or(r.map);
-        r.resolution = v.resolution.value_or(r.resolution);
-        r.fill = v.fill.value_or(r.fill);
-        if (v.parallax)
-            r.parallax = *v.parallax ? traits.proxy : render::ParallaxProxy{};
+// At three roughnesses, each against its own traced reference: the cheap mip level, then the footprint
+// (planar lobe taps, the reflector's pre-filtered chain) at rising quality.
+void planGlossy(Configurations& out, const SceneTraits& traits, const SweepOptions& options) {
+    if (traits.roughMirrors == 0 && !traits.roughReflector)
+        return;
+    const std::vector<GlossyQuality> qualities = options.quick
+                                                     ? std::vector<GlossyQuality>{{4, 16}, {16, 64}}
+                                                     : std::vector<GlossyQuality>{{4, 16}, {16, 64}, {64, 256}};
+    for (ReferenceKind kind : {ReferenceKind::RoughLow, ReferenceKind::RoughMid, ReferenceKind::RoughHigh}) {
+        const double roughness = *referenceRoughness(kind);
+        const std::string r = roughnessText(roughness);
+        Variation mip;
+        mip.roughness = roughness;
+        mip.set(Part::Settings, "glossyFilter", int(render::GlossyFilter::Mip));
+        out.push_back(configuration(Family::Glossy, "glossy-r" + r + "-mip", "mip", "r " + r + " mip", mip, kind));
+        for (const GlossyQuality& q : qualities) {
+            Variation v;
+            v.roughness = roughness;
+            v.set(Part::Settings, "glossyFilter", int(render::GlossyFilter::Footprint))
+                .set(Part::Settings, "glossyTaps", q.taps)
+                .set(Part::Settings, "prefilterSamples", q.samples);
+            out.push_back(configuration(Family::Glossy,
+                                        "glossy-r" + r + "-footprint-" + std::to_string(q.taps) + "-" +
+                                            std::to_string(q.samples),
+                                        qualityLabel(q, traits), "r " + r + " footprint", v, kind));
+        }
     }
-    if (v.technique)
-        for (render::Mirror& m : out.mirrors)
-            m.technique = *v.technique;
-    out.settings.mirrorDepth = v.mirrorDepth.value_or(out.settings.mirrorDepth);
-    if (v.pcf)
-        for (render::Light& light : out.lights)
-            if (light.shadows.enabled)
-                light.shadows.pcf = *v.pcf;
-    out.settings.simplifyReflections = v.simplifyReflections.value_or(out.settings.simplifyReflections);
-    if (v.roughness) {
-        for (render::Mirror& m : out.mirrors)
-            if (m.roughness > 0.0)
-                m.roughness = *v.roughness;
-        if (out.reflector && out.reflector->roughness > 0.0)
-            out.reflector->roughness = *v.roughness;
+}
+
+// Every declared field with sweep values of its own, on a scene that has a component of its part: each
+// value against the scene's reference (the scene's own value is the scene's configuration).
+void planDeclared(Configurations& out, const SceneTraits& traits) {
+    for (const auto& [part, spec] : declaredSweeps()) {
+        const bool present = part == Part::Settings || (part == Part::Mirrors && traits.mirrors > 0) ||
+                             (part == Part::Reflector && traits.reflector) ||
+                             (part == Part::Shadows && traits.shadowedLights > 0);
+        if (!present)
+            continue;
+        for (double x : spec->sweep) {
+            const render::FieldValue value = spec->type == render::FieldType::Number
+                                                 ? render::FieldValue(x)
+                                                 : render::FieldValue(static_cast<int>(x));
+            const std::string text = render::fieldValueText(*spec, value);
+            Variation v;
+            v.set(part, spec->name, value);
+            out.push_back(configuration(Family::Setting,
+                                        "setting-" + std::string(partName(part)) + "-" + std::string(spec->name) +
+                                            "-" + text,
+                                        std::string(spec->name) + " " + text, std::string(spec->label), v));
+        }
     }
-    out.settings.glossyFilter = v.glossyFilter.value_or(out.settings.glossyFilter);
-    out.settings.glossyTaps = v.glossyTaps.value_or(out.settings.glossyTaps);
-    out.settings.prefilterSamples = v.prefilterSamples.value_or(out.settings.prefilterSamples);
-    if (v.tessellation && tessellate) {
-        for (render::DrawItem& item : out.items)
-            item.mesh = tessellate(item.mesh, *v.tessellation);
-        if (out.reflector)
-            out.reflector->mesh = tessellate(out.reflector->mesh, *v.tessellation);
-    }
+}
+
+} // namespace
+
+std::vector<Configuration> planSweep(const render::FrameInput& scene, const SceneTraits& traits,
+                                     const SweepOptions& options) {
+    Configurations out;
+    out.push_back(configuration(Family::Scene, "scene", "scene", "scene", {}));
+    planEnvmap(out, scene, traits, options);
+    planMirrors(out, scene, traits, options);
+    planShadowsAndMeshes(out, scene, traits, options);
+    planGlossy(out, traits, options);
+    planDeclared(out, traits);
     return out;
 }
 
@@ -422,57 +379,11 @@ render::FrameInput referenceInput(const render::FrameInput& scene, ReferenceKind
                                   const TessellateTeapot& tessellate) {
     Variation v;
     if (kind == ReferenceKind::DeepMirrors)
-        v.mirrorDepth = kReferenceMirrorDepth;
+        v.set(Part::Settings, "mirrorDepth", kReferenceMirrorDepth);
     if (kind == ReferenceKind::FineMesh)
         v.tessellation = kReferenceTessellation;
     v.roughness = referenceRoughness(kind);
-    return applyVariation(scene, SceneTraits{}, v, tessellate);
-}
-
-Settings effectiveSettings(const render::FrameInput& applied, const SceneTraits& traits,
-                           const std::optional<int>& teapotTessellation) {
-    Settings s;
-    if (applied.reflector && traits.reflector) {
-        const render::Reflector& r = *applied.reflector;
-        s.emplace_back("map", mapName(r.map));
-        s.emplace_back("resolution", std::to_string(r.resolution));
-        if (r.map != ReflectorMap::Cube) // the cube is always drawn directly: it has no fill to choose
-            s.emplace_back("fill", fillName(r.fill));
-        s.emplace_back("parallax", r.parallax.shape == render::ParallaxProxy::Shape::None ? "off" : "on");
-    }
-    if (!applied.mirrors.empty()) {
-        const MirrorTechnique first = applied.mirrors.front().technique;
-        const bool mixed = std::any_of(applied.mirrors.begin(), applied.mirrors.end(),
-                                       [&](const render::Mirror& m) { return m.technique != first; });
-        s.emplace_back("technique", mixed ? "mixed" : techniqueName(first));
-        s.emplace_back("mirrorDepth", std::to_string(applied.settings.mirrorDepth));
-    }
-    std::set<int> kernels;
-    for (const render::Light& light : applied.lights)
-        if (light.shadows.enabled)
-            kernels.insert(light.shadows.pcf);
-    if (!kernels.empty()) {
-        std::string pcf; // lights with different kernels: "3/5"
-        for (int k : kernels)
-            pcf += (pcf.empty() ? "" : "/") + std::to_string(k);
-        s.emplace_back("pcf", pcf);
-    }
-    if (teapotTessellation)
-        s.emplace_back("tessellation", std::to_string(*teapotTessellation));
-    if (traits.simplifiableMeshes > 0)
-        s.emplace_back("reflectedDetail", applied.settings.simplifyReflections ? "simplified" : "full");
-    if (traits.roughMirrors > 0 || traits.roughReflector) {
-        double roughness = applied.reflector && traits.roughReflector ? applied.reflector->roughness : 0.0;
-        for (const render::Mirror& m : applied.mirrors)
-            roughness = std::max(roughness, m.roughness);
-        s.emplace_back("roughness", roughnessText(roughness));
-        const render::Settings& g = applied.settings;
-        s.emplace_back("glossy",
-                       g.glossyFilter == render::GlossyFilter::Mip
-                           ? std::string("mip")
-                           : "footprint " + qualityLabel({g.glossyTaps, g.prefilterSamples}, traits));
-    }
-    return s;
+    return applyVariation(scene, v, std::nullopt, tessellate);
 }
 
 } // namespace speculum::accuracy

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "accuracy/Variation.hpp"
 #include "render/frame/FrameInput.hpp"
 
 #include <functional>
@@ -21,6 +22,7 @@ enum class Family {
     Tessellation,    // tessellation of the built-in teapots
     ReflectedDetail, // big meshes in reflections: drawn whole, then at their simplified level
     Glossy,          // rough surfaces at roughness 0.1, 0.3, 0.6: each raster approximation and quality
+    Setting,         // a declared field with sweep values of its own (FieldSpec::sweep), one series each
 };
 
 // Stable names, used in file names, CSV and JSON: "envmap", "mirror-depth", ...
@@ -50,23 +52,6 @@ std::string referenceName(ReferenceKind kind); // "scene", "hard-shadows", "deep
 std::optional<ReferenceKind> referenceFromName(const std::string& name);
 std::string referenceDescription(ReferenceKind kind);
 
-// What a configuration changes; fields left empty keep the scene's value.
-struct Variation {
-    std::optional<render::ReflectorMap> map;
-    std::optional<int> resolution;
-    std::optional<render::ReflectorFill> fill;
-    std::optional<bool> parallax;
-    std::optional<render::MirrorTechnique> technique;
-    std::optional<int> mirrorDepth;
-    std::optional<int> pcf;
-    std::optional<int> tessellation;
-    std::optional<bool> simplifyReflections;
-    std::optional<double> roughness; // every surface that is rough in the scene
-    std::optional<render::GlossyFilter> glossyFilter;
-    std::optional<int> glossyTaps;
-    std::optional<int> prefilterSamples;
-};
-
 struct Configuration {
     Family family = Family::Scene;
     std::string id;     // unique and safe as a file name: "envmap-cube-128"
@@ -80,7 +65,7 @@ struct Configuration {
 struct SceneTraits {
     bool reflector = false;
     bool ownProxy = false;        // the scene's reflector has a parallax proxy of its own
-    render::ParallaxProxy proxy;  // the proxy "parallax on" uses (own or derived from the scene)
+    std::optional<render::ParallaxParams> proxy; // what "parallax on" uses: its own, or sceneProxy()
     bool proxyMakesSense = false; // own, or the scene's bounds enclose the reflector
     std::size_t mirrors = 0;
     std::size_t shadowedLights = 0;        // lights with shadows on
@@ -103,27 +88,9 @@ struct SweepOptions {
 std::vector<Configuration> planSweep(const render::FrameInput& scene, const SceneTraits& traits,
                                      const SweepOptions& options);
 
-// Replaces a built-in teapot's mesh by the same teapot at another tessellation; returns other meshes as
-// they are.
-using TessellateTeapot = std::function<render::MeshHandle(const render::MeshHandle& mesh, int tessellation)>;
-
-// The scene with a variation applied.
-render::FrameInput applyVariation(const render::FrameInput& scene, const SceneTraits& traits,
-                                  const Variation& variation, const TessellateTeapot& tessellate);
-
 // The frame each reference traces: the scene, changed as the reference kind says.
 render::FrameInput referenceInput(const render::FrameInput& scene, ReferenceKind kind,
                                   const TessellateTeapot& tessellate);
-
-// The effective value of every setting the scene has (whether swept in this configuration or not), in a
-// fixed order with the stable names of kSettingNames: ("map", "cube"), ("resolution", "128"), ...
-using Settings = std::vector<std::pair<std::string, std::string>>;
-Settings effectiveSettings(const render::FrameInput& applied, const SceneTraits& traits,
-                           const std::optional<int>& teapotTessellation);
-
-inline const std::vector<std::string> kSettingNames = {
-    "map",          "resolution",      "fill",      "parallax", "technique", "mirrorDepth", "pcf",
-    "tessellation", "reflectedDetail", "roughness", "glossy"};
 
 std::string mapName(render::ReflectorMap map);    // "cube", "dual-paraboloid", "tennis-ball"
 std::string fillName(render::ReflectorFill fill); // "direct", "resampled"

@@ -3,7 +3,7 @@
 #include "accuracy/Report.hpp"
 #include "accuracy/Results.hpp"
 #include "accuracy/StagedOutput.hpp"
-#include "accuracy/SweepRun.hpp"
+#include "accuracy/run/SweepRun.hpp"
 #include "app/OutputPaths.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"

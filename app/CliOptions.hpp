@@ -10,7 +10,7 @@ namespace speculum::app {
 
 enum class Command { Editor, Render, Explain, Bench, Time, Export, Help, Version };
 
-// The parsed command line (DESIGN.md, "Command line"). Values are validated here, before any work, so
+// The parsed command line. Values are validated here, before any work, so
 // bad input costs nothing and writes nothing.
 struct CliOptions {
     Command command = Command::Editor;

@@ -10,6 +10,7 @@
 #include "render/plan/FrameReport.hpp"
 #include "render/plan/Planner.hpp"
 #include "render/reference/Tracer.hpp"
+#include "scene/export/StillExport.hpp"
 #include "render/renderer/Renderer.hpp"
 #include "render/renderer/StillRenderer.hpp"
 #include "scene/export/GltfExport.hpp"
@@ -168,162 +169,102 @@ std::string sizeText(int w, int h) {
     return std::to_string(w) + "x" + std::to_string(h);
 }
 
-std::string fileName(const std::string& path) {
-    return std::filesystem::path(path).filename().string();
-}
-
 // What the Monte Carlo part of a reference render left: the noise of its rough reflections, in linear
 // radiance (the root mean square of the pixels' standard errors).
-std::string noiseLine(const render::reference::TraceResult& traced) {
+std::string noiseLine(const render::Image& image, const scene::TraceFigures& trace) {
     std::ostringstream line;
-    line << "reference: " << traced.image.width << "\u00d7" << traced.image.height << ", " << traced.paths
-         << (traced.paths == 1 ? " path" : " paths") << " per glossy pixel (" << traced.glossyPixels
-         << (traced.glossyPixels == 1 ? " pixel), " : " pixels), ");
-    if (traced.glossyPixels == 0)
+    line << "reference: " << image.width << "\u00d7" << image.height << ", " << trace.paths
+         << (trace.paths == 1 ? " path" : " paths") << " per glossy pixel (" << trace.glossyPixels
+         << (trace.glossyPixels == 1 ? " pixel), " : " pixels), ");
+    if (trace.glossyPixels == 0)
         line << "exact (no rough reflections)";
-    else if (std::isnan(traced.noiseRms))
+    else if (std::isnan(trace.noiseRms))
         line << "noise not estimated (one path has no spread)";
     else
-        line << "noise " << std::setprecision(2) << traced.noiseRms << " RMS standard error";
+        line << "noise " << std::setprecision(2) << trace.noiseRms << " RMS standard error";
     return line.str();
 }
 
-// `render --reference`: the exact tracer on the CPU, no GL. Same output checks and metadata as a
-// rasterized still; nothing is written on failure or cancel.
-int runReferenceRender(const CliOptions& options, Clock::time_point start) {
-    auto input = loadFrameInput(options);
-    if (!input) {
-        fail(input.error());
-        return 1;
-    }
-    auto tracer = render::reference::Tracer::create(*input);
-    if (!tracer) {
-        fail("render: " + tracer.error());
-        return 1;
-    }
-    render::reference::TraceSettings settings;
+// Checks the output before any work: an unsupported format, a missing folder, the project itself or a
+// size the format cannot hold cost nothing.
+base::Status checkRenderOutput(const CliOptions& options) {
+    if (!render::isSupportedImagePath(options.output))
+        return base::Error{base::quoted(options.output) +
+                           ": unsupported image format (supported: " + render::supportedImageFormats() + ")"};
+    if (base::Status where = checkOutputFile(options.output); !where)
+        return base::Error{"render: " + where.error()};
+    // The project itself before it is read; the models and textures it names once it is loaded.
+    if (base::Status distinct = checkNotAnInput(options.output, {options.project}); !distinct)
+        return base::Error{"render: " + distinct.error()};
+    return render::checkImageTarget(options.output, options.width, options.height);
+}
+
+scene::StillExportSettings stillSettings(const CliOptions& options) {
+    scene::StillExportSettings settings;
     settings.width = options.width;
     settings.height = options.height;
     settings.ssaa = options.ssaa;
+    settings.time = options.time;
+    settings.reference = options.reference;
     settings.samples = options.samples;
-    Progress tracing("tracing");
-    auto progress = [&](double fraction) {
-        // Once the render has taken a moment: nothing for tiny frames.
-        if (std::chrono::duration<double>(Clock::now() - start).count() > 0.5)
-            tracing.update(fraction);
-        return true;
-    };
-    auto traced = tracer->render(settings, progress);
-    tracing.finish();
-    if (!traced) {
-        fail("render: " + traced.error());
-        return 1;
-    }
-    printWarnings(lightDrops(*input));
-    printWarnings(traced->warnings);
-
-    std::ostringstream settingsText;
-    settingsText << "size " << sizeText(options.width, options.height) << ", ssaa " << options.ssaa
-                 << ", time " << options.time << " s, reference, " << traced->paths
-                 << (traced->paths == 1 ? " path" : " paths") << " per glossy sample";
-    std::ostringstream noiseText; // full precision, for scripts comparing renders
-    noiseText << std::setprecision(17) << traced->noiseRms;
-    render::ImageMetadata metadata;
-    metadata.attributes = {
-        {"Software", std::string("speculum ") + SPECULUM_VERSION},
-        {"ImageDescription",
-         "speculum reference render of " + fileName(options.project) + " (" + settingsText.str() + ")"},
-        {"speculum:scene", absoluteText(options.project)},
-        {"speculum:settings", settingsText.str()},
-        {"speculum:renderTimeMs", std::to_string(traced->totalMs)},
-        {"speculum:noiseRms", noiseText.str()},
-        {"speculum:glossyPixels", std::to_string(traced->glossyPixels)},
-        {"speculum:renderer", "reference ray tracer (Embree 3, " +
-                                  std::to_string(std::max(1u, std::thread::hardware_concurrency())) +
-                                  " threads)"},
-    };
-    if (base::Status written = render::writeImage(options.output, traced->image, metadata); !written) {
-        fail(written.error());
-        return 1;
-    }
-    std::cerr << "speculum: traced " << sizeText(options.width, options.height) << " with " << traced->samples
-              << (traced->samples == 1 ? " sample" : " samples") << " per pixel in "
-              << static_cast<int>(traced->totalMs + 0.5) << " ms\n";
-    std::cout << base::printable(options.output, 4096) << "\n" << noiseLine(*traced) << "\n";
-    return 0;
+    return settings;
 }
 
 } // namespace
 
+// The still through scene::writeStill, the path the editor's Export Still takes too: rasterized on an EGL
+// context, or traced by the exact tracer on the CPU (no GL) with --reference.
 int runRender(const CliOptions& options) {
     const auto start = Clock::now();
-    // Validate the output before any work: an unsupported format or a missing folder costs nothing.
-    if (!render::isSupportedImagePath(options.output)) {
-        fail(base::quoted(options.output) +
-             ": unsupported image format (supported: " + render::supportedImageFormats() + ")");
+    if (base::Status output = checkRenderOutput(options); !output) {
+        fail(output.error());
         return 1;
     }
-    if (base::Status where = checkOutputFile(options.output); !where) {
-        fail("render: " + where.error());
-        return 1;
-    }
-    // The project itself before it is read; the models and textures it names once it is loaded.
-    if (base::Status distinct = checkNotAnInput(options.output, {options.project}); !distinct) {
-        fail("render: " + distinct.error());
-        return 1;
-    }
-    if (base::Status target = render::checkImageTarget(options.output, options.width, options.height);
-        !target) {
-        fail(target.error());
-        return 1;
-    }
-    if (options.reference)
-        return runReferenceRender(options, start);
-    auto frame = prepare(options);
-    if (!frame) {
-        fail(frame.error());
-        return 1;
+    std::optional<HeadlessFrame> frame;
+    render::FrameInput input;
+    if (options.reference) {
+        auto loaded = loadFrameInput(options);
+        if (!loaded) {
+            fail(loaded.error());
+            return 1;
+        }
+        input = std::move(*loaded);
+    } else {
+        auto prepared = prepare(options);
+        if (!prepared) {
+            fail(prepared.error());
+            return 1;
+        }
+        frame = std::move(*prepared);
+        input = frame->input;
     }
     // Progress on stderr for renders that take a while: every sample when supersampling.
     const int samples = options.ssaa * options.ssaa;
-    Progress rendering("rendering");
-    auto progress = [&](double fraction, const std::string& stage) {
-        if (samples > 1 || std::chrono::duration<double>(Clock::now() - start).count() > 1.0)
-            rendering.update(fraction, stage);
+    Progress progress(options.reference ? "tracing" : "rendering");
+    const auto report = [&](double fraction, const std::string& stage) {
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        if (seconds > (options.reference ? 0.5 : 1.0) || (!options.reference && samples > 1))
+            progress.update(fraction, options.reference ? std::string() : stage);
         return true;
     };
-    render::StillSettings settings{options.width, options.height, options.ssaa};
-    auto still = render::renderStill(*frame->renderer, frame->input, settings, progress);
-    rendering.finish();
+    auto still = scene::writeStill(frame ? frame->renderer.get() : nullptr, input, absoluteText(options.project),
+                                   stillSettings(options), options.output, report,
+                                   frame ? frame->glDescription : std::string());
+    progress.finish();
     if (!still) {
         fail("render: " + still.error());
         return 1;
     }
-    printWarnings(frameDrops(frame->input, still->firstSample));
-    printWarnings(still->firstSample.warnings);
-
-    render::ImageMetadata metadata;
-    std::ostringstream settingsText;
-    settingsText << "size " << sizeText(options.width, options.height) << ", ssaa " << options.ssaa
-                 << ", time " << options.time << " s";
-    metadata.attributes = {
-        {"Software", std::string("speculum ") + SPECULUM_VERSION},
-        {"ImageDescription",
-         "speculum render of " + fileName(options.project) + " (" + settingsText.str() + ")"},
-        {"speculum:scene", absoluteText(options.project)},
-        {"speculum:settings", settingsText.str()},
-        {"speculum:renderTimeMs", std::to_string(still->totalMs)},
-        {"speculum:renderer", frame->glDescription},
-    };
-    if (base::Status written = render::writeImage(options.output, still->image, metadata); !written) {
-        fail(written.error());
-        return 1;
-    }
+    printWarnings(options.reference ? lightDrops(input) : frameDrops(input, still->still.firstSample));
+    printWarnings(still->warnings);
     if (!Progress::quiet())
-        std::cerr << "speculum: rendered " << sizeText(options.width, options.height) << " with "
-                  << still->samples << (still->samples == 1 ? " sample" : " samples") << " per pixel in "
-                  << static_cast<int>(still->totalMs + 0.5) << " ms\n";
+        std::cerr << "speculum: " << (options.reference ? "traced " : "rendered ")
+                  << sizeText(options.width, options.height) << " with " << still->still.samples
+                  << (still->still.samples == 1 ? " sample" : " samples") << " per pixel in "
+                  << static_cast<int>(still->still.totalMs + 0.5) << " ms\n";
     std::cout << base::printable(options.output, 4096) << "\n";
+    if (still->trace)
+        std::cout << noiseLine(still->still.image, *still->trace) << "\n";
     return 0;
 }
 

@@ -110,9 +110,9 @@ ProjectFiles checkProjectFiles(const std::string& project, const scene::Scene& s
         }
     };
     const auto textures = [&](const std::string& node, const scene::MaterialComponent& m) {
-        texture(node, m.texture);
-        texture(node, m.emissionTexture);
-        texture(node, m.normalTexture);
+        texture(node, m.texture.path);
+        texture(node, m.emissionTexture.path);
+        texture(node, m.normalTexture.path);
     };
     scene.forEachNode([&](const scene::Node& node) {
         const scene::NodeData& d = node.data();

@@ -73,7 +73,7 @@ FrameInput chromeScene(ReflectorMap map, ReflectorFill fill, int n) {
     Light light;
     light.name = "Light";
     light.position = {2.5, 5.0, 3.0};
-    light.shadows = {true, 1024, 5};
+    light.shadows = speculum::render::ShadowParams{1024, 5};
     input.lights = {light};
     Reflector r;
     r.name = "Chrome ball";

@@ -1,4 +1,4 @@
-// Frame cost against a peer (issue 17): the five scenes of benchmarks/scenes/ and the teapot demo,
+// Frame cost against a peer: the five scenes of benchmarks/scenes/ and the teapot demo,
 // each timed by the real CLI (`speculum time --json`, 1280×720, the median wall-clock frame time with the
 // pixels read back), next to two baselines measured in the same run: the same frame through the
 // half-float buffer and its shader composite (`--half-float`, the path every frame took before), and,

@@ -1,4 +1,4 @@
-// Idle cost of the editor (issue 16): the real `speculum PROJECT` on each static demo, left alone under a
+// Idle cost of the editor: the real `speculum PROJECT` on each static demo, left alone under a
 // display. After it has settled it must use almost nothing: the check is under 3% of one core (CPU time of
 // the whole process, every thread, from /proc/PID/stat). The teapot demo is animated; it is measured too,
 // for comparison (the editor plays a scene with animation when it opens it, so it keeps drawing).

@@ -87,7 +87,7 @@ FrameInput baseScene() {
     Light light;
     light.name = "Light";
     light.position = {1.5, 2.0, -3.0};
-    light.shadows = {true, 1024, 5};
+    light.shadows = speculum::render::ShadowParams{1024, 5};
     input.lights = {light};
     return input;
 }

@@ -1,4 +1,4 @@
-// Frame rate of the editor's viewport while the view is orbited (issue 16, item 7): each demo opened in a
+// Frame rate of the editor's viewport while the view is orbited: each demo opened in a
 // MainWindow at its default size, a left-button drag around the view for about 3 s, with adaptive
 // resolution (previews at a reduced resolution while navigating) and without it. One step = one mouse move
 // and the frame it causes, as the editor sees a drag whose mouse moves come faster than its frames. The

@@ -1,4 +1,4 @@
-// The Blinn-Phong material of DESIGN.md, shared by objects, mirror surfaces and the reflector
+// The Blinn-Phong material, shared by objects, mirror surfaces and the reflector
 // (render::Material in FrameInput.hpp; render/reference/Shading.cpp is its twin):
 //   base     = color · texture.rgb · vertexColor.rgb
 //   emitted  = emission · emissionTexture.rgb

@@ -15,7 +15,7 @@ ComponentInfo materialGroup();
 ComponentInfo lightGroup();
 ComponentInfo animationGroup();
 
-// ReflectionProperties.cpp
+// (mirror and reflector: NodeProperties.cpp too)
 ComponentInfo mirrorGroup();
 ComponentInfo reflectorGroup();
 

@@ -1,8 +1,9 @@
 #include "editor/document/Properties.hpp"
 
+#include "editor/document/FieldProperties.hpp"
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
-#include "render/frame/GlossyLimits.hpp"
+#include "render/frame/Settings.hpp"
 #include "render/frame/SceneLimits.hpp"
 #include "render/frame/SceneNames.hpp"
 #include "scene/model/SceneChecks.hpp"
@@ -32,104 +33,12 @@ QString rangeText(const PropertyInfo& info) {
     return QStringLiteral("at most %1").arg(formatNumber(info.maximum));
 }
 
-std::vector<Property<scene::SceneSettings>> makeSettingsProperties() {
-    std::vector<Property<scene::SceneSettings>> list;
-    list.push_back(color<scene::SceneSettings>(QStringLiteral("settings.background"),
-                                               QStringLiteral("Background"),
-                                               [](scene::SceneSettings& s) { return &s.background; }));
-    list.push_back(integer<scene::SceneSettings>(
-        QStringLiteral("settings.mirrorDepth"), QStringLiteral("Mirror depth"),
-        [](scene::SceneSettings& s) { return &s.mirrorDepth; }, {0, render::kMaxMirrorDepth}, {}, {},
-        QStringLiteral("How many reflections of reflections are drawn")));
-    list.push_back(
-        slider(number<scene::SceneSettings>(QStringLiteral("settings.ambient"), QStringLiteral("Ambient"),
-                                            [](scene::SceneSettings& s) { return &s.ambient; }, {0.0, 1.0}),
-               0.0, 1.0));
-    list.push_back(boolean<scene::SceneSettings>(
-        QStringLiteral("settings.simplifyReflections"), QStringLiteral("Simplify big meshes in reflections"),
-        [](const scene::SceneSettings& s) { return s.simplifyReflections; },
-        [](scene::SceneSettings& s, bool on) -> base::Status {
-            s.simplifyReflections = on;
-            return base::Done{};
-        },
-        QStringLiteral("Mirrors and the reflector's map draw meshes of more than 100 000 triangles at a "
-                       "simplified level")));
-    QStringList filters;
-    for (const render::names::Name& n : render::names::kGlossyFilters)
-        filters << QString::fromUtf8(n.label.data(), qsizetype(n.label.size()));
-    list.push_back(enumeration<scene::SceneSettings>(
-        QStringLiteral("settings.glossyFilter"), QStringLiteral("Rough reflections"), filters,
-        [](const scene::SceneSettings& s) { return static_cast<int>(s.glossyFilter); },
-        [](scene::SceneSettings& s, int i) -> base::Status {
-            s.glossyFilter = static_cast<scene::GlossyFilter>(i);
-            return base::Done{};
-        }));
-    list.back().info.tooltip =
-        QStringLiteral("How rough mirrors and the rough reflector are approximated: one mip level chosen by "
-                       "the roughness (cheap), or the GGX lobe's footprint on planar mirrors and a "
-                       "pre-filtered map chain on the reflector");
-    list.push_back(integer<scene::SceneSettings>(
-        QStringLiteral("settings.glossyTaps"), QStringLiteral("Rough mirror taps"),
-        [](scene::SceneSettings& s) { return &s.glossyTaps; },
-        {render::kMinGlossyTaps, render::kMaxGlossyTaps}, {}, {},
-        QStringLiteral("Samples of the GGX lobe per pixel of a rough planar mirror (lobe footprint)")));
-    list.push_back(integer<scene::SceneSettings>(
-        QStringLiteral("settings.prefilterSamples"), QStringLiteral("Pre-filter samples"),
-        [](scene::SceneSettings& s) { return &s.prefilterSamples; },
-        {render::kMinPrefilterSamples, render::kMaxPrefilterSamples}, {}, {},
-        QStringLiteral("Samples of the GGX lobe per texel when the reflector's map is pre-filtered")));
-    return list;
-}
-
-std::vector<Property<scene::CameraData>> makeCameraProperties() {
-    std::vector<Property<scene::CameraData>> list;
-    const NumberRange kCoordinate{-render::kMaxCoordinate, render::kMaxCoordinate};
-    // Position and target must differ and up must not be parallel to the view: checked on the whole camera.
-    const auto checkCamera = [](Property<scene::CameraData> p) {
-        auto set = p.set;
-        p.set = [set](scene::CameraData& c, const QVariant& v) -> base::Status {
-            scene::CameraData copy = c;
-            if (auto s = set(copy, v); !s) {
-                return s;
-            }
-            // The project reader's rule for the whole camera (SceneChecks.hpp), word for word.
-            if (const std::optional<scene::FieldProblem> problem = scene::cameraProblem(copy)) {
-                static const std::map<std::string, std::string> labels{
-                    {"position", "Position"},  {"target", "Target"}, {"up", "Up"},
-                    {"fovY", "Field of view"}, {"near", "Near"},     {"far", "Far"}};
-                const auto label = labels.find(problem->field);
-                return base::Error{"Camera " + (label != labels.end() ? label->second : problem->field) +
-                                   " " + problem->what};
-            }
-            c = std::move(copy);
-            return base::Done{};
-        };
-        return p;
-    };
-    using V3 = Access<scene::CameraData, glm::dvec3>;
-    list.push_back(checkCamera(vector<scene::CameraData, 3>(
-        QStringLiteral("camera.position"), QStringLiteral("Position"),
-        V3([](scene::CameraData& c) { return &c.position; }), kCoordinate, QStringLiteral(" u"))));
-    list.push_back(checkCamera(vector<scene::CameraData, 3>(
-        QStringLiteral("camera.target"), QStringLiteral("Target"),
-        V3([](scene::CameraData& c) { return &c.target; }), kCoordinate, QStringLiteral(" u"))));
-    list.push_back(checkCamera(vector<scene::CameraData, 3>(QStringLiteral("camera.up"), QStringLiteral("Up"),
-                                                            V3([](scene::CameraData& c) { return &c.up; }),
-                                                            kCoordinate)));
-    list.push_back(
-        checkCamera(slider(number<scene::CameraData>(
-                               QStringLiteral("camera.fovY"), QStringLiteral("Field of view"),
-                               [](scene::CameraData& c) { return &c.fovY; }, {0.0, 180.0, true, true},
-                               QStringLiteral("°"), QStringLiteral("Vertical, in degrees")),
-                           10.0, 120.0, 1, 1.0)));
-    list.push_back(checkCamera(number<scene::CameraData>(
-        QStringLiteral("camera.near"), QStringLiteral("Near"), [](scene::CameraData& c) { return &c.near; },
-        {render::kMinNear, render::kMaxCoordinate}, QStringLiteral(" u"),
-        QStringLiteral("At most %1 times nearer than Far (depth-buffer precision)")
-            .arg(formatNumber(render::kMaxFarNearRatio)))));
-    list.push_back(checkCamera(number<scene::CameraData>(
-        QStringLiteral("camera.far"), QStringLiteral("Far"), [](scene::CameraData& c) { return &c.far; },
-        {0.0, kInf, true}, QStringLiteral(" u"))));
+// The scene's settings and camera, from their declarations; the camera's rules across fields (a target
+// away from the position, ...) are checked on the whole camera, as the project reader does.
+template <typename T>
+std::vector<Property<T>> declaredProperties(const QString& prefix) {
+    std::vector<Property<T>> list;
+    fieldprops::addProperties<T, T>(list, prefix, [](T& value) { return &value; }, {});
     return list;
 }
 
@@ -183,12 +92,12 @@ const Property<scene::NodeData>* findNodeProperty(const QString& key) {
 }
 
 const std::vector<Property<scene::SceneSettings>>& settingsProperties() {
-    static const auto list = makeSettingsProperties();
+    static const auto list = declaredProperties<scene::SceneSettings>(QStringLiteral("settings"));
     return list;
 }
 
 const std::vector<Property<scene::CameraData>>& cameraProperties() {
-    static const auto list = makeCameraProperties();
+    static const auto list = declaredProperties<scene::CameraData>(QStringLiteral("camera"));
     return list;
 }
 

@@ -1,6 +1,6 @@
 #include "editor/ui/ExactComparison.hpp"
 
-#include "accuracy/Measure.hpp"
+#include "accuracy/run/Measure.hpp"
 #include "editor/ui/Viewport.hpp"
 #include "render/image/ColorSpace.hpp"
 #include "render/metrics/ErrorMetrics.hpp"

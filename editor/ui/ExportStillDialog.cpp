@@ -1,6 +1,7 @@
 #include "editor/ui/ExportStillDialog.hpp"
 
 #include "render/frame/SceneLimits.hpp"
+#include "render/reference/Tracer.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -37,7 +38,32 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
     : QDialog(parent) {
     setWindowTitle(tr("Export Still"));
     auto* form = new QFormLayout;
+    addFileRows(form, suggestedPath);
+    addSizeRows(form);
+    addTimeRows(form, time);
+    addCameraRows(form);
+    addReferenceRows(form);
 
+    m_error = new QLabel(this);
+    m_error->setStyleSheet(QStringLiteral("color: #b02020;"));
+    m_error->setWordWrap(true);
+    m_error->hide();
+
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
+    connect(buttons, &QDialogButtonBox::accepted, this, &ExportStillDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_error);
+    layout->addWidget(buttons);
+    formatChanged();
+    timeChanged();
+    referenceChanged();
+}
+
+void ExportStillDialog::addFileRows(QFormLayout* form, const QString& suggestedPath) {
     m_path = new QLineEdit(suggestedPath, this);
     m_path->setObjectName(QStringLiteral("stillPath"));
     auto* browse = new QToolButton(this);
@@ -53,15 +79,12 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
     for (const Format& f : kFormats) {
         m_format->addItem(tr(f.name), QString::fromLatin1(f.suffix));
     }
-    const QString suffix = QFileInfo(suggestedPath).suffix().toLower();
-    for (int i = 0; i < m_format->count(); ++i) {
-        if (m_format->itemData(i).toString() == suffix) {
-            m_format->setCurrentIndex(i);
-        }
-    }
+    selectFormatOf(suggestedPath);
     form->addRow(tr("Format"), m_format);
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportStillDialog::formatChanged);
+}
 
+void ExportStillDialog::addSizeRows(QFormLayout* form) {
     m_width = new QSpinBox(this);
     m_height = new QSpinBox(this);
     for (QSpinBox* s : {m_width, m_height}) {
@@ -86,9 +109,11 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
     m_ssaa->setPrefix(tr("N = "));
     m_ssaa->setToolTip(tr("Supersampling: N×N samples per pixel (the CLI's --ssaa N)"));
     form->addRow(tr("Supersampling"), m_ssaa);
+}
 
-    // The scene's own start by default, as `speculum render` renders without --time (the clock may be
-    // anywhere while it plays); the time slider's time is one choice away, and the dialog says which.
+// The scene's own start by default, as `speculum render` renders without --time (the clock may be anywhere
+// while it plays); the time slider's time is one choice away, and the dialog says which.
+void ExportStillDialog::addTimeRows(QFormLayout* form, double time) {
     m_clockTime = time;
     m_timeSource = new QComboBox(this);
     m_timeSource->setObjectName(QStringLiteral("stillTimeSource"));
@@ -117,13 +142,17 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
         timeChanged();
     });
     connect(m_time, &QDoubleSpinBox::valueChanged, this, &ExportStillDialog::timeChanged);
+}
 
+void ExportStillDialog::addCameraRows(QFormLayout* form) {
     m_camera = new QComboBox(this);
     m_camera->setObjectName(QStringLiteral("stillCamera"));
     m_camera->addItem(tr("Scene camera (as the CLI renders)"));
     m_camera->addItem(tr("Current view"));
     form->addRow(tr("Camera"), m_camera);
+}
 
+void ExportStillDialog::addReferenceRows(QFormLayout* form) {
     m_reference = new QCheckBox(tr("Exact reference (ray traced)"), this);
     m_reference->setObjectName(QStringLiteral("stillReference"));
     m_reference->setToolTip(tr("The CPU ray tracer, as `speculum render --reference`: exact mirrors, "
@@ -131,23 +160,30 @@ ExportStillDialog::ExportStillDialog(const QString& suggestedPath, double time, 
                                "minutes; the progress dialog can cancel it, and a cancelled export writes "
                                "nothing."));
     form->addRow(QString(), m_reference);
+    connect(m_reference, &QCheckBox::toggled, this, &ExportStillDialog::referenceChanged);
 
-    m_error = new QLabel(this);
-    m_error->setStyleSheet(QStringLiteral("color: #b02020;"));
-    m_error->setWordWrap(true);
-    m_error->hide();
+    // The tracer's paths per sub-sample that meets a rough surface, as the CLI's --samples: more paths,
+    // less noise (the file's metadata gives the noise left).
+    m_samples = new QSpinBox(this);
+    m_samples->setObjectName(QStringLiteral("stillSamples"));
+    m_samples->setRange(render::reference::kMinTraceSamples, render::reference::kMaxTraceSamples);
+    m_samples->setValue(scene::StillExportSettings{}.samples);
+    m_samples->setSuffix(tr(" paths"));
+    m_samples->setToolTip(tr("Paths per sample that meets a rough surface (the CLI's --samples N)"));
+    form->addRow(tr("Samples"), m_samples);
+}
 
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-    buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
-    connect(buttons, &QDialogButtonBox::accepted, this, &ExportStillDialog::accept);
-    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+void ExportStillDialog::referenceChanged() {
+    m_samples->setEnabled(m_reference->isChecked());
+}
 
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(form);
-    layout->addWidget(m_error);
-    layout->addWidget(buttons);
-    formatChanged();
-    timeChanged();
+void ExportStillDialog::selectFormatOf(const QString& path) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    for (int i = 0; i < m_format->count(); ++i) {
+        if (m_format->itemData(i).toString() == suffix) {
+            m_format->setCurrentIndex(i);
+        }
+    }
 }
 
 void ExportStillDialog::timeChanged() {
@@ -182,12 +218,7 @@ void ExportStillDialog::browse() {
                                                       tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr)"));
     if (!path.isEmpty()) {
         m_path->setText(path);
-        const QString suffix = QFileInfo(path).suffix().toLower();
-        for (int i = 0; i < m_format->count(); ++i) {
-            if (m_format->itemData(i).toString() == suffix) {
-                m_format->setCurrentIndex(i);
-            }
-        }
+        selectFormatOf(path);
     }
 }
 
@@ -206,11 +237,12 @@ scene::StillExportSettings ExportStillDialog::settings() const {
     s.ssaa = m_ssaa->value();
     s.time = m_time->value();
     s.reference = m_reference->isChecked();
+    s.samples = m_samples->value();
     return s;
 }
 
 void ExportStillDialog::accept() {
-    if (auto valid = scene::validateStillExport(settings(), outputPath()); !valid) {
+    if (auto valid = scene::validateStillExport(settings(), outputPath().toStdString()); !valid) {
         m_error->setText(QString::fromStdString(valid.error()));
         m_error->show();
         return;

@@ -7,6 +7,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -32,7 +33,14 @@ public:
     void accept() override; // refuses invalid settings with a message
 
 private:
+    void addFileRows(QFormLayout* form, const QString& suggestedPath);
+    void addSizeRows(QFormLayout* form);
+    void addTimeRows(QFormLayout* form, double time);
+    void addCameraRows(QFormLayout* form);
+    void addReferenceRows(QFormLayout* form);
+    void selectFormatOf(const QString& path);
     void formatChanged();
+    void referenceChanged();
     void browse();
     void timeChanged();
 
@@ -47,6 +55,7 @@ private:
     double m_clockTime = 0.0;
     QComboBox* m_camera = nullptr;
     QCheckBox* m_reference = nullptr;
+    QSpinBox* m_samples = nullptr;
     QLabel* m_error = nullptr;
 };
 

@@ -173,6 +173,11 @@ private slots:
     void onWarningsChanged(const QStringList& warnings);
 
 private:
+    base::Result<scene::StillExportResult> exportRasterStill(const QString& path,
+                                                             const scene::StillExportSettings& settings,
+                                                             const render::ProgressCallback& progress);
+    void logStillExport(const QString& path, const scene::StillExportSettings& settings,
+                        base::Result<scene::StillExportResult>& result);
     void createActions();
     void createAddMenu();
     void createStatusBar();
@@ -233,7 +238,7 @@ private:
     QToolButton* m_importCancel = nullptr;
     QAction* m_fitImportsAction = nullptr;
 
-    // ---- issue 16, time (MainWindowTime.cpp): the timeline toolbar (Play, Rewind, the time slider and
+    // ---- time (MainWindowTime.cpp): the timeline toolbar (Play, Rewind, the time slider and
     // its "t = … s" readout) and the clock back to 0, paused, whenever the document is replaced (New, Open,
     // Restore). The slider's range is one loop of the scene's animation, kept up to date on every edit.
     void createTimeline();
@@ -244,7 +249,7 @@ private:
     void rememberEditorView(); // the viewport's view into the document, for the next save
     class TimeSlider* m_timeSlider = nullptr;
 
-    // ---- issue 16, input (MainWindowActions.cpp): View ▸ Invert Vertical Orbit, remembered in QSettings.
+    // ---- input (MainWindowActions.cpp): View ▸ Invert Vertical Orbit, remembered in QSettings.
     // Off (the default): dragging down raises the view, as in Blender and three.js (ViewCamera::orbitByDrag).
 public:
     bool invertsVerticalOrbit() const;

@@ -8,6 +8,7 @@
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "render/gl/HeadlessContext.hpp"
 #include "scene/export/GltfExport.hpp"
 #include "scene/import/ModelFormats.hpp"
 #include "scene/model/Scene.hpp"
@@ -140,43 +141,58 @@ base::Status MainWindow::exportGltfFile(const QString& path) {
 base::Result<scene::StillExportResult> MainWindow::exportStillFile(const QString& path,
                                                                    const scene::StillExportSettings& settings,
                                                                    const render::ProgressCallback& progress) {
-    if (auto valid = scene::validateStillExport(settings, path); !valid) {
+    if (auto valid = scene::validateStillExport(settings, path.toStdString()); !valid) {
         return base::Error{valid.error()};
     }
-    if (!m_viewport->isValid() || !m_viewport->renderer()) {
+    // An exact still needs no GL: the tracer draws it, as `speculum render --reference` does.
+    if (!settings.reference && (!m_viewport->isValid() || !m_viewport->renderer())) {
         return base::Error{m_viewport->rendererError().isEmpty()
                                ? std::string("the viewport has no OpenGL context yet")
                                : m_viewport->rendererError().toStdString()};
     }
     // The scene's model files are read on workers: a still must not lack one that is still loading.
     m_viewport->waitForModels();
-    // Render on the viewport's context, with its renderer: the same renderer code the CLI uses. Anything
-    // the progress callback lets run (the event loop) may make another context current: take it back.
+    auto result = settings.reference
+                      ? scene::exportStill(nullptr, scene(), m_viewport->meshes(), settings, path, progress)
+                      : exportRasterStill(path, settings, progress);
+    logStillExport(path, settings, result);
+    return result;
+}
+
+// Renders on the viewport's context, with its renderer: the same renderer code the CLI uses. Anything the
+// progress callback lets run (the event loop) may make another context current: take it back.
+base::Result<scene::StillExportResult> MainWindow::exportRasterStill(const QString& path,
+                                                                     const scene::StillExportSettings& settings,
+                                                                     const render::ProgressCallback& progress) {
     m_viewport->makeCurrent();
     const render::ProgressCallback keepContext = [&](double fraction, const std::string& stage) {
         const bool goOn = !progress || progress(fraction, stage);
         m_viewport->makeCurrent();
         return goOn;
     };
-    auto result = scene::exportStill(*m_viewport->renderer(), scene(), m_viewport->meshes(), settings, path,
-                                     keepContext, "editor viewport context");
+    auto result = scene::exportStill(m_viewport->renderer(), scene(), m_viewport->meshes(), settings, path,
+                                     keepContext, render::gl::contextDescription());
     m_viewport->doneCurrent();
     m_viewport->update();
-    if (result) {
-        result->warnings = m_viewport->correctModelWarnings(std::move(result->warnings));
-        for (const auto& w : result->warnings) {
-            logMessage(QString::fromStdString(w));
-        }
-        logMessage(tr("Exported %1 (%2×%3, %4 samples per pixel, %5 ms)")
-                       .arg(path)
-                       .arg(settings.width)
-                       .arg(settings.height)
-                       .arg(result->still.samples)
-                       .arg(result->still.totalMs, 0, 'f', 0));
-    } else {
-        logMessage(tr("Still export failed: %1").arg(QString::fromStdString(result.error())));
-    }
     return result;
+}
+
+void MainWindow::logStillExport(const QString& path, const scene::StillExportSettings& settings,
+                                base::Result<scene::StillExportResult>& result) {
+    if (!result) {
+        logMessage(tr("Still export failed: %1").arg(QString::fromStdString(result.error())));
+        return;
+    }
+    result->warnings = m_viewport->correctModelWarnings(std::move(result->warnings));
+    for (const auto& w : result->warnings) {
+        logMessage(QString::fromStdString(w));
+    }
+    logMessage(tr("Exported %1 (%2×%3, %4 samples per pixel, %5 ms)")
+                   .arg(path)
+                   .arg(settings.width)
+                   .arg(settings.height)
+                   .arg(result->still.samples)
+                   .arg(result->still.totalMs, 0, 'f', 0));
 }
 
 // ---- menu actions ----
@@ -423,7 +439,7 @@ void MainWindow::createActions() {
                        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A)),
             &QAction::triggered, m_selection, &view::Selection::clear);
     // Editing shortcuts work wherever the focus is in the window, the scene tree and the docks as well as
-    // the viewport (issue 16), as in Blender, Godot and Unity. They do not steal keys from text fields:
+    // the viewport, as in Blender, Godot and Unity. They do not steal keys from text fields:
     // before a shortcut fires Qt sends the focus widget a ShortcutOverride, which line edits, spin boxes
     // and the tree's rename editor accept for the keys they type with (Delete, Ctrl+A, letters), so
     // Delete in a name field deletes characters and Ctrl+A selects its text.

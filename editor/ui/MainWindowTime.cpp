@@ -1,4 +1,4 @@
-// The main window's timeline (issue 16): a toolbar along the bottom with Play, Rewind and the time slider,
+// The main window's timeline: a toolbar along the bottom with Play, Rewind and the time slider,
 // and the clock that starts over, paused, with every document.
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/TimeSlider.hpp"

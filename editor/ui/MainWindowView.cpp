@@ -1,10 +1,10 @@
-// The main window's part in the editor view (issue 16): the view presets and guides, the vertical orbit
+// The main window's part in the editor view: the view presets and guides, the vertical orbit
 // preference, and the project's saved editor view ("editorView"), which is put in place when a document
 // opens and taken from the viewport when it is saved. Moving the view is never an edit.
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/ViewPresetActions.hpp"
 #include "editor/ui/Viewport.hpp"
-#include "scene/model/EditorView.hpp"
+#include "scene/model/SceneData.hpp"
 #include "scene/model/Scene.hpp"
 
 namespace speculum::ui {
@@ -25,9 +25,7 @@ void MainWindow::rememberEditorView() {
     scene::EditorView view;
     view.position = position;
     view.target = target;
-    if (const auto& old = scene().editorView()) {
-        view.extra = old->extra; // fields of a newer speculum, written back
-    }
+    // The file's unknown fields of the view stay with the scene (SceneData::unknown), written back.
     scene().setEditorView(view); // the scene drops a view its file could not hold
 }
 

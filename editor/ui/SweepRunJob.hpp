@@ -1,6 +1,6 @@
 #pragma once
 
-#include "accuracy/SweepRun.hpp"
+#include "accuracy/run/SweepRun.hpp"
 
 #include <QObject>
 #include <QString>

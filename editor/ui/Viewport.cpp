@@ -59,12 +59,12 @@ Viewport::Viewport(scene::Scene& scene, scene::MeshLibrary& meshes, AnimationClo
     // An sRGB colour texture: the renderer draws a frame that needs no half-float buffer straight into it
     // (render::RenderTarget::srgbDepthStencil), with no copy; Qt composes it into the window as sRGB.
     setTextureFormat(kSrgbTextureFormat);
-    m_view.reset(scene::toRender(m_scene.camera()));
+    m_view.reset(m_scene.camera());
     m_overlay = new ViewportOverlay(*this);
     m_models = new ViewportModels(m_meshes, this);
     connect(m_models, &ViewportModels::changed, this, qOverload<>(&Viewport::update));
 
-    // The viewport draws only when what it shows changes (issue 16: a static scene costs nothing at idle):
+    // The viewport draws only when what it shows changes (a static scene costs nothing at idle):
     // an edit, a new document, navigation, a time jump, a model read in, a resize, or the clock running
     // over a scene where something moves. Nothing the frame reports leads back to another frame.
     connect(&m_scene, &scene::Scene::changed, this, [this] {
@@ -167,12 +167,12 @@ void Viewport::setLookThroughSceneCamera(bool on) {
 }
 
 void Viewport::resetView() {
-    m_view.reset(scene::toRender(m_scene.camera()));
+    m_view.reset(m_scene.camera());
     update();
 }
 
 render::Camera Viewport::sceneCamera() const {
-    return scene::toRender(m_scene.camera());
+    return m_scene.camera();
 }
 
 void Viewport::setViewCamera(const render::Camera& camera) {
@@ -399,11 +399,13 @@ void Viewport::paintGL() {
         // the maps as they are.
         if (m_drag == Drag::Handle) {
             for (render::Light& light : input.lights) {
-                int size = light.shadows.mapSize;
+                if (!light.shadows)
+                    continue;
+                int size = light.shadows->mapSize;
                 for (double s = level.scale; s <= 0.5 && size > kMinPreviewShadowMap; s *= 2.0) {
                     size /= 2;
                 }
-                light.shadows.mapSize = std::min(light.shadows.mapSize, std::max(size, kMinPreviewShadowMap));
+                light.shadows->mapSize = std::min(light.shadows->mapSize, std::max(size, kMinPreviewShadowMap));
             }
         }
     }

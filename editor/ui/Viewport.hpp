@@ -118,7 +118,7 @@ public:
     void setGuidesVisible(bool visible);
     bool guidesVisible() const;
 
-    // Adaptive resolution (issue 16): while the view is navigated (orbit, pan, zoom, the wheel) or a
+    // Adaptive resolution: while the view is navigated (orbit, pan, zoom, the wheel) or a
     // handle is dragged, frames are drawn at a reduced resolution, scaled up, chosen from the measured
     // frame time so a frame takes about previewFrameBudget() (never below a quarter of the width and
     // height), then with fewer levels of mirror nesting when that is not enough; meanwhile the environment

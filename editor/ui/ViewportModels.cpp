@@ -74,9 +74,9 @@ void ViewportModels::prepare(const scene::Scene& scene) {
         }
         if (d.material) {
             // "/abs/model.glb#*0": a texture embedded in a model file, which the library reads for it.
-            for (const std::string* texture :
+            for (const render::TextureSource* texture :
                  {&d.material->texture, &d.material->emissionTexture, &d.material->normalTexture}) {
-                const std::string path = absolute(*texture);
+                const std::string path = absolute(texture->path);
                 const std::size_t hash = path.rfind('#');
                 if (hash != std::string::npos && hash > 0 &&
                     !QFileInfo(QString::fromStdString(path)).exists()) {

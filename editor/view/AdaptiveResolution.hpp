@@ -2,7 +2,7 @@
 
 namespace speculum::view {
 
-// How much a preview frame gives up while the view is navigated or a handle dragged (issue 16: the demos
+// How much a preview frame gives up while the view is navigated or a handle dragged (the demos
 // must stay interactive on software GL): the fraction of the width and height it is drawn at, and how
 // many levels of mirror nesting it leaves out. Full quality is {1, 0}.
 struct PreviewLevel {

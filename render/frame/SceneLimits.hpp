@@ -31,6 +31,10 @@ inline constexpr int kMinTessellation = 1; // built-in meshes: subdivisions
 inline constexpr int kMaxTessellation = 64;
 inline constexpr int kMinSsaa = 1; // stills: samples per pixel along each axis
 inline constexpr int kMaxSsaa = 16;
+inline constexpr int kMinGlossyTaps = 1; // a rough planar mirror's lobe samples per pixel
+inline constexpr int kMaxGlossyTaps = 64;
+inline constexpr int kMinPrefilterSamples = 1; // the reflector's pre-filter: lobe samples per texel
+inline constexpr int kMaxPrefilterSamples = 1024;
 inline constexpr double kMaxShininess = 10000.0; // Blinn-Phong exponent (from 0)
 inline constexpr double kMaxNormalScale = 100.0; // normal-map strength, either sign
 

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -10,8 +11,8 @@ namespace speculum::render::names {
 
 // How each choice a scene makes is spelled: `file` in project files, on the command line and in bench
 // results ("dual-paraboloid"), `label` for people (the inspector's options, reports: "Dual paraboloid").
-// Each table is in the order of its enum, here (FrameInput.hpp) and in scene/model/SceneData.hpp
-// alike: the index is the enum's value. Qt-free and GL-free, so every layer reads the same list.
+// Each table is in the order of its enum (render/frame/, scene/model/SceneData.hpp for the built-in
+// meshes): the index is the enum's value. Qt-free and GL-free, so every layer reads the same list.
 struct Name {
     std::string_view file;
     std::string_view label;
@@ -39,6 +40,11 @@ inline constexpr std::array<Name, 2> kGlossyFilters{{
     {"mip", "Mip level (cheap)"},
     {"footprint", "Lobe footprint / pre-filtered map"},
 }};
+// A true-or-false setting as bench results spell it: settings.simplifyReflections.
+inline constexpr std::array<Name, 2> kReflectedDetail{{
+    {"full", "Full"},
+    {"simplified", "Simplified"},
+}};
 inline constexpr std::array<Name, 3> kLightTypes{{
     {"point", "Point"},
     {"directional", "Directional"},
@@ -54,30 +60,22 @@ inline constexpr std::array<Name, 3> kAlphaModes{{
     {"mask", "Mask"},
     {"blend", "Blend (drawn as mask)"},
 }};
-// The document's own enums (scene/model/SceneData.hpp): the built-in meshes, and a reflector's parallax
-// proxy, which the frame input spells with a None first (FrameInput's ParallaxProxy::Shape).
-inline constexpr std::array<Name, 4> kBuiltinMeshes{{
-    {"teapot", "Teapot"},
-    {"sphere", "Sphere"},
-    {"box", "Box"},
-    {"plane", "Plane"},
-}};
 inline constexpr std::array<Name, 2> kParallaxShapes{{
     {"sphere", "Sphere"},
     {"box", "Box"},
 }};
 
 // The file spelling of an enum value (an out-of-range value is a programmer error: "?").
-template <typename E, std::size_t N>
-constexpr std::string_view fileName(const std::array<Name, N>& names, E value) {
+template <typename E>
+constexpr std::string_view fileName(std::span<const Name> names, E value) {
     const auto i = static_cast<std::size_t>(value);
-    return i < N ? names[i].file : std::string_view("?");
+    return i < names.size() ? names[i].file : std::string_view("?");
 }
 
 // The enum value a file spelling names, or nothing.
-template <typename E, std::size_t N>
-constexpr std::optional<E> fromFileName(const std::array<Name, N>& names, std::string_view file) {
-    for (std::size_t i = 0; i < N; ++i) {
+template <typename E>
+constexpr std::optional<E> fromFileName(std::span<const Name> names, std::string_view file) {
+    for (std::size_t i = 0; i < names.size(); ++i) {
         if (names[i].file == file) {
             return static_cast<E>(i);
         }
@@ -86,11 +84,10 @@ constexpr std::optional<E> fromFileName(const std::array<Name, N>& names, std::s
 }
 
 // "cube, dual-paraboloid or tennis-ball": the file spellings for a message.
-template <std::size_t N>
-std::string choices(const std::array<Name, N>& names) {
+inline std::string choices(std::span<const Name> names) {
     std::string out;
-    for (std::size_t i = 0; i < N; ++i) {
-        out += i == 0 ? "" : i + 1 == N ? " or " : ", ";
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        out += i == 0 ? "" : i + 1 == names.size() ? " or " : ", ";
         out += names[i].file;
     }
     return out;

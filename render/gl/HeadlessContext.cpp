@@ -131,6 +131,10 @@ base::Result<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
 }
 
 std::string HeadlessContext::description() const {
+    return contextDescription();
+}
+
+std::string contextDescription() {
     auto text = [](GLenum name) {
         const auto* s = reinterpret_cast<const char*>(glGetString(name));
         return std::string(s ? s : "?");

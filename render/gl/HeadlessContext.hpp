@@ -26,4 +26,8 @@ private:
     std::unique_ptr<Egl> m_egl;
 };
 
+// The current context's version and renderer, as HeadlessContext::description() gives them: what stills
+// record as the renderer that drew them.
+std::string contextDescription();
+
 } // namespace speculum::render::gl

@@ -129,7 +129,8 @@ GLuint TextureCache::get(const TextureSource& source, TextureUse use) {
     return e ? e->texture.id() : 0;
 }
 
-void TextureCache::bind(const TextureSource& source, TextureUse use, int unit) {
+void TextureCache::bind(const TextureSource& source, const std::array<TextureWrap, 2>& wrap, TextureUse use,
+                        int unit) {
     Entry* e = entry(source, use);
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D, e ? e->texture.id() : 0);
@@ -137,7 +138,7 @@ void TextureCache::bind(const TextureSource& source, TextureUse use, int unit) {
         return;
     // Wrap modes belong to the material, the texture to its source: two materials may share one image
     // with different modes, so the modes are set when they differ from the last draw's.
-    const GLint s = glWrap(source.wrapS), t = glWrap(source.wrapT);
+    const GLint s = glWrap(wrap[0]), t = glWrap(wrap[1]);
     if (e->wrapS != s)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, e->wrapS = s);
     if (e->wrapT != t)

@@ -3,6 +3,7 @@
 #include "render/frame/FrameInput.hpp"
 #include "render/gl/Objects.hpp"
 
+#include <array>
 #include <map>
 #include <string>
 #include <tuple>
@@ -10,10 +11,9 @@
 
 namespace speculum::render::gl {
 
-// What a texture's values mean, which decides how they are uploaded: colour textures are sRGB-decoded by
-// the sampler (8-bit: GL_SRGB8_ALPHA8), data textures (normal maps) are read as stored (GL_RGBA8).
-// High-precision images upload as GL_RGBA16F either way, holding linear colour or raw data.
-enum class TextureUse { Color, Data };
+// A texture's use (render::TextureUse) decides its upload: colour textures are sRGB-decoded by the sampler
+// (8-bit: GL_SRGB8_ALPHA8), data textures (normal maps) are read as stored (GL_RGBA8). High-precision
+// images upload as GL_RGBA16F either way, holding linear colour or raw data.
 
 // Material textures, uploaded once with mipmaps, keyed by their source (the decoded image when one is
 // given, else the file path) and their use. A file that fails to load gets a visible checker texture and
@@ -23,7 +23,7 @@ public:
     // The texture for `source`, loading it the first time; 0 for an empty source.
     GLuint get(const TextureSource& source, TextureUse use);
     // Binds `source` on texture unit `unit` with its wrap modes (set on the texture when they change).
-    void bind(const TextureSource& source, TextureUse use, int unit);
+    void bind(const TextureSource& source, const std::array<TextureWrap, 2>& wrap, TextureUse use, int unit);
     std::vector<std::string> takeWarnings() { return std::exchange(m_warnings, {}); }
 
 private:

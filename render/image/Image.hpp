@@ -27,9 +27,13 @@ struct ImageMetadata {
     std::vector<std::pair<std::string, std::string>> attributes;
 };
 
+// What a texture's values mean, which decides how the rasterizer uploads it and the tracer decodes it:
+// colour (8-bit files sRGB-decoded before filtering) or data (normal maps: the values as stored).
+enum class TextureUse { Color, Data };
+
 // A texture as loaded from disk or from a model's embedded image, ready to upload. Row 0 is the BOTTOM
 // row of the image as it is stored in its file, so that row 0 is t = 0 for glTexImage2D and v = 0 in
-// speculum's texture coordinates (DESIGN.md: v = 0 is the bottom row of the stored image).
+// speculum's texture coordinates (docs/scene-format.md: v = 0 is the bottom row of the stored image).
 //
 // Exactly one of the two pixel arrays is filled: `rgba8` for 8-bit files (colour sRGB-encoded, alpha
 // straight), or `linear` for files with more than 8 bits per channel (16-bit integer, half, float): linear

@@ -25,10 +25,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-enum class Encoding { Srgb8, LinearHalf };
+enum class StoredAs { Srgb8, LinearHalf };
 
 struct Format {
-    Encoding encoding;
+    StoredAs encoding;
     bool keepsAlpha;
     bool keepsCustomKeys; // PNG (tEXt) and EXR store any string attribute; TIFF and JPEG drop unknown ones
     // Encoded in memory and written by AtomicFile. OIIO 2.4.7's TIFF writer through an IOProxy produces a
@@ -43,9 +43,9 @@ struct Extension {
 };
 
 constexpr Extension kExtensions[] = {
-    {".png", {Encoding::Srgb8, true, true, true}},    {".jpg", {Encoding::Srgb8, false, false, true}},
-    {".jpeg", {Encoding::Srgb8, false, false, true}}, {".tif", {Encoding::Srgb8, true, false, false}},
-    {".tiff", {Encoding::Srgb8, true, false, false}}, {".exr", {Encoding::LinearHalf, true, true, true}},
+    {".png", {StoredAs::Srgb8, true, true, true}},    {".jpg", {StoredAs::Srgb8, false, false, true}},
+    {".jpeg", {StoredAs::Srgb8, false, false, true}}, {".tif", {StoredAs::Srgb8, true, false, false}},
+    {".tiff", {StoredAs::Srgb8, true, false, false}}, {".exr", {StoredAs::LinearHalf, true, true, true}},
 };
 
 std::string lowerExtension(const std::string& path) {
@@ -126,7 +126,7 @@ std::optional<Format> formatFor(const std::string& path) {
             return std::nullopt;
         }
         const bool hdr = it->second == "hdr" || it->second == "openexr" || ext == ".pfm";
-        return Format{hdr ? Encoding::LinearHalf : Encoding::Srgb8, writer->supports("alpha") != 0, false,
+        return Format{hdr ? StoredAs::LinearHalf : StoredAs::Srgb8, writer->supports("alpha") != 0, false,
                       true};
     }
     return std::nullopt;
@@ -249,7 +249,7 @@ base::Status writeAtomically(const std::string& path, int width, int height, int
     }
     const std::string openName = staged ? staged->path() : path;
 
-    const bool srgb = format.encoding == Encoding::Srgb8;
+    const bool srgb = format.encoding == StoredAs::Srgb8;
     OIIO::ImageSpec spec(width, height, channels, srgb ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF);
     if (channels == 4) {
         spec.alpha_channel = 3;
@@ -349,7 +349,7 @@ base::Status writeImage(const std::string& path, const Image& linear, const Imag
     const Format format = *formatFor(path);
     const std::size_t pixels = static_cast<std::size_t>(linear.width) * linear.height;
 
-    if (format.encoding == Encoding::LinearHalf) {
+    if (format.encoding == StoredAs::LinearHalf) {
         std::vector<float> premultiplied(linear.rgba);
         for (std::size_t i = 0; i < pixels; ++i) {
             const float alpha = halfRepresentable(premultiplied[i * 4 + 3]);
@@ -396,7 +396,7 @@ base::Status writeImage(const std::string& path, const TextureImage& srgb, const
     const Format format = *formatFor(path);
     const std::size_t pixels = static_cast<std::size_t>(srgb.width) * srgb.height;
 
-    if (format.encoding == Encoding::LinearHalf) {
+    if (format.encoding == StoredAs::LinearHalf) {
         Image linear{srgb.width, srgb.height, std::vector<float>(pixels * 4)};
         for (std::size_t i = 0; i < pixels * 4; ++i) {
             linear.rgba[i] = (i % 4 == 3) ? srgb.rgba8[i] / 255.0f : srgb8ToLinear(srgb.rgba8[i]);

@@ -146,11 +146,11 @@ void setMaterial(const Material& m, const gl::Program& p, const MainPassContext&
     p.set("uHasEmissionTexture", emissionTexture ? 1 : 0);
     p.set("uHasNormalTexture", normalTexture ? 1 : 0);
     if (texture)
-        ctx.textures.bind(m.texture, gl::TextureUse::Color, kMaterialTextureUnit);
+        ctx.textures.bind(m.texture, m.wrap, TextureUse::Color, kMaterialTextureUnit);
     if (emissionTexture)
-        ctx.textures.bind(m.emissionTexture, gl::TextureUse::Color, kEmissionTextureUnit);
+        ctx.textures.bind(m.emissionTexture, m.wrap, TextureUse::Color, kEmissionTextureUnit);
     if (normalTexture)
-        ctx.textures.bind(m.normalTexture, gl::TextureUse::Data, kNormalTextureUnit);
+        ctx.textures.bind(m.normalTexture, m.wrap, TextureUse::Data, kNormalTextureUnit);
     glActiveTexture(GL_TEXTURE0);
 }
 

@@ -1,6 +1,6 @@
 #include "render/passes/MirrorPasses.hpp"
 
-#include "render/frame/GlossyLimits.hpp"
+#include "render/frame/Settings.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 

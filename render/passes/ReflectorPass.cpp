@@ -104,7 +104,7 @@ int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>
     if (fitted.size == reflector.resolution)
         return fitted.size;
     const std::string asked = std::to_string(reflector.resolution) + " " +
-                              std::string(reflectorMapName(reflector.map)) + " environment map";
+                              std::string(names::fileName(names::kReflectorMaps, reflector.map)) + " environment map";
     if (fitted.size == 0)
         warnings.push_back(name + ": the " + asked + " " + fitted.reason + ", nor did any down to " +
                            std::to_string(kMinEnvmapResolution) + "; the reflector is drawn without it");
@@ -216,13 +216,11 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     p.set("uEnvLayout", map.layout().packed());
     p.set("uEnvMapFromWorld", glm::mat3(1.0f));
     p.set("uEnvCentre", glm::vec3(m_centre - input.camera.position));
-    const int parallax = r.parallax.shape == ParallaxProxy::Shape::Sphere ? 1
-                         : r.parallax.shape == ParallaxProxy::Shape::Box  ? 2
-                                                                          : 0;
-    p.set("uParallax", parallax);
-    p.set("uParallaxRadius", float(r.parallax.radius));
-    p.set("uParallaxMin", glm::vec3(r.parallax.min));
-    p.set("uParallaxMax", glm::vec3(r.parallax.max));
+    const ParallaxParams proxy = r.parallax.value_or(ParallaxParams{});
+    p.set("uParallax", !r.parallax ? 0 : proxy.shape == ParallaxShape::Sphere ? 1 : 2);
+    p.set("uParallaxRadius", float(proxy.radius));
+    p.set("uParallaxMin", glm::vec3(proxy.min));
+    p.set("uParallaxMax", glm::vec3(proxy.max));
     p.set("uEnvCube", kEnvCubeUnit);
     p.set("uEnvArray", kEnvArrayUnit);
     // A rough reflector reads one texture at an explicit LOD: the pre-filtered chain (same target and

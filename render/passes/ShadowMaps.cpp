@@ -276,7 +276,7 @@ void ShadowMaps::render(const FrameInput& input, const ShadowPlan& shadow, gl::M
                 program.set("uHasTexture", m.texture.empty() ? 0 : 1);
                 program.set("uTexture", 0);
                 if (!m.texture.empty())
-                    textures->bind(m.texture, gl::TextureUse::Color, 0);
+                    textures->bind(m.texture, m.wrap, TextureUse::Color, 0);
             }
             program.set("uModelLightClip", glm::mat4(viewProjection * item.world));
             meshes.get(item.mesh).draw();

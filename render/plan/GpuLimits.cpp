@@ -49,19 +49,19 @@ std::optional<FrameInput> fitToGpuLimits(const FrameInput& input, const GpuLimit
     };
     for (std::size_t i = 0; i < input.lights.size(); ++i) {
         const Light& light = input.lights[i];
-        if (!light.shadows.enabled)
+        if (!light.shadows.has_value())
             continue;
         const int most = std::max(kMinShadowMapSize, maxShadowMapSize(light, limits));
-        const int size = light.shadows.mapSize;
+        const int size = light.shadows->mapSize;
         if (size > most) {
             warnings.push_back(lightName(light, i) + ": a " + std::to_string(size) +
                                "² shadow map is more than this GPU can hold (at most " +
                                std::to_string(most) + "²); using " + std::to_string(most) + "²");
-            copy().lights[i].shadows.mapSize = most;
+            copy().lights[i].shadows->mapSize = most;
         } else if (size < kMinShadowMapSize) {
             warnings.push_back(lightName(light, i) + ": shadow map size " + std::to_string(size) +
                                " is too small; using " + std::to_string(kMinShadowMapSize) + "²");
-            copy().lights[i].shadows.mapSize = kMinShadowMapSize;
+            copy().lights[i].shadows->mapSize = kMinShadowMapSize;
         }
     }
     if (input.reflector) {
@@ -72,7 +72,7 @@ std::optional<FrameInput> fitToGpuLimits(const FrameInput& input, const GpuLimit
         if (n > most) {
             warnings.push_back(name + ": resolution " + std::to_string(n) +
                                " is more than this GPU can hold for a " +
-                               std::string(reflectorMapName(reflector.map)) + " map (at most " +
+                               std::string(names::fileName(names::kReflectorMaps, reflector.map)) + " map (at most " +
                                std::to_string(most) + "); using " + std::to_string(most));
             copy().reflector->resolution = most;
         } else if (n < kMinEnvmapResolution) {

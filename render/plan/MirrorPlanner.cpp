@@ -4,7 +4,7 @@
 // component of the reflector's environment map (seen from its capture point). Everything is derived in
 // double precision; a mirror that cannot be drawn correctly is skipped with a reason, never given a NaN
 // matrix.
-#include "render/frame/GlossyLimits.hpp"
+#include "render/frame/Settings.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/Planner.hpp"

@@ -180,7 +180,7 @@ std::uint64_t hashShadow(const FrameInput& input, int lightIndex, const math::Sh
     h.add(light.position);
     h.add(light.direction);
     h.add(light.spotAngle);
-    h.add(light.shadows.mapSize);
+    h.add(light.shadows->mapSize);
     if (frustum) {
         for (const auto& m : frustum->viewProjection)
             h.add(m);
@@ -208,7 +208,7 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex, const mat
 
 std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
-    const auto frustum = math::shadowFrustum(input, light, light.shadows.mapSize);
+    const auto frustum = math::shadowFrustum(input, light, light.shadows->mapSize);
     return hashShadow(input, lightIndex, frustum ? &*frustum : nullptr);
 }
 
@@ -231,7 +231,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
                 {name, "more than " + std::to_string(kMaxLights) + " lights: this light is ignored"});
             continue;
         }
-        if (!light.shadows.enabled) {
+        if (!light.shadows.has_value()) {
             plan.skipped.push_back({name, "shadow pass not needed: shadows are off for this light"});
             continue;
         }
@@ -247,7 +247,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         }
         // The one frustum of this light's map this frame, at the size the map is drawn at: the signature,
         // the shadow pass and every lookup use it.
-        const int mapSize = std::max(light.shadows.mapSize, kMinShadowMapSize);
+        const int mapSize = std::max(light.shadows->mapSize, kMinShadowMapSize);
         const auto frustum = math::shadowFrustum(input, light, mapSize);
         if (!frustum) {
             plan.skipped.push_back(
@@ -259,14 +259,14 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         const auto previous = state.shadowSignatures.find(i);
         const std::uint64_t signature = shadowSignature(input, i, *frustum);
         const bool reused = previous != state.shadowSignatures.end() && previous->second == signature;
-        plan.shadows.push_back({i, mapSize, light.shadows.pcf, *frustum, signature, !reused});
+        plan.shadows.push_back({i, mapSize, light.shadows->pcf, *frustum, signature, !reused});
         if (reused) {
             plan.skipped.push_back(
                 {name, "shadow map reused: light and casters unchanged since the last frame"});
             continue;
         }
-        std::string reason = "light casts shadows (" + std::to_string(light.shadows.mapSize) + "² map, PCF " +
-                             std::to_string(light.shadows.pcf) + "×" + std::to_string(light.shadows.pcf) +
+        std::string reason = "light casts shadows (" + std::to_string(light.shadows->mapSize) + "² map, PCF " +
+                             std::to_string(light.shadows->pcf) + "×" + std::to_string(light.shadows->pcf) +
                              ") from " + plural(casters, "caster", "casters");
         if (frustum->cube)
             reason +=

@@ -112,9 +112,10 @@ std::uint64_t envmapSettingsKey(const Reflector& reflector) {
     return h.value;
 }
 
-// Field by field, what the map draws (tests/render/plan/test_signatures.cpp holds the fields left out and
-// why: the camera, names, the reflector's own surface, the mirrors' technique and blur, which the map's
-// stencil mirrors do not use).
+// What the map draws: the declared fields of the scene's settings, lights, materials, mirrors and the
+// reflector itself that an environment map draws (FieldSpec::drawnInMaps: not the mirrors' technique and
+// roughness, which the map's stencil mirrors do not use, nor what only the reflector's lookups read), and
+// where everything is.
 std::uint64_t envmapSignature(const FrameInput& input) {
     const Reflector& reflector = *input.reflector;
     Hasher h;
@@ -126,21 +127,12 @@ std::uint64_t envmapSignature(const FrameInput& input) {
     // Not drawn into its own map, but its shadows fall on the scene the map sees.
     h.add(reflector.world);
     h.add(static_cast<const void*>(reflector.mesh.get()));
-    h.add(reflector.mirrorDepth);
-    h.add(input.settings.background);
-    h.add(input.settings.ambient);
-    h.add(input.settings.simplifyReflections);
+    addFields(h, static_cast<const ReflectorParams&>(reflector), true);
+    addFields(h, input.settings, true);
     for (const Light& light : input.lights) {
-        h.add(light.type);
+        addFields(h, static_cast<const LightParams&>(light));
         h.add(light.position);
         h.add(light.direction);
-        h.add(light.color);
-        h.add(light.intensity);
-        h.add(light.spotAngle);
-        h.add(light.spotBlend);
-        h.add(light.shadows.enabled);
-        h.add(light.shadows.mapSize);
-        h.add(light.shadows.pcf);
     }
     for (const DrawItem& item : input.items) {
         h.add(static_cast<const void*>(item.mesh.get()));
@@ -152,10 +144,7 @@ std::uint64_t envmapSignature(const FrameInput& input) {
     // their surfaces with reflectivity, tint, Fresnel and material, as the main pass's stencil mirrors.
     for (const Mirror& mirror : input.mirrors) {
         h.add(mirror.world);
-        h.add(mirror.size);
-        h.add(mirror.reflectivity);
-        h.add(mirror.tint);
-        h.add(mirror.fresnel);
+        addFields(h, static_cast<const MirrorParams&>(mirror), true);
         h.add(mirror.hasMaterial);
         addMaterial(h, mirror.material);
     }
@@ -301,7 +290,7 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     if (reflector.map == ReflectorMap::Cube)
         what = "a cube map (6 faces of " + size + ")";
     else {
-        what = "a " + std::string(reflectorMapName(reflector.map)) + " map (2 components of " +
+        what = "a " + std::string(names::fileName(names::kReflectorMaps, reflector.map)) + " map (2 components of " +
                (reflector.map == ReflectorMap::TennisBall ? std::to_string(n) + "×" + std::to_string(3 * n)
                                                           : size) +
                ", " +

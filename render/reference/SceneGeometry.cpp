@@ -204,8 +204,8 @@ SceneGeometry::build(const FrameInput& input, const glm::dvec3& origin, std::vec
             const int base =
                 textures && itemTextures && i < itemTextures->size() ? (*itemTextures)[i].base : -1;
             mask.texture = base >= 0 ? &(*textures)[base] : nullptr;
-            mask.wrapS = m.texture.wrapS;
-            mask.wrapT = m.texture.wrapT;
+            mask.wrapS = m.wrap[0];
+            mask.wrapT = m.wrap[1];
             geometry->m_surfaces.back().mask = mask;
         }
     }

@@ -52,8 +52,8 @@ std::vector<ShadingLight> shadingLights(const FrameInput& input, const glm::dvec
         s.shadowed = std::find(plan.shadowedLights.begin(), plan.shadowedLights.end(), static_cast<int>(i)) !=
                      plan.shadowedLights.end();
         if (s.shadowed) {
-            s.mapSize = std::max(light.shadows.mapSize, 1);
-            s.pcf = std::max(light.shadows.pcf, 1);
+            s.mapSize = std::max(light.shadows->mapSize, 1);
+            s.pcf = std::max(light.shadows->pcf, 1);
             if (const auto frustum = math::shadowFrustum(input, light, s.mapSize)) {
                 s.cubeMap = frustum->cube;
                 s.perspectiveMap = frustum->perspective;
@@ -69,11 +69,11 @@ glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, co
                          const glm::dvec3& viewDir) const {
     glm::dvec3 base = m.color * glm::dvec3(surfaceHit.color);
     if (textures.base >= 0)
-        base *= glm::dvec3(m_textures[textures.base].sample(surfaceHit.uv, m.texture.wrapS, m.texture.wrapT));
+        base *= glm::dvec3(m_textures[textures.base].sample(surfaceHit.uv, m.wrap[0], m.wrap[1]));
     glm::dvec3 emitted = m.emission;
     if (textures.emission >= 0)
-        emitted *= glm::dvec3(m_textures[textures.emission].sample(surfaceHit.uv, m.emissionTexture.wrapS,
-                                                                   m.emissionTexture.wrapT));
+        emitted *= glm::dvec3(m_textures[textures.emission].sample(surfaceHit.uv, m.wrap[0],
+                                                                   m.wrap[1]));
     // material.glsl's materialNormal(): the tangent made orthogonal to the viewer-side normal,
     // B = w·(n × T), the map's xy scaled. Lighting and the shadow lookup both use the bent normal.
     Hit hit = surfaceHit;
@@ -85,7 +85,7 @@ glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, co
             t /= tLength;
             const glm::dvec3 b = (surfaceHit.tangent.w < 0.0 ? -1.0 : 1.0) * glm::cross(n, t);
             glm::dvec3 mapped = glm::dvec3(m_textures[textures.normal].sample(
-                                    surfaceHit.uv, m.normalTexture.wrapS, m.normalTexture.wrapT)) *
+                                    surfaceHit.uv, m.wrap[0], m.wrap[1])) *
                                     2.0 -
                                 1.0;
             mapped.x *= m.normalScale;

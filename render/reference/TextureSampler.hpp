@@ -12,9 +12,6 @@
 
 namespace speculum::render::reference {
 
-// What a texture's values mean, as gl::TextureCache uploads them: colour (8-bit files sRGB-decoded before
-// filtering) or data (normal maps: the values as stored).
-enum class TextureUse { Color, Data };
 
 // A texture decoded to linear RGBA once, sampled like the GL sampler of gl::TextureCache at its base
 // level: bilinear, the material's wrap modes, sRGB decoded before filtering for colour. Row 0 of the

@@ -71,7 +71,7 @@ struct TraceResult {
 //
 // - Camera: the same pinhole, field of view and aspect; primary rays are clipped to [near, far] in view
 //   depth, and a path reflected in planar mirrors keeps the same far plane (its unfolded length).
-// - Shading: Blinn-Phong of DESIGN.md with the constants of material.glsl; only the first 8 lights light
+// - Shading: Blinn-Phong with the constants of material.glsl; only the first 8 lights light
 //   the scene, and only the lights the planner gives a shadow map cast shadows (shadow rays against
 //   items that cast shadows and the reflector; mirrors cast none, as in the shadow pass). Surfaces are
 //   two-sided like mesh.frag: a back face is lit with its normal turned towards the viewer.

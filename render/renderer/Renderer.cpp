@@ -133,9 +133,9 @@ bool allocateMaps(const FrameInput& requested, std::optional<FrameInput>& fitted
         changed = true;
         Light& light = edit().lights[static_cast<std::size_t>(shadow.light)];
         if (size == 0)
-            light.shadows.enabled = false;
+            light.shadows.reset();
         else
-            light.shadows.mapSize = size;
+            light.shadows->mapSize = size;
     }
     bool envmapAllocated = true;
     const bool capturing = std::any_of(plan.passes.begin(), plan.passes.end(),

@@ -11,92 +11,7 @@
 
 namespace speculum::scene {
 
-render::Settings toRender(const SceneSettings& settings) {
-    return render::Settings{settings.background,
-                            settings.mirrorDepth,
-                            settings.ambient,
-                            settings.simplifyReflections,
-                            settings.glossyFilter == GlossyFilter::Mip ? render::GlossyFilter::Mip
-                                                                       : render::GlossyFilter::Footprint,
-                            settings.glossyTaps,
-                            settings.prefilterSamples};
-}
-
-render::Camera toRender(const CameraData& camera) {
-    return render::Camera{camera.position, camera.target, camera.up, camera.fovY, camera.near, camera.far};
-}
-
-render::Material toRender(const MaterialComponent& material) {
-    render::Material m;
-    m.color = material.color;
-    m.ambient = material.ambient;
-    m.diffuse = material.diffuse;
-    m.specular = material.specular;
-    m.shininess = material.shininess;
-    m.emission = material.emission;
-    m.specularColor = material.specularColor;
-    // Paths are already absolute in the model; embedded textures ("/abs/model.glb#*0") are resolved to
-    // their decoded image by the snapshot, which has the MeshLibrary.
-    m.texture.path = material.texture;
-    m.emissionTexture.path = material.emissionTexture;
-    m.normalTexture.path = material.normalTexture;
-    const auto wrap = [](TextureWrap w) {
-        switch (w) {
-        case TextureWrap::Repeat:
-            return render::TextureWrap::Repeat;
-        case TextureWrap::Clamp:
-            return render::TextureWrap::ClampToEdge;
-        case TextureWrap::Mirror:
-            return render::TextureWrap::MirroredRepeat;
-        }
-        return render::TextureWrap::Repeat;
-    };
-    for (render::TextureSource* source : {&m.texture, &m.emissionTexture, &m.normalTexture}) {
-        source->wrapS = wrap(material.wrap[0]);
-        source->wrapT = wrap(material.wrap[1]);
-    }
-    m.normalScale = material.normalScale;
-    m.opacity = material.opacity;
-    switch (material.alphaMode) {
-    case AlphaMode::Opaque:
-        m.alphaMode = render::AlphaMode::Opaque;
-        break;
-    case AlphaMode::Mask:
-        m.alphaMode = render::AlphaMode::Mask;
-        break;
-    case AlphaMode::Blend:
-        m.alphaMode = render::AlphaMode::Blend;
-        break;
-    }
-    m.alphaCutoff = material.alphaCutoff;
-    return m;
-}
-
 namespace {
-
-render::LightType toRender(LightType type) {
-    switch (type) {
-    case LightType::Point:
-        return render::LightType::Point;
-    case LightType::Directional:
-        return render::LightType::Directional;
-    case LightType::Spot:
-        return render::LightType::Spot;
-    }
-    return render::LightType::Point;
-}
-
-render::ReflectorMap toRender(ReflectorMap map) {
-    switch (map) {
-    case ReflectorMap::Cube:
-        return render::ReflectorMap::Cube;
-    case ReflectorMap::DualParaboloid:
-        return render::ReflectorMap::DualParaboloid;
-    case ReflectorMap::TennisBall:
-        return render::ReflectorMap::TennisBall;
-    }
-    return render::ReflectorMap::Cube;
-}
 
 class SnapshotBuilder {
 public:
@@ -139,16 +54,9 @@ public:
         }
         if (d.mirror) {
             render::Mirror mirror;
+            static_cast<render::MirrorParams&>(mirror) = *d.mirror;
             mirror.name = d.name;
             mirror.world = world;
-            mirror.size = d.mirror->size;
-            mirror.reflectivity = d.mirror->reflectivity;
-            mirror.technique = d.mirror->technique == MirrorTechnique::Texture
-                                   ? render::MirrorTechnique::Texture
-                                   : render::MirrorTechnique::Stencil;
-            mirror.tint = d.mirror->tint;
-            mirror.fresnel = d.mirror->fresnel;
-            mirror.roughness = d.mirror->roughness;
             mirror.hasMaterial = d.material.has_value();
             mirror.material = material;
             frame.mirrors.push_back(std::move(mirror));
@@ -161,7 +69,7 @@ public:
 private:
     // The render material with its paths made absolute and embedded textures decoded.
     render::Material resolved(const MaterialComponent& component) {
-        render::Material material = toRender(component);
+        render::Material material = component;
         for (render::TextureSource* source :
              {&material.texture, &material.emissionTexture, &material.normalTexture}) {
             if (source->path.empty()) {
@@ -222,50 +130,23 @@ private:
             return;
         }
         render::Reflector r;
+        static_cast<render::ReflectorParams&>(r) = *d.reflector;
         r.name = d.name;
         r.world = world;
         r.mesh = mesh;
         r.material = material;
-        r.map = toRender(d.reflector->map);
-        r.resolution = d.reflector->resolution;
-        r.reflectivity = d.reflector->reflectivity;
-        r.fresnel = d.reflector->fresnel;
-        r.fill = d.reflector->fill == ReflectorFill::Direct ? render::ReflectorFill::Direct
-                                                            : render::ReflectorFill::Resampled;
-        r.update = d.reflector->update == ReflectorUpdate::Always ? render::ReflectorUpdate::Always
-                   : d.reflector->update == ReflectorUpdate::Once ? render::ReflectorUpdate::Once
-                                                                  : render::ReflectorUpdate::OnChange;
-        r.mirrorDepth = d.reflector->mirrorDepth;
-        r.roughness = d.reflector->roughness;
-        if (const auto& p = d.reflector->parallax) {
-            r.parallax.shape = p->shape == ParallaxShape::Sphere ? render::ParallaxProxy::Shape::Sphere
-                                                                 : render::ParallaxProxy::Shape::Box;
-            r.parallax.radius = p->radius;
-            r.parallax.min = p->min;
-            r.parallax.max = p->max;
-        }
         frame.reflector = std::move(r);
     }
 
     static render::Light light(const NodeData& d, const glm::dmat4& world) {
-        const LightComponent& l = *d.light;
         render::Light out;
+        static_cast<render::LightParams&>(out) = *d.light;
         out.name = d.name;
-        out.type = toRender(l.type);
         out.position = glm::dvec3(world[3]);
         // Directions transform with the linear part; normalise away any scale. A degenerate matrix keeps −Y.
         const glm::dvec3 down = glm::dvec3(world * glm::dvec4(0.0, -1.0, 0.0, 0.0));
         const double length = glm::length(down);
         out.direction = length > 0.0 && std::isfinite(length) ? down / length : glm::dvec3(0.0, -1.0, 0.0);
-        out.color = l.color;
-        out.intensity = l.intensity;
-        out.spotAngle = l.spotAngle;
-        out.spotBlend = l.spotBlend;
-        if (l.shadows) {
-            out.shadows.enabled = true;
-            out.shadows.mapSize = l.shadows->mapSize;
-            out.shadows.pcf = l.shadows->pcf;
-        }
         return out;
     }
 
@@ -281,8 +162,8 @@ private:
 render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary& meshes,
                             std::vector<std::string>& warnings) {
     render::FrameInput frame;
-    frame.settings = toRender(scene.settings());
-    frame.camera = toRender(scene.camera());
+    frame.settings = scene.settings();
+    frame.camera = scene.camera();
     frame.time = timeSeconds;
     SnapshotBuilder builder(scene, timeSeconds, meshes, warnings);
     for (const auto& node : scene.topLevelNodes()) {

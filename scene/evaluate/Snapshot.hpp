@@ -22,9 +22,4 @@ namespace speculum::scene {
 render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary& meshes,
                             std::vector<std::string>& warnings);
 
-// Conversions the snapshot uses, for callers that build FrameInput parts themselves.
-render::Settings toRender(const SceneSettings& settings);
-render::Camera toRender(const CameraData& camera);
-render::Material toRender(const MaterialComponent& material);
-
 } // namespace speculum::scene

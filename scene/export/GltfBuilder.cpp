@@ -52,9 +52,9 @@ int wrapCode(TextureWrap wrap) {
     switch (wrap) {
     case TextureWrap::Repeat:
         return 10497;
-    case TextureWrap::Clamp:
+    case TextureWrap::ClampToEdge:
         return 33071;
-    case TextureWrap::Mirror:
+    case TextureWrap::MirroredRepeat:
         return 33648;
     }
     return 10497;
@@ -307,7 +307,7 @@ private:
         pbr["metallicFactor"] = unit(metallic.value_or(metallicFromSpecularColor(m)));
         pbr["roughnessFactor"] = unit(roughness.value_or(roughnessFromShininess(m.shininess)));
         if (!m.texture.empty()) {
-            if (auto t = addTexture(m.texture, m, owner)) {
+            if (auto t = addTexture(m.texture.path, m, owner)) {
                 pbr["baseColorTexture"] = QJsonObject{{"index", *t}};
             }
         }
@@ -328,7 +328,7 @@ private:
             }
         }
         if (!m.emissionTexture.empty()) {
-            if (auto t = addTexture(m.emissionTexture, m, owner)) {
+            if (auto t = addTexture(m.emissionTexture.path, m, owner)) {
                 material["emissiveTexture"] = QJsonObject{{"index", *t}};
                 if (!material.contains("emissiveFactor")) {
                     material["emissiveFactor"] = numbers({0.0, 0.0, 0.0}); // as in speculum: factor × texture
@@ -336,7 +336,7 @@ private:
             }
         }
         if (!m.normalTexture.empty()) {
-            if (auto t = addTexture(m.normalTexture, m, owner)) {
+            if (auto t = addTexture(m.normalTexture.path, m, owner)) {
                 material["normalTexture"] = QJsonObject{{"index", *t}, {"scale", m.normalScale}};
             }
         }

@@ -75,9 +75,9 @@ TextureWrap wrapOf(const aiMaterial& material, int type, bool u) {
     switch (mode) {
     case aiTextureMapMode_Clamp:
     case aiTextureMapMode_Decal:
-        return TextureWrap::Clamp;
+        return TextureWrap::ClampToEdge;
     case aiTextureMapMode_Mirror:
-        return TextureWrap::Mirror;
+        return TextureWrap::MirroredRepeat;
     default:
         return TextureWrap::Repeat;
     }
@@ -155,14 +155,14 @@ MaterialComponent MaterialConverter::convert(const aiMaterial& material) {
     // Textures: base colour first (glTF reports it as both BASE_COLOR and DIFFUSE).
     const int baseType = material.GetTextureCount(aiTextureType_BASE_COLOR) > 0 ? aiTextureType_BASE_COLOR
                                                                                 : aiTextureType_DIFFUSE;
-    m.texture = texture(material, baseType, "base colour texture");
+    m.texture.path = texture(material, baseType, "base colour texture");
     if (!m.texture.empty()) {
         m.wrap = {wrapOf(material, baseType, true), wrapOf(material, baseType, false)};
     }
-    m.emissionTexture = texture(material, aiTextureType_EMISSIVE, "emissive texture");
-    m.normalTexture = texture(material, aiTextureType_NORMALS, "normal map");
+    m.emissionTexture.path = texture(material, aiTextureType_EMISSIVE, "emissive texture");
+    m.normalTexture.path = texture(material, aiTextureType_NORMALS, "normal map");
     if (m.normalTexture.empty()) {
-        m.normalTexture = texture(material, aiTextureType_NORMAL_CAMERA, "normal map");
+        m.normalTexture.path = texture(material, aiTextureType_NORMAL_CAMERA, "normal map");
     }
     if (!m.normalTexture.empty()) {
         m.normalScale = std::clamp(
@@ -372,10 +372,10 @@ void decodeEmbeddedTextures(const std::map<std::string, EmbeddedBytes>& compress
         }
         notes.add("embedded texture '" + texture.reference + "' unreadable: " + decoded.error());
         for (MaterialComponent& material : model.materials) {
-            for (std::string* field :
+            for (render::TextureSource* field :
                  {&material.texture, &material.emissionTexture, &material.normalTexture}) {
-                if (*field == key) {
-                    field->clear();
+                if (field->path == key) {
+                    *field = {};
                 }
             }
         }

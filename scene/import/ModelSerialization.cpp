@@ -14,9 +14,8 @@ namespace {
 using base::Error;
 
 // A field added to one of these types must be written and read here too; the sizes (x86-64, libstdc++)
-// make the build say so rather than the child silently dropping it.
-static_assert(sizeof(MaterialComponent) == 248,
-              "MaterialComponent changed: update writeMaterial/readMaterial");
+// make the build say so rather than the child silently dropping it. Materials need no such check: they
+// travel field by field as their declaration lists them (render/frame/Material.hpp).
 static_assert(sizeof(render::MeshData) == 208, "MeshData changed: update writeMesh/readMesh");
 static_assert(sizeof(ImportedPart) == 56, "ImportedPart changed: update the part serialization");
 static_assert(sizeof(ImportedNode) == 208, "ImportedNode changed: update writeNodes/readNodes");
@@ -171,56 +170,59 @@ bool readNodes(ByteReader& in, ImportedNode& root, std::size_t partCount) {
 
 } // namespace
 
+namespace {
+
+// One declared field's value in the stream: numbers as they are, an enumeration as its index (checked
+// against its names on the way back), a texture as its path.
+template <typename M>
+void writeValue(ByteWriter& out, const M& value) {
+    if constexpr (std::is_enum_v<M> || std::is_same_v<M, int> || std::is_same_v<M, bool>) {
+        out.i64(static_cast<std::int64_t>(value));
+    } else if constexpr (std::is_same_v<M, double>) {
+        out.f64(value);
+    } else if constexpr (std::is_same_v<M, glm::dvec3>) {
+        writeVec3(out, value);
+    } else if constexpr (std::is_same_v<M, render::TextureSource>) {
+        out.string(value.path);
+    } else {
+        static_assert(std::is_same_v<M, std::array<TextureWrap, 2>>, "a material field the stream cannot hold");
+        writeValue(out, value[0]);
+        writeValue(out, value[1]);
+    }
+}
+
+template <typename M>
+bool readValue(ByteReader& in, M& value, const render::FieldSpec& spec) {
+    if constexpr (std::is_enum_v<M>) {
+        const std::int64_t index = in.i64();
+        if (index < 0 || index >= static_cast<std::int64_t>(spec.choices.size()))
+            return false;
+        value = static_cast<M>(index);
+    } else if constexpr (std::is_same_v<M, int> || std::is_same_v<M, bool>) {
+        value = static_cast<M>(in.i64());
+    } else if constexpr (std::is_same_v<M, double>) {
+        value = in.f64();
+    } else if constexpr (std::is_same_v<M, glm::dvec3>) {
+        value = readVec3(in);
+    } else if constexpr (std::is_same_v<M, render::TextureSource>) {
+        value = render::TextureSource{in.string(), nullptr};
+    } else {
+        return readValue(in, value[0], spec) && readValue(in, value[1], spec);
+    }
+    return true;
+}
+
+} // namespace
+
 void writeMaterial(ByteWriter& out, const MaterialComponent& material) {
-    writeVec3(out, material.color);
-    out.f64(material.ambient);
-    out.f64(material.diffuse);
-    out.f64(material.specular);
-    out.f64(material.shininess);
-    writeVec3(out, material.emission);
-    out.string(material.texture);
-    writeVec3(out, material.specularColor);
-    out.string(material.emissionTexture);
-    out.string(material.normalTexture);
-    out.f64(material.normalScale);
-    out.i64(static_cast<std::int64_t>(material.wrap[0]));
-    out.i64(static_cast<std::int64_t>(material.wrap[1]));
-    out.f64(material.opacity);
-    out.i64(static_cast<std::int64_t>(material.alphaMode));
-    out.f64(material.alphaCutoff);
-    // An imported material has no extra keys; QJsonDocument is only touched when one does.
-    out.string(material.extra.isEmpty()
-                   ? std::string()
-                   : QJsonDocument(material.extra).toJson(QJsonDocument::Compact).toStdString());
+    render::forEachField<MaterialComponent>([&](const auto& f) { writeValue(out, material.*f.member); });
 }
 
 bool readMaterial(ByteReader& in, MaterialComponent& material) {
-    material.color = readVec3(in);
-    material.ambient = in.f64();
-    material.diffuse = in.f64();
-    material.specular = in.f64();
-    material.shininess = in.f64();
-    material.emission = readVec3(in);
-    material.texture = in.string();
-    material.specularColor = readVec3(in);
-    material.emissionTexture = in.string();
-    material.normalTexture = in.string();
-    material.normalScale = in.f64();
-    readEnum(in, material.wrap[0], TextureWrap::Mirror);
-    readEnum(in, material.wrap[1], TextureWrap::Mirror);
-    material.opacity = in.f64();
-    readEnum(in, material.alphaMode, AlphaMode::Blend);
-    material.alphaCutoff = in.f64();
-    const std::string extra = in.string();
-    material.extra = {};
-    if (!extra.empty()) {
-        const QJsonDocument document = QJsonDocument::fromJson(QByteArray::fromStdString(extra));
-        if (!document.isObject()) {
-            return false;
-        }
-        material.extra = document.object();
-    }
-    return !in.failed();
+    bool ok = true;
+    render::forEachField<MaterialComponent>(
+        [&](const auto& f) { ok = readValue(in, material.*f.member, f.spec) && ok; });
+    return ok && !in.failed();
 }
 
 std::string serializeChildImport(const ChildImport& result) {

@@ -6,7 +6,7 @@
 
 namespace speculum::scene {
 
-// Transforms and animations of a node, all in double (DESIGN.md: CPU-side transforms are composed in double).
+// Transforms and animations of a node, all in double (CPU-side transforms are composed in double).
 
 // XYZ Euler angles in degrees, applied X, then Y, then Z: R = Rz · Ry · Rx.
 glm::dmat4 rotationMatrix(const glm::dvec3& eulerDegrees);

@@ -33,7 +33,7 @@ void Scene::reset(SceneData data) {
     m_settings = std::move(data.settings);
     m_camera = std::move(data.camera);
     setEditorView(std::move(data.editorView));
-    m_extra = std::move(data.extra);
+    m_unknown = std::move(data.unknown);
     for (const NodeTree& tree : data.nodes) {
         auto node = createNode(tree);
         index(*node);
@@ -48,7 +48,7 @@ SceneData Scene::toData() const {
     data.settings = m_settings;
     data.camera = m_camera;
     data.editorView = m_editorView;
-    data.extra = m_extra;
+    data.unknown = m_unknown;
     data.nodes.reserve(m_nodes.size());
     for (const auto& node : m_nodes) {
         data.nodes.push_back(node->toTree());

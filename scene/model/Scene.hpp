@@ -66,9 +66,8 @@ public:
 
     const SceneSettings& settings() const { return m_settings; }
     const CameraData& camera() const { return m_camera; }
-    const QJsonObject& extraFields() const { return m_extra; }
 
-    // The editor's own view, saved with the project (EditorView.hpp): reset() takes it from the data and
+    // The editor's own view, saved with the project (SceneData.hpp): reset() takes it from the data and
     // toData() gives it back, so saves and recovery files carry it. It is not part of the scene's content:
     // setting it pushes no undo step, leaves the undo stack's clean state alone (the document does not
     // become modified) and emits nothing, so that views do not redraw and the editor, which is its only
@@ -135,7 +134,7 @@ private:
     SceneSettings m_settings;
     CameraData m_camera;
     std::optional<EditorView> m_editorView;
-    QJsonObject m_extra;
+    UnknownFields m_unknown; // the file's unknown top-level, settings, camera and editor view fields
     std::vector<std::unique_ptr<Node>> m_nodes;
     QString m_projectPath;
     NodeId m_nextId = 1;

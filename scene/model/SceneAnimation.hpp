@@ -10,7 +10,7 @@ struct NodeData;
 bool nodeIsAnimated(const NodeData& node);
 
 // Whether anything in the scene moves with time. A scene where nothing does looks the same at every
-// time, so the viewport need not draw while the clock runs (issue 16: a static scene costs nothing).
+// time, so the viewport need not draw while the clock runs (a static scene costs nothing).
 bool sceneHasAnimation(const Scene& scene);
 
 // One loop of the scene's animation, in seconds: the shortest time after which every animation is back

@@ -12,19 +12,20 @@
 
 namespace speculum::scene {
 
-// Project files (*.speculum.json), format "speculum-scene" version 1 as DESIGN.md fixes it (the version
-// check and the place for upgrading older versions: ProjectVersion.hpp).
+// Project files (*.speculum.json), format "speculum-scene" version 1, specified in docs/scene-format.md (the
+// version check and the place for upgrading older versions: ProjectVersion.hpp). The fields are those the
+// components declare (render/frame/Field.hpp); FieldReader.hpp and ProjectWriter.cpp walk the declarations.
 //
 // Reading validates everything; an error names the JSON path ("nodes[2].mirror.size: expected 2 numbers")
 // or, for broken JSON, the line and column. Unknown fields are no error: each gives a warning
-// ("nodes[0].transfrom: unknown field, ignored") and is kept in the model's `extra` so that saving writes it
-// back. Relative paths in the file are resolved against the project file's folder (the model holds them
-// absolute); writing makes them relative to the folder of the file written.
+// ("nodes[0].transfrom: unknown field, ignored") and is kept in the model's `unknown` fields so that saving
+// writes it back. Relative paths in the file are resolved against the project file's folder (the model
+// holds them absolute); writing makes them relative to the folder of the file written.
 //
-// Writing is deterministic: fixed key order (DESIGN.md's), 2-space indentation, shortest round-trip numbers,
-// integers without ".0", unknown fields after the known ones in alphabetical order. Every field of every
-// present component is written, so a file never depends on defaults. Saving a loaded file twice gives
-// identical bytes.
+// Writing is deterministic: the declarations' order, 2-space indentation, shortest round-trip numbers,
+// integers without ".0", unknown fields after the known ones in alphabetical order. A field is written as
+// its declaration says: always, unless it has its default value, or only where it applies (a spot angle of
+// a spot light). Saving a loaded file twice gives identical bytes.
 
 // Parses file contents. baseDir resolves relative paths. Warnings are appended only on success.
 base::Result<SceneData> parseProject(const QByteArray& json, const QDir& baseDir,
@@ -40,7 +41,7 @@ base::Status openProject(Scene& scene, const QString& path, std::vector<std::str
 // The file contents for data, with paths made relative to baseDir.
 QByteArray serializeProject(const SceneData& data, const QDir& baseDir);
 
-// Writes atomically (QSaveFile): on failure the previous file is intact. The data is validated by reading
+// Writes atomically (base::writeFileAtomically): on failure the previous file is intact. The data is validated by reading
 // the serialized bytes back first, so a file that saves always loads; a model the reader would reject is
 // not written (the error names the JSON path). Does not change scene.projectPath(); the caller does that
 // after a successful "Save As".

@@ -8,7 +8,7 @@ namespace speculum::scene {
 
 // The format version of project files: what this program writes and the newest it reads.
 //
-// Fields are added, never renamed (DESIGN.md). An added field is optional, so older files read as before,
+// Fields are added, never renamed. An added field is optional, so older files read as before,
 // and a speculum that predates it keeps it as an unknown field and writes it back: it needs no new
 // version (the top-level "editorView", the editor's own view, is such a field of version 1). A new version
 // is for a change an older reader would get wrong.

@@ -1,18 +1,18 @@
 #include "base/AtomicFile.hpp"
-#include "render/frame/SceneNames.hpp"
 #include "scene/project/JsonWriter.hpp"
 #include "scene/project/ProjectFile.hpp"
 
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <type_traits>
 
 namespace speculum::scene {
 
 namespace {
 
-// Field order is DESIGN.md's, a field added since beside its kin (editorView after camera); unknown
-// fields kept from the file follow the known ones.
+// Writes what the declarations hold (render/frame/Field.hpp), in their order, then the unknown fields kept
+// from the file; the scene's own structure (header, node tree) around them.
 class ProjectWriter {
 public:
     explicit ProjectWriter(const QDir& baseDir)
@@ -24,292 +24,118 @@ public:
         w.value("speculum-scene");
         w.key("version");
         w.value(kProjectFormatVersion);
-        w.key("settings");
-        writeSettings(scene.settings);
-        w.key("camera");
-        writeCamera(scene.camera);
-        if (scene.editorView) {
-            w.key("editorView");
-            writeEditorView(*scene.editorView);
-        }
+        writeFields(scene, scene.unknown, "");
         w.key("nodes");
         writeNodes(scene.nodes);
-        writeExtra(scene.extra);
+        writeExtra(scene.unknown, "");
         w.endObject();
         return w.finish();
     }
 
 private:
-    void vec(const char* key, const glm::dvec3& v) {
-        w.key(key);
-        const double values[3] = {v.x, v.y, v.z};
-        w.numbers(values, 3);
-    }
-
-    void vec(const char* key, const glm::dvec2& v) {
-        w.key(key);
-        const double values[2] = {v.x, v.y};
-        w.numbers(values, 2);
+    void writeNodes(const std::vector<NodeTree>& nodes) {
+        w.beginArray();
+        for (const NodeTree& node : nodes) {
+            w.beginObject();
+            writeFields(node.data, node.data.unknown, "");
+            writeExtra(node.data.unknown, "");
+            if (!node.children.empty()) {
+                w.key("children");
+                writeNodes(node.children);
+            }
+            w.endObject();
+        }
+        w.endArray();
     }
 
     template <typename T>
-    void field(const char* key, const T& value) {
-        w.key(key);
-        w.value(value);
+    void writeFields(const T& value, const UnknownFields& unknown, const std::string& key) {
+        render::forEachField<T>([&](const auto& f) {
+            using Owner = typename std::decay_t<decltype(f)>::OwnerType;
+            const Owner& owner = value;
+            const auto& member = owner.*f.member;
+            if (!written(f, owner, member))
+                return;
+            w.key(f.spec.name);
+            writeMember(member, f.spec, unknown, key.empty() ? std::string(f.spec.name) : key + "." + std::string(f.spec.name));
+        });
     }
 
-    void writeExtra(const QJsonObject& extra) {
-        for (const QString& name : JsonWriter::sortedKeys(extra)) {
+    // Whether the file gets a field: what is absent stays absent, and each field's write rule
+    // (FieldWrite) decides between its default and where it applies.
+    template <typename F, typename Owner, typename M>
+    static bool written(const F& f, const Owner& owner, const M& member) {
+        if constexpr (render::IsOptional<M>::value) {
+            if (!member)
+                return false;
+        }
+        const bool isDefault = member == Owner{}.*f.member;
+        switch (f.spec.write) {
+        case render::FieldWrite::Always:
+            return f.appliesTo(owner) || !isDefault;
+        case render::FieldWrite::UnlessDefault:
+            return !isDefault;
+        case render::FieldWrite::WhenApplies:
+            return f.appliesTo(owner);
+        case render::FieldWrite::Everywhere:
+            return true;
+        }
+        return true;
+    }
+
+    template <typename M>
+    void writeMember(const M& member, const render::FieldSpec& spec, const UnknownFields& unknown,
+                     const std::string& key) {
+        if constexpr (render::IsOptional<M>::value) {
+            writeMember(*member, spec, unknown, key);
+        } else if constexpr (render::HasFields<M>) {
+            w.beginObject();
+            writeFields(member, unknown, key);
+            writeExtra(unknown, key);
+            w.endObject();
+        } else {
+            writeScalar(member, spec);
+        }
+    }
+
+    template <typename M>
+    void writeScalar(const M& value, const render::FieldSpec& spec) {
+        if constexpr (std::is_enum_v<M>) {
+            w.value(render::names::fileName(spec.choices, value));
+        } else if constexpr (std::is_same_v<M, bool>) {
+            w.value(QJsonValue(value));
+        } else if constexpr (std::is_same_v<M, int> || std::is_same_v<M, double>) {
+            w.value(value);
+        } else if constexpr (std::is_same_v<M, glm::dvec2> || std::is_same_v<M, glm::dvec3>) {
+            w.numbers(&value[0], M::length());
+        } else if constexpr (std::is_same_v<M, render::TextureSource>) {
+            w.value(relative(value.path));
+        } else if constexpr (std::is_same_v<M, std::array<render::TextureWrap, 2>>) {
+            // One name when u and v agree, else [u, v].
+            const auto name = [&](render::TextureWrap wrap) {
+                return QString::fromUtf8(render::names::fileName(spec.choices, wrap).data());
+            };
+            w.value(value[0] == value[1] ? QJsonValue(name(value[0])) : QJsonValue(QJsonArray{name(value[0]), name(value[1])}));
+        } else if (spec.type == render::FieldType::Path) {
+            w.value(relative(value));
+        } else {
+            w.value(std::string_view(value));
+        }
+    }
+
+    // Unknown fields kept from the file follow the known ones, sorted.
+    void writeExtra(const UnknownFields& unknown, const std::string& key) {
+        const auto it = unknown.find(key);
+        if (it == unknown.end())
+            return;
+        for (const QString& name : JsonWriter::sortedKeys(it->second)) {
             w.key(name.toStdString());
-            w.value(extra.value(name));
+            w.value(it->second.value(name));
         }
     }
 
     std::string relative(const std::string& absolutePath) const {
         return m_baseDir.relativeFilePath(QString::fromStdString(absolutePath)).toStdString();
-    }
-
-    void writeSettings(const SceneSettings& s) {
-        w.beginObject();
-        vec("background", s.background);
-        field("mirrorDepth", s.mirrorDepth);
-        field("ambient", s.ambient);
-        if (!s.simplifyReflections) // written only where it differs from the default: files stay as they were
-            field("simplifyReflections", QJsonValue(s.simplifyReflections));
-        const SceneSettings defaults;
-        if (s.glossyFilter != defaults.glossyFilter)
-            field("glossyFilter", render::names::fileName(render::names::kGlossyFilters, s.glossyFilter));
-        if (s.glossyTaps != defaults.glossyTaps)
-            field("glossyTaps", s.glossyTaps);
-        if (s.prefilterSamples != defaults.prefilterSamples)
-            field("prefilterSamples", s.prefilterSamples);
-        writeExtra(s.extra);
-        w.endObject();
-    }
-
-    void writeCamera(const CameraData& c) {
-        w.beginObject();
-        vec("position", c.position);
-        vec("target", c.target);
-        vec("up", c.up);
-        field("fovY", c.fovY);
-        field("near", c.near);
-        field("far", c.far);
-        writeExtra(c.extra);
-        w.endObject();
-    }
-
-    void writeEditorView(const EditorView& v) {
-        w.beginObject();
-        vec("position", v.position);
-        vec("target", v.target);
-        writeExtra(v.extra);
-        w.endObject();
-    }
-
-    void writeNodes(const std::vector<NodeTree>& nodes) {
-        w.beginArray();
-        for (const NodeTree& node : nodes) {
-            writeNode(node);
-        }
-        w.endArray();
-    }
-
-    void writeNode(const NodeTree& node) {
-        const NodeData& d = node.data;
-        w.beginObject();
-        field("name", d.name);
-        w.key("transform");
-        writeTransform(d.transform);
-        if (d.mesh) {
-            w.key("mesh");
-            writeMesh(*d.mesh);
-        }
-        if (d.material) {
-            w.key("material");
-            writeMaterial(*d.material);
-        }
-        if (d.light) {
-            w.key("light");
-            writeLight(*d.light);
-        }
-        if (d.mirror) {
-            w.key("mirror");
-            writeMirror(*d.mirror);
-        }
-        if (d.reflector) {
-            w.key("reflector");
-            writeReflector(*d.reflector);
-        }
-        if (d.animation) {
-            w.key("animation");
-            writeAnimation(*d.animation);
-        }
-        writeExtra(d.extra);
-        if (!node.children.empty()) {
-            w.key("children");
-            writeNodes(node.children);
-        }
-        w.endObject();
-    }
-
-    void writeTransform(const Transform& t) {
-        w.beginObject();
-        vec("translate", t.translate);
-        vec("rotate", t.rotate);
-        vec("scale", t.scale);
-        writeExtra(t.extra);
-        w.endObject();
-    }
-
-    void writeMesh(const MeshComponent& m) {
-        w.beginObject();
-        if (m.builtin) {
-            field("builtin", toString(*m.builtin));
-            field("tessellation", m.tessellation);
-        } else {
-            field("file", relative(m.file));
-            if (m.part) {
-                field("part", *m.part);
-            }
-        }
-        writeExtra(m.extra);
-        w.endObject();
-    }
-
-    void writeMaterial(const MaterialComponent& m) {
-        w.beginObject();
-        vec("color", m.color);
-        field("ambient", m.ambient);
-        field("diffuse", m.diffuse);
-        field("specular", m.specular);
-        field("shininess", m.shininess);
-        vec("emission", m.emission);
-        if (!m.texture.empty()) {
-            field("texture", relative(m.texture));
-        }
-        // The fields imported models use; defaults are left out so older files are written unchanged.
-        const MaterialComponent defaults;
-        if (m.specularColor != defaults.specularColor) {
-            vec("specularColor", m.specularColor);
-        }
-        if (!m.emissionTexture.empty()) {
-            field("emissionTexture", relative(m.emissionTexture));
-        }
-        if (!m.normalTexture.empty()) {
-            field("normalTexture", relative(m.normalTexture));
-        }
-        if (m.normalScale != defaults.normalScale) {
-            field("normalScale", m.normalScale);
-        }
-        if (m.wrap != defaults.wrap) {
-            // One name when u and v agree, else [u, v].
-            if (m.wrap[0] == m.wrap[1]) {
-                field("wrap", toString(m.wrap[0]));
-            } else {
-                w.key("wrap");
-                w.value(QJsonValue(QJsonArray{QString::fromUtf8(toString(m.wrap[0]).data()),
-                                              QString::fromUtf8(toString(m.wrap[1]).data())}));
-            }
-        }
-        if (m.opacity != defaults.opacity) {
-            field("opacity", m.opacity);
-        }
-        if (m.alphaMode != defaults.alphaMode) {
-            field("alphaMode", toString(m.alphaMode));
-        }
-        if (m.alphaCutoff != defaults.alphaCutoff) {
-            field("alphaCutoff", m.alphaCutoff);
-        }
-        writeExtra(m.extra);
-        w.endObject();
-    }
-
-    void writeLight(const LightComponent& l) {
-        const LightComponent defaults;
-        w.beginObject();
-        field("type", render::names::fileName(render::names::kLightTypes, l.type));
-        vec("color", l.color);
-        field("intensity", l.intensity);
-        // The cone only means something for spots; other lights carry it only when someone changed it (so
-        // switching a spot to a point light and back loses nothing).
-        if (l.type == LightType::Spot || l.spotAngle != defaults.spotAngle ||
-            l.spotBlend != defaults.spotBlend) {
-            field("spotAngle", l.spotAngle);
-            field("spotBlend", l.spotBlend);
-        }
-        if (l.shadows) {
-            w.key("shadows");
-            w.beginObject();
-            field("mapSize", l.shadows->mapSize);
-            field("pcf", l.shadows->pcf);
-            writeExtra(l.shadows->extra);
-            w.endObject();
-        }
-        writeExtra(l.extra);
-        w.endObject();
-    }
-
-    void writeMirror(const MirrorComponent& m) {
-        w.beginObject();
-        vec("size", m.size);
-        field("reflectivity", m.reflectivity);
-        field("technique", render::names::fileName(render::names::kMirrorTechniques, m.technique));
-        vec("tint", m.tint);
-        field("fresnel", QJsonValue(m.fresnel));
-        field("roughness", m.roughness);
-        writeExtra(m.extra);
-        w.endObject();
-    }
-
-    void writeReflector(const ReflectorComponent& r) {
-        w.beginObject();
-        field("map", render::names::fileName(render::names::kReflectorMaps, r.map));
-        field("resolution", r.resolution);
-        field("reflectivity", r.reflectivity);
-        field("fresnel", QJsonValue(r.fresnel));
-        field("fill", render::names::fileName(render::names::kReflectorFills, r.fill));
-        if (r.parallax) {
-            w.key("parallax");
-            w.beginObject();
-            field("shape", toString(r.parallax->shape));
-            if (r.parallax->shape == ParallaxShape::Sphere) {
-                field("radius", r.parallax->radius);
-            } else {
-                vec("min", r.parallax->min);
-                vec("max", r.parallax->max);
-            }
-            writeExtra(r.parallax->extra);
-            w.endObject();
-        }
-        field("update", render::names::fileName(render::names::kReflectorUpdates, r.update));
-        field("mirrorDepth", r.mirrorDepth);
-        field("roughness", r.roughness);
-        writeExtra(r.extra);
-        w.endObject();
-    }
-
-    void writeAnimation(const AnimationComponent& a) {
-        w.beginObject();
-        if (a.bounce) {
-            w.key("bounce");
-            w.beginObject();
-            field("height", a.bounce->height);
-            field("period", a.bounce->period);
-            writeExtra(a.bounce->extra);
-            w.endObject();
-        }
-        if (a.orbit) {
-            w.key("orbit");
-            w.beginObject();
-            vec("center", a.orbit->center);
-            field("radius", a.orbit->radius);
-            field("period", a.orbit->period);
-            writeExtra(a.orbit->extra);
-            w.endObject();
-        }
-        writeExtra(a.extra);
-        w.endObject();
     }
 
     QDir m_baseDir;
@@ -335,11 +161,9 @@ base::Status saveProject(const SceneData& data, const QString& path) {
     }
 
     // One mechanism for every file speculum writes (base::AtomicFile): a temporary in the same folder,
-    // every write, the fsync and the close checked, then a rename. QSaveFile (Qt 6.4) was not enough on
-    // its own: it commits a file whose buffered write failed part-way unless flush() is checked.
-    return base::writeFileAtomically(
-        QFile::encodeName(path).toStdString(),
-        std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    // every write, the fsync and the close checked, then a rename.
+    return base::writeFileAtomically(QFile::encodeName(path).toStdString(),
+                                     std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
 }
 
 base::Status saveProject(const Scene& scene, const QString& path) {

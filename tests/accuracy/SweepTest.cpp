@@ -50,8 +50,8 @@ FrameInput withMirrorsAndShadows(FrameInput input) {
     m.name = "Mirror";
     input.mirrors.push_back(m);
     input.settings.mirrorDepth = 2;
-    input.lights.front().shadows.enabled = true;
-    input.lights.front().shadows.pcf = 9;
+    input.lights.front().shadows = render::ShadowParams{};
+    input.lights.front().shadows->pcf = 9;
     return input;
 }
 
@@ -105,9 +105,9 @@ TEST(BenchSweep, BigMeshesInReflectionsAreSweptWholeAndSimplified) {
             if (c.family == Family::ReflectedDetail) {
                 ids.push_back(c.id);
                 EXPECT_EQ(c.reference, ReferenceKind::Scene) << "the tracer always draws every triangle";
-                const FrameInput applied = applyVariation(scene, traits, c.variation, {});
+                const FrameInput applied = applyVariation(scene, c.variation, traits.proxy, {});
                 EXPECT_EQ(applied.settings.simplifyReflections, c.id == "reflected-detail-simplified");
-                const Settings s = effectiveSettings(applied, traits, std::nullopt);
+                const Settings s = effectiveSettings(applied, std::nullopt, traits.simplifiableMeshes > 0);
                 EXPECT_NE(
                     std::find(s.begin(), s.end(), std::make_pair(std::string("reflectedDetail"), c.label)),
                     s.end());
@@ -139,7 +139,7 @@ TEST(BenchSweep, RoughSurfacesAreSweptAtThreeRoughnessesAgainstTheirOwnReference
             const std::optional<double> roughness = referenceRoughness(c.reference);
             ASSERT_TRUE(roughness) << c.id;
             labels[c.reference].push_back(c.label);
-            const FrameInput applied = applyVariation(scene, traits, c.variation, {});
+            const FrameInput applied = applyVariation(scene, c.variation, traits.proxy, {});
             EXPECT_EQ(applied.mirrors[0].roughness, *roughness) << c.id;
             EXPECT_EQ(applied.mirrors[1].roughness, 0.0) << c.id << ": the sharp mirror stays sharp";
             EXPECT_EQ(applied.reflector->roughness, *roughness) << c.id;
@@ -148,7 +148,7 @@ TEST(BenchSweep, RoughSurfacesAreSweptAtThreeRoughnessesAgainstTheirOwnReference
             const FrameInput reference = referenceInput(scene, c.reference, {});
             EXPECT_EQ(reference.mirrors[0].roughness, *roughness);
             EXPECT_EQ(reference.mirrors[1].roughness, 0.0);
-            const Settings s = effectiveSettings(applied, traits, std::nullopt);
+            const Settings s = effectiveSettings(applied, std::nullopt, traits.simplifiableMeshes > 0);
             const std::map<std::string, std::string> m(s.begin(), s.end());
             EXPECT_EQ(m.at("glossy"), c.label == "mip" ? "mip" : "footprint " + c.label) << c.id;
         }
@@ -175,7 +175,7 @@ TEST(BenchSweep, NoProxyForAReflectorOutsideTheScene) {
 TEST(BenchSweep, EachFamilyVariesOnlyItsOwnSettingsAndIncludesTheScenes) {
     const FrameInput scene = withMirrorsAndShadows(withReflector(withBigMesh(plainScene())));
     const SceneTraits traits = sceneTraits(scene, 8);
-    const Settings own = effectiveSettings(scene, traits, 8);
+    const Settings own = effectiveSettings(scene, 8, traits.simplifiableMeshes > 0);
     const std::map<std::string, std::string> ownMap(own.begin(), own.end());
     const std::map<Family, std::set<std::string>> varies = {{Family::Envmap, {"map", "resolution", "fill"}},
                                                             {Family::Parallax, {"parallax", "resolution"}},
@@ -193,8 +193,8 @@ TEST(BenchSweep, EachFamilyVariesOnlyItsOwnSettingsAndIncludesTheScenes) {
             EXPECT_TRUE(ids.insert(c.id).second) << "duplicate id " << c.id;
             EXPECT_EQ(c.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-"), std::string::npos)
                 << c.id;
-            const FrameInput applied = applyVariation(scene, traits, c.variation, keep);
-            const Settings list = effectiveSettings(applied, traits, c.variation.tessellation.value_or(8));
+            const FrameInput applied = applyVariation(scene, c.variation, traits.proxy, keep);
+            const Settings list = effectiveSettings(applied, c.variation.tessellation.value_or(8), traits.simplifiableMeshes > 0);
             const std::map<std::string, std::string> s(list.begin(), list.end());
             const bool same = s == ownMap;
             std::set<std::string> names;

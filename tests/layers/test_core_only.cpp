@@ -19,7 +19,7 @@ TEST(LayersCoreOnly, PlansAFrameWithoutGl) {
     Light light;
     light.name = "Lamp";
     light.position = {0, 4, 0};
-    light.shadows.enabled = true;
+    light.shadows = ShadowParams{};
     input.lights.push_back(light);
 
     const FramePlan plan = planFrame(input, {});

@@ -249,8 +249,8 @@ inline render::FrameInput featureScene(const std::filesystem::path& folder) {
     render::Material floor;
     floor.color = glm::dvec3(0.9);
     floor.texture.path = quadrants;
-    floor.texture.wrapS = render::TextureWrap::MirroredRepeat;
-    floor.texture.wrapT = render::TextureWrap::MirroredRepeat;
+    floor.wrap[0] = render::TextureWrap::MirroredRepeat;
+    floor.wrap[1] = render::TextureWrap::MirroredRepeat;
     add("Floor", planeWith(false, false, glm::vec2(3.0f), glm::vec2(-1.0f)),
         glm::scale(glm::dmat4(1.0), glm::dvec3(3.0, 1.0, 3.0)), floor);
 
@@ -289,8 +289,8 @@ inline render::FrameInput featureScene(const std::filesystem::path& folder) {
     glowing.color = glm::dvec3(0.2);
     glowing.emission = glm::dvec3(0.9);
     glowing.emissionTexture.path = quadrants;
-    glowing.emissionTexture.wrapS = render::TextureWrap::ClampToEdge;
-    glowing.emissionTexture.wrapT = render::TextureWrap::ClampToEdge;
+    glowing.wrap[0] = render::TextureWrap::ClampToEdge;
+    glowing.wrap[1] = render::TextureWrap::ClampToEdge;
     render::MeshData cube = render::makeBox();
     for (glm::vec2& uv : cube.uvs)
         uv = uv * 1.6f - glm::vec2(0.3f);
@@ -304,9 +304,9 @@ inline render::FrameInput featureScene(const std::filesystem::path& folder) {
     light.spotAngle = 60.0;
     light.spotBlend = 0.2;
     light.intensity = 1.2;
-    light.shadows.enabled = true;
-    light.shadows.mapSize = 2048;
-    light.shadows.pcf = 1;
+    light.shadows = render::ShadowParams{};
+    light.shadows->mapSize = 2048;
+    light.shadows->pcf = 1;
     input.lights.push_back(light);
     return input;
 }
@@ -315,7 +315,7 @@ inline render::FrameInput featureScene(const std::filesystem::path& folder) {
 // so its edges show how the texture wraps.
 inline render::FrameInput wrapScene(const std::string& texture, render::TextureWrap wrap) {
     render::Material m = showTexture(texture);
-    m.texture.wrapS = m.texture.wrapT = wrap;
+    m.wrap = {wrap, wrap};
     render::FrameInput input = orientationScene(View::PlaneFromAbove, m);
     input.items[0].mesh = planeWith(false, false, glm::vec2(3.0f), glm::vec2(-1.0f));
     return input;
@@ -372,9 +372,9 @@ inline render::FrameInput maskedShadowScene(const std::string& stripes, render::
     render::Light sun;
     sun.type = render::LightType::Directional;
     sun.direction = glm::normalize(glm::dvec3(1.0, -1.0, 0.0));
-    sun.shadows.enabled = true;
-    sun.shadows.mapSize = 2048;
-    sun.shadows.pcf = 1;
+    sun.shadows = render::ShadowParams{};
+    sun.shadows->mapSize = 2048;
+    sun.shadows->pcf = 1;
     input.lights.push_back(sun);
     input.camera.position = {1.7, 4.0, 0.0};
     input.camera.target = {1.7, 0.0, 0.0};

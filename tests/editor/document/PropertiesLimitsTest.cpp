@@ -3,7 +3,7 @@
 // end is refused by both. The choices (map types, fills, ...) are spelled once, in
 // render/frame/SceneNames.hpp.
 #include "editor/document/Properties.hpp"
-#include "render/frame/GlossyLimits.hpp"
+#include "render/frame/Settings.hpp"
 #include "render/frame/SceneLimits.hpp"
 #include "render/frame/SceneNames.hpp"
 #include "scene/project/ProjectFile.hpp"

@@ -89,14 +89,15 @@ TEST(Properties, InvalidValuesAreRefusedWithAMessageAndNotClamped) {
         {"mirror.reflectivity", -0.1, "Reflectivity"},
         {"mirror.size", QVariantList{1.0, 0.0}, "extents must be greater than 0"},
         {"transform.scale", QVariantList{1.0, 0.0, 1.0}, "non-zero"},
-        {"material.color", QVariantList{1.5, 0.0, 0.0}, "Colour must be in 0..1, got 1.5"},
+        {"material.color", QVariantList{1.5, 0.0, 0.0},
+         "Colour components must be in 0..1 (linear RGB), got 1.5"},
         {"material.shininess", 20000.0, "Shininess"},
-        {"light.spotAngle", 0.0, "Spot angle must be in (0..90, got 0"},
+        {"light.spotAngle", 0.0, "Spot angle must be greater than 0, got 0"},
         {"light.shadows.mapSize", 1000, "power of two"},
         {"light.shadows.pcf", 4, "odd"},
         {"reflector.resolution", 4, "Resolution must be in 8..8192, got 4"},
         {"mesh.tessellation", 2.5, "whole number"},
-        {"animation.bounce.period", 0.0, "Bounce period must be in 0.001.."},
+        {"animation.bounce.period", 0.0, "Bounce period must be greater than 0, got 0"},
         {"node.name", QString(), "Name must not be empty"},
         {"material.texture", QStringLiteral("/no/such/texture.png"), "does not exist"},
         {"transform.translate", QVariantList{std::nan(""), 0.0, 0.0}, "finite"},
@@ -118,7 +119,7 @@ TEST(Properties, TexturesMayNameAnImageEmbeddedInAModel) {
     ASSERT_TRUE(texture);
     const auto status = texture->set(d, QString::fromStdString(model + "#*0"));
     ASSERT_TRUE(status.ok()) << status.error();
-    EXPECT_EQ(d.material->texture, model + "#*0");
+    EXPECT_EQ(d.material->texture.path, model + "#*0");
     // Only a real model file before the '#': anything else is still a missing file.
     EXPECT_FALSE(texture->set(d, QStringLiteral("/no/such/model.glb#*0")).ok());
     // And a mesh file is never an embedded name.

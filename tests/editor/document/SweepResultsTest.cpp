@@ -78,8 +78,9 @@ TEST(SweepResults, TheParallaxProxyIsTheSweeps) {
     const auto proxy = sweepParallaxProxy(frame);
     ASSERT_TRUE(proxy.has_value());
     EXPECT_EQ(proxy->shape, scene::ParallaxShape::Box);
-    EXPECT_EQ(proxy->min, traits.proxy.min);
-    EXPECT_EQ(proxy->max, traits.proxy.max);
+    ASSERT_TRUE(traits.proxy);
+    EXPECT_EQ(proxy->min, traits.proxy->min);
+    EXPECT_EQ(proxy->max, traits.proxy->max);
     // Outside the room there is nothing around the ball for a box to stand for.
     frame.reflector->world[3] = glm::dvec4(0.0, 40.0, 0.0, 1.0);
     EXPECT_FALSE(sweepParallaxProxy(frame).has_value());
@@ -147,6 +148,70 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
     EXPECT_TRUE(same.skipped.isEmpty());
 }
 
+// A point of the glossy family is a roughness and a filter ("footprint 16 taps", "mip", "prefilter 64
+// samples"): applied from the Accuracy panel, it sets the scene's rough mirrors to that roughness and the
+// settings to that filter, in one undo step, and undo gives the scene back.
+TEST(SweepResults, AGlossyPointAppliesItsRoughnessAndFilter) {
+    scene::Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(scene::openProject(scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/glossy.speculum.json"), warnings).ok());
+    const scene::SceneData before = scene.toData();
+    auto footprint = applySweepSettings(scene, {{"roughness", "0.5"}, {"glossy", "footprint 4 taps"}},
+                                        QStringLiteral("Apply Sweep Setting glossy-footprint-4-0.5"));
+    ASSERT_TRUE(footprint.command);
+    EXPECT_TRUE(footprint.skipped.isEmpty()) << footprint.skipped.join(QStringLiteral("; ")).toStdString();
+    QUndoStack stack;
+    stack.push(footprint.command.release());
+    EXPECT_EQ(scene.settings().glossyFilter, render::GlossyFilter::Footprint);
+    EXPECT_EQ(scene.settings().glossyTaps, 4);
+    int rough = 0;
+    scene.forEachNode([&](const scene::Node& node) {
+        const auto& mirror = node.data().mirror;
+        if (mirror && mirror->roughness > 0.0) {
+            ++rough;
+            EXPECT_EQ(mirror->roughness, 0.5) << node.data().name;
+        }
+    });
+    EXPECT_GT(rough, 0) << "the glossy demo has rough mirrors";
+    stack.undo();
+    EXPECT_EQ(scene.toData(), before);
+
+    auto mip = applySweepSettings(scene, {{"glossy", "mip"}}, QStringLiteral("mip"));
+    ASSERT_TRUE(mip.command);
+    stack.push(mip.command.release());
+    EXPECT_EQ(scene.settings().glossyFilter, render::GlossyFilter::Mip);
+
+    auto broken = applySweepSettings(scene, {{"glossy", "footprint many taps"}}, QStringLiteral("broken"));
+    EXPECT_FALSE(broken.command);
+    ASSERT_EQ(broken.skipped.size(), 1);
+    EXPECT_TRUE(broken.skipped.front().startsWith(QStringLiteral("glossy = footprint many taps: ")))
+        << broken.skipped.front().toStdString();
+}
+
+// The shadows family's kernel is a field of every shadowed light's shadow map.
+TEST(SweepResults, AShadowPointSetsEveryShadowedLightsKernel) {
+    scene::Scene scene;
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(
+        scene::openProject(
+            scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json"), warnings)
+            .ok());
+    auto application = applySweepSettings(scene, {{"pcf", "7"}}, QStringLiteral("Apply Sweep Setting pcf 7"));
+    EXPECT_TRUE(application.skipped.isEmpty())
+        << application.skipped.join(QStringLiteral("; ")).toStdString();
+    ASSERT_TRUE(application.command);
+    QUndoStack stack;
+    stack.push(application.command.release());
+    int shadowed = 0;
+    scene.forEachNode([&](const scene::Node& node) {
+        if (node.data().light && node.data().light->shadows) {
+            ++shadowed;
+            EXPECT_EQ(node.data().light->shadows->pcf, 7);
+        }
+    });
+    EXPECT_GT(shadowed, 0);
+}
+
 TEST(SweepResults, SettingsThatCancelOutGiveNoCommand) {
     scene::Scene scene;
     std::vector<std::string> warnings;
@@ -162,8 +227,9 @@ TEST(SweepResults, SettingsThatCancelOutGiveNoCommand) {
                                              : scene::MirrorTechnique::Stencil;
     // A later key edits the mirrors back to what they hold: nothing changes, so nothing is pushed.
     auto application = applySweepSettings(scene,
-                                          {{"technique", std::string(scene::toString(other))},
-                                           {"technique", std::string(scene::toString(*current))}},
+                                          {{"technique", std::string(render::names::fileName(render::names::kMirrorTechniques, other))},
+                                           {"technique",
+                                            std::string(render::names::fileName(render::names::kMirrorTechniques, *current))}},
                                           QStringLiteral("cancelled"));
     EXPECT_FALSE(application.command);
     EXPECT_EQ(application.applied.size(), 2);

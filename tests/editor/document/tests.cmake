@@ -7,3 +7,12 @@ speculum_add_test(EditorDocumentTest TIER unit
             EditOperationsPlacementTest.cpp EditTransactionTest.cpp NodeFactoryTest.cpp PropertiesTest.cpp
             PropertiesLimitsTest.cpp SweepResultsTest.cpp SweepResultsUndoTest.cpp
     LIBS speculum_editor_document Qt6::Test)
+
+# Adding a field to a declaration is enough for it to be read, written, shown, hashed and swept: this
+# program is built against copies of the libraries that see render/frame, compiled with a planar mirror
+# that has one more field (SPECULUM_FIELD_PROBE in render/frame/Mirror.hpp).
+speculum_library_variants(SUFFIX _probe DEFINITIONS SPECULUM_FIELD_PROBE
+                          FOR speculum_editor_document SEES speculum_render_frame)
+speculum_add_test(FieldDeclarationTest TIER unit
+    SOURCES FieldDeclarationTest.cpp
+    LIBS speculum_editor_document_probe)

@@ -42,7 +42,7 @@ protected:
     // The handles on node A as the viewport draws them: a 800×600 view through the scene's camera.
     Gizmo gizmo(HandleMode mode) const {
         Gizmo g;
-        const ScreenProjection projection(scene::toRender(scene.camera()), QSizeF(800, 600));
+        const ScreenProjection projection(scene.camera(), QSizeF(800, 600));
         g.setUp(mode, projection, glm::dmat4(1.0), scene::localMatrix(scene.findNode(a_)->data().transform));
         return g;
     }

@@ -241,7 +241,7 @@ TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndR
     EXPECT_FALSE(m_window->isWindowModified());
     EXPECT_EQ(m_window->recentFiles().value(0), path);
     speculum::scene::SceneData saved = built;
-    saved.editorView = speculum::scene::EditorView{{3.0, 4.0, 5.0}, {0.0, 0.5, -3.0}, {}};
+    saved.editorView = speculum::scene::EditorView{{3.0, 4.0, 5.0}, {0.0, 0.5, -3.0}};
     m_window->newProject();
     EXPECT_TRUE(m_window->scene().toData() == fresh);
     EXPECT_NE(m_window->viewport().viewCamera().position, glm::dvec3(3.0, 4.0, 5.0));

@@ -18,7 +18,7 @@ speculum_add_test(MainWindowWorkflowGuiTest TIER gui
 # What the editor shows and writes: the viewport after an inspector edit, the render passes panel,
 # Export Still. Runs the real speculum binary to compare Export Still with `speculum render`.
 speculum_add_test(MainWindowOutputGuiTest TIER gui USES_CLI
-    SOURCES MainWindowOutputGuiTest.cpp ${gui_main} LIBS speculum_editor_ui)
+    SOURCES MainWindowOutputGuiTest.cpp ${gui_main} LIBS speculum_editor_ui PkgConfig::OIIO)
 # Shortcuts from the scene tree that leave text fields their keys, the new document's floor, sun and
 # raised camera, new objects and duplicates placed beside each other.
 speculum_add_test(MainWindowInputGuiTest TIER gui

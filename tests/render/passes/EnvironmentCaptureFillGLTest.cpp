@@ -55,7 +55,7 @@ FrameInput ballNearBigTriangles(ReflectorMap map, ReflectorFill fill) {
     Light light;
     light.name = "Light";
     light.position = {-1.5, 3.5, 2.0};
-    light.shadows = {true, 1024, 3};
+    light.shadows = render::ShadowParams{1024, 3};
     input.lights = {light};
     Reflector r;
     r.name = "Ball";

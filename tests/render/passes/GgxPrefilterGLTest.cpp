@@ -76,7 +76,7 @@ class Prefilter : public GlTest {};
 
 TEST_F(Prefilter, RoughnessZeroIsTheSharpImageWithoutAPrefilterPass) {
     for (ReflectorMap map : kMaps) {
-        SCOPED_TRACE(reflectorMapName(map));
+        SCOPED_TRACE(std::string(names::fileName(names::kReflectorMaps, map)));
         const Image footprint = renderImage(ball(map, 0.0, GlossyFilter::Footprint, true), kSize, kSize);
         EXPECT_EQ(lastReport().countRan(PassKind::Prefilter), 0u);
         for (const PlannedPass& p : lastReport().plan.passes)
@@ -99,7 +99,7 @@ TEST_F(Prefilter, UniformEnvironmentStaysUniform) {
     for (ReflectorMap map : kMaps)
         for (GlossyFilter filter : {GlossyFilter::Footprint, GlossyFilter::Mip})
             for (double roughness : {0.5, 1.0}) {
-                SCOPED_TRACE(std::string(reflectorMapName(map)) +
+                SCOPED_TRACE(std::string(names::fileName(names::kReflectorMaps, map)) +
                              (filter == GlossyFilter::Mip ? " mip" : " footprint") + " roughness " +
                              std::to_string(roughness));
                 const Image image = renderImage(ball(map, roughness, filter, false), kSize, kSize);
@@ -126,7 +126,7 @@ TEST_F(Prefilter, UniformEnvironmentStaysUniform) {
 
 TEST_F(Prefilter, MoreSamplesComeCloserToTheReference) {
     for (ReflectorMap map : kMaps) {
-        SCOPED_TRACE(reflectorMapName(map));
+        SCOPED_TRACE(std::string(names::fileName(names::kReflectorMaps, map)));
         auto render = [&](int samples) {
             FrameInput input = ball(map, 0.3, GlossyFilter::Footprint, true);
             input.settings.prefilterSamples = samples;
@@ -148,7 +148,7 @@ TEST_F(Prefilter, MoreSamplesComeCloserToTheReference) {
 TEST_F(Prefilter, RoughnessOneIsFiniteEverywhere) {
     for (ReflectorMap map : kMaps)
         for (GlossyFilter filter : {GlossyFilter::Footprint, GlossyFilter::Mip}) {
-            SCOPED_TRACE(reflectorMapName(map));
+            SCOPED_TRACE(std::string(names::fileName(names::kReflectorMaps, map)));
             // Close up: the ball covers the view, and its reflection vectors cross every seam of the map.
             FrameInput input = ball(map, 1.0, filter, true);
             input.camera.position = {0.3, 0.4, 1.6};

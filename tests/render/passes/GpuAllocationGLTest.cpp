@@ -52,7 +52,7 @@ FrameInput scene(int shadowMapSize, bool withReflector = false) {
     lamp.type = LightType::Point;
     lamp.position = {0.5, 3.0, 0.5};
     lamp.intensity = 1.0;
-    lamp.shadows = {true, shadowMapSize, 1};
+    lamp.shadows = render::ShadowParams{shadowMapSize, 1};
     input.lights.push_back(lamp);
     if (withReflector) {
         Reflector ball;
@@ -172,10 +172,10 @@ TEST_F(GlTest, ShadowMapFallsBackByHalvingToTheLargestSizeThatFits) {
 // Not even the smallest map fits: the light lights without shadows, and says so.
 TEST_F(GlTest, LightWhoseSmallestShadowMapDoesNotFitLightsWithoutShadows) {
     FrameInput input = scene(1024);
-    input.lights[0].shadows.enabled = false;
+    input.lights[0].shadows.reset();
     const Image unshadowed = renderImage(input, 32, 18); // the meshes and the colour buffer, under no limit
     AllocationLimit limit(1000);                         // a 16² cube takes 6 KiB
-    input.lights[0].shadows.enabled = true;
+    input.lights[0].shadows = ShadowParams{};
     const Image image = renderImage(input, 32, 18);
     ASSERT_EQ(lastReport().warnings.size(), 1u) << ::testing::PrintToString(lastReport().warnings);
     EXPECT_NE(
@@ -224,10 +224,10 @@ TEST_F(GlTest, ReflectorWhoseMapDoesNotFitIsDrawnSmallerNotDropped) {
     };
     for (const Case& c : {Case{ReflectorMap::Cube, ReflectorFill::Resampled},
                           Case{ReflectorMap::DualParaboloid, ReflectorFill::Resampled}}) {
-        SCOPED_TRACE(reflectorMapName(c.map));
+        SCOPED_TRACE(std::string(names::fileName(names::kReflectorMaps, c.map)));
         FrameInput input = scene(256, true);
         input.items.clear(); // the map shows the background only: cheap to fill even at 4096
-        input.lights[0].shadows.enabled = false;
+        input.lights[0].shadows.reset();
         input.reflector->map = c.map;
         input.reflector->fill = c.fill;
         input.reflector->resolution = 8192;
@@ -247,7 +247,7 @@ TEST_F(GlTest, ReflectorWhoseMapDoesNotFitIsDrawnSmallerNotDropped) {
         EXPECT_LE(report.warnings.size(), 1u) << ::testing::PrintToString(report.warnings);
         EXPECT_NE(envmap->reason.find(std::to_string(used) + "×" + std::to_string(used)), std::string::npos)
             << envmap->reason;
-        std::printf("8192 %s reflector: drawn at %d (%.0f ms)\n", reflectorMapName(c.map), used, ms);
+        std::printf("8192 %s reflector: drawn at %d (%.0f ms)\n", std::string(names::fileName(names::kReflectorMaps, c.map)).c_str(), used, ms);
     }
 }
 
@@ -267,7 +267,7 @@ TEST_F(GlTest, ReflectorMapOfEveryLayoutFallsBackUnderAnAllocationLimit) {
                           Case{ReflectorMap::DualParaboloid, ReflectorFill::Direct, 8192},
                           Case{ReflectorMap::TennisBall, ReflectorFill::Direct, 4096},
                           Case{ReflectorMap::TennisBall, ReflectorFill::Resampled, 4096}}) {
-        SCOPED_TRACE(std::string(reflectorMapName(c.map)) +
+        SCOPED_TRACE(std::string(names::fileName(names::kReflectorMaps, c.map)) +
                      (c.fill == ReflectorFill::Direct ? " direct" : ""));
         FrameInput input = scene(256, true);
         input.reflector->map = c.map;
@@ -278,7 +278,7 @@ TEST_F(GlTest, ReflectorMapOfEveryLayoutFallsBackUnderAnAllocationLimit) {
         ASSERT_EQ(report.warnings.size(), 1u) << ::testing::PrintToString(report.warnings);
         const std::string& w = report.warnings[0];
         EXPECT_EQ(w.rfind("reflector 'Ball': the " + std::to_string(c.resolution) + " " +
-                              std::string(reflectorMapName(c.map)) +
+                              std::string(names::fileName(names::kReflectorMaps, c.map)) +
                               " environment map did not fit in GPU memory",
                           0),
                   0u)

@@ -29,7 +29,8 @@ Light light(const std::string& name, LightType type, glm::dvec3 position, bool s
     l.direction = glm::normalize(glm::dvec3(0.0) - position);
     l.spotAngle = 40.0;
     l.intensity = 0.6;
-    l.shadows = {shadows, 512, pcf};
+    if (shadows)
+        l.shadows = render::ShadowParams{512, pcf};
     return l;
 }
 
@@ -200,7 +201,7 @@ TEST_F(LightingVariants, ShadowLookupsBoundedByWhatTheMapHoldsDrawTheSameImageAs
          light("Spot", LightType::Spot, {-2.0, 3.5, 2.0}, true, 5),
          light("Sun", LightType::Directional, {2.0, 4.0, 3.0}, true, 1)}};
     for (const std::vector<Light>& lights : rigs) {
-        SCOPED_TRACE(lights.front().name + " PCF " + std::to_string(lights.front().shadows.pcf) + ", " +
+        SCOPED_TRACE(lights.front().name + " PCF " + std::to_string(lights.front().shadows->pcf) + ", " +
                      std::to_string(lights.size()) + " light(s)");
         FrameInput input = litScene(lights);
         for (DrawItem& item : input.items)
@@ -211,7 +212,7 @@ TEST_F(LightingVariants, ShadowLookupsBoundedByWhatTheMapHoldsDrawTheSameImageAs
         settings.boundShadowLookups = true;
         auto bounded = renderStill(renderer(), input, settings);
         for (Light& l : input.lights)
-            l.shadows.enabled = false;
+            l.shadows.reset();
         auto unshadowed = renderStill(renderer(), input, settings);
         ASSERT_TRUE(filtered.ok() && bounded.ok() && unshadowed.ok());
         double largest = 0.0, shadowed = 0.0;

@@ -377,7 +377,7 @@ TEST_F(GlTest, PerfectMirrorLooksLikeAMirrorOfReflectivityJustUnderOne) {
     Light light;
     light.name = "Light";
     light.position = {0, 3, 2};
-    light.shadows = {true, 512, 3};
+    light.shadows = render::ShadowParams{512, 3};
     input.lights = {light};
     input.items.push_back(cube("Red", {1.0, 0.3, 0.0}, 0.3, {1, 0, 0}));
     input.items.push_back(cube("Green", {-1.0, -0.3, 0.5}, 0.3, {0, 1, 0}));

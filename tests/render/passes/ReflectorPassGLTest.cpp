@@ -386,9 +386,9 @@ TEST_F(ReflectorFrames, ParallaxCorrectionMovesNearbyReflectionsWhereTheyBelong)
     };
     const Image plainImage = renderImage(input, kSize, kSize);
     const double plain = score(plainImage);
-    input.reflector->parallax.shape = ParallaxProxy::Shape::Box;
-    input.reflector->parallax.min = glm::dvec3(-kHalf) - glm::dvec3(0.8, 0.6, 0.0);
-    input.reflector->parallax.max = glm::dvec3(kHalf) - glm::dvec3(0.8, 0.6, 0.0);
+    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflector->parallax->min = glm::dvec3(-kHalf) - glm::dvec3(0.8, 0.6, 0.0);
+    input.reflector->parallax->max = glm::dvec3(kHalf) - glm::dvec3(0.8, 0.6, 0.0);
     const Image correctedImage = renderImage(input, kSize, kSize);
     const double corrected = score(correctedImage);
     // The misses left are pixels on a boundary between two walls, whose filtered colour is a blend.

@@ -49,7 +49,7 @@ Light pointLight(int pcf) {
     light.name = "Lamp";
     light.type = LightType::Point;
     light.position = {2.0, 3.0, 0.0};
-    light.shadows = {true, 1024, pcf};
+    light.shadows = render::ShadowParams{1024, pcf};
     return light;
 }
 
@@ -190,7 +190,7 @@ TEST_F(GlTest, DirectionalLightShadowCoversTheExactShadowWithoutLeaks) {
     sun.name = "Sun";
     sun.type = LightType::Directional;
     sun.direction = glm::normalize(glm::dvec3(1.2, -1.0, 0.3));
-    sun.shadows = {true, 1024, 3};
+    sun.shadows = render::ShadowParams{1024, 3};
     const FrameInput input = shadowScene(sun);
     const ShadowCensus c = census(renderImage(input, kSize, kSize), input, edgeMargin(3) + 0.03);
     EXPECT_GT(c.shadowed, 1000);

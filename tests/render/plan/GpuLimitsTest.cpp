@@ -13,7 +13,7 @@ Light shadowed(LightType type, int mapSize, const std::string& name) {
     Light light;
     light.name = name;
     light.type = type;
-    light.shadows = {true, mapSize, 3};
+    light.shadows = render::ShadowParams{mapSize, 3};
     return light;
 }
 
@@ -40,21 +40,21 @@ TEST(GpuLimits, ShadowMapsAreFittedToTheirOwnKindOfTexture) {
     input.lights = {shadowed(LightType::Point, 100000, "Lamp"), shadowed(LightType::Spot, 100000, "Spot"),
                     shadowed(LightType::Directional, 100000, "Sun"), shadowed(LightType::Spot, 4, "Tiny")};
     input.lights.push_back(shadowed(LightType::Point, 100000, "Unshadowed"));
-    input.lights.back().shadows.enabled = false; // no map: nothing to fit
+    input.lights.back().shadows.reset(); // no map: nothing to fit
     std::vector<std::string> warnings;
     const auto fitted = fitToGpuLimits(input, kLimits, warnings);
     ASSERT_TRUE(fitted);
-    EXPECT_EQ(fitted->lights[0].shadows.mapSize, 2048); // a cube map
-    EXPECT_EQ(fitted->lights[1].shadows.mapSize, 4096); // 2D maps
-    EXPECT_EQ(fitted->lights[2].shadows.mapSize, 4096);
-    EXPECT_EQ(fitted->lights[3].shadows.mapSize, kMinShadowMapSize);
-    EXPECT_EQ(fitted->lights[4].shadows.mapSize, 100000);
+    EXPECT_EQ(fitted->lights[0].shadows->mapSize, 2048); // a cube map
+    EXPECT_EQ(fitted->lights[1].shadows->mapSize, 4096); // 2D maps
+    EXPECT_EQ(fitted->lights[2].shadows->mapSize, 4096);
+    EXPECT_EQ(fitted->lights[3].shadows->mapSize, kMinShadowMapSize);
+    EXPECT_EQ(fitted->lights[4].shadows->mapSize, 100000);
     ASSERT_EQ(warnings.size(), 4u);
     EXPECT_NE(warnings[0].find("light \"Lamp\""), std::string::npos) << warnings[0];
     EXPECT_NE(warnings[0].find("100000"), std::string::npos) << warnings[0];
     EXPECT_NE(warnings[0].find("2048"), std::string::npos) << warnings[0];
     EXPECT_NE(warnings[3].find("Tiny"), std::string::npos) << warnings[3];
-    EXPECT_EQ(input.lights[0].shadows.mapSize, 100000) << "the input is left as it was";
+    EXPECT_EQ(input.lights[0].shadows->mapSize, 100000) << "the input is left as it was";
 }
 
 TEST(GpuLimits, ReflectorResolutionFitsEveryTextureItsMapNeeds) {

@@ -42,8 +42,8 @@ FrameInput litScene() {
     Light lamp;
     lamp.name = "Lamp";
     lamp.position = {0, 4, 0};
-    lamp.shadows.enabled = true;
-    lamp.shadows.pcf = 3;
+    lamp.shadows = ShadowParams{};
+    lamp.shadows->pcf = 3;
     input.lights.push_back(lamp);
     Light off; // lights without shadows: no ShadowPlan
     off.name = "Fill";
@@ -55,8 +55,8 @@ FrameInput litScene() {
     spot.position = {3, 5, 2};
     spot.direction = {-0.5, -1, -0.3};
     spot.spotAngle = 30.0;
-    spot.shadows.enabled = true;
-    spot.shadows.mapSize = 8; // below the smallest map: drawn at kMinShadowMapSize
+    spot.shadows = ShadowParams{};
+    spot.shadows->mapSize = 8; // below the smallest map: drawn at kMinShadowMapSize
     input.lights.push_back(spot);
     return input;
 }
@@ -356,8 +356,8 @@ TEST(ShadowPlan, EachShadowedLightHasItsOneFrustumAndSignatureInSlotOrder) {
         const Light& light = input.lights[static_cast<std::size_t>(shadow.light)];
         SCOPED_TRACE(light.name);
         EXPECT_EQ(shadow.light, plan.shadowedLights[k]);
-        EXPECT_EQ(shadow.mapSize, std::max(light.shadows.mapSize, kMinShadowMapSize));
-        EXPECT_EQ(shadow.pcf, light.shadows.pcf);
+        EXPECT_EQ(shadow.mapSize, std::max(light.shadows->mapSize, kMinShadowMapSize));
+        EXPECT_EQ(shadow.pcf, light.shadows->pcf);
         const auto frustum = math::shadowFrustum(input, light, shadow.mapSize);
         ASSERT_TRUE(frustum);
         expectSameFrustum(shadow.frustum, *frustum);

@@ -1,8 +1,8 @@
 // The signatures that let the renderer reuse a map (envmapSignature for the reflector's environment map,
 // shadowSignature for a light's shadow map) must change with every field the map draws and with nothing
 // else. One table row per field of FrameInput's structs: how to perturb it, whether each signature must
-// see it, and why. The field lists below are structured bindings, so a field added to FrameInput.hpp
-// stops this file from compiling until it has a row.
+// see it, and why. The field lists come from the declarations (fields()) and, for plain structs, from
+// structured bindings, so a field added anywhere fails a test or the build until it has a row.
 #include "render/imageio/TextureLoader.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/plan/Planner.hpp"
@@ -28,32 +28,49 @@ std::vector<std::string> qualified(const std::string& type, const std::string& n
     return out;
 }
 
-// The fields of a FrameInput struct, in order: the binding needs exactly as many names as Type has
-// fields, so adding one to the struct breaks the build here.
+// The fields of a plain struct, in order: the binding needs exactly as many names as Type has fields, so
+// adding one to the struct breaks the build here.
 #define SPECULUM_FIELDS(Type, ...)                                                                           \
     [] {                                                                                                     \
         [[maybe_unused]] const auto& [__VA_ARGS__] = Type{};                                                 \
         return qualified(#Type, #__VA_ARGS__);                                                               \
     }()
 
+// The declared fields of Params (what a file stores), named as fields of Type: a field added to a
+// declaration needs a row below without any edit here.
+template <typename Params>
+std::vector<std::string> declared(const std::string& type) {
+    std::vector<std::string> out;
+    Params::fields([&](const auto& field) { out.push_back(type + "." + std::string(field.spec.name)); });
+    return out;
+}
+
+// What a light, mirror or reflector holds besides its declared parameters: where the scene put it and
+// what it is made of. A structured binding cannot list a derived struct's members, so their sizes stand in.
+static_assert(sizeof(Light) == sizeof(LightParams) + sizeof(std::string) + 2 * sizeof(glm::dvec3),
+              "a member was added to Light: give it a row and list it in everyField()");
+static_assert(sizeof(Mirror) ==
+                  sizeof(MirrorParams) + sizeof(std::string) + sizeof(glm::dmat4) + sizeof(Material) + alignof(Mirror),
+              "a member was added to Mirror: give it a row and list it in everyField()");
+static_assert(sizeof(Reflector) == sizeof(ReflectorParams) + sizeof(std::string) + sizeof(glm::dmat4) +
+                                       sizeof(MeshHandle) + sizeof(Material),
+              "a member was added to Reflector: give it a row and list it in everyField()");
+
 std::vector<std::string> everyField() {
     std::vector<std::vector<std::string>> lists = {
-        SPECULUM_FIELDS(Settings, background, mirrorDepth, ambient, simplifyReflections, glossyFilter,
-                        glossyTaps, prefilterSamples),
-        SPECULUM_FIELDS(Camera, position, target, up, fovY, near, far),
-        SPECULUM_FIELDS(TextureSource, path, image, wrapS, wrapT),
-        SPECULUM_FIELDS(Material, color, ambient, diffuse, specular, shininess, emission, specularColor,
-                        texture, emissionTexture, normalTexture, normalScale, opacity, alphaMode,
-                        alphaCutoff),
+        declared<Settings>("Settings"),
+        declared<Camera>("Camera"),
+        SPECULUM_FIELDS(TextureSource, path, image),
+        declared<Material>("Material"),
         SPECULUM_FIELDS(DrawItem, name, world, mesh, material, castsShadows),
-        SPECULUM_FIELDS(ShadowSettings, enabled, mapSize, pcf),
-        SPECULUM_FIELDS(Light, name, type, position, direction, color, intensity, spotAngle, spotBlend,
-                        shadows),
-        SPECULUM_FIELDS(Mirror, name, world, size, reflectivity, technique, tint, fresnel, roughness,
-                        material, hasMaterial),
-        SPECULUM_FIELDS(ParallaxProxy, shape, radius, min, max),
-        SPECULUM_FIELDS(Reflector, name, world, mesh, material, map, resolution, reflectivity, fresnel, fill,
-                        parallax, update, mirrorDepth, roughness),
+        declared<ShadowParams>("ShadowParams"),
+        declared<LightParams>("Light"),
+        {"Light.name", "Light.position", "Light.direction"},
+        declared<MirrorParams>("Mirror"),
+        {"Mirror.name", "Mirror.world", "Mirror.material", "Mirror.hasMaterial"},
+        declared<ParallaxParams>("ParallaxParams"),
+        declared<ReflectorParams>("Reflector"),
+        {"Reflector.name", "Reflector.world", "Reflector.mesh", "Reflector.material"},
         SPECULUM_FIELDS(FrameInput, settings, camera, items, lights, mirrors, reflector, time),
     };
     std::vector<std::string> all;
@@ -97,8 +114,8 @@ FrameInput baseScene() {
     light.position = {0, 4, 0};
     light.direction = {0, -1, 0};
     light.spotAngle = 40.0;
-    light.shadows.enabled = true;
-    light.shadows.pcf = 3;
+    light.shadows = ShadowParams{};
+    light.shadows->pcf = 3;
     input.lights.push_back(light);
     Mirror wall;
     wall.name = "Wall";
@@ -115,6 +132,7 @@ FrameInput baseScene() {
     ball.map = ReflectorMap::DualParaboloid;
     ball.fill = ReflectorFill::Resampled;
     ball.mirrorDepth = 1;
+    ball.parallax = ParallaxParams{.shape = ParallaxShape::Box, .min = glm::dvec3(-4.0), .max = glm::dvec3(4.0)};
     input.reflector = ball;
     return input;
 }
@@ -151,8 +169,6 @@ std::vector<Row> materialRows(const std::string& context, std::function<Material
         };
         one("path", [](TextureSource& t) { t.path = "/abs/other.png"; });
         one("image", [](TextureSource& t) { t.image = someImage(); });
-        one("wrapS", [](TextureSource& t) { t.wrapS = TextureWrap::ClampToEdge; });
-        one("wrapT", [](TextureSource& t) { t.wrapT = TextureWrap::MirroredRepeat; });
         rows.push_back(Row{"Material." + name, context,
                            [at, texture](FrameInput& f) {
                                TextureSource& t = texture(at(f));
@@ -200,6 +216,9 @@ std::vector<Row> materialRows(const std::string& context, std::function<Material
             true),
         row(
             "alphaCutoff", [](Material& m) { m.alphaCutoff = 0.7; }, true),
+        row(
+            "wrap", [](Material& m) { m.wrap = {TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat}; },
+            true),
     };
     for (auto& r : textureRows(
              "texture", [](Material& m) -> TextureSource& { return m.texture; }, true))
@@ -286,15 +305,13 @@ std::vector<Row> table() {
          "the cone lights the map and sets the frustum's angle"},
         {"Light.spotBlend", "", [](FrameInput& f) { f.lights[0].spotBlend = 0.5; }, true, false,
          "the cone's soft edge lights the map; the frustum covers the whole cone either way"},
-        {"Light.shadows", "", [](FrameInput& f) { f.lights[0].shadows = ShadowSettings{}; }, true, false,
+        {"Light.shadows", "", [](FrameInput& f) { f.lights[0].shadows.reset(); }, true, false,
          "shadows off: the map is lit without them; whether a shadow map exists is the planner's decision, "
          "not part of what it holds"},
-        // ShadowSettings
-        {"ShadowSettings.enabled", "", [](FrameInput& f) { f.lights[0].shadows.enabled = false; }, true,
-         false, "the map is lit without shadows; whether a shadow map exists is the planner's decision"},
-        {"ShadowSettings.mapSize", "", [](FrameInput& f) { f.lights[0].shadows.mapSize = 512; }, true, true,
+        // ShadowParams
+        {"ShadowParams.mapSize", "", [](FrameInput& f) { f.lights[0].shadows->mapSize = 512; }, true, true,
          "the map samples a coarser shadow; the shadow map's own size"},
-        {"ShadowSettings.pcf", "", [](FrameInput& f) { f.lights[0].shadows.pcf = 5; }, true, false,
+        {"ShadowParams.pcf", "", [](FrameInput& f) { f.lights[0].shadows->pcf = 5; }, true, false,
          "the map's shadow lookups filter wider; the kernel is sampling state, not map content"},
         // Mirror
         {"Mirror.name", "", [](FrameInput& f) { f.mirrors[0].name = "Glass"; }, false, false, name},
@@ -343,7 +360,7 @@ std::vector<Row> table() {
         {"Reflector.fill", "", [](FrameInput& f) { f.reflector->fill = ReflectorFill::Direct; }, true, false,
          "how a non-linear map is filled; not drawn by the shadow"},
         {"Reflector.parallax", "",
-         [](FrameInput& f) { f.reflector->parallax.shape = ParallaxProxy::Shape::Box; }, false, false,
+         [](FrameInput& f) { f.reflector->parallax = ParallaxParams{}; }, false, false,
          "the lookup's proxy in pass 2: " + surface},
         {"Reflector.update", "", [](FrameInput& f) { f.reflector->update = ReflectorUpdate::Always; }, false,
          false, "decides when the map is drawn, not what it holds"},
@@ -351,15 +368,15 @@ std::vector<Row> table() {
          "how deep the map's mirrors nest; not drawn by the shadow"},
         {"Reflector.roughness", "", [](FrameInput& f) { f.reflector->roughness = 0.4; }, false, false,
          "chooses a level of the pre-filtered chain, which holds every roughness"},
-        // ParallaxProxy
-        {"ParallaxProxy.shape", "",
-         [](FrameInput& f) { f.reflector->parallax.shape = ParallaxProxy::Shape::Sphere; }, false, false,
-         surface},
-        {"ParallaxProxy.radius", "", [](FrameInput& f) { f.reflector->parallax.radius = 3.0; }, false, false,
-         surface},
-        {"ParallaxProxy.min", "", [](FrameInput& f) { f.reflector->parallax.min = glm::dvec3(-2.0); }, false,
+        // ParallaxParams, on a reflector that has a box proxy
+        {"ParallaxParams.shape", "",
+         [](FrameInput& f) { f.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Sphere}; }, false,
          false, surface},
-        {"ParallaxProxy.max", "", [](FrameInput& f) { f.reflector->parallax.max = glm::dvec3(2.0); }, false,
+        {"ParallaxParams.radius", "", [](FrameInput& f) { f.reflector->parallax->radius = 3.0; }, false,
+         false, surface},
+        {"ParallaxParams.min", "", [](FrameInput& f) { f.reflector->parallax->min = glm::dvec3(-2.0); }, false,
+         false, surface},
+        {"ParallaxParams.max", "", [](FrameInput& f) { f.reflector->parallax->max = glm::dvec3(2.0); }, false,
          false, surface},
         // FrameInput
         {"FrameInput.settings", "", [](FrameInput& f) { f.settings = Settings{}; }, true, false,

@@ -21,7 +21,8 @@ FrameInput sceneWithLight(bool shadows) {
     Light light;
     light.name = "Lamp";
     light.position = {0, 4, 0};
-    light.shadows.enabled = shadows;
+    if (shadows)
+        light.shadows = ShadowParams{};
     input.lights.push_back(light);
     return input;
 }
@@ -85,10 +86,10 @@ TEST(Planner, UnchangedLightAndCastersReuseTheMapAndAnyChangeRendersIt) {
     movedCaster.items[0].world = glm::translate(movedCaster.items[0].world, glm::dvec3(0, 0.01, 0));
     EXPECT_EQ(planFrame(movedCaster, state).passes.front().kind, PassKind::Shadow);
     FrameInput biggerMap = input;
-    biggerMap.lights[0].shadows.mapSize = 2048;
+    biggerMap.lights[0].shadows->mapSize = 2048;
     EXPECT_EQ(planFrame(biggerMap, state).passes.front().kind, PassKind::Shadow);
     FrameInput softer = input;
-    softer.lights[0].shadows.pcf = 7; // a lookup setting: the map itself is unchanged
+    softer.lights[0].shadows->pcf = 7; // a lookup setting: the map itself is unchanged
     EXPECT_EQ(planFrame(softer, state).passes.front().kind, PassKind::Main);
 }
 

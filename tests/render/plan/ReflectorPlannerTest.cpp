@@ -27,7 +27,7 @@ FrameInput chromeScene(ReflectorUpdate update = ReflectorUpdate::OnChange) {
     Light light;
     light.name = "Lamp";
     light.position = {0, 4, 0};
-    light.shadows.enabled = true;
+    light.shadows = ShadowParams{};
     input.lights.push_back(light);
     Reflector r;
     r.name = "Ball";
@@ -170,14 +170,12 @@ TEST(ReflectorPlanner, OnChangeReusesTheMapUntilSomethingItSeesChanges) {
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.texture.path = "/abs/a.png"; }));
     EXPECT_TRUE(rerenders([&](FrameInput& f) { f.items[0].material.texture.image = image; }));
     EXPECT_TRUE(
-        rerenders([](FrameInput& f) { f.items[0].material.texture.wrapS = TextureWrap::ClampToEdge; }));
+        rerenders([](FrameInput& f) { f.items[0].material.wrap[0] = TextureWrap::ClampToEdge; }));
     EXPECT_TRUE(
-        rerenders([](FrameInput& f) { f.items[0].material.texture.wrapT = TextureWrap::MirroredRepeat; }));
+        rerenders([](FrameInput& f) { f.items[0].material.wrap[1] = TextureWrap::MirroredRepeat; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.emissionTexture.path = "/abs/e.png"; }));
     EXPECT_TRUE(rerenders([&](FrameInput& f) { f.items[0].material.emissionTexture.image = image; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.normalTexture.path = "/abs/n.png"; }));
-    EXPECT_TRUE(
-        rerenders([](FrameInput& f) { f.items[0].material.normalTexture.wrapS = TextureWrap::ClampToEdge; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.normalScale = 0.5; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.opacity = 0.5; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.alphaMode = AlphaMode::Mask; }));

@@ -138,9 +138,9 @@ TEST_F(ReflectorError, FallsAsTheMapResolutionRisesForEveryMapType) {
     input.camera.target = {0.0, 0.0, 0.0};
     input.camera.fovY = 50.0;
     addBall(input, glm::dvec3(0.0), 1.0, ReflectorMap::Cube, ReflectorFill::Resampled, 32);
-    input.reflector->parallax.shape = ParallaxProxy::Shape::Box;
-    input.reflector->parallax.min = glm::dvec3(-kHalf);
-    input.reflector->parallax.max = glm::dvec3(kHalf);
+    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflector->parallax->min = glm::dvec3(-kHalf);
+    input.reflector->parallax->max = glm::dvec3(kHalf);
     trace(input);
     const Method methods[] = {
         {ReflectorMap::Cube, ReflectorFill::Resampled, "cube"},
@@ -180,9 +180,9 @@ TEST_F(ReflectorError, ParallaxCorrectionLowersTheErrorNearTheWalls) {
     const double plain = reflectorPsnr(input);
     // The proxy is the room itself, relative to the capture point (the ball's centre).
     ASSERT_NEAR(glm::length(envmapCapture(input).centre - centre), 0.0, 1e-6);
-    input.reflector->parallax.shape = ParallaxProxy::Shape::Box;
-    input.reflector->parallax.min = glm::dvec3(-kHalf) - centre;
-    input.reflector->parallax.max = glm::dvec3(kHalf) - centre;
+    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflector->parallax->min = glm::dvec3(-kHalf) - centre;
+    input.reflector->parallax->max = glm::dvec3(kHalf) - centre;
     const double corrected = reflectorPsnr(input);
     std::printf("[ measured ] reflector PSNR without parallax correction %.2f dB, with a box proxy %.2f dB\n",
                 plain, corrected);

@@ -268,8 +268,8 @@ TEST_F(ExtremeValues, FarAndBrightLightsStayFiniteAndAgree) {
         Light point;
         point.position = glm::dvec3(0.3, 0.8, 0.5) * kMaxCoordinate;
         point.intensity = intensity;
-        point.shadows.enabled = true;
-        point.shadows.mapSize = 64;
+        point.shadows = ShadowParams{};
+        point.shadows->mapSize = 64;
         Light spot = point;
         spot.type = LightType::Spot;
         spot.position = glm::dvec3(-0.2, 0.5, 1.0) * kMaxCoordinate;
@@ -378,8 +378,8 @@ TEST_F(ExtremeValues, HostileValuesStillGiveFinitePixels) {
         input.mirrors[0].material = lit({0.5, 0.5, 0.5});
         input.lights.push_back({});
         input.lights.back().position = {1.0, 4.0, 4.0};
-        input.lights.back().shadows.enabled = true;
-        input.lights.back().shadows.mapSize = 64;
+        input.lights.back().shadows = ShadowParams{};
+        input.lights.back().shadows->mapSize = 64;
         return input;
     };
     {

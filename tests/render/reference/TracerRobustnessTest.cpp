@@ -48,16 +48,16 @@ FrameInput brokenScene() {
 
     render::Light onSurface; // exactly on the textured floor
     onSurface.position = {0, -0.5, 0};
-    onSurface.shadows.enabled = true;
+    onSurface.shadows = render::ShadowParams{};
     render::Light noDirection;
     noDirection.type = render::LightType::Directional;
     noDirection.direction = {0, 0, 0};
-    noDirection.shadows = {true, 16, 9};
+    noDirection.shadows = render::ShadowParams{16, 9};
     render::Light sharpSpot;
     sharpSpot.type = render::LightType::Spot;
     sharpSpot.position = {0, 2, 0};
     sharpSpot.spotBlend = 0.0;
-    sharpSpot.shadows = {true, 1, 3};
+    sharpSpot.shadows = render::ShadowParams{1, 3};
     input.lights = {onSurface, noDirection, sharpSpot};
 
     render::Reflector reflector;

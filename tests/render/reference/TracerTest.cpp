@@ -114,7 +114,7 @@ TEST(ReferenceTracer, SpotConeFadesWithTheShadersSmoothstep) {
 TEST(ReferenceTracer, ShadowRaysDarkenOnlyBehindCasters) {
     FrameInput input = floorSeenFromAbove();
     input.lights[0].position = {2.0, 2.0, 0.0};
-    input.lights[0].shadows.enabled = true;
+    input.lights[0].shadows = render::ShadowParams{};
     // A small box on the segment from the origin to the light, out of the camera's view of the centre.
     input.items.push_back(
         item("Blocker", boxMesh(), placed({1.0, 1.0, 0.0}, glm::dvec3(0.1)), emissive({0, 0, 0})));
@@ -130,14 +130,14 @@ TEST(ReferenceTracer, ShadowRaysDarkenOnlyBehindCasters) {
     EXPECT_GT(trace(noCasting, 51, 51).image.at(25, 25).r, ambientOnly.r + 0.1);
 
     FrameInput shadowsOff = input; // a light without a shadow map lights through everything, as in GL
-    shadowsOff.lights[0].shadows.enabled = false;
+    shadowsOff.lights[0].shadows.reset();
     EXPECT_GT(trace(shadowsOff, 51, 51).image.at(25, 25).r, ambientOnly.r + 0.1);
 }
 
 TEST(ReferenceTracer, PcfFootprintSoftensTheShadowEdge) {
     FrameInput input = floorSeenFromAbove();
     input.lights[0].position = {0.0, 3.0, 0.0};
-    input.lights[0].shadows = {true, 64, 7}; // coarse map, wide kernel: a wide penumbra
+    input.lights[0].shadows = render::ShadowParams{64, 7}; // coarse map, wide kernel: a wide penumbra
     // A thin wall whose shadow edge runs along x = 0 on the floor.
     input.items.push_back(
         item("Wall", boxMesh(), placed({-1.0, 1.5, 0.0}, {1.0, 0.01, 2.0}), emissive({0, 0, 0})));

@@ -31,9 +31,9 @@ FrameInput roomWithBall(int resolution) {
     Light light;
     light.name = "Lamp";
     light.position = {1.0, 3.0, 1.0};
-    light.shadows.enabled = true;
-    light.shadows.mapSize = 256;
-    light.shadows.pcf = 3;
+    light.shadows = ShadowParams{};
+    light.shadows->mapSize = 256;
+    light.shadows->pcf = 3;
     input.lights.push_back(light);
     Reflector r;
     r.name = "Ball";

@@ -35,7 +35,7 @@ FrameInput teapotScene(const glm::dvec3& offset) {
     Light light;
     light.name = "Light";
     light.position = offset + glm::dvec3(0.0, 2.0, -2.0);
-    light.shadows = {true, 512, 3};
+    light.shadows = render::ShadowParams{512, 3};
     input.items = {pot, table};
     input.lights = {light};
     return input;

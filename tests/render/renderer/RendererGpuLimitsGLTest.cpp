@@ -31,7 +31,7 @@ FrameInput chromeScene() {
     spot.direction = glm::normalize(glm::dvec3(2.0, -4.0, -2.0));
     spot.spotAngle = 40.0;
     spot.intensity = 0.5;
-    spot.shadows = {true, 1024, 3};
+    spot.shadows = render::ShadowParams{1024, 3};
     input.lights.push_back(spot);
     return input;
 }
@@ -59,7 +59,7 @@ TEST_F(GlTest, MapsLargerThanTheGpuHoldsAreDrawnAtItsLimitWithAWarning) {
         asked.reflector->fill = c.fill;
         asked.reflector->resolution = 100000;
         for (Light& light : asked.lights)
-            light.shadows.mapSize = 100000;
+            light.shadows->mapSize = 100000;
         const Image over = renderImage(asked, 160, 90);
         const std::vector<std::string> warnings = lastReport().warnings;
         EXPECT_TRUE(mentions(warnings, "reflector \"Chrome ball\": resolution 100000"))
@@ -78,8 +78,8 @@ TEST_F(GlTest, MapsLargerThanTheGpuHoldsAreDrawnAtItsLimitWithAWarning) {
         // The same as asking for those sizes in the first place.
         FrameInput fitting = asked;
         fitting.reflector->resolution = c.expected;
-        fitting.lights[0].shadows.mapSize = 256; // a point light's cube map
-        fitting.lights[1].shadows.mapSize = 512;
+        fitting.lights[0].shadows->mapSize = 256; // a point light's cube map
+        fitting.lights[1].shadows->mapSize = 512;
         const Image at = renderImage(fitting, 160, 90);
         EXPECT_TRUE(lastReport().warnings.empty()) << ::testing::PrintToString(lastReport().warnings);
         ASSERT_EQ(over.rgba.size(), at.rgba.size());
@@ -94,7 +94,7 @@ TEST_F(GlTest, MapsLargerThanTheGpuHoldsAreDrawnAtItsLimitWithAWarning) {
 TEST_F(GlTest, SpotShadowMapBeyondTheDriversLimitIsDrawnAtTheLimit) {
     FrameInput input = chromeScene();
     input.lights.erase(input.lights.begin()); // the spot light alone
-    input.lights[0].shadows.mapSize = 100000;
+    input.lights[0].shadows->mapSize = 100000;
     renderImage(input, 64, 36);
     const int limit = std::min(renderer().gpuLimits().maxTextureSize, renderer().gpuLimits().maxViewportSize);
     ASSERT_EQ(lastReport().warnings.size(), 1u) << ::testing::PrintToString(lastReport().warnings);

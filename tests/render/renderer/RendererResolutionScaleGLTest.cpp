@@ -37,7 +37,7 @@ FrameInput mirrorScene() {
     Light light;
     light.name = "Light";
     light.position = {0.0, 2.0, -2.0};
-    light.shadows = {true, 512, 3};
+    light.shadows = render::ShadowParams{512, 3};
     Mirror mirror;
     mirror.name = "Mirror";
     // Upright behind the teapot, facing the camera (+Z).

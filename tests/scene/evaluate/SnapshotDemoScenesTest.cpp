@@ -6,6 +6,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <algorithm>
 #include <gtest/gtest.h>
 
 namespace speculum::document {
@@ -35,7 +36,12 @@ TEST(DemoScenes, EachLoadsCleanlyAndIsInTheFormSpeculumWrites) {
         EXPECT_TRUE(warnings.empty()) << warnings.front();
         QFile file(path);
         ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-        EXPECT_EQ(scene::serializeProject(*data, QFileInfo(path).dir()), file.readAll());
+        const std::string written = scene::serializeProject(*data, QFileInfo(path).dir()).toStdString();
+        const std::string stored = file.readAll().toStdString();
+        EXPECT_EQ(written, stored) << "first difference at byte "
+                                   << std::mismatch(written.begin(), written.end(), stored.begin(), stored.end())
+                                              .first -
+                                          written.begin();
 
         scene::Scene scene;
         ASSERT_TRUE(scene::openProject(scene, path, warnings).ok());

@@ -56,7 +56,7 @@ TEST(Snapshot, EulerAnglesApplyXThenYThenZ) {
 TEST(Snapshot, LocalMatrixIsTranslateRotateScale) {
     // (1,0,0) scaled by 2 on X → (2,0,0), turned 90° about Z → (0,2,0), moved by (10,0,0).
     scene::SceneData data;
-    data.nodes.push_back(boxNode("n", {{10, 0, 0}, {0, 0, 90}, {2, 1, 1}, {}}));
+    data.nodes.push_back(boxNode("n", {{10, 0, 0}, {0, 0, 90}, {2, 1, 1}}));
     scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
@@ -67,9 +67,9 @@ TEST(Snapshot, LocalMatrixIsTranslateRotateScale) {
 
 TEST(Snapshot, ChildWorldIsParentWorldTimesLocal) {
     scene::SceneData data;
-    scene::NodeTree parent = boxNode("parent", {{0, 5, 0}, {0, 90, 0}, {2, 2, 2}, {}});
-    scene::NodeTree child = boxNode("child", {{1, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}});
-    child.children.push_back(boxNode("grandchild", {{0, 0, 1}, {0, 0, 0}, {0.5, 0.5, 0.5}, {}}));
+    scene::NodeTree parent = boxNode("parent", {{0, 5, 0}, {0, 90, 0}, {2, 2, 2}});
+    scene::NodeTree child = boxNode("child", {{1, 0, 0}, {0, 0, 0}, {1, 1, 1}});
+    child.children.push_back(boxNode("grandchild", {{0, 0, 1}, {0, 0, 0}, {0.5, 0.5, 0.5}}));
     parent.children.push_back(child);
     data.nodes.push_back(parent);
     scene::MeshLibrary meshes;
@@ -87,8 +87,8 @@ TEST(Snapshot, ChildWorldIsParentWorldTimesLocal) {
 
 TEST(Snapshot, WorldMatricesKeepDoublePrecisionFarFromTheOrigin) {
     scene::SceneData data;
-    scene::NodeTree far = boxNode("far", {{1e8, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}});
-    far.children.push_back(boxNode("near it", {{0.125 + 1e-6, 0, 0}, {0, 0, 0}, {1, 1, 1}, {}}));
+    scene::NodeTree far = boxNode("far", {{1e8, 0, 0}, {0, 0, 0}, {1, 1, 1}});
+    far.children.push_back(boxNode("near it", {{0.125 + 1e-6, 0, 0}, {0, 0, 0}, {1, 1, 1}}));
     data.nodes.push_back(far);
     scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
@@ -100,8 +100,8 @@ TEST(Snapshot, WorldMatricesKeepDoublePrecisionFarFromTheOrigin) {
 
 TEST(Snapshot, BounceFollowsItsDefinition) {
     scene::SceneData data;
-    scene::NodeTree node = boxNode("hopper", {{0, -1, -3}, {0, 0, 0}, {1, 1, 1}, {}});
-    node.data.animation = scene::AnimationComponent{scene::BounceAnimation{1.0, 2.0, {}}, std::nullopt, {}};
+    scene::NodeTree node = boxNode("hopper", {{0, -1, -3}, {0, 0, 0}, {1, 1, 1}});
+    node.data.animation = scene::AnimationComponent{scene::BounceAnimation{1.0, 2.0}, std::nullopt};
     data.nodes.push_back(node);
     scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
@@ -124,7 +124,7 @@ TEST(Snapshot, OrbitFollowsItsDefinitionInTheParentsSpace) {
     light.data.transform.translate = {0, 2, -2}; // replaced by the orbit
     light.data.light = scene::LightComponent{};
     light.data.animation =
-        scene::AnimationComponent{std::nullopt, scene::OrbitAnimation{{0, 2, -3}, 1.5, 6.0, {}}, {}};
+        scene::AnimationComponent{std::nullopt, scene::OrbitAnimation{{0, 2, -3}, 1.5, 6.0}};
     parent.children.push_back(light);
     data.nodes.push_back(parent);
     scene::MeshLibrary meshes;
@@ -139,7 +139,7 @@ TEST(Snapshot, OrbitFollowsItsDefinitionInTheParentsSpace) {
 TEST(Snapshot, BounceLiftsAnOrbit) {
     scene::NodeData node;
     node.animation = scene::AnimationComponent{
-        scene::BounceAnimation{0.5, 2.0, {}}, scene::OrbitAnimation{{0, 0, 0}, 1.0, 4.0, {}}, {}};
+        scene::BounceAnimation{0.5, 2.0}, scene::OrbitAnimation{{0, 0, 0}, 1.0, 4.0}};
     expectNear(scene::animatedTranslate(node, 1.0), {0, 0.5, 1});
 }
 
@@ -147,13 +147,13 @@ TEST(Snapshot, LightsPointAlongTheirWorldMinusY) {
     scene::SceneData data;
     scene::NodeTree sun;
     sun.data.name = "Sun";
-    sun.data.transform = {{3, 4, 5}, {0, 0, 90}, {1, 7, 1}, {}};
+    sun.data.transform = {{3, 4, 5}, {0, 0, 90}, {1, 7, 1}};
     sun.data.light =
-        scene::LightComponent{scene::LightType::Directional, {1, 0.5, 0.25}, 2.0, 30, 0.15, std::nullopt, {}};
+        scene::LightComponent{scene::LightType::Directional, {1, 0.5, 0.25}, 2.0, 30, 0.15, std::nullopt};
     scene::NodeTree spot;
     spot.data.name = "Spot";
     spot.data.light = scene::LightComponent{
-        scene::LightType::Spot, {1, 1, 1}, 1.0, 25, 0.2, scene::ShadowComponent{512, 3, {}}, {}};
+        scene::LightType::Spot, {1, 1, 1}, 1.0, 25, 0.2, scene::ShadowComponent{512, 3}};
     data.nodes = {sun, spot};
     scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
@@ -166,15 +166,15 @@ TEST(Snapshot, LightsPointAlongTheirWorldMinusY) {
     expectNear(s.direction, {1, 0, 0}); // −Y turned 90° about Z, unit length despite the scale
     expectNear(s.color, {1, 0.5, 0.25});
     EXPECT_EQ(s.intensity, 2.0);
-    EXPECT_FALSE(s.shadows.enabled);
+    EXPECT_FALSE(s.shadows.has_value());
     const render::Light& p = frame.lights[1];
     EXPECT_EQ(p.type, render::LightType::Spot);
     expectNear(p.direction, {0, -1, 0});
     EXPECT_EQ(p.spotAngle, 25.0);
     EXPECT_EQ(p.spotBlend, 0.2);
-    EXPECT_TRUE(p.shadows.enabled);
-    EXPECT_EQ(p.shadows.mapSize, 512);
-    EXPECT_EQ(p.shadows.pcf, 3);
+    EXPECT_TRUE(p.shadows.has_value());
+    EXPECT_EQ(p.shadows->mapSize, 512);
+    EXPECT_EQ(p.shadows->pcf, 3);
 }
 
 TEST(Snapshot, MirrorsAndTheReflector) {
@@ -184,20 +184,20 @@ TEST(Snapshot, MirrorsAndTheReflector) {
     table.data.transform.translate = {0, -1, -3};
     table.data.mirror = scene::MirrorComponent{{4, 2}, 0.5, scene::MirrorTechnique::Texture, {}};
     table.data.material = scene::MaterialComponent{};
-    table.data.material->texture = "/abs/marble.png";
+    table.data.material->texture.path = "/abs/marble.png";
     scene::NodeTree plain;
     plain.data.name = "Plain";
     plain.data.mirror = scene::MirrorComponent{};
     scene::NodeTree ball;
     ball.data.name = "Ball";
     ball.data.mesh = scene::MeshComponent::fromBuiltin(scene::BuiltinMesh::Sphere, 12);
-    ball.data.reflector = scene::ReflectorComponent{scene::ReflectorMap::DualParaboloid, 128, 0.9, {}};
+    ball.data.reflector = scene::ReflectorComponent{scene::ReflectorMap::DualParaboloid, 128, 0.9};
     ball.data.reflector->fresnel = true;
     ball.data.reflector->fill = scene::ReflectorFill::Direct;
     ball.data.reflector->update = scene::ReflectorUpdate::Once;
     ball.data.reflector->mirrorDepth = 2;
     ball.data.reflector->parallax =
-        scene::ReflectorParallax{scene::ParallaxShape::Box, 1, {-1, -2, -3}, {4, 5, 6}, {}};
+        scene::ReflectorParallax{scene::ParallaxShape::Box, 1, {-1, -2, -3}, {4, 5, 6}};
     data.nodes = {table, plain, ball};
     scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
@@ -225,9 +225,10 @@ TEST(Snapshot, MirrorsAndTheReflector) {
     EXPECT_EQ(frame.reflector->fill, render::ReflectorFill::Direct);
     EXPECT_EQ(frame.reflector->update, render::ReflectorUpdate::Once);
     EXPECT_EQ(frame.reflector->mirrorDepth, 2);
-    EXPECT_EQ(frame.reflector->parallax.shape, render::ParallaxProxy::Shape::Box);
-    EXPECT_EQ(frame.reflector->parallax.min, glm::dvec3(-1, -2, -3));
-    EXPECT_EQ(frame.reflector->parallax.max, glm::dvec3(4, 5, 6));
+    ASSERT_TRUE(frame.reflector->parallax);
+    EXPECT_EQ(frame.reflector->parallax->shape, render::ParallaxShape::Box);
+    EXPECT_EQ(frame.reflector->parallax->min, glm::dvec3(-1, -2, -3));
+    EXPECT_EQ(frame.reflector->parallax->max, glm::dvec3(4, 5, 6));
 }
 
 TEST(Snapshot, ABrokenReflectorBecomesAWarning) {
@@ -291,7 +292,7 @@ TEST(Snapshot, ARelativePathSetByCodeIsTakenRelativeToTheProject) {
     scene::SceneData data;
     scene::NodeTree node = boxNode("textured", {});
     node.data.material = scene::MaterialComponent{};
-    node.data.material->texture = "textures/wood.png";
+    node.data.material->texture.path = "textures/wood.png";
     data.nodes.push_back(node);
     scene::Scene scene;
     scene.reset(data);
@@ -381,10 +382,10 @@ TEST(Snapshot, ImportedPartMaterialReachesTheRenderer) {
     node.data.mesh = scene::MeshComponent::fromFile(glb);
     node.data.mesh->part = 0;
     scene::MaterialComponent m;
-    m.texture = glb + "#*0";
-    m.normalTexture = "/nowhere/normal.png";
+    m.texture.path = glb + "#*0";
+    m.normalTexture.path = "/nowhere/normal.png";
     m.specularColor = {0.5, 0.25, 1};
-    m.wrap = {scene::TextureWrap::Clamp, scene::TextureWrap::Mirror};
+    m.wrap = {scene::TextureWrap::ClampToEdge, scene::TextureWrap::MirroredRepeat};
     m.alphaMode = scene::AlphaMode::Blend;
     m.alphaCutoff = 0.25;
     m.opacity = 0.75;
@@ -401,10 +402,8 @@ TEST(Snapshot, ImportedPartMaterialReachesTheRenderer) {
     EXPECT_EQ(r.texture.path, glb + "#*0");
     EXPECT_FALSE(r.normalTexture.image); // a plain file: the renderer loads it itself
     EXPECT_EQ(r.normalTexture.path, "/nowhere/normal.png");
-    for (const render::TextureSource* t : {&r.texture, &r.emissionTexture, &r.normalTexture}) {
-        EXPECT_EQ(t->wrapS, render::TextureWrap::ClampToEdge);
-        EXPECT_EQ(t->wrapT, render::TextureWrap::MirroredRepeat);
-    }
+    EXPECT_EQ(r.wrap[0], render::TextureWrap::ClampToEdge);
+    EXPECT_EQ(r.wrap[1], render::TextureWrap::MirroredRepeat);
     EXPECT_EQ(r.alphaMode, render::AlphaMode::Blend);
     EXPECT_EQ(r.alphaCutoff, 0.25);
     EXPECT_EQ(r.opacity, 0.75);

@@ -232,8 +232,8 @@ speculum::scene::SceneData exportScene(const std::filesystem::path& dir) {
     speculum::scene::NodeTree plane = makeNode(NewNodeKind::Plane);
     plane.data.name = "Floor";
     plane.data.material = speculum::scene::MaterialComponent{};
-    plane.data.material->texture = (dir / "checker.tga").string();
-    plane.data.material->wrap = {speculum::scene::TextureWrap::Clamp, speculum::scene::TextureWrap::Mirror};
+    plane.data.material->texture.path = (dir / "checker.tga").string();
+    plane.data.material->wrap = {speculum::scene::TextureWrap::ClampToEdge, speculum::scene::TextureWrap::MirroredRepeat};
     plane.data.material->opacity = 0.5;
     plane.data.material->alphaMode = speculum::scene::AlphaMode::Mask;
     plane.data.material->alphaCutoff = 0.3;
@@ -451,8 +451,8 @@ TEST(GltfExport, GltfWritesItsImagesBesideItWithRelativeUris) {
     box.data.material->emission = {4.0, 2.0, 0.0};
     box.data.material->color = {0.8, 0.4, 0.2};
     box.data.material->specularColor = glm::mix(glm::dvec3(1.0), box.data.material->color, 0.75);
-    box.data.material->emissionTexture = (dir / "maps" / "glow.png").string();
-    box.data.material->texture = (dir / "maps" / "glow.png").string();
+    box.data.material->emissionTexture.path = (dir / "maps" / "glow.png").string();
+    box.data.material->texture.path = (dir / "maps" / "glow.png").string();
     data.nodes.push_back(box);
     scene.reset(data);
 
@@ -535,7 +535,7 @@ TEST(GltfExport, MissingTexturesAreSkippedWithAWarning) {
     speculum::scene::NodeTree box = makeNode(NewNodeKind::Box);
     box.data.name = "Box";
     box.data.material = speculum::scene::MaterialComponent{};
-    box.data.material->texture = (dir / "gone.png").string();
+    box.data.material->texture.path = (dir / "gone.png").string();
     data.nodes.push_back(box);
     speculum::scene::Scene scene;
     scene.reset(data);
@@ -579,7 +579,7 @@ TEST(GltfExport, EmbeddedTexturesAndVertexColoursAreKept) {
     model.data.name = "Model";
     model.data.mesh = speculum::scene::MeshComponent::fromFile((dir / "model.glb").string());
     model.data.material = speculum::scene::MaterialComponent{};
-    model.data.material->texture = (dir / "model.glb").string() + "#*0";
+    model.data.material->texture.path = (dir / "model.glb").string() + "#*0";
     data.nodes.push_back(model);
     speculum::scene::NodeTree colours;
     colours.data.name = "Colours";

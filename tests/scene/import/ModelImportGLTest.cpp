@@ -65,9 +65,9 @@ render::FrameInput importedQuadScene() {
     EXPECT_EQ(model->parts.size(), 1u);
     EXPECT_GE(model->parts.front().material, 0);
     const scene::MaterialComponent& imported = model->materials.at(model->parts.front().material);
-    EXPECT_EQ(fs::path(imported.texture).filename(), "quadrants.png");
+    EXPECT_EQ(fs::path(imported.texture.path).filename(), "quadrants.png");
     input.items.front().mesh = model->parts.front().mesh;
-    input.items.front().material = showTexture(imported.texture);
+    input.items.front().material = showTexture(imported.texture.path);
     return input;
 }
 

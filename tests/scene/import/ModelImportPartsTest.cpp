@@ -157,9 +157,9 @@ TEST(ModelParts, GltfMaterialsAreConvertedPerPart) {
     EXPECT_NEAR(red.specular, 1.0, 1e-9);
     EXPECT_EQ(red.specularColor, glm::dvec3(1, 0, 0)); // a metal's highlight takes its colour
     EXPECT_NEAR(red.diffuse, 0.0, 1e-9);
-    EXPECT_EQ(fs::path(red.texture), fs::absolute(folder / "logo.png").lexically_normal());
-    EXPECT_EQ(red.wrap[0], scene::TextureWrap::Clamp);
-    EXPECT_EQ(red.wrap[1], scene::TextureWrap::Mirror);
+    EXPECT_EQ(fs::path(red.texture.path), fs::absolute(folder / "logo.png").lexically_normal());
+    EXPECT_EQ(red.wrap[0], scene::TextureWrap::ClampToEdge);
+    EXPECT_EQ(red.wrap[1], scene::TextureWrap::MirroredRepeat);
     EXPECT_EQ(red.alphaMode, scene::AlphaMode::Opaque);
 
     // Dielectric, roughness 1: shininess clamps to 1, specular 0.04·9/8, white highlight.
@@ -258,7 +258,7 @@ TEST(ModelParts, ObjMaterialsFindTheirTexturesBesideTheFile) {
     std::set<std::string> textures;
     for (const scene::ImportedPart& part : model.parts) {
         if (part.material >= 0 && !model.materials[part.material].texture.empty()) {
-            const std::string& texture = model.materials[part.material].texture;
+            const std::string& texture = model.materials[part.material].texture.path;
             EXPECT_TRUE(fs::path(texture).is_absolute()) << texture;
             EXPECT_TRUE(fs::is_regular_file(texture)) << texture;
             textures.insert(fs::path(texture).filename().string());
@@ -294,7 +294,7 @@ TEST(ModelParts, GlbEmbeddedTextureIsDecodedOnceAndMatchesTheExternalFile) {
     const scene::ImportedModel model = importOk(glb);
     ASSERT_EQ(model.parts.size(), 1u);
     ASSERT_GE(model.parts[0].material, 0);
-    const std::string& name = model.materials[model.parts[0].material].texture;
+    const std::string& name = model.materials[model.parts[0].material].texture.path;
     EXPECT_EQ(name, glb.string() + "#*0");
     ASSERT_EQ(model.embeddedTextures.count(name), 1u);
     const render::TextureImage& embedded = *model.embeddedTextures.at(name);

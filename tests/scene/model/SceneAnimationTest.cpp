@@ -21,10 +21,10 @@ speculum::scene::NodeTree nodeWith(std::optional<double> bouncePeriod, std::opti
     if (bouncePeriod || orbitPeriod) {
         tree.data.animation.emplace();
         if (bouncePeriod) {
-            tree.data.animation->bounce = speculum::scene::BounceAnimation{1.0, *bouncePeriod, {}};
+            tree.data.animation->bounce = speculum::scene::BounceAnimation{1.0, *bouncePeriod};
         }
         if (orbitPeriod) {
-            tree.data.animation->orbit = speculum::scene::OrbitAnimation{{}, 1.0, *orbitPeriod, {}};
+            tree.data.animation->orbit = speculum::scene::OrbitAnimation{{}, 1.0, *orbitPeriod};
         }
     }
     return tree;

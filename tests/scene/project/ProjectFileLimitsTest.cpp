@@ -224,7 +224,7 @@ scene::NodeData fullNode() {
     d.material = scene::MaterialComponent{};
     d.light = scene::LightComponent{};
     d.mirror = scene::MirrorComponent{};
-    d.animation = scene::AnimationComponent{scene::BounceAnimation{}, scene::OrbitAnimation{}, {}};
+    d.animation = scene::AnimationComponent{scene::BounceAnimation{}, scene::OrbitAnimation{}};
     return d;
 }
 

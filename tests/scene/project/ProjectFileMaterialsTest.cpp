@@ -25,11 +25,11 @@ scene::SceneData importedScene(const QDir& folder) {
     m.specular = 1.0;
     m.shininess = 30.0;
     m.specularColor = {0.9, 0.1, 0.1};
-    m.texture = folder.absoluteFilePath("models/car.glb#*0").toStdString();
-    m.emissionTexture = folder.absoluteFilePath("textures/glow.png").toStdString();
-    m.normalTexture = folder.absoluteFilePath("models/car.glb#*1").toStdString();
+    m.texture.path = folder.absoluteFilePath("models/car.glb#*0").toStdString();
+    m.emissionTexture.path = folder.absoluteFilePath("textures/glow.png").toStdString();
+    m.normalTexture.path = folder.absoluteFilePath("models/car.glb#*1").toStdString();
     m.normalScale = 0.75;
-    m.wrap = {scene::TextureWrap::Clamp, scene::TextureWrap::Mirror};
+    m.wrap = {scene::TextureWrap::ClampToEdge, scene::TextureWrap::MirroredRepeat};
     m.opacity = 0.5;
     m.alphaMode = scene::AlphaMode::Mask;
     m.alphaCutoff = 0.25;
@@ -39,7 +39,7 @@ scene::SceneData importedScene(const QDir& folder) {
     whole.data.name = "Whole";
     whole.data.mesh = scene::MeshComponent::fromFile(folder.absoluteFilePath("models/car.glb").toStdString());
     scene::MaterialComponent clamped;
-    clamped.wrap = {scene::TextureWrap::Clamp, scene::TextureWrap::Clamp};
+    clamped.wrap = {scene::TextureWrap::ClampToEdge, scene::TextureWrap::ClampToEdge};
     clamped.alphaMode = scene::AlphaMode::Blend;
     whole.data.material = clamped;
     scene.nodes = {part, whole};
@@ -109,7 +109,7 @@ std::string loadError(const std::string& node) {
 TEST(ProjectMaterials, BadValuesNameTheirPath) {
     const std::pair<const char*, const char*> cases[] = {
         {R"({ "material": { "alphaMode": "glass" } })",
-         R"(nodes[2].material.alphaMode: expected "opaque", "mask" or "blend", got "glass")"},
+         R"(nodes[2].material.alphaMode: unknown alpha mode "glass" (expected opaque, mask or blend))"},
         {R"({ "material": { "alphaMode": 1 } })", "nodes[2].material.alphaMode: expected a string"},
         {R"({ "material": { "alphaCutoff": 1.5 } })", "nodes[2].material.alphaCutoff: must be in 0..1"},
         {R"({ "material": { "opacity": -0.1 } })", "nodes[2].material.opacity: must be in 0..1"},
@@ -144,9 +144,9 @@ TEST(ProjectMaterials, WrapReadsOneNameOrAPair) {
                                      QDir("/tmp"), warnings);
     ASSERT_TRUE(scene.ok()) << scene.error();
     EXPECT_EQ(scene->nodes[0].data.material->wrap,
-              (std::array{scene::TextureWrap::Mirror, scene::TextureWrap::Mirror}));
+              (std::array{scene::TextureWrap::MirroredRepeat, scene::TextureWrap::MirroredRepeat}));
     EXPECT_EQ(scene->nodes[1].data.material->wrap,
-              (std::array{scene::TextureWrap::Clamp, scene::TextureWrap::Repeat}));
+              (std::array{scene::TextureWrap::ClampToEdge, scene::TextureWrap::Repeat}));
 }
 
 // The inspector edits the new fields: a file mesh's part (-1 for the whole file), alpha mode, wrap modes.
@@ -176,7 +176,7 @@ TEST(ProjectMaterials, InspectorEditsPartAlphaAndWrap) {
     const auto* wrapV = findNodeProperty(QStringLiteral("material.wrapV"));
     ASSERT_NE(wrapV, nullptr);
     ASSERT_TRUE(wrapV->set(d, 2).ok());
-    EXPECT_EQ(d.material->wrap[1], scene::TextureWrap::Mirror);
+    EXPECT_EQ(d.material->wrap[1], scene::TextureWrap::MirroredRepeat);
     EXPECT_EQ(d.material->wrap[0], scene::TextureWrap::Repeat);
     const auto* opacity = findNodeProperty(QStringLiteral("material.opacity"));
     ASSERT_NE(opacity, nullptr);

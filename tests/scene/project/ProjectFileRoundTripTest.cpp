@@ -45,8 +45,8 @@ TEST(RoundTrip, TheEditorViewSurvivesARecoveryFile) {
     ASSERT_TRUE(dir.isValid());
     scene::SceneData data;
     data.camera.fovY = 40;
-    data.editorView = scene::EditorView{{4, 5, 6}, {0.5, 0.25, -1.0 / 3.0}, {}};
-    data.editorView->extra.insert(QStringLiteral("later"), 2);
+    data.editorView = scene::EditorView{{4, 5, 6}, {0.5, 0.25, -1.0 / 3.0}};
+    data.unknown["editorView"].insert(QStringLiteral("later"), 2);
     scene::RecoveryStore store(dir.path(), 4244);
     ASSERT_TRUE(store.write(data, QStringLiteral("/projects/room.speculum.json")).ok());
 

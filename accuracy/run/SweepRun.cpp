@@ -1,4 +1,4 @@
-#include "accuracy/SweepRun.hpp"
+#include "accuracy/run/SweepRun.hpp"
 
 #include "accuracy/Report.hpp"
 
@@ -66,7 +66,7 @@ public:
         std::map<std::string, render::FrameInput> distinct; // the frame of each distinct setting
         std::map<std::string, FrameCost> costs;
         const std::string sceneKey =
-            key(effectiveSettings(m_input.scene, m_traits, m_input.teapotTessellation));
+            key(effectiveSettings(m_input.scene, m_input.teapotTessellation, m_traits.simplifiableMeshes > 0));
         for (std::size_t i = 0; i < configs.size(); ++i) {
             if (stopped())
                 return base::Error{kSweepStopped};
@@ -74,12 +74,12 @@ public:
             const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(configs.size()) +
                                      "] " + familyName(config.family) + ": " + displayName(config);
             render::FrameInput applied =
-                applyVariation(m_input.scene, m_traits, config.variation, m_input.tessellate);
+                applyVariation(m_input.scene, config.variation, m_traits.proxy, m_input.tessellate);
             Record record;
             record.config = config;
-            record.settings = effectiveSettings(applied, m_traits,
-                                                config.variation.tessellation ? config.variation.tessellation
-                                                                              : m_input.teapotTessellation);
+            record.settings = effectiveSettings(
+                applied, config.variation.tessellation ? config.variation.tessellation : m_input.teapotTessellation,
+                m_traits.simplifiableMeshes > 0);
             const std::string k = key(record.settings);
             record.sceneSetting = k == sceneKey;
             if (!costs.count(k)) {

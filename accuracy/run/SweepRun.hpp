@@ -1,6 +1,6 @@
 #pragma once
 
-#include "accuracy/Measure.hpp"
+#include "accuracy/run/Measure.hpp"
 #include "accuracy/Results.hpp"
 #include "accuracy/Sweep.hpp"
 #include "base/Result.hpp"

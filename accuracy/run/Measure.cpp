@@ -1,4 +1,4 @@
-#include "accuracy/Measure.hpp"
+#include "accuracy/run/Measure.hpp"
 
 #include "render/renderer/StillRenderer.hpp"
 

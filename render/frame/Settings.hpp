@@ -1,0 +1,159 @@
+#pragma once
+
+#include "render/frame/Field.hpp"
+#include "render/frame/SceneLimits.hpp"
+
+#include <algorithm>
+#include <glm/vec3.hpp>
+
+namespace speculum::render {
+
+// How the rasterizer approximates a rough (glossy) reflection; the exact answer is the tracer's.
+// Mip: one lookup in the reflection's mip chain at a level set by the roughness alone (the cheap end).
+// Footprint: planar mirrors sample their reflection texture over the GGX lobe's footprint, which grows with
+// the distance from the mirror to what it reflects; the curved reflector reads the level of its
+// GGX-convolved (pre-filtered) map chain that matches its roughness.
+enum class GlossyFilter { Mip, Footprint };
+static_assert(int(GlossyFilter::Footprint) + 1 == names::kGlossyFilters.size(), "one name per value");
+
+// The scene's own settings (the project file's "settings").
+struct Settings {
+    glm::dvec3 background{0.1, 0.1, 0.12};
+    int mirrorDepth = 3;
+    double ambient = 0.2;
+    // Reflected views and the environment map draw big meshes at their simplified level
+    // (MeshData::coarse): an approximation the bench's reflected-detail family measures.
+    bool simplifyReflections = true;
+    GlossyFilter glossyFilter = GlossyFilter::Footprint;
+    int glossyTaps = 16;       // lobe samples per pixel of a rough planar mirror (Footprint)
+    int prefilterSamples = 64; // lobe samples per texel of the reflector's pre-filtered chain (Footprint)
+
+    bool operator==(const Settings&) const = default;
+
+    template <typename Visit>
+    static void fields(Visit&& visit);
+};
+
+template <typename Visit>
+void Settings::fields(Visit&& visit) {
+    visit(field(&Settings::background, {.name = "background",
+                                        .label = "Background",
+                                        .meaning = "The colour of everything no surface covers",
+                                        .type = FieldType::Color}));
+    visit(field(&Settings::mirrorDepth,
+                {.name = "mirrorDepth",
+                 .label = "Mirror depth",
+                 .meaning = "How many levels of reflections of reflections planar mirrors show",
+                 .type = FieldType::Integer,
+                 .min = 0,
+                 .max = kMaxMirrorDepth,
+                 .drawnInMaps = false}));
+    visit(field(&Settings::ambient, {.name = "ambient",
+                                     .label = "Ambient",
+                                     .meaning = "The light that reaches every surface from everywhere",
+                                     .type = FieldType::Number,
+                                     .min = 0,
+                                     .max = 1,
+                                     .slider = true}));
+    visit(field(&Settings::simplifyReflections,
+                {.name = "simplifyReflections",
+                 .label = "Simplify reflections",
+                 .meaning = "Reflections draw big meshes at their simplified level; off draws every triangle",
+                 .type = FieldType::Bool,
+                 .choices = names::kReflectedDetail,
+                 .write = FieldWrite::UnlessDefault,
+                 .sweepName = "reflectedDetail"}));
+    visit(field(&Settings::glossyFilter,
+                {.name = "glossyFilter",
+                 .label = "Glossy filter",
+                 .meaning = "How rough reflections are blurred: one mip level (cheap), or the GGX lobe's "
+                            "footprint on planar mirrors and the pre-filtered map on the reflector",
+                 .type = FieldType::Choice,
+                 .noun = "glossy filter",
+                 .choices = names::kGlossyFilters,
+                 .write = FieldWrite::UnlessDefault,
+                 .drawnInMaps = false}));
+    visit(field(&Settings::glossyTaps,
+                {.name = "glossyTaps",
+                 .label = "Glossy taps",
+                 .meaning = "Lobe samples per pixel of a rough planar mirror (footprint filter)",
+                 .type = FieldType::Integer,
+                 .min = kMinGlossyTaps,
+                 .max = kMaxGlossyTaps,
+                 .write = FieldWrite::UnlessDefault,
+                 .drawnInMaps = false}));
+    visit(field(&Settings::prefilterSamples,
+                {.name = "prefilterSamples",
+                 .label = "Pre-filter samples",
+                 .meaning = "Lobe samples per texel of the rough reflector's pre-filtered map chain",
+                 .type = FieldType::Integer,
+                 .min = kMinPrefilterSamples,
+                 .max = kMaxPrefilterSamples,
+                 .write = FieldWrite::UnlessDefault,
+                 .drawnInMaps = false}));
+}
+
+// The lobe samples a rough planar mirror takes per pixel, within the limits whatever the settings hold.
+inline int glossyTapCount(const Settings& settings) {
+    return std::clamp(settings.glossyTaps, kMinGlossyTaps, kMaxGlossyTaps);
+}
+
+// The camera the scene is drawn from (the project file's "camera"). Its rules across fields (a target
+// away from the position, an up not along the view, far beyond near) are the scene model's checks.
+struct Camera {
+    glm::dvec3 position{0.0, 0.0, 1.0};
+    glm::dvec3 target{0.0, 0.0, -3.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fovY = 65.0; // degrees, vertical
+    double near = 0.1;
+    double far = 10.0;
+
+    bool operator==(const Camera&) const = default;
+
+    template <typename Visit>
+    static void fields(Visit&& visit);
+};
+
+template <typename Visit>
+void Camera::fields(Visit&& visit) {
+    const FieldSpec point{.type = FieldType::Vector3, .min = -kMaxCoordinate, .max = kMaxCoordinate,
+                          .unit = " u", .noun = "coordinates"};
+    FieldSpec position = point, target = point;
+    position.name = "position", position.label = "Position", position.meaning = "Where the camera is";
+    target.name = "target", target.label = "Target", target.meaning = "The point the camera looks at";
+    visit(field(&Camera::position, position));
+    visit(field(&Camera::target, target));
+    FieldSpec up = point;
+    up.name = "up", up.label = "Up", up.unit = {};
+    up.meaning = "The direction that is up in the picture (any length, not along the view)";
+    visit(field(&Camera::up, up));
+    visit(field(&Camera::fovY, {.name = "fovY",
+                                .label = "Field of view",
+                                .meaning = "The vertical field of view",
+                                .type = FieldType::Number,
+                                .min = 0,
+                                .max = 180,
+                                .minOpen = true,
+                                .maxOpen = true,
+                                .unit = "°",
+                                .decimals = 1,
+                                .step = 1}));
+    visit(field(&Camera::near, {.name = "near",
+                                .label = "Near",
+                                .meaning = "The distance from the camera where drawing starts",
+                                .type = FieldType::Number,
+                                .min = kMinNear,
+                                .max = kMaxCoordinate,
+                                .unit = " u"}));
+    visit(field(&Camera::far,
+                {.name = "far",
+                 .label = "Far",
+                 .meaning = "The distance from the camera where drawing ends: beyond near, and at most a "
+                            "million times near for the depth buffer's precision",
+                 .type = FieldType::Number,
+                 .min = 0,
+                 .minOpen = true,
+                 .unit = " u"}));
+}
+
+} // namespace speculum::render
