@@ -1,11 +1,10 @@
 #include "scene/export/GltfBuilder.hpp"
 
+#include "render/frame/SceneLimits.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "scene/model/NodeMath.hpp"
 
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
+#include <QString>
 #include <QUrl>
 #include <algorithm>
 #include <cmath>
@@ -20,50 +19,54 @@ namespace speculum::scene {
 
 namespace {
 
-// glTF's enumerations (glTF 2.0 specification, section 5).
-constexpr int kFloat = 5126;
-constexpr int kUnsignedShort = 5123;
-constexpr int kUnsignedInt = 5125;
-constexpr int kArrayBuffer = 34962;
-constexpr int kElementArrayBuffer = 34963;
-constexpr int kLinear = 9729;
-constexpr int kLinearMipmapLinear = 9987;
-
 constexpr const char* kLights = "KHR_lights_punctual";
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 
-QJsonArray numbers(std::initializer_list<double> values) {
-    QJsonArray out;
-    for (double v : values) {
-        out.append(v);
-    }
-    return out;
-}
-
-QJsonArray vec3(const glm::dvec3& v) {
-    return numbers({v.x, v.y, v.z});
+std::vector<double> vec3(const glm::dvec3& v) {
+    return {v.x, v.y, v.z};
 }
 
 double unit(double v) {
     return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0;
 }
 
+// tinygltf's JSON library throws on text that is not UTF-8, and names from model files need not be:
+// invalid sequences become U+FFFD, as Qt reads them.
+std::string utf8(const std::string& text) {
+    return QString::fromStdString(text).toStdString();
+}
+
+std::string uri(const std::string& fileName) {
+    return QUrl::toPercentEncoding(QString::fromStdString(fileName)).toStdString();
+}
+
+// Appends `item` and returns its index, the way every glTF object is referred to.
+template <typename T>
+int push(std::vector<T>& list, T item) {
+    list.push_back(std::move(item));
+    return static_cast<int>(list.size() - 1);
+}
+
+tinygltf::Value object(const char* key, tinygltf::Value value) {
+    return tinygltf::Value(tinygltf::Value::Object{{key, std::move(value)}});
+}
+
 int wrapCode(TextureWrap wrap) {
     switch (wrap) {
     case TextureWrap::Repeat:
-        return 10497;
+        return TINYGLTF_TEXTURE_WRAP_REPEAT;
     case TextureWrap::ClampToEdge:
-        return 33071;
+        return TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
     case TextureWrap::MirroredRepeat:
-        return 33648;
+        return TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT;
     }
-    return 10497;
+    return TINYGLTF_TEXTURE_WRAP_REPEAT;
 }
 
 // The rotation part of a view-to-world matrix as a glTF quaternion [x, y, z, w].
-QJsonArray quaternion(const glm::dmat3& rotation) {
+std::vector<double> quaternion(const glm::dmat3& rotation) {
     const glm::dquat q = glm::normalize(glm::quat_cast(rotation));
-    return numbers({q.x, q.y, q.z, q.w});
+    return {q.x, q.y, q.z, q.w};
 }
 
 bool isIdentity(const glm::dquat& q) {
@@ -89,6 +92,63 @@ double metallicFromSpecularColor(const MaterialComponent& m) {
     return den > 1e-4 ? unit(num / den) : 0.0;
 }
 
+// The pose at t = 0 (animations are not exported): T × R × S of the node's transform, each part left out
+// when it does nothing.
+void setPose(tinygltf::Node& out, const NodeData& d) {
+    const glm::dvec3 translate = animatedTranslate(d, 0.0);
+    if (translate != glm::dvec3(0.0)) {
+        out.translation = vec3(translate);
+    }
+    const glm::dquat rotation =
+        glm::normalize(glm::quat_cast(glm::dmat3(rotationMatrix(d.transform.rotate))));
+    if (!isIdentity(rotation)) {
+        out.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
+    }
+    if (d.transform.scale != glm::dvec3(1.0)) {
+        out.scale = vec3(d.transform.scale);
+    }
+}
+
+// KHR_lights_punctual: colour and intensity as speculum has them (its lights do not fall off with
+// distance; glTF's point and spot lights do, by the inverse square law, and are in candela).
+tinygltf::Light gltfLight(const LightComponent& l, const std::string& name) {
+    tinygltf::Light light;
+    light.name = utf8(name);
+    light.color = {unit(l.color.r), unit(l.color.g), unit(l.color.b)};
+    light.intensity = std::max(0.0, l.intensity);
+    switch (l.type) {
+    case LightType::Point:
+        light.type = "point";
+        break;
+    case LightType::Directional:
+        light.type = "directional";
+        break;
+    case LightType::Spot: {
+        light.type = "spot";
+        const double outer = glm::radians(std::clamp(l.spotAngle, 1e-3, 90.0));
+        // The edge fades over the outer `spotBlend` of the cone; glTF wants inner < outer.
+        light.spot.outerConeAngle = outer;
+        light.spot.innerConeAngle =
+            std::min(outer * (1.0 - std::clamp(l.spotBlend, 0.0, 1.0)), outer * 0.9999);
+        break;
+    }
+    }
+    return light;
+}
+
+// The scene camera's lens. tinygltf writes zfar whatever it is, and glTF wants it beyond znear: a far
+// plane that is not (which project files and the editor refuse) becomes the farthest a scene may have.
+tinygltf::Camera gltfCamera(const CameraData& c) {
+    tinygltf::Camera camera;
+    camera.name = "Camera";
+    camera.type = "perspective";
+    camera.perspective.yfov = glm::radians(std::clamp(c.fovY, 1e-3, 179.0));
+    camera.perspective.znear = std::max(c.near, 1e-6);
+    const bool farOk = std::isfinite(c.far) && c.far > camera.perspective.znear;
+    camera.perspective.zfar = farOk ? c.far : camera.perspective.znear * render::kMaxFarNearRatio;
+    return camera;
+}
+
 class Builder {
 public:
     Builder(MeshLibrary& meshes, const GltfLayout& layout, std::vector<std::string>& warnings)
@@ -98,121 +158,86 @@ public:
         , m_imageSource(meshes) {}
 
     GltfAsset build(const Scene& scene) {
-        QJsonArray roots;
+        tinygltf::Scene root;
+        root.name = "Scene";
         for (const auto& node : scene.topLevelNodes()) {
-            roots.append(addNode(*node));
+            root.nodes.push_back(addNode(*node));
         }
-        roots.append(addCamera(scene.camera()));
-
-        QJsonObject root;
-        root["asset"] = QJsonObject{{"version", "2.0"}, {"generator", "speculum " SPECULUM_VERSION}};
-        root["scene"] = 0;
-        root["scenes"] = QJsonArray{QJsonObject{{"name", "Scene"}, {"nodes", roots}}};
-        root["nodes"] = m_nodes;
-        root["cameras"] = m_cameras;
-        auto put = [&](const char* key, const QJsonArray& array) {
-            if (!array.isEmpty()) {
-                root[key] = array;
-            }
-        };
-        put("meshes", m_meshes);
-        put("materials", m_materials);
-        put("textures", m_textures);
-        put("samplers", m_samplers);
-        put("images", m_images);
-        put("accessors", m_accessors);
-        put("bufferViews", m_bufferViews);
-        if (!m_lights.isEmpty()) {
-            root["extensions"] = QJsonObject{{kLights, QJsonObject{{"lights", m_lights}}}};
+        root.nodes.push_back(addCamera(scene.camera()));
+        m_model.defaultScene = push(m_model.scenes, std::move(root));
+        m_model.asset.version = "2.0";
+        m_model.asset.generator = "speculum " SPECULUM_VERSION;
+        if (!m_model.lights.empty()) {
             m_used.insert(kLights);
         }
-        if (!m_used.empty()) {
-            QJsonArray used;
-            for (const std::string& name : m_used) {
-                used.append(QString::fromStdString(name));
-            }
-            root["extensionsUsed"] = used;
-        }
+        m_model.extensionsUsed.assign(m_used.begin(), m_used.end());
         if (!m_bin.empty()) {
-            QJsonObject buffer{{"byteLength", static_cast<double>(m_bin.size())}};
+            tinygltf::Buffer buffer;
+            buffer.data = std::move(m_bin);
             if (!m_layout.binary) {
-                buffer["uri"] =
-                    QString::fromLatin1(QUrl::toPercentEncoding(QString::fromStdString(m_layout.binUri)));
+                buffer.uri = uri(m_layout.binUri);
             }
-            root["buffers"] = QJsonArray{buffer};
+            m_model.buffers.push_back(std::move(buffer));
         }
-
-        GltfAsset asset;
-        asset.json = QJsonDocument(root).toJson(QJsonDocument::Compact);
-        asset.bin = std::move(m_bin);
-        asset.imageFiles = std::move(m_imageFiles);
-        return asset;
+        return GltfAsset{std::move(m_model), std::move(m_imageFiles)};
     }
 
 private:
     // ---- binary data ----
 
     int addBufferView(const void* data, std::size_t size, int target) {
-        while (m_bin.size() % 4 != 0) { // every view starts 4-byte aligned
-            m_bin.push_back(0);
-        }
-        QJsonObject view{{"buffer", 0},
-                         {"byteOffset", static_cast<double>(m_bin.size())},
-                         {"byteLength", static_cast<double>(size)}};
-        if (target != 0) {
-            view["target"] = target;
-        }
+        m_bin.resize((m_bin.size() + 3) & ~std::size_t(3), 0); // every view starts 4-byte aligned
+        tinygltf::BufferView view;
+        view.buffer = 0;
+        view.byteOffset = m_bin.size();
+        view.byteLength = size;
+        view.target = target;
         const auto* bytes = static_cast<const unsigned char*>(data);
         m_bin.insert(m_bin.end(), bytes, bytes + size);
-        m_bufferViews.append(view);
-        return static_cast<int>(m_bufferViews.size() - 1);
+        return push(m_model.bufferViews, std::move(view));
     }
 
     template <typename Vec>
-    int addFloatAccessor(const std::vector<Vec>& values, const char* type, bool bounds) {
-        constexpr int n = Vec::length();
-        const int view = addBufferView(values.data(), values.size() * sizeof(Vec), kArrayBuffer);
-        QJsonObject accessor{{"bufferView", view},
-                             {"componentType", kFloat},
-                             {"count", static_cast<double>(values.size())},
-                             {"type", type}};
+    int addFloatAccessor(const std::vector<Vec>& values, int type, bool bounds) {
+        tinygltf::Accessor accessor;
+        accessor.bufferView =
+            addBufferView(values.data(), values.size() * sizeof(Vec), TINYGLTF_TARGET_ARRAY_BUFFER);
+        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        accessor.count = values.size();
+        accessor.type = type;
         if (bounds) { // required for POSITION
             Vec lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
             for (const Vec& v : values) {
                 lo = glm::min(lo, v);
                 hi = glm::max(hi, v);
             }
-            QJsonArray min, max;
-            for (int i = 0; i < n; ++i) {
-                min.append(static_cast<double>(lo[i]));
-                max.append(static_cast<double>(hi[i]));
+            for (int i = 0; i < Vec::length(); ++i) {
+                accessor.minValues.push_back(static_cast<double>(lo[i]));
+                accessor.maxValues.push_back(static_cast<double>(hi[i]));
             }
-            accessor["min"] = min;
-            accessor["max"] = max;
         }
-        m_accessors.append(accessor);
-        return static_cast<int>(m_accessors.size() - 1);
+        return push(m_model.accessors, std::move(accessor));
     }
 
     int addIndices(const std::vector<std::uint32_t>& indices, std::size_t vertexCount) {
-        int view = 0;
-        int type = kUnsignedInt;
+        tinygltf::Accessor accessor;
         if (vertexCount <= 0xffff) { // 0xffff itself is the restart value, never a valid index
-            std::vector<std::uint16_t> shorts(indices.begin(), indices.end());
-            view = addBufferView(shorts.data(), shorts.size() * 2, kElementArrayBuffer);
-            type = kUnsignedShort;
+            const std::vector<std::uint16_t> shorts(indices.begin(), indices.end());
+            accessor.bufferView =
+                addBufferView(shorts.data(), shorts.size() * 2, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+            accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
         } else {
-            view = addBufferView(indices.data(), indices.size() * 4, kElementArrayBuffer);
+            accessor.bufferView =
+                addBufferView(indices.data(), indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+            accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
         }
-        m_accessors.append(QJsonObject{{"bufferView", view},
-                                       {"componentType", type},
-                                       {"count", static_cast<double>(indices.size())},
-                                       {"type", "SCALAR"}});
-        return static_cast<int>(m_accessors.size() - 1);
+        accessor.count = indices.size();
+        accessor.type = TINYGLTF_TYPE_SCALAR;
+        return push(m_model.accessors, std::move(accessor));
     }
 
     // A primitive's attributes and indices, shared by every node that draws the same mesh.
-    std::optional<QJsonObject> geometry(const render::MeshData& mesh) {
+    std::optional<tinygltf::Primitive> geometry(const render::MeshData& mesh) {
         if (auto found = m_geometry.find(&mesh); found != m_geometry.end()) {
             return found->second;
         }
@@ -220,10 +245,12 @@ private:
         if (n == 0 || mesh.indices.empty()) {
             return std::nullopt;
         }
-        QJsonObject attributes;
-        attributes["POSITION"] = addFloatAccessor(mesh.positions, "VEC3", true);
+        tinygltf::Primitive primitive;
+        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        auto& attributes = primitive.attributes;
+        attributes["POSITION"] = addFloatAccessor(mesh.positions, TINYGLTF_TYPE_VEC3, true);
         if (mesh.normals.size() == n) {
-            attributes["NORMAL"] = addFloatAccessor(mesh.normals, "VEC3", false);
+            attributes["NORMAL"] = addFloatAccessor(mesh.normals, TINYGLTF_TYPE_VEC3, false);
         }
         if (mesh.uvs.size() == n) {
             // speculum's v = 0 is the bottom row of the image; glTF's v = 0 is the top row.
@@ -231,65 +258,72 @@ private:
             for (glm::vec2& uv : uvs) {
                 uv.y = 1.0f - uv.y;
             }
-            attributes["TEXCOORD_0"] = addFloatAccessor(uvs, "VEC2", false);
+            attributes["TEXCOORD_0"] = addFloatAccessor(uvs, TINYGLTF_TYPE_VEC2, false);
         }
         if (mesh.colors.size() == n) {
-            attributes["COLOR_0"] = addFloatAccessor(mesh.colors, "VEC4", false);
+            attributes["COLOR_0"] = addFloatAccessor(mesh.colors, TINYGLTF_TYPE_VEC4, false);
         }
         if (mesh.tangents.size() == n && mesh.normals.size() == n) {
             // Unchanged: speculum's bitangent w·(normal × tangent) points up the image (increasing v),
             // and so does glTF's (normal maps are +Y up; the Khronos sample viewer builds the same basis).
-            const std::vector<glm::vec4>& tangents = mesh.tangents;
-            attributes["TANGENT"] = addFloatAccessor(tangents, "VEC4", false);
+            attributes["TANGENT"] = addFloatAccessor(mesh.tangents, TINYGLTF_TYPE_VEC4, false);
         }
-        QJsonObject primitive{
-            {"attributes", attributes}, {"indices", addIndices(mesh.indices, n)}, {"mode", 4}};
+        primitive.indices = addIndices(mesh.indices, n);
         m_geometry.emplace(&mesh, primitive);
         return primitive;
     }
 
     // ---- textures ----
 
+    // The image of texture `name`, or -1 when it does not load (warned once).
+    int addImage(const std::string& name, const std::string& owner) {
+        if (auto found = m_imageIndex.find(name); found != m_imageIndex.end()) {
+            return found->second;
+        }
+        auto loaded = m_imageSource.load(name);
+        if (!loaded) {
+            m_warnings.push_back("node \"" + owner + "\": texture not exported: " + loaded.error());
+            m_imageIndex.emplace(name, -1);
+            return -1;
+        }
+        tinygltf::Image image;
+        if (m_layout.binary) {
+            image.bufferView = addBufferView(loaded->bytes.data(), loaded->bytes.size(), 0);
+            image.mimeType = loaded->mimeType;
+        } else {
+            const std::string file =
+                m_layout.imageStem + "_" + std::to_string(m_imageFiles.size()) + loaded->extension();
+            image.uri = uri(file);
+            m_imageFiles.push_back({file, std::move(*loaded)});
+        }
+        const int index = push(m_model.images, std::move(image));
+        m_imageIndex.emplace(name, index);
+        return index;
+    }
+
     std::optional<int> addTexture(const std::string& name, const MaterialComponent& m,
                                   const std::string& owner) {
-        auto image = m_imageIndex.find(name);
-        if (image == m_imageIndex.end()) {
-            auto loaded = m_imageSource.load(name);
-            if (!loaded) {
-                m_warnings.push_back("node \"" + owner + "\": texture not exported: " + loaded.error());
-                m_imageIndex.emplace(name, -1);
-                return std::nullopt;
-            }
-            QJsonObject json;
-            if (m_layout.binary) {
-                json["bufferView"] = addBufferView(loaded->bytes.data(), loaded->bytes.size(), 0);
-                json["mimeType"] = QString::fromStdString(loaded->mimeType);
-            } else {
-                const std::string file =
-                    m_layout.imageStem + "_" + std::to_string(m_imageFiles.size()) + loaded->extension();
-                json["uri"] = QString::fromLatin1(QUrl::toPercentEncoding(QString::fromStdString(file)));
-                m_imageFiles.push_back({file, std::move(*loaded)});
-            }
-            m_images.append(json);
-            image = m_imageIndex.emplace(name, static_cast<int>(m_images.size() - 1)).first;
-        }
-        if (image->second < 0) {
+        const int image = addImage(name, owner);
+        if (image < 0) {
             return std::nullopt;
         }
         const auto samplerKey = std::make_pair(wrapCode(m.wrap[0]), wrapCode(m.wrap[1]));
         auto sampler = m_samplerIndex.find(samplerKey);
         if (sampler == m_samplerIndex.end()) {
-            m_samplers.append(QJsonObject{{"magFilter", kLinear},
-                                          {"minFilter", kLinearMipmapLinear},
-                                          {"wrapS", samplerKey.first},
-                                          {"wrapT", samplerKey.second}});
-            sampler = m_samplerIndex.emplace(samplerKey, static_cast<int>(m_samplers.size() - 1)).first;
+            tinygltf::Sampler s;
+            s.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+            s.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+            s.wrapS = samplerKey.first;
+            s.wrapT = samplerKey.second;
+            sampler = m_samplerIndex.emplace(samplerKey, push(m_model.samplers, std::move(s))).first;
         }
-        const auto key = std::make_pair(image->second, sampler->second);
+        const auto key = std::make_pair(image, sampler->second);
         auto texture = m_textureIndex.find(key);
         if (texture == m_textureIndex.end()) {
-            m_textures.append(QJsonObject{{"source", key.first}, {"sampler", key.second}});
-            texture = m_textureIndex.emplace(key, static_cast<int>(m_textures.size() - 1)).first;
+            tinygltf::Texture t;
+            t.source = key.first;
+            t.sampler = key.second;
+            texture = m_textureIndex.emplace(key, push(m_model.textures, std::move(t))).first;
         }
         return texture->second;
     }
@@ -298,61 +332,61 @@ private:
 
     // `metallic`/`roughness` given: a mirror or the reflector (their reflectivity and roughness); otherwise
     // metallic comes from the specular colour and roughness from the shininess, both by inverting the
-    // importer's conversion (ModelMaterials.cpp).
+    // importer's conversion (ModelMaterials.cpp). tinygltf leaves out the values that are glTF's defaults.
     int addMaterial(const std::string& owner, const MaterialComponent& m, std::optional<double> metallic,
                     std::optional<double> roughness) {
-        QJsonObject pbr;
-        pbr["baseColorFactor"] =
-            numbers({unit(m.color.r), unit(m.color.g), unit(m.color.b), unit(m.opacity)});
-        pbr["metallicFactor"] = unit(metallic.value_or(metallicFromSpecularColor(m)));
-        pbr["roughnessFactor"] = unit(roughness.value_or(roughnessFromShininess(m.shininess)));
+        tinygltf::Material material;
+        material.name = utf8(owner + " material");
+        tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+        pbr.baseColorFactor = {unit(m.color.r), unit(m.color.g), unit(m.color.b), unit(m.opacity)};
+        pbr.metallicFactor = unit(metallic.value_or(metallicFromSpecularColor(m)));
+        pbr.roughnessFactor = unit(roughness.value_or(roughnessFromShininess(m.shininess)));
         if (!m.texture.empty()) {
             if (auto t = addTexture(m.texture.path, m, owner)) {
-                pbr["baseColorTexture"] = QJsonObject{{"index", *t}};
+                pbr.baseColorTexture.index = *t;
             }
         }
-        QJsonObject material{{"name", QString::fromStdString(owner + " material")},
-                             {"pbrMetallicRoughness", pbr}};
-
-        // glTF's emissiveFactor is 0..1; brighter emission keeps its colour there and its strength in
-        // KHR_materials_emissive_strength.
-        const glm::dvec3 emission = glm::max(m.emission, glm::dvec3(0.0));
-        const double strength = std::max({emission.r, emission.g, emission.b});
-        if (strength > 0.0 && std::isfinite(strength)) {
-            const double scale = strength > 1.0 ? strength : 1.0;
-            material["emissiveFactor"] = vec3(emission / scale);
-            if (strength > 1.0) {
-                material["extensions"] =
-                    QJsonObject{{kEmissiveStrength, QJsonObject{{"emissiveStrength", strength}}}};
-                m_used.insert(kEmissiveStrength);
-            }
-        }
-        if (!m.emissionTexture.empty()) {
-            if (auto t = addTexture(m.emissionTexture.path, m, owner)) {
-                material["emissiveTexture"] = QJsonObject{{"index", *t}};
-                if (!material.contains("emissiveFactor")) {
-                    material["emissiveFactor"] = numbers({0.0, 0.0, 0.0}); // as in speculum: factor × texture
-                }
-            }
-        }
+        addEmission(material, m, owner);
         if (!m.normalTexture.empty()) {
             if (auto t = addTexture(m.normalTexture.path, m, owner)) {
-                material["normalTexture"] = QJsonObject{{"index", *t}, {"scale", m.normalScale}};
+                material.normalTexture.index = *t;
+                material.normalTexture.scale = m.normalScale;
             }
         }
         switch (m.alphaMode) {
         case AlphaMode::Opaque:
             break;
         case AlphaMode::Mask:
-            material["alphaMode"] = "MASK";
-            material["alphaCutoff"] = std::max(0.0, m.alphaCutoff);
+            material.alphaMode = "MASK";
+            material.alphaCutoff = std::max(0.0, m.alphaCutoff);
             break;
         case AlphaMode::Blend:
-            material["alphaMode"] = "BLEND";
+            material.alphaMode = "BLEND";
             break;
         }
-        m_materials.append(material);
-        return static_cast<int>(m_materials.size() - 1);
+        return push(m_model.materials, std::move(material));
+    }
+
+    // glTF's emissiveFactor is 0..1; brighter emission keeps its colour there and its strength in
+    // KHR_materials_emissive_strength. An emission texture without emission stays dark, as in speculum
+    // (factor × texture): glTF's default factor is 0.
+    void addEmission(tinygltf::Material& material, const MaterialComponent& m, const std::string& owner) {
+        const glm::dvec3 emission = glm::max(m.emission, glm::dvec3(0.0));
+        const double strength = std::max({emission.r, emission.g, emission.b});
+        if (strength > 0.0 && std::isfinite(strength)) {
+            const double scale = strength > 1.0 ? strength : 1.0;
+            material.emissiveFactor = vec3(emission / scale);
+            if (strength > 1.0) {
+                material.extensions[kEmissiveStrength] =
+                    object("emissiveStrength", tinygltf::Value(strength));
+                m_used.insert(kEmissiveStrength);
+            }
+        }
+        if (!m.emissionTexture.empty()) {
+            if (auto t = addTexture(m.emissionTexture.path, m, owner)) {
+                material.emissiveTexture.index = *t;
+            }
+        }
     }
 
     // ---- nodes ----
@@ -360,144 +394,101 @@ private:
     int addNode(const Node& node) {
         const NodeData& d = node.data();
         const std::string name = d.name.empty() ? std::string("node") : d.name;
-        QJsonObject json{{"name", QString::fromStdString(name)}};
-        // The pose at t = 0 (animations are not exported): T × R × S of the node's transform.
-        const glm::dvec3 translate = animatedTranslate(d, 0.0);
-        if (translate != glm::dvec3(0.0)) {
-            json["translation"] = vec3(translate);
-        }
-        const glm::dquat rotation =
-            glm::normalize(glm::quat_cast(glm::dmat3(rotationMatrix(d.transform.rotate))));
-        if (!isIdentity(rotation)) {
-            json["rotation"] = numbers({rotation.x, rotation.y, rotation.z, rotation.w});
-        }
-        if (d.transform.scale != glm::dvec3(1.0)) {
-            json["scale"] = vec3(d.transform.scale);
-        }
+        tinygltf::Node out;
+        out.name = utf8(name);
+        setPose(out, d);
+        out.mesh = addMesh(d, name);
 
-        QJsonArray primitives;
+        // Reserve this node's index before its children take theirs.
+        const int index = push(m_model.nodes, tinygltf::Node{});
+        if (d.light) {
+            tinygltf::ExtensionMap extension{
+                {kLights, object("light", tinygltf::Value(push(m_model.lights, gltfLight(*d.light, name))))}};
+            if (d.light->type == LightType::Point) {
+                out.extensions = std::move(extension);
+            } else {
+                // speculum's lights shine along local −Y, glTF's along −Z: a child turned −90° about X.
+                const double h = std::sqrt(0.5);
+                tinygltf::Node turned;
+                turned.name = utf8(name + " (light)");
+                turned.rotation = {-h, 0.0, 0.0, h};
+                turned.extensions = std::move(extension);
+                out.children.push_back(push(m_model.nodes, std::move(turned)));
+            }
+        }
+        for (const auto& child : node.children()) {
+            out.children.push_back(addNode(*child));
+        }
+        m_model.nodes[static_cast<std::size_t>(index)] = std::move(out);
+        return index;
+    }
+
+    // The node's mesh (its shape or model, and a mirror's quad), or -1 when it has none.
+    int addMesh(const NodeData& d, const std::string& name) {
+        tinygltf::Mesh mesh;
         if (d.mesh) {
             std::vector<std::string> importWarnings;
-            auto mesh = m_library.get(*d.mesh, importWarnings);
-            if (!mesh) {
-                m_warnings.push_back("node \"" + d.name + "\": mesh not exported: " + mesh.error());
-            } else if (auto primitive = geometry(**mesh)) {
+            auto loaded = m_library.get(*d.mesh, importWarnings);
+            if (!loaded) {
+                m_warnings.push_back("node \"" + d.name + "\": mesh not exported: " + loaded.error());
+            } else if (auto primitive = geometry(**loaded)) {
                 std::optional<double> metallic, roughness;
                 if (d.reflector) {
                     metallic = d.reflector->reflectivity;
                     roughness = d.reflector->roughness;
                 }
-                primitive->insert("material", addMaterial(name, d.material.value_or(MaterialComponent{}),
-                                                          metallic, roughness));
-                primitives.append(*primitive);
+                primitive->material =
+                    addMaterial(name, d.material.value_or(MaterialComponent{}), metallic, roughness);
+                mesh.primitives.push_back(std::move(*primitive));
             } else {
                 m_warnings.push_back("node \"" + d.name + "\": mesh not exported: it has no triangles");
             }
         }
         if (d.mirror) {
-            primitives.append(mirrorQuad(d, name));
+            mesh.primitives.push_back(mirrorQuad(d, name));
         }
-        if (!primitives.isEmpty()) {
-            m_meshes.append(QJsonObject{{"name", QString::fromStdString(name)}, {"primitives", primitives}});
-            json["mesh"] = static_cast<int>(m_meshes.size() - 1);
+        if (mesh.primitives.empty()) {
+            return -1;
         }
-
-        // Reserve this node's index before its children take theirs.
-        const int index = static_cast<int>(m_nodes.size());
-        m_nodes.append(QJsonObject{});
-        QJsonArray children;
-        if (d.light) {
-            const int light = addLight(*d.light, name);
-            const QJsonObject extension{{kLights, QJsonObject{{"light", light}}}};
-            if (d.light->type == LightType::Point) {
-                json["extensions"] = extension;
-            } else {
-                // speculum's lights shine along local −Y, glTF's along −Z: a child turned −90° about X.
-                const double h = std::sqrt(0.5);
-                m_nodes.append(QJsonObject{{"name", QString::fromStdString(name + " (light)")},
-                                           {"rotation", numbers({-h, 0.0, 0.0, h})},
-                                           {"extensions", extension}});
-                children.append(static_cast<int>(m_nodes.size() - 1));
-            }
-        }
-        for (const auto& child : node.children()) {
-            children.append(addNode(*child));
-        }
-        if (!children.isEmpty()) {
-            json["children"] = children;
-        }
-        m_nodes[index] = json;
-        return index;
+        mesh.name = utf8(name);
+        return push(m_model.meshes, std::move(mesh));
     }
 
     // The mirror's rectangle as the renderer draws it: the unit plane scaled to its size, same uvs.
-    QJsonObject mirrorQuad(const NodeData& d, const std::string& name) {
+    tinygltf::Primitive mirrorQuad(const NodeData& d, const std::string& name) {
         auto quad = std::make_shared<render::MeshData>(render::makePlane(1));
         const glm::vec3 half(float(d.mirror->size.x * 0.5), 1.0f, float(d.mirror->size.y * 0.5));
         for (glm::vec3& p : quad->positions) {
             p *= half;
         }
         m_keepAlive.push_back(quad);
-        QJsonObject primitive = *geometry(*quad);
+        tinygltf::Primitive primitive = *geometry(*quad);
         MaterialComponent look = d.material.value_or(MaterialComponent{});
         if (!d.material) {
             look.color = glm::dvec3(0.95);
         }
-        primitive["material"] =
+        primitive.material =
             addMaterial(name + " (mirror)", look, d.mirror->reflectivity, d.mirror->roughness);
         return primitive;
-    }
-
-    // KHR_lights_punctual: colour and intensity as speculum has them (its lights do not fall off with
-    // distance; glTF's point and spot lights do, by the inverse square law, and are in candela).
-    int addLight(const LightComponent& l, const std::string& name) {
-        QJsonObject light{{"name", QString::fromStdString(name)},
-                          {"color", numbers({unit(l.color.r), unit(l.color.g), unit(l.color.b)})},
-                          {"intensity", std::max(0.0, l.intensity)}};
-        switch (l.type) {
-        case LightType::Point:
-            light["type"] = "point";
-            break;
-        case LightType::Directional:
-            light["type"] = "directional";
-            break;
-        case LightType::Spot: {
-            light["type"] = "spot";
-            const double outer = glm::radians(std::clamp(l.spotAngle, 1e-3, 90.0));
-            // The edge fades over the outer `spotBlend` of the cone; glTF wants inner < outer.
-            const double inner = std::min(outer * (1.0 - std::clamp(l.spotBlend, 0.0, 1.0)), outer * 0.9999);
-            light["spot"] = QJsonObject{{"innerConeAngle", inner}, {"outerConeAngle", outer}};
-            break;
-        }
-        }
-        m_lights.append(light);
-        return static_cast<int>(m_lights.size() - 1);
     }
 
     // The scene camera as a perspective camera on a top-level node "Camera", which glTF points along its
     // local −Z with +Y up: the node's matrix is the inverse of the view matrix.
     int addCamera(const CameraData& c) {
-        QJsonObject perspective{{"yfov", glm::radians(std::clamp(c.fovY, 1e-3, 179.0))},
-                                {"znear", std::max(c.near, 1e-6)}};
-        if (c.far > c.near) {
-            perspective["zfar"] = c.far;
-        }
-        m_cameras.append(
-            QJsonObject{{"name", "Camera"}, {"type", "perspective"}, {"perspective", perspective}});
-
-        QJsonObject node{{"name", "Camera"}, {"camera", static_cast<int>(m_cameras.size() - 1)}};
-        node["translation"] = vec3(c.position);
+        tinygltf::Node node;
+        node.name = "Camera";
+        node.camera = push(m_model.cameras, gltfCamera(c));
+        node.translation = vec3(c.position);
         const glm::dvec3 forward = c.target - c.position;
         const glm::dvec3 side = glm::cross(forward, c.up);
         if (glm::length(forward) > 0.0 && glm::length(side) > 1e-12 * glm::length(forward)) {
             const glm::dmat4 view = glm::lookAt(c.position, c.target, c.up);
-            node["rotation"] = quaternion(glm::dmat3(glm::inverse(view)));
+            node.rotation = quaternion(glm::dmat3(glm::inverse(view)));
         } else {
             m_warnings.push_back(
                 "camera: its target or up direction is degenerate; exported looking along -Z");
         }
-        m_nodes.append(node);
-        return static_cast<int>(m_nodes.size() - 1);
+        return push(m_model.nodes, std::move(node));
     }
 
     MeshLibrary& m_library;
@@ -505,12 +496,11 @@ private:
     std::vector<std::string>& m_warnings;
     GltfImageSource m_imageSource;
 
-    QJsonArray m_nodes, m_meshes, m_materials, m_textures, m_samplers, m_images, m_accessors, m_bufferViews,
-        m_cameras, m_lights;
-    std::set<std::string> m_used; // extensions actually written
-    std::vector<unsigned char> m_bin;
+    tinygltf::Model m_model;
+    std::set<std::string> m_used;     // extensions actually written
+    std::vector<unsigned char> m_bin; // buffer 0, until build() hands it to the model
     std::vector<GltfAsset::ImageFile> m_imageFiles;
-    std::map<const render::MeshData*, QJsonObject> m_geometry;
+    std::map<const render::MeshData*, tinygltf::Primitive> m_geometry;
     std::vector<std::shared_ptr<render::MeshData>> m_keepAlive; // mirror quads keyed by address above
     std::map<std::string, int> m_imageIndex;                    // texture name → image, -1 when it failed
     std::map<std::pair<int, int>, int> m_samplerIndex;

@@ -4,8 +4,8 @@
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/model/Scene.hpp"
 
-#include <QByteArray>
 #include <string>
+#include <tiny_gltf.h>
 #include <vector>
 
 namespace speculum::scene {
@@ -20,10 +20,10 @@ struct GltfLayout {
     std::string imageStem;
 };
 
-// A glTF 2.0 asset in memory, ready to be written as .glb or .gltf (GltfExport.cpp).
+// A glTF 2.0 asset in memory: the document, with its one buffer (if it has binary data) in
+// `model.buffers`, ready to be written as .glb or .gltf (GltfExport.cpp).
 struct GltfAsset {
-    QByteArray json;
-    std::vector<unsigned char> bin; // buffer 0; empty when the asset has no binary data
+    tinygltf::Model model;
     struct ImageFile {
         std::string fileName; // relative to the JSON's folder (.gltf only)
         GltfImage image;

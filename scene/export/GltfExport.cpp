@@ -7,11 +7,12 @@
 #include <QDir>
 #include <QFileInfo>
 #include <cctype>
-#include <cerrno>
-#include <cstdint>
-#include <cstring>
 #include <filesystem>
-#include <unistd.h>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <tiny_gltf.h>
+#include <utility>
 
 namespace speculum::scene {
 
@@ -19,34 +20,40 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void append32(std::vector<unsigned char>& out, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) {
-        out.push_back(static_cast<unsigned char>(v >> (8 * i))); // GLB is little-endian
+// The .glb whole (header, JSON chunk, BIN chunk) or the .gltf's JSON, compact, as tinygltf writes them.
+std::string serialize(const tinygltf::Model& model, bool binary) {
+    std::ostringstream out;
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/false, /*writeBinary=*/binary) || !out) {
+        throw std::runtime_error("tinygltf could not write it");
     }
+    return std::move(out).str();
 }
 
-// The GLB container (glTF 2.0, section 4.4): a 12-byte header, the JSON chunk padded with spaces to 4
-// bytes, then the BIN chunk padded with zeros (left out when there is no binary data).
-std::vector<unsigned char> glbContainer(const QByteArray& json, const std::vector<unsigned char>& bin) {
-    const std::uint32_t jsonLength = (static_cast<std::uint32_t>(json.size()) + 3u) & ~3u;
-    const std::uint32_t binLength = (static_cast<std::uint32_t>(bin.size()) + 3u) & ~3u;
-    const std::uint32_t total = 12 + 8 + jsonLength + (bin.empty() ? 0 : 8 + binLength);
-    std::vector<unsigned char> out;
-    out.reserve(total);
-    append32(out, 0x46546C67); // "glTF"
-    append32(out, 2);
-    append32(out, total);
-    append32(out, jsonLength);
-    append32(out, 0x4E4F534A); // "JSON"
-    out.insert(out.end(), json.begin(), json.end());
-    out.resize(20 + jsonLength, ' ');
-    if (!bin.empty()) {
-        append32(out, binLength);
-        append32(out, 0x004E4942); // "BIN\0"
-        out.insert(out.end(), bin.begin(), bin.end());
-        out.resize(total, 0);
+// tinygltf writes a .gltf's buffers into its JSON as base64 data URIs; its file writer, the one that refers
+// to a .bin instead, writes the files itself, in place and without checking them. So the buffers go
+// through it empty, and their entries get their length and their file's URI afterwards.
+std::string gltfJson(tinygltf::Model& model) {
+    std::vector<std::vector<unsigned char>> data;
+    for (tinygltf::Buffer& buffer : model.buffers) {
+        data.push_back(std::exchange(buffer.data, {}));
     }
-    return out;
+    const std::string text = serialize(model, false);
+    nlohmann::json doc = nlohmann::json::parse(text);
+    for (std::size_t i = 0; i < model.buffers.size(); ++i) {
+        model.buffers[i].data = std::move(data[i]);
+        doc["buffers"][i]["byteLength"] = model.buffers[i].data.size();
+        doc["buffers"][i]["uri"] = model.buffers[i].uri;
+    }
+    return doc.dump();
+}
+
+base::Result<std::string> document(tinygltf::Model& model, bool binary) {
+    try {
+        return binary ? serialize(model, true) : gltfJson(model);
+    } catch (const std::exception& e) { // the JSON library's, or out of memory
+        return base::Error{std::string("cannot write the glTF document: ") + e.what()};
+    }
 }
 
 struct PendingFile {
@@ -116,23 +123,23 @@ base::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& me
     layout.binary = suffix == QStringLiteral("glb");
     layout.binUri = stem + ".bin";
     layout.imageStem = stem;
-    const GltfAsset asset = buildGltf(scene, meshes, layout, warnings);
+    GltfAsset asset = buildGltf(scene, meshes, layout, warnings);
+    const base::Result<std::string> written = document(asset.model, layout.binary);
+    if (!written) {
+        return base::Error{base::printable(path.toStdString(), 200) + ": " + written.error()};
+    }
 
     std::vector<PendingFile> files;
-    std::vector<unsigned char> glb;
-    if (layout.binary) {
-        glb = glbContainer(asset.json, asset.bin);
-        files.push_back({target, glb.data(), glb.size()});
-    } else {
-        if (!asset.bin.empty()) {
-            files.push_back({folder / layout.binUri, asset.bin.data(), asset.bin.size()});
+    if (!layout.binary) {
+        if (!asset.model.buffers.empty()) { // the scene's one buffer, when it has binary data
+            const std::vector<unsigned char>& bin = asset.model.buffers[0].data;
+            files.push_back({folder / layout.binUri, bin.data(), bin.size()});
         }
         for (const GltfAsset::ImageFile& image : asset.imageFiles) {
             files.push_back({folder / image.fileName, image.image.bytes.data(), image.image.bytes.size()});
         }
-        files.push_back({target, reinterpret_cast<const unsigned char*>(asset.json.constData()),
-                         static_cast<std::size_t>(asset.json.size())});
     }
+    files.push_back({target, reinterpret_cast<const unsigned char*>(written->data()), written->size()});
     return writeAllOrNothing(files);
 }
 

@@ -12,7 +12,8 @@ namespace speculum::scene {
 
 // Writes the scene as a self-contained glTF 2.0 asset for Blender, three.js and other tools, by the
 // extension: `.glb` (one binary file, images inside it) or `.gltf` (JSON, with `<name>.bin` and the images
-// `<name>_<n>.png|.jpg` beside it, referred to by relative URIs). Written by speculum itself, not Assimp.
+// `<name>_<n>.png|.jpg` beside it, referred to by relative URIs). Built by speculum (GltfBuilder) and
+// serialized by tinygltf, not Assimp.
 //
 // - Nodes keep their names, hierarchy and their pose at t = 0 (translation, rotation, scale; animations
 //   are not exported). Meshes keep positions, normals, uvs (v turned to glTF's top-left origin), vertex
