@@ -112,6 +112,80 @@ base::Status writeReportWithGui(const fs::path& staging, const accuracy::RunInfo
     return written;
 }
 
+// The sweep's input: the project's frame and, for the tessellation family, a way to put other
+// tessellations of the built-in teapots in place. `project` must outlive it (its mesh library).
+accuracy::SweepInput sweepInput(const Options& options, const ProjectFrame& project) {
+    accuracy::SweepInput input;
+    input.sceneName = fs::path(options.project).filename().string();
+    input.scene = project.input;
+    input.quick = options.quick;
+    input.width = options.width;
+    input.height = options.height;
+    if (!project.teapotTessellations.empty())
+        input.teapotTessellation = *project.teapotTessellations.begin();
+    // Built-in teapots are the mesh library's, one shared mesh per tessellation: swap them by identity.
+    std::set<const render::MeshData*> teapotMeshes;
+    for (int t : project.teapotTessellations)
+        teapotMeshes.insert(project.meshes->builtin(scene::BuiltinMesh::Teapot, t).get());
+    scene::MeshLibrary* meshes = project.meshes.get();
+    input.tessellate = [teapotMeshes = std::move(teapotMeshes), meshes](const render::MeshHandle& mesh,
+                                                                        int tessellation) {
+        return teapotMeshes.count(mesh.get()) ? meshes->builtin(scene::BuiltinMesh::Teapot, tessellation)
+                                              : mesh;
+    };
+    return input;
+}
+
+// What the sweep reports as it goes: progress on stderr, a stop on Ctrl-C, and every image (each
+// reference, each configuration's error map, the scene's own frame) written into the staging folder as
+// soon as it exists, so that none is held until the end. A frame warning is printed once, however many
+// configurations repeat it (`warned` remembers them).
+accuracy::SweepObserver sweepObserver(const fs::path& staging, std::set<std::string>& warned) {
+    accuracy::SweepObserver observer;
+    observer.progress = progress;
+    observer.stop = [] { return StopOnSignal::requested(); };
+    observer.referenceTraced = [staging](const accuracy::Reference& reference,
+                                         const accuracy::ReferenceInfo& info) {
+        printWarnings(reference.traced.warnings);
+        return render::writeImage((staging / info.image).string(), reference.traced.image);
+    };
+    observer.measured = [staging, &warned](std::size_t, std::size_t, const accuracy::Record& record,
+                                           const accuracy::FrameCost& cost,
+                                           const accuracy::ErrorFigures& errors) -> base::Status {
+        for (const std::string& w : cost.warnings)
+            if (warned.insert(w).second)
+                printWarnings({w});
+        if (base::Status s =
+                render::metrics::writeErrorMap((staging / record.errorMap).string(), errors.difference);
+            !s)
+            return s;
+        if (record.config.family == accuracy::Family::Scene)
+            return render::writeImage((staging / "render.png").string(), cost.image);
+        return base::Done{};
+    };
+    return observer;
+}
+
+// results.csv, results.json, report.md and its plots, into the staging folder. A failed write is told as
+// the user sees it (outputMessage).
+base::Status writeResults(const StagedOutput& output, const accuracy::RunInfo& run,
+                          const std::vector<accuracy::Record>& records) {
+    const fs::path staging = output.staging();
+    if (base::Status s = accuracy::writeCsv((staging / "results.csv").string(), records); !s)
+        return base::Error{outputMessage(s.error(), output)};
+    if (base::Status s = accuracy::writeJson((staging / "results.json").string(), run, records); !s)
+        return base::Error{outputMessage(s.error(), output)};
+    if (base::Status s = writeReportWithGui(staging, run, records); !s)
+        return base::Error{outputMessage(s.error(), output)};
+    return base::Done{};
+}
+
+// Plots and references of an earlier run in the same folder would mix two runs: the commit removes them.
+bool isEarlierOutput(const std::string& name) {
+    const bool png = name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0;
+    return png && (name.rfind("plot-", 0) == 0 || name.rfind("reference", 0) == 0);
+}
+
 } // namespace
 
 int run(const Options& options) {
@@ -143,47 +217,9 @@ int run(const Options& options) {
     if (!renderer)
         return fail(renderer.error());
 
-    accuracy::SweepInput input;
-    input.sceneName = fs::path(options.project).filename().string();
-    input.scene = project->input;
-    input.quick = options.quick;
-    input.width = options.width;
-    input.height = options.height;
-    if (!project->teapotTessellations.empty())
-        input.teapotTessellation = *project->teapotTessellations.begin();
-    // Built-in teapots are the mesh library's, one shared mesh per tessellation: swap them by identity.
-    std::set<const render::MeshData*> teapotMeshes;
-    for (int t : project->teapotTessellations)
-        teapotMeshes.insert(project->meshes->builtin(scene::BuiltinMesh::Teapot, t).get());
-    input.tessellate = [&](const render::MeshHandle& mesh, int tessellation) {
-        return teapotMeshes.count(mesh.get())
-                   ? project->meshes->builtin(scene::BuiltinMesh::Teapot, tessellation)
-                   : mesh;
-    };
-
+    const accuracy::SweepInput input = sweepInput(options, *project);
     std::set<std::string> warned;
-    accuracy::SweepObserver observer;
-    observer.progress = progress;
-    observer.stop = [] { return StopOnSignal::requested(); };
-    observer.referenceTraced = [&](const accuracy::Reference& reference,
-                                   const accuracy::ReferenceInfo& info) {
-        printWarnings(reference.traced.warnings);
-        return render::writeImage((staging / info.image).string(), reference.traced.image);
-    };
-    observer.measured = [&](std::size_t, std::size_t, const accuracy::Record& record,
-                            const accuracy::FrameCost& cost,
-                            const accuracy::ErrorFigures& errors) -> base::Status {
-        for (const std::string& w : cost.warnings)
-            if (warned.insert(w).second)
-                printWarnings({w});
-        if (base::Status s =
-                render::metrics::writeErrorMap((staging / record.errorMap).string(), errors.difference);
-            !s)
-            return s;
-        if (record.config.family == accuracy::Family::Scene)
-            return render::writeImage((staging / "render.png").string(), cost.image);
-        return base::Done{};
-    };
+    const accuracy::SweepObserver observer = sweepObserver(staging, warned);
     auto swept = accuracy::runSweep(**renderer, input, observer);
     if (stop.requested())
         return interrupted();
@@ -195,21 +231,11 @@ int run(const Options& options) {
     run.scene = options.project;
     run.renderer = (*context)->description();
     context->reset();
-    const std::vector<accuracy::Record>& records = swept->records;
 
     progress("writing results, plots and the report");
-    if (base::Status s = accuracy::writeCsv((staging / "results.csv").string(), records); !s)
-        return fail(outputMessage(s.error(), *output));
-    if (base::Status s = accuracy::writeJson((staging / "results.json").string(), run, records); !s)
-        return fail(outputMessage(s.error(), *output));
-    if (base::Status s = writeReportWithGui(staging, run, records); !s)
-        return fail(outputMessage(s.error(), *output));
-    // Plots and references of an earlier run in the same folder would mix two runs: they go too.
-    auto earlierOutput = [](const std::string& name) {
-        const bool png = name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0;
-        return png && (name.rfind("plot-", 0) == 0 || name.rfind("reference", 0) == 0);
-    };
-    if (base::Status s = output->commit(earlierOutput); !s)
+    if (base::Status s = writeResults(*output, run, swept->records); !s)
+        return fail(s.error());
+    if (base::Status s = output->commit(isEarlierOutput); !s)
         return fail(s.error());
     const fs::path report = output->folder() / "report.md";
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -10,10 +10,10 @@
 #include "render/plan/FrameReport.hpp"
 #include "render/plan/Planner.hpp"
 #include "render/reference/Tracer.hpp"
-#include "scene/export/StillExport.hpp"
 #include "render/renderer/Renderer.hpp"
 #include "render/renderer/StillRenderer.hpp"
 #include "scene/export/GltfExport.hpp"
+#include "scene/export/StillExport.hpp"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -210,6 +210,147 @@ scene::StillExportSettings stillSettings(const CliOptions& options) {
     return settings;
 }
 
+// ---- explain: the frame, then its passes as JSON (--json) or as a table ----
+
+// Renders the frame `explain` describes, offscreen at the requested size. The frames before it (--frame N
+// explains the Nth) warm the renderer's caches exactly as a live viewport would.
+base::Result<render::StillResult> renderExplainedFrame(HeadlessFrame& frame, const CliOptions& options) {
+    // In one piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
+    render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
+    for (int warmUp = 1; warmUp < options.frame; ++warmUp)
+        if (auto earlier = render::renderStill(*frame.renderer, frame.input, settings); !earlier)
+            return base::Error{earlier.error()};
+    return render::renderStill(*frame.renderer, frame.input, settings);
+}
+
+QString kindText(render::PassKind kind) {
+    return QString::fromUtf8(render::toString(kind).data(), qsizetype(render::toString(kind).size()));
+}
+
+QJsonArray passesJson(const render::FrameReport& report) {
+    QJsonArray passes;
+    for (const render::PassRun& run : report.ran) {
+        const render::PlannedPass& p = report.planned(run);
+        QJsonObject o;
+        o["kind"] = kindText(p.kind);
+        o["target"] = QString::fromStdString(p.target);
+        o["reason"] = QString::fromStdString(report.reason(run));
+        o["gpuMs"] = run.gpuMs;
+        o["cpuMs"] = run.cpuMs;
+        passes.append(o);
+    }
+    return passes;
+}
+
+QJsonArray skippedJson(const std::vector<render::SkippedEffect>& skipped) {
+    QJsonArray array;
+    for (const render::SkippedEffect& s : skipped)
+        array.append(QJsonObject{{"target", QString::fromStdString(s.target)},
+                                 {"reason", QString::fromStdString(s.reason)}});
+    return array;
+}
+
+// What the environment pass drew inside the map: the mirror views of each face, with reasons.
+QJsonObject envmapJson(const render::EnvmapPlan& map) {
+    auto faceLabel = [&](int face) {
+        return face >= 0 ? QString::fromStdString(map.faces[static_cast<std::size_t>(face)].label)
+                         : QString("every face");
+    };
+    QJsonArray faces, mapPasses, mapSkipped;
+    for (const render::EnvmapFace& f : map.faces)
+        faces.append(QString::fromStdString(f.label));
+    for (const render::PlannedPass& p : map.passes) {
+        const render::MirrorView& view = map.views[static_cast<std::size_t>(p.view)];
+        mapPasses.append(QJsonObject{{"kind", kindText(p.kind)},
+                                     {"target", QString::fromStdString(p.target)},
+                                     {"reason", QString::fromStdString(p.reason)},
+                                     {"face", faceLabel(view.face)},
+                                     {"depth", view.depth}});
+    }
+    for (const render::SkippedEffect& s : map.skipped)
+        mapSkipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
+                                      {"reason", QString::fromStdString(s.reason)},
+                                      {"face", faceLabel(s.face)}});
+    return QJsonObject{{"target", QString::fromStdString(map.target)},
+                       {"faces", faces},
+                       {"passes", mapPasses},
+                       {"skipped", mapSkipped}};
+}
+
+// `drawnEnvmap`: the environment map's plan when its pass ran this frame, else null (JSON null).
+void printExplanationJson(const CliOptions& options, const HeadlessFrame& frame,
+                          const render::StillResult& still, const render::EnvmapPlan* drawnEnvmap) {
+    const render::FrameReport& report = still.firstSample;
+    QJsonArray warnings;
+    for (const std::string& w : report.warnings)
+        warnings.append(QString::fromStdString(w));
+    QJsonValue envmap; // null when the map was not drawn this frame
+    if (drawnEnvmap)
+        envmap = envmapJson(*drawnEnvmap);
+    QJsonObject root{{"passes", passesJson(report)},
+                     {"envmapMirrors", envmap},
+                     {"skipped", skippedJson(report.skipped)},
+                     {"warnings", warnings},
+                     {"size", QString::fromStdString(sizeText(options.width, options.height))},
+                     {"time", options.time},
+                     {"frame", options.frame},
+                     {"tiles", still.tiles},
+                     {"frameGpuMs", report.gpuMs},
+                     {"frameCpuMs", report.cpuMs},
+                     {"renderer", QString::fromStdString(frame.glDescription)}};
+    std::cout << QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString();
+}
+
+// The passes the environment pass drew inside the map, and what it skipped there; nothing when it drew
+// and skipped nothing.
+void printEnvmapPasses(const render::EnvmapPlan& map) {
+    if (map.passes.empty() && map.skipped.empty())
+        return;
+    std::printf("\nInside the environment map of %s (drawn by its envmap pass):\n",
+                base::printable(map.target).c_str());
+    for (const render::PlannedPass& p : map.passes) {
+        const std::string kind(render::toString(p.kind));
+        std::printf("  %-11s %-14s %s\n", kind.c_str(), base::printable(p.target).c_str(),
+                    oneLine(p.reason).c_str());
+    }
+    for (const render::SkippedEffect& s : map.skipped)
+        std::printf("  %-11s %-14s %s\n", "skipped", base::printable(s.target).c_str(),
+                    oneLine(s.reason).c_str());
+}
+
+void printExplanationText(const CliOptions& options, const HeadlessFrame& frame,
+                          const render::StillResult& still, const render::EnvmapPlan* drawnEnvmap) {
+    const render::FrameReport& report = still.firstSample;
+    std::printf("Frame %s at t = %g s on %s\n\n", sizeText(options.width, options.height).c_str(),
+                options.time, frame.glDescription.c_str());
+    if (still.tiles > 1)
+        std::printf("Larger than this GPU renders in one piece: the passes of the first of %d tiles.\n\n",
+                    still.tiles);
+    std::printf("Passes (in order):\n");
+    for (const render::PassRun& run : report.ran) {
+        const render::PlannedPass& p = report.planned(run);
+        const std::string kind(render::toString(p.kind));
+        std::printf("  %-11s %-14s gpu %7.2f ms  cpu %7.2f ms  %s\n", kind.c_str(),
+                    p.target.empty() ? "-" : base::printable(p.target).c_str(), run.gpuMs, run.cpuMs,
+                    oneLine(report.reason(run)).c_str());
+    }
+    if (drawnEnvmap)
+        printEnvmapPasses(*drawnEnvmap);
+    std::printf("\nSkipped:\n");
+    if (report.skipped.empty())
+        std::printf("  (nothing)\n");
+    for (const render::SkippedEffect& s : report.skipped)
+        std::printf("  %-14s %s\n", s.target.empty() ? "-" : base::printable(s.target).c_str(),
+                    oneLine(s.reason).c_str());
+    // What the frame could not do as the scene asks (a map larger than the GPU holds, a missing texture).
+    if (!report.warnings.empty()) {
+        std::printf("\nWarnings:\n");
+        for (const std::string& w : report.warnings)
+            std::printf("  %s\n", oneLine(w).c_str());
+    }
+    std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", report.gpuMs, report.cpuMs);
+}
+
 } // namespace
 
 // The still through scene::writeStill, the path the editor's Export Still takes too: rasterized on an EGL
@@ -247,9 +388,9 @@ int runRender(const CliOptions& options) {
             progress.update(fraction, options.reference ? std::string() : stage);
         return true;
     };
-    auto still = scene::writeStill(frame ? frame->renderer.get() : nullptr, input, absoluteText(options.project),
-                                   stillSettings(options), options.output, report,
-                                   frame ? frame->glDescription : std::string());
+    auto still = scene::writeStill(frame ? frame->renderer.get() : nullptr, input,
+                                   absoluteText(options.project), stillSettings(options), options.output,
+                                   report, frame ? frame->glDescription : std::string());
     progress.finish();
     if (!still) {
         fail("render: " + still.error());
@@ -274,16 +415,8 @@ int runExplain(const CliOptions& options) {
         fail(frame.error());
         return 1;
     }
-    // Explain what a frame at this size really does: render it offscreen and report its timings. In one
-    // piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
-    render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
-    // Frames before the one explained warm the renderer's caches exactly as a live viewport would.
-    for (int warmUp = 1; warmUp < options.frame; ++warmUp)
-        if (auto earlier = render::renderStill(*frame->renderer, frame->input, settings); !earlier) {
-            fail("explain: " + earlier.error());
-            return 1;
-        }
-    auto still = render::renderStill(*frame->renderer, frame->input, settings);
+    // Explain what a frame at this size really does: render it offscreen and report its timings.
+    auto still = renderExplainedFrame(*frame, options);
     if (!still) {
         fail("explain: " + still.error());
         return 1;
@@ -293,108 +426,10 @@ int runExplain(const CliOptions& options) {
     // allocated), though the plan still holds them.
     const render::EnvmapPlan* drawnEnvmap =
         report.plan.envmap && report.countRan(render::PassKind::Envmap) > 0 ? &*report.plan.envmap : nullptr;
-    if (options.json) {
-        QJsonArray passes;
-        for (const render::PassRun& run : report.ran) {
-            const render::PlannedPass& p = report.planned(run);
-            QJsonObject o;
-            o["kind"] = QString::fromUtf8(render::toString(p.kind).data(),
-                                          qsizetype(render::toString(p.kind).size()));
-            o["target"] = QString::fromStdString(p.target);
-            o["reason"] = QString::fromStdString(report.reason(run));
-            o["gpuMs"] = run.gpuMs;
-            o["cpuMs"] = run.cpuMs;
-            passes.append(o);
-        }
-        QJsonArray skipped;
-        for (const render::SkippedEffect& s : report.skipped)
-            skipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
-                                       {"reason", QString::fromStdString(s.reason)}});
-        QJsonArray warnings;
-        for (const std::string& w : report.warnings)
-            warnings.append(QString::fromStdString(w));
-        // What the environment pass drew inside the map: the mirror views of each face, with reasons.
-        auto faceLabel = [&](int face) {
-            return face >= 0
-                       ? QString::fromStdString(drawnEnvmap->faces[static_cast<std::size_t>(face)].label)
-                       : QString("every face");
-        };
-        QJsonValue envmap; // null when the map was not drawn this frame
-        if (drawnEnvmap) {
-            QJsonArray faces, mapPasses, mapSkipped;
-            for (const render::EnvmapFace& f : drawnEnvmap->faces)
-                faces.append(QString::fromStdString(f.label));
-            for (const render::PlannedPass& p : drawnEnvmap->passes) {
-                const render::MirrorView& view = drawnEnvmap->views[static_cast<std::size_t>(p.view)];
-                mapPasses.append(
-                    QJsonObject{{"kind", QString::fromUtf8(render::toString(p.kind).data(),
-                                                           qsizetype(render::toString(p.kind).size()))},
-                                {"target", QString::fromStdString(p.target)},
-                                {"reason", QString::fromStdString(p.reason)},
-                                {"face", faceLabel(view.face)},
-                                {"depth", view.depth}});
-            }
-            for (const render::SkippedEffect& s : drawnEnvmap->skipped)
-                mapSkipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
-                                              {"reason", QString::fromStdString(s.reason)},
-                                              {"face", faceLabel(s.face)}});
-            envmap = QJsonObject{{"target", QString::fromStdString(drawnEnvmap->target)},
-                                 {"faces", faces},
-                                 {"passes", mapPasses},
-                                 {"skipped", mapSkipped}};
-        }
-        QJsonObject root{{"passes", passes},
-                         {"envmapMirrors", envmap},
-                         {"skipped", skipped},
-                         {"warnings", warnings},
-                         {"size", QString::fromStdString(sizeText(options.width, options.height))},
-                         {"time", options.time},
-                         {"frame", options.frame},
-                         {"tiles", still->tiles},
-                         {"frameGpuMs", report.gpuMs},
-                         {"frameCpuMs", report.cpuMs},
-                         {"renderer", QString::fromStdString(frame->glDescription)}};
-        std::cout << QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString();
-        return 0;
-    }
-    std::printf("Frame %s at t = %g s on %s\n\n", sizeText(options.width, options.height).c_str(),
-                options.time, frame->glDescription.c_str());
-    if (still->tiles > 1)
-        std::printf("Larger than this GPU renders in one piece: the passes of the first of %d tiles.\n\n",
-                    still->tiles);
-    std::printf("Passes (in order):\n");
-    for (const render::PassRun& run : report.ran) {
-        const render::PlannedPass& p = report.planned(run);
-        const std::string kind(render::toString(p.kind));
-        std::printf("  %-11s %-14s gpu %7.2f ms  cpu %7.2f ms  %s\n", kind.c_str(),
-                    p.target.empty() ? "-" : base::printable(p.target).c_str(), run.gpuMs, run.cpuMs,
-                    oneLine(report.reason(run)).c_str());
-    }
-    if (drawnEnvmap && (!drawnEnvmap->passes.empty() || !drawnEnvmap->skipped.empty())) {
-        std::printf("\nInside the environment map of %s (drawn by its envmap pass):\n",
-                    base::printable(drawnEnvmap->target).c_str());
-        for (const render::PlannedPass& p : drawnEnvmap->passes) {
-            const std::string kind(render::toString(p.kind));
-            std::printf("  %-11s %-14s %s\n", kind.c_str(), base::printable(p.target).c_str(),
-                        oneLine(p.reason).c_str());
-        }
-        for (const render::SkippedEffect& s : drawnEnvmap->skipped)
-            std::printf("  %-11s %-14s %s\n", "skipped", base::printable(s.target).c_str(),
-                        oneLine(s.reason).c_str());
-    }
-    std::printf("\nSkipped:\n");
-    if (report.skipped.empty())
-        std::printf("  (nothing)\n");
-    for (const render::SkippedEffect& s : report.skipped)
-        std::printf("  %-14s %s\n", s.target.empty() ? "-" : base::printable(s.target).c_str(),
-                    oneLine(s.reason).c_str());
-    // What the frame could not do as the scene asks (a map larger than the GPU holds, a missing texture).
-    if (!report.warnings.empty()) {
-        std::printf("\nWarnings:\n");
-        for (const std::string& w : report.warnings)
-            std::printf("  %s\n", oneLine(w).c_str());
-    }
-    std::printf("\nTotal: gpu %.2f ms, cpu %.2f ms\n", report.gpuMs, report.cpuMs);
+    if (options.json)
+        printExplanationJson(options, *frame, *still, drawnEnvmap);
+    else
+        printExplanationText(options, *frame, *still, drawnEnvmap);
     return 0;
 }
 
