@@ -68,14 +68,17 @@ std::vector<double> niceTicks(double lo, double hi, int count) {
     return ticks;
 }
 
-base::Status writePlot(const std::string& path, const PlotSpec& spec, int width, int height) {
-    assert(QGuiApplication::instance() && "writePlot(): needs a QGuiApplication for fonts");
-    QImage image(width, height, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
-    QPainter p(&image);
-    p.setRenderHint(QPainter::Antialiasing);
-    p.setRenderHint(QPainter::TextAntialiasing);
+namespace {
 
+constexpr int kLegendWidth = 250;
+
+struct PlotFonts {
+    QFont title;
+    QFont text;
+    QFont small;
+};
+
+PlotFonts plotFonts() {
     QFont titleFont("DejaVu Sans");
     titleFont.setPixelSize(22);
     titleFont.setBold(true);
@@ -83,10 +86,24 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
     textFont.setPixelSize(14);
     QFont smallFont("DejaVu Sans");
     smallFont.setPixelSize(12);
+    return {titleFont, textFont, smallFont};
+}
 
-    const int legendWidth = 250;
-    const QRect area(100, 90, width - 100 - legendWidth - 30, height - 90 - 90);
+// The plot's frame in the image and the data ranges it shows, and how a data point maps into it.
+struct PlotArea {
+    QRect rect;
+    Range x;
+    Range y;
 
+    QPointF toScreen(double px, double py) const {
+        return QPointF(rect.left() + (px - x.lo) / (x.hi - x.lo) * rect.width(),
+                       rect.bottom() - (py - y.lo) / (y.hi - y.lo) * rect.height());
+    }
+};
+
+// Room on the left and below for the ticks and axis titles, on the right for the legend; the ranges hold
+// every point with a margin.
+PlotArea plotArea(const PlotSpec& spec, int width, int height) {
     double xMin = 1e300, xMax = -1e300, yMin = 1e300, yMax = -1e300;
     for (const PlotPoint& pt : spec.points) {
         xMin = std::min(xMin, pt.x);
@@ -96,34 +113,37 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
     }
     if (spec.points.empty())
         xMin = xMax = yMin = yMax = 0.0;
+    PlotArea area;
+    area.rect = QRect(100, 90, width - 100 - kLegendWidth - 30, height - 90 - 90);
     // Time starts at zero when that costs little room, so bar-like ratios read true.
-    Range xr = paddedRange(xMin, xMax, 0.12); // labels sit beside points
+    area.x = paddedRange(xMin, xMax, 0.12); // labels sit beside points
     if (xMin >= 0.0 && xMin < 0.5 * xMax)
-        xr.lo = 0.0;
-    const Range yr = paddedRange(yMin, yMax, 0.08);
-    auto toScreen = [&](double x, double y) {
-        return QPointF(area.left() + (x - xr.lo) / (xr.hi - xr.lo) * area.width(),
-                       area.bottom() - (y - yr.lo) / (yr.hi - yr.lo) * area.height());
-    };
+        area.x.lo = 0.0;
+    area.y = paddedRange(yMin, yMax, 0.08);
+    return area;
+}
 
-    // Title and subtitle.
+void drawTitles(QPainter& p, const PlotSpec& spec, const PlotFonts& fonts, int width) {
     p.setPen(Qt::black);
-    p.setFont(titleFont);
+    p.setFont(fonts.title);
     p.drawText(QRect(0, 12, width, 30), Qt::AlignHCenter | Qt::AlignVCenter,
                QString::fromStdString(spec.title));
-    p.setFont(textFont);
+    p.setFont(fonts.text);
     p.setPen(QColor(80, 80, 80));
     p.drawText(QRect(0, 44, width, 24), Qt::AlignHCenter | Qt::AlignVCenter,
                QString::fromStdString(spec.subtitle));
+}
 
-    // Grid, ticks and tick labels.
-    p.setFont(smallFont);
-    const std::vector<double> xTicks = niceTicks(xr.lo, xr.hi, 8);
-    const std::vector<double> yTicks = niceTicks(yr.lo, yr.hi, 8);
+// Grid lines at the ticks, the tick labels, and the frame around the area.
+void drawGrid(QPainter& p, const PlotArea& plot, const PlotFonts& fonts) {
+    const QRect& area = plot.rect;
+    p.setFont(fonts.small);
+    const std::vector<double> xTicks = niceTicks(plot.x.lo, plot.x.hi, 8);
+    const std::vector<double> yTicks = niceTicks(plot.y.lo, plot.y.hi, 8);
     const double xStep = xTicks.size() > 1 ? xTicks[1] - xTicks[0] : 1.0;
     const double yStep = yTicks.size() > 1 ? yTicks[1] - yTicks[0] : 1.0;
     for (double x : xTicks) {
-        const double sx = toScreen(x, yr.lo).x();
+        const double sx = plot.toScreen(x, plot.y.lo).x();
         p.setPen(QPen(QColor(225, 225, 225), 1));
         p.drawLine(QPointF(sx, area.top()), QPointF(sx, area.bottom()));
         p.setPen(QColor(60, 60, 60));
@@ -131,7 +151,7 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
                    tickText(x, xStep));
     }
     for (double y : yTicks) {
-        const double sy = toScreen(xr.lo, y).y();
+        const double sy = plot.toScreen(plot.x.lo, y).y();
         p.setPen(QPen(QColor(225, 225, 225), 1));
         p.drawLine(QPointF(area.left(), sy), QPointF(area.right(), sy));
         p.setPen(QColor(60, 60, 60));
@@ -141,9 +161,10 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
     p.setPen(QPen(QColor(40, 40, 40), 1.5));
     p.setBrush(Qt::NoBrush);
     p.drawRect(area);
+}
 
-    // Axis titles.
-    p.setFont(textFont);
+void drawAxisTitles(QPainter& p, const PlotSpec& spec, const QRect& area, const PlotFonts& fonts) {
+    p.setFont(fonts.text);
     p.setPen(Qt::black);
     p.drawText(QRect(area.left(), area.bottom() + 34, area.width(), 24), Qt::AlignHCenter | Qt::AlignVCenter,
                QString::fromStdString(spec.xLabel));
@@ -153,35 +174,37 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
     p.drawText(QRect(-area.height() / 2, -12, area.height(), 24), Qt::AlignHCenter | Qt::AlignVCenter,
                QString::fromStdString(spec.yLabel));
     p.restore();
+}
 
-    p.setClipRect(area.adjusted(-8, -8, 8, 8));
-    std::vector<QRectF> taken; // marker, label and staircase boxes already drawn, for placing labels
-    // The Pareto front as a staircase: from each front point right to the next one's cost, then up to its
-    // PSNR. Everything above and left of it is out of reach with these settings.
-    if (!spec.front.empty()) {
-        QPainterPath stairs;
-        const PlotPoint& first = spec.points[spec.front.front()];
-        stairs.moveTo(toScreen(first.x, yr.lo));
-        stairs.lineTo(toScreen(first.x, first.y));
-        for (std::size_t k = 1; k < spec.front.size(); ++k) {
-            const PlotPoint& a = spec.points[spec.front[k - 1]];
-            const PlotPoint& b = spec.points[spec.front[k]];
-            stairs.lineTo(toScreen(b.x, a.y));
-            stairs.lineTo(toScreen(b.x, b.y));
-        }
-        const PlotPoint& last = spec.points[spec.front.back()];
-        stairs.lineTo(toScreen(xr.hi, last.y));
-        p.setPen(QPen(QColor(30, 30, 30, 170), 2.0, Qt::DashLine));
-        p.setBrush(Qt::NoBrush);
-        p.drawPath(stairs);
-        // Its straight pieces, as thin boxes labels keep clear of.
-        for (int e = 1; e < stairs.elementCount(); ++e) {
-            const QPointF a = stairs.elementAt(e - 1), b = stairs.elementAt(e);
-            taken.push_back(QRectF(a, b).normalized().adjusted(-2, -2, 2, 2));
-        }
+// The Pareto front as a staircase: from each front point right to the next one's cost, then up to its
+// PSNR. Everything above and left of it is out of reach with these settings. Its straight pieces go into
+// `taken`, as thin boxes labels keep clear of.
+void drawFront(QPainter& p, const PlotSpec& spec, const PlotArea& plot, std::vector<QRectF>& taken) {
+    if (spec.front.empty())
+        return;
+    QPainterPath stairs;
+    const PlotPoint& first = spec.points[spec.front.front()];
+    stairs.moveTo(plot.toScreen(first.x, plot.y.lo));
+    stairs.lineTo(plot.toScreen(first.x, first.y));
+    for (std::size_t k = 1; k < spec.front.size(); ++k) {
+        const PlotPoint& a = spec.points[spec.front[k - 1]];
+        const PlotPoint& b = spec.points[spec.front[k]];
+        stairs.lineTo(plot.toScreen(b.x, a.y));
+        stairs.lineTo(plot.toScreen(b.x, b.y));
     }
+    const PlotPoint& last = spec.points[spec.front.back()];
+    stairs.lineTo(plot.toScreen(plot.x.hi, last.y));
+    p.setPen(QPen(QColor(30, 30, 30, 170), 2.0, Qt::DashLine));
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(stairs);
+    for (int e = 1; e < stairs.elementCount(); ++e) {
+        const QPointF a = stairs.elementAt(e - 1), b = stairs.elementAt(e);
+        taken.push_back(QRectF(a, b).normalized().adjusted(-2, -2, 2, 2));
+    }
+}
 
-    // Series lines, in the order the points were given.
+// Series lines, in the order the points were given.
+void drawSeriesLines(QPainter& p, const PlotSpec& spec, const PlotArea& plot) {
     for (std::size_t s = 0; s < spec.series.size(); ++s) {
         QPainterPath line;
         bool started = false;
@@ -189,9 +212,9 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
             if (pt.series != static_cast<int>(s))
                 continue;
             if (started)
-                line.lineTo(toScreen(pt.x, pt.y));
+                line.lineTo(plot.toScreen(pt.x, pt.y));
             else
-                line.moveTo(toScreen(pt.x, pt.y));
+                line.moveTo(plot.toScreen(pt.x, pt.y));
             started = true;
         }
         QColor c = seriesColour(static_cast<int>(s));
@@ -199,22 +222,28 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
         p.setPen(QPen(c, 1.5));
         p.drawPath(line);
     }
+}
 
-    // Markers: front points get a black ring, the scene's own setting is a diamond.
+// A diamond of "radius" r around c, with the painter's pen and brush: the scene's own setting.
+void drawDiamond(QPainter& p, QPointF c, double r) {
+    const QPointF diamond[] = {c + QPointF(0, -r), c + QPointF(r, 0), c + QPointF(0, r), c + QPointF(-r, 0)};
+    p.drawPolygon(diamond, 4);
+}
+
+// Markers: front points get a black ring, the scene's own setting is a diamond. Each marker's box goes
+// into `taken`.
+void drawMarkers(QPainter& p, const PlotSpec& spec, const PlotArea& plot, std::vector<QRectF>& taken) {
     std::vector<bool> onFront(spec.points.size(), false);
     for (std::size_t i : spec.front)
         onFront[i] = true;
     for (std::size_t i = 0; i < spec.points.size(); ++i) {
         const PlotPoint& pt = spec.points[i];
-        const QPointF c = toScreen(pt.x, pt.y);
+        const QPointF c = plot.toScreen(pt.x, pt.y);
         p.setPen(QPen(Qt::white, 1.0));
         p.setBrush(seriesColour(pt.series));
         if (pt.sceneSetting) {
-            const double r = 9.0;
-            const QPointF diamond[] = {c + QPointF(0, -r), c + QPointF(r, 0), c + QPointF(0, r),
-                                       c + QPointF(-r, 0)};
             p.setPen(QPen(Qt::black, 1.5));
-            p.drawPolygon(diamond, 4);
+            drawDiamond(p, c, 9.0);
         } else {
             p.drawEllipse(c, 5.5, 5.5);
         }
@@ -225,14 +254,17 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
         }
         taken.push_back(QRectF(c.x() - 10, c.y() - 10, 20, 20));
     }
+}
 
-    // Labels: the first of eight places around the point that overlaps nothing drawn yet.
-    p.setFont(smallFont);
-    const QFontMetricsF metrics(smallFont);
-    for (std::size_t i = 0; i < spec.points.size(); ++i) {
-        const PlotPoint& pt = spec.points[i];
+// Labels: the first of eight places around the point that overlaps nothing drawn yet (`taken`), inside
+// the area; the first place when none is free.
+void drawLabels(QPainter& p, const PlotSpec& spec, const PlotArea& plot, const PlotFonts& fonts,
+                std::vector<QRectF>& taken) {
+    p.setFont(fonts.small);
+    const QFontMetricsF metrics(fonts.small);
+    for (const PlotPoint& pt : spec.points) {
         const QString text = QString::fromStdString(pt.label);
-        const QPointF c = toScreen(pt.x, pt.y);
+        const QPointF c = plot.toScreen(pt.x, pt.y);
         const double w = metrics.horizontalAdvance(text) + 4, h = metrics.height();
         // Past the front's ring (radius 10), so a label never sits on it.
         const QPointF offsets[] = {{14, -h / 2},  {-14 - w, -h / 2},  {-w / 2, -13 - h}, {-w / 2, 13},
@@ -240,7 +272,7 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
         QRectF chosen(c + offsets[0], QSizeF(w, h));
         for (const QPointF& o : offsets) {
             const QRectF box(c + o, QSizeF(w, h));
-            const bool inside = QRectF(area).contains(box);
+            const bool inside = QRectF(plot.rect).contains(box);
             const bool clear =
                 std::none_of(taken.begin(), taken.end(), [&](const QRectF& t) { return t.intersects(box); });
             if (inside && clear) {
@@ -252,16 +284,17 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
         p.setPen(seriesColour(pt.series).darker(140));
         p.drawText(chosen, Qt::AlignLeft | Qt::AlignVCenter, text);
     }
-    p.setClipping(false);
+}
 
-    // Legend.
+// Right of the area: a row per series, then the front's line, its ring and the scene's diamond.
+void drawLegend(QPainter& p, const PlotSpec& spec, const QRect& area, const PlotFonts& fonts) {
     const int lx = area.right() + 24;
     int ly = area.top();
-    p.setFont(textFont);
+    p.setFont(fonts.text);
     p.setPen(Qt::black);
     auto legendRow = [&](const QString& text) {
         p.setPen(Qt::black);
-        p.drawText(QRect(lx + 30, ly - 10, legendWidth - 30, 20), Qt::AlignLeft | Qt::AlignVCenter, text);
+        p.drawText(QRect(lx + 30, ly - 10, kLegendWidth - 30, 20), Qt::AlignLeft | Qt::AlignVCenter, text);
         ly += 26;
     };
     for (std::size_t s = 0; s < spec.series.size(); ++s) {
@@ -278,15 +311,36 @@ base::Status writePlot(const std::string& path, const PlotSpec& spec, int width,
     p.setBrush(Qt::NoBrush);
     p.drawEllipse(QPointF(lx + 12, ly), 10.0, 10.0);
     legendRow("on the front");
-    {
-        const QPointF c(lx + 12, ly);
-        const QPointF diamond[] = {c + QPointF(0, -9), c + QPointF(9, 0), c + QPointF(0, 9),
-                                   c + QPointF(-9, 0)};
-        p.setPen(QPen(Qt::black, 1.5));
-        p.setBrush(QColor(200, 200, 200));
-        p.drawPolygon(diamond, 4);
-    }
+    p.setPen(QPen(Qt::black, 1.5));
+    p.setBrush(QColor(200, 200, 200));
+    drawDiamond(p, QPointF(lx + 12, ly), 9.0);
     legendRow("the scene's own setting");
+}
+
+} // namespace
+
+base::Status writePlot(const std::string& path, const PlotSpec& spec, int width, int height) {
+    assert(QGuiApplication::instance() && "writePlot(): needs a QGuiApplication for fonts");
+    QImage image(width, height, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setRenderHint(QPainter::TextAntialiasing);
+    const PlotFonts fonts = plotFonts();
+    const PlotArea plot = plotArea(spec, width, height);
+
+    // Each step leaves the painter's pen and brush to the next, which sets what it needs.
+    drawTitles(p, spec, fonts, width);
+    drawGrid(p, plot, fonts);
+    drawAxisTitles(p, spec, plot.rect, fonts);
+    p.setClipRect(plot.rect.adjusted(-8, -8, 8, 8));
+    std::vector<QRectF> taken; // marker, label and staircase boxes already drawn, for placing labels
+    drawFront(p, spec, plot, taken);
+    drawSeriesLines(p, spec, plot);
+    drawMarkers(p, spec, plot, taken);
+    drawLabels(p, spec, plot, fonts, taken);
+    p.setClipping(false);
+    drawLegend(p, spec, plot.rect, fonts);
     p.end();
 
     // Encoded in memory, then staged and checked like every other file (base::AtomicFile): QSaveFile

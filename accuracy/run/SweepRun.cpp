@@ -60,13 +60,39 @@ public:
             !warm)
             return base::Error{warm.error()};
 
-        // Images, memory and errors, one configuration at a time. Configurations with the same settings
-        // (the scene's own recur in every family) are rendered once and timed once.
+        DistinctFrames frames;
+        if (base::Status measured = measureConfigurations(configs, *references, timing, out.records, frames);
+            !measured)
+            return base::Error{measured.error()};
+        if (base::Status timed = timeRounds(timing, frames, out.records); !timed)
+            return base::Error{timed.error()};
+        return out;
+    }
+
+private:
+    void progress(const std::string& line) const {
+        if (m_observer.progress)
+            m_observer.progress(line);
+    }
+    bool stopped() const { return m_observer.stop && m_observer.stop(); }
+
+    // Configurations with the same settings (the scene's own recur in every family) are rendered once and
+    // timed once: the frame of each distinct setting, and which one each record is.
+    struct DistinctFrames {
         std::vector<std::string> keys;                      // per record
         std::map<std::string, render::FrameInput> distinct; // the frame of each distinct setting
+    };
+
+    // Images, memory and errors, one configuration at a time: a record per configuration, with the times
+    // of its one frame (timeRounds replaces them).
+    base::Status measureConfigurations(const std::vector<Configuration>& configs,
+                                       const std::map<ReferenceKind, Reference>& references,
+                                       const SweepTiming& timing, std::vector<Record>& records,
+                                       DistinctFrames& frames) {
+        // The images are compared and handed on as they come: they are freed before the timing rounds.
         std::map<std::string, FrameCost> costs;
-        const std::string sceneKey =
-            key(effectiveSettings(m_input.scene, m_input.teapotTessellation, m_traits.simplifiableMeshes > 0));
+        const std::string sceneKey = key(
+            effectiveSettings(m_input.scene, m_input.teapotTessellation, m_traits.simplifiableMeshes > 0));
         for (std::size_t i = 0; i < configs.size(); ++i) {
             if (stopped())
                 return base::Error{kSweepStopped};
@@ -77,9 +103,10 @@ public:
                 applyVariation(m_input.scene, config.variation, m_traits.proxy, m_input.tessellate);
             Record record;
             record.config = config;
-            record.settings = effectiveSettings(
-                applied, config.variation.tessellation ? config.variation.tessellation : m_input.teapotTessellation,
-                m_traits.simplifiableMeshes > 0);
+            record.settings = effectiveSettings(applied,
+                                                config.variation.tessellation ? config.variation.tessellation
+                                                                              : m_input.teapotTessellation,
+                                                m_traits.simplifiableMeshes > 0);
             const std::string k = key(record.settings);
             record.sceneSetting = k == sceneKey;
             if (!costs.count(k)) {
@@ -91,60 +118,63 @@ public:
                                            ? cost.error()
                                            : displayName(config) + ": " + cost.error()};
                 costs.emplace(k, std::move(*cost));
-                distinct.emplace(k, std::move(applied));
+                frames.distinct.emplace(k, std::move(applied));
             }
             const FrameCost& cost = costs.at(k);
-            auto errors = compareWithReference(cost.image, references->at(config.reference));
+            auto errors = compareWithReference(cost.image, references.at(config.reference));
             if (!errors)
                 return base::Error{displayName(config) + ": " + errors.error()};
-            record.gpuMs = cost.gpuMs;
-            record.cpuMs = cost.cpuMs;
-            record.memory = cost.memory;
-            record.rmse = errors->overall.rmse;
-            record.psnr = errors->overall.psnr;
-            if (errors->mirrors)
-                record.psnrMirrors = errors->mirrors->psnr;
-            if (errors->reflector)
-                record.psnrReflector = errors->reflector->psnr;
-            record.errorMap = "errors/" + config.id + ".png";
+            setFigures(record, cost, *errors);
             if (m_observer.measured)
                 if (base::Status s = m_observer.measured(i, configs.size(), record, cost, *errors); !s)
                     return base::Error{s.error()};
             progress(summaryLine(step, record));
-            out.records.push_back(std::move(record));
-            keys.push_back(k);
+            records.push_back(std::move(record));
+            frames.keys.push_back(k);
         }
-        costs.clear(); // the images are compared and handed on: free them before the timing rounds
+        return base::Done{};
+    }
 
+    // The record's figures from its frame and its comparison with the reference.
+    static void setFigures(Record& record, const FrameCost& cost, const ErrorFigures& errors) {
+        record.gpuMs = cost.gpuMs;
+        record.cpuMs = cost.cpuMs;
+        record.memory = cost.memory;
+        record.rmse = errors.overall.rmse;
+        record.psnr = errors.overall.psnr;
+        if (errors.mirrors)
+            record.psnrMirrors = errors.mirrors->psnr;
+        if (errors.reflector)
+            record.psnrReflector = errors.reflector->psnr;
+        record.errorMap = "errors/" + record.config.id + ".png";
+    }
+
+    // Each round times every distinct configuration once; after each, every record's times are the
+    // medians of the rounds so far (a GPU time only when every round measured one).
+    base::Status timeRounds(const SweepTiming& timing, const DistinctFrames& frames,
+                            std::vector<Record>& records) {
         std::map<std::string, std::vector<double>> gpu, cpu;
         for (int round = 1; round <= timing.rounds; ++round) {
             progress("timing round " + std::to_string(round) + "/" + std::to_string(timing.rounds) + ": " +
-                     std::to_string(distinct.size()) + " distinct configurations");
-            for (const auto& [k, frame] : distinct) {
+                     std::to_string(frames.distinct.size()) + " distinct configurations");
+            for (const auto& [k, frame] : frames.distinct) {
                 auto cost = measureFrames(m_renderer, frame, m_width, m_height, 1, 1, m_observer.stop);
                 if (!cost)
                     return base::Error{cost.error()};
                 gpu[k].push_back(cost->gpuMs);
                 cpu[k].push_back(cost->cpuMs);
             }
-            for (std::size_t i = 0; i < out.records.size(); ++i) {
-                const std::vector<double>& g = gpu[keys[i]];
-                out.records[i].gpuMs =
+            for (std::size_t i = 0; i < records.size(); ++i) {
+                const std::vector<double>& g = gpu[frames.keys[i]];
+                records[i].gpuMs =
                     std::all_of(g.begin(), g.end(), [](double ms) { return ms >= 0.0; }) ? median(g) : -1.0;
-                out.records[i].cpuMs = median(cpu[keys[i]]);
+                records[i].cpuMs = median(cpu[frames.keys[i]]);
             }
             if (m_observer.timed)
-                m_observer.timed(round, timing.rounds, out.records);
+                m_observer.timed(round, timing.rounds, records);
         }
-        return out;
+        return base::Done{};
     }
-
-private:
-    void progress(const std::string& line) const {
-        if (m_observer.progress)
-            m_observer.progress(line);
-    }
-    bool stopped() const { return m_observer.stop && m_observer.stop(); }
 
     // Traces each reference the configurations need.
     base::Result<std::map<ReferenceKind, Reference>>
