@@ -11,6 +11,10 @@
 
 class QCheckBox;
 class QComboBox;
+class QFormLayout;
+class QGridLayout;
+class QGroupBox;
+class QHBoxLayout;
 class QProgressBar;
 class QScrollArea;
 class QPushButton;
@@ -116,6 +120,20 @@ signals:
     void message(const QString& text); // for the status bar and the log
 
 private:
+    // Construction, one group of widgets each, called in the order the widgets sit. The sweep's are in
+    // AccuracyPanelSweep.cpp.
+    QGroupBox* buildCompareBox();
+    QHBoxLayout* buildCompareButtons(QGroupBox* compareBox);
+    QFormLayout* buildNumbers(QGroupBox* compareBox);
+    void buildImages(QGroupBox* compareBox);
+    void buildSideBySide();
+    void buildFlipPage();
+    QGroupBox* buildSweepBox();
+    QGridLayout* buildSweepButtons(QGroupBox* sweepBox);
+    void buildScrollArea(QGroupBox* compareBox, QGroupBox* sweepBox);
+    void connectComparison();
+    void connectSweep();
+
     void showResult(const ComparisonResult& result);
     void showFlipImage();
     void comparisonFailed(const QString& text, bool cancelled);
