@@ -421,7 +421,26 @@ void MainWindow::createStatusBar() {
     createImportStatus();
 }
 
+// The docks around the viewport: Scene and Render Passes on the left, Properties and Accuracy on the right,
+// the Log below; each can be shown from the View menu.
 void MainWindow::createDocks() {
+    QDockWidget* treeDock = createSceneDock();
+    QDockWidget* inspectorDock = createInspectorDock();
+    QDockWidget* passesDock = createPassesDock(treeDock);
+    QDockWidget* accuracyDock = createAccuracyDock(inspectorDock);
+    QDockWidget* logDock = createLogDock();
+
+    resizeDocks({treeDock, inspectorDock}, {240, 320}, Qt::Horizontal);
+    resizeDocks({treeDock, passesDock}, {300, 200}, Qt::Vertical);
+
+    m_viewMenu->addSeparator();
+    for (QDockWidget* dock : {treeDock, inspectorDock, passesDock, accuracyDock, logDock}) {
+        m_viewMenu->addAction(dock->toggleViewAction());
+    }
+    logDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+}
+
+QDockWidget* MainWindow::createSceneDock() {
     m_treeModel = new SceneTreeModel(scene(), undoStack(), this);
     m_treePanel = new SceneTreePanel(*m_treeModel, *m_selection, this);
     auto* treeDock = new QDockWidget(tr("Scene"), this);
@@ -433,21 +452,31 @@ void MainWindow::createDocks() {
                                    m_addMenu);
     // Ctrl+A in the tree selects the nodes (the view on its own would select the camera row too).
     m_treePanel->addAction(action(QStringLiteral("actionSelectAll")));
+    return treeDock;
+}
 
+QDockWidget* MainWindow::createInspectorDock() {
     m_inspector = new Inspector(scene(), undoStack(), *m_selection, this);
     auto* inspectorDock = new QDockWidget(tr("Properties"), this);
     inspectorDock->setObjectName(QStringLiteral("inspectorDock"));
     inspectorDock->setWidget(m_inspector);
     addDockWidget(Qt::RightDockWidgetArea, inspectorDock);
+    return inspectorDock;
+}
 
+// Under the Scene dock.
+QDockWidget* MainWindow::createPassesDock(QDockWidget* treeDock) {
     m_passesPanel = new RenderPassesPanel(this);
     auto* passesDock = new QDockWidget(tr("Render Passes"), this);
     passesDock->setObjectName(QStringLiteral("passesDock"));
     passesDock->setWidget(m_passesPanel);
     addDockWidget(Qt::LeftDockWidgetArea, passesDock);
     splitDockWidget(treeDock, passesDock, Qt::Vertical);
+    return passesDock;
+}
 
-    // Hidden at first: it is for the moments a user asks what an approximation costs, not for editing.
+// Hidden at first: it is for the moments a user asks what an approximation costs, not for editing.
+QDockWidget* MainWindow::createAccuracyDock(QDockWidget* inspectorDock) {
     m_accuracyPanel = new AccuracyPanel(scene(), undoStack(), *m_viewport, *m_clock, this);
     auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
     accuracyDock->setObjectName(QStringLiteral("accuracyDock"));
@@ -477,7 +506,10 @@ void MainWindow::createDocks() {
         logMessage(text);
         statusBar()->showMessage(text, 8000);
     });
+    return accuracyDock;
+}
 
+QDockWidget* MainWindow::createLogDock() {
     auto* logDock = new QDockWidget(tr("Log"), this);
     logDock->setObjectName(QStringLiteral("logDock"));
     m_log = new QPlainTextEdit(logDock);
@@ -489,15 +521,7 @@ void MainWindow::createDocks() {
     logDock->setWidget(m_log);
     addDockWidget(Qt::BottomDockWidgetArea, logDock);
     logDock->hide();
-
-    resizeDocks({treeDock, inspectorDock}, {240, 320}, Qt::Horizontal);
-    resizeDocks({treeDock, passesDock}, {300, 200}, Qt::Vertical);
-
-    m_viewMenu->addSeparator();
-    for (QDockWidget* dock : {treeDock, inspectorDock, passesDock, accuracyDock, logDock}) {
-        m_viewMenu->addAction(dock->toggleViewAction());
-    }
-    logDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    return logDock;
 }
 
 } // namespace speculum::ui

@@ -17,6 +17,7 @@
 #include <vector>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QPlainTextEdit;
@@ -178,10 +179,21 @@ private:
                                                              const render::ProgressCallback& progress);
     void logStillExport(const QString& path, const scene::StillExportSettings& settings,
                         base::Result<scene::StillExportResult>& result);
+    // Construction: a builder per menu (MainWindowActions.cpp) and per dock (MainWindow.cpp).
     void createActions();
+    void createFileMenu();
+    void createEditMenu();
     void createAddMenu();
+    void createViewMenu();
+    void createHandleModeActions(QMenu* view);
+    void createHelpMenu();
     void createStatusBar();
     void createDocks();
+    QDockWidget* createSceneDock();
+    QDockWidget* createInspectorDock();
+    QDockWidget* createPassesDock(QDockWidget* treeDock);
+    QDockWidget* createAccuracyDock(QDockWidget* inspectorDock);
+    QDockWidget* createLogDock();
     void rebuildRecentMenu();
     void addRecentFile(const QString& path);
     base::Status addTree(scene::NodeTree tree);

@@ -161,9 +161,9 @@ base::Result<scene::StillExportResult> MainWindow::exportStillFile(const QString
 
 // Renders on the viewport's context, with its renderer: the same renderer code the CLI uses. Anything the
 // progress callback lets run (the event loop) may make another context current: take it back.
-base::Result<scene::StillExportResult> MainWindow::exportRasterStill(const QString& path,
-                                                                     const scene::StillExportSettings& settings,
-                                                                     const render::ProgressCallback& progress) {
+base::Result<scene::StillExportResult>
+MainWindow::exportRasterStill(const QString& path, const scene::StillExportSettings& settings,
+                              const render::ProgressCallback& progress) {
     m_viewport->makeCurrent();
     const render::ProgressCallback keepContext = [&](double fraction, const std::string& stage) {
         const bool goOn = !progress || progress(fraction, stage);
@@ -375,7 +375,16 @@ void MainWindow::showAbout() {
 
 // ---- construction ----
 
+// One builder per menu, in the menu bar's order (Add is built between Edit and View).
 void MainWindow::createActions() {
+    createFileMenu();
+    createEditMenu();
+    createAddMenu();
+    createViewMenu();
+    createHelpMenu();
+}
+
+void MainWindow::createFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     connect(makeAction(file, QStringLiteral("actionNew"), tr("&New"), QKeySequence::New), &QAction::triggered,
             this, &MainWindow::onNew);
@@ -411,7 +420,9 @@ void MainWindow::createActions() {
     QAction* quit = makeAction(file, QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
     quit->setMenuRole(QAction::QuitRole);
     connect(quit, &QAction::triggered, this, &QWidget::close);
+}
 
+void MainWindow::createEditMenu() {
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     // Undo/redo texts follow the command on top of the stack: "Undo Change Reflectivity of “Mirror”".
     QAction* undo = undoStack().createUndoAction(this, tr("&Undo"));
@@ -447,9 +458,9 @@ void MainWindow::createActions() {
         a->setShortcutContext(Qt::WindowShortcut);
     }
     updateEditActions();
+}
 
-    createAddMenu();
-
+void MainWindow::createViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     m_playAction =
         makeAction(view, QStringLiteral("actionPlay"), tr("&Play Animation"), QKeySequence(Qt::Key_Space));
@@ -478,6 +489,23 @@ void MainWindow::createActions() {
             &QAction::triggered, this,
             [this] { document::setCameraFromView(scene(), undoStack(), m_viewport->viewCamera()); });
     view->addSeparator();
+    createHandleModeActions(view);
+    view->addSeparator();
+    m_invertOrbitAction =
+        makeAction(view, QStringLiteral("actionInvertVerticalOrbit"), tr("&Invert Vertical Orbit"));
+    m_invertOrbitAction->setCheckable(true);
+    m_invertOrbitAction->setChecked(invertsVerticalOrbit());
+    m_invertOrbitAction->setStatusTip(
+        tr("Dragging the mouse down lowers the view instead of raising it (the default "
+           "follows Blender and three.js: the scene follows the mouse)"));
+    connect(m_invertOrbitAction, &QAction::toggled, this, &MainWindow::setInvertVerticalOrbit);
+    setInvertVerticalOrbit(invertsVerticalOrbit()); // the viewport starts with the remembered choice
+    m_viewMenu = view;
+}
+
+// View ▸ Select Only / Move / Rotate / Scale Handles (Q, W, E, R): one of them checked, as the viewport's
+// mode.
+void MainWindow::createHandleModeActions(QMenu* view) {
     auto* handles = new QActionGroup(this);
     const std::pair<HandleMode, std::pair<const char*, QString>> modes[] = {
         {HandleMode::Select, {"actionHandleSelect", tr("&Select Only")}},
@@ -496,18 +524,9 @@ void MainWindow::createActions() {
         handles->addAction(a);
         connect(a, &QAction::triggered, m_viewport, [this, mode = mode] { m_viewport->setHandleMode(mode); });
     }
-    view->addSeparator();
-    m_invertOrbitAction =
-        makeAction(view, QStringLiteral("actionInvertVerticalOrbit"), tr("&Invert Vertical Orbit"));
-    m_invertOrbitAction->setCheckable(true);
-    m_invertOrbitAction->setChecked(invertsVerticalOrbit());
-    m_invertOrbitAction->setStatusTip(
-        tr("Dragging the mouse down lowers the view instead of raising it (the default "
-           "follows Blender and three.js: the scene follows the mouse)"));
-    connect(m_invertOrbitAction, &QAction::toggled, this, &MainWindow::setInvertVerticalOrbit);
-    setInvertVerticalOrbit(invertsVerticalOrbit()); // the viewport starts with the remembered choice
-    m_viewMenu = view;
+}
 
+void MainWindow::createHelpMenu() {
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     makeAction(help, QStringLiteral("actionControls"), tr("Viewport &Controls"), QKeySequence::HelpContents);
     connect(action(QStringLiteral("actionControls")), &QAction::triggered, this, &MainWindow::showControls);
