@@ -107,188 +107,248 @@ struct Planner {
         });
     }
 
-    // Plans every mirror seen from `parentView` (-1: the space's own view) and recurses.
-    void planChildren(int parentView) {
+    const Mirror& mirrorAt(int m) const { return input.mirrors[static_cast<std::size_t>(m)]; }
+
+    // What the mirrors seen from one view inherit from it.
+    struct ParentView {
+        int index = -1; // into views; -1: the space's own view
         // A copy, not a pointer: planning the children appends to views, which may reallocate it.
-        const std::optional<MirrorView> parentCopy =
-            parentView >= 0 ? std::optional<MirrorView>(views[static_cast<std::size_t>(parentView)])
-                            : std::nullopt;
-        const MirrorView* parent = parentCopy ? &*parentCopy : nullptr;
-        const int depth = parent ? parent->depth + 1 : 1;
-        const glm::dmat4 parentReflection = parent ? parent->reflection : glm::dmat4(1.0);
-        const glm::dvec3 parentEye = parent ? parent->eye : space.eye;
-        const math::PixelRect bounds =
-            parent ? parent->rect : math::PixelRect{0, 0, space.width, space.height};
-        const glm::dmat4 parentProjection = parent ? parent->projection : space.projection(0);
+        std::optional<MirrorView> view;
+        int depth = 1; // the children's
+        glm::dmat4 reflection{1.0};
+        glm::dvec3 eye{0.0};
+        math::PixelRect bounds;
+        glm::dmat4 projection{1.0};
         // The parent's kept side, in reflected (drawn) world coordinates: only what lies beyond its mirror.
-        glm::dvec4 keepPlane(0.0);
+        glm::dvec4 keepPlane{0.0};
+    };
+
+    ParentView parentOf(int parentView) const {
+        ParentView p;
+        p.index = parentView;
+        if (parentView >= 0)
+            p.view = views[static_cast<std::size_t>(parentView)];
+        const MirrorView* parent = p.view ? &*p.view : nullptr;
+        p.depth = parent ? parent->depth + 1 : 1;
+        p.reflection = parent ? parent->reflection : glm::dmat4(1.0);
+        p.eye = parent ? parent->eye : space.eye;
+        p.bounds = parent ? parent->rect : math::PixelRect{0, 0, space.width, space.height};
+        p.projection = parent ? parent->projection : space.projection(0);
         if (parent) {
-            const auto plane =
-                math::mirrorPlane(input.mirrors[static_cast<std::size_t>(parent->mirror)].world);
-            keepPlane = math::transformPlane(glm::dvec4(plane->normal, plane->d), parentReflection);
+            const auto plane = math::mirrorPlane(mirrorAt(parent->mirror).world);
+            p.keepPlane = math::transformPlane(glm::dvec4(plane->normal, plane->d), p.reflection);
         }
+        return p;
+    }
 
+    // The plane of mirror `m` when the parent's viewer sees its reflective side; otherwise the mirror is
+    // skipped with the reason (a mirror that cannot be drawn at all is reported once, where seen directly).
+    std::optional<math::Plane> facingPlane(const ParentView& parent, int m) {
+        const Mirror& mirror = mirrorAt(m);
+        // A size that is not a positive finite number has no rectangle to draw (NaN would pass every
+        // later test as "outside the view", which is not why).
+        if (!(mirror.size.x > 0.0 && mirror.size.y > 0.0 && std::isfinite(mirror.size.x) &&
+              std::isfinite(mirror.size.y))) {
+            if (!parent.view)
+                skip(parent.index, m, "no reflection: the mirror's size is not a positive finite number");
+            return std::nullopt;
+        }
+        const auto plane = math::mirrorPlane(mirror.world);
+        if (!plane) {
+            if (!parent.view)
+                skip(parent.index, m, "no reflection: " + plane.error());
+            return std::nullopt;
+        }
+        const double side = plane->distance(parent.eye);
+        const double scale = std::max({1.0, glm::length(parent.eye), std::abs(plane->d)});
+        if (std::abs(side) <= 1e-12 * scale) {
+            skip(parent.index, m,
+                 "no reflection: " + space.viewer + " is on the mirror's plane, which it sees edge-on");
+            return std::nullopt;
+        }
+        if (side < 0.0) {
+            skip(parent.index, m,
+                 "no reflection: " + space.viewer + " is behind the mirror (it sees its back)");
+            return std::nullopt;
+        }
+        return *plane;
+    }
+
+    // Where mirror `m` lands in the target, as drawn in the parent's view (its reflection applied); nothing
+    // (the mirror skipped with the reason) when it covers too little of it.
+    std::optional<math::ScreenCoverage> coverageIn(const ParentView& parent, int m) {
+        std::vector<glm::dvec3> corners;
+        for (const glm::dvec3& c : math::mirrorCorners(mirrorAt(m)))
+            corners.push_back(glm::dvec3(parent.reflection * glm::dvec4(c, 1.0)) - space.eye);
+        glm::dvec4 keepRelative = parent.keepPlane;
+        if (parent.view) // the keep plane in relative coordinates
+            keepRelative = math::transformPlane(parent.keepPlane, toRelative);
+        const std::string outside = parent.view ? "no reflection: outside the parent mirror's reflected view"
+                                                : "no reflection: outside the view";
+        math::ScreenCoverage coverage;
+        if (space.warp) {
+            // No projection to measure pixels with: the mirror is kept if any of it lies beyond the
+            // parent's mirror and in front of the component's rim.
+            const bool beyondParent =
+                !parent.view || std::any_of(corners.begin(), corners.end(), [&](const glm::dvec3& c) {
+                    return glm::dot(keepRelative, glm::dvec4(c, 1.0)) > 0.0;
+                });
+            if (!beyondParent || !inWarp(corners)) {
+                skip(parent.index, m, outside);
+                return std::nullopt;
+            }
+            coverage.rect = parent.bounds;
+            return coverage;
+        }
+        coverage = math::screenCoverage(corners, parent.projection * space.rotation, space.width,
+                                        space.height, parent.bounds, parent.view ? &keepRelative : nullptr);
+        if (coverage.rect.empty() || coverage.pixelArea <= 0.0) {
+            skip(parent.index, m, outside);
+            return std::nullopt;
+        }
+        if (coverage.pixelArea < 1.0) {
+            skip(parent.index, m,
+                 "no reflection: covers less than one " + std::string(space.face < 0 ? "pixel" : "texel") +
+                     " (" + pixels(coverage.pixelArea * 100) + "% of one)");
+            return std::nullopt;
+        }
+        return coverage;
+    }
+
+    // False (the mirror skipped with the reason) when the space has no room for another mirror view.
+    bool withinLimits(const ParentView& parent, int m) {
+        if (parent.depth > space.maxDepth) {
+            skip(parent.index, m,
+                 "no reflection: the mirror depth limit (" + std::to_string(space.maxDepth) +
+                     ") is reached; drawn with its own material");
+            return false;
+        }
+        if (spaceViews >= kMaxMirrorViews) {
+            skip(parent.index, m,
+                 "no reflection: " + std::string(space.face < 0 ? "the frame" : "this face") +
+                     " already has " + std::to_string(kMaxMirrorViews) +
+                     " mirror views; drawn with its own material");
+            return false;
+        }
+        return true;
+    }
+
+    // The view of mirror `m` from the parent: its reflection, clip plane and projection, its pixels and
+    // where it is drawn. Nothing (the mirror skipped with the reason) when it cannot be drawn correctly.
+    std::optional<MirrorView> makeView(const ParentView& parent, int m, const math::Plane& plane,
+                                       const math::ScreenCoverage& coverage) {
+        const Mirror& mirror = mirrorAt(m);
+        auto reflection = math::reflectionMatrix(plane);
+        if (!reflection) {
+            skip(parent.index, m, "no reflection: " + reflection.error());
+            return std::nullopt;
+        }
+        MirrorView view;
+        view.mirror = m;
+        view.parent = parent.index;
+        view.depth = parent.depth;
+        view.face = space.face;
+        view.reflection = parent.reflection * *reflection;
+        view.eye = glm::dvec3(glm::inverse(view.reflection) * glm::dvec4(space.eye, 1.0));
+        // Keep only what lies on the mirror's reflective side, a constant world distance off the plane;
+        // in drawn coordinates that is the plane carried through the whole reflection.
+        const glm::dvec4 kept(plane.normal, plane.d - kMirrorClipOffset);
+        const glm::dvec4 drawn = math::transformPlane(kept, view.reflection);
+        view.clipPlane = math::transformPlane(drawn, toRelative);
+        if (!space.warp) {
+            auto oblique = math::obliqueProjection(space.projection(parent.depth),
+                                                   math::transformPlane(drawn, space.rotation * toRelative));
+            if (!oblique) {
+                skip(parent.index, m, "no reflection: " + oblique.error());
+                return std::nullopt;
+            }
+            view.projection = *oblique;
+        }
+        view.rect = coverage.rect;
+        view.pixelArea = coverage.pixelArea;
+        // A rough mirror needs its reflection as an image of its own to filter: the stencil technique
+        // draws it straight into the parent's buffer, so a rough stencil mirror is drawn as a texture
+        // one.
+        view.ownTarget =
+            space.mirrorTextures && (mirror.technique == MirrorTechnique::Texture || mirror.roughness > 0.0);
+        // A texture view starts a fresh stencil space in a render texture of its own, one slot deeper
+        // than the texture its parent draws into; a stencil view nests one level inside its parent's.
+        const int parentLevel = parent.view ? parent.view->stencilLevel : 0;
+        const int parentSlot = parent.view ? parent.view->textureSlot : -1;
+        view.stencilLevel = view.ownTarget ? 0 : parentLevel + 1;
+        view.parentStencilLevel = parentLevel;
+        view.textureSlot = view.ownTarget ? parentSlot + 1 : parentSlot;
+        if (!view.ownTarget && view.stencilLevel > kStencilLevels) {
+            skip(parent.index, m, "no reflection: the stencil buffer cannot nest deeper");
+            return std::nullopt;
+        }
+        return view;
+    }
+
+    // The passes that draw a view's reflection before the views seen in it: its mask, then the scene
+    // reflected in it.
+    void planReflectionPasses(const MirrorView& view, int index) {
+        const Mirror& mirror = mirrorAt(view.mirror);
+        const std::string name = label(input, view.mirror);
+        const std::string context = where(view.parent);
+        const std::string area =
+            space.warp ? std::string() : ", " + pixels(view.pixelArea) + " " + space.unit;
+        if (!view.ownTarget)
+            passes.push_back({PassKind::MirrorMask, name,
+                              "marks the mirror's visible " +
+                                  std::string(space.face < 0 ? "pixels" : "texels") +
+                                  " in the stencil buffer (" + context + area + ")",
+                              -1, index});
+        else
+            passes.push_back(
+                {PassKind::MirrorMask, name,
+                 "counts the mirror's visible pixels, so a hidden mirror costs nothing (" + context + ")", -1,
+                 index});
+        passes.push_back(
+            {PassKind::Mirror, name,
+             std::string("draws the scene reflected in the mirror ") +
+                 (view.ownTarget ? "into its reflection texture" : "inside its stencil mask") +
+                 (view.ownTarget && mirror.technique == MirrorTechnique::Stencil
+                      ? " (rough: the stencil technique leaves no image of the reflection to filter)"
+                      : "") +
+                 (space.warp ? " with a clip plane on the mirror ("
+                             : " with an oblique near plane on the mirror (") +
+                 context + area + ")",
+             -1, index});
+    }
+
+    // The pass that finishes a view, after the views seen in it: the mirror's own surface over it.
+    void planSurfacePass(const MirrorView& view, int index) {
+        const Mirror& mirror = mirrorAt(view.mirror);
+        passes.push_back({PassKind::MirrorSurface, label(input, view.mirror),
+                          std::string("blends the mirror's own surface over the reflection (reflectivity ") +
+                              pixels(mirror.reflectivity * 100) + "%" + space.in + ")" +
+                              glossyApproximation(input.settings, mirror, view.ownTarget),
+                          -1, index});
+    }
+
+    // Plans every mirror seen from `parentView` (-1: the space's own view) and recurses. Each test that
+    // fails skips the mirror with its reason, in this order.
+    void planChildren(int parentView) {
+        const ParentView parent = parentOf(parentView);
         for (int m = 0; m < static_cast<int>(input.mirrors.size()); ++m) {
-            if (parent && parent->mirror == m)
+            if (parent.view && parent.view->mirror == m)
                 continue; // a planar mirror never sees itself
-            const Mirror& mirror = input.mirrors[static_cast<std::size_t>(m)];
-            // A size that is not a positive finite number has no rectangle to draw (NaN would pass every
-            // later test as "outside the view", which is not why).
-            if (!(mirror.size.x > 0.0 && mirror.size.y > 0.0 && std::isfinite(mirror.size.x) &&
-                  std::isfinite(mirror.size.y))) {
-                if (!parent)
-                    skip(parentView, m, "no reflection: the mirror's size is not a positive finite number");
+            const std::optional<math::Plane> plane = facingPlane(parent, m);
+            if (!plane)
                 continue;
-            }
-            const auto plane = math::mirrorPlane(mirror.world);
-            if (!plane) {
-                if (!parent)
-                    skip(parentView, m, "no reflection: " + plane.error());
+            const std::optional<math::ScreenCoverage> coverage = coverageIn(parent, m);
+            if (!coverage || !withinLimits(parent, m))
                 continue;
-            }
-            const double side = plane->distance(parentEye);
-            const double scale = std::max({1.0, glm::length(parentEye), std::abs(plane->d)});
-            if (std::abs(side) <= 1e-12 * scale) {
-                skip(parentView, m,
-                     "no reflection: " + space.viewer + " is on the mirror's plane, which it sees edge-on");
+            const std::optional<MirrorView> view = makeView(parent, m, *plane, *coverage);
+            if (!view)
                 continue;
-            }
-            if (side < 0.0) {
-                skip(parentView, m,
-                     "no reflection: " + space.viewer + " is behind the mirror (it sees its back)");
-                continue;
-            }
-            // Where the mirror lands in the target, as drawn in the parent's view (its reflection applied).
-            std::vector<glm::dvec3> corners;
-            for (const glm::dvec3& c : math::mirrorCorners(mirror))
-                corners.push_back(glm::dvec3(parentReflection * glm::dvec4(c, 1.0)) - space.eye);
-            glm::dvec4 keepRelative = keepPlane;
-            if (parent) // the keep plane in relative coordinates
-                keepRelative = math::transformPlane(keepPlane, toRelative);
-            const std::string outside = parent ? "no reflection: outside the parent mirror's reflected view"
-                                               : "no reflection: outside the view";
-            math::ScreenCoverage coverage;
-            if (space.warp) {
-                // No projection to measure pixels with: the mirror is kept if any of it lies beyond the
-                // parent's mirror and in front of the component's rim.
-                const bool beyondParent =
-                    !parent || std::any_of(corners.begin(), corners.end(), [&](const glm::dvec3& c) {
-                        return glm::dot(keepRelative, glm::dvec4(c, 1.0)) > 0.0;
-                    });
-                if (!beyondParent || !inWarp(corners)) {
-                    skip(parentView, m, outside);
-                    continue;
-                }
-                coverage.rect = bounds;
-            } else {
-                coverage = math::screenCoverage(corners, parentProjection * space.rotation, space.width,
-                                                space.height, bounds, parent ? &keepRelative : nullptr);
-                if (coverage.rect.empty() || coverage.pixelArea <= 0.0) {
-                    skip(parentView, m, outside);
-                    continue;
-                }
-                if (coverage.pixelArea < 1.0) {
-                    skip(parentView, m,
-                         "no reflection: covers less than one " +
-                             std::string(space.face < 0 ? "pixel" : "texel") + " (" +
-                             pixels(coverage.pixelArea * 100) + "% of one)");
-                    continue;
-                }
-            }
-            if (depth > space.maxDepth) {
-                skip(parentView, m,
-                     "no reflection: the mirror depth limit (" + std::to_string(space.maxDepth) +
-                         ") is reached; drawn with its own material");
-                continue;
-            }
-            if (spaceViews >= kMaxMirrorViews) {
-                skip(parentView, m,
-                     "no reflection: " + std::string(space.face < 0 ? "the frame" : "this face") +
-                         " already has " + std::to_string(kMaxMirrorViews) +
-                         " mirror views; drawn with its own material");
-                continue;
-            }
-            auto reflection = math::reflectionMatrix(*plane);
-            if (!reflection) {
-                skip(parentView, m, "no reflection: " + reflection.error());
-                continue;
-            }
-            MirrorView view;
-            view.mirror = m;
-            view.parent = parentView;
-            view.depth = depth;
-            view.face = space.face;
-            view.reflection = parentReflection * *reflection;
-            view.eye = glm::dvec3(glm::inverse(view.reflection) * glm::dvec4(space.eye, 1.0));
-            // Keep only what lies on the mirror's reflective side, a constant world distance off the plane;
-            // in drawn coordinates that is the plane carried through the whole reflection.
-            const glm::dvec4 kept(plane->normal, plane->d - kMirrorClipOffset);
-            const glm::dvec4 drawn = math::transformPlane(kept, view.reflection);
-            view.clipPlane = math::transformPlane(drawn, toRelative);
-            if (!space.warp) {
-                auto oblique = math::obliqueProjection(
-                    space.projection(depth), math::transformPlane(drawn, space.rotation * toRelative));
-                if (!oblique) {
-                    skip(parentView, m, "no reflection: " + oblique.error());
-                    continue;
-                }
-                view.projection = *oblique;
-            }
-            view.rect = coverage.rect;
-            view.pixelArea = coverage.pixelArea;
-            // A rough mirror needs its reflection as an image of its own to filter: the stencil technique
-            // draws it straight into the parent's buffer, so a rough stencil mirror is drawn as a texture
-            // one.
-            view.ownTarget = space.mirrorTextures &&
-                             (mirror.technique == MirrorTechnique::Texture || mirror.roughness > 0.0);
-            // A texture view starts a fresh stencil space in a render texture of its own, one slot deeper
-            // than the texture its parent draws into; a stencil view nests one level inside its parent's.
-            const int parentLevel = parent ? parent->stencilLevel : 0;
-            const int parentSlot = parent ? parent->textureSlot : -1;
-            view.stencilLevel = view.ownTarget ? 0 : parentLevel + 1;
-            view.parentStencilLevel = parentLevel;
-            view.textureSlot = view.ownTarget ? parentSlot + 1 : parentSlot;
-            if (!view.ownTarget && view.stencilLevel > kStencilLevels) {
-                skip(parentView, m, "no reflection: the stencil buffer cannot nest deeper");
-                continue;
-            }
             const int index = static_cast<int>(views.size());
-            views.push_back(view);
+            views.push_back(*view);
             ++spaceViews;
-
-            const std::string name = label(input, m);
-            const std::string context = where(parentView);
-            const std::string area =
-                space.warp ? std::string() : ", " + pixels(view.pixelArea) + " " + space.unit;
-            if (!view.ownTarget)
-                passes.push_back({PassKind::MirrorMask, name,
-                                  "marks the mirror's visible " +
-                                      std::string(space.face < 0 ? "pixels" : "texels") +
-                                      " in the stencil buffer (" + context + area + ")",
-                                  -1, index});
-            else
-                passes.push_back(
-                    {PassKind::MirrorMask, name,
-                     "counts the mirror's visible pixels, so a hidden mirror costs nothing (" + context + ")",
-                     -1, index});
-            passes.push_back(
-                {PassKind::Mirror, name,
-                 std::string("draws the scene reflected in the mirror ") +
-                     (view.ownTarget ? "into its reflection texture" : "inside its stencil mask") +
-                     (view.ownTarget && mirror.technique == MirrorTechnique::Stencil
-                          ? " (rough: the stencil technique leaves no image of the reflection to filter)"
-                          : "") +
-                     (space.warp ? " with a clip plane on the mirror ("
-                                 : " with an oblique near plane on the mirror (") +
-                     context + area + ")",
-                 -1, index});
+            planReflectionPasses(*view, index);
             planChildren(index);
-            passes.push_back(
-                {PassKind::MirrorSurface, name,
-                 std::string("blends the mirror's own surface over the reflection (reflectivity ") +
-                     pixels(mirror.reflectivity * 100) + "%" + space.in + ")" +
-                     glossyApproximation(input.settings, mirror, view.ownTarget),
-                 -1, index});
+            planSurfacePass(*view, index);
         }
     }
 };
