@@ -212,15 +212,35 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
     return hashShadow(input, lightIndex, frustum ? &*frustum : nullptr);
 }
 
-FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport) {
-    FramePlan plan;
+namespace {
+
+// What a shadow map draws: the items that cast shadows, and the reflector.
+std::size_t countShadowCasters(const FrameInput& input) {
     std::size_t casters = 0;
     for (const DrawItem& item : input.items)
         if (item.castsShadows && item.mesh)
             ++casters;
     if (input.reflector && input.reflector->mesh)
         ++casters;
+    return casters;
+}
 
+// Why a light's shadow pass runs: its map, its casters, and whether a map was drawn for it before.
+std::string shadowPassReason(const Light& light, std::size_t casters, const math::ShadowFrustum& frustum,
+                             bool firstMap) {
+    std::string reason = "light casts shadows (" + std::to_string(light.shadows->mapSize) + "² map, PCF " +
+                         std::to_string(light.shadows->pcf) + "×" + std::to_string(light.shadows->pcf) +
+                         ") from " + plural(casters, "caster", "casters");
+    if (frustum.cube)
+        reason += "; " + std::to_string(std::popcount(frustum.faceMask)) + " of 6 cube faces hold casters";
+    reason += firstMap ? "; no map yet" : "; light or casters changed";
+    return reason;
+}
+
+// The shadow maps of the lights that cast shadows (at most kMaxShadowedLights), each redrawn only when its
+// signature changed; every light without one is skipped with the reason.
+void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& plan) {
+    const std::size_t casters = countShadowCasters(input);
     int shadowSlots = 0;
     const int lightCount = static_cast<int>(input.lights.size());
     for (int i = 0; i < lightCount; ++i) {
@@ -265,28 +285,17 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
                 {name, "shadow map reused: light and casters unchanged since the last frame"});
             continue;
         }
-        std::string reason = "light casts shadows (" + std::to_string(light.shadows->mapSize) + "² map, PCF " +
-                             std::to_string(light.shadows->pcf) + "×" + std::to_string(light.shadows->pcf) +
-                             ") from " + plural(casters, "caster", "casters");
-        if (frustum->cube)
-            reason +=
-                "; " + std::to_string(std::popcount(frustum->faceMask)) + " of 6 cube faces hold casters";
-        reason += previous == state.shadowSignatures.end() ? "; no map yet" : "; light or casters changed";
         PlannedPass pass;
         pass.kind = PassKind::Shadow;
         pass.target = name;
-        pass.reason = std::move(reason);
+        pass.reason = shadowPassReason(light, casters, *frustum, previous == state.shadowSignatures.end());
         pass.lightIndex = i;
         pass.signature = signature;
         plan.passes.push_back(std::move(pass));
     }
+}
 
-    // Mirror views are planned first (their passes run after the main pass): the environment pass, which
-    // runs before the main pass, is needed only if the reflector is seen directly or in one of them.
-    FramePlan mirrors;
-    planMirrors(input, viewport, mirrors);
-    planReflector(input, state, viewport, mirrors, plan);
-
+PlannedPass mainPass(const FrameInput& input) {
     PlannedPass main;
     main.kind = PassKind::Main;
     main.reason =
@@ -294,15 +303,14 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
         plural(input.items.size() + input.mirrors.size() + (input.reflector ? 1 : 0), "object", "objects") +
         " lit by " + plural(std::min<std::size_t>(input.lights.size(), kMaxLights), "light", "lights") +
         " into the camera's colour buffer";
-    plan.passes.push_back(std::move(main));
+    return main;
+}
 
-    // The mirror passes keep their view indices: plan.views is empty until here.
-    plan.views = std::move(mirrors.views);
-    for (PlannedPass& pass : mirrors.passes)
-        plan.passes.push_back(std::move(pass));
-    for (SkippedEffect& skip : mirrors.skipped)
-        plan.skipped.push_back(std::move(skip));
-
+// The camera's colour buffer (8-bit sRGB where no blend needs radiance above 1, pre-weighting the stencil
+// mirrors where that makes it so; half float otherwise), said in the main pass's reason, and the
+// composite pass that brings it to the output unless it is the output's own buffer. Needs the mirror
+// views and the main pass planned.
+void planCameraBuffer(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {
     std::string blend = blendOntoRadiance(input, plan.views);
     if (viewport.eightBitOutput && !blend.empty()) {
         blend = preWeightStencilMirrors(input, plan);
@@ -336,6 +344,30 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     }
     if (!plan.cameraBufferIsOutput)
         plan.passes.push_back(std::move(composite));
+}
+
+} // namespace
+
+FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport) {
+    FramePlan plan;
+    planShadows(input, state, plan);
+
+    // Mirror views are planned first (their passes run after the main pass): the environment pass, which
+    // runs before the main pass, is needed only if the reflector is seen directly or in one of them.
+    FramePlan mirrors;
+    planMirrors(input, viewport, mirrors);
+    planReflector(input, state, viewport, mirrors, plan);
+
+    plan.passes.push_back(mainPass(input));
+
+    // The mirror passes keep their view indices: plan.views is empty until here.
+    plan.views = std::move(mirrors.views);
+    for (PlannedPass& pass : mirrors.passes)
+        plan.passes.push_back(std::move(pass));
+    for (SkippedEffect& skip : mirrors.skipped)
+        plan.skipped.push_back(std::move(skip));
+
+    planCameraBuffer(input, viewport, plan);
     planReflectedDetail(input, plan);
     declareWrites(input, plan);
     return plan;
