@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <functional>
 #include <glm/trigonometric.hpp>
 #include <limits>
 #include <mutex>
@@ -38,6 +39,55 @@ glm::dvec3 storableRadiance(const glm::dvec3& c) {
     return out;
 }
 
+// A result with every buffer allocated (black, ids empty) for a width × height render.
+TraceResult blankResult(int width, int height) {
+    TraceResult result;
+    result.image.width = result.ids.width = width;
+    result.image.height = result.ids.height = height;
+    result.image.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
+    result.noise.width = width;
+    result.noise.height = height;
+    result.noise.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
+    result.ids.ids.assign(static_cast<std::size_t>(width) * height, PixelId{});
+    return result;
+}
+
+// Calls traceRow(y) for every row 0..height-1 on `threads` threads, each taking the next row as it is
+// free, and reports progress from this (the caller's) thread a few times a second. False when progress
+// cancelled it: the rows not yet started are then never traced.
+bool traceRowsInParallel(int height, int threads, const TraceProgress& progress,
+                         const std::function<void(int y)>& traceRow) {
+    std::atomic<int> nextRow{0};
+    std::atomic<int> rowsDone{0};
+    std::atomic<bool> cancelled{false};
+    std::mutex mutex;
+    std::condition_variable finished;
+    auto work = [&] {
+        for (int y = nextRow++; y < height && !cancelled; y = nextRow++) {
+            traceRow(y);
+            if (++rowsDone == height) {
+                std::lock_guard lock(mutex);
+                finished.notify_all();
+            }
+        }
+    };
+    std::vector<std::thread> workers;
+    workers.reserve(static_cast<std::size_t>(threads));
+    for (int t = 0; t < threads; ++t)
+        workers.emplace_back(work);
+    {
+        std::unique_lock lock(mutex);
+        while (rowsDone < height && !cancelled) {
+            finished.wait_for(lock, std::chrono::milliseconds(100));
+            if (progress && rowsDone < height && !progress(double(rowsDone) / height))
+                cancelled = true;
+        }
+    }
+    for (std::thread& t : workers)
+        t.join();
+    return !cancelled;
+}
+
 } // namespace
 
 struct Tracer::Impl {
@@ -51,6 +101,8 @@ struct Tracer::Impl {
     MaterialTextures reflectorTexture;
     int maxMirrorDepth = 0;
     std::vector<std::string> warnings;
+
+    struct PixelTracer;
 
     // Everything one ray needs to know about the path that led to it.
     struct Path {
@@ -186,6 +238,114 @@ struct Tracer::Impl {
     }
 };
 
+// One render's tracing of single pixels: the camera rays through them and the paths along those rays.
+struct Tracer::Impl::PixelTracer {
+    // One sub-sample: its first path, and only if that met a rough surface `paths` paths in all (the
+    // first among them), averaged. The squared standard error of the average is the paths' sample
+    // variance over their number (Welford's running sums, exact enough for nearly equal values); NaN
+    // with a single path, which has no spread to measure.
+    struct SubSample {
+        glm::dvec3 value{0.0};
+        glm::dvec3 error2{0.0};
+        bool glossy = false;
+    };
+    // What one pixel shows: the average of its sub-samples, that average's variance, whether any of
+    // them met a rough surface, and what its centre shows.
+    struct Pixel {
+        glm::dvec3 colour{0.0};
+        glm::dvec3 variance{0.0};
+        bool glossy = false;
+        PixelId id;
+    };
+
+    const Impl& impl;
+    const TraceSettings& settings;
+    const int width, height;
+    const int n;     // sub-samples per pixel along each axis
+    const int paths; // paths per glossy sub-sample
+    const Shader shader;
+    const Camera& camera;
+    // Camera rays in camera-relative world space. Directions have a view-depth component of exactly 1,
+    // so a ray's t is the view depth and [near, far] clips like the projection does.
+    const glm::dmat3 viewToWorld;
+    const double tanHalf;
+    const double aspect;
+    Path primary;
+
+    PixelTracer(const Impl& impl, const TraceSettings& settings)
+        : impl(impl)
+        , settings(settings)
+        , width(settings.width)
+        , height(settings.height)
+        , n(std::clamp(settings.ssaa, kMinSsaa, kMaxSsaa))
+        , paths(std::clamp(settings.samples, kMinTraceSamples, kMaxTraceSamples))
+        , shader(impl.lights, *impl.geometry, impl.textures, impl.input.settings.ambient, settings.shadows)
+        , camera(impl.input.camera)
+        , viewToWorld(glm::transpose(glm::dmat3(math::viewRotation(camera))))
+        , tanHalf(std::tan(glm::radians(camera.fovY) * 0.5))
+        , aspect(double(width) / double(height)) {
+        primary.farLeft = camera.far;
+        primary.mirrorLimit = impl.maxMirrorDepth;
+    }
+
+    glm::dvec3 rayThrough(double px, double py) const {
+        const double ndcX = 2.0 * px / width - 1.0;
+        const double ndcY = 1.0 - 2.0 * py / height;
+        return viewToWorld * glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0);
+    }
+
+    // Path k of sub-sample s is path number k·n² + s: a render with 2N paths repeats one with N, and
+    // adds N more.
+    SubSample traceSubSample(int x, int y, std::uint32_t sub, const glm::dvec3& dir, PixelId* id) const {
+        const auto subSamples = static_cast<std::uint32_t>(n * n);
+        SubSample s;
+        bool rough = false;
+        Path path = primary;
+        path.seed = {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sub};
+        path.rough = &rough;
+        s.value =
+            storableRadiance(impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near, path, id));
+        if (!rough)
+            return s;
+        s.glossy = true;
+        glm::dvec3 mean = s.value, m2(0.0);
+        for (int k = 1; k < paths; ++k) {
+            path.seed.path = std::uint32_t(k) * subSamples + sub;
+            const glm::dvec3 c = storableRadiance(
+                impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near, path, nullptr));
+            const glm::dvec3 delta = c - mean;
+            mean += delta / double(k + 1);
+            m2 += delta * (c - mean);
+        }
+        s.value = mean;
+        s.error2 = paths > 1 ? m2 / (double(paths - 1) * paths) : glm::dvec3(std::nan(""));
+        return s;
+    }
+
+    Pixel tracePixel(int x, int y) const {
+        glm::dvec3 sum(0.0), error2(0.0);
+        Pixel pixel;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                // The ordered grid of renderStill: sample (i, j) at ((i + ½)/N, (j + ½)/N) in the
+                // pixel.
+                const glm::dvec3 dir = rayThrough(x + (i + 0.5) / n, y + (j + 0.5) / n);
+                const SubSample s =
+                    traceSubSample(x, y, std::uint32_t(j * n + i), dir, n == 1 ? &pixel.id : nullptr);
+                sum += s.value;
+                error2 += s.error2;
+                pixel.glossy = pixel.glossy || s.glossy;
+            }
+        if (n > 1) // what the pixel's centre shows
+            impl.radiance(shader, settings, glm::dvec3(0.0), rayThrough(x + 0.5, y + 0.5), camera.near,
+                          primary, &pixel.id);
+        pixel.colour = sum / double(n * n);
+        // The mean of n² independent sub-sample means: its variance is their sum over n⁴.
+        pixel.variance = error2 / double(n * n) / double(n * n);
+        return pixel;
+    }
+};
+
 Tracer::Tracer(std::unique_ptr<Impl> impl)
     : m_impl(std::move(impl)) {}
 Tracer::Tracer(Tracer&&) noexcept = default;
@@ -232,147 +392,42 @@ base::Result<TraceResult> Tracer::render(const TraceSettings& settings, const Tr
     if (base::Status size = checkStillSize(settings.width, settings.height); !size)
         return base::Error{size.error()};
     const Impl& impl = *m_impl;
-    const int width = settings.width, height = settings.height;
-    const int n = std::clamp(settings.ssaa, kMinSsaa, kMaxSsaa);
-    const int paths = std::clamp(settings.samples, kMinTraceSamples, kMaxTraceSamples);
-    const Shader shader(impl.lights, *impl.geometry, impl.textures, impl.input.settings.ambient,
-                        settings.shadows);
+    const Impl::PixelTracer tracer(impl, settings);
+    const int width = tracer.width, height = tracer.height;
 
-    // Camera rays in camera-relative world space. Directions have a view-depth component of exactly 1,
-    // so a ray's t is the view depth and [near, far] clips like the projection does.
-    const Camera& camera = impl.input.camera;
-    const glm::dmat3 viewToWorld = glm::transpose(glm::dmat3(math::viewRotation(camera)));
-    const double tanHalf = std::tan(glm::radians(camera.fovY) * 0.5);
-    const double aspect = double(width) / double(height);
-    auto rayThrough = [&](double px, double py) {
-        const double ndcX = 2.0 * px / width - 1.0;
-        const double ndcY = 1.0 - 2.0 * py / height;
-        return viewToWorld * glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0);
-    };
-    Impl::Path primary;
-    primary.farLeft = camera.far;
-    primary.mirrorLimit = impl.maxMirrorDepth;
-
-    // One sub-sample: its first path, and only if that met a rough surface `paths` paths in all (the
-    // first among them), averaged. The squared standard error of the average is the paths' sample
-    // variance over their number (Welford's running sums, exact enough for nearly equal values); NaN
-    // with a single path, which has no spread to measure.
-    struct SubSample {
-        glm::dvec3 value{0.0};
-        glm::dvec3 error2{0.0};
-        bool glossy = false;
-    };
-    // Path k of sub-sample s is path number k·n² + s: a render with 2N paths repeats one with N, and
-    // adds N more.
-    const auto subSamples = static_cast<std::uint32_t>(n * n);
-    auto traceSubSample = [&](int x, int y, std::uint32_t sub, const glm::dvec3& dir, PixelId* id) {
-        SubSample s;
-        bool rough = false;
-        Impl::Path path = primary;
-        path.seed = {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sub};
-        path.rough = &rough;
-        s.value =
-            storableRadiance(impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near, path, id));
-        if (!rough)
-            return s;
-        s.glossy = true;
-        glm::dvec3 mean = s.value, m2(0.0);
-        for (int k = 1; k < paths; ++k) {
-            path.seed.path = std::uint32_t(k) * subSamples + sub;
-            const glm::dvec3 c = storableRadiance(
-                impl.radiance(shader, settings, glm::dvec3(0.0), dir, camera.near, path, nullptr));
-            const glm::dvec3 delta = c - mean;
-            mean += delta / double(k + 1);
-            m2 += delta * (c - mean);
-        }
-        s.value = mean;
-        s.error2 = paths > 1 ? m2 / (double(paths - 1) * paths) : glm::dvec3(std::nan(""));
-        return s;
-    };
-
-    TraceResult result;
-    result.samples = n * n;
-    result.paths = paths;
+    TraceResult result = blankResult(width, height);
+    result.samples = tracer.n * tracer.n;
+    result.paths = tracer.paths;
     result.warnings = impl.warnings;
-    result.image.width = result.ids.width = width;
-    result.image.height = result.ids.height = height;
-    result.image.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
-    result.noise.width = width;
-    result.noise.height = height;
-    result.noise.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
     // Per row, summed in row order afterwards: the figures do not depend on which thread traced what.
     std::vector<double> rowNoise(static_cast<std::size_t>(height), 0.0);
     std::vector<int> rowGlossy(static_cast<std::size_t>(height), 0);
-    result.ids.ids.assign(static_cast<std::size_t>(width) * height, PixelId{});
+    auto traceRow = [&](int y) {
+        for (int x = 0; x < width; ++x) {
+            const Impl::PixelTracer::Pixel pixel = tracer.tracePixel(x, y);
+            const glm::dvec3& c = pixel.colour;
+            const glm::dvec3& e = pixel.variance;
+            const std::size_t p = static_cast<std::size_t>(y) * width + x;
+            result.image.rgba[p * 4 + 0] = static_cast<float>(c.r);
+            result.image.rgba[p * 4 + 1] = static_cast<float>(c.g);
+            result.image.rgba[p * 4 + 2] = static_cast<float>(c.b);
+            result.image.rgba[p * 4 + 3] = 1.0f;
+            result.ids.ids[p] = pixel.id;
+            for (int k = 0; k < 3; ++k)
+                result.noise.rgba[p * 4 + std::size_t(k)] = static_cast<float>(e[k]);
+            result.noise.rgba[p * 4 + 3] = 1.0f;
+            rowNoise[std::size_t(y)] += e.r + e.g + e.b;
+            rowGlossy[std::size_t(y)] += pixel.glossy ? 1 : 0;
+        }
+    };
 
     // A first call before any work, so a caller can cancel at once.
     if (progress && !progress(0.0))
         return base::Error{"render cancelled"};
-    std::atomic<int> nextRow{0};
-    std::atomic<int> rowsDone{0};
-    std::atomic<bool> cancelled{false};
-    std::mutex mutex;
-    std::condition_variable finished;
-    auto work = [&] {
-        for (int y = nextRow++; y < height && !cancelled; y = nextRow++) {
-            for (int x = 0; x < width; ++x) {
-                glm::dvec3 sum(0.0), error2(0.0);
-                bool glossy = false;
-                PixelId id;
-                for (int j = 0; j < n; ++j)
-                    for (int i = 0; i < n; ++i) {
-                        // The ordered grid of renderStill: sample (i, j) at ((i + ½)/N, (j + ½)/N) in the
-                        // pixel.
-                        const glm::dvec3 dir = rayThrough(x + (i + 0.5) / n, y + (j + 0.5) / n);
-                        const SubSample s =
-                            traceSubSample(x, y, std::uint32_t(j * n + i), dir, n == 1 ? &id : nullptr);
-                        sum += s.value;
-                        error2 += s.error2;
-                        glossy = glossy || s.glossy;
-                    }
-                if (n > 1) // what the pixel's centre shows
-                    impl.radiance(shader, settings, glm::dvec3(0.0), rayThrough(x + 0.5, y + 0.5),
-                                  camera.near, primary, &id);
-                const glm::dvec3 c = sum / double(n * n);
-                const std::size_t p = static_cast<std::size_t>(y) * width + x;
-                result.image.rgba[p * 4 + 0] = static_cast<float>(c.r);
-                result.image.rgba[p * 4 + 1] = static_cast<float>(c.g);
-                result.image.rgba[p * 4 + 2] = static_cast<float>(c.b);
-                result.image.rgba[p * 4 + 3] = 1.0f;
-                result.ids.ids[p] = id;
-                // The mean of n² independent sub-sample means: its variance is their sum over n⁴.
-                const glm::dvec3 e = error2 / double(n * n) / double(n * n);
-                for (int k = 0; k < 3; ++k)
-                    result.noise.rgba[p * 4 + std::size_t(k)] = static_cast<float>(e[k]);
-                result.noise.rgba[p * 4 + 3] = 1.0f;
-                rowNoise[std::size_t(y)] += e.r + e.g + e.b;
-                rowGlossy[std::size_t(y)] += glossy ? 1 : 0;
-            }
-            if (++rowsDone == height) {
-                std::lock_guard lock(mutex);
-                finished.notify_all();
-            }
-        }
-    };
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     const int threads =
         std::clamp(settings.threads > 0 ? settings.threads : int(hardware), 1, std::max(height, 1));
-    std::vector<std::thread> workers;
-    workers.reserve(static_cast<std::size_t>(threads));
-    for (int t = 0; t < threads; ++t)
-        workers.emplace_back(work);
-    // Progress is reported from this (the caller's) thread, a few times a second.
-    {
-        std::unique_lock lock(mutex);
-        while (rowsDone < height && !cancelled) {
-            finished.wait_for(lock, std::chrono::milliseconds(100));
-            if (progress && rowsDone < height && !progress(double(rowsDone) / height))
-                cancelled = true;
-        }
-    }
-    for (std::thread& t : workers)
-        t.join();
-    if (cancelled)
+    if (!traceRowsInParallel(height, threads, progress, traceRow))
         return base::Error{"render cancelled"};
     if (progress)
         progress(1.0);
