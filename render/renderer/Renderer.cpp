@@ -205,6 +205,148 @@ const std::string* hiddenReason(const passes::FrameExecution& frame, int view) {
     return nullptr;
 }
 
+// The frame as it will be drawn (its plan is the report's): the scene as fitted to the GPU where it had
+// to be, the camera's projection, and whether the reflector's map could be allocated.
+struct DrawnFrame {
+    std::optional<FrameInput> fitted; // empty: the scene as requested
+    glm::dmat4 projection{1.0};       // restricted to the tile for a tile
+    bool envmapAllocated = true;
+};
+
+// Planning, into report.plan and report.skipped. Map sizes beyond the GPU's limits would fail to allocate:
+// the frame is planned and drawn with sizes it can hold, and says so.
+DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& target, const RenderTarget& drawn,
+                          const RenderOptions& options, const GpuLimits& limits,
+                          const PlannerState& committed, passes::FrameResources& r, FrameReport& report) {
+    DrawnFrame frame;
+    frame.fitted = fitToGpuLimits(requested, limits, report.warnings);
+    // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
+    // untiled frame would, with the same sub-pixel sample positions.
+    const bool eightBitOutput = target.encodeSrgb && !options.halfFloatCameraBuffer;
+    const bool drawnWhole = !options.tile && drawn.width == target.width && drawn.height == target.height;
+    const PlanViewport viewport{options.tile ? options.tile->imageWidth : drawn.width,
+                                options.tile ? options.tile->imageHeight : drawn.height, options.jitterPixels,
+                                eightBitOutput, eightBitOutput && drawnWhole && target.srgbDepthStencil};
+    const PlannerState freshState;
+    const PlannerState& plannerState = options.reuseMaps ? committed : freshState;
+    FramePlan& plan = report.plan;
+    plan = planFrame(frame.fitted ? *frame.fitted : requested, plannerState, viewport);
+    frame.envmapAllocated =
+        allocateMaps(requested, frame.fitted, plan, plannerState, viewport, r, report.warnings);
+    const FrameInput& input = frame.fitted ? *frame.fitted : requested;
+    frame.projection = cameraProjection(input, viewport);
+    if (options.tile) {
+        const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,
+                                   options.tile->y + target.height};
+        restrictToTile(plan, tile, viewport);
+        frame.projection = math::tileProjection(frame.projection, tile.x0, tile.y0, target.width,
+                                                target.height, viewport.width, viewport.height);
+    }
+    report.skipped = plan.skipped;
+    return frame;
+}
+
+// The camera's colour buffer, at the drawn size. Drawn straight into the output, the frame needs no buffer
+// of its own.
+base::Status ensureCameraBuffer(passes::FrameResources& r, const FramePlan& plan, const RenderTarget& drawn) {
+    if (plan.cameraBufferIsOutput)
+        return base::Status{base::Done{}};
+    const bool srgbBuffer = plan.cameraBuffer == CameraBuffer::Srgb8;
+    return r.linear.ensure(drawn.width, drawn.height, srgbBuffer ? GL_SRGB8_ALPHA8 : GL_RGBA16F, false);
+}
+
+// What the main pass of every view draws with: the renderer's programs, caches and maps.
+passes::MainPassContext mainPassContext(passes::FrameResources& r, const FramePlan& plan,
+                                        const RenderOptions& options) {
+    passes::MainPassContext context{
+        r.meshProgram,          r.meshes,   r.textures, r.shadows, plan.shadows, r.dummyShadow2D.id(),
+        r.dummyShadowCube.id(), r.unitPlane};
+    context.depthOnlyProgram = &r.flatProgram;
+    context.coarseItems = plan.coarseItems;
+    r.meshFacts.purge();
+    context.meshFacts = options.cullHiddenBackFaces ? &r.meshFacts : nullptr;
+    // Every view the main pass draws (the camera's and each mirror's) draws the reflector with its map.
+    context.drawReflector = [&r](const FrameInput& in, const passes::ViewSetup& view,
+                                 passes::MainPassContext& c) { return r.reflector.drawSurface(in, view, c); };
+    return context;
+}
+
+// A reflection texture for each texture slot the mirror views use; returns the deepest slot (-1: none).
+int ensureReflectionTextures(passes::FrameResources& r, const FramePlan& plan) {
+    int deepestSlot = -1;
+    for (const MirrorView& v : plan.views)
+        deepestSlot = std::max(deepestSlot, v.textureSlot);
+    if (static_cast<int>(r.reflectionTextures.size()) <= deepestSlot)
+        r.reflectionTextures.resize(static_cast<std::size_t>(deepestSlot + 1));
+    return deepestSlot;
+}
+
+// Execution: the plan as it is, pass by pass, each one that ran reported with its CPU time (and timed on
+// the GPU when asked); then the GL state is left as the caller expects it.
+void runPasses(passes::FrameExecution& frame, bool srgbBuffer, const RenderOptions& options,
+               gl::GpuTimer& timer, FrameReport& report) {
+    const FramePlan& plan = frame.plan;
+    // Only sRGB attachments are affected: the camera's buffer when it is one. Maps, reflection textures and
+    // float outputs store what the shaders write.
+    (srgbBuffer ? glEnable : glDisable)(GL_FRAMEBUFFER_SRGB);
+    for (std::size_t i = 0; i < plan.passes.size(); ++i) {
+        const PlannedPass& pass = plan.passes[i];
+        // A view inside a mirror found hidden runs nothing; its reflection is reported skipped.
+        if (const std::string* why = hiddenReason(frame, pass.view)) {
+            if (pass.kind == PassKind::Mirror)
+                frame.skipped.push_back({pass.target, "no reflection: " + *why});
+            continue;
+        }
+        const auto passStart = Clock::now();
+        if (options.gpuTimings)
+            timer.begin(i);
+        passes::PassResult result = passes::runPass(pass, frame);
+        if (options.gpuTimings)
+            timer.end();
+        if (result.ran)
+            report.ran.push_back({static_cast<int>(i), std::move(result.outcome), -1.0, msSince(passStart)});
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+    passes::resetPassState();
+    glDisable(GL_FRAMEBUFFER_SRGB); // the caller's drawing after ours (the editor's overlays) is not ours
+}
+
+// Each pass's GPU time, and the frame's: the sum of those measured.
+void collectGpuTimes(gl::GpuTimer& timer, const FramePlan& plan, FrameReport& report) {
+    const std::vector<double> gpu = timer.collect(plan.passes.size());
+    report.gpuMs = 0.0;
+    for (PassRun& run : report.ran) {
+        const auto i = static_cast<std::size_t>(run.pass);
+        run.gpuMs = i < gpu.size() ? gpu[i] : -1.0;
+        if (run.gpuMs > 0)
+            report.gpuMs += run.gpuMs;
+    }
+}
+
+// The rest of the report: what execution found it could not draw, the memory the frame's buffers and maps
+// hold, and the caches' warnings, once the caches have dropped what the frame no longer uses.
+void finishReport(passes::FrameResources& r, passes::FrameExecution& frame, int deepestSlot,
+                  FrameReport& report) {
+    const FramePlan& plan = frame.plan;
+    for (SkippedEffect& skip : frame.skipped)
+        report.skipped.push_back(std::move(skip));
+    report.memory.main = plan.cameraBufferIsOutput ? 0 : r.linear.bytes();
+    for (int slot = 0; slot <= deepestSlot; ++slot)
+        report.memory.mirrors += r.reflectionTextures[static_cast<std::size_t>(slot)].bytes();
+    for (int lightIndex : plan.shadowedLights)
+        report.memory.shadows += r.shadows.bytes(lightIndex);
+    if (frame.input.reflector)
+        report.memory.envmap = r.reflector.mapBytes(*frame.input.reflector);
+    r.meshes.purge();
+    r.reflector.purge();
+    for (std::string& warning : r.meshes.takeWarnings())
+        report.warnings.push_back(std::move(warning));
+    for (std::string& warning : r.textures.takeWarnings())
+        report.warnings.push_back(std::move(warning));
+    report.occlusionWaits = r.occlusion.waits();
+}
+
 } // namespace
 
 FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& target,
@@ -222,45 +364,16 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     report.drawnWidth = drawn.width;
     report.drawnHeight = drawn.height;
 
-    // Planning. Map sizes beyond the GPU's limits would fail to allocate: the frame is planned and drawn
-    // with sizes it can hold, and says so.
-    std::optional<FrameInput> fitted = fitToGpuLimits(requested, s.limits, report.warnings);
-    // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
-    // untiled frame would, with the same sub-pixel sample positions.
-    const bool eightBitOutput = target.encodeSrgb && !options.halfFloatCameraBuffer;
-    const bool drawnWhole = !options.tile && drawn.width == target.width && drawn.height == target.height;
-    const PlanViewport viewport{options.tile ? options.tile->imageWidth : drawn.width,
-                                options.tile ? options.tile->imageHeight : drawn.height, options.jitterPixels,
-                                eightBitOutput, eightBitOutput && drawnWhole && target.srgbDepthStencil};
-    const PlannerState freshState;
-    const PlannerState& plannerState = options.reuseMaps ? s.plannerState : freshState;
-    FramePlan& plan = report.plan;
-    plan = planFrame(fitted ? *fitted : requested, plannerState, viewport);
-    const bool envmapAllocated =
-        allocateMaps(requested, fitted, plan, plannerState, viewport, r, report.warnings);
-    const FrameInput& input = fitted ? *fitted : requested;
-    glm::dmat4 projection = cameraProjection(input, viewport);
-    if (options.tile) {
-        const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,
-                                   options.tile->y + target.height};
-        restrictToTile(plan, tile, viewport);
-        projection = math::tileProjection(projection, tile.x0, tile.y0, target.width, target.height,
-                                          viewport.width, viewport.height);
-    }
-    report.skipped = plan.skipped;
+    const DrawnFrame planned =
+        planDrawnFrame(requested, target, drawn, options, s.limits, s.plannerState, r, report);
+    const FramePlan& plan = report.plan;
+    const FrameInput& input = planned.fitted ? *planned.fitted : requested;
 
-    // Execution: the plan as it is, pass by pass.
     selectLighting(r, input, plan, options, report.warnings);
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
     // face instead of clamping (which would leak light or shadow along the seams).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    const bool srgbBuffer = plan.cameraBuffer == CameraBuffer::Srgb8;
-    // Drawn straight into the output, the frame needs no buffer of its own.
-    if (base::Status linear = plan.cameraBufferIsOutput
-                                  ? base::Status{base::Done{}}
-                                  : r.linear.ensure(drawn.width, drawn.height,
-                                                    srgbBuffer ? GL_SRGB8_ALPHA8 : GL_RGBA16F, false);
-        !linear) {
+    if (base::Status linear = ensureCameraBuffer(r, plan, drawn); !linear) {
         // Without its colour buffer the frame cannot be drawn at all: say so instead of an empty image.
         report.error = "the frame could not be drawn: " + linear.error();
         report.warnings.push_back(report.error);
@@ -268,81 +381,22 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
         return report;
     }
     r.shadows.boundLookups(options.boundShadowLookups);
-    passes::MainPassContext context{
-        r.meshProgram,          r.meshes,   r.textures, r.shadows, plan.shadows, r.dummyShadow2D.id(),
-        r.dummyShadowCube.id(), r.unitPlane};
-    context.depthOnlyProgram = &r.flatProgram;
-    context.coarseItems = plan.coarseItems;
-    r.meshFacts.purge();
-    context.meshFacts = options.cullHiddenBackFaces ? &r.meshFacts : nullptr;
-    // Every view the main pass draws (the camera's and each mirror's) draws the reflector with its map.
-    context.drawReflector = [&r](const FrameInput& in, const passes::ViewSetup& view,
-                                 passes::MainPassContext& c) { return r.reflector.drawSurface(in, view, c); };
+    passes::MainPassContext context = mainPassContext(r, plan, options);
     r.occlusion.beginFrame(plan);
-    int deepestSlot = -1;
-    for (const MirrorView& v : plan.views)
-        deepestSlot = std::max(deepestSlot, v.textureSlot);
-    if (static_cast<int>(r.reflectionTextures.size()) <= deepestSlot)
-        r.reflectionTextures.resize(static_cast<std::size_t>(deepestSlot + 1));
+    const int deepestSlot = ensureReflectionTextures(r, plan);
 
-    passes::FrameExecution frame{input, plan,    drawn,          projection,     options.tile.has_value(),
+    passes::FrameExecution frame{input, plan,    drawn,          planned.projection, options.tile.has_value(),
                                  r,     context, s.plannerState, report.warnings};
     frame.output = &target;
-    frame.envmapAllocated = envmapAllocated;
+    frame.envmapAllocated = planned.envmapAllocated;
     frame.hidden.resize(plan.views.size());
     gl::FramebufferBinding keepCallerBinding;
-    // Only sRGB attachments are affected: the camera's buffer when it is one. Maps, reflection textures and
-    // float outputs store what the shaders write.
-    (srgbBuffer ? glEnable : glDisable)(GL_FRAMEBUFFER_SRGB);
-    for (std::size_t i = 0; i < plan.passes.size(); ++i) {
-        const PlannedPass& pass = plan.passes[i];
-        // A view inside a mirror found hidden runs nothing; its reflection is reported skipped.
-        if (const std::string* why = hiddenReason(frame, pass.view)) {
-            if (pass.kind == PassKind::Mirror)
-                frame.skipped.push_back({pass.target, "no reflection: " + *why});
-            continue;
-        }
-        const auto passStart = Clock::now();
-        if (options.gpuTimings)
-            s.timer.begin(i);
-        passes::PassResult result = passes::runPass(pass, frame);
-        if (options.gpuTimings)
-            s.timer.end();
-        if (result.ran)
-            report.ran.push_back({static_cast<int>(i), std::move(result.outcome), -1.0, msSince(passStart)});
-    }
-    glBindVertexArray(0);
-    glUseProgram(0);
-    passes::resetPassState();
-    glDisable(GL_FRAMEBUFFER_SRGB); // the caller's drawing after ours (the editor's overlays) is not ours
+    runPasses(frame, plan.cameraBuffer == CameraBuffer::Srgb8, options, s.timer, report);
 
     // The report: what ran, what it cost, and what execution found it could not draw.
-    if (options.gpuTimings) {
-        const std::vector<double> gpu = s.timer.collect(plan.passes.size());
-        report.gpuMs = 0.0;
-        for (PassRun& run : report.ran) {
-            const auto i = static_cast<std::size_t>(run.pass);
-            run.gpuMs = i < gpu.size() ? gpu[i] : -1.0;
-            if (run.gpuMs > 0)
-                report.gpuMs += run.gpuMs;
-        }
-    }
-    for (SkippedEffect& skip : frame.skipped)
-        report.skipped.push_back(std::move(skip));
-    report.memory.main = plan.cameraBufferIsOutput ? 0 : r.linear.bytes();
-    for (int slot = 0; slot <= deepestSlot; ++slot)
-        report.memory.mirrors += r.reflectionTextures[static_cast<std::size_t>(slot)].bytes();
-    for (int lightIndex : plan.shadowedLights)
-        report.memory.shadows += r.shadows.bytes(lightIndex);
-    if (input.reflector)
-        report.memory.envmap = r.reflector.mapBytes(*input.reflector);
-    r.meshes.purge();
-    r.reflector.purge();
-    for (std::string& warning : r.meshes.takeWarnings())
-        report.warnings.push_back(std::move(warning));
-    for (std::string& warning : r.textures.takeWarnings())
-        report.warnings.push_back(std::move(warning));
-    report.occlusionWaits = r.occlusion.waits();
+    if (options.gpuTimings)
+        collectGpuTimes(s.timer, plan, report);
+    finishReport(r, frame, deepestSlot, report);
     report.cpuMs = msSince(frameStart);
     return report;
 }
