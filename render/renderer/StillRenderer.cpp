@@ -42,6 +42,91 @@ TileGrid tileGrid(int width, int height, int tileSize) {
     return grid;
 }
 
+// The still's result with its image allocated (black); an error where that does not fit in memory.
+base::Result<StillResult> blankStill(const StillSettings& settings, int n, const TileGrid& grid) {
+    StillResult result;
+    result.samples = n * n;
+    result.tiles = grid.count();
+    result.image.width = settings.width;
+    result.image.height = settings.height;
+    try {
+        result.image.rgba.resize(std::size_t(settings.width) * std::size_t(settings.height) * 4);
+    } catch (const std::bad_alloc&) {
+        return base::Error{"not enough memory for a " + sizeText(settings.width, settings.height) + " still"};
+    }
+    return result;
+}
+
+// A float target keeps the samples linear and unclamped until they are averaged.
+struct FloatTarget {
+    gl::Texture color;
+    gl::Framebuffer framebuffer; // left bound to GL_FRAMEBUFFER
+};
+
+base::Result<FloatTarget> makeFloatTarget(const TileGrid& grid) {
+    FloatTarget target;
+    target.color = gl::makeTexture();
+    glBindTexture(GL_TEXTURE_2D, target.color.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, grid.width, grid.height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    target.framebuffer = gl::makeFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.color.id(), 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        return base::Error{"cannot create a " + sizeText(grid.width, grid.height) +
+                           " float render target on this GPU"};
+    return target;
+}
+
+// "sample 2/4", or "tile 3/6, sample 2/4" for a tiled still.
+std::string stageText(const TileGrid& grid, int tile, int sample, int n) {
+    std::string stage = "sample " + std::to_string(sample + 1) + "/" + std::to_string(n * n);
+    if (grid.count() > 1)
+        stage = "tile " + std::to_string(tile + 1) + "/" + std::to_string(grid.count()) + ", " + stage;
+    return stage;
+}
+
+// The frame options of sample k of the tile at (x0, y0): its sub-pixel offset on the N×N ordered grid,
+// the tile, and whether maps drawn for an earlier step are reused.
+RenderOptions sampleOptions(const StillSettings& settings, const TileGrid& grid, int x0, int y0, int k, int n,
+                            int step) {
+    RenderOptions options;
+    options.jitterPixels = {(k % n + 0.5) / n - 0.5, (k / n + 0.5) / n - 0.5};
+    if (grid.count() > 1)
+        options.tile = ImageTile{settings.width, settings.height, x0, y0};
+    options.reuseMaps = settings.reuseMaps || step > 0;
+    options.lightingVariants = settings.lightingVariants;
+    options.boundShadowLookups = settings.boundShadowLookups;
+    options.cullHiddenBackFaces = settings.cullHiddenBackFaces;
+    return options;
+}
+
+void readTile(GLuint framebuffer, const TileGrid& grid, std::vector<float>& sample) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, grid.width, grid.height, GL_RGBA, GL_FLOAT, sample.data());
+}
+
+// Into the image: GL rows run bottom to top, image rows top to bottom; the parts of the tile past the
+// image's edge are dropped.
+void copyTileIntoImage(const std::vector<float>& tile, const TileGrid& grid, int x0, int y0, Image& image) {
+    const int columns = std::min(grid.width, image.width - x0);
+    const std::size_t tileRow = std::size_t(grid.width) * 4;
+    for (int row = 0; row < grid.height; ++row) {
+        const int y = y0 + row; // GL row in the image
+        if (y >= image.height)
+            break;
+        const std::size_t from = std::size_t(row) * tileRow;
+        const std::size_t to =
+            (std::size_t(image.height - 1 - y) * std::size_t(image.width) + std::size_t(x0)) * 4;
+        std::copy_n(tile.begin() + std::ptrdiff_t(from), std::size_t(columns) * 4,
+                    image.rgba.begin() + std::ptrdiff_t(to));
+    }
+}
+
 } // namespace
 
 int maxStillSize() {
@@ -64,38 +149,21 @@ base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& inpu
         return base::Error{"this OpenGL context cannot render any image (its size limit is " +
                            std::to_string(limit) + ")"};
     const TileGrid grid = tileGrid(settings.width, settings.height, tileSize);
-    const bool tiled = grid.count() > 1;
 
-    StillResult result;
-    result.samples = n * n;
-    result.tiles = grid.count();
-    result.image.width = settings.width;
-    result.image.height = settings.height;
-    try {
-        result.image.rgba.resize(std::size_t(settings.width) * std::size_t(settings.height) * 4);
-    } catch (const std::bad_alloc&) {
-        return base::Error{"not enough memory for a " + sizeText(settings.width, settings.height) + " still"};
-    }
+    base::Result<StillResult> blank = blankStill(settings, n, grid);
+    if (!blank)
+        return base::Error{blank.error()};
+    StillResult result = std::move(blank).value();
 
-    // A float target keeps the samples linear and unclamped until they are averaged.
     gl::FramebufferBinding keepBinding;
-    gl::Texture color = gl::makeTexture();
-    glBindTexture(GL_TEXTURE_2D, color.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, grid.width, grid.height, 0, GL_RGBA, GL_FLOAT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    gl::Framebuffer framebuffer = gl::makeFramebuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        return base::Error{"cannot create a " + sizeText(grid.width, grid.height) +
-                           " float render target on this GPU"};
-
+    base::Result<FloatTarget> floatTarget = makeFloatTarget(grid);
+    if (!floatTarget)
+        return base::Error{floatTarget.error()};
+    const GLuint framebuffer = floatTarget->framebuffer.id();
     const std::size_t tilePixels = std::size_t(grid.width) * std::size_t(grid.height);
     std::vector<float> sample(tilePixels * 4);
     std::vector<double> sum(n > 1 ? tilePixels * 4 : 0);
-    const RenderTarget target{framebuffer.id(), grid.width, grid.height, false};
+    const RenderTarget target{framebuffer, grid.width, grid.height, false};
     const int steps = grid.count() * n * n;
 
     for (int t = 0; t < grid.count(); ++t) {
@@ -105,29 +173,16 @@ base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& inpu
         std::fill(sum.begin(), sum.end(), 0.0);
         for (int k = 0; k < n * n; ++k) {
             const int step = t * n * n + k;
-            std::string stage = "sample " + std::to_string(k + 1) + "/" + std::to_string(n * n);
-            if (tiled)
-                stage = "tile " + std::to_string(t + 1) + "/" + std::to_string(grid.count()) + ", " + stage;
-            if (progress && !progress(double(step) / steps, stage))
+            if (progress && !progress(double(step) / steps, stageText(grid, t, k, n)))
                 return base::Error{"render cancelled"};
-            RenderOptions options;
-            options.jitterPixels = {(k % n + 0.5) / n - 0.5, (k / n + 0.5) / n - 0.5};
-            if (tiled)
-                options.tile = ImageTile{settings.width, settings.height, x0, y0};
-            options.reuseMaps = settings.reuseMaps || step > 0;
-            options.lightingVariants = settings.lightingVariants;
-            options.boundShadowLookups = settings.boundShadowLookups;
-            options.cullHiddenBackFaces = settings.cullHiddenBackFaces;
-            FrameReport report = renderer.render(input, target, options);
+            FrameReport report =
+                renderer.render(input, target, sampleOptions(settings, grid, x0, y0, k, n, step));
             // A frame the renderer could not draw at all (its colour buffer did not fit) is no still.
             if (!report.error.empty())
                 return base::Error{report.error};
             if (step == 0)
                 result.firstSample = std::move(report);
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
-            glReadBuffer(GL_COLOR_ATTACHMENT0);
-            glPixelStorei(GL_PACK_ALIGNMENT, 4);
-            glReadPixels(0, 0, grid.width, grid.height, GL_RGBA, GL_FLOAT, sample.data());
+            readTile(framebuffer, grid, sample);
             if (n > 1)
                 for (std::size_t i = 0; i < sample.size(); ++i)
                     sum[i] += sample[i];
@@ -135,21 +190,7 @@ base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& inpu
         if (n > 1)
             for (std::size_t i = 0; i < sample.size(); ++i)
                 sample[i] = static_cast<float>(sum[i] / (n * n));
-
-        // Into the image: GL rows run bottom to top, image rows top to bottom; the parts of the tile past
-        // the image's edge are dropped.
-        const int columns = std::min(grid.width, settings.width - x0);
-        const std::size_t tileRow = std::size_t(grid.width) * 4;
-        for (int row = 0; row < grid.height; ++row) {
-            const int y = y0 + row; // GL row in the image
-            if (y >= settings.height)
-                break;
-            const std::size_t from = std::size_t(row) * tileRow;
-            const std::size_t to =
-                (std::size_t(settings.height - 1 - y) * std::size_t(settings.width) + std::size_t(x0)) * 4;
-            std::copy_n(sample.begin() + std::ptrdiff_t(from), std::size_t(columns) * 4,
-                        result.image.rgba.begin() + std::ptrdiff_t(to));
-        }
+        copyTileIntoImage(sample, grid, x0, y0, result.image);
     }
     if (progress)
         progress(1.0, "done");
