@@ -113,17 +113,21 @@ double slab(const glm::dvec3& o, const glm::dvec3& invDir, const glm::vec3& lo, 
     return t0;
 }
 
-} // namespace
-
-MeshPickAccel::MeshPickAccel(const render::MeshData& mesh) {
-    const std::size_t triangles = mesh.indices.size() / 3;
-    const std::size_t vertices = mesh.positions.size();
-    // Triangles with an index out of range or a non-finite corner cannot be hit; leave them out.
+// The triangles a ray can hit (every index in range, every corner finite), with the bounding box and
+// its centre of each, in triangle order.
+struct HittableTriangles {
+    std::vector<std::uint32_t> numbers; // triangle numbers in the mesh
     std::vector<Box3> boxes;
     std::vector<glm::vec3> centroids;
-    boxes.reserve(triangles);
-    centroids.reserve(triangles);
-    m_triangles.reserve(triangles);
+};
+
+HittableTriangles hittableTriangles(const render::MeshData& mesh) {
+    const std::size_t triangles = mesh.indices.size() / 3;
+    const std::size_t vertices = mesh.positions.size();
+    HittableTriangles out;
+    out.boxes.reserve(triangles);
+    out.centroids.reserve(triangles);
+    out.numbers.reserve(triangles);
     for (std::size_t t = 0; t < triangles; ++t) {
         Box3 box;
         bool valid = true;
@@ -139,11 +143,90 @@ MeshPickAccel::MeshPickAccel(const render::MeshData& mesh) {
         if (!valid) {
             continue;
         }
-        m_triangles.push_back(std::uint32_t(t));
-        boxes.push_back(box);
-        centroids.push_back((box.min + box.max) * 0.5f);
+        out.numbers.push_back(std::uint32_t(t));
+        out.boxes.push_back(box);
+        out.centroids.push_back((box.min + box.max) * 0.5f);
     }
-    // `boxes` and `centroids` are indexed by position in m_triangles before sorting; keep a permutation.
+    return out;
+}
+
+// Which of kBins equal slices of the centroids' extent along `axis` a centroid falls in.
+struct CentroidBins {
+    int axis = 0;
+    float min = 0.0f;
+    float scale = 0.0f;
+    int of(const glm::vec3& centroid) const {
+        return std::min(kBins - 1, int((centroid[axis] - min) * scale));
+    }
+};
+
+// The bin boundary b (1..kBins-1: bins below b go left) of least surface-area cost, or -1 where every
+// triangle falls on one side.
+int bestBinSplit(const Box3 (&binBox)[kBins], const std::uint32_t (&binCount)[kBins]) {
+    float rightArea[kBins];
+    std::uint32_t rightCount[kBins];
+    Box3 acc;
+    std::uint32_t n = 0;
+    for (int b = kBins - 1; b > 0; --b) {
+        acc.add(binBox[b]);
+        n += binCount[b];
+        rightArea[b] = acc.area();
+        rightCount[b] = n;
+    }
+    float bestCost = std::numeric_limits<float>::max();
+    int bestSplit = -1;
+    acc = Box3{};
+    n = 0;
+    for (int b = 1; b < kBins; ++b) {
+        acc.add(binBox[b - 1]);
+        n += binCount[b - 1];
+        if (n == 0 || rightCount[b] == 0) {
+            continue;
+        }
+        const float cost = acc.area() * float(n) + rightArea[b] * float(rightCount[b]);
+        if (cost < bestCost) {
+            bestCost = cost;
+            bestSplit = b;
+        }
+    }
+    return bestSplit;
+}
+
+// Binned surface area heuristic along the widest axis of the centroids: partitions order[begin, end) and
+// returns where its right part starts, or `begin` where it found no split (every centroid in one place).
+std::uint32_t splitBySurfaceArea(const HittableTriangles& tris, const Box3& centres,
+                                 std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end) {
+    const glm::vec3 extent = centres.max - centres.min;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    if (!(extent[axis] > 0.0f)) {
+        return begin;
+    }
+    const CentroidBins bins{axis, centres.min[axis], float(kBins) / extent[axis] * 0.99999f};
+    Box3 binBox[kBins];
+    std::uint32_t binCount[kBins] = {};
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const int b = bins.of(tris.centroids[order[i]]);
+        binBox[b].add(tris.boxes[order[i]]);
+        ++binCount[b];
+    }
+    const int bestSplit = bestBinSplit(binBox, binCount);
+    if (bestSplit <= 0) {
+        return begin;
+    }
+    return std::uint32_t(
+        std::partition(order.begin() + begin, order.begin() + end,
+                       [&](std::uint32_t i) { return bins.of(tris.centroids[i]) < bestSplit; }) -
+        order.begin());
+}
+
+} // namespace
+
+MeshPickAccel::MeshPickAccel(const render::MeshData& mesh) {
+    // Triangles with an index out of range or a non-finite corner cannot be hit; leave them out.
+    HittableTriangles tris = hittableTriangles(mesh);
+    m_triangles = std::move(tris.numbers);
+    // `tris.boxes` and `tris.centroids` are indexed by position in m_triangles before sorting; keep a
+    // permutation.
     std::vector<std::uint32_t> order(m_triangles.size());
     for (std::uint32_t i = 0; i < order.size(); ++i) {
         order[i] = i;
@@ -162,70 +245,20 @@ MeshPickAccel::MeshPickAccel(const render::MeshData& mesh) {
         stack.pop_back();
         Box3 bounds, centres;
         for (std::uint32_t i = task.begin; i < task.end; ++i) {
-            bounds.add(boxes[order[i]]);
-            centres.add(centroids[order[i]]);
+            bounds.add(tris.boxes[order[i]]);
+            centres.add(tris.centroids[order[i]]);
         }
         // A hair of padding: the double-precision triangle test may land a rounding error outside the box.
         const glm::vec3 pad = (glm::abs(bounds.min) + glm::abs(bounds.max) + glm::vec3(1e-3f)) * 1e-6f;
         m_nodes[task.node].min = bounds.min - pad;
         m_nodes[task.node].max = bounds.max + pad;
         const std::uint32_t count = task.end - task.begin;
-        auto makeLeaf = [&] {
+        if (count <= kLeafSize) {
             m_nodes[task.node].first = task.begin;
             m_nodes[task.node].count = count;
-        };
-        if (count <= kLeafSize) {
-            makeLeaf();
             continue;
         }
-        const glm::vec3 extent = centres.max - centres.min;
-        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-        std::uint32_t middle = task.begin;
-        if (extent[axis] > 0.0f) {
-            // Binned surface area heuristic along the widest axis of the centroids.
-            Box3 binBox[kBins];
-            std::uint32_t binCount[kBins] = {};
-            const float scale = float(kBins) / extent[axis] * 0.99999f;
-            auto binOf = [&](std::uint32_t i) {
-                return std::min(kBins - 1, int((centroids[i][axis] - centres.min[axis]) * scale));
-            };
-            for (std::uint32_t i = task.begin; i < task.end; ++i) {
-                const int b = binOf(order[i]);
-                binBox[b].add(boxes[order[i]]);
-                ++binCount[b];
-            }
-            float rightArea[kBins];
-            std::uint32_t rightCount[kBins];
-            Box3 acc;
-            std::uint32_t n = 0;
-            for (int b = kBins - 1; b > 0; --b) {
-                acc.add(binBox[b]);
-                n += binCount[b];
-                rightArea[b] = acc.area();
-                rightCount[b] = n;
-            }
-            float bestCost = std::numeric_limits<float>::max();
-            int bestSplit = -1;
-            acc = Box3{};
-            n = 0;
-            for (int b = 1; b < kBins; ++b) {
-                acc.add(binBox[b - 1]);
-                n += binCount[b - 1];
-                if (n == 0 || rightCount[b] == 0) {
-                    continue;
-                }
-                const float cost = acc.area() * float(n) + rightArea[b] * float(rightCount[b]);
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    bestSplit = b;
-                }
-            }
-            if (bestSplit > 0) {
-                middle = std::uint32_t(std::partition(order.begin() + task.begin, order.begin() + task.end,
-                                                      [&](std::uint32_t i) { return binOf(i) < bestSplit; }) -
-                                       order.begin());
-            }
-        }
+        std::uint32_t middle = splitBySurfaceArea(tris, centres, order, task.begin, task.end);
         if (middle == task.begin || middle == task.end) {
             // Every centroid in one place (or one bin): halves by index still bound the work per ray.
             middle = task.begin + count / 2;
