@@ -258,6 +258,118 @@ base::Status checkBeforeReading(const fs::path& file) {
     return base::Done{};
 }
 
+// Why Assimp read no scene, in the user's terms where its message is known.
+std::string readFailure(const Assimp::Importer& importer, const fs::path& file) {
+    std::string reason = importer.GetErrorString();
+    if (reason.empty()) {
+        reason = "Assimp could not read the file";
+    }
+    const std::string extension = file.extension().string();
+    if (!extension.empty() && !importer.IsExtensionSupported(extension)) {
+        reason = "unknown model format '" + extension + "' (" + reason + ")";
+    } else if (reason.find("No meshes remaining") != std::string::npos ||
+               reason.find("contains no faces") != std::string::npos) {
+        reason = "no triangles to import, points and lines are ignored (" + reason + ")";
+    } else if (reason.find("bad_alloc") != std::string::npos) {
+        reason = "out of memory while reading; the file is probably corrupt (" + reason + ")";
+    }
+    return reason;
+}
+
+// A scene read is worth converting: complete, with meshes, with triangles and within the size limits.
+// Counted first so that an absurd model is refused before anything big is allocated.
+base::Status checkReadScene(const aiScene& scene) {
+    if ((scene.mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene.mRootNode == nullptr) {
+        return Error{"the file contains no complete scene (no meshes)"};
+    }
+    if (scene.mNumMeshes == 0 || scene.mMeshes == nullptr) {
+        return Error{"the file contains no meshes"};
+    }
+    std::size_t triangleCount = 0, vertexCount = 0;
+    for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+        if (isTriangleMesh(scene.mMeshes[i])) {
+            triangleCount += scene.mMeshes[i]->mNumFaces;
+            vertexCount += scene.mMeshes[i]->mNumVertices;
+        }
+    }
+    if (triangleCount == 0) {
+        return Error{"the model contains no triangles"};
+    }
+    if (triangleCount > render::kMaxMeshTriangles || vertexCount > render::kMaxMeshVertices) {
+        std::ostringstream out;
+        out << "the model is too large (" << triangleCount << " triangles, " << vertexCount
+            << " vertices; the limit is " << render::kMaxMeshTriangles << " triangles)";
+        return Error{out.str()};
+    }
+    return base::Done{};
+}
+
+// The scene's materials into model.materials, placeholders left out; returns each Assimp material's
+// index there (-1: none).
+std::vector<int> convertMaterials(const aiScene& scene, const std::string& absolutePath, ImportedModel& model,
+                                  ImportNotes& notes,
+                                  std::map<std::string, detail::EmbeddedBytes>* compressedOut) {
+    detail::MaterialConverter converter(scene, absolutePath, model, notes, compressedOut);
+    std::vector<int> materialIndex(scene.mNumMaterials, -1);
+    for (unsigned i = 0; i < scene.mNumMaterials && scene.mMaterials != nullptr; ++i) {
+        if (scene.mMaterials[i] == nullptr || converter.isPlaceholder(*scene.mMaterials[i])) {
+            continue;
+        }
+        materialIndex[i] = static_cast<int>(model.materials.size());
+        model.materials.push_back(converter.convert(*scene.mMaterials[i]));
+    }
+    return materialIndex;
+}
+
+// Every mesh of the scene into model.parts (same indices). A part that fails is skipped, with a note;
+// fails only when every part did (or when cancelled). What bad data cost is told once for the file.
+base::Status convertParts(const aiScene& scene, const std::vector<int>& materialIndex, ImportedModel& model,
+                          ImportNotes& notes, const Progress& progress) {
+    model.parts.resize(scene.mNumMeshes);
+    std::size_t failed = 0;
+    render::RepairReport repairs; // what bad data cost, over every part
+    std::string firstFailure;
+    for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+        if (progress.cancelled()) {
+            return Error{"cancelled"};
+        }
+        const double fraction = 0.55 + 0.4 * i / scene.mNumMeshes;
+        progress(fraction, "converting");
+        const aiMesh* source = scene.mMeshes[i];
+        ImportedPart& part = model.parts[i];
+        if (source == nullptr) {
+            continue;
+        }
+        part.name = source->mName.C_Str();
+        if (source->mMaterialIndex < materialIndex.size()) {
+            part.material = materialIndex[source->mMaterialIndex];
+        }
+        const bool wantTangents = part.material >= 0 && !model.materials[part.material].normalTexture.empty();
+        auto mesh = convertPart(*source, wantTangents, notes, repairs, progress, fraction);
+        if (!mesh) {
+            if (failed++ == 0) {
+                firstFailure = "part " + std::to_string(i) + ": " + mesh.error();
+            }
+            continue;
+        }
+        part.mesh = render::freezeMesh(std::move(mesh).value());
+    }
+    if (failed == scene.mNumMeshes) {
+        return Error{"no usable triangles (" + firstFailure + ")"};
+    }
+    // Regenerating normals and dropping zero-area triangles (cone tips, sphere poles: what Assimp's
+    // FindDegenerates removed silently) are routine; losing geometry to bad data is worth telling, once
+    // for the whole file rather than once per part.
+    if (!repairs.clean()) {
+        notes.add("repaired: " + repairs.summary());
+    }
+    if (failed > 0) {
+        notes.add(std::to_string(failed) + " of " + std::to_string(scene.mNumMeshes) + " parts skipped (" +
+                  firstFailure + ")");
+    }
+    return base::Done{};
+}
+
 // The Assimp read and the conversion, after checkBeforeReading. With `compressedOut` (the import child),
 // compressed embedded textures are handed over undecoded.
 base::Result<ImportedModel> importChecked(const std::string& path, ImportNotes& notes,
@@ -289,104 +401,23 @@ base::Result<ImportedModel> importChecked(const std::string& path, ImportNotes& 
         return Error{io->refusal()};
     }
     if (scene == nullptr) {
-        std::string reason = importer.GetErrorString();
-        if (reason.empty()) {
-            reason = "Assimp could not read the file";
-        }
-        const std::string extension = file.extension().string();
-        if (!extension.empty() && !importer.IsExtensionSupported(extension)) {
-            reason = "unknown model format '" + extension + "' (" + reason + ")";
-        } else if (reason.find("No meshes remaining") != std::string::npos ||
-                   reason.find("contains no faces") != std::string::npos) {
-            reason = "no triangles to import, points and lines are ignored (" + reason + ")";
-        } else if (reason.find("bad_alloc") != std::string::npos) {
-            reason = "out of memory while reading; the file is probably corrupt (" + reason + ")";
-        }
-        return Error{reason};
+        return Error{readFailure(importer, file)};
     }
-    if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || scene->mRootNode == nullptr) {
-        return Error{"the file contains no complete scene (no meshes)"};
-    }
-    if (scene->mNumMeshes == 0 || scene->mMeshes == nullptr) {
-        return Error{"the file contains no meshes"};
-    }
-
-    // Count first so that an absurd model is refused before anything big is allocated.
-    std::size_t triangleCount = 0, vertexCount = 0;
-    for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
-        if (isTriangleMesh(scene->mMeshes[i])) {
-            triangleCount += scene->mMeshes[i]->mNumFaces;
-            vertexCount += scene->mMeshes[i]->mNumVertices;
-        }
-    }
-    if (triangleCount == 0) {
-        return Error{"the model contains no triangles"};
-    }
-    if (triangleCount > render::kMaxMeshTriangles || vertexCount > render::kMaxMeshVertices) {
-        std::ostringstream out;
-        out << "the model is too large (" << triangleCount << " triangles, " << vertexCount
-            << " vertices; the limit is " << render::kMaxMeshTriangles << " triangles)";
-        return Error{out.str()};
+    if (const base::Status usable = checkReadScene(*scene); !usable) {
+        return Error{usable.error()};
     }
 
     ImportedModel model;
     if (const base::Status walked = convertNode(*scene->mRootNode, *scene, model.root); !walked) {
         return Error{walked.error()};
     }
-
     progress(0.5, "materials");
     const std::string absolutePath = fs::absolute(file, ec).lexically_normal().string();
-    detail::MaterialConverter converter(*scene, absolutePath, model, notes, compressedOut);
-    std::vector<int> materialIndex(scene->mNumMaterials, -1);
-    for (unsigned i = 0; i < scene->mNumMaterials && scene->mMaterials != nullptr; ++i) {
-        if (scene->mMaterials[i] == nullptr || converter.isPlaceholder(*scene->mMaterials[i])) {
-            continue;
-        }
-        materialIndex[i] = static_cast<int>(model.materials.size());
-        model.materials.push_back(converter.convert(*scene->mMaterials[i]));
-    }
-
-    model.parts.resize(scene->mNumMeshes);
-    std::size_t failed = 0;
-    render::RepairReport repairs; // what bad data cost, over every part
-    std::string firstFailure;
-    for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
-        if (progress.cancelled()) {
-            return Error{"cancelled"};
-        }
-        const double fraction = 0.55 + 0.4 * i / scene->mNumMeshes;
-        progress(fraction, "converting");
-        const aiMesh* source = scene->mMeshes[i];
-        ImportedPart& part = model.parts[i];
-        if (source == nullptr) {
-            continue;
-        }
-        part.name = source->mName.C_Str();
-        if (source->mMaterialIndex < materialIndex.size()) {
-            part.material = materialIndex[source->mMaterialIndex];
-        }
-        const bool wantTangents = part.material >= 0 && !model.materials[part.material].normalTexture.empty();
-        auto mesh = convertPart(*source, wantTangents, notes, repairs, progress, fraction);
-        if (!mesh) {
-            if (failed++ == 0) {
-                firstFailure = "part " + std::to_string(i) + ": " + mesh.error();
-            }
-            continue;
-        }
-        part.mesh = render::freezeMesh(std::move(mesh).value());
-    }
-    if (failed == scene->mNumMeshes) {
-        return Error{"no usable triangles (" + firstFailure + ")"};
-    }
-    // Regenerating normals and dropping zero-area triangles (cone tips, sphere poles: what Assimp's
-    // FindDegenerates removed silently) are routine; losing geometry to bad data is worth telling, once
-    // for the whole file rather than once per part.
-    if (!repairs.clean()) {
-        notes.add("repaired: " + repairs.summary());
-    }
-    if (failed > 0) {
-        notes.add(std::to_string(failed) + " of " + std::to_string(scene->mNumMeshes) + " parts skipped (" +
-                  firstFailure + ")");
+    const std::vector<int> materialIndex =
+        convertMaterials(*scene, absolutePath, model, notes, compressedOut);
+    if (const base::Status converted = convertParts(*scene, materialIndex, model, notes, progress);
+        !converted) {
+        return Error{converted.error()};
     }
 
     model.unitScale = unitScaleOf(*scene, file, notes);
