@@ -194,6 +194,131 @@ bool reap(pid_t pid, int& status, rusage& usage) {
     }
 }
 
+// Parent side: hands on every complete frame in buffer[parsed..], progress to control.progress. True once
+// the answer (the last frame) is in: the buffer becomes it rather than a copy, as it can be hundreds of
+// megabytes.
+bool handOnFrames(std::string& buffer, std::size_t& parsed, const ImportControl& control,
+                  std::string& answer) {
+    while (buffer.size() - parsed >= kFrameHeader) {
+        std::uint64_t length = 0;
+        std::memcpy(&length, buffer.data() + parsed + 1, sizeof length);
+        if (buffer.size() - parsed - kFrameHeader < length) {
+            break; // not all here yet
+        }
+        const auto kind = static_cast<FrameKind>(buffer[parsed]);
+        const std::string_view payload(buffer.data() + parsed + kFrameHeader, length);
+        if (kind == kProgressFrame && payload.size() >= sizeof(double)) {
+            double fraction = 0;
+            std::memcpy(&fraction, payload.data(), sizeof fraction);
+            if (control.progress) {
+                control.progress(fraction, internPhase(payload.substr(sizeof fraction)));
+            }
+        } else if (kind == kAnswerFrame) {
+            buffer.erase(0, parsed + kFrameHeader);
+            buffer.resize(length);
+            answer = std::move(buffer);
+            return true;
+        }
+        parsed += kFrameHeader + length;
+    }
+    if (parsed > 0 && parsed == buffer.size()) {
+        buffer.clear();
+        parsed = 0;
+    }
+    return false;
+}
+
+// How reading the child's stream ended.
+struct ChildReading {
+    bool answered = false;
+    bool killed = false;      // the child was killed: cancelled, timed out or out of memory here
+    bool timedOut = false;    // past the wall-clock limit
+    bool outOfMemory = false; // no room here for what the child sent
+};
+
+// Parent side: reads the child's frames until its answer or the end of its stream, or kills it when the
+// caller cancels, when it runs past `wallLimit`, or when what it sends does not fit here.
+ChildReading readChild(pid_t pid, int fd, const ImportControl& control, std::chrono::seconds wallLimit,
+                       std::string& answer) {
+    ChildReading reading;
+    const auto started = std::chrono::steady_clock::now();
+    std::string buffer;
+    std::size_t parsed = 0;
+    char chunk[1 << 16];
+    for (;;) {
+        if (control.cancel != nullptr && control.cancel->load()) {
+            ::kill(pid, SIGKILL);
+            reading.killed = true;
+            break;
+        }
+        if (std::chrono::steady_clock::now() - started > wallLimit) {
+            ::kill(pid, SIGKILL);
+            reading.killed = reading.timedOut = true;
+            break;
+        }
+        pollfd waiting{fd, POLLIN, 0};
+        const int ready = ::poll(&waiting, 1, 50);
+        if (ready < 0 && errno != EINTR) {
+            break;
+        }
+        if (ready <= 0) {
+            continue;
+        }
+        const ssize_t got = ::read(fd, chunk, sizeof chunk);
+        if (got < 0 && (errno == EINTR || errno == EAGAIN)) {
+            continue;
+        }
+        if (got <= 0) {
+            break; // the child closed its end: finished or died
+        }
+        try {
+            buffer.append(chunk, static_cast<std::size_t>(got));
+        } catch (const std::bad_alloc&) {
+            // No room here for what the child sends: stop it rather than let the editor fail.
+            ::kill(pid, SIGKILL);
+            reading.killed = reading.outOfMemory = true;
+            break;
+        }
+        if (handOnFrames(buffer, parsed, control, answer)) {
+            reading.answered = true;
+            break; // the last frame; the child exits next
+        }
+    }
+    return reading;
+}
+
+// Why a child that gave no usable answer failed, for the user: from how the reading ended and, where the
+// child was reaped here, how it ended.
+std::string childFailure(const ChildReading& reading, bool reaped, int status, const rusage& usage,
+                         int cpuSeconds, std::chrono::seconds wallLimit) {
+    const std::string limit = std::to_string(cpuSeconds);
+    if (reading.outOfMemory) {
+        return "ran out of memory reading the model";
+    }
+    if (!reaped) {
+        return "the model reader stopped without an answer";
+    }
+    if (reading.timedOut) {
+        return "took more than " + std::to_string(wallLimit.count()) + " s to read; stopped";
+    }
+    if (WIFSIGNALED(status)) {
+        const int signal = WTERMSIG(status);
+        const bool outOfCpu = signal == SIGXCPU || (signal == SIGKILL && cpuSecondsOf(usage) >= cpuSeconds);
+        if (outOfCpu) {
+            return "took more than " + limit + " s of CPU to read; stopped";
+        }
+        if (signal == SIGKILL) {
+            return "ran out of memory reading the model"; // the OOM killer's signal
+        }
+        return "the model reader crashed on this file (" + signalName(signal) + "); it is probably damaged";
+    }
+    if (WIFEXITED(status)) {
+        return "the model reader stopped without an answer (exit status " +
+               std::to_string(WEXITSTATUS(status)) + "); the file is probably damaged";
+    }
+    return "the model reader stopped without an answer";
+}
+
 } // namespace
 
 void setImportChildTestAction(void (*action)()) {
@@ -224,118 +349,24 @@ ChildRun runInChildProcess(const std::function<std::string(const ChildProgress&)
 
     // A child that waits forever (a lock it inherited held) spends no CPU time: a wall-clock limit too.
     const auto wallLimit = std::chrono::seconds(2 * static_cast<long long>(cpuSeconds) + 5);
-    const auto started = std::chrono::steady_clock::now();
-    std::string buffer;
-    std::size_t parsed = 0;
-    bool answered = false, killed = false, timedOut = false, outOfMemory = false;
-    char chunk[1 << 16];
-    for (;;) {
-        if (control.cancel != nullptr && control.cancel->load()) {
-            ::kill(pid, SIGKILL);
-            killed = true;
-            break;
-        }
-        if (std::chrono::steady_clock::now() - started > wallLimit) {
-            ::kill(pid, SIGKILL);
-            killed = timedOut = true;
-            break;
-        }
-        pollfd waiting{fd, POLLIN, 0};
-        const int ready = ::poll(&waiting, 1, 50);
-        if (ready < 0 && errno != EINTR) {
-            break;
-        }
-        if (ready <= 0) {
-            continue;
-        }
-        const ssize_t got = ::read(fd, chunk, sizeof chunk);
-        if (got < 0 && (errno == EINTR || errno == EAGAIN)) {
-            continue;
-        }
-        if (got <= 0) {
-            break; // the child closed its end: finished or died
-        }
-        try {
-            buffer.append(chunk, static_cast<std::size_t>(got));
-        } catch (const std::bad_alloc&) {
-            // No room here for what the child sends: stop it rather than let the editor fail.
-            ::kill(pid, SIGKILL);
-            killed = outOfMemory = true;
-            break;
-        }
-        // Hand on every complete frame; the answer is the last one.
-        while (buffer.size() - parsed >= kFrameHeader) {
-            std::uint64_t length = 0;
-            std::memcpy(&length, buffer.data() + parsed + 1, sizeof length);
-            if (buffer.size() - parsed - kFrameHeader < length) {
-                break; // not all here yet
-            }
-            const auto kind = static_cast<FrameKind>(buffer[parsed]);
-            const std::string_view payload(buffer.data() + parsed + kFrameHeader, length);
-            if (kind == kProgressFrame && payload.size() >= sizeof(double)) {
-                double fraction = 0;
-                std::memcpy(&fraction, payload.data(), sizeof fraction);
-                if (control.progress) {
-                    control.progress(fraction, internPhase(payload.substr(sizeof fraction)));
-                }
-            } else if (kind == kAnswerFrame) {
-                // The answer can be hundreds of megabytes: the buffer becomes it rather than a copy.
-                buffer.erase(0, parsed + kFrameHeader);
-                buffer.resize(length);
-                run.answer = std::move(buffer);
-                answered = true;
-                break;
-            }
-            parsed += kFrameHeader + length;
-        }
-        if (answered) {
-            break; // the last frame; the child exits next
-        }
-        if (parsed > 0 && parsed == buffer.size()) {
-            buffer.clear();
-            parsed = 0;
-        }
-    }
+    const ChildReading reading = readChild(pid, fd, control, wallLimit, run.answer);
     ::close(fd);
     int status = 0;
     rusage usage{};
     const bool reaped = reap(pid, status, usage);
 
-    if (killed && !timedOut && !outOfMemory) {
+    if (reading.killed && !reading.timedOut && !reading.outOfMemory) {
         run.outcome = ChildRun::Outcome::Cancelled;
         run.answer.clear();
         return run;
     }
-    if (answered && (!reaped || (WIFEXITED(status) && WEXITSTATUS(status) == 0))) {
+    if (reading.answered && (!reaped || (WIFEXITED(status) && WEXITSTATUS(status) == 0))) {
         run.outcome = ChildRun::Outcome::Answered;
         return run;
     }
     run.outcome = ChildRun::Outcome::Failed;
     run.answer.clear();
-    const std::string limit = std::to_string(cpuSeconds);
-    if (outOfMemory) {
-        run.error = "ran out of memory reading the model";
-    } else if (!reaped) {
-        run.error = "the model reader stopped without an answer";
-    } else if (timedOut) {
-        run.error = "took more than " + std::to_string(wallLimit.count()) + " s to read; stopped";
-    } else if (WIFSIGNALED(status)) {
-        const int signal = WTERMSIG(status);
-        const bool outOfCpu = signal == SIGXCPU || (signal == SIGKILL && cpuSecondsOf(usage) >= cpuSeconds);
-        if (outOfCpu) {
-            run.error = "took more than " + limit + " s of CPU to read; stopped";
-        } else if (signal == SIGKILL) {
-            run.error = "ran out of memory reading the model"; // the OOM killer's signal
-        } else {
-            run.error =
-                "the model reader crashed on this file (" + signalName(signal) + "); it is probably damaged";
-        }
-    } else if (WIFEXITED(status)) {
-        run.error = "the model reader stopped without an answer (exit status " +
-                    std::to_string(WEXITSTATUS(status)) + "); the file is probably damaged";
-    } else {
-        run.error = "the model reader stopped without an answer";
-    }
+    run.error = childFailure(reading, reaped, status, usage, cpuSeconds, wallLimit);
     return run;
 }
 
