@@ -106,6 +106,124 @@ constexpr DroppedKind kDroppedTextures[] = {
     {aiTextureType_TRANSMISSION, "transmission texture"},
 };
 
+// glTF's alphaMode ("OPAQUE", "MASK", "BLEND"); empty for a material from any other format.
+std::string gltfAlphaMode(const aiMaterial& material) {
+    aiString mode;
+    if (material.Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS) {
+        return mode.C_Str();
+    }
+    return {};
+}
+
+void noteDroppedTextures(const aiMaterial& material, bool gltf, ImportNotes& notes) {
+    for (const DroppedKind& kind : kDroppedTextures) {
+        if (material.GetTextureCount(kind.type) > 0) {
+            // Assimp reports glTF's one metallicRoughnessTexture under three types.
+            const bool metallicRoughness = kind.type == aiTextureType_UNKNOWN ||
+                                           kind.type == aiTextureType_METALNESS ||
+                                           kind.type == aiTextureType_DIFFUSE_ROUGHNESS;
+            notes.add(std::string(gltf && metallicRoughness ? "metallic-roughness texture" : kind.name) +
+                      " ignored");
+        }
+    }
+}
+
+// The emission, clamped to 0..1 (with a note where it was brighter). A textured emitter with a zero
+// factor from a non-glTF file gets factor 1; glTF's zero default stays zero, as the spec says.
+glm::dvec3 emissionOf(const aiMaterial& material, bool textured, bool gltf, ImportNotes& notes) {
+    aiColor4D emissive(0.0f, 0.0f, 0.0f, 1.0f);
+    material.Get(AI_MATKEY_COLOR_EMISSIVE, emissive);
+    glm::dvec3 emission = finite(rgb(emissive)) ? glm::max(rgb(emissive), glm::dvec3(0.0)) : glm::dvec3(0.0);
+    emission *= std::max(0.0, getFloat(material, AI_MATKEY_EMISSIVE_INTENSITY, 1.0));
+    if (textured && emission == glm::dvec3(0.0) && !gltf) {
+        emission = glm::dvec3(1.0);
+    }
+    if (glm::any(glm::greaterThan(emission, glm::dvec3(1.0)))) {
+        notes.add("emission brighter than 1 clamped");
+    }
+    return clamp01(emission);
+}
+
+// Specular, shininess (and for glTF metallic/roughness the diffuse weight): see the conversions at the
+// top of the file. Needs m.color.
+void convertSpecular(const aiMaterial& material, bool pbr, MaterialComponent& m, ImportNotes& notes) {
+    if (pbr) {
+        const double metallic = std::clamp(getFloat(material, AI_MATKEY_METALLIC_FACTOR, 1.0), 0.0, 1.0);
+        const double roughness = std::clamp(getFloat(material, AI_MATKEY_ROUGHNESS_FACTOR, 1.0), 0.0, 1.0);
+        const double alpha = std::max(roughness * roughness, 1e-4);
+        m.shininess = std::clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 1024.0);
+        m.specular = std::clamp(glm::mix(0.04, 1.0, metallic) * (m.shininess + 8.0) / 8.0, 0.0, 1.0);
+        m.specularColor = glm::mix(glm::dvec3(1.0), m.color, metallic);
+        m.diffuse = 1.0 - metallic;
+    } else {
+        aiColor4D ks(0.0f, 0.0f, 0.0f, 1.0f);
+        material.Get(AI_MATKEY_COLOR_SPECULAR, ks);
+        const glm::dvec3 specular = finite(rgb(ks)) ? glm::max(rgb(ks), glm::dvec3(0.0)) : glm::dvec3(0.0);
+        const double strongest = std::max({specular.x, specular.y, specular.z});
+        m.specular = std::clamp(strongest, 0.0, 1.0);
+        m.specularColor = strongest > 0.0 ? clamp01(specular / strongest) : glm::dvec3(1.0);
+        m.shininess = std::clamp(getFloat(material, AI_MATKEY_SHININESS, 32.0), 1.0, 10000.0);
+    }
+    if (has(material, AI_MATKEY_GLOSSINESS_FACTOR)) {
+        notes.add("KHR_materials_pbrSpecularGlossiness approximated by the base colour");
+    }
+}
+
+// Opacity, alpha mode and cutoff: glTF's as given (BLEND drawn as a cut-out); other formats' opacity,
+// below 1 making the material a cut-out at the cutoff.
+void convertAlpha(const aiMaterial& material, const std::string& alphaMode, double baseAlpha,
+                  MaterialComponent& m, ImportNotes& notes) {
+    if (!alphaMode.empty()) {
+        m.opacity = std::clamp(baseAlpha, 0.0, 1.0);
+        if (alphaMode == "MASK") {
+            m.alphaMode = AlphaMode::Mask;
+        } else if (alphaMode == "BLEND") {
+            m.alphaMode = AlphaMode::Blend;
+            notes.add("alphaMode BLEND drawn as a cut-out");
+        }
+        m.alphaCutoff = std::clamp(getFloat(material, AI_MATKEY_GLTF_ALPHACUTOFF, 0.5), 0.0, 1.0);
+    } else {
+        m.opacity = std::clamp(getFloat(material, AI_MATKEY_OPACITY, 1.0), 0.0, 1.0);
+        if (m.opacity < 1.0) {
+            m.alphaMode = AlphaMode::Blend;
+            notes.add("transparency drawn as a cut-out");
+        }
+    }
+}
+
+// glTF extensions Assimp reports that speculum cannot draw.
+void noteUndrawnExtensions(const aiMaterial& material, ImportNotes& notes) {
+    if (getFloat(material, AI_MATKEY_CLEARCOAT_FACTOR, 0.0) > 0.0) {
+        notes.add("KHR_materials_clearcoat ignored");
+    }
+    if (has(material, AI_MATKEY_SHEEN_COLOR_FACTOR)) {
+        notes.add("KHR_materials_sheen ignored");
+    }
+    if (getFloat(material, AI_MATKEY_TRANSMISSION_FACTOR, 0.0) > 0.0) {
+        notes.add("KHR_materials_transmission ignored");
+    }
+    if (has(material, AI_MATKEY_VOLUME_THICKNESS_FACTOR)) {
+        notes.add("KHR_materials_volume ignored");
+    }
+    int shading = 0;
+    if (material.Get(AI_MATKEY_SHADING_MODEL, shading) == AI_SUCCESS && shading == aiShadingMode_Unlit) {
+        notes.add("KHR_materials_unlit drawn lit");
+    }
+}
+
+// Files hold floats: keep the project file's numbers as short as the file's own.
+void shortenNumbers(MaterialComponent& m) {
+    m.color = detail::shortestFloat(m.color);
+    m.specularColor = detail::shortestFloat(m.specularColor);
+    m.emission = detail::shortestFloat(m.emission);
+    m.specular = detail::shortestFloat(m.specular);
+    m.shininess = detail::shortestFloat(m.shininess);
+    m.diffuse = detail::shortestFloat(m.diffuse);
+    m.opacity = detail::shortestFloat(m.opacity);
+    m.alphaCutoff = detail::shortestFloat(m.alphaCutoff);
+    m.normalScale = detail::shortestFloat(m.normalScale);
+}
+
 } // namespace
 
 void ImportNotes::add(const std::string& note) {
@@ -143,13 +261,7 @@ MaterialComponent MaterialConverter::convert(const aiMaterial& material) {
     m.color = finite(rgb(base)) ? clamp01(rgb(base)) : glm::dvec3(0.8);
 
     const bool pbr = has(material, AI_MATKEY_METALLIC_FACTOR);
-    std::string alphaMode;
-    {
-        aiString mode;
-        if (material.Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS) {
-            alphaMode = mode.C_Str();
-        }
-    }
+    const std::string alphaMode = gltfAlphaMode(material);
     const bool gltf = !alphaMode.empty();
 
     // Textures: base colour first (glTF reports it as both BASE_COLOR and DIFFUSE).
@@ -168,97 +280,13 @@ MaterialComponent MaterialConverter::convert(const aiMaterial& material) {
         m.normalScale = std::clamp(
             getFloat(material, AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), 1.0), -100.0, 100.0);
     }
-    for (const DroppedKind& kind : kDroppedTextures) {
-        if (material.GetTextureCount(kind.type) > 0) {
-            // Assimp reports glTF's one metallicRoughnessTexture under three types.
-            const bool metallicRoughness = kind.type == aiTextureType_UNKNOWN ||
-                                           kind.type == aiTextureType_METALNESS ||
-                                           kind.type == aiTextureType_DIFFUSE_ROUGHNESS;
-            m_notes.add(std::string(gltf && metallicRoughness ? "metallic-roughness texture" : kind.name) +
-                        " ignored");
-        }
-    }
+    noteDroppedTextures(material, gltf, m_notes);
 
-    // Emission.
-    aiColor4D emissive(0.0f, 0.0f, 0.0f, 1.0f);
-    material.Get(AI_MATKEY_COLOR_EMISSIVE, emissive);
-    glm::dvec3 emission = finite(rgb(emissive)) ? glm::max(rgb(emissive), glm::dvec3(0.0)) : glm::dvec3(0.0);
-    emission *= std::max(0.0, getFloat(material, AI_MATKEY_EMISSIVE_INTENSITY, 1.0));
-    if (!m.emissionTexture.empty() && emission == glm::dvec3(0.0) && !gltf) {
-        emission = glm::dvec3(1.0);
-    }
-    if (glm::any(glm::greaterThan(emission, glm::dvec3(1.0)))) {
-        m_notes.add("emission brighter than 1 clamped");
-    }
-    m.emission = clamp01(emission);
-
-    // Specular.
-    if (pbr) {
-        const double metallic = std::clamp(getFloat(material, AI_MATKEY_METALLIC_FACTOR, 1.0), 0.0, 1.0);
-        const double roughness = std::clamp(getFloat(material, AI_MATKEY_ROUGHNESS_FACTOR, 1.0), 0.0, 1.0);
-        const double alpha = std::max(roughness * roughness, 1e-4);
-        m.shininess = std::clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 1024.0);
-        m.specular = std::clamp(glm::mix(0.04, 1.0, metallic) * (m.shininess + 8.0) / 8.0, 0.0, 1.0);
-        m.specularColor = glm::mix(glm::dvec3(1.0), m.color, metallic);
-        m.diffuse = 1.0 - metallic;
-    } else {
-        aiColor4D ks(0.0f, 0.0f, 0.0f, 1.0f);
-        material.Get(AI_MATKEY_COLOR_SPECULAR, ks);
-        const glm::dvec3 specular = finite(rgb(ks)) ? glm::max(rgb(ks), glm::dvec3(0.0)) : glm::dvec3(0.0);
-        const double strongest = std::max({specular.x, specular.y, specular.z});
-        m.specular = std::clamp(strongest, 0.0, 1.0);
-        m.specularColor = strongest > 0.0 ? clamp01(specular / strongest) : glm::dvec3(1.0);
-        m.shininess = std::clamp(getFloat(material, AI_MATKEY_SHININESS, 32.0), 1.0, 10000.0);
-    }
-    if (has(material, AI_MATKEY_GLOSSINESS_FACTOR)) {
-        m_notes.add("KHR_materials_pbrSpecularGlossiness approximated by the base colour");
-    }
-
-    // Alpha.
-    if (gltf) {
-        m.opacity = std::clamp(static_cast<double>(base.a), 0.0, 1.0);
-        if (alphaMode == "MASK") {
-            m.alphaMode = AlphaMode::Mask;
-        } else if (alphaMode == "BLEND") {
-            m.alphaMode = AlphaMode::Blend;
-            m_notes.add("alphaMode BLEND drawn as a cut-out");
-        }
-        m.alphaCutoff = std::clamp(getFloat(material, AI_MATKEY_GLTF_ALPHACUTOFF, 0.5), 0.0, 1.0);
-    } else {
-        m.opacity = std::clamp(getFloat(material, AI_MATKEY_OPACITY, 1.0), 0.0, 1.0);
-        if (m.opacity < 1.0) {
-            m.alphaMode = AlphaMode::Blend;
-            m_notes.add("transparency drawn as a cut-out");
-        }
-    }
-
-    // glTF extensions Assimp reports that speculum cannot draw.
-    if (getFloat(material, AI_MATKEY_CLEARCOAT_FACTOR, 0.0) > 0.0) {
-        m_notes.add("KHR_materials_clearcoat ignored");
-    }
-    if (has(material, AI_MATKEY_SHEEN_COLOR_FACTOR)) {
-        m_notes.add("KHR_materials_sheen ignored");
-    }
-    if (getFloat(material, AI_MATKEY_TRANSMISSION_FACTOR, 0.0) > 0.0) {
-        m_notes.add("KHR_materials_transmission ignored");
-    }
-    if (has(material, AI_MATKEY_VOLUME_THICKNESS_FACTOR)) {
-        m_notes.add("KHR_materials_volume ignored");
-    }
-    int shading = 0;
-    if (material.Get(AI_MATKEY_SHADING_MODEL, shading) == AI_SUCCESS && shading == aiShadingMode_Unlit) {
-        m_notes.add("KHR_materials_unlit drawn lit");
-    }
-    // Files hold floats: keep the project file's numbers as short as the file's own.
-    m.color = detail::shortestFloat(m.color);
-    m.specularColor = detail::shortestFloat(m.specularColor);
-    m.emission = detail::shortestFloat(m.emission);
-    m.specular = detail::shortestFloat(m.specular);
-    m.shininess = detail::shortestFloat(m.shininess);
-    m.diffuse = detail::shortestFloat(m.diffuse);
-    m.opacity = detail::shortestFloat(m.opacity);
-    m.alphaCutoff = detail::shortestFloat(m.alphaCutoff);
-    m.normalScale = detail::shortestFloat(m.normalScale);
+    m.emission = emissionOf(material, !m.emissionTexture.empty(), gltf, m_notes);
+    convertSpecular(material, pbr, m, m_notes);
+    convertAlpha(material, alphaMode, static_cast<double>(base.a), m, m_notes);
+    noteUndrawnExtensions(material, m_notes);
+    shortenNumbers(m);
     return m;
 }
 
