@@ -17,7 +17,7 @@ namespace {
 
 const std::vector<Family> kFamilies = {Family::Envmap,          Family::Parallax, Family::MirrorTechnique,
                                        Family::MirrorDepth,     Family::Shadows,  Family::Tessellation,
-                                       Family::ReflectedDetail, Family::Glossy,  Family::Setting};
+                                       Family::ReflectedDetail, Family::Glossy,   Family::Setting};
 
 std::string format(const char* pattern, double value) {
     char text[64];

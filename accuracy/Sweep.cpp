@@ -226,15 +226,16 @@ void planEnvmap(Configurations& out, const render::FrameInput& scene, const Scen
     if (!traits.reflector)
         return;
     const int own = scene.reflector->resolution;
-    const std::vector<int> resolutions =
-        withSceneValue(options.quick ? std::vector<int>{64, 128, 256} : std::vector<int>{64, 128, 256, 512}, own);
+    const std::vector<int> resolutions = withSceneValue(
+        options.quick ? std::vector<int>{64, 128, 256} : std::vector<int>{64, 128, 256, 512}, own);
     for (const MapMethod& method : kMethods)
         for (int n : resolutions) {
             Variation v;
             v.set(Part::Reflector, "map", int(method.map))
                 .set(Part::Reflector, "fill", int(method.fill))
                 .set(Part::Reflector, "resolution", n);
-            out.push_back(configuration(Family::Envmap, "envmap-" + methodId(method) + "-" + std::to_string(n),
+            out.push_back(configuration(Family::Envmap,
+                                        "envmap-" + methodId(method) + "-" + std::to_string(n),
                                         std::to_string(n), methodName(method), v));
         }
     if (!traits.proxyMakesSense)
@@ -245,9 +246,9 @@ void planEnvmap(Configurations& out, const render::FrameInput& scene, const Scen
             Variation v;
             v.parallax = on;
             v.set(Part::Reflector, "resolution", n);
-            out.push_back(configuration(Family::Parallax,
-                                        std::string("parallax-") + (on ? "on" : "off") + "-" + std::to_string(n),
-                                        std::to_string(n), on ? "parallax on" : "parallax off", v));
+            out.push_back(configuration(
+                Family::Parallax, std::string("parallax-") + (on ? "on" : "off") + "-" + std::to_string(n),
+                std::to_string(n), on ? "parallax on" : "parallax off", v));
         }
 }
 
@@ -271,7 +272,8 @@ void planMirrors(Configurations& out, const render::FrameInput& scene, const Sce
         Variation v;
         v.set(Part::Settings, "mirrorDepth", d);
         out.push_back(configuration(Family::MirrorDepth, "mirror-depth-" + std::to_string(d),
-                                    "depth " + std::to_string(d), "mirror depth", v, ReferenceKind::DeepMirrors));
+                                    "depth " + std::to_string(d), "mirror depth", v,
+                                    ReferenceKind::DeepMirrors));
     }
 }
 
@@ -282,18 +284,20 @@ void planShadowsAndMeshes(Configurations& out, const render::FrameInput& scene, 
         for (int k : withSceneValue({1, 3, 5, 7}, firstShadowPcf(scene))) {
             Variation v;
             v.set(Part::Shadows, "pcf", k);
-            out.push_back(configuration(Family::Shadows, "pcf-" + std::to_string(k), "pcf " + std::to_string(k),
-                                        "PCF kernel", v, ReferenceKind::HardShadows));
+            out.push_back(configuration(Family::Shadows, "pcf-" + std::to_string(k),
+                                        "pcf " + std::to_string(k), "PCF kernel", v,
+                                        ReferenceKind::HardShadows));
         }
     if (traits.teapotTessellation) {
-        const std::vector<int> levels = withSceneValue(
-            options.quick ? std::vector<int>{2, 4, 8, 16} : std::vector<int>{2, 4, 8, 16, 32},
-            *traits.teapotTessellation);
+        const std::vector<int> levels =
+            withSceneValue(options.quick ? std::vector<int>{2, 4, 8, 16} : std::vector<int>{2, 4, 8, 16, 32},
+                           *traits.teapotTessellation);
         for (int n : levels) {
             Variation v;
             v.tessellation = n;
             out.push_back(configuration(Family::Tessellation, "tessellation-" + std::to_string(n),
-                                        std::to_string(n), "teapot tessellation", v, ReferenceKind::FineMesh));
+                                        std::to_string(n), "teapot tessellation", v,
+                                        ReferenceKind::FineMesh));
         }
     }
     if (traits.simplifiableMeshes > 0)
@@ -303,8 +307,8 @@ void planShadowsAndMeshes(Configurations& out, const render::FrameInput& scene, 
             Variation v;
             v.set(Part::Settings, "simplifyReflections", simplified);
             const std::string name = simplified ? "simplified" : "full";
-            out.push_back(
-                configuration(Family::ReflectedDetail, "reflected-detail-" + name, name, "reflected detail", v));
+            out.push_back(configuration(Family::ReflectedDetail, "reflected-detail-" + name, name,
+                                        "reflected detail", v));
         }
 }
 
@@ -313,16 +317,17 @@ void planShadowsAndMeshes(Configurations& out, const render::FrameInput& scene, 
 void planGlossy(Configurations& out, const SceneTraits& traits, const SweepOptions& options) {
     if (traits.roughMirrors == 0 && !traits.roughReflector)
         return;
-    const std::vector<GlossyQuality> qualities = options.quick
-                                                     ? std::vector<GlossyQuality>{{4, 16}, {16, 64}}
-                                                     : std::vector<GlossyQuality>{{4, 16}, {16, 64}, {64, 256}};
+    const std::vector<GlossyQuality> qualities =
+        options.quick ? std::vector<GlossyQuality>{{4, 16}, {16, 64}}
+                      : std::vector<GlossyQuality>{{4, 16}, {16, 64}, {64, 256}};
     for (ReferenceKind kind : {ReferenceKind::RoughLow, ReferenceKind::RoughMid, ReferenceKind::RoughHigh}) {
         const double roughness = *referenceRoughness(kind);
         const std::string r = roughnessText(roughness);
         Variation mip;
         mip.roughness = roughness;
         mip.set(Part::Settings, "glossyFilter", int(render::GlossyFilter::Mip));
-        out.push_back(configuration(Family::Glossy, "glossy-r" + r + "-mip", "mip", "r " + r + " mip", mip, kind));
+        out.push_back(
+            configuration(Family::Glossy, "glossy-r" + r + "-mip", "mip", "r " + r + " mip", mip, kind));
         for (const GlossyQuality& q : qualities) {
             Variation v;
             v.roughness = roughness;
@@ -354,8 +359,8 @@ void planDeclared(Configurations& out, const SceneTraits& traits) {
             Variation v;
             v.set(part, spec->name, value);
             out.push_back(configuration(Family::Setting,
-                                        "setting-" + std::string(partName(part)) + "-" + std::string(spec->name) +
-                                            "-" + text,
+                                        "setting-" + std::string(partName(part)) + "-" +
+                                            std::string(spec->name) + "-" + text,
                                         std::string(spec->name) + " " + text, std::string(spec->label), v));
         }
     }

@@ -64,9 +64,9 @@ struct Configuration {
 // What the sweep knows about the scene, derived from its frame.
 struct SceneTraits {
     bool reflector = false;
-    bool ownProxy = false;        // the scene's reflector has a parallax proxy of its own
+    bool ownProxy = false;                       // the scene's reflector has a parallax proxy of its own
     std::optional<render::ParallaxParams> proxy; // what "parallax on" uses: its own, or sceneProxy()
-    bool proxyMakesSense = false; // own, or the scene's bounds enclose the reflector
+    bool proxyMakesSense = false;                // own, or the scene's bounds enclose the reflector
     std::size_t mirrors = 0;
     std::size_t shadowedLights = 0;        // lights with shadows on
     std::optional<int> teapotTessellation; // of the (first) built-in teapot

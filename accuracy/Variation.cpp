@@ -104,8 +104,9 @@ base::Result<Variation> declaredVariation(std::string_view column, std::string_v
         // A copy: the walk hands out each spec for the length of one visit.
         std::optional<render::FieldSpec> found;
         forEachPartField(part, [&](const render::FieldSpec& spec) {
-            const bool swept = !spec.sweep.empty() || column == spec.sweepName ||
-                               std::find(kSettingNames.begin(), kSettingNames.end(), column) != kSettingNames.end();
+            const bool swept =
+                !spec.sweep.empty() || column == spec.sweepName ||
+                std::find(kSettingNames.begin(), kSettingNames.end(), column) != kSettingNames.end();
             if (!found && swept && columnOf(spec) == column && spec.type != render::FieldType::Object)
                 found = spec;
         });
@@ -125,7 +126,8 @@ base::Result<Variation> declaredVariation(std::string_view column, std::string_v
 
 // The text of a part's field over every component of the part: its value, or "mixed" where they differ,
 // or nothing where the scene has no such component.
-std::optional<std::string> partText(const render::FrameInput& frame, Part part, const render::FieldSpec& spec) {
+std::optional<std::string> partText(const render::FrameInput& frame, Part part,
+                                    const render::FieldSpec& spec) {
     std::set<std::string> texts;
     const auto add = [&](const auto& component) {
         if (auto value = render::getField(component, spec.name))
@@ -272,8 +274,8 @@ render::FrameInput applyVariation(const render::FrameInput& scene, const Variati
     for (const FieldAssignment& a : v.fields)
         applyField(out, a);
     if (out.reflector && v.parallax)
-        out.reflector->parallax = *v.parallax ? out.reflector->parallax ? out.reflector->parallax : proxy
-                                              : std::nullopt;
+        out.reflector->parallax =
+            *v.parallax ? out.reflector->parallax ? out.reflector->parallax : proxy : std::nullopt;
     if (v.roughness) {
         for (render::Mirror& m : out.mirrors)
             if (m.roughness > 0.0)
@@ -357,8 +359,8 @@ base::Result<Variation> variationOf(std::string_view column, std::string_view va
         if (column == "tessellation") {
             if (!whole || number != int(number) || number < render::kMinTessellation ||
                 number > render::kMaxTessellation)
-                return base::Error{"not a tessellation in " + std::to_string(render::kMinTessellation) + ".." +
-                                   std::to_string(render::kMaxTessellation)};
+                return base::Error{"not a tessellation in " + std::to_string(render::kMinTessellation) +
+                                   ".." + std::to_string(render::kMaxTessellation)};
             v.tessellation = int(number);
             return v;
         }

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "accuracy/run/Measure.hpp"
 #include "accuracy/Results.hpp"
 #include "accuracy/Sweep.hpp"
+#include "accuracy/run/Measure.hpp"
 #include "base/Result.hpp"
 #include "render/renderer/Renderer.hpp"
 

@@ -104,9 +104,10 @@ PropertyInfo infoOf(const render::FieldSpec& spec, const QString& key) {
     }
     info.options = choiceLabels(spec);
     if (spec.type == render::FieldType::Path)
-        info.fileFilter = spec.name == "file"
-                              ? scene::modelFileFilter()
-                              : QStringLiteral("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.hdr);;All files (*)");
+        info.fileFilter =
+            spec.name == "file"
+                ? scene::modelFileFilter()
+                : QStringLiteral("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr *.hdr);;All files (*)");
     return info;
 }
 
@@ -178,7 +179,8 @@ QVariant toVariant(const render::FieldValue& value) {
     return QString::fromStdString(std::get<std::string>(value));
 }
 
-base::Result<std::string> checkedPath(const render::FieldSpec& spec, const QString& entered, bool allowEmpty) {
+base::Result<std::string> checkedPath(const render::FieldSpec& spec, const QString& entered,
+                                      bool allowEmpty) {
     const QString path = entered.trimmed();
     const std::string label(spec.label);
     if (path.isEmpty()) {

@@ -80,7 +80,8 @@ template <typename Root, typename T, typename F>
 void addField(std::vector<Property<Root>>& out, const QString& prefix, const Reach<Root, T>& reach,
               const Shown<Root>& visible, const F& f) {
     using Member = typename F::MemberType;
-    const QString key = prefix + QLatin1Char('.') + QString::fromUtf8(f.spec.name.data(), qsizetype(f.spec.name.size()));
+    const QString key =
+        prefix + QLatin1Char('.') + QString::fromUtf8(f.spec.name.data(), qsizetype(f.spec.name.size()));
     const auto member = [reach, f](Root& root) -> Member* {
         T* t = reach(root);
         return t ? &(static_cast<typename F::OwnerType&>(*t).*f.member) : nullptr;
@@ -150,14 +151,16 @@ Property<Root> valueProperty(const QString& key, const Reach<Root, T>& reach, co
     p.set = [reach, f](Root& root, const QVariant& value) -> base::Status {
         return editCopy(root, reach, f, [&](T& t) -> base::Status {
             Member& m = static_cast<Owner&>(t).*f.member;
-            if constexpr (std::is_same_v<Member, render::TextureSource> || std::is_same_v<Member, std::string>) {
+            if constexpr (std::is_same_v<Member, render::TextureSource> ||
+                          std::is_same_v<Member, std::string>) {
                 if constexpr (std::is_same_v<Member, std::string>) {
                     if (f.spec.type == render::FieldType::Text) {
                         m = value.toString().toStdString();
                         return base::Done{};
                     }
                 }
-                auto path = checkedPath(f.spec, value.toString(), std::is_same_v<Member, render::TextureSource>);
+                auto path =
+                    checkedPath(f.spec, value.toString(), std::is_same_v<Member, render::TextureSource>);
                 if (!path)
                     return base::Error{path.error()};
                 if constexpr (std::is_same_v<Member, render::TextureSource>)
@@ -174,7 +177,7 @@ Property<Root> valueProperty(const QString& key, const Reach<Root, T>& reach, co
                 if (auto problem = render::fieldProblem(f.spec, *v))
                     return refuse(f.spec, *problem);
                 return render::fromFieldValue(*v, m) ? base::Status(base::Done{})
-                                                      : refuse(f.spec, "has another type");
+                                                     : refuse(f.spec, "has another type");
             }
         });
     };

@@ -32,27 +32,32 @@ ComponentInfo component(std::optional<C> NodeData::*member, std::string_view key
         d.unknown.erase(std::string(key)); // the file's unknown fields of the component go with it
         return ok();
     };
-    fieldprops::addProperties<NodeData, C>(c.properties, c.key, [member](NodeData& d) -> C* {
-        auto& m = d.*member;
-        return m ? &*m : nullptr;
-    }, {});
+    fieldprops::addProperties<NodeData, C>(c.properties, c.key,
+                                           [member](NodeData& d) -> C* {
+                                               auto& m = d.*member;
+                                               return m ? &*m : nullptr;
+                                           },
+                                           {});
     return c;
 }
 
 Property<NodeData>* find(ComponentInfo& c, const char* key) {
-    const auto it = std::find_if(c.properties.begin(), c.properties.end(),
-                                 [&](const Property<NodeData>& p) { return p.info.key == QLatin1String(key); });
+    const auto it = std::find_if(c.properties.begin(), c.properties.end(), [&](const Property<NodeData>& p) {
+        return p.info.key == QLatin1String(key);
+    });
     return it == c.properties.end() ? nullptr : &*it;
 }
 
 void erase(ComponentInfo& c, const char* key) {
-    std::erase_if(c.properties, [&](const Property<NodeData>& p) { return p.info.key == QLatin1String(key); });
+    std::erase_if(c.properties,
+                  [&](const Property<NodeData>& p) { return p.info.key == QLatin1String(key); });
 }
 
 // The mesh's source as one choice: a built-in shape, or the model file.
 Property<NodeData> meshSource() {
-    static const std::array<scene::BuiltinMesh, 4> kinds{scene::BuiltinMesh::Teapot, scene::BuiltinMesh::Sphere,
-                                                         scene::BuiltinMesh::Box, scene::BuiltinMesh::Plane};
+    static const std::array<scene::BuiltinMesh, 4> kinds{scene::BuiltinMesh::Teapot,
+                                                         scene::BuiltinMesh::Sphere, scene::BuiltinMesh::Box,
+                                                         scene::BuiltinMesh::Plane};
     QStringList options;
     for (const render::names::Name& n : scene::kBuiltinMeshNames)
         options << QString::fromUtf8(n.label.data(), qsizetype(n.label.size()));
@@ -132,8 +137,8 @@ ComponentInfo transformGroup() {
     c.title = QStringLiteral("Transform");
     c.optional = false;
     c.present = [](const NodeData&) { return true; };
-    fieldprops::addProperties<NodeData, scene::Transform>(
-        c.properties, c.key, [](NodeData& d) { return &d.transform; }, {});
+    fieldprops::addProperties<NodeData, scene::Transform>(c.properties, c.key,
+                                                          [](NodeData& d) { return &d.transform; }, {});
     return c;
 }
 

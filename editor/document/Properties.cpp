@@ -3,9 +3,9 @@
 #include "editor/document/FieldProperties.hpp"
 #include "editor/document/NodeComponentGroups.hpp"
 #include "editor/document/PropertyMakers.hpp"
-#include "render/frame/Settings.hpp"
 #include "render/frame/SceneLimits.hpp"
 #include "render/frame/SceneNames.hpp"
+#include "render/frame/Settings.hpp"
 #include "scene/model/SceneChecks.hpp"
 
 #include <cmath>

@@ -199,7 +199,8 @@ private:
 
 } // namespace
 
-SweepApplication applySweepSettings(scene::Scene& scene, const accuracy::Settings& settings, const QString& text,
+SweepApplication applySweepSettings(scene::Scene& scene, const accuracy::Settings& settings,
+                                    const QString& text,
                                     const std::optional<scene::ReflectorParallax>& derivedProxy) {
     SweepApplication out;
     SweepEdits edits(scene, derivedProxy);

@@ -4,8 +4,8 @@
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/ViewPresetActions.hpp"
 #include "editor/ui/Viewport.hpp"
-#include "scene/model/SceneData.hpp"
 #include "scene/model/Scene.hpp"
+#include "scene/model/SceneData.hpp"
 
 namespace speculum::ui {
 

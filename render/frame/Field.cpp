@@ -63,7 +63,8 @@ std::optional<std::string> integerProblem(const FieldSpec& spec, int v) {
     if (spec.rule == FieldRule::PowerOfTwo && !(inRange && v > 0 && (v & (v - 1)) == 0))
         return "must be a power of two in " + range + got;
     if (spec.rule == FieldRule::Odd && !(inRange && v % 2 != 0))
-        return "must be an odd " + std::string(spec.noun.empty() ? "number" : spec.noun) + " in " + range + got;
+        return "must be an odd " + std::string(spec.noun.empty() ? "number" : spec.noun) + " in " + range +
+               got;
     return numberProblem(spec, v);
 }
 
@@ -174,7 +175,8 @@ std::variant<FieldValue, std::string> parseFieldValue(const FieldSpec& spec, std
         if (spec.choices.size() == 2) {
             if (text == spec.choices[0].file || text == spec.choices[1].file)
                 return FieldValue(text == spec.choices[1].file);
-            return "expected " + std::string(spec.choices[0].file) + " or " + std::string(spec.choices[1].file);
+            return "expected " + std::string(spec.choices[0].file) + " or " +
+                   std::string(spec.choices[1].file);
         }
         if (text == "true" || text == "false")
             return FieldValue(text == "true");

@@ -49,7 +49,8 @@ enum class FieldRule {
     None,
     PowerOfTwo, // integers: 1, 2, 4, ...
     Odd,        // integers
-    Magnitude,  // numbers and vector components: the range bounds |x| and 0 is refused (a scale's sign mirrors)
+    Magnitude,  // numbers and vector components: the range bounds |x| and 0 is refused (a scale's sign
+                // mirrors)
 };
 
 // Whether the writer may leave a field out.
@@ -114,7 +115,9 @@ constexpr Field<Owner, Member> field(Member Owner::*member, FieldSpec spec,
 }
 
 template <typename T>
-concept HasFields = requires { T::fields([](const auto&) {}); };
+concept HasFields = requires {
+    T::fields([](const auto&) {});
+};
 
 template <typename T>
 struct IsOptional : std::false_type {};
@@ -145,9 +148,9 @@ using FieldValue = std::variant<bool, int, double, glm::dvec2, glm::dvec3, std::
 // A member's value as a FieldValue, and back (false when the value has another type). Enumerations are
 // their index; other member types (TextureSource) add overloads beside their own definition.
 template <typename M>
-concept PlainFieldValue = std::is_enum_v<M> || std::is_same_v<M, bool> || std::is_same_v<M, int> ||
-                          std::is_same_v<M, double> || std::is_same_v<M, glm::dvec2> ||
-                          std::is_same_v<M, glm::dvec3> || std::is_same_v<M, std::string>;
+concept PlainFieldValue =
+    std::is_enum_v<M> || std::is_same_v<M, bool> || std::is_same_v<M, int> || std::is_same_v<M, double> ||
+    std::is_same_v<M, glm::dvec2> || std::is_same_v<M, glm::dvec3> || std::is_same_v<M, std::string>;
 
 template <PlainFieldValue M>
 FieldValue toFieldValue(const M& value) {
@@ -221,7 +224,7 @@ std::optional<std::string> setField(T& value, std::string_view name, const Field
         using Member = typename std::decay_t<decltype(f)>::MemberType;
         if (f.spec.name != name)
             return;
-        if constexpr (requires(Member& m) { fromFieldValue(v, m); }) {
+        if constexpr (requires(Member & m) { fromFieldValue(v, m); }) {
             problem = fieldProblem(f.spec, v);
             Member converted{};
             if (!problem && !fromFieldValue(v, converted))

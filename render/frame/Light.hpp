@@ -64,15 +64,17 @@ struct LightParams {
 template <typename Visit>
 void LightParams::fields(Visit&& visit) {
     constexpr auto spot = [](const LightParams& l) { return l.type == LightType::Spot; };
-    visit(field(&LightParams::type, {.name = "type",
-                                     .label = "Type",
-                                     .meaning = "Point (all around), directional (along the node's −Y, like the "
-                                                "sun) or spot (a cone along −Y)",
-                                     .type = FieldType::Choice,
-                                     .noun = "light type",
-                                     .choices = names::kLightTypes}));
-    visit(field(&LightParams::color,
-                {.name = "color", .label = "Colour", .meaning = "The light's colour", .type = FieldType::Color}));
+    visit(field(&LightParams::type,
+                {.name = "type",
+                 .label = "Type",
+                 .meaning = "Point (all around), directional (along the node's −Y, like the "
+                            "sun) or spot (a cone along −Y)",
+                 .type = FieldType::Choice,
+                 .noun = "light type",
+                 .choices = names::kLightTypes}));
+    visit(field(
+        &LightParams::color,
+        {.name = "color", .label = "Colour", .meaning = "The light's colour", .type = FieldType::Color}));
     visit(field(&LightParams::intensity, {.name = "intensity",
                                           .label = "Intensity",
                                           .meaning = "Multiplies the colour",
@@ -102,10 +104,11 @@ void LightParams::fields(Visit&& visit) {
                  .max = 1,
                  .slider = true},
                 spot));
-    visit(field(&LightParams::shadows, {.name = "shadows",
-                                        .label = "Casts shadows",
-                                        .meaning = "The light's shadow map; absent, the light casts no shadows",
-                                        .type = FieldType::Object}));
+    visit(
+        field(&LightParams::shadows, {.name = "shadows",
+                                      .label = "Casts shadows",
+                                      .meaning = "The light's shadow map; absent, the light casts no shadows",
+                                      .type = FieldType::Object}));
 }
 
 // A light of the frame: its parameters, where it is and which way it points.

@@ -81,37 +81,51 @@ template <typename Visit>
 void Material::fields(Visit&& visit) {
     // Coefficients that multiply light: from 0 up to the intensity limit, the slider to 2.
     const auto coefficient = [](std::string_view name, std::string_view label, std::string_view meaning) {
-        return FieldSpec{.name = name, .label = label, .meaning = meaning, .min = 0, .max = kMaxIntensity,
-                         .slider = true, .softMax = 2.0};
+        return FieldSpec{.name = name,
+                         .label = label,
+                         .meaning = meaning,
+                         .min = 0,
+                         .max = kMaxIntensity,
+                         .slider = true,
+                         .softMax = 2.0};
     };
     const auto texture = [](std::string_view name, std::string_view label, std::string_view meaning) {
-        return FieldSpec{.name = name, .label = label, .meaning = meaning, .type = FieldType::Path,
+        return FieldSpec{.name = name,
+                         .label = label,
+                         .meaning = meaning,
+                         .type = FieldType::Path,
                          .write = FieldWrite::UnlessDefault};
     };
-    const auto modelField = [](FieldSpec spec) { // what imported models bring; files without it stay as they were
-        spec.write = FieldWrite::UnlessDefault;
-        return spec;
-    };
-    visit(field(&Material::color, {.name = "color", .label = "Colour", .meaning = "The surface's colour",
-                                   .type = FieldType::Color}));
+    const auto modelField =
+        [](FieldSpec spec) { // what imported models bring; files without it stay as they were
+            spec.write = FieldWrite::UnlessDefault;
+            return spec;
+        };
+    visit(field(
+        &Material::color,
+        {.name = "color", .label = "Colour", .meaning = "The surface's colour", .type = FieldType::Color}));
     visit(field(&Material::ambient, coefficient("ambient", "Ambient", "How much ambient light it reflects")));
     visit(field(&Material::diffuse, coefficient("diffuse", "Diffuse", "How much light it scatters")));
     visit(field(&Material::specular, coefficient("specular", "Specular", "The strength of its highlights")));
-    visit(field(&Material::shininess, {.name = "shininess",
-                                       .label = "Shininess",
-                                       .meaning = "The Blinn-Phong exponent: larger is a smaller, sharper highlight",
-                                       .min = 0,
-                                       .max = kMaxShininess,
-                                       .slider = true,
-                                       .softMin = 1,
-                                       .softMax = 256,
-                                       .decimals = 1,
-                                       .step = 1}));
-    visit(field(&Material::emission, {.name = "emission", .label = "Emission",
-                                      .meaning = "Light it gives off itself, lit or not", .type = FieldType::Color}));
+    visit(field(&Material::shininess,
+                {.name = "shininess",
+                 .label = "Shininess",
+                 .meaning = "The Blinn-Phong exponent: larger is a smaller, sharper highlight",
+                 .min = 0,
+                 .max = kMaxShininess,
+                 .slider = true,
+                 .softMin = 1,
+                 .softMax = 256,
+                 .decimals = 1,
+                 .step = 1}));
+    visit(field(&Material::emission, {.name = "emission",
+                                      .label = "Emission",
+                                      .meaning = "Light it gives off itself, lit or not",
+                                      .type = FieldType::Color}));
     visit(field(&Material::texture, texture("texture", "Texture", "The base colour image; empty for none")));
     visit(field(&Material::specularColor,
-                modelField({.name = "specularColor", .label = "Highlight colour",
+                modelField({.name = "specularColor",
+                            .label = "Highlight colour",
                             .meaning = "Tints the highlights (a metal's take its colour)",
                             .type = FieldType::Color})));
     visit(field(&Material::emissionTexture,
@@ -119,26 +133,43 @@ void Material::fields(Visit&& visit) {
     visit(field(&Material::normalTexture,
                 texture("normalTexture", "Normal map", "Tangent-space normal map; empty for none")));
     visit(field(&Material::normalScale,
-                modelField({.name = "normalScale", .label = "Normal strength",
+                modelField({.name = "normalScale",
+                            .label = "Normal strength",
                             .meaning = "Scales the normal map's tilt (negative flips it)",
-                            .min = -kMaxNormalScale, .max = kMaxNormalScale, .slider = true, .softMax = 2.0})));
+                            .min = -kMaxNormalScale,
+                            .max = kMaxNormalScale,
+                            .slider = true,
+                            .softMax = 2.0})));
     visit(field(&Material::wrap,
-                modelField({.name = "wrap", .label = "Wrap",
+                modelField({.name = "wrap",
+                            .label = "Wrap",
                             .meaning = "How every texture repeats beyond its edges, along u and v: one mode "
                                        "for both, or [u, v]",
-                            .type = FieldType::WrapPair, .noun = "wrap mode", .choices = names::kTextureWraps})));
-    visit(field(&Material::opacity,
-                modelField({.name = "opacity", .label = "Opacity", .meaning = "The base alpha",
-                            .min = 0, .max = 1, .slider = true})));
-    visit(field(&Material::alphaMode,
-                modelField({.name = "alphaMode", .label = "Alpha",
-                            .meaning = "Opaque ignores alpha; mask cuts away below the cutoff; blend is drawn "
-                                       "as a mask at one half",
-                            .type = FieldType::Choice, .noun = "alpha mode", .choices = names::kAlphaModes})));
+                            .type = FieldType::WrapPair,
+                            .noun = "wrap mode",
+                            .choices = names::kTextureWraps})));
+    visit(field(&Material::opacity, modelField({.name = "opacity",
+                                                .label = "Opacity",
+                                                .meaning = "The base alpha",
+                                                .min = 0,
+                                                .max = 1,
+                                                .slider = true})));
+    visit(
+        field(&Material::alphaMode,
+              modelField({.name = "alphaMode",
+                          .label = "Alpha",
+                          .meaning = "Opaque ignores alpha; mask cuts away below the cutoff; blend is drawn "
+                                     "as a mask at one half",
+                          .type = FieldType::Choice,
+                          .noun = "alpha mode",
+                          .choices = names::kAlphaModes})));
     visit(field(&Material::alphaCutoff,
-                modelField({.name = "alphaCutoff", .label = "Alpha cutoff",
+                modelField({.name = "alphaCutoff",
+                            .label = "Alpha cutoff",
                             .meaning = "A masked material is cut away where its alpha is below this",
-                            .min = 0, .max = 1, .slider = true})));
+                            .min = 0,
+                            .max = 1,
+                            .slider = true})));
 }
 
 } // namespace speculum::render

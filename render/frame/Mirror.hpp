@@ -54,34 +54,35 @@ void MirrorParams::fields(Visit&& visit) {
                  .min = 0,
                  .max = 1,
                  .slider = true}));
-    visit(field(&MirrorParams::technique, {.name = "technique",
-                                           .label = "Technique",
-                                           .meaning = "How the reflection is drawn: through the stencil buffer "
-                                                      "or into a texture",
-                                           .type = FieldType::Choice,
-                                           .noun = "mirror technique",
-                                           .choices = names::kMirrorTechniques,
-                                           .drawnInMaps = false}));
-    visit(field(&MirrorParams::tint, {.name = "tint",
-                                      .label = "Tint",
-                                      .meaning = "Multiplies the reflection",
-                                      .type = FieldType::Color}));
+    visit(
+        field(&MirrorParams::technique, {.name = "technique",
+                                         .label = "Technique",
+                                         .meaning = "How the reflection is drawn: through the stencil buffer "
+                                                    "or into a texture",
+                                         .type = FieldType::Choice,
+                                         .noun = "mirror technique",
+                                         .choices = names::kMirrorTechniques,
+                                         .drawnInMaps = false}));
+    visit(field(
+        &MirrorParams::tint,
+        {.name = "tint", .label = "Tint", .meaning = "Multiplies the reflection", .type = FieldType::Color}));
     visit(field(&MirrorParams::fresnel,
                 {.name = "fresnel",
                  .label = "Fresnel",
                  .meaning = "Schlick: the reflectivity applies at normal incidence and rises to 1 at grazing "
                             "angles",
                  .type = FieldType::Bool}));
-    visit(field(&MirrorParams::roughness,
-                {.name = "roughness",
-                 .label = "Roughness",
-                 .meaning = "GGX microfacet roughness (α = roughness²): 0 is a perfect mirror; a rough mirror "
-                            "is drawn with the texture technique",
-                 .min = 0,
-                 .max = 1,
-                 .formerName = "blur",
-                 .slider = true,
-                 .drawnInMaps = false}));
+    visit(
+        field(&MirrorParams::roughness,
+              {.name = "roughness",
+               .label = "Roughness",
+               .meaning = "GGX microfacet roughness (α = roughness²): 0 is a perfect mirror; a rough mirror "
+                          "is drawn with the texture technique",
+               .min = 0,
+               .max = 1,
+               .formerName = "blur",
+               .slider = true,
+               .drawnInMaps = false}));
 #ifdef SPECULUM_FIELD_PROBE
     static constexpr double kProbeValues[] = {0.25, 0.75};
     visit(field(&MirrorParams::probe, {.name = "probe",

@@ -56,26 +56,28 @@ void ParallaxParams::fields(Visit&& visit) {
                  .max = kMaxCoordinate,
                  .unit = " u"},
                 sphere));
-    visit(field(&ParallaxParams::min,
-                {.name = "min",
-                 .label = "Proxy box min",
-                 .meaning = "The box's lower corner relative to the reflector's centre: every component below 0",
-                 .type = FieldType::Vector3,
-                 .min = -kMaxCoordinate,
-                 .max = kMaxCoordinate,
-                 .unit = " u",
-                 .noun = "coordinates"},
-                box));
-    visit(field(&ParallaxParams::max,
-                {.name = "max",
-                 .label = "Proxy box max",
-                 .meaning = "The box's upper corner relative to the reflector's centre: every component above 0",
-                 .type = FieldType::Vector3,
-                 .min = -kMaxCoordinate,
-                 .max = kMaxCoordinate,
-                 .unit = " u",
-                 .noun = "coordinates"},
-                box));
+    visit(field(
+        &ParallaxParams::min,
+        {.name = "min",
+         .label = "Proxy box min",
+         .meaning = "The box's lower corner relative to the reflector's centre: every component below 0",
+         .type = FieldType::Vector3,
+         .min = -kMaxCoordinate,
+         .max = kMaxCoordinate,
+         .unit = " u",
+         .noun = "coordinates"},
+        box));
+    visit(field(
+        &ParallaxParams::max,
+        {.name = "max",
+         .label = "Proxy box max",
+         .meaning = "The box's upper corner relative to the reflector's centre: every component above 0",
+         .type = FieldType::Vector3,
+         .min = -kMaxCoordinate,
+         .max = kMaxCoordinate,
+         .unit = " u",
+         .noun = "coordinates"},
+        box));
 }
 
 // What is wrong with a proxy beyond its single fields (a box that does not contain the capture point), as
@@ -104,29 +106,32 @@ template <typename Visit>
 void ReflectorParams::fields(Visit&& visit) {
     constexpr auto nonLinear = [](const ReflectorParams& r) { return r.map != ReflectorMap::Cube; };
     // What only the lookups read (not what the map draws) says .drawnInMaps = false.
-    visit(field(&ReflectorParams::map, {.name = "map",
-                                        .label = "Environment map",
-                                        .meaning = "The map's layout: a cube, two paraboloids, or a tennis ball",
-                                        .type = FieldType::Choice,
-                                        .noun = "reflector map",
-                                        .choices = names::kReflectorMaps}));
-    visit(field(&ReflectorParams::resolution,
-                {.name = "resolution",
-                 .label = "Resolution",
-                 .meaning = "Texels per cube face side, per paraboloid side, or of the tennis ball's short side",
-                 .type = FieldType::Integer,
-                 .min = kMinEnvironmentMapSize,
-                 .max = kMaxEnvironmentMapSize,
-                 .unit = " px",
-                 .decimals = 0,
-                 .step = 32}));
-    visit(field(&ReflectorParams::reflectivity, {.name = "reflectivity",
-                                                 .label = "Reflectivity",
-                                                 .meaning = "How much of the reflection shows; 1 = perfect mirror",
-                                                 .min = 0,
-                                                 .max = 1,
-                                                 .slider = true,
-                                                 .drawnInMaps = false}));
+    visit(field(&ReflectorParams::map,
+                {.name = "map",
+                 .label = "Environment map",
+                 .meaning = "The map's layout: a cube, two paraboloids, or a tennis ball",
+                 .type = FieldType::Choice,
+                 .noun = "reflector map",
+                 .choices = names::kReflectorMaps}));
+    visit(field(
+        &ReflectorParams::resolution,
+        {.name = "resolution",
+         .label = "Resolution",
+         .meaning = "Texels per cube face side, per paraboloid side, or of the tennis ball's short side",
+         .type = FieldType::Integer,
+         .min = kMinEnvironmentMapSize,
+         .max = kMaxEnvironmentMapSize,
+         .unit = " px",
+         .decimals = 0,
+         .step = 32}));
+    visit(field(&ReflectorParams::reflectivity,
+                {.name = "reflectivity",
+                 .label = "Reflectivity",
+                 .meaning = "How much of the reflection shows; 1 = perfect mirror",
+                 .min = 0,
+                 .max = 1,
+                 .slider = true,
+                 .drawnInMaps = false}));
     visit(field(&ReflectorParams::fresnel,
                 {.name = "fresnel",
                  .label = "Fresnel",
@@ -143,27 +148,30 @@ void ReflectorParams::fields(Visit&& visit) {
                  .choices = names::kReflectorFills,
                  .write = FieldWrite::Everywhere},
                 nonLinear));
-    visit(field(&ReflectorParams::parallax,
-                {.name = "parallax",
-                 .label = "Parallax proxy",
-                 .meaning = "Corrects the map's lookups for the distance to what it shows: each reflected ray "
-                            "is intersected with this sphere or box around the reflector's centre (world "
-                            "axes); absent, everything is treated as infinitely far away",
-                 .type = FieldType::Object,
+    visit(
+        field(&ReflectorParams::parallax,
+              {.name = "parallax",
+               .label = "Parallax proxy",
+               .meaning = "Corrects the map's lookups for the distance to what it shows: each reflected ray "
+                          "is intersected with this sphere or box around the reflector's centre (world "
+                          "axes); absent, everything is treated as infinitely far away",
+               .type = FieldType::Object,
+               .drawnInMaps = false}));
+    visit(field(&ReflectorParams::update,
+                {.name = "update",
+                 .label = "Update",
+                 .meaning = "When the map is drawn again: every frame, when something "
+                            "it sees changes, or once",
+                 .type = FieldType::Choice,
+                 .noun = "reflector update",
+                 .choices = names::kReflectorUpdates,
                  .drawnInMaps = false}));
-    visit(field(&ReflectorParams::update, {.name = "update",
-                                           .label = "Update",
-                                           .meaning = "When the map is drawn again: every frame, when something "
-                                                      "it sees changes, or once",
-                                           .type = FieldType::Choice,
-                                           .noun = "reflector update",
-                                           .choices = names::kReflectorUpdates,
-                                           .drawnInMaps = false}));
     visit(field(&ReflectorParams::mirrorDepth,
                 {.name = "mirrorDepth",
                  .label = "Mirror depth in the map",
-                 .meaning = "How many levels of planar mirrors reflect inside the environment map, mirrors seen "
-                            "in mirrors included; 0 shows them with their own material",
+                 .meaning =
+                     "How many levels of planar mirrors reflect inside the environment map, mirrors seen "
+                     "in mirrors included; 0 shows them with their own material",
                  .type = FieldType::Integer,
                  .min = 0,
                  .max = kMaxMirrorDepth}));

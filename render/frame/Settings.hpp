@@ -116,8 +116,11 @@ struct Camera {
 
 template <typename Visit>
 void Camera::fields(Visit&& visit) {
-    const FieldSpec point{.type = FieldType::Vector3, .min = -kMaxCoordinate, .max = kMaxCoordinate,
-                          .unit = " u", .noun = "coordinates"};
+    const FieldSpec point{.type = FieldType::Vector3,
+                          .min = -kMaxCoordinate,
+                          .max = kMaxCoordinate,
+                          .unit = " u",
+                          .noun = "coordinates"};
     FieldSpec position = point, target = point;
     position.name = "position", position.label = "Position", position.meaning = "Where the camera is";
     target.name = "target", target.label = "Target", target.meaning = "The point the camera looks at";

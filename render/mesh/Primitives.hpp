@@ -4,8 +4,8 @@
 
 namespace speculum::render {
 
-// Built-in meshes (sizes: docs/scene-format.md, "mesh"). All are counter-clockwise seen from outside, with unit
-// normals and one uv per vertex. Texture convention, shared with Assimp's importers: v = 0 is the bottom
+// Built-in meshes (sizes: docs/scene-format.md, "mesh"). All are counter-clockwise seen from outside, with
+// unit normals and one uv per vertex. Texture convention, shared with Assimp's importers: v = 0 is the bottom
 // row of the image and v = 1 its top (OpenGL's convention), u runs left to right.
 
 inline constexpr int kSphereDefaultTessellation = 32;

@@ -104,7 +104,8 @@ int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>
     if (fitted.size == reflector.resolution)
         return fitted.size;
     const std::string asked = std::to_string(reflector.resolution) + " " +
-                              std::string(names::fileName(names::kReflectorMaps, reflector.map)) + " environment map";
+                              std::string(names::fileName(names::kReflectorMaps, reflector.map)) +
+                              " environment map";
     if (fitted.size == 0)
         warnings.push_back(name + ": the " + asked + " " + fitted.reason + ", nor did any down to " +
                            std::to_string(kMinEnvmapResolution) + "; the reflector is drawn without it");

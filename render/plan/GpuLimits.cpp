@@ -72,8 +72,8 @@ std::optional<FrameInput> fitToGpuLimits(const FrameInput& input, const GpuLimit
         if (n > most) {
             warnings.push_back(name + ": resolution " + std::to_string(n) +
                                " is more than this GPU can hold for a " +
-                               std::string(names::fileName(names::kReflectorMaps, reflector.map)) + " map (at most " +
-                               std::to_string(most) + "); using " + std::to_string(most));
+                               std::string(names::fileName(names::kReflectorMaps, reflector.map)) +
+                               " map (at most " + std::to_string(most) + "); using " + std::to_string(most));
             copy().reflector->resolution = most;
         } else if (n < kMinEnvmapResolution) {
             warnings.push_back(name + ": resolution " + std::to_string(n) + " is too small; using " +

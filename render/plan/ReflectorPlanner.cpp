@@ -290,7 +290,8 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     if (reflector.map == ReflectorMap::Cube)
         what = "a cube map (6 faces of " + size + ")";
     else {
-        what = "a " + std::string(names::fileName(names::kReflectorMaps, reflector.map)) + " map (2 components of " +
+        what = "a " + std::string(names::fileName(names::kReflectorMaps, reflector.map)) +
+               " map (2 components of " +
                (reflector.map == ReflectorMap::TennisBall ? std::to_string(n) + "×" + std::to_string(3 * n)
                                                           : size) +
                ", " +

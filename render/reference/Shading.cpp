@@ -72,8 +72,7 @@ glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, co
         base *= glm::dvec3(m_textures[textures.base].sample(surfaceHit.uv, m.wrap[0], m.wrap[1]));
     glm::dvec3 emitted = m.emission;
     if (textures.emission >= 0)
-        emitted *= glm::dvec3(m_textures[textures.emission].sample(surfaceHit.uv, m.wrap[0],
-                                                                   m.wrap[1]));
+        emitted *= glm::dvec3(m_textures[textures.emission].sample(surfaceHit.uv, m.wrap[0], m.wrap[1]));
     // material.glsl's materialNormal(): the tangent made orthogonal to the viewer-side normal,
     // B = w·(n × T), the map's xy scaled. Lighting and the shadow lookup both use the bent normal.
     Hit hit = surfaceHit;
@@ -84,10 +83,9 @@ glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, co
         if (tLength > 1e-8) {
             t /= tLength;
             const glm::dvec3 b = (surfaceHit.tangent.w < 0.0 ? -1.0 : 1.0) * glm::cross(n, t);
-            glm::dvec3 mapped = glm::dvec3(m_textures[textures.normal].sample(
-                                    surfaceHit.uv, m.wrap[0], m.wrap[1])) *
-                                    2.0 -
-                                1.0;
+            glm::dvec3 mapped =
+                glm::dvec3(m_textures[textures.normal].sample(surfaceHit.uv, m.wrap[0], m.wrap[1])) * 2.0 -
+                1.0;
             mapped.x *= m.normalScale;
             mapped.y *= m.normalScale;
             const glm::dvec3 bent = t * mapped.x + b * mapped.y + n * mapped.z;

@@ -12,7 +12,6 @@
 
 namespace speculum::render::reference {
 
-
 // A texture decoded to linear RGBA once, sampled like the GL sampler of gl::TextureCache at its base
 // level: bilinear, the material's wrap modes, sRGB decoded before filtering for colour. Row 0 of the
 // image is t = 0, as glTexImage2D uploads it (TextureImage: row 0 is the bottom row of the stored image).

@@ -22,7 +22,8 @@ std::string plural(int n, const char* one, const char* many) {
 
 // The tracer on the CPU (no GL), on the calling thread, which the progress callback keeps responsive and
 // can stop.
-base::Result<StillExportResult> traceStill(const render::FrameInput& input, const StillExportSettings& settings,
+base::Result<StillExportResult> traceStill(const render::FrameInput& input,
+                                           const StillExportSettings& settings,
                                            const render::ProgressCallback& progress) {
     auto tracer = render::reference::Tracer::create(input);
     if (!tracer)
@@ -32,8 +33,9 @@ base::Result<StillExportResult> traceStill(const render::FrameInput& input, cons
     trace.height = settings.height;
     trace.ssaa = settings.ssaa;
     trace.samples = settings.samples;
-    auto traced = tracer->render(
-        trace, [&](double fraction) { return !progress || progress(fraction, "exact reference, ray tracing"); });
+    auto traced = tracer->render(trace, [&](double fraction) {
+        return !progress || progress(fraction, "exact reference, ray tracing");
+    });
     if (!traced)
         return base::Error{traced.error()};
     StillExportResult result;
@@ -43,7 +45,8 @@ base::Result<StillExportResult> traceStill(const render::FrameInput& input, cons
     result.warnings = std::move(traced->warnings);
     result.trace = TraceFigures{traced->paths, traced->glossyPixels, traced->noiseRms};
     result.renderer = "reference ray tracer (Embree 3, " +
-                      plural(int(std::max(1u, std::thread::hardware_concurrency())), "thread", "threads") + ")";
+                      plural(int(std::max(1u, std::thread::hardware_concurrency())), "thread", "threads") +
+                      ")";
     return result;
 }
 
@@ -70,13 +73,14 @@ base::Status validateStillExport(const StillExportSettings& settings, const std:
     if (settings.ssaa < render::kMinSsaa || settings.ssaa > render::kMaxSsaa)
         return base::Error{"supersampling must be in " + std::to_string(render::kMinSsaa) + ".." +
                            std::to_string(render::kMaxSsaa) + ", got " + std::to_string(settings.ssaa)};
-    if (settings.reference &&
-        (settings.samples < render::reference::kMinTraceSamples || settings.samples > render::reference::kMaxTraceSamples))
-        return base::Error{"samples must be in " + std::to_string(render::reference::kMinTraceSamples) + ".." +
-                           std::to_string(render::reference::kMaxTraceSamples) + ", got " + std::to_string(settings.samples)};
+    if (settings.reference && (settings.samples < render::reference::kMinTraceSamples ||
+                               settings.samples > render::reference::kMaxTraceSamples))
+        return base::Error{"samples must be in " + std::to_string(render::reference::kMinTraceSamples) +
+                           ".." + std::to_string(render::reference::kMaxTraceSamples) + ", got " +
+                           std::to_string(settings.samples)};
     if (!render::isSupportedImagePath(path))
-        return base::Error{base::printable(path, 200) + ": unsupported image format (supported: " +
-                           render::supportedImageFormats() + ")"};
+        return base::Error{base::printable(path, 200) +
+                           ": unsupported image format (supported: " + render::supportedImageFormats() + ")"};
     const std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
     if (!std::filesystem::is_directory(folder))
         return base::Error{base::printable(path, 200) + ": folder " + base::quoted(folder.string(), 200) +
@@ -96,8 +100,9 @@ render::ImageMetadata stillMetadata(const std::string& projectPath, const StillE
     render::ImageMetadata metadata;
     metadata.attributes = {
         {"Software", std::string("speculum ") + SPECULUM_VERSION},
-        {"ImageDescription", std::string(result.trace ? "speculum reference render of " : "speculum render of ") +
-                                 name + " (" + text.str() + ")"},
+        {"ImageDescription",
+         std::string(result.trace ? "speculum reference render of " : "speculum render of ") + name + " (" +
+             text.str() + ")"},
     };
     if (!projectPath.empty())
         metadata.attributes.emplace_back("speculum:scene", std::filesystem::absolute(projectPath).string());
@@ -115,8 +120,9 @@ render::ImageMetadata stillMetadata(const std::string& projectPath, const StillE
 }
 
 base::Result<StillExportResult> writeStill(render::Renderer* renderer, const render::FrameInput& input,
-                                           const std::string& projectPath, const StillExportSettings& settings,
-                                           const std::string& outputPath, const render::ProgressCallback& progress,
+                                           const std::string& projectPath,
+                                           const StillExportSettings& settings, const std::string& outputPath,
+                                           const render::ProgressCallback& progress,
                                            const std::string& rendererDescription) {
     if (auto valid = validateStillExport(settings, outputPath); !valid)
         return base::Error{valid.error()};
@@ -128,14 +134,16 @@ base::Result<StillExportResult> writeStill(render::Renderer* renderer, const ren
         return result;
     if (!settings.reference)
         result->renderer = rendererDescription;
-    if (auto written = render::writeImage(outputPath, result->still.image, stillMetadata(projectPath, settings, *result));
+    if (auto written = render::writeImage(outputPath, result->still.image,
+                                          stillMetadata(projectPath, settings, *result));
         !written)
         return base::Error{written.error()};
     return result;
 }
 
-base::Result<StillExportResult> exportStill(render::Renderer* renderer, const Scene& scene, MeshLibrary& meshes,
-                                            const StillExportSettings& settings, const QString& outputPath,
+base::Result<StillExportResult> exportStill(render::Renderer* renderer, const Scene& scene,
+                                            MeshLibrary& meshes, const StillExportSettings& settings,
+                                            const QString& outputPath,
                                             const render::ProgressCallback& progress,
                                             const std::string& rendererDescription) {
     const std::string path = outputPath.toStdString();

@@ -38,14 +38,14 @@ base::Status validateStillExport(const StillExportSettings& settings, const std:
 struct TraceFigures {
     int paths = 1;        // per sub-sample of a pixel that meets a rough surface
     int glossyPixels = 0; // pixels that needed several paths
-    double noiseRms = 0;  // the root mean square of the pixels' standard errors (linear radiance); NaN: 1 path
+    double noiseRms = 0; // the root mean square of the pixels' standard errors (linear radiance); NaN: 1 path
 };
 
 struct StillExportResult {
     render::StillResult still;
-    std::vector<std::string> warnings;  // renderer or tracer
-    std::optional<TraceFigures> trace;  // a reference still's noise
-    std::string renderer;               // what drew it: the GL description, or the tracer's
+    std::vector<std::string> warnings; // renderer or tracer
+    std::optional<TraceFigures> trace; // a reference still's noise
+    std::string renderer;              // what drew it: the GL description, or the tracer's
 };
 
 // The attributes stored in the file: software, a description with the settings, the project path, the
@@ -57,15 +57,16 @@ render::ImageMetadata stillMetadata(const std::string& projectPath, const StillE
 // for a reference still, and writes `outputPath`. A cancel through `progress` returns an error "cancelled"
 // and writes nothing; so does any failure.
 base::Result<StillExportResult> writeStill(render::Renderer* renderer, const render::FrameInput& input,
-                                           const std::string& projectPath, const StillExportSettings& settings,
-                                           const std::string& outputPath,
+                                           const std::string& projectPath,
+                                           const StillExportSettings& settings, const std::string& outputPath,
                                            const render::ProgressCallback& progress = {},
                                            const std::string& rendererDescription = {});
 
 // The document's still: the scene evaluated at settings.time (through settings.camera when set), then
 // writeStill. Snapshot warnings come first in the result's.
-base::Result<StillExportResult> exportStill(render::Renderer* renderer, const Scene& scene, MeshLibrary& meshes,
-                                            const StillExportSettings& settings, const QString& outputPath,
+base::Result<StillExportResult> exportStill(render::Renderer* renderer, const Scene& scene,
+                                            MeshLibrary& meshes, const StillExportSettings& settings,
+                                            const QString& outputPath,
                                             const render::ProgressCallback& progress = {},
                                             const std::string& rendererDescription = {});
 

@@ -185,7 +185,8 @@ void writeValue(ByteWriter& out, const M& value) {
     } else if constexpr (std::is_same_v<M, render::TextureSource>) {
         out.string(value.path);
     } else {
-        static_assert(std::is_same_v<M, std::array<TextureWrap, 2>>, "a material field the stream cannot hold");
+        static_assert(std::is_same_v<M, std::array<TextureWrap, 2>>,
+                      "a material field the stream cannot hold");
         writeValue(out, value[0]);
         writeValue(out, value[1]);
     }

@@ -186,8 +186,11 @@ namespace spec {
 using render::FieldSpec;
 using render::FieldType;
 using render::FieldWrite;
-inline constexpr FieldSpec kPoint{.type = FieldType::Vector3, .min = -render::kMaxCoordinate,
-                                  .max = render::kMaxCoordinate, .unit = " u", .noun = "coordinates"};
+inline constexpr FieldSpec kPoint{.type = FieldType::Vector3,
+                                  .min = -render::kMaxCoordinate,
+                                  .max = render::kMaxCoordinate,
+                                  .unit = " u",
+                                  .noun = "coordinates"};
 inline constexpr FieldSpec kPeriod{.min = render::kMinPeriod, .max = render::kMaxPeriod, .unit = " s"};
 // `spec` with a name, a label and a meaning.
 constexpr FieldSpec named(FieldSpec spec, std::string_view name, std::string_view label,
@@ -203,8 +206,9 @@ template <typename Visit>
 void Transform::fields(Visit&& visit) {
     using namespace scene::spec;
     using render::field;
-    visit(field(&Transform::translate, named(kPoint, "translate", "Translate", "Where the node's origin is, in "
-                                                                               "its parent's space")));
+    visit(field(&Transform::translate, named(kPoint, "translate", "Translate",
+                                             "Where the node's origin is, in "
+                                             "its parent's space")));
     visit(field(&Transform::rotate, {.name = "rotate",
                                      .label = "Rotate",
                                      .meaning = "XYZ Euler angles in degrees, applied X, then Y, then Z",
@@ -226,13 +230,14 @@ void MeshComponent::fields(Visit&& visit) {
     using render::field;
     constexpr auto builtIn = [](const MeshComponent& m) { return m.builtin.has_value(); };
     constexpr auto fromFile = [](const MeshComponent& m) { return !m.builtin.has_value(); };
-    visit(field(&MeshComponent::builtin, {.name = "builtin",
-                                          .label = "Shape",
-                                          .meaning = "A built-in shape (instead of a file)",
-                                          .type = FieldType::Choice,
-                                          .noun = "builtin mesh",
-                                          .choices = kBuiltinMeshNames,
-                                          .write = FieldWrite::WhenApplies},
+    visit(field(&MeshComponent::builtin,
+                {.name = "builtin",
+                 .label = "Shape",
+                 .meaning = "A built-in shape (instead of a file)",
+                 .type = FieldType::Choice,
+                 .noun = "builtin mesh",
+                 .choices = kBuiltinMeshNames,
+                 .write = FieldWrite::WhenApplies},
                 builtIn));
     visit(field(&MeshComponent::tessellation,
                 {.name = "tessellation",
@@ -250,15 +255,16 @@ void MeshComponent::fields(Visit&& visit) {
                  .type = FieldType::Path,
                  .write = FieldWrite::WhenApplies},
                 fromFile));
-    visit(field(&MeshComponent::part,
-                {.name = "part",
-                 .label = "Part",
-                 .meaning = "Which mesh of the file this node draws, in its own coordinates; absent for all of it",
-                 .type = FieldType::Integer,
-                 .min = 0,
-                 .max = 1e9,
-                 .write = FieldWrite::WhenApplies},
-                fromFile));
+    visit(field(
+        &MeshComponent::part,
+        {.name = "part",
+         .label = "Part",
+         .meaning = "Which mesh of the file this node draws, in its own coordinates; absent for all of it",
+         .type = FieldType::Integer,
+         .min = 0,
+         .max = 1e9,
+         .write = FieldWrite::WhenApplies},
+        fromFile));
 }
 
 template <typename Visit>
@@ -276,7 +282,8 @@ template <typename Visit>
 void OrbitAnimation::fields(Visit&& visit) {
     using namespace scene::spec;
     using render::field;
-    visit(field(&OrbitAnimation::center, named(kPoint, "center", "Orbit centre", "The point the node circles")));
+    visit(field(&OrbitAnimation::center,
+                named(kPoint, "center", "Orbit centre", "The point the node circles")));
     visit(field(&OrbitAnimation::radius, {.name = "radius",
                                           .label = "Orbit radius",
                                           .meaning = "The circle's radius",
@@ -305,7 +312,8 @@ void EditorView::fields(Visit&& visit) {
     using namespace scene::spec;
     using render::field;
     visit(field(&EditorView::position, named(kPoint, "position", "Position", "Where the editor's view was")));
-    visit(field(&EditorView::target, named(kPoint, "target", "Target", "The point the editor's view looked at")));
+    visit(field(&EditorView::target,
+                named(kPoint, "target", "Target", "The point the editor's view looked at")));
 }
 
 template <typename Visit>
@@ -315,16 +323,18 @@ void NodeData::fields(Visit&& visit) {
     const auto component = [](std::string_view name, std::string_view label, std::string_view meaning) {
         return FieldSpec{.name = name, .label = label, .meaning = meaning, .type = FieldType::Object};
     };
-    visit(field(&NodeData::name, {.name = "name", .label = "Name", .meaning = "The node's name",
-                                  .type = FieldType::Text}));
+    visit(field(&NodeData::name,
+                {.name = "name", .label = "Name", .meaning = "The node's name", .type = FieldType::Text}));
     visit(field(&NodeData::transform, component("transform", "Transform", "Where the node is")));
     visit(field(&NodeData::mesh, component("mesh", "Mesh", "The node's shape: built in, or from a file")));
     visit(field(&NodeData::material, component("material", "Material", "How the node's surface is lit")));
     visit(field(&NodeData::light, component("light", "Light", "A light at the node's origin")));
-    visit(field(&NodeData::mirror, component("mirror", "Planar mirror", "A mirror rectangle in the node's XZ "
-                                                                           "plane")));
-    visit(field(&NodeData::reflector, component("reflector", "Curved reflector", "The node's mesh reflects "
-                                                                                  "through an environment map")));
+    visit(field(&NodeData::mirror, component("mirror", "Planar mirror",
+                                             "A mirror rectangle in the node's XZ "
+                                             "plane")));
+    visit(field(&NodeData::reflector, component("reflector", "Curved reflector",
+                                                "The node's mesh reflects "
+                                                "through an environment map")));
     visit(field(&NodeData::animation, component("animation", "Animation", "How the node moves with time")));
 }
 
@@ -332,11 +342,16 @@ template <typename Visit>
 void SceneData::fields(Visit&& visit) {
     using namespace scene::spec;
     using render::field;
-    visit(field(&SceneData::settings, {.name = "settings", .label = "Scene", .meaning = "The scene's settings",
+    visit(field(&SceneData::settings, {.name = "settings",
+                                       .label = "Scene",
+                                       .meaning = "The scene's settings",
                                        .type = FieldType::Object}));
-    visit(field(&SceneData::camera, {.name = "camera", .label = "Camera",
-                                     .meaning = "The camera the scene is drawn from", .type = FieldType::Object}));
-    visit(field(&SceneData::editorView, {.name = "editorView", .label = "Editor view",
+    visit(field(&SceneData::camera, {.name = "camera",
+                                     .label = "Camera",
+                                     .meaning = "The camera the scene is drawn from",
+                                     .type = FieldType::Object}));
+    visit(field(&SceneData::editorView, {.name = "editorView",
+                                         .label = "Editor view",
                                          .meaning = "Where the editor last looked from (the editor's alone)",
                                          .type = FieldType::Object}));
 }

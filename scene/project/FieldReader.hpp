@@ -55,7 +55,8 @@ private:
         const QJsonValue v = o.get(name);
         if (v.isUndefined())
             return;
-        const std::string childKey = key.empty() ? std::string(f.spec.name) : key + "." + std::string(f.spec.name);
+        const std::string childKey =
+            key.empty() ? std::string(f.spec.name) : key + "." + std::string(f.spec.name);
         readMember(v, o.at(name), f.spec, member, unknown, childKey);
     }
 

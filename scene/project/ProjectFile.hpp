@@ -41,10 +41,10 @@ base::Status openProject(Scene& scene, const QString& path, std::vector<std::str
 // The file contents for data, with paths made relative to baseDir.
 QByteArray serializeProject(const SceneData& data, const QDir& baseDir);
 
-// Writes atomically (base::writeFileAtomically): on failure the previous file is intact. The data is validated by reading
-// the serialized bytes back first, so a file that saves always loads; a model the reader would reject is
-// not written (the error names the JSON path). Does not change scene.projectPath(); the caller does that
-// after a successful "Save As".
+// Writes atomically (base::writeFileAtomically): on failure the previous file is intact. The data is
+// validated by reading the serialized bytes back first, so a file that saves always loads; a model the reader
+// would reject is not written (the error names the JSON path). Does not change scene.projectPath(); the
+// caller does that after a successful "Save As".
 base::Status saveProject(const SceneData& data, const QString& path);
 base::Status saveProject(const Scene& scene, const QString& path);
 

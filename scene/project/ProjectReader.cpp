@@ -180,9 +180,11 @@ private:
         m_fields.readFields(o, d, d.unknown, "");
         if (d.reflector) {
             if (!d.mesh)
-                fail(o.at("reflector"), "needs a mesh on the same node (the reflector's surface is its mesh)");
+                fail(o.at("reflector"),
+                     "needs a mesh on the same node (the reflector's surface is its mesh)");
             if (!m_firstReflector.empty())
-                fail(o.at("reflector"), "a scene has at most one reflector (the first is " + m_firstReflector + ")");
+                fail(o.at("reflector"),
+                     "a scene has at most one reflector (the first is " + m_firstReflector + ")");
             m_firstReflector = path;
         }
         if (const QJsonValue c = o.get("children"); !c.isUndefined())

@@ -57,7 +57,8 @@ private:
             if (!written(f, owner, member))
                 return;
             w.key(f.spec.name);
-            writeMember(member, f.spec, unknown, key.empty() ? std::string(f.spec.name) : key + "." + std::string(f.spec.name));
+            writeMember(member, f.spec, unknown,
+                        key.empty() ? std::string(f.spec.name) : key + "." + std::string(f.spec.name));
         });
     }
 
@@ -115,7 +116,8 @@ private:
             const auto name = [&](render::TextureWrap wrap) {
                 return QString::fromUtf8(render::names::fileName(spec.choices, wrap).data());
             };
-            w.value(value[0] == value[1] ? QJsonValue(name(value[0])) : QJsonValue(QJsonArray{name(value[0]), name(value[1])}));
+            w.value(value[0] == value[1] ? QJsonValue(name(value[0]))
+                                         : QJsonValue(QJsonArray{name(value[0]), name(value[1])}));
         } else if (spec.type == render::FieldType::Path) {
             w.value(relative(value));
         } else {
@@ -162,8 +164,9 @@ base::Status saveProject(const SceneData& data, const QString& path) {
 
     // One mechanism for every file speculum writes (base::AtomicFile): a temporary in the same folder,
     // every write, the fsync and the close checked, then a rename.
-    return base::writeFileAtomically(QFile::encodeName(path).toStdString(),
-                                     std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    return base::writeFileAtomically(
+        QFile::encodeName(path).toStdString(),
+        std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
 }
 
 base::Status saveProject(const Scene& scene, const QString& path) {

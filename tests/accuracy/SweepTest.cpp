@@ -194,7 +194,8 @@ TEST(BenchSweep, EachFamilyVariesOnlyItsOwnSettingsAndIncludesTheScenes) {
             EXPECT_EQ(c.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-"), std::string::npos)
                 << c.id;
             const FrameInput applied = applyVariation(scene, c.variation, traits.proxy, keep);
-            const Settings list = effectiveSettings(applied, c.variation.tessellation.value_or(8), traits.simplifiableMeshes > 0);
+            const Settings list = effectiveSettings(applied, c.variation.tessellation.value_or(8),
+                                                    traits.simplifiableMeshes > 0);
             const std::map<std::string, std::string> s(list.begin(), list.end());
             const bool same = s == ownMap;
             std::set<std::string> names;

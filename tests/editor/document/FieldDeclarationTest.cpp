@@ -22,8 +22,8 @@ namespace speculum::document {
 namespace {
 
 std::string mirrorProject(const std::string& mirror) {
-    return R"({ "format": "speculum-scene", "version": 1, "nodes": [ { "name": "Glass", "mirror": )" + mirror +
-           " } ] }";
+    return R"({ "format": "speculum-scene", "version": 1, "nodes": [ { "name": "Glass", "mirror": )" +
+           mirror + " } ] }";
 }
 
 base::Result<scene::SceneData> parse(const std::string& json) {
@@ -123,8 +123,8 @@ TEST(FieldDeclaration, TheSweepVariesItAndItsResultsApplyBack) {
     EXPECT_EQ(applied.mirrors.at(0).probe, 0.25);
 
     const accuracy::Settings settings = accuracy::effectiveSettings(applied, std::nullopt, false);
-    const auto column = std::find_if(settings.begin(), settings.end(),
-                                     [](const auto& s) { return s.first == "probe"; });
+    const auto column =
+        std::find_if(settings.begin(), settings.end(), [](const auto& s) { return s.first == "probe"; });
     ASSERT_NE(column, settings.end()) << "bench results have a `probe` column";
     EXPECT_EQ(column->second, "0.25");
 

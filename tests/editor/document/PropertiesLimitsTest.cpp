@@ -3,9 +3,9 @@
 // end is refused by both. The choices (map types, fills, ...) are spelled once, in
 // render/frame/SceneNames.hpp.
 #include "editor/document/Properties.hpp"
-#include "render/frame/Settings.hpp"
 #include "render/frame/SceneLimits.hpp"
 #include "render/frame/SceneNames.hpp"
+#include "render/frame/Settings.hpp"
 #include "scene/project/ProjectFile.hpp"
 
 #include <QDir>

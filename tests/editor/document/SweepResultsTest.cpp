@@ -154,7 +154,10 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
 TEST(SweepResults, AGlossyPointAppliesItsRoughnessAndFilter) {
     scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(scene::openProject(scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/glossy.speculum.json"), warnings).ok());
+    ASSERT_TRUE(
+        scene::openProject(
+            scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/glossy.speculum.json"), warnings)
+            .ok());
     const scene::SceneData before = scene.toData();
     auto footprint = applySweepSettings(scene, {{"roughness", "0.5"}, {"glossy", "footprint 4 taps"}},
                                         QStringLiteral("Apply Sweep Setting glossy-footprint-4-0.5"));
@@ -226,11 +229,11 @@ TEST(SweepResults, SettingsThatCancelOutGiveNoCommand) {
                                              ? scene::MirrorTechnique::Texture
                                              : scene::MirrorTechnique::Stencil;
     // A later key edits the mirrors back to what they hold: nothing changes, so nothing is pushed.
-    auto application = applySweepSettings(scene,
-                                          {{"technique", std::string(render::names::fileName(render::names::kMirrorTechniques, other))},
-                                           {"technique",
-                                            std::string(render::names::fileName(render::names::kMirrorTechniques, *current))}},
-                                          QStringLiteral("cancelled"));
+    auto application = applySweepSettings(
+        scene,
+        {{"technique", std::string(render::names::fileName(render::names::kMirrorTechniques, other))},
+         {"technique", std::string(render::names::fileName(render::names::kMirrorTechniques, *current))}},
+        QStringLiteral("cancelled"));
     EXPECT_FALSE(application.command);
     EXPECT_EQ(application.applied.size(), 2);
 

@@ -12,6 +12,7 @@
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
 
+#include <OpenImageIO/imageio.h>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
@@ -22,11 +23,10 @@
 #include <QScreen>
 #include <QSpinBox>
 #include <QTemporaryDir>
-#include <map>
 #include <QTreeWidget>
 #include <QWindow>
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <map>
 #include <optional>
 
 namespace {

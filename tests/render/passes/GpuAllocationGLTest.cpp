@@ -247,7 +247,8 @@ TEST_F(GlTest, ReflectorWhoseMapDoesNotFitIsDrawnSmallerNotDropped) {
         EXPECT_LE(report.warnings.size(), 1u) << ::testing::PrintToString(report.warnings);
         EXPECT_NE(envmap->reason.find(std::to_string(used) + "×" + std::to_string(used)), std::string::npos)
             << envmap->reason;
-        std::printf("8192 %s reflector: drawn at %d (%.0f ms)\n", std::string(names::fileName(names::kReflectorMaps, c.map)).c_str(), used, ms);
+        std::printf("8192 %s reflector: drawn at %d (%.0f ms)\n",
+                    std::string(names::fileName(names::kReflectorMaps, c.map)).c_str(), used, ms);
     }
 }
 

@@ -49,8 +49,8 @@ std::vector<std::string> declared(const std::string& type) {
 // what it is made of. A structured binding cannot list a derived struct's members, so their sizes stand in.
 static_assert(sizeof(Light) == sizeof(LightParams) + sizeof(std::string) + 2 * sizeof(glm::dvec3),
               "a member was added to Light: give it a row and list it in everyField()");
-static_assert(sizeof(Mirror) ==
-                  sizeof(MirrorParams) + sizeof(std::string) + sizeof(glm::dmat4) + sizeof(Material) + alignof(Mirror),
+static_assert(sizeof(Mirror) == sizeof(MirrorParams) + sizeof(std::string) + sizeof(glm::dmat4) +
+                                    sizeof(Material) + alignof(Mirror),
               "a member was added to Mirror: give it a row and list it in everyField()");
 static_assert(sizeof(Reflector) == sizeof(ReflectorParams) + sizeof(std::string) + sizeof(glm::dmat4) +
                                        sizeof(MeshHandle) + sizeof(Material),
@@ -132,7 +132,8 @@ FrameInput baseScene() {
     ball.map = ReflectorMap::DualParaboloid;
     ball.fill = ReflectorFill::Resampled;
     ball.mirrorDepth = 1;
-    ball.parallax = ParallaxParams{.shape = ParallaxShape::Box, .min = glm::dvec3(-4.0), .max = glm::dvec3(4.0)};
+    ball.parallax =
+        ParallaxParams{.shape = ParallaxShape::Box, .min = glm::dvec3(-4.0), .max = glm::dvec3(4.0)};
     input.reflector = ball;
     return input;
 }
@@ -217,7 +218,10 @@ std::vector<Row> materialRows(const std::string& context, std::function<Material
         row(
             "alphaCutoff", [](Material& m) { m.alphaCutoff = 0.7; }, true),
         row(
-            "wrap", [](Material& m) { m.wrap = {TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat}; },
+            "wrap",
+            [](Material& m) {
+                m.wrap = {TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat};
+            },
             true),
     };
     for (auto& r : textureRows(
@@ -359,9 +363,8 @@ std::vector<Row> table() {
         {"Reflector.fresnel", "", [](FrameInput& f) { f.reflector->fresnel = true; }, false, false, surface},
         {"Reflector.fill", "", [](FrameInput& f) { f.reflector->fill = ReflectorFill::Direct; }, true, false,
          "how a non-linear map is filled; not drawn by the shadow"},
-        {"Reflector.parallax", "",
-         [](FrameInput& f) { f.reflector->parallax = ParallaxParams{}; }, false, false,
-         "the lookup's proxy in pass 2: " + surface},
+        {"Reflector.parallax", "", [](FrameInput& f) { f.reflector->parallax = ParallaxParams{}; }, false,
+         false, "the lookup's proxy in pass 2: " + surface},
         {"Reflector.update", "", [](FrameInput& f) { f.reflector->update = ReflectorUpdate::Always; }, false,
          false, "decides when the map is drawn, not what it holds"},
         {"Reflector.mirrorDepth", "", [](FrameInput& f) { f.reflector->mirrorDepth = 2; }, true, false,
@@ -374,8 +377,8 @@ std::vector<Row> table() {
          false, surface},
         {"ParallaxParams.radius", "", [](FrameInput& f) { f.reflector->parallax->radius = 3.0; }, false,
          false, surface},
-        {"ParallaxParams.min", "", [](FrameInput& f) { f.reflector->parallax->min = glm::dvec3(-2.0); }, false,
-         false, surface},
+        {"ParallaxParams.min", "", [](FrameInput& f) { f.reflector->parallax->min = glm::dvec3(-2.0); },
+         false, false, surface},
         {"ParallaxParams.max", "", [](FrameInput& f) { f.reflector->parallax->max = glm::dvec3(2.0); }, false,
          false, surface},
         // FrameInput

@@ -169,10 +169,8 @@ TEST(ReflectorPlanner, OnChangeReusesTheMapUntilSomethingItSeesChanges) {
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.specularColor = {1.0, 0.5, 0.0}; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.texture.path = "/abs/a.png"; }));
     EXPECT_TRUE(rerenders([&](FrameInput& f) { f.items[0].material.texture.image = image; }));
-    EXPECT_TRUE(
-        rerenders([](FrameInput& f) { f.items[0].material.wrap[0] = TextureWrap::ClampToEdge; }));
-    EXPECT_TRUE(
-        rerenders([](FrameInput& f) { f.items[0].material.wrap[1] = TextureWrap::MirroredRepeat; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.wrap[0] = TextureWrap::ClampToEdge; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.wrap[1] = TextureWrap::MirroredRepeat; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.emissionTexture.path = "/abs/e.png"; }));
     EXPECT_TRUE(rerenders([&](FrameInput& f) { f.items[0].material.emissionTexture.image = image; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.normalTexture.path = "/abs/n.png"; }));

@@ -38,10 +38,10 @@ TEST(DemoScenes, EachLoadsCleanlyAndIsInTheFormSpeculumWrites) {
         ASSERT_TRUE(file.open(QIODevice::ReadOnly));
         const std::string written = scene::serializeProject(*data, QFileInfo(path).dir()).toStdString();
         const std::string stored = file.readAll().toStdString();
-        EXPECT_EQ(written, stored) << "first difference at byte "
-                                   << std::mismatch(written.begin(), written.end(), stored.begin(), stored.end())
-                                              .first -
-                                          written.begin();
+        EXPECT_EQ(written, stored)
+            << "first difference at byte "
+            << std::mismatch(written.begin(), written.end(), stored.begin(), stored.end()).first -
+                   written.begin();
 
         scene::Scene scene;
         ASSERT_TRUE(scene::openProject(scene, path, warnings).ok());

@@ -138,8 +138,8 @@ TEST(Snapshot, OrbitFollowsItsDefinitionInTheParentsSpace) {
 
 TEST(Snapshot, BounceLiftsAnOrbit) {
     scene::NodeData node;
-    node.animation = scene::AnimationComponent{
-        scene::BounceAnimation{0.5, 2.0}, scene::OrbitAnimation{{0, 0, 0}, 1.0, 4.0}};
+    node.animation = scene::AnimationComponent{scene::BounceAnimation{0.5, 2.0},
+                                               scene::OrbitAnimation{{0, 0, 0}, 1.0, 4.0}};
     expectNear(scene::animatedTranslate(node, 1.0), {0, 0.5, 1});
 }
 
@@ -152,8 +152,8 @@ TEST(Snapshot, LightsPointAlongTheirWorldMinusY) {
         scene::LightComponent{scene::LightType::Directional, {1, 0.5, 0.25}, 2.0, 30, 0.15, std::nullopt};
     scene::NodeTree spot;
     spot.data.name = "Spot";
-    spot.data.light = scene::LightComponent{
-        scene::LightType::Spot, {1, 1, 1}, 1.0, 25, 0.2, scene::ShadowComponent{512, 3}};
+    spot.data.light = scene::LightComponent{scene::LightType::Spot,        {1, 1, 1}, 1.0, 25, 0.2,
+                                            scene::ShadowComponent{512, 3}};
     data.nodes = {sun, spot};
     scene::MeshLibrary meshes;
     std::vector<std::string> warnings;

@@ -233,7 +233,8 @@ speculum::scene::SceneData exportScene(const std::filesystem::path& dir) {
     plane.data.name = "Floor";
     plane.data.material = speculum::scene::MaterialComponent{};
     plane.data.material->texture.path = (dir / "checker.tga").string();
-    plane.data.material->wrap = {speculum::scene::TextureWrap::ClampToEdge, speculum::scene::TextureWrap::MirroredRepeat};
+    plane.data.material->wrap = {speculum::scene::TextureWrap::ClampToEdge,
+                                 speculum::scene::TextureWrap::MirroredRepeat};
     plane.data.material->opacity = 0.5;
     plane.data.material->alphaMode = speculum::scene::AlphaMode::Mask;
     plane.data.material->alphaCutoff = 0.3;

@@ -69,10 +69,10 @@ scene::SceneData everythingScene(const QDir& folder) {
 
     scene::NodeTree spot;
     spot.data.name = "Spot";
-    spot.data.light = scene::LightComponent{
-        scene::LightType::Spot, {1, 0.9, 0.8}, 2.5, 40, 0.3, scene::ShadowComponent{2048, 7}};
-    spot.data.animation = scene::AnimationComponent{
-        scene::BounceAnimation{0.3, 1.5}, scene::OrbitAnimation{{0, 2, -3}, 1.5, 6}};
+    spot.data.light = scene::LightComponent{scene::LightType::Spot,         {1, 0.9, 0.8}, 2.5, 40, 0.3,
+                                            scene::ShadowComponent{2048, 7}};
+    spot.data.animation = scene::AnimationComponent{scene::BounceAnimation{0.3, 1.5},
+                                                    scene::OrbitAnimation{{0, 2, -3}, 1.5, 6}};
 
     scene::NodeTree sun;
     sun.data.name = "Sun";
