@@ -145,7 +145,6 @@ public:
 
     HandleMode handleMode() const { return m_handleMode; }
     void setHandleMode(HandleMode mode);
-    bool looksThroughSceneCamera() const { return m_sceneCameraMode; }
     void setLookThroughSceneCamera(bool on);
 
     // What a click at a widget position (logical pixels) would select: a node id, or 0.

@@ -33,8 +33,6 @@ public:
             Delete(m_id);
         m_id = 0;
     }
-    // Forgets the name without deleting it: for when the context is already gone.
-    void abandon() { m_id = 0; }
 
 private:
     GLuint m_id = 0;
