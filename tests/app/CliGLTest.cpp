@@ -356,7 +356,7 @@ TEST_F(Cli, BadExportFailsWithOneLineAndWritesNothing) {
 
 } // namespace
 
-// Issue 14, classes 6-8: the command line's own edges, silent drops in scripts, and one-line messages.
+// The command line's own edges, silent drops in scripts, and one-line messages.
 namespace {
 
 // Runs the binary under `env` with the given environment changes ("-u DISPLAY ..."), stdin from /dev/null.

@@ -1,4 +1,4 @@
-// libFuzzer target for model import (issue 14): any bytes, written to a file named after the format they
+// libFuzzer target for model import: any bytes, written to a file named after the format they
 // look like, must import or be refused with a one-line message naming the file — never crash, hang,
 // overflow the stack or exhaust memory (run with -rss_limit_mb and -timeout, see scripts/fuzz). For a
 // glTF input the buffers and images it names are written next to it (a triangle's floats, a 1x1 PNG) so

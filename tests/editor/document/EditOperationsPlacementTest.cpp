@@ -1,4 +1,4 @@
-// Where new things land (issue 16, item 3), on the document File ▸ New opens: Add ▸ … puts a node on the
+// Where new things land, on the document File ▸ New opens: Add ▸ … puts a node on the
 // floor at the view's focus and beside what is already there; the first mirror faces the view (or lies
 // flat under a view from above) instead of lying edge-on; Duplicate moves the copy beside its original.
 #include "editor/document/EditOperations.hpp"

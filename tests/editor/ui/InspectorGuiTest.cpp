@@ -1,4 +1,4 @@
-// issue 16, items 2, 4 and 6 (H9): the wheel never edits an unfocused field (the Properties panel scrolls
+// The wheel never edits an unfocused field (the Properties panel scrolls
 // instead, no undo step); a tiny scale shows as itself and can be edited; the reflector's parallax proxy is
 // in the inspector and round-trips through the project file; Export Still's exact reference writes an
 // image and a cancelled one writes nothing; the Accuracy panel explains its numbers, labels chart points

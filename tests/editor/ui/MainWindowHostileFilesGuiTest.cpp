@@ -1,4 +1,4 @@
-// Hostile files in the editor (issue 14): with a document open and modified, a user drops (Import or Open)
+// Hostile files in the editor: with a document open and modified, a user drops (Import or Open)
 // a file of each hostile class: a FIFO, a model whose node graph is a DAG or a chain 100 000 deep, a model
 // that references a FIFO (a glTF buffer, an OBJ mtllib), a Collada file nested 100 000 deep, a project that
 // is a FIFO, /dev/zero behind a symlink, a project with duplicate keys or a light of 1e39. Each time an

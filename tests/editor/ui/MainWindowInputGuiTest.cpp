@@ -1,4 +1,4 @@
-// Issue 16, items 2 and 3, as a Blender or Godot user tries them: the editing shortcuts work from the
+// As a Blender or Godot user tries them: the editing shortcuts work from the
 // scene tree (not only from the viewport) without stealing keys from text fields; a new document starts
 // with a floor, a sun and a camera raised above them; the first mirror added faces the view instead of
 // lying edge-on; new objects do not land inside each other and a duplicate steps aside.

@@ -1,4 +1,4 @@
-// issue 16, item 8: the timeline's slider scrubs the animation, follows the clock while playing, and the
+// The timeline's slider scrubs the animation, follows the clock while playing, and the
 // clock starts over at 0, paused, when a project is opened or a new one made.
 #include "editor/ui/TimeSlider.hpp"
 #include "editor/view/AnimationClock.hpp"

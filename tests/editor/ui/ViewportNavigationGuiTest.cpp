@@ -1,4 +1,4 @@
-// issue 16, items 3 and 7, in the viewport: adaptive resolution while navigating or dragging a handle
+// In the viewport: adaptive resolution while navigating or dragging a handle
 // (frames drawn reduced and scaled up, then one full frame once the view rests, equal to a frame drawn
 // without adaptive resolution), the view presets and guides actions, the vertical orbit's direction, and
 // a saved editor view placed after the reset of a newly opened document.

@@ -1,4 +1,4 @@
-// issue 16: the editor draws only when what it shows changes. A static demo left alone draws no frame for
+// The editor draws only when what it shows changes. A static demo left alone draws no frame for
 // seconds, even with the clock running; an edit, an undo, a time jump, navigation and a resize each draw
 // and then stop; an animated scene that plays keeps drawing until paused.
 #include "editor/document/Commands.hpp"
@@ -89,7 +89,7 @@ TEST_F(IdleRedraw, AStaticDemoDrawsNothingWhileLeftAlone) {
 
 TEST_F(IdleRedraw, AStaticDemoDrawsNothingEvenWhileTheClockRuns) {
     open(kChromeProject);
-    m_window->clock().setPlaying(true); // what start-up did before issue 16
+    m_window->clock().setPlaying(true); // what start-up used to do
     framesOver(kSettleMs);              // play/pause is a time change: one frame
     EXPECT_FALSE(viewport().isAnimating()) << "nothing in the chrome demo moves";
     EXPECT_EQ(framesOver(kIdleMs), 0);

@@ -1,4 +1,4 @@
-// issue 16, item 7: the preview level the viewport draws at while navigating, from measured frame times.
+// The preview level the viewport draws at while navigating, from measured frame times.
 // Frames are simulated with a cost model: a fixed part, a part that goes with the pixels (the square of the
 // scale), a part per level of mirror nesting, and what the window system adds on top.
 #include "editor/view/AdaptiveResolution.hpp"

@@ -58,7 +58,7 @@ TEST(ViewCamera, FrameFillsTheViewWithTheSphereFromTheSameDirection) {
     EXPECT_GT(framed.far, glm::length(framed.position - framed.target) + 2.0) << "the far plane keeps it";
 }
 
-// issue 16: the orbit follows the rule of three.js OrbitControls (and Blender's turntable): the scene
+// The orbit follows the rule of three.js OrbitControls (and Blender's turntable): the scene
 // follows the mouse. rotateUp(2π·Δy/h) with Δy = now − before and phi -= angle: dragging down shrinks the
 // angle from +Y, so the camera rises; rotateLeft likewise: dragging right moves the camera to its left.
 speculum::render::Camera sideCamera() {

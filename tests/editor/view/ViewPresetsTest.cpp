@@ -1,4 +1,4 @@
-// issue 16: Blender's numpad views in speculum's Y-up world, and the view camera taking them. Front looks
+// Blender's numpad views in speculum's Y-up world, and the view camera taking them. Front looks
 // along −Z, Right along −X, Top straight down with +X to the right and −Z up on screen; the opposite
 // sides (Ctrl+numpad) look the other way; the distance to the target, the field of view and the depth
 // range stay as they were, and orbiting on from a preset turns the usual way.

@@ -1,4 +1,4 @@
-// RenderOptions::resolutionScale (issue 16, adaptive resolution in the editor): a frame drawn at a fraction
+// RenderOptions::resolutionScale (adaptive resolution in the editor): a frame drawn at a fraction
 // of the target's size and scaled up by the composite is the same picture, finite everywhere even with
 // over-bright light, and fills the whole target; a scale of 1 (and any tile) draws every pixel exactly as
 // before.

@@ -278,7 +278,7 @@ TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {
     EXPECT_EQ(frame.settings.mirrorDepth, 3);
     EXPECT_EQ(frame.camera.fovY, 65.0);
 
-    // A mesh node without a material gets DESIGN.md's default material.
+    // A mesh node without a material gets the default material.
     scene::SceneData data;
     data.nodes.push_back(boxNode("bare", {}));
     const render::FrameInput bare = snap(data, 0.0, meshes, warnings);

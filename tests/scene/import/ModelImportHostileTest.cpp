@@ -1,4 +1,4 @@
-// Hostile model files (issue 14, classes 1 and 2): node graphs that unfold into billions of nodes,
+// Hostile model files: node graphs that unfold into billions of nodes,
 // cycles, nesting deep enough to overflow a recursive reader's stack, headers that declare absurd
 // counts under a misleading name, and FIFOs or devices as the model or as a file it references. Each
 // must be refused within seconds with one line naming the cause. Every import runs in a child process

@@ -1,4 +1,4 @@
-// Imports that keep the file's parts, materials, textures, node tree and units (issue 13): real files
+// Imports that keep the file's parts, materials, textures, node tree and units: real files
 // from Debian's assimp-testmodels and a small glTF written here whose every value is known.
 #include "render/imageio/TextureLoader.hpp"
 #include "scene/import/MeshLibrary.hpp"

@@ -1,4 +1,4 @@
-// issue 16: what is animated in a scene (a static one need not be drawn again while the clock runs) and
+// What is animated in a scene (a static one need not be drawn again while the clock runs) and
 // how long one loop of its animation lasts (the time slider's range), and the clock looping over it.
 #include "scene/model/SceneAnimation.hpp"
 

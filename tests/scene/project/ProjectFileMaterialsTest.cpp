@@ -1,4 +1,4 @@
-// The scene-file fields imported models use (issue 13): material textures, wrap, alpha, a mesh's `part`.
+// The scene-file fields imported models use: material textures, wrap, alpha, a mesh's `part`.
 // Defaults are not written, so files without them keep their exact bytes.
 #include "editor/document/Properties.hpp"
 #include "scene/project/ProjectFile.hpp"
