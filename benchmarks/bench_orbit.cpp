@@ -175,6 +175,113 @@ Orbit dragHandle(ui::MainWindow& window, double seconds) {
     return o;
 }
 
+struct Options {
+    double seconds = 3.0;
+    QSize size; // empty: the window's default size
+    bool overlay = true, guides = true, verbose = false, handle = false;
+    std::vector<QString> projects; // empty: the demos the target is about
+};
+
+Options parseOptions(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--seconds" && i + 1 < argc) {
+            o.seconds = std::atof(argv[++i]);
+        } else if (arg == "--no-overlay") {
+            o.overlay = false; // what the handles, guides and labels cost
+        } else if (arg == "--handle") {
+            o.handle = true; // drag a move handle instead of orbiting
+        } else if (arg == "--screenshot" && i + 1 < argc) {
+            g_screenshots = QString::fromLocal8Bit(argv[++i]);
+        } else if (arg == "--verbose") {
+            o.verbose = true;
+        } else if (arg == "--no-guides") {
+            o.guides = false;
+        } else if (arg == "--size" && i + 1 < argc) {
+            int w = 0, h = 0;
+            if (std::sscanf(argv[++i], "%dx%d", &w, &h) == 2 && w > 0 && h > 0) {
+                o.size = QSize(w, h);
+            }
+        } else {
+            o.projects.push_back(QString::fromLocal8Bit(argv[i]));
+        }
+    }
+    if (o.projects.empty()) {
+        for (const char* name : {"mirrors", "chrome", "models"}) {
+            o.projects.push_back(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/%1.speculum.json")
+                                     .arg(QString::fromLatin1(name)));
+        }
+    }
+    return o;
+}
+
+// The main window, shown and exposed, its viewport with the overlay and guides as asked.
+std::unique_ptr<ui::MainWindow> openWindow(const Options& options) {
+    auto window = std::make_unique<ui::MainWindow>();
+    if (options.size.isValid()) {
+        window->resize(options.size);
+    }
+    window->show();
+    QElapsedTimer exposing;
+    exposing.start();
+    while (!(window->windowHandle() && window->windowHandle()->isExposed()) && exposing.elapsed() < 10000) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    }
+    ui::Viewport& viewport = window->viewport();
+    if (QWidget* o = viewport.findChild<QWidget*>(QStringLiteral("viewportOverlay")); o && !options.overlay) {
+        o->hide();
+    }
+    viewport.setGuidesVisible(options.guides);
+    runFor(300);
+    return window;
+}
+
+enum class Verdict { Met, Missed, RendererFailed };
+
+// Opens one project and drags in it with and without adaptive resolution; prints its row.
+Verdict measureProject(ui::MainWindow& window, const QString& project, const Options& options) {
+    ui::Viewport& viewport = window.viewport();
+    const std::string name = QFileInfo(project).fileName().toStdString();
+    if (auto opened = window.openProjectFile(project); !opened.ok()) {
+        std::printf("%-24s error: %s\n", name.c_str(), opened.error().c_str());
+        return Verdict::Missed;
+    }
+    window.clock().setPlaying(false);
+    window.clock().setTime(0.0);
+    viewport.waitForModels();
+    viewport.update();
+    waitForFrame(viewport, viewport.framesRendered() + 2);
+    if (!viewport.rendererError().isEmpty()) {
+        std::printf("%-24s error: %s\n", name.c_str(), viewport.rendererError().toStdString().c_str());
+        return Verdict::RendererFailed;
+    }
+    const auto measure = [&](bool adaptiveResolution) {
+        viewport.setAdaptiveResolution(adaptiveResolution);
+        viewport.resetView();
+        waitForFrame(viewport, viewport.framesRendered() + 1);
+        return options.handle ? dragHandle(window, options.seconds) : orbit(viewport, options.seconds);
+    };
+    g_shotName = QFileInfo(project).completeBaseName().section(QLatin1Char('.'), 0, 0);
+    const Orbit adaptive = measure(true);
+    g_shotName.clear();
+    const Orbit full = measure(false);
+    viewport.setAdaptiveResolution(true);
+    if (!adaptive.ok || !full.ok) {
+        std::printf("%-24s error: the viewport stopped drawing\n", name.c_str());
+        return Verdict::Missed;
+    }
+    const bool required = name.rfind("mirrors", 0) == 0 || name.rfind("chrome", 0) == 0;
+    const bool met = adaptive.fps >= kTargetFps;
+    std::printf("%-24s %9.1f %9.1f %8.2f %10.1f %10.1f %12s%s\n", name.c_str(), adaptive.fps, full.fps,
+                adaptive.meanScale, adaptive.meanDrawMs, adaptive.fullFrameMs,
+                adaptive.restFull ? "full" : "NOT FULL", required && !met ? "  UNDER 20 FPS" : "");
+    if (options.verbose) {
+        std::printf("%s\n%s\n", adaptive.lastDrag.c_str(), full.lastDrag.c_str());
+    }
+    return adaptive.restFull && (!required || met) ? Verdict::Met : Verdict::Missed;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -188,108 +295,24 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("speculum-bench-orbit"));
 
-    double seconds = 3.0;
-    QSize size; // empty: the window's default size
-    bool overlay = true, guides = true, verbose = false, handle = false;
-    std::vector<QString> projects;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg == "--seconds" && i + 1 < argc) {
-            seconds = std::atof(argv[++i]);
-        } else if (arg == "--no-overlay") {
-            overlay = false; // what the handles, guides and labels cost
-        } else if (arg == "--handle") {
-            handle = true; // drag a move handle instead of orbiting
-        } else if (arg == "--screenshot" && i + 1 < argc) {
-            g_screenshots = QString::fromLocal8Bit(argv[++i]);
-        } else if (arg == "--verbose") {
-            verbose = true;
-        } else if (arg == "--no-guides") {
-            guides = false;
-        } else if (arg == "--size" && i + 1 < argc) {
-            int w = 0, h = 0;
-            if (std::sscanf(argv[++i], "%dx%d", &w, &h) == 2 && w > 0 && h > 0) {
-                size = QSize(w, h);
-            }
-        } else {
-            projects.push_back(QString::fromLocal8Bit(argv[i]));
-        }
-    }
-    const bool defaults = projects.empty();
-    if (defaults) {
-        for (const char* name : {"mirrors", "chrome", "models"}) {
-            projects.push_back(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/%1.speculum.json")
-                                   .arg(QString::fromLatin1(name)));
-        }
-    }
-
-    auto window = std::make_unique<ui::MainWindow>();
-    if (size.isValid()) {
-        window->resize(size);
-    }
-    window->show();
-    QElapsedTimer exposing;
-    exposing.start();
-    while (!(window->windowHandle() && window->windowHandle()->isExposed()) && exposing.elapsed() < 10000) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-    }
+    const Options options = parseOptions(argc, argv);
+    std::unique_ptr<ui::MainWindow> window = openWindow(options);
     ui::Viewport& viewport = window->viewport();
-    if (QWidget* o = viewport.findChild<QWidget*>(QStringLiteral("viewportOverlay")); o && !overlay) {
-        o->hide();
-    }
-    viewport.setGuidesVisible(guides);
-    runFor(300);
     const qreal dpr = viewport.devicePixelRatioF();
     std::printf("%s of %.0f s in the viewport of a %dx%d window (viewport %dx%d device pixels); fps "
                 "with and without adaptive resolution (preview budget %.0f ms a frame)\n",
-                handle ? "move-handle drag" : "orbit drag", seconds, window->width(), window->height(),
-                qRound(viewport.width() * dpr), qRound(viewport.height() * dpr),
+                options.handle ? "move-handle drag" : "orbit drag", options.seconds, window->width(),
+                window->height(), qRound(viewport.width() * dpr), qRound(viewport.height() * dpr),
                 viewport.previewFrameBudget());
     std::printf("%-24s %9s %9s %8s %10s %10s %12s\n", "project", "fps", "fps(full)", "scale", "draw ms",
                 "full ms", "rest frame");
     bool pass = true;
-    for (const QString& project : projects) {
-        const std::string name = QFileInfo(project).fileName().toStdString();
-        if (auto opened = window->openProjectFile(project); !opened.ok()) {
-            std::printf("%-24s error: %s\n", name.c_str(), opened.error().c_str());
-            pass = false;
-            continue;
-        }
-        window->clock().setPlaying(false);
-        window->clock().setTime(0.0);
-        viewport.waitForModels();
-        viewport.update();
-        waitForFrame(viewport, viewport.framesRendered() + 2);
-        if (!viewport.rendererError().isEmpty()) {
-            std::printf("%-24s error: %s\n", name.c_str(), viewport.rendererError().toStdString().c_str());
+    for (const QString& project : options.projects) {
+        const Verdict verdict = measureProject(*window, project, options);
+        if (verdict == Verdict::RendererFailed) {
             return 1;
         }
-
-        viewport.setAdaptiveResolution(true);
-        viewport.resetView();
-        waitForFrame(viewport, viewport.framesRendered() + 1);
-        g_shotName = QFileInfo(project).completeBaseName().section(QLatin1Char('.'), 0, 0);
-        const Orbit adaptive = handle ? dragHandle(*window, seconds) : orbit(viewport, seconds);
-        g_shotName.clear();
-        viewport.setAdaptiveResolution(false);
-        viewport.resetView();
-        waitForFrame(viewport, viewport.framesRendered() + 1);
-        const Orbit full = handle ? dragHandle(*window, seconds) : orbit(viewport, seconds);
-        viewport.setAdaptiveResolution(true);
-        if (!adaptive.ok || !full.ok) {
-            std::printf("%-24s error: the viewport stopped drawing\n", name.c_str());
-            pass = false;
-            continue;
-        }
-        const bool required = name.rfind("mirrors", 0) == 0 || name.rfind("chrome", 0) == 0;
-        const bool met = adaptive.fps >= kTargetFps;
-        std::printf("%-24s %9.1f %9.1f %8.2f %10.1f %10.1f %12s%s\n", name.c_str(), adaptive.fps, full.fps,
-                    adaptive.meanScale, adaptive.meanDrawMs, adaptive.fullFrameMs,
-                    adaptive.restFull ? "full" : "NOT FULL", required && !met ? "  UNDER 20 FPS" : "");
-        if (verbose) {
-            std::printf("%s\n%s\n", adaptive.lastDrag.c_str(), full.lastDrag.c_str());
-        }
-        pass = pass && adaptive.restFull && (!required || met);
+        pass = pass && verdict == Verdict::Met;
     }
     window->undoStack().setClean();
     window->newProject();
