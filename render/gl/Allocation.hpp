@@ -31,7 +31,8 @@ base::Status finishAllocation();
 base::Status checkFramebuffer(GLenum target = GL_FRAMEBUFFER);
 
 // True between a beginAllocation() that let the allocation go ahead and the finishAllocation() that
-// checks it: GL errors raised then are expected and handled (DebugOutput does not count them as errors).
+// checks it: GL errors raised then are expected and handled (the tests' KHR_debug check,
+// tests/support/DebugOutput, does not count them as errors).
 bool allocationBeingChecked();
 
 // Chooses the largest size, from the one asked for down by halving, whose allocation works, and remembers

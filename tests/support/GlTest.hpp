@@ -1,9 +1,9 @@
 #pragma once
 
-#include "render/gl/DebugOutput.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/renderer/Renderer.hpp"
 #include "render/renderer/StillRenderer.hpp"
+#include "support/DebugOutput.hpp"
 
 #include <gtest/gtest.h>
 #include <memory>

@@ -1,4 +1,4 @@
-#include "render/gl/DebugOutput.hpp"
+#include "support/DebugOutput.hpp"
 
 #include "render/gl/Allocation.hpp"
 
