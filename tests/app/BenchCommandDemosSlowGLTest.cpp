@@ -1,6 +1,7 @@
 // `speculum bench --quick` on the chrome and mirrors demos, as the README suggests running it: both finish,
 // and each gets the families its scene calls for. Labelled slow (each run takes tens of seconds).
 #include "CliRun.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QByteArray>
 #include <QJsonArray>
@@ -17,10 +18,9 @@ namespace {
 namespace fs = std::filesystem;
 
 std::set<std::string> benchFamilies(const std::string& demo) {
-    const fs::path out = fs::path(SPECULUM_TEST_DATA_DIR) / ("bench-demo-" + demo);
+    const fs::path out = fs::path(speculum::testDataPath()) / ("bench-demo-" + demo);
     fs::remove_all(out);
-    const std::string scene =
-        std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/" + demo + ".speculum.json";
+    const std::string scene = speculum::testSourcePath("resources/scenes/") + demo + ".speculum.json";
     const auto start = std::chrono::steady_clock::now();
     const speculum::test::CliRun run =
         speculum::test::runSpeculum("bench " + scene + " --out " + out.string() + " --quick");

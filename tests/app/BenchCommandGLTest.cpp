@@ -2,6 +2,7 @@
 // JSON agree, that the plots are real images, that a scene gets only the families it calls for, and that
 // bad input, or a Ctrl-C mid-run, writes nothing.
 #include "CliRun.hpp"
+#include "support/TestPaths.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <QByteArray>
@@ -91,7 +92,7 @@ std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
 class BenchCli : public ::testing::Test {
 protected:
     void SetUp() override {
-        m_dir = fs::path(SPECULUM_TEST_DATA_DIR) /
+        m_dir = fs::path(speculum::testDataPath()) /
                 ("bench-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(m_dir);
         fs::create_directories(m_dir);
@@ -286,7 +287,7 @@ TEST_F(BenchCli, InterruptedRunStopsAndWritesNothing) {
     const fs::path scene = writeScene("scene.speculum.json", sceneJson(true));
     const fs::path out = m_dir / "interrupted";
     const fs::path errFile = m_dir / "interrupted.err";
-    const std::string binary = SPECULUM_BINARY;
+    const std::string binary = speculum::testCliBinary();
     const std::vector<std::string> args = {binary,       "bench",   scene.string(), "--out",
                                            out.string(), "--quick", "--size",       "320x180"};
     std::vector<char*> argv;

@@ -2,6 +2,7 @@
 #include "CliRun.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/renderer/StillRenderer.hpp"
+#include "support/TestPaths.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <QJsonArray>
@@ -30,7 +31,7 @@ CliRun speculum(const std::string& arguments) {
 }
 
 std::string demo() {
-    return std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/teapot.speculum.json";
+    return speculum::testSourcePath("resources/scenes/teapot.speculum.json");
 }
 
 std::string readAll(const fs::path& path);
@@ -38,7 +39,7 @@ std::string readAll(const fs::path& path);
 class Cli : public ::testing::Test {
 protected:
     void SetUp() override {
-        m_dir = fs::path(SPECULUM_TEST_DATA_DIR) /
+        m_dir = fs::path(speculum::testDataPath()) /
                 ("cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(m_dir);
         fs::create_directories(m_dir);
@@ -144,7 +145,7 @@ TEST_F(Cli, ProgressIsQuietOnRequestSparseInALogAndOneLineOnATerminal) {
 
     // Under a pseudo-terminal (script(1)): carriage returns and erase-to-end-of-line, one final line.
     const fs::path typescript = m_dir / "typescript.txt";
-    const std::string command = "script -qefc \"" + std::string(SPECULUM_BINARY) + " " + render + "\" " +
+    const std::string command = "script -qefc \"" + speculum::testCliBinary() + " " + render + "\" " +
                                 typescript.string() + " >/dev/null 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0);
     const std::string screen = readAll(typescript);
@@ -288,7 +289,7 @@ TEST_F(Cli, ExplainTextIsReadable) {
 namespace {
 
 TEST_F(Cli, ExplainOfASecondStaticFrameShowsTheReusedMaps) {
-    const std::string chrome = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/chrome.speculum.json";
+    const std::string chrome = speculum::testSourcePath("resources/scenes/chrome.speculum.json");
     const CliRun first = speculum("explain " + chrome + " --size 160x90 --json");
     ASSERT_EQ(first.status, 0) << first.err;
     EXPECT_NE(first.out.find("\"envmap\""), std::string::npos) << "the first frame captures the environment";
@@ -364,7 +365,7 @@ CliRun speculumWithEnv(const std::string& env, const std::string& arguments) {
     static int counter = 0;
     const fs::path errFile = fs::temp_directory_path() / ("speculum-cli-env-" + std::to_string(::getpid()) +
                                                           "-" + std::to_string(++counter));
-    const std::string command = "env " + env + " " + std::string(SPECULUM_BINARY) + " " + arguments + " 2>" +
+    const std::string command = "env " + env + " " + speculum::testCliBinary() + " " + arguments + " 2>" +
                                 errFile.string() + " </dev/null";
     CliRun run;
     FILE* pipe = ::popen(command.c_str(), "r");

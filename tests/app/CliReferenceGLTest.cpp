@@ -1,6 +1,7 @@
 // `speculum render --reference`: writes the traced still with the same metadata as a rasterized one, and
 // nothing at all when it fails.
 #include "CliRun.hpp"
+#include "support/TestPaths.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
@@ -24,14 +25,14 @@ CliRun speculum(const std::string& arguments) {
 }
 
 std::string demo() {
-    return std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/teapot.speculum.json";
+    return speculum::testSourcePath("resources/scenes/teapot.speculum.json");
 }
 
 class ReferenceCli : public ::testing::Test {
 protected:
     void SetUp() override {
         m_dir =
-            fs::path(SPECULUM_TEST_DATA_DIR) /
+            fs::path(speculum::testDataPath()) /
             ("reference-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(m_dir);
         fs::create_directories(m_dir);
@@ -65,7 +66,7 @@ TEST_F(ReferenceCli, WritesTheTracedStillWithMetadata) {
 // --samples sets the paths through rough reflections; the noise they leave is printed. The mirrors demo
 // has a rough mirror (roughness 0.15) in view.
 TEST_F(ReferenceCli, SamplesSetThePathsAndTheNoiseIsPrinted) {
-    const std::string mirrors = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/mirrors.speculum.json";
+    const std::string mirrors = speculum::testSourcePath("resources/scenes/mirrors.speculum.json");
     const fs::path out = m_dir / "mirrors.exr";
     const CliRun run =
         speculum("render " + mirrors + " -o " + out.string() + " --size 64x36 --reference --samples 8");

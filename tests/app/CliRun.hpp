@@ -1,7 +1,9 @@
 #pragma once
 
-// Runs the real speculum binary (SPECULUM_BINARY, for tests registered with USES_CLI) as a user would,
-// capturing its exit status, stdout and stderr.
+// Runs the real speculum binary (speculum::testCliBinary(), for tests registered with USES_CLI) as a user
+// would, capturing its exit status, stdout and stderr.
+#include "support/TestPaths.hpp"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -23,7 +25,7 @@ inline CliRun runSpeculum(const std::string& arguments) {
     static int counter = 0;
     const fs::path errFile = fs::temp_directory_path() / ("speculum-cli-" + std::to_string(::getpid()) + "-" +
                                                           std::to_string(++counter) + ".err");
-    const std::string command = std::string(SPECULUM_BINARY) + " " + arguments + " 2>" + errFile.string();
+    const std::string command = speculum::testCliBinary() + " " + arguments + " 2>" + errFile.string();
     CliRun run;
     FILE* pipe = ::popen(command.c_str(), "r");
     std::array<char, 4096> buffer{};

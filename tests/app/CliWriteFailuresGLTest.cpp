@@ -2,6 +2,8 @@
 // with SIGXFSZ ignored, so a write past it fails with EFBIG as a full disk fails with ENOSPC). Every output
 // (a still in each format, a reference EXR, the bench folder, a glTF export) must end in a non-zero exit
 // and one error line naming the file and the cause, the previous file byte-identical, no temporary left.
+#include "support/TestPaths.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -27,7 +29,7 @@ struct LimitedRun {
 // far below any image or file the commands write, and above the error line itself.
 LimitedRun underFileSizeLimit(const std::string& arguments, const fs::path& errFile, int blocks = 4) {
     const std::string command = "trap '' XFSZ; ulimit -f " + std::to_string(blocks) + "; exec " +
-                                std::string(SPECULUM_BINARY) + " " + arguments + " 2>" + errFile.string() +
+                                speculum::testCliBinary() + " " + arguments + " 2>" + errFile.string() +
                                 " >/dev/null";
     LimitedRun run;
     const int raw = std::system(("/bin/sh -c \"" + command + "\"").c_str());
@@ -52,7 +54,7 @@ std::vector<std::string> entries(const fs::path& folder) {
 }
 
 std::string demo() {
-    return std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/teapot.speculum.json";
+    return speculum::testSourcePath("resources/scenes/teapot.speculum.json");
 }
 
 // Only error lines (progress lines start "speculum: " too, but never say "error").
@@ -76,7 +78,7 @@ std::vector<std::string> errorLines(const std::string& err) {
 class CliWriteFailures : public ::testing::Test {
 protected:
     void SetUp() override {
-        m_dir = fs::path(SPECULUM_TEST_DATA_DIR) /
+        m_dir = fs::path(speculum::testDataPath()) /
                 ("cli-write-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         m_errDir = m_dir.string() + "-err";
         fs::remove_all(m_dir);

@@ -1,6 +1,7 @@
 // `speculum time` as a user runs it: frame-time statistics that hang together, the camera buffer the
 // frames used, the passes a static frame reuses and an animated one redraws, and bad input refused.
 #include "CliRun.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -15,7 +16,7 @@ using speculum::test::CliRun;
 using speculum::test::runSpeculum;
 
 std::string scene(const std::string& path) {
-    return std::string(SPECULUM_SOURCE_DIR) + "/" + path;
+    return speculum::testSourcePath(path);
 }
 
 QJsonObject timeJson(const std::string& arguments) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "scene/project/ProjectFile.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QFile>
 #include <filesystem>
@@ -12,7 +13,7 @@ namespace speculum::document::test {
 // A fresh, empty folder per test under the build's test-data folder, so tests never see each other's files.
 inline std::filesystem::path freshTestFolder() {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::filesystem::path folder = std::filesystem::path(SPECULUM_TEST_DATA_DIR) / "editor_document" /
+    const std::filesystem::path folder = std::filesystem::path(speculum::testDataPath()) / "editor_document" /
                                          (std::string(info->test_suite_name()) + "." + info->name());
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
@@ -24,7 +25,7 @@ inline QString qpath(const std::filesystem::path& p) {
 }
 
 inline QString demoScenePath() {
-    return QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+    return QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"));
 }
 
 inline QByteArray readBytes(const QString& path) {

@@ -5,6 +5,7 @@
 #include "render/frame/FrameInput.hpp"
 #include "render/image/Image.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "support/TestPaths.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <array>
@@ -23,7 +24,7 @@ namespace speculum::test::materials {
 // A fresh, empty folder per test under the build's test-data folder.
 inline std::filesystem::path freshFolder() {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::filesystem::path folder = std::filesystem::path(SPECULUM_TEST_DATA_DIR) / "materials" /
+    const std::filesystem::path folder = std::filesystem::path(speculum::testDataPath()) / "materials" /
                                          (std::string(info->test_suite_name()) + "." + info->name());
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);

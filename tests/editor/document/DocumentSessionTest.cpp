@@ -7,6 +7,7 @@
 #include "editor/document/EditOperations.hpp"
 #include "editor/document/NodeFactory.hpp"
 #include "render/math/Projection.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QTemporaryDir>
 #include <glm/mat4x4.hpp>
@@ -15,11 +16,11 @@ namespace speculum::document {
 namespace {
 
 QString demoScene() {
-    return QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+    return QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"));
 }
 
 std::string toyset() {
-    return SPECULUM_SOURCE_DIR "/resources/models/toyset.glb";
+    return speculum::testSourcePath("resources/models/toyset.glb");
 }
 
 TEST(DocumentSession, OpenReplacesTheSceneTheHistoryAndTheMeshLibrary) {
@@ -45,8 +46,8 @@ TEST(DocumentSession, AFailedOpenChangesNothing) {
     const scene::SceneData before = session.scene().toData();
     const render::MeshHandle sphere = session.meshes().builtin(scene::BuiltinMesh::Sphere, 16);
     std::vector<std::string> warnings;
-    EXPECT_FALSE(
-        session.open(QStringLiteral(SPECULUM_SOURCE_DIR "/no/such/project.speculum.json"), warnings));
+    EXPECT_FALSE(session.open(
+        QString::fromStdString(speculum::testSourcePath("no/such/project.speculum.json")), warnings));
     EXPECT_EQ(session.scene().toData(), before);
     EXPECT_EQ(session.undoStack().count(), 1);
     EXPECT_TRUE(session.isModified());

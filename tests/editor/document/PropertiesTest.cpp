@@ -4,6 +4,7 @@
 
 #include "editor/document/NodeFactory.hpp"
 #include "scene/project/ProjectFile.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QDir>
 #include <gtest/gtest.h>
@@ -114,7 +115,7 @@ TEST(Properties, InvalidValuesAreRefusedWithAMessageAndNotClamped) {
 
 TEST(Properties, TexturesMayNameAnImageEmbeddedInAModel) {
     speculum::scene::NodeData d = fullNode();
-    const std::string model = std::string(SPECULUM_SOURCE_DIR) + "/resources/models/toyset.glb";
+    const std::string model = speculum::testSourcePath("resources/models/toyset.glb");
     const auto* texture = findNodeProperty(QStringLiteral("material.texture"));
     ASSERT_TRUE(texture);
     const auto status = texture->set(d, QString::fromStdString(model + "#*0"));

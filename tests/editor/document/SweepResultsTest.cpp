@@ -9,6 +9,7 @@
 #include "scene/model/Scene.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/DocumentTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QUndoStack>
 #include <gtest/gtest.h>
@@ -154,10 +155,11 @@ TEST(SweepResults, AppliedSettingsAreOneUndoStepAndNameWhatDoesNotApply) {
 TEST(SweepResults, AGlossyPointAppliesItsRoughnessAndFilter) {
     scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(
-        scene::openProject(
-            scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/glossy.speculum.json"), warnings)
-            .ok());
+    ASSERT_TRUE(scene::openProject(
+                    scene,
+                    QString::fromStdString(speculum::testSourcePath("resources/scenes/glossy.speculum.json")),
+                    warnings)
+                    .ok());
     const scene::SceneData before = scene.toData();
     auto footprint = applySweepSettings(scene, {{"roughness", "0.5"}, {"glossy", "footprint 4 taps"}},
                                         QStringLiteral("Apply Sweep Setting glossy-footprint-4-0.5"));
@@ -195,10 +197,11 @@ TEST(SweepResults, AGlossyPointAppliesItsRoughnessAndFilter) {
 TEST(SweepResults, AShadowPointSetsEveryShadowedLightsKernel) {
     scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(
-        scene::openProject(
-            scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json"), warnings)
-            .ok());
+    ASSERT_TRUE(scene::openProject(
+                    scene,
+                    QString::fromStdString(speculum::testSourcePath("resources/scenes/chrome.speculum.json")),
+                    warnings)
+                    .ok());
     auto application = applySweepSettings(scene, {{"pcf", "7"}}, QStringLiteral("Apply Sweep Setting pcf 7"));
     EXPECT_TRUE(application.skipped.isEmpty())
         << application.skipped.join(QStringLiteral("; ")).toStdString();

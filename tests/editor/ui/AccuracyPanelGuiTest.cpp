@@ -10,6 +10,7 @@
 #include "editor/ui/SweepChart.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QAction>
 #include <QChart>
@@ -35,7 +36,8 @@ namespace {
 using test::waitFor;
 using test::waitForFrames;
 
-const QString kChrome = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json");
+const QString kChrome =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/chrome.speculum.json"));
 
 // Configurations of a sweep on the chrome scene in the layout `speculum bench` writes: its own, a coarse
 // tennis-ball map with shallower mirrors and a sharper PCF kernel (the one the test clicks), and a few more.
@@ -177,7 +179,7 @@ TEST_F(AccuracyPanelTest, CompareWithExactShowsFiniteNumbersAndAnErrorMap) {
     QTemporaryDir dir;
     ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
     ASSERT_TRUE(waitForFrames(*m_window, 2));
-    const QString shot = QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-accuracy-panel.png");
+    const QString shot = QString::fromStdString(speculum::testDataPath("editor-accuracy-panel.png"));
     ASSERT_TRUE(m_window->grab().save(shot));
     std::printf("screenshot: %s\n", qPrintable(shot));
 

@@ -8,6 +8,7 @@
 #include "editor/ui/Editor.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -89,7 +90,7 @@ protected:
     void SetUp() override {
         ASSERT_TRUE(m_dir.isValid());
         // A copy of the demo project (and its texture): the file the user would have open.
-        const QString scenes = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes");
+        const QString scenes = QString::fromStdString(speculum::testSourcePath("resources/scenes"));
         m_project = m_dir.filePath(QStringLiteral("teapot.speculum.json"));
         ASSERT_TRUE(QFile::copy(scenes + QStringLiteral("/teapot.speculum.json"), m_project));
         ASSERT_TRUE(QDir(m_dir.path()).mkpath(QStringLiteral("textures")));

@@ -5,6 +5,7 @@
 #include "editor/view/Selection.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QMouseEvent>
 #include <QTest>
@@ -18,7 +19,8 @@ using namespace speculum;
 using namespace speculum::ui::test;
 using speculum::scene::NodeId;
 
-const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+const QString kTeapotProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"));
 
 class HandleCancel : public ::testing::Test {
 protected:

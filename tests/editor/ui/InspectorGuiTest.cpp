@@ -10,6 +10,7 @@
 #include "editor/view/Selection.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -33,7 +34,8 @@ namespace {
 using test::waitFor;
 using test::waitForFrames;
 
-const QString kChrome = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json");
+const QString kChrome =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/chrome.speculum.json"));
 
 scene::NodeId findNode(const scene::Scene& scene, bool (*pick)(const scene::NodeData&)) {
     scene::NodeId found = scene::kNoNode;

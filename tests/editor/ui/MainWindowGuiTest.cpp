@@ -8,6 +8,7 @@
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "scene/model/Scene.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -30,7 +31,8 @@ namespace {
 using speculum::scene::NodeId;
 using speculum::ui::MainWindow;
 
-const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+const QString kTeapotProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"));
 
 bool waitFor(const std::function<bool()>& condition, int timeoutMs = 60000) {
     QElapsedTimer timer;
@@ -160,9 +162,9 @@ TEST_F(MainWindowTest, DrawsTheTeapotOnTheMarbleTable) {
     const QSize size = image.size();
 
     // Let people look at it.
-    const QString shot = QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-teapot.png");
+    const QString shot = QString::fromStdString(speculum::testDataPath("editor-teapot.png"));
     EXPECT_TRUE(m_window->grab().save(shot)) << shot.toStdString();
-    image.save(QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-teapot-viewport.png"));
+    image.save(QString::fromStdString(speculum::testDataPath("editor-teapot-viewport.png")));
 
     // The sky above everything is the scene's background colour (sRGB-encoded by the renderer).
     for (double fx : {0.05, 0.5, 0.95}) {

@@ -14,6 +14,7 @@
 #include "editor/view/AnimationClock.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -48,7 +49,8 @@ using namespace speculum;
 using namespace speculum::ui::test;
 using ui::MainWindow;
 
-const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+const QString kTeapotProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"));
 
 // Holds the FIFOs' write ends; see the file comment.
 class FifoWatchdog {

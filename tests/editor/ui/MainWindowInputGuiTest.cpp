@@ -12,6 +12,7 @@
 #include "scene/model/NodeMath.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QAction>
 #include <QDir>
@@ -206,7 +207,7 @@ TEST_F(EditorInput, ScreenshotsOfANewSceneAndTheDemos) {
     shoot(QStringLiteral("new-scene-first-mirror.png"));
     for (const char* demo : {"teapot", "mirrors", "chrome", "models"}) {
         const QString path =
-            QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/%1.speculum.json").arg(demo);
+            QString::fromStdString(speculum::testSourcePath("resources/scenes/%1.speculum.json")).arg(demo);
         ASSERT_TRUE(m_window->openProjectFile(path).ok()) << demo;
         shoot(QStringLiteral("demo-%1.png").arg(QString::fromLatin1(demo)));
     }

@@ -11,6 +11,7 @@
 #include "editor/view/Selection.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <QCheckBox>
@@ -36,7 +37,7 @@ using namespace speculum::ui::test;
 using speculum::scene::NodeId;
 using ui::MainWindow;
 
-const QString kScenes = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes");
+const QString kScenes = QString::fromStdString(speculum::testSourcePath("resources/scenes"));
 const QString kTeapotProject = kScenes + QStringLiteral("/teapot.speculum.json");
 
 class EditorOutput : public ::testing::Test {
@@ -185,7 +186,7 @@ TEST_F(EditorOutput, ExportStillMatchesTheCommandLine) {
     EXPECT_EQ(exported->still.samples, 4);
 
     QProcess cli;
-    cli.start(QStringLiteral(SPECULUM_BINARY),
+    cli.start(QString::fromStdString(speculum::testCliBinary()),
               {QStringLiteral("render"), kTeapotProject, QStringLiteral("-o"), cliPng,
                QStringLiteral("--size"), QStringLiteral("320x180"), QStringLiteral("--ssaa"),
                QStringLiteral("2")});
@@ -201,8 +202,8 @@ TEST_F(EditorOutput, ExportStillMatchesTheCommandLine) {
     EXPECT_LE(d.maximum, 2) << "mean difference " << d.mean;
     EXPECT_LT(d.mean, 0.05);
     // Let people compare.
-    QFile::remove(QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-export-still.png"));
-    QFile::copy(editorPng, QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-export-still.png"));
+    QFile::remove(QString::fromStdString(speculum::testDataPath("editor-export-still.png")));
+    QFile::copy(editorPng, QString::fromStdString(speculum::testDataPath("editor-export-still.png")));
 
     // A cancelled export writes nothing.
     const QString cancelled = dir.filePath(QStringLiteral("cancelled.png"));
@@ -263,7 +264,7 @@ TEST_F(EditorOutput, ExactReferenceExportMatchesTheCommandLine) {
     EXPECT_GT(exported->trace->glossyPixels, 0) << "the scene's rough mirrors are in view";
 
     QProcess cli;
-    cli.start(QStringLiteral(SPECULUM_BINARY),
+    cli.start(QString::fromStdString(speculum::testCliBinary()),
               {QStringLiteral("render"), project, QStringLiteral("-o"), cliPng, QStringLiteral("--size"),
                QStringLiteral("48x32"), QStringLiteral("--reference"), QStringLiteral("--samples"),
                QStringLiteral("3")});
@@ -371,7 +372,7 @@ TEST_F(EditorOutput, ScreenshotsOfEachDemoScene) {
         ASSERT_TRUE(waitForFrames(*m_window, 3));
         const QPixmap shot = m_window->grab();
         const QString stem = name.section(QLatin1Char('.'), 0, 0);
-        const QString path = QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-window-%1.png").arg(stem);
+        const QString path = QString::fromStdString(speculum::testDataPath("editor-window-%1.png")).arg(stem);
         ASSERT_TRUE(shot.save(path)) << path.toStdString();
         std::printf("screenshot: %s\n", qPrintable(path));
         // Not a blank window: the viewport area has many colours.

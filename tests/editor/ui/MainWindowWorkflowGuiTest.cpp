@@ -16,6 +16,7 @@
 #include "scene/model/Scene.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QAction>
 #include <QDir>
@@ -44,7 +45,8 @@ using namespace speculum::ui::test;
 using speculum::scene::NodeId;
 using ui::MainWindow;
 
-const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+const QString kTeapotProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"));
 
 class EditorWorkflow : public ::testing::Test {
 protected:
@@ -621,7 +623,8 @@ TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandleDragsActOnTh
     ASSERT_TRUE(waitForFrames(*m_window));
     // For a person to look at: both outlined (the teapot brighter), both rows selected, handles on the
     // teapot.
-    EXPECT_TRUE(m_window->grab().save(QStringLiteral(SPECULUM_TEST_DATA_DIR "/editor-multiselect.png")));
+    EXPECT_TRUE(
+        m_window->grab().save(QString::fromStdString(speculum::testDataPath("editor-multiselect.png"))));
     auto transformOf = [&](NodeId id) { return m_window->scene().findNode(id)->data().transform; };
     // Drags from a handle point to the right in several mouse moves.
     auto dragRight = [&](QPointF handle, int pixels) {

@@ -12,6 +12,7 @@
 #include "scene/import/ModelImport.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QFile>
 #include <QProgressBar>
@@ -321,10 +322,10 @@ TEST_F(ModelImportGui, WindowRepaintsDuringABigImportAndCancelLeavesTheDocument)
     QTemporaryDir dir;
     const QString ply = writeBigPly(dir, 700); // 980 000 triangles
     ASSERT_FALSE(ply.isEmpty());
-    ASSERT_TRUE(
-        m_window
-            ->openProjectFile(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json"))
-            .ok());
+    ASSERT_TRUE(m_window
+                    ->openProjectFile(QString::fromStdString(
+                        speculum::testSourcePath("resources/scenes/teapot.speculum.json")))
+                    .ok());
     ASSERT_TRUE(waitForFrames(*m_window));
     const speculum::scene::SceneData before = m_window->scene().toData();
 

@@ -4,6 +4,7 @@
 #include "editor/view/AnimationClock.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QAction>
 #include <QSlider>
@@ -18,8 +19,10 @@ namespace {
 using namespace speculum;
 using namespace speculum::ui::test;
 
-const QString kChromeProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json");
-const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+const QString kChromeProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/chrome.speculum.json"));
+const QString kTeapotProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"));
 
 class TimeSliderTest : public ::testing::Test {
 protected:

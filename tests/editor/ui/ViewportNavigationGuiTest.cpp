@@ -9,6 +9,7 @@
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QAction>
 #include <QMouseEvent>
@@ -24,8 +25,10 @@ namespace {
 using namespace speculum;
 using namespace speculum::ui::test;
 
-const QString kChromeProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json");
-const QString kMirrorsProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json");
+const QString kChromeProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/chrome.speculum.json"));
+const QString kMirrorsProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/mirrors.speculum.json"));
 
 void sendMouse(ui::Viewport& viewport, QEvent::Type type, QPointF at, Qt::MouseButton button,
                Qt::MouseButtons buttons, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {

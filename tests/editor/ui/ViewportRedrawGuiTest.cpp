@@ -5,6 +5,7 @@
 #include "editor/view/AnimationClock.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QUndoStack>
 #include <QWheelEvent>
@@ -16,8 +17,10 @@ namespace {
 using namespace speculum;
 using namespace speculum::ui::test;
 
-const QString kChromeProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json");
-const QString kTeapotProject = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json");
+const QString kChromeProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/chrome.speculum.json"));
+const QString kTeapotProject =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"));
 
 constexpr int kIdleMs = 2500;  // "several seconds without input"
 constexpr int kSettleMs = 600; // after the last frame a change asked for, before counting idle frames

@@ -4,6 +4,7 @@
 #include "render/image/ColorSpace.hpp"
 #include "render/imageio/TextureLoader.hpp"
 #include "render/reference/IdBuffer.hpp"
+#include "support/TestPaths.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -101,7 +102,7 @@ TEST(ErrorMetrics, ErrorMapIsWrittenAsAnImage) {
     const auto b = uniform(8, 8, 0.25f);
     auto diff = absoluteDifference(a, b);
     ASSERT_TRUE(diff.ok());
-    const std::string path = std::string(SPECULUM_TEST_DATA_DIR) + "/error_map_test.png";
+    const std::string path = speculum::testDataPath("error_map_test.png");
     std::filesystem::remove(path);
     ASSERT_TRUE(writeErrorMap(path, *diff).ok());
     auto loaded = render::loadTexture(path);

@@ -6,6 +6,7 @@
 #include "render/mesh/Primitives.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "support/GlTest.hpp"
+#include "support/TestPaths.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -38,7 +39,7 @@ FrameInput ballNearBigTriangles(ReflectorMap map, ReflectorFill fill) {
     input.camera.target = kBallCentre;
     input.camera.fovY = 34.0;
     input.camera.far = 50.0;
-    const std::string marble = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/textures/marble.png";
+    const std::string marble = speculum::testSourcePath("resources/scenes/textures/marble.png");
     // The floor: two triangles 16 units across, 0.05 below the ball.
     input.items.push_back({"Floor", glm::scale(glm::dmat4(1.0), glm::dvec3(8.0, 1.0, 8.0)), plane,
                            lit({0.9, 0.9, 0.9}, marble), true});

@@ -9,6 +9,7 @@
 #include "render/plan/Planner.hpp"
 #include "support/GlTest.hpp"
 #include "support/MaterialScenes.hpp"
+#include "support/TestPaths.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,7 +49,7 @@ FrameInput litScene(std::vector<Light> lights) {
     DrawItem floor{"Floor", glm::scale(glm::dmat4(1.0), glm::dvec3(4.0, 1.0, 4.0)), plane, {}, true};
     // Textured and untextured materials alternate in the draw order: each switch of shader variant must
     // carry the view's uniforms along.
-    floor.material.texture.path = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/textures/marble.png";
+    floor.material.texture.path = speculum::testSourcePath("resources/scenes/textures/marble.png");
     DrawItem wall{"Wall",
                   glm::scale(glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 2, -2)),
                                          glm::radians(90.0), glm::dvec3(1, 0, 0)),

@@ -7,6 +7,7 @@
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/GlTest.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QString>
 #include <array>
@@ -25,7 +26,8 @@ namespace metrics = render::metrics;
 FrameInput loadDemo(const char* name) {
     scene::Scene scene;
     std::vector<std::string> warnings;
-    const QString path = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/") + QString::fromUtf8(name);
+    const QString path =
+        QString::fromStdString(speculum::testSourcePath("resources/scenes/")) + QString::fromUtf8(name);
     EXPECT_TRUE(scene::openProject(scene, path, warnings).ok()) << name;
     scene::MeshLibrary meshes;
     return scene::snapshot(scene, 0.0, meshes, warnings);

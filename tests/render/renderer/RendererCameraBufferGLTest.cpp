@@ -10,6 +10,7 @@
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/GlTest.hpp"
+#include "support/TestPaths.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +63,8 @@ FrameInput demo(const std::string& name) {
     scene::Scene scene;
     scene::MeshLibrary meshes;
     std::vector<std::string> warnings;
-    const QString path = QString(SPECULUM_SOURCE_DIR) + "/resources/scenes/" + QString::fromStdString(name);
+    const QString path =
+        QString::fromStdString(speculum::testSourcePath("resources/scenes/")) + QString::fromStdString(name);
     EXPECT_TRUE(scene::openProject(scene, path, warnings)) << name;
     return scene::snapshot(scene, 0.4, meshes, warnings);
 }

@@ -98,6 +98,7 @@ TEST_F(GlTest, SupersamplingAveragesSubPixelSamples) {
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/project/ProjectFile.hpp"
+#include "support/TestPaths.hpp"
 
 namespace speculum::test {
 namespace {
@@ -109,7 +110,8 @@ TEST_F(GlTest, ConsecutiveFramesOfAnUnchangedDemoSceneAreIdentical) {
         scene::Scene scene;
         std::vector<std::string> warnings;
         ASSERT_TRUE(
-            scene::openProject(scene, QString(SPECULUM_SOURCE_DIR "/resources/scenes/") + name, warnings)
+            scene::openProject(
+                scene, QString::fromStdString(speculum::testSourcePath("resources/scenes/")) + name, warnings)
                 .ok());
         scene::MeshLibrary meshes;
         const render::FrameInput input = scene::snapshot(scene, 0.25, meshes, warnings);

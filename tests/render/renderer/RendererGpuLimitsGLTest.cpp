@@ -4,6 +4,7 @@
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/GlTest.hpp"
+#include "support/TestPaths.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,9 +19,11 @@ using namespace render;
 FrameInput chromeScene() {
     scene::Scene scene;
     std::vector<std::string> warnings;
-    EXPECT_TRUE(
-        scene::openProject(scene, SPECULUM_SOURCE_DIR "/resources/scenes/chrome.speculum.json", warnings)
-            .ok());
+    EXPECT_TRUE(scene::openProject(
+                    scene,
+                    QString::fromStdString(speculum::testSourcePath("resources/scenes/chrome.speculum.json")),
+                    warnings)
+                    .ok());
     scene::MeshLibrary meshes;
     FrameInput input = scene::snapshot(scene, 0.0, meshes, warnings);
     EXPECT_TRUE(input.reflector.has_value());

@@ -5,6 +5,7 @@
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/GlTest.hpp"
+#include "support/TestPaths.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -35,9 +36,11 @@ struct Sweep {
 void soak(render::Renderer& renderer, const Sweep& sweep, int frames) {
     scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(
-        scene::openProject(scene, QString(SPECULUM_SOURCE_DIR "/resources/scenes/") + sweep.scene, warnings)
-            .ok());
+    ASSERT_TRUE(scene::openProject(scene,
+                                   QString::fromStdString(speculum::testSourcePath("resources/scenes/")) +
+                                       sweep.scene,
+                                   warnings)
+                    .ok());
     scene::MeshLibrary meshes;
     // Memory is compared from a frame after the warm-up (and, when the map type cycles, after the last
     // switch, which legitimately allocates the new map) to the end.

@@ -5,6 +5,7 @@
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/GlTest.hpp"
+#include "support/TestPaths.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +22,9 @@ FrameInput mirrorsAndReflector() {
     scene::Scene scene;
     std::vector<std::string> warnings;
     EXPECT_TRUE(
-        scene::openProject(scene, SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json", warnings)
+        scene::openProject(
+            scene, QString::fromStdString(speculum::testSourcePath("resources/scenes/mirrors.speculum.json")),
+            warnings)
             .ok());
     scene::MeshLibrary meshes;
     FrameInput input = scene::snapshot(scene, 0.25, meshes, warnings);

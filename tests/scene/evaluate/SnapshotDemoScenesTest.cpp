@@ -3,6 +3,7 @@
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/project/ProjectFile.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QDir>
 #include <QFile>
@@ -13,7 +14,7 @@ namespace speculum::document {
 namespace {
 
 QStringList demoScenes() {
-    const QDir dir(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes"));
+    const QDir dir(QString::fromStdString(speculum::testSourcePath("resources/scenes")));
     QStringList paths;
     for (const QString& name : dir.entryList({"*.speculum.json"}, QDir::Files, QDir::Name))
         paths << dir.filePath(name);
@@ -21,10 +22,10 @@ QStringList demoScenes() {
 }
 
 TEST(DemoScenes, ThereAreDemoScenes) {
-    EXPECT_TRUE(
-        demoScenes().contains(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json")));
-    EXPECT_TRUE(
-        demoScenes().contains(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json")));
+    EXPECT_TRUE(demoScenes().contains(
+        QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json"))));
+    EXPECT_TRUE(demoScenes().contains(
+        QString::fromStdString(speculum::testSourcePath("resources/scenes/mirrors.speculum.json"))));
 }
 
 TEST(DemoScenes, EachLoadsCleanlyAndIsInTheFormSpeculumWrites) {
@@ -59,7 +60,8 @@ TEST(DemoScenes, MirrorRoomHasTwoFacingMirrorsAndObjectsBetween) {
     scene::Scene scene;
     ASSERT_TRUE(
         scene::openProject(
-            scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/mirrors.speculum.json"), warnings)
+            scene, QString::fromStdString(speculum::testSourcePath("resources/scenes/mirrors.speculum.json")),
+            warnings)
             .ok());
     scene::MeshLibrary meshes;
     const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);

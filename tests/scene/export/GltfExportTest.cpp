@@ -10,6 +10,7 @@
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/FillingDisk.hpp"
+#include "support/TestPaths.hpp"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -38,7 +39,7 @@ using namespace speculum::scene;
 
 std::filesystem::path folder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const auto dir = std::filesystem::path(SPECULUM_TEST_DATA_DIR) / "editor_editing" / info->name();
+    const auto dir = std::filesystem::path(speculum::testDataPath()) / "editor_editing" / info->name();
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
@@ -59,10 +60,11 @@ const aiNode* findNode(const aiNode* node, const std::string& name) {
 TEST(GltfExport, TheDemoSceneReadsBackWithItsNodesAndMeshes) {
     speculum::scene::Scene scene;
     std::vector<std::string> warnings;
-    ASSERT_TRUE(
-        speculum::scene::openProject(
-            scene, QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json"), warnings)
-            .ok());
+    ASSERT_TRUE(speculum::scene::openProject(
+                    scene,
+                    QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json")),
+                    warnings)
+                    .ok());
     QUndoStack stack;
     speculum::scene::NodeTree mirror = makeNode(NewNodeKind::Mirror, {0, 0, -4});
     mirror.data.mirror->size = {3.0, 1.5};

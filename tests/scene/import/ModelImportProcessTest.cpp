@@ -6,6 +6,7 @@
 
 #include "scene/import/ModelImport.hpp"
 #include "scene/import/ModelSerialization.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QJsonArray>
 #include <atomic>
@@ -28,7 +29,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 const fs::path kModels = "/usr/share/assimp/models";
-const fs::path kSeeds = fs::path(SPECULUM_SOURCE_DIR) / "tests/fuzz/model-seeds";
+const fs::path kSeeds = fs::path(speculum::testSourcePath()) / "tests/fuzz/model-seeds";
 
 #define REQUIRE_TEST_MODELS()                                                                                \
     if (!fs::is_directory(kModels)) {                                                                        \
@@ -37,7 +38,7 @@ const fs::path kSeeds = fs::path(SPECULUM_SOURCE_DIR) / "tests/fuzz/model-seeds"
 
 fs::path freshFolder() {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path folder = fs::path(SPECULUM_TEST_DATA_DIR) / "editor_import_child" /
+    const fs::path folder = fs::path(speculum::testDataPath()) / "editor_import_child" /
                             (std::string(info->test_suite_name()) + "." + info->name());
     fs::remove_all(folder);
     fs::create_directories(folder);

@@ -1,6 +1,7 @@
 #include "scene/import/ModelImport.hpp"
 
 #include "support/MeshChecks.hpp"
+#include "support/TestPaths.hpp"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
@@ -32,7 +33,7 @@ const fs::path kModels = "/usr/share/assimp/models";
 
 fs::path freshFolder() {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const fs::path folder = fs::path(SPECULUM_TEST_DATA_DIR) / "editor_import" /
+    const fs::path folder = fs::path(speculum::testDataPath()) / "editor_import" /
                             (std::string(info->test_suite_name()) + "." + info->name());
     fs::remove_all(folder);
     fs::create_directories(folder);

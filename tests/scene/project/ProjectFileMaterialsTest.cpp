@@ -3,6 +3,7 @@
 #include "editor/document/Properties.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/DocumentTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QDir>
 
@@ -88,7 +89,7 @@ TEST(ProjectMaterials, DemoScenesStillRoundTripByteForByte) {
     for (const QString& name :
          {QStringLiteral("teapot.speculum.json"), QStringLiteral("mirrors.speculum.json"),
           QStringLiteral("chrome.speculum.json"), QStringLiteral("glossy.speculum.json")}) {
-        const QString path = QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/") + name;
+        const QString path = QString::fromStdString(speculum::testSourcePath("resources/scenes/")) + name;
         std::vector<std::string> warnings;
         auto loaded = scene::loadProject(path, warnings);
         ASSERT_TRUE(loaded.ok()) << name.toStdString() << ": " << loaded.error();

@@ -6,6 +6,7 @@
 #include "editor/document/DocumentSession.hpp"
 #include "scene/evaluate/Snapshot.hpp"
 #include "support/DocumentTestSupport.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QDir>
 #include <QFileInfo>
@@ -109,8 +110,8 @@ TEST(ProjectFile, DemoSceneLoadsWithoutWarnings) {
     ASSERT_TRUE(scene.nodes[1].data.material);
     const QString texture = QString::fromStdString(scene.nodes[1].data.material->texture.path);
     EXPECT_TRUE(QFileInfo(texture).isAbsolute());
-    EXPECT_EQ(texture,
-              QDir::cleanPath(QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/textures/marble.png")));
+    EXPECT_EQ(texture, QDir::cleanPath(QString::fromStdString(
+                           speculum::testSourcePath("resources/scenes/textures/marble.png"))));
     ASSERT_TRUE(scene.nodes[2].data.light && scene.nodes[2].data.light->shadows);
     EXPECT_EQ(scene.nodes[2].data.light->shadows->pcf, 5);
 }

@@ -4,6 +4,7 @@
 
 #include "editor/document/NodeFactory.hpp"
 #include "scene/project/ProjectFile.hpp"
+#include "support/TestPaths.hpp"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -17,7 +18,7 @@ using namespace speculum::scene;
 
 QString folder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const auto dir = std::filesystem::path(SPECULUM_TEST_DATA_DIR) / "editor_recovery" / info->name();
+    const auto dir = std::filesystem::path(speculum::testDataPath()) / "editor_recovery" / info->name();
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return QString::fromStdString(dir.string());
@@ -31,7 +32,7 @@ TEST(Recovery, AnOrphanIsOfferedAndRestoresTheDocument) {
     speculum::scene::SceneData data;
     std::vector<std::string> warnings;
     auto demo = speculum::scene::loadProject(
-        QStringLiteral(SPECULUM_SOURCE_DIR "/resources/scenes/teapot.speculum.json"), warnings);
+        QString::fromStdString(speculum::testSourcePath("resources/scenes/teapot.speculum.json")), warnings);
     ASSERT_TRUE(demo.ok());
     data = *demo;
     data.nodes.push_back(makeNode(NewNodeKind::Mirror));

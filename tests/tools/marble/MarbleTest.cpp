@@ -1,6 +1,7 @@
 #include "tools/marble/Marble.hpp"
 
 #include "render/imageio/TextureLoader.hpp"
+#include "support/TestPaths.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -101,7 +102,7 @@ TEST(Marble, TilesSeamlessly) {
 }
 
 TEST(Marble, CommittedTextureMatchesTheGenerator) {
-    const std::string path = std::string(SPECULUM_SOURCE_DIR) + "/resources/scenes/textures/marble.png";
+    const std::string path = speculum::testSourcePath("resources/scenes/textures/marble.png");
     const base::Result<TextureImage> committed = loadTexture(path);
     ASSERT_TRUE(committed.ok()) << committed.error();
     const TextureImage generated = generateMarble(512, kCommittedSeed);
