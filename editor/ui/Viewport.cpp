@@ -100,9 +100,8 @@ Viewport::~Viewport() {
     releaseGlResources();
 }
 
-scene::MeshLibrary& Viewport::meshes() {
+void Viewport::readModels() {
     m_models->prepare(m_scene);
-    return m_meshes;
 }
 
 bool Viewport::modelsLoading() const {

@@ -81,12 +81,17 @@ public:
     // The renderer, for work that must run on this widget's context (still export): call makeCurrent()
     // first. Null until the widget has been shown (or when it failed).
     render::Renderer* renderer() { return m_renderer.get(); }
-    // The document's mesh library. Asking for it starts the reads of the scene's model files on workers
-    // (ViewportModels): a file not read yet is an empty stand-in until it is; waitForModels() waits for
-    // them (export does, so a still never lacks a model that is still loading).
-    scene::MeshLibrary& meshes();
+    // The document's mesh library (the session's own). Model files the scene references are read on
+    // workers (ViewportModels) when a frame or waitForModels() asks for them; one not read yet is an empty
+    // stand-in until it is.
+    scene::MeshLibrary& meshes() { return m_meshes; }
+    // Starts the reads of the model files the scene references that are not read yet (a frame does too),
+    // without waiting for them.
+    void readModels();
     bool modelsLoading() const;
-    // Runs the event loop until every model file the scene references is read (or failed).
+    // Starts the reads of the model files the scene references that are not read yet, and runs the event
+    // loop until every one is read (or failed): export does, so a still never lacks a model that is still
+    // loading.
     void waitForModels();
     // Warnings of a snapshot of the scene made with meshes() (an export) with the ones about model files
     // that failed on the workers put right (the stand-ins would make them say "no triangles", or nothing).

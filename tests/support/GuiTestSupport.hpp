@@ -41,7 +41,7 @@ inline bool waitFor(const std::function<bool()>& condition, int timeoutMs = 6000
 // Waits until the viewport has drawn at least `frames` more frames than now.
 // The scene's model files load on worker threads first (the viewport draws them once they are in).
 inline bool waitForFrames(MainWindow& window, int frames = 2) {
-    window.viewport().meshes(); // starts the reads of files the viewport has not drawn yet
+    window.viewport().readModels(); // the files the viewport has not drawn yet
     if (!waitFor([&] { return !window.viewport().modelsLoading(); })) {
         return false;
     }
