@@ -261,12 +261,20 @@ std::size_t EnvironmentCapture::bytes() const {
         static_cast<std::size_t>(l.components) * gl::mipChainTexels(l.width, l.height, levels) * colour +
         static_cast<std::size_t>(l.width) * static_cast<std::size_t>(l.height) * depth;
     if (m_cube) {
-        const int size = m_settings.cubeResolution > 0 ? m_settings.cubeResolution : m_settings.resolution;
+        const int size = intermediateCubeSize();
         const int cubeLevels = m_settings.mipmaps ? mipLevels(size, size) : 1;
         total += 6 * gl::mipChainTexels(size, size, cubeLevels) * colour +
                  static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * depth;
     }
     return total;
+}
+
+glm::ivec2 EnvironmentCapture::targetSize() const {
+    if (m_settings.type == MapType::Cube)
+        return {m_layout.width, m_layout.width};
+    if (m_settings.fill == FillMethod::Resampled)
+        return glm::ivec2(intermediateCubeSize());
+    return {m_layout.width, m_layout.height};
 }
 
 void EnvironmentCapture::renderCube(GLuint cube, int size, GLuint depth, const CaptureView& view,
@@ -312,7 +320,7 @@ void EnvironmentCapture::update(const CaptureView& view, const DrawCubeFace& dra
         renderCube(m_map.id(), m_layout.width, m_depth.id(), view, drawFace);
         finish(GL_TEXTURE_CUBE_MAP, m_map.id());
     } else if (m_settings.fill == FillMethod::Resampled) {
-        const int size = m_settings.cubeResolution > 0 ? m_settings.cubeResolution : m_settings.resolution;
+        const int size = intermediateCubeSize();
         renderCube(m_cube.id(), size, m_cubeDepth.id(), view, drawFace);
         finish(GL_TEXTURE_CUBE_MAP, m_cube.id());
         resample(m_cube.id()); // the cube was rendered in the map frame

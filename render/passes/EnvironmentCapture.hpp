@@ -8,6 +8,7 @@
 #include <functional>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 
 namespace speculum::render::envmap {
 
@@ -89,11 +90,19 @@ public:
     // The resampled fill's cube (0 if none).
     GLuint intermediateCube() const { return m_cube.id(); }
 
+    // What update()'s callbacks draw into: the framebuffer they find bound, and its size in texels (a face
+    // of the cube, the map's own or the resampled fill's, or a component of the direct fill).
+    GLuint framebuffer() const { return m_framebuffer.id(); }
+    glm::ivec2 targetSize() const;
+
     // GPU memory of everything the map owns: the map with its mip chain and depth buffer, and the
     // resampled fill's intermediate cube with its own.
     std::size_t bytes() const;
 
 private:
+    int intermediateCubeSize() const {
+        return m_settings.cubeResolution > 0 ? m_settings.cubeResolution : m_settings.resolution;
+    }
     void renderCube(GLuint cube, int size, GLuint depth, const CaptureView& view,
                     const DrawCubeFace& drawFace);
     void renderWarped(const CaptureView& view, const DrawWarped& drawWarped);

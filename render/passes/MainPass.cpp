@@ -2,7 +2,7 @@
 
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
-#include "render/passes/EnvironmentMirrors.hpp"
+#include "render/passes/EnvironmentFaces.hpp"
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
@@ -213,10 +213,19 @@ glm::dmat4 drawnMirrorRectangle(const FrameInput& input, const Mirror& mirror, c
 
 } // namespace
 
-glm::mat4 mirrorRectangleClip(const FrameInput& input, const Mirror& mirror, const ViewSetup& view) {
+glm::dmat4 drawnMirrorWorld(const FrameInput& input, std::size_t mirror, const ViewSetup& view,
+                            const MainPassContext& context) {
+    // A split mesh follows the warp, whose clip space no part of the rectangle can be cut to.
+    return context.mirrorMesh(mirror) == context.unitPlane
+               ? drawnMirrorRectangle(input, input.mirrors[mirror], view)
+               : mirrorRectangle(input.mirrors[mirror]);
+}
+
+glm::mat4 mirrorRectangleClip(const FrameInput& input, std::size_t mirror, const ViewSetup& view,
+                              const MainPassContext& context) {
     const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
     return glm::mat4(view.viewProjection * toCameraRelative * view.reflection *
-                     drawnMirrorRectangle(input, mirror, view));
+                     drawnMirrorWorld(input, mirror, view, context));
 }
 
 namespace {
@@ -236,8 +245,8 @@ void drawStencilMirrorDepths(const FrameInput& input, const ViewSetup& view, con
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
             any = true;
         }
-        ctx.depthOnlyProgram->set("uModelLightClip", mirrorRectangleClip(input, input.mirrors[i], view));
-        ctx.meshes.get(ctx.unitPlane).draw();
+        ctx.depthOnlyProgram->set("uModelLightClip", mirrorRectangleClip(input, i, view, ctx));
+        ctx.meshes.get(ctx.mirrorMesh(i)).draw();
     }
     if (any)
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -363,11 +372,7 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
             outsideView(ctx.meshes.get(ctx.unitPlane).bounds, mirrorRectangle(input.mirrors[i]), input, view))
             continue;
         setMaterial(input.mirrors[i].material, p, ctx);
-        const MeshHandle& mesh = ctx.mirrorMesh(i);
-        drawLitMesh(mesh,
-                    mesh == ctx.unitPlane ? drawnMirrorRectangle(input, input.mirrors[i], view)
-                                          : mirrorRectangle(input.mirrors[i]),
-                    input, p, ctx);
+        drawLitMesh(ctx.mirrorMesh(i), drawnMirrorWorld(input, i, view, ctx), input, p, ctx);
     }
     if (input.reflector && input.reflector->mesh &&
         !(ctx.drawReflector && ctx.drawReflector(input, view, ctx))) {

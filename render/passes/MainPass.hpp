@@ -137,8 +137,16 @@ void drawLitMesh(const MeshHandle& mesh, const glm::dmat4& world, const FrameInp
 // The world matrix of a mirror's rectangle drawn with the unit plane mesh.
 glm::dmat4 mirrorRectangle(const Mirror& mirror);
 
-// Object → clip of a mirror's rectangle drawn in a view, composed in double. The depth-first pass and
-// the stencil mask both use it with the same program, so their depths agree exactly.
-glm::mat4 mirrorRectangleClip(const FrameInput& input, const Mirror& mirror, const ViewSetup& view);
+// The world matrix a mirror's mesh (MainPassContext::mirrorMesh) is drawn with in a view: the unit
+// plane's rectangle, only the part in view when the rest is huge; a split mesh's whole rectangle.
+glm::dmat4 drawnMirrorWorld(const FrameInput& input, std::size_t mirror, const ViewSetup& view,
+                            const MainPassContext& context);
+
+// Object → clip of a mirror's mesh drawn in a view, composed in double. The depth-first pass and the
+// stencil mask both use it with the same program, so their depths agree exactly. In a direct-fill
+// component, whose views have no projection (an identity viewProjection), it ends in the reflected
+// capture-relative coordinates the warp takes.
+glm::mat4 mirrorRectangleClip(const FrameInput& input, std::size_t mirror, const ViewSetup& view,
+                              const MainPassContext& context);
 
 } // namespace speculum::render::passes

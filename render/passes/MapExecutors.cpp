@@ -1,5 +1,5 @@
-// The passes that draw a map of their own: a light's shadow map, the reflector's environment map and its
-// GGX pre-filtered chain.
+// The passes that draw a map of their own: a light's shadow map, the reflector's environment map (with the
+// mirror passes planned inside it) and its GGX pre-filtered chain.
 #include "render/passes/PassExecutors.hpp"
 
 namespace speculum::render::passes {
@@ -31,8 +31,15 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
         r.dummyShadowCube.id(), r.unitPlane};
     context.coarseItems = frame.plan.coarseItems;
     const EnvmapPlan& map = *frame.plan.envmap;
+    // The mirror passes planned inside the map run in the face they were planned in, with the executors
+    // of the camera's mirrors.
+    auto runFacePasses = [&](const ViewSpace& face) {
+        for (const PlannedPass& pass : map.passes)
+            if (face.view(pass.view).face == face.face)
+                runPass(pass, frame, face);
+    };
     if (base::Status captured =
-            r.reflector.capture(frame.input, map, context, {&r.flatProgram, &r.mirrorProgram});
+            r.reflector.capture(frame.input, map, context, {r.flatProgram, r.mirrorProgram}, runFacePasses);
         !captured) {
         frame.warnings.push_back(captured.error());
         return {};

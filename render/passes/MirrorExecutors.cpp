@@ -1,5 +1,6 @@
 // The three passes of a planar mirror's view: its mask in the parent's view, the reflected scene, and the
-// mirror's surface over it.
+// mirror's surface over it. They run in the space their views belong to: the camera's, or a face of the
+// reflector's environment map.
 #include "base/Printable.hpp"
 #include "render/passes/MirrorPasses.hpp"
 #include "render/passes/PassExecutors.hpp"
@@ -8,29 +9,18 @@ namespace speculum::render::passes {
 
 namespace {
 
-const MirrorView& viewOf(const PlannedPass& pass, const FrameExecution& frame) {
-    return frame.plan.views.at(static_cast<std::size_t>(pass.view));
-}
-
-// The view a mirror view's mask and surface are drawn in (the parent's), or its own, with the pass's
-// declared winding.
-ViewSetup setupOf(int view, const PlannedPass& pass, const FrameExecution& frame) {
-    return viewSetup(frame.input, frame.plan, view, frame.projection,
-                     {frame.target.width, frame.target.height}, pass.writes.clockwise);
-}
-
 // A reflection its surface copies into the camera's 8-bit sRGB buffer (surfaceCopiesReflection) is kept
 // in 8-bit sRGB too: drawn with the same encoding as that buffer, then copied as stored, neither decoded
 // nor encoded again (EXT_texture_sRGB_decode's skip, and sRGB writes off). Half the bytes of a half-float
 // texture to clear and read, and the surface's encoding of each pixel is gone. The same bytes as before
 // but where the half float's rounding moved a colour across an 8-bit step. Views inside it keep half
 // float: what their stencil mirrors blend is not copied.
-bool keptEncoded(const MirrorView& view, int viewIndex, const FrameExecution& frame) {
+bool keptEncoded(const MirrorView& view, int viewIndex, const ViewSpace& space, const FrameExecution& frame) {
     if (!view.ownTarget || view.parent >= 0 || frame.plan.cameraBuffer != CameraBuffer::Srgb8 ||
-        !surfaceCopiesReflection(frame.input.mirrors.at(static_cast<std::size_t>(view.mirror)),
+        !surfaceCopiesReflection(space.input.mirrors.at(static_cast<std::size_t>(view.mirror)),
                                  glm::dvec3(1.0)))
         return false;
-    for (const MirrorView& other : frame.plan.views)
+    for (const MirrorView& other : space.views)
         if (other.parent == viewIndex)
             return false;
     return epoxy_has_gl_extension("GL_EXT_texture_sRGB_decode");
@@ -38,10 +28,15 @@ bool keptEncoded(const MirrorView& view, int viewIndex, const FrameExecution& fr
 
 } // namespace
 
-PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame) {
-    const MirrorView& view = viewOf(pass, frame);
-    bindWrites(pass.writes, frame);
-    MirrorOcclusion& occlusion = frame.resources.occlusion;
+PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space) {
+    const MirrorView& view = space.view(pass.view);
+    bindWrites(pass.writes, frame, space);
+    const ViewSetup parent = viewSetup(space, view.parent, pass.writes.clockwise);
+    if (!space.occlusion) { // nothing tests whether the mirror is hidden: its reflection is drawn anyway
+        drawMirrorMask(space, view, parent, 0, false);
+        return {};
+    }
+    MirrorOcclusion& occlusion = *space.occlusion;
     const bool wait = occlusion.mustWait(pass.view);
     if (view.ownTarget && !wait) {
         // Nothing to mark, and no need to know now: the surface counts the pixels instead, so the
@@ -49,9 +44,7 @@ PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame) {
         occlusion.countAtSurface(pass.view);
         return {true, "visible last frame, so its pixels are counted as its surface is drawn"};
     }
-    const bool marked =
-        drawMirrorMask(frame.input, view, setupOf(view.parent, pass, frame), frame.resources.flatProgram,
-                       frame.context, occlusion.query(pass.view), wait);
+    const bool marked = drawMirrorMask(space, view, parent, occlusion.query(pass.view), wait);
     PassResult result;
     if (wait) {
         occlusion.waited(pass.view, marked);
@@ -67,12 +60,12 @@ PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame) {
     return result;
 }
 
-PassResult runMirror(const PlannedPass& pass, FrameExecution& frame) {
+PassResult runMirror(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space) {
     PassResult result;
     if (pass.writes.target == PassTarget::Reflection) {
         gl::RenderTexture& texture =
             frame.resources.reflectionTextures.at(static_cast<std::size_t>(pass.writes.slot));
-        const bool encoded = keptEncoded(viewOf(pass, frame), pass.view, frame);
+        const bool encoded = keptEncoded(space.view(pass.view), pass.view, space, frame);
         if (encoded)
             result.outcome = "8-bit sRGB reflection texture, which the mirror's surface copies as stored";
         if (base::Status made = texture.ensure(frame.target.width, frame.target.height,
@@ -87,13 +80,13 @@ PassResult runMirror(const PlannedPass& pass, FrameExecution& frame) {
             return {false, {}};
         }
     }
-    bindWrites(pass.writes, frame);
-    drawMainPass(frame.input, setupOf(pass.view, pass, frame), frame.context);
+    bindWrites(pass.writes, frame, space);
+    drawSpaceView(space, pass.view, pass.writes.clockwise);
     return result;
 }
 
-PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame) {
-    const MirrorView& view = viewOf(pass, frame);
+PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space) {
+    const MirrorView& view = space.view(pass.view);
     GLuint reflection = 0;
     int levels = 1;
     bool encoded = false;
@@ -113,22 +106,22 @@ PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame) {
             glBindTexture(GL_TEXTURE_2D, 0);
         }
     }
-    bindWrites(pass.writes, frame);
+    bindWrites(pass.writes, frame, space);
     if (encoded)
         glDisable(GL_FRAMEBUFFER_SRGB);
-    MirrorOcclusion& occlusion = frame.resources.occlusion;
-    const bool counts = occlusion.countsAtSurface(pass.view);
+    const bool counts = space.occlusion && space.occlusion->countsAtSurface(pass.view);
     if (counts)
-        glBeginQuery(GL_ANY_SAMPLES_PASSED, occlusion.query(pass.view));
-    drawMirrorSurface(frame.input, view, setupOf(view.parent, pass, frame), frame.resources.mirrorProgram,
-                      frame.resources.flatProgram, frame.context, reflection, levels,
-                      {frame.target.width, frame.target.height}, encoded);
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, space.occlusion->query(pass.view));
+    drawMirrorSurface(space, view, viewSetup(space, view.parent, pass.writes.clockwise), reflection, levels,
+                      encoded);
     if (counts) {
         glEndQuery(GL_ANY_SAMPLES_PASSED);
-        occlusion.leftForLater(pass.view);
+        space.occlusion->leftForLater(pass.view);
     }
     if (encoded)
         glEnable(GL_FRAMEBUFFER_SRGB);
+    // The last pass that draws in the view: what was made to draw it can go.
+    space.leave(pass.view);
     return {};
 }
 

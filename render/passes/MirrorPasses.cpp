@@ -17,39 +17,44 @@ namespace {
 constexpr float kFarPathLength = 65504.0f;
 } // namespace
 
-ViewSetup viewSetup(const FrameInput& input, const FramePlan& plan, int viewIndex,
-                    const glm::dmat4& cameraProjection, glm::ivec2 targetSize, bool clockwise) {
+ViewSetup viewSetup(const ViewSpace& space, int viewIndex, bool clockwise) {
     ViewSetup setup;
-    setup.cullOutside = true;
-    setup.clockwise = clockwise;
-    const glm::dmat4 rotation = math::viewRotation(input.camera);
+    setup.cullOutside = space.frustum;
+    setup.clockwise = clockwise != space.flipsWinding;
     if (viewIndex < 0) {
-        setup.viewProjection = cameraProjection * rotation;
-        setup.eye = input.camera.position;
-        setup.preWeightedStencil = plan.preWeighted;
+        setup.viewProjection = space.projection * space.rotation;
+        setup.eye = space.input.camera.position;
+        setup.coarseDetail = space.ownViewCoarse;
+        setup.preWeightedStencil = space.preWeighted;
     } else {
-        const MirrorView& view = plan.views[static_cast<std::size_t>(viewIndex)];
-        setup.viewProjection = view.projection * rotation;
+        const MirrorView& view = space.view(viewIndex);
+        setup.viewProjection = view.projection * space.rotation;
         setup.reflection = view.reflection;
         setup.eye = view.eye;
         setup.coarseDetail = true;
         setup.pathLengthInAlpha = view.textureSlot >= 0;
         setup.weight = view.weight;
-        setup.preWeightedStencil = plan.preWeighted && view.textureSlot < 0;
-        const glm::dvec2 size = glm::max(glm::dvec2(targetSize), glm::dvec2(1.0));
+        setup.preWeightedStencil = space.preWeighted && view.textureSlot < 0;
+        const glm::dvec2 size = glm::max(glm::dvec2(space.size), glm::dvec2(1.0));
         setup.ndcBounds = glm::dvec4(view.rect.x0 / size.x, view.rect.y0 / size.y, view.rect.x1 / size.x,
                                      view.rect.y1 / size.y) *
                               2.0 -
                           1.0;
     }
-    setup.skipMirror.assign(input.mirrors.size(), false);
-    setup.stencilMirror.assign(input.mirrors.size(), false);
-    for (const MirrorView& child : plan.views)
-        if (child.parent == viewIndex) {
+    const std::size_t mirrors = space.input.mirrors.size();
+    setup.skipMirror.assign(mirrors, false);
+    setup.stencilMirror.assign(mirrors, false);
+    for (const MirrorView& child : space.views)
+        if (child.parent == viewIndex && child.face == space.face) {
             setup.skipMirror[static_cast<std::size_t>(child.mirror)] = true;
             setup.stencilMirror[static_cast<std::size_t>(child.mirror)] = !child.ownTarget;
         }
     return setup;
+}
+
+void drawSpaceView(const ViewSpace& space, int viewIndex, bool clockwise) {
+    const ViewSetup setup = viewSetup(space, viewIndex, clockwise);
+    drawMainPass(space.enter(viewIndex, space.context.program), setup, space.context);
 }
 
 void scissorTo(const math::PixelRect& rect) {
@@ -57,12 +62,15 @@ void scissorTo(const math::PixelRect& rect) {
     glScissor(rect.x0, rect.y0, rect.width(), rect.height());
 }
 
-bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                    const gl::Program& maskProgram, const MainPassContext& context, GLuint query,
+bool drawMirrorMask(const ViewSpace& space, const MirrorView& view, const ViewSetup& parent, GLuint query,
                     bool waitForQuery) {
-    const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
+    const gl::Program& maskProgram = space.flatProgram;
+    const FrameInput& input = space.enter(view.parent, maskProgram);
+    const MainPassContext& context = space.context;
+    const auto mirror = static_cast<std::size_t>(view.mirror);
+    const gl::GpuMesh& mesh = context.meshes.get(context.mirrorMesh(mirror));
     maskProgram.use();
-    maskProgram.set("uModelLightClip", mirrorRectangleClip(input, mirror, parent));
+    maskProgram.set("uModelLightClip", mirrorRectangleClip(input, mirror, parent, context));
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -71,12 +79,15 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
     glStencilMask(0xFF);
     glStencilFunc(GL_EQUAL, view.parentStencilLevel, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, view.ownTarget ? GL_KEEP : GL_INCR);
-    glBeginQuery(GL_ANY_SAMPLES_PASSED, query);
-    context.meshes.get(context.unitPlane).draw();
-    glEndQuery(GL_ANY_SAMPLES_PASSED);
-    GLuint anyPassed = 1; // not waited for: maybe
-    if (waitForQuery)
-        glGetQueryObjectuiv(query, GL_QUERY_RESULT, &anyPassed);
+    if (query)
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, query);
+    mesh.draw();
+    GLuint anyPassed = 1; // not tested, or not waited for: maybe
+    if (query) {
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        if (waitForQuery)
+            glGetQueryObjectuiv(query, GL_QUERY_RESULT, &anyPassed);
+    }
     if (anyPassed && !view.ownTarget) {
         // Inside the mask, reset colour to the background and depth to the far plane: the reflected scene
         // (which lies behind the mirror) replaces whatever the parent view drew there.
@@ -90,7 +101,7 @@ bool drawMirrorMask(const FrameInput& input, const MirrorView& view, const ViewS
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_ALWAYS);
         glDepthRange(1.0, 1.0);
-        context.meshes.get(context.unitPlane).draw();
+        mesh.draw();
         glDepthRange(0.0, 1.0);
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -103,11 +114,13 @@ namespace {
 
 // Reflectivity 1 leaves nothing of the surface's own material (Fresnel cannot raise it further): the
 // reflection, already in place, is only scaled by the tint. Same stencil and depth steps as the lit path.
-void tintPerfectMirror(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                       const gl::Program& flatProgram, const MainPassContext& context) {
-    const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
+void tintPerfectMirror(const ViewSpace& space, const MirrorView& view, const ViewSetup& parent) {
+    const gl::Program& flatProgram = space.flatProgram;
+    const FrameInput& input = space.enter(view.parent, flatProgram);
+    const MainPassContext& context = space.context;
+    const auto index = static_cast<std::size_t>(view.mirror);
     flatProgram.use();
-    flatProgram.set("uModelLightClip", mirrorRectangleClip(input, mirror, parent));
+    flatProgram.set("uModelLightClip", mirrorRectangleClip(input, index, parent, context));
     flatProgram.set("uFlatColor", glm::vec4(0.0f));
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
@@ -118,9 +131,9 @@ void tintPerfectMirror(const FrameInput& input, const MirrorView& view, const Vi
     glEnable(GL_BLEND);
     glBlendFunc(GL_ZERO, GL_CONSTANT_COLOR);
     // Pre-weighted, the reflection already has its tint.
-    const glm::vec3 tint = parent.preWeightedStencil ? glm::vec3(1.0f) : glm::vec3(mirror.tint);
+    const glm::vec3 tint = parent.preWeightedStencil ? glm::vec3(1.0f) : glm::vec3(input.mirrors[index].tint);
     glBlendColor(tint.r, tint.g, tint.b, 1.0f);
-    context.meshes.get(context.unitPlane).draw();
+    context.meshes.get(context.mirrorMesh(index)).draw();
     glDisable(GL_BLEND);
     glDepthFunc(GL_LESS);
 }
@@ -173,15 +186,17 @@ std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fr
 
 } // namespace
 
-void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const ViewSetup& parent,
-                       const gl::Program& surfaceProgram, const gl::Program& flatProgram,
-                       MainPassContext& context, GLuint reflectionTexture, int reflectionLevels,
-                       glm::ivec2 targetSize, bool reflectionEncoded) {
-    const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
-    if (!view.ownTarget && mirror.reflectivity >= 1.0) {
-        tintPerfectMirror(input, view, parent, flatProgram, context);
+void drawMirrorSurface(const ViewSpace& space, const MirrorView& view, const ViewSetup& parent,
+                       GLuint reflectionTexture, int reflectionLevels, bool reflectionEncoded) {
+    const auto index = static_cast<std::size_t>(view.mirror);
+    if (!view.ownTarget && space.input.mirrors[index].reflectivity >= 1.0) {
+        tintPerfectMirror(space, view, parent);
         return;
     }
+    const gl::Program& surfaceProgram = space.mirrorProgram;
+    MainPassContext& context = space.context;
+    const FrameInput& input = space.enter(view.parent, surfaceProgram);
+    const Mirror& mirror = input.mirrors[index];
     beginLitView(input, parent, surfaceProgram, context);
     setMaterial(mirror.hasMaterial ? mirror.material : Material{}, surfaceProgram, context,
                 mirrorDefines(input, mirror, view.ownTarget, parent.weight, reflectionEncoded));
@@ -191,8 +206,8 @@ void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const Vi
     surfaceProgram.set("uFromTexture", view.ownTarget ? 1 : 0);
     surfaceProgram.set("uReflectionPreWeighted", parent.preWeightedStencil && !view.ownTarget ? 1 : 0);
     surfaceProgram.set("uReflectionTexture", kReflectionTextureUnit);
-    surfaceProgram.set("uTargetSize", glm::vec2(targetSize));
-    setGlossyUniforms(input, mirror, surfaceProgram, reflectionLevels, targetSize);
+    surfaceProgram.set("uTargetSize", glm::vec2(space.size));
+    setGlossyUniforms(input, mirror, surfaceProgram, reflectionLevels, space.size);
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     if (view.ownTarget) {
@@ -214,10 +229,8 @@ void drawMirrorSurface(const FrameInput& input, const MirrorView& view, const Vi
         glBlendFunc(GL_ONE, GL_SRC1_COLOR);
     }
     glDepthMask(GL_TRUE);
-    // The same part of the rectangle as the mask drew (math::visibleMirrorRectangle).
-    const glm::dmat4 rectangle = mirrorRectangle(mirror);
-    const glm::dmat4 toClip = parent.viewProjection * math::cameraRelative(input.camera) * parent.reflection;
-    drawLitMesh(context.unitPlane, math::visibleMirrorRectangle(rectangle, toClip * rectangle), input,
+    // The same mesh, and the same part of the rectangle, as the mask drew.
+    drawLitMesh(context.mirrorMesh(index), drawnMirrorWorld(input, index, parent, context), input,
                 surfaceProgram, context);
     glDisable(GL_BLEND);
     glDepthFunc(GL_LESS);

@@ -1,6 +1,8 @@
 #include "render/passes/PassExecutors.hpp"
 
-#include "render/passes/MirrorPasses.hpp"
+#include "render/math/Projection.hpp"
+
+#include <cassert>
 
 namespace speculum::render::passes {
 
@@ -36,12 +38,29 @@ void resetPassState() {
     glFrontFace(GL_CCW);
 }
 
-void bindWrites(const PassWrites& writes, FrameExecution& frame) {
+ViewSpace cameraSpace(FrameExecution& frame) {
+    FrameResources& r = frame.resources;
+    return ViewSpace{.input = frame.input,
+                     .views = frame.plan.views,
+                     .rotation = math::viewRotation(frame.input.camera),
+                     .projection = frame.projection,
+                     .size = {frame.target.width, frame.target.height},
+                     .preWeighted = frame.plan.preWeighted,
+                     .context = frame.context,
+                     .flatProgram = r.flatProgram,
+                     .mirrorProgram = r.mirrorProgram,
+                     .occlusion = &r.occlusion};
+}
+
+void bindWrites(const PassWrites& writes, FrameExecution& frame, const ViewSpace& space) {
     resetPassState();
     if (writes.target != PassTarget::OwnMap) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebufferOf(writes, frame));
         const RenderTarget& size = writes.target == PassTarget::Output ? frame.outputTarget() : frame.target;
         glViewport(0, 0, size.width, size.height);
+    } else if (space.mapFramebuffer) {
+        glBindFramebuffer(GL_FRAMEBUFFER, space.mapFramebuffer);
+        glViewport(0, 0, space.size.x, space.size.y);
     }
     if (writes.clear) {
         if (writes.scissor && !writes.clearWhole)
@@ -60,19 +79,35 @@ void bindWrites(const PassWrites& writes, FrameExecution& frame) {
         glStencilFunc(GL_EQUAL, writes.stencilEqual, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     }
-    glFrontFace(writes.clockwise ? GL_CW : GL_CCW);
+    glFrontFace(writes.clockwise != space.flipsWinding ? GL_CW : GL_CCW);
 }
 
-PassResult runPass(const PlannedPass& pass, FrameExecution& frame) {
+void bindWrites(const PassWrites& writes, FrameExecution& frame) {
+    bindWrites(writes, frame, cameraSpace(frame));
+}
+
+namespace {
+
+bool isMirrorPass(PassKind kind) {
+    return kind == PassKind::MirrorMask || kind == PassKind::Mirror || kind == PassKind::MirrorSurface;
+}
+
+} // namespace
+
+PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space) {
+    // A map face's space holds its mirror views alone; every other pass draws the frame or a map of its
+    // own, in the camera's.
+    assert((space.face < 0 || isMirrorPass(pass.kind)) && "runPass(): only mirror passes run in a map face");
+    // No default: a pass kind without an executor does not compile (-Wswitch).
     switch (pass.kind) {
     case PassKind::Shadow:
         return runShadow(pass, frame);
     case PassKind::MirrorMask:
-        return runMirrorMask(pass, frame);
+        return runMirrorMask(pass, frame, space);
     case PassKind::Mirror:
-        return runMirror(pass, frame);
+        return runMirror(pass, frame, space);
     case PassKind::MirrorSurface:
-        return runMirrorSurface(pass, frame);
+        return runMirrorSurface(pass, frame, space);
     case PassKind::Envmap:
         return runEnvmap(pass, frame);
     case PassKind::Prefilter:
@@ -82,7 +117,12 @@ PassResult runPass(const PlannedPass& pass, FrameExecution& frame) {
     case PassKind::Composite:
         return runComposite(pass, frame);
     }
+    assert(false && "runPass(): not a pass kind");
     return {false, {}};
+}
+
+PassResult runPass(const PlannedPass& pass, FrameExecution& frame) {
+    return runPass(pass, frame, cameraSpace(frame));
 }
 
 } // namespace speculum::render::passes

@@ -8,6 +8,7 @@
 #include "render/gl/TextureCache.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/MirrorOcclusion.hpp"
+#include "render/passes/MirrorPasses.hpp"
 #include "render/passes/ReflectorPass.hpp"
 #include "render/passes/ShadowMaps.hpp"
 #include "render/plan/FramePlan.hpp"
@@ -75,26 +76,36 @@ struct PassResult {
     std::string outcome; // PassRun::outcome
 };
 
-// Binds what `writes` says the pass draws into (its own map: nothing to bind), with the viewport of the
-// frame's target, clears it (to the background, depth 1, stencil 0: in the scissor or, clearWhole, all of
-// it), limits drawing to the scissor and the stencil level, and sets the winding. Every other piece of GL
-// state starts from its default (resetPassState).
+// The space the camera's mirror views are drawn in: the frame's plan, its camera, its buffers.
+ViewSpace cameraSpace(FrameExecution& frame);
+
+// Binds what `writes` says the pass draws into (its own map: nothing to bind in the camera's space, the
+// face in a map face's), with the viewport of the space's target, clears it (to the background, depth 1,
+// stencil 0: in the scissor or, clearWhole, all of it), limits drawing to the scissor and the stencil
+// level, and sets the winding. Every other piece of GL state starts from its default (resetPassState).
+void bindWrites(const PassWrites& writes, FrameExecution& frame, const ViewSpace& space);
+// In the camera's space.
 void bindWrites(const PassWrites& writes, FrameExecution& frame);
 
 // The GL state every pass starts from.
 void resetPassState();
 
-// The executors, one per pass kind (family files: MapExecutors, SceneExecutors, MirrorExecutors).
+// The executors, one per pass kind (family files: MapExecutors, SceneExecutors, MirrorExecutors). The
+// mirror passes draw in the space their views belong to.
 PassResult runShadow(const PlannedPass& pass, FrameExecution& frame);
 PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame);
 PassResult runPrefilter(const PlannedPass& pass, FrameExecution& frame);
 PassResult runMain(const PlannedPass& pass, FrameExecution& frame);
 PassResult runComposite(const PlannedPass& pass, FrameExecution& frame);
-PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame);
-PassResult runMirror(const PlannedPass& pass, FrameExecution& frame);
-PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame);
+PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
+PassResult runMirror(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
+PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
 
-// Runs the pass with the executor of its kind.
+// Runs the pass with the executor of its kind, in `space`: the camera's for the frame's passes, a map
+// face's for the mirror passes planned inside the environment map (EnvmapPlan::passes), the only kind a
+// face holds.
+PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
+// In the camera's space.
 PassResult runPass(const PlannedPass& pass, FrameExecution& frame);
 
 } // namespace speculum::render::passes

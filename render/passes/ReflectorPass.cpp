@@ -116,7 +116,8 @@ int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>
 }
 
 base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
-                                    const EnvironmentMirrorPrograms& mirrors) {
+                                    const EnvironmentMirrorPrograms& mirrors,
+                                    const RunFacePasses& runFacePasses) {
     const EnvmapCapture& where = plan.capture;
     const Reflector& reflector = *input.reflector;
     const std::uint64_t key = envmapSettingsKey(reflector);
@@ -145,14 +146,14 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
     EnvironmentTarget face;
     face.near = where.near;
     face.far = where.far;
-    const envmap::CaptureSettings& settings = m_capture->settings();
-    face.size = settings.cubeResolution > 0 ? settings.cubeResolution : settings.resolution;
+    face.framebuffer = m_capture->framebuffer();
+    face.size = m_capture->targetSize();
     face.meshFacts = &m_meshFacts;
     face.plan = &plan;
     auto drawFace = [&](const glm::dmat4&, int index) {
         face.faceView = envmap::cubeFaceView(index);
         face.face = index; // the plan lists the six faces in GL's order
-        drawEnvironmentTarget(env, face, mirrors, faces);
+        drawEnvironmentTarget(env, face, mirrors, faces, runFacePasses);
     };
 
     // The direct fill draws copies of the meshes split until no edge spans more than a few degrees seen
@@ -163,14 +164,15 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
         EnvironmentTarget component;
         component.near = where.near;
         component.far = where.far;
-        component.size = m_capture->layout().width;
+        component.framebuffer = m_capture->framebuffer();
+        component.size = m_capture->targetSize();
         component.warp = &pass;
         component.warpMeshes = &m_warpMeshes;
         component.warpAngle = warpEdgeAngle(m_capture->layout());
         component.meshFacts = &m_meshFacts;
         component.plan = &plan;
         component.face = pass.warp.component;
-        drawEnvironmentTarget(env, component, {&m_warpFlat, &m_warpMirror}, warped);
+        drawEnvironmentTarget(env, component, {m_warpFlat, m_warpMirror}, warped, runFacePasses);
     };
     m_capture->update(view, drawFace, drawWarped);
     m_settingsKey = key;

@@ -4,7 +4,7 @@
 #include "render/frame/FrameInput.hpp"
 #include "render/gl/Allocation.hpp"
 #include "render/passes/EnvironmentCapture.hpp"
-#include "render/passes/EnvironmentMirrors.hpp"
+#include "render/passes/EnvironmentFaces.hpp"
 #include "render/passes/GgxPrefilter.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/WarpMeshes.hpp"
@@ -23,8 +23,8 @@ namespace speculum::render::passes {
 // from the capture point into the reflector's environment map: six cube faces (model matrices relative
 // to the capture point, composed in double), or for the non-linear maps the direct warp (mesh.vert with
 // ENVMAP_WARP, meshes split by the angle their edges span) or the resampling of such a cube. Planar
-// mirrors reflect the scene in every fill, nested up to reflector.mirrorDepth levels
-// (drawEnvironmentTarget). The map frame is aligned with the world axes.
+// mirrors reflect the scene in every fill, nested up to reflector.mirrorDepth levels: their passes run
+// in each face (drawEnvironmentTarget). The map frame is aligned with the world axes.
 // Pass 2 (drawSurface): the reflector with shaders/reflector.frag, in any view the main pass draws
 // (the camera's or a mirror's, whose virtual eye it uses).
 class ReflectorPass {
@@ -42,10 +42,11 @@ public:
     int allocate(const Reflector& reflector, std::vector<std::string>& warnings);
 
     // Renders the map for `input.reflector` (re-creating its textures when the map settings changed) as
-    // `plan` says: from its capture point, with the mirror views planned in each face or component.
-    // `mirrors` are the cube faces' mirror programs (the warp's variants are the pass's own).
+    // `plan` says: from its capture point, each face or component with the mirror passes planned in it,
+    // which runFacePasses runs there. `mirrors` are the cube faces' mirror programs (the warp's variants
+    // are the pass's own).
     base::Status capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
-                         const EnvironmentMirrorPrograms& mirrors = {});
+                         const EnvironmentMirrorPrograms& mirrors, const RunFacePasses& runFacePasses);
 
     // Whether a map made with the reflector's current settings exists.
     bool hasMap(const Reflector& reflector) const;

@@ -7,11 +7,9 @@
 namespace speculum::render::passes {
 
 PassResult runMain(const PlannedPass& pass, FrameExecution& frame) {
-    bindWrites(pass.writes, frame);
-    drawMainPass(frame.input,
-                 viewSetup(frame.input, frame.plan, -1, frame.projection,
-                           {frame.target.width, frame.target.height}, pass.writes.clockwise),
-                 frame.context);
+    const ViewSpace camera = cameraSpace(frame);
+    bindWrites(pass.writes, frame, camera);
+    drawSpaceView(camera, -1, pass.writes.clockwise);
     return {};
 }
 

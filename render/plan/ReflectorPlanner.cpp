@@ -140,7 +140,7 @@ std::uint64_t envmapSignature(const FrameInput& input) {
         h.add(item.castsShadows);
         addMaterial(h, item.material);
     }
-    // The map's mirrors are drawn with the stencil technique and no blur (passes/EnvironmentMirrors.cpp),
+    // The map's mirrors are drawn with the stencil technique and no blur (passes/MirrorPasses.cpp),
     // their surfaces with reflectivity, tint, Fresnel and material, as the main pass's stencil mirrors.
     for (const Mirror& mirror : input.mirrors) {
         h.add(mirror.world);

@@ -5,7 +5,7 @@
 // one, a masked one or one mirrored by a negative scale.
 #include "render/math/Projection.hpp"
 #include "render/mesh/Primitives.hpp"
-#include "render/passes/EnvironmentMirrors.hpp"
+#include "render/passes/EnvironmentFaces.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/MirrorPasses.hpp"
 #include "render/passes/ShadowMaps.hpp"
@@ -104,6 +104,20 @@ struct DrawContext {
     passes::MeshFacts facts;
     passes::MainPassContext context{program, meshes, textures, shadows, shadowPlans, 0, 0, box()};
     DrawContext() { context.meshFacts = &facts; }
+
+    // The camera's space of the plan, seen through `projection` (viewSetup asks nothing else of it).
+    passes::ViewSpace cameraSpace(const FrameInput& input, const FramePlan& plan,
+                                  const glm::dmat4& projection) {
+        return {.input = input,
+                .views = plan.views,
+                .rotation = math::viewRotation(input.camera),
+                .projection = projection,
+                .size = {kWidth, kHeight},
+                .preWeighted = plan.preWeighted,
+                .context = context,
+                .flatProgram = program,
+                .mirrorProgram = program};
+    }
 };
 
 class BackFaceCulling : public GlTest {
@@ -156,7 +170,7 @@ TEST_F(BackFaceCulling, BackFacesDrawnLastShowThroughTheCut) {
     const FramePlan plan = planFrame(input, {}, PlanViewport{kWidth, kHeight});
     const glm::dmat4 projection =
         math::perspective(input.camera.fovY, double(kWidth) / kHeight, input.camera.near, input.camera.far);
-    const passes::ViewSetup camera = passes::viewSetup(input, plan, -1, projection, {kWidth, kHeight}, false);
+    const passes::ViewSetup camera = passes::viewSetup(draw.cameraSpace(input, plan, projection), -1, false);
     EXPECT_TRUE(passes::drawsBackFacesLast(input.items[0], input, camera, draw.context));
     EXPECT_FALSE(passes::hidesBackFaces(input.items[0], input, camera, draw.context));
 
@@ -177,7 +191,7 @@ TEST_F(BackFaceCulling, OnlyClosedOpaqueMeshesWhollyBeyondTheNearPlane) {
                               const passes::MainPassContext&);
     auto itemsWhere = [&](Question question, int view) {
         const passes::ViewSetup setup =
-            passes::viewSetup(input, plan, view, projection, {kWidth, kHeight}, false);
+            passes::viewSetup(draw.cameraSpace(input, plan, projection), view, false);
         std::vector<std::string> names;
         for (const DrawItem& d : input.items)
             if (question(d, input, setup, context))

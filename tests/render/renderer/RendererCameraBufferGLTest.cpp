@@ -242,6 +242,30 @@ TEST_F(CameraBufferTest, ATintedStencilMirrorIsDrawnPreWeightedInEightBitSrgb) {
         << m_report.plan.passes.back().reason;
 }
 
+// The reflector's map draws the tinted mirror too, with the same stencil recipe, but never pre-weighted:
+// what a pre-weighted frame set for its own mirrors must not reach the next frame's map. The frame after
+// one drawn pre-weighted is the same image, its map drawn anew.
+TEST_F(CameraBufferTest, APreWeightedFrameLeavesTheNextFramesMapAsItWas) {
+    FrameInput input = mirrorScene(MirrorTechnique::Stencil, 0.5, {1.0, 0.9, 0.8});
+    Reflector ball;
+    ball.name = "Chrome ball";
+    ball.mesh = std::make_shared<const MeshData>(makeSphere(32));
+    ball.world = glm::scale(glm::translate(glm::dmat4(1.0), {1.1, 0.3, 0.2}), glm::dvec3(0.45));
+    ball.update = ReflectorUpdate::Always;
+    ball.resolution = 64;
+    input.reflector = ball;
+    RenderOptions exact;
+    exact.halfFloatCameraBuffer = true;
+    draw8(input, exact); // leaves the mirrors' programs as a frame that is not pre-weighted does
+    const std::vector<unsigned char> first = draw8(input, {});
+    ASSERT_TRUE(m_report.plan.preWeighted) << skips();
+    ASSERT_TRUE(m_report.plan.envmap);
+    EXPECT_GE(m_report.plan.envmap->views.size(), 1u) << "the map sees the mirror";
+    const std::vector<unsigned char> second = draw8(input, {});
+    EXPECT_EQ(m_report.countRan(PassKind::Envmap), 1u);
+    EXPECT_EQ(largestDifference(first, second), 0);
+}
+
 // With Fresnel the weight varies over the mirror: the half-float buffer stays, and the plan says why.
 TEST_F(CameraBufferTest, AStencilMirrorWithFresnelKeepsTheHalfFloatBufferAndSaysWhy) {
     FrameInput input = mirrorScene(MirrorTechnique::Stencil, 0.5, {1.0, 0.9, 0.8});

@@ -4,19 +4,23 @@
 #include "render/gl/Program.hpp"
 #include "render/passes/EnvironmentCapture.hpp"
 #include "render/passes/MainPass.hpp"
+#include "render/passes/MirrorPasses.hpp"
 #include "render/passes/WarpMeshes.hpp"
 #include "render/plan/FramePlan.hpp"
 
+#include <functional>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <unordered_map>
 
 namespace speculum::render::passes {
 
 // The programs planar mirrors need inside one kind of environment target: for cube faces shadow.vert +
-// flat.frag (masks) and mesh.vert + mirror.frag (surfaces); for the direct fill their ENVMAP_WARP variants.
+// flat.frag (masks, perfect mirrors' tints) and mesh.vert + mirror.frag (surfaces); for the direct fill
+// their ENVMAP_WARP variants.
 struct EnvironmentMirrorPrograms {
-    const gl::Program* flat = nullptr;   // the mirror masks
-    const gl::Program* mirror = nullptr; // the mirror surfaces
+    const gl::Program& flat;
+    const gl::Program& mirror;
 };
 
 // What the environment pass remembers of each mesh while the mesh lives: its bounds and whether it is
@@ -42,11 +46,14 @@ private:
 
 // One target of the reflector's environment (pass 1): a cube face, or a component of the direct fill.
 struct EnvironmentTarget {
-    // A cube face (warp is null): its view (envmap::cubeFaceView), near and far, its size in texels.
+    // A cube face (warp is null): its view (envmap::cubeFaceView), near and far.
     glm::dmat4 faceView{1.0};
     double near = 0.01;
     double far = 100.0;
-    int size = 1;
+    // The framebuffer the capture bound for the target, and the target's size in texels
+    // (EnvironmentCapture::framebuffer, targetSize).
+    GLuint framebuffer = 0;
+    glm::ivec2 size{1, 1};
     // The direct fill: the component's warp, and the cache that splits the meshes for each (virtual)
     // capture point they are seen from (edges up to warpAngle; shorter than `near` never split).
     const envmap::WarpPass* warp = nullptr;
@@ -54,29 +61,28 @@ struct EnvironmentTarget {
     double warpAngle = 0.3;
     MeshFacts* meshFacts = nullptr; // null: every face of every item is drawn
     // The mirror views the planner planned in this face or component (planEnvmapMirrors): `face` indexes
-    // plan->faces. No plan: no mirror reflects (every mirror shows its own material).
+    // plan->faces.
     const EnvmapPlan* plan = nullptr;
     int face = -1;
 };
 
+// Runs the plan's mirror passes of one face (EnvmapPlan::passes whose views lie in it), in plan order, in
+// the face's space.
+using RunFacePasses = std::function<void(const ViewSpace& face)>;
+
 // Draws the environment `env` (the scene without the reflector, camera at the capture point) into the
-// bound target, with the mirror views the planner planned for it (target.plan, target.face) reflecting
-// the scene (mirrors in mirrors included; mirrors without a view show their own material). Decides
-// nothing: which mirrors reflect, how deep, their reflections, oblique projections and clip planes are
-// the plan's, and after the face's own view it runs the plan's passes for this face (EnvmapPlan::passes
-// whose view lies in target.face) in plan order, each through the stencil level and with the winding its
-// PassWrites declare. The one thing it adds is what the capture alone knows: a direct-fill warp that
-// mirrors the image flips every winding. context.program draws the scene: mesh.vert + mesh.frag, or its
-// ENVMAP_WARP variant.
-//
-// The stencil technique of the main pass, nested the same way: a mirror's visible pixels (those of its
-// parent's stencil level whose depth test passes) are marked one level deeper and reset to the background
-// at the far plane, the scene reflected in it is drawn there, then its own mirrors, then its surface is
-// blended over its reflection, restoring its depth and stepping its pixels back to the parent's level.
-// A cube face cuts a reflection at its mirror with Lengyel's oblique near plane; the warp, which has no
-// projection matrix, with clip distance 0. Reflected points lie up to (2·depth + 1)·far away, so each level
-// gets a far distance that deep.
+// bound target: the face's own view over the whole target, then, through runFacePasses, the mirror passes
+// the planner planned in it (target.plan, target.face), which reflect the scene (mirrors in mirrors
+// included; mirrors without a view show their own material). They run in the face as a ViewSpace, with
+// the executors and the stencil recipe of the camera's mirrors (MirrorPasses); the face decides nothing
+// about them, and adds what the capture alone knows: the face's view and projection (a cube face's; the
+// warp has none and cuts each reflection at its mirror with clip distance 0), a far distance that grows
+// to (2·depth + 1)·far with each level since reflected points lie that far, a direct-fill warp that
+// mirrors the image flipping every winding, and what each view draws: meshes split for its virtual
+// capture point, and the back faces that point cannot see culled. context.program draws the scene:
+// mesh.vert + mesh.frag, or its ENVMAP_WARP variant.
 void drawEnvironmentTarget(const FrameInput& env, const EnvironmentTarget& target,
-                           const EnvironmentMirrorPrograms& programs, MainPassContext& context);
+                           const EnvironmentMirrorPrograms& programs, MainPassContext& context,
+                           const RunFacePasses& runFacePasses);
 
 } // namespace speculum::render::passes
