@@ -1,6 +1,6 @@
 // Viewport: the frames. The renderer's lifetime, what each frame draws (with the previews of adaptive
-// resolution) and when frames are drawn at all. Navigation and input are in ViewportNavigation.cpp,
-// picking and the handles in ViewportPicking.cpp, the marks painted over the frame in ViewportMarks.cpp.
+// resolution) and when frames are drawn at all. The input handed on to navigation and the handles is in
+// ViewportInput.cpp, the marks painted over the frame in ViewportMarks.cpp.
 #include "editor/ui/Viewport.hpp"
 
 #include "editor/ui/ViewportModels.hpp"
@@ -48,7 +48,9 @@ Viewport::Viewport(scene::Scene& scene, scene::MeshLibrary& meshes, AnimationClo
     : QOpenGLWidget(parent)
     , m_scene(scene)
     , m_clock(clock)
-    , m_meshes(meshes) {
+    , m_meshes(meshes)
+    , m_navigation(scene)
+    , m_handles(scene, [this]() -> scene::MeshLibrary& { return this->meshes(); }) {
     setMinimumSize(160, 120);
     setFocusPolicy(Qt::ClickFocus);
     setMouseTracking(true); // handle hover highlight
@@ -56,7 +58,6 @@ Viewport::Viewport(scene::Scene& scene, scene::MeshLibrary& meshes, AnimationClo
     // An sRGB colour texture: the renderer draws a frame that needs no half-float buffer straight into it
     // (render::RenderTarget::srgbDepthStencil), with no copy; Qt composes it into the window as sRGB.
     setTextureFormat(kSrgbTextureFormat);
-    m_view.reset(m_scene.camera());
     m_overlay = new ViewportOverlay(*this);
     m_models = new ViewportModels(m_meshes, this);
     connect(m_models, &ViewportModels::changed, this, qOverload<>(&Viewport::update));
@@ -136,10 +137,11 @@ void Viewport::adoptModel(const std::string& absolutePath,
 void Viewport::setEditing(Selection* selection, QUndoStack* undoStack) {
     m_selection = selection;
     m_undoStack = undoStack;
-    m_handleDrag = undoStack ? std::make_unique<HandleDrag>(m_scene, *undoStack) : nullptr;
+    m_navigation.setUndoStack(undoStack);
+    m_handles.setEditing(selection, undoStack);
     if (selection) {
         connect(selection, &Selection::changed, this, [this] {
-            m_hoverAxis = -1;
+            m_handles.clearHover();
             m_overlay->update();
         });
     }
@@ -265,7 +267,7 @@ void Viewport::paintGL() {
     m_models->prepare(m_scene);
     render::FrameInput input = scene::snapshot(m_scene, time, m_meshes, warnings);
     warnings = m_models->correct(std::move(warnings));
-    input.camera = m_view.camera();
+    input.camera = m_navigation.camera();
 
     const bool previewing = m_adaptive && m_interacting;
     const view::PreviewLevel level = previewLevel(previewing, input);
@@ -304,7 +306,7 @@ view::PreviewLevel Viewport::previewLevel(bool previewing, render::FrameInput& i
             input.reflector->update = render::ReflectorUpdate::Once; // drawn only when there is no map yet
         }
         // Orbiting reuses the shadow maps as they are.
-        if (m_drag == Drag::Handle) {
+        if (m_handles.press() == ViewportHandles::Press::Handle) {
             shrinkShadowMaps(input, level.scale);
         }
     }

@@ -1,16 +1,15 @@
 #pragma once
 
 #include "editor/ui/Gizmo.hpp"
-#include "editor/ui/HandleDrag.hpp"
+#include "editor/ui/ViewportHandles.hpp"
+#include "editor/ui/ViewportNavigation.hpp"
 #include "editor/view/AdaptiveResolution.hpp"
-#include "editor/view/ViewCamera.hpp"
 #include "render/renderer/Renderer.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/model/SceneData.hpp"
 
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
-#include <QPoint>
 #include <QStringList>
 #include <QTimer>
 #include <memory>
@@ -34,7 +33,11 @@ class ViewportOverlay;
 
 // The live 3D view: draws a snapshot of the document every frame with render::Renderer into this widget's
 // framebuffer object. All GL work happens inside render/; this class only manages the renderer's lifetime
-// (created in initializeGL, freed on QOpenGLContext::aboutToBeDestroyed) and feeds it.
+// (created in initializeGL, freed on QOpenGLContext::aboutToBeDestroyed) and feeds it, decides when frames
+// are drawn and at what quality, and hands the mouse, the wheel and the keys on: the view's camera and its
+// moves are ViewportNavigation's, picking, the handles and the left button's clicks and handle drags
+// ViewportHandles'. Viewport.cpp drives the frames, ViewportInput.cpp hands the input on, ViewportMarks.cpp
+// paints the marks over the frame.
 //
 // Mouse: a click selects what is under the cursor (through mirrors: clicking a reflection selects the
 // reflected object; Alt+click selects the mirror itself), Ctrl+click adds it to the selection or takes it
@@ -98,7 +101,7 @@ public:
     std::vector<std::string> correctModelWarnings(std::vector<std::string> warnings);
     // A model read elsewhere (Import's worker), so the viewport does not read the file again.
     void adoptModel(const std::string& absolutePath, std::shared_ptr<const scene::ImportedModel> model);
-    const render::Camera& viewCamera() const { return m_view.camera(); }
+    const render::Camera& viewCamera() const { return m_navigation.camera(); }
     // The document's camera (what `speculum render` draws), as the renderer takes it.
     render::Camera sceneCamera() const;
     // Moves the view to `camera`'s position, target and up (a view preset); the field of view and near
@@ -116,8 +119,8 @@ public:
     // View ▸ Invert Vertical Orbit. By default dragging down raises the camera (the scene follows the
     // mouse, as in Blender and three.js); inverted, it lowers it. Not remembered here: the window keeps
     // the preference.
-    void setInvertVerticalOrbit(bool inverted) { m_view.setInvertedVertical(inverted); }
-    bool invertsVerticalOrbit() const { return m_view.invertedVertical(); }
+    void setInvertVerticalOrbit(bool inverted) { m_navigation.setInvertVerticalOrbit(inverted); }
+    bool invertsVerticalOrbit() const { return m_navigation.invertsVerticalOrbit(); }
     // View ▸ Show Guides: the ground grid, the scene camera's wireframe, the pivot and the axis gizmo,
     // painted over the frame (ViewportOverlay; remembered in QSettings there).
     void setGuidesVisible(bool visible);
@@ -148,7 +151,7 @@ public:
     // Wall time of the last frame's drawing (paintGL up to the end of rendering), in milliseconds.
     double lastFrameMs() const { return m_lastFrameMs; }
 
-    HandleMode handleMode() const { return m_handleMode; }
+    HandleMode handleMode() const { return m_handles.mode(); }
     void setHandleMode(HandleMode mode);
     void setLookThroughSceneCamera(bool on);
 
@@ -158,7 +161,7 @@ public:
     // `axis` (move/scale) or a point on its ring (rotate); nothing when no handles are shown.
     std::optional<QPointF> handlePoint(int axis);
     // The point the view looks at, where new nodes are placed.
-    glm::dvec3 lookAtPoint() const { return m_view.camera().target; }
+    glm::dvec3 lookAtPoint() const { return m_navigation.camera().target; }
 
     void paintOverlay(QPainter& painter); // called by the overlay widget
 
@@ -205,12 +208,11 @@ private:
     void reportFrameWarnings(bool composedAsStored, const std::vector<std::string>& warnings);
     void updateTicking();
     void reportWarnings(QStringList warnings);
-    void navigated();  // after orbit/pan/zoom
     void interacted(); // navigation or a handle drag: previews until kRestMs after the last one
     void rested();
     void frameOnScreen(); // frameSwapped: the frame's whole cost is known
-    void updateGizmo();
     ScreenProjection projection() const;
+    ViewOnScreen viewOnScreen() const; // for the handles: the view camera and the frame's time
 
     scene::Scene& m_scene;
     view::AnimationClock& m_clock;
@@ -220,7 +222,8 @@ private:
     std::unique_ptr<render::Renderer> m_renderer;
     QString m_rendererError;
     bool m_skipsSrgbDecode = false; // the context has EXT_texture_sRGB_decode (initializeGL)
-    view::ViewCamera m_view;
+    ViewportNavigation m_navigation;
+    ViewportHandles m_handles;
     QTimer m_tick;                // drives repaints while the animation plays over a scene that moves
     bool m_sceneAnimated = false; // scene::sceneHasAnimation, kept up to date on every change
     ViewportOverlay* m_overlay = nullptr;
@@ -233,21 +236,6 @@ private:
     QElapsedTimer m_fpsTimer;
     int m_fpsFrames = 0;
     double m_fps = 0.0;
-
-    HandleMode m_handleMode = HandleMode::Move;
-    bool m_sceneCameraMode = false;
-    Gizmo m_gizmo;
-    int m_hoverAxis = -1;
-
-    // A press on a handle hands the gesture to m_handleDrag; the rest (click, orbit, pan) is the widget's.
-    enum class Drag { None, PendingClick, Orbit, Pan, Handle };
-    Drag m_drag = Drag::None;
-    QPoint m_lastMouse;
-    QPointF m_pressPosition;
-    bool m_pressAlt = false;
-    bool m_pressCtrl = false;
-    std::unique_ptr<HandleDrag> m_handleDrag; // with editing on
-    int m_gestureSerial = 0;
 
     // Adaptive resolution.
     bool m_adaptive = true;

@@ -1,6 +1,7 @@
 // Viewport: the marks painted over the frame by its overlay widget (ViewportOverlay), with QPainter in
 // widget coordinates, projected with the view's camera: light markers, the selection's outlines and the
-// current node's handles. They are not part of the frame (grabFramebuffer() shows the scene only).
+// current node's handles (as ViewportHandles shows them). They are not part of the frame (grabFramebuffer()
+// shows the scene only).
 #include "editor/ui/Viewport.hpp"
 #include "editor/ui/ViewportModels.hpp"
 #include "editor/view/Selection.hpp"
@@ -152,13 +153,10 @@ void Viewport::paintOverlay(QPainter& painter) {
     if (!m_undoStack) {
         return;
     }
-    updateGizmo();
-    const bool dragging = m_drag == Drag::Handle && m_handleDrag;
-    const Gizmo& gizmo = dragging ? m_handleDrag->gizmo() : m_gizmo;
-    if (!gizmo.isValid()) {
-        return;
+    int activeAxis = -1;
+    if (const Gizmo* gizmo = m_handles.shownGizmo(viewOnScreen(), activeAxis)) {
+        paintGizmo(painter, *gizmo, activeAxis);
     }
-    paintGizmo(painter, gizmo, dragging ? m_handleDrag->axis() : m_hoverAxis);
 }
 
 } // namespace speculum::ui

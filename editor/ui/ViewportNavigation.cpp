@@ -1,23 +1,16 @@
-// Viewport: navigation. The view's camera (reset, presets, a saved view, Frame Selection), the mouse and
-// keys that move it or hand a press to picking and the handles, and the edit of the scene camera when
-// the view looks through it.
+// ViewportNavigation: the view's camera and how it moves, and the edit of the scene camera while the view
+// looks through it.
+#include "editor/ui/ViewportNavigation.hpp"
+
 #include "editor/document/Commands.hpp"
-#include "editor/ui/Viewport.hpp"
-#include "editor/ui/ViewportModels.hpp"
-#include "editor/ui/ViewportOverlay.hpp"
-#include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
 #include "render/frame/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
 #include "scene/evaluate/PickScene.hpp"
 #include "scene/evaluate/Picking.hpp"
-#include "scene/model/NodeMath.hpp"
 #include "scene/model/Scene.hpp"
 
-#include <QKeyEvent>
-#include <QMouseEvent>
 #include <QUndoStack>
-#include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -26,8 +19,6 @@
 namespace speculum::ui {
 
 namespace {
-
-constexpr double kClickSlopPixels = 4.0; // a press that moves less than this is a click, not a drag
 
 // What a node draws (its mesh, its mirror), without its children, added to `box`; false when it draws
 // nothing.
@@ -94,188 +85,91 @@ render::math::Box framedBox(const scene::Scene& scene, const view::Selection* se
 
 } // namespace
 
-void Viewport::setLookThroughSceneCamera(bool on) {
-    m_sceneCameraMode = on;
-    if (on) {
-        resetView();
-    }
-}
-
-void Viewport::resetView() {
+ViewportNavigation::ViewportNavigation(scene::Scene& scene)
+    : m_scene(scene) {
     m_view.reset(m_scene.camera());
-    update();
 }
 
-render::Camera Viewport::sceneCamera() const {
-    return m_scene.camera();
-}
-
-void Viewport::setViewCamera(const render::Camera& camera) {
-    ++m_gestureSerial; // a step of its own when it edits the scene camera
-    m_view.place(camera.position, camera.target, camera.up);
-    navigated();
-}
-
-std::pair<glm::dvec3, glm::dvec3> Viewport::viewPositionTarget() const {
+std::pair<glm::dvec3, glm::dvec3> ViewportNavigation::positionTarget() const {
     return {m_view.camera().position, m_view.camera().target};
 }
 
-void Viewport::placeView(const glm::dvec3& position, const glm::dvec3& target) {
-    m_view.place(position, target);
-    update();
+void ViewportNavigation::setLookThroughSceneCamera(bool on) {
+    m_looksThroughSceneCamera = on;
+    if (on) {
+        reset();
+    }
 }
 
-void Viewport::frameSelected() {
-    m_models->prepare(m_scene);
-    const render::math::Box box = framedBox(m_scene, m_selection, m_meshes, m_clock.time());
+void ViewportNavigation::reset() {
+    m_view.reset(m_scene.camera());
+}
+
+void ViewportNavigation::place(const glm::dvec3& position, const glm::dvec3& target) {
+    m_view.place(position, target);
+}
+
+void ViewportNavigation::setCamera(const render::Camera& camera) {
+    ++m_gestureSerial; // a step of its own when it edits the scene camera
+    m_view.place(camera.position, camera.target, camera.up);
+    moved();
+}
+
+bool ViewportNavigation::frameSelected(const view::Selection* selection, scene::MeshLibrary& meshes,
+                                       double time, QSize size) {
+    const render::math::Box box = framedBox(m_scene, selection, meshes, time);
     if (box.empty()) {
-        return;
+        return false;
     }
     const double radius = std::max(glm::length(box.max - box.min) * 0.5, 1e-3);
-    m_view.frame(box.center(), radius, double(width()) / std::max(height(), 1));
-    navigated();
+    m_view.frame(box.center(), radius, double(size.width()) / std::max(size.height(), 1));
+    moved();
+    return true;
 }
 
-void Viewport::navigated() {
-    if (m_sceneCameraMode && m_undoStack) {
-        // Looking through the scene camera: the navigation is an edit of the document's camera.
-        scene::CameraData camera = m_scene.camera();
-        const render::Camera& v = m_view.camera();
-        camera.position = v.position;
-        camera.target = v.target;
-        camera.up = v.up;
-        camera.far = std::min(std::max(camera.far, v.far), camera.near * render::kMaxFarNearRatio);
-        auto* command = new document::SetCameraCommand(m_scene, camera, true);
-        command->setMergeKey(QStringLiteral("navigate#%1").arg(m_gestureSerial));
-        document::pushEdit(*m_undoStack, command); // an orbit that ends where it began is no step
-    }
-    update();
+void ViewportNavigation::beginDrag(Drag drag, QPoint position) {
+    m_drag = drag;
+    m_lastMouse = position;
 }
 
-void Viewport::mousePressEvent(QMouseEvent* event) {
-    const QPointF pos = event->position();
-    const bool pan = event->button() == Qt::MiddleButton ||
-                     (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier));
-    ++m_gestureSerial;
-    if (pan) {
-        m_drag = Drag::Pan;
-    } else if (event->button() == Qt::LeftButton) {
-        updateGizmo();
-        // Ctrl+click always picks (to add or remove), even over a handle.
-        const bool ctrl = event->modifiers() & Qt::ControlModifier;
-        const int axis = m_selection && m_undoStack && !ctrl ? m_gizmo.hitTest(pos) : -1;
-        if (axis >= 0 && m_handleDrag->press(m_gizmo, axis, pos, m_selection->node(), m_selection->roots(),
-                                             m_lastFrameTime)) {
-            m_drag = Drag::Handle;
-        } else {
-            m_drag = Drag::PendingClick;
-        }
-        m_pressPosition = pos;
-        m_pressAlt = event->modifiers() & Qt::AltModifier;
-        m_pressCtrl = event->modifiers() & Qt::ControlModifier;
-    } else {
-        QOpenGLWidget::mousePressEvent(event);
-        return;
-    }
-    m_lastMouse = pos.toPoint();
-    event->accept();
-}
-
-void Viewport::mouseMoveEvent(QMouseEvent* event) {
-    const QPointF posF = event->position();
-    if (m_drag == Drag::None) {
-        if (m_selection && m_undoStack) {
-            updateGizmo();
-            const int hover = m_gizmo.hitTest(posF);
-            if (hover != m_hoverAxis) {
-                m_hoverAxis = hover;
-                setCursor(hover >= 0 ? Qt::PointingHandCursor : Qt::ArrowCursor);
-                m_overlay->update();
-            }
-        }
-        QOpenGLWidget::mouseMoveEvent(event);
-        return;
-    }
-    if (m_drag == Drag::Handle) {
-        interacted();
-        m_handleDrag->move(posF);
-        event->accept();
-        return;
-    }
-    if (m_drag == Drag::PendingClick) {
-        if (std::hypot(posF.x() - m_pressPosition.x(), posF.y() - m_pressPosition.y()) < kClickSlopPixels) {
-            event->accept();
-            return;
-        }
-        m_drag = Drag::Orbit;
-    }
-    const QPoint pos = posF.toPoint();
-    const QPoint delta = pos - m_lastMouse;
-    m_lastMouse = pos;
+void ViewportNavigation::dragTo(QPoint position, int widgetHeight) {
+    const QPoint delta = position - m_lastMouse;
+    m_lastMouse = position;
     if (m_drag == Drag::Orbit) {
         // The scene follows the mouse (Blender, three.js), unless View ▸ Invert Vertical Orbit is on.
-        m_view.orbitByDrag(delta.x(), delta.y(), double(height()));
-    } else {
-        const double perPixel = 1.0 / std::max(height(), 1);
+        m_view.orbitByDrag(delta.x(), delta.y(), double(widgetHeight));
+    } else if (m_drag == Drag::Pan) {
+        const double perPixel = 1.0 / std::max(widgetHeight, 1);
         m_view.pan(-delta.x() * perPixel, delta.y() * perPixel);
     }
-    interacted();
-    navigated();
-    event->accept();
+    moved();
 }
 
-void Viewport::mouseReleaseEvent(QMouseEvent* event) {
-    if (m_drag == Drag::None) {
-        QOpenGLWidget::mouseReleaseEvent(event);
-        return;
-    }
-    if (m_drag == Drag::PendingClick && m_selection) {
-        const std::uint64_t id = pickAt(m_pressPosition, m_pressAlt);
-        if (m_pressCtrl) {
-            // Ctrl+click adds or removes; Ctrl+click on nothing keeps the selection.
-            m_selection->toggleNode(scene::NodeId(id));
-        } else if (id) {
-            m_selection->selectNode(scene::NodeId(id));
-        } else {
-            m_selection->clear();
-        }
-    }
-    if (m_drag == Drag::Handle) {
-        m_handleDrag->release();
-    }
+bool ViewportNavigation::endDrag() {
+    const bool was = m_drag != Drag::None;
     m_drag = Drag::None;
-    m_overlay->update();
-    event->accept();
+    return was;
 }
 
-void Viewport::mouseDoubleClickEvent(QMouseEvent* event) {
-    if (event->button() == Qt::LeftButton) {
-        resetView();
-        event->accept();
-    }
+void ViewportNavigation::zoom(double notches) {
+    m_view.zoom(std::pow(0.85, notches));
+    moved();
 }
 
-void Viewport::wheelEvent(QWheelEvent* event) {
-    // One notch (120 units) moves 15% closer or farther.
-    const double notches = event->angleDelta().y() / 120.0;
-    if (notches != 0.0) {
-        m_view.zoom(std::pow(0.85, notches));
-        interacted();
-        navigated();
-    }
-    event->accept();
-}
-
-void Viewport::keyPressEvent(QKeyEvent* event) {
-    if (event->key() == Qt::Key_Escape && m_drag == Drag::Handle) {
-        // Cancel the drag: every node back as it was, and no undo step left behind.
-        m_handleDrag->cancel();
-        m_drag = Drag::None;
-        m_overlay->update();
-        event->accept();
+void ViewportNavigation::moved() {
+    if (!m_looksThroughSceneCamera || !m_undoStack) {
         return;
     }
-    QOpenGLWidget::keyPressEvent(event);
+    // Looking through the scene camera: the navigation is an edit of the document's camera.
+    scene::CameraData camera = m_scene.camera();
+    const render::Camera& v = m_view.camera();
+    camera.position = v.position;
+    camera.target = v.target;
+    camera.up = v.up;
+    camera.far = std::min(std::max(camera.far, v.far), camera.near * render::kMaxFarNearRatio);
+    auto* command = new document::SetCameraCommand(m_scene, camera, true);
+    command->setMergeKey(QStringLiteral("navigate#%1").arg(m_gestureSerial));
+    document::pushEdit(*m_undoStack, command); // an orbit that ends where it began is no step
 }
 
 } // namespace speculum::ui
