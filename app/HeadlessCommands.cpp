@@ -463,8 +463,8 @@ int runExport(const CliOptions& options) {
         return 1;
     }
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
-    const ProjectFiles files = checkProjectFiles(options.project, scene, meshes, warnings);
+    std::vector<scene::Warning> modelWarnings;
+    const ProjectFiles files = checkProjectFiles(options.project, scene, meshes, modelWarnings);
     if (base::Status missing = applyMissingFiles(files, policyOf(options)); !missing) {
         fail("export: " + missing.error());
         return 1;
@@ -473,12 +473,14 @@ int runExport(const CliOptions& options) {
         fail("export: " + distinct.error());
         return 1;
     }
+    std::vector<std::string> warnings;
     const base::Status exported =
         scene::exportGltf(scene, QString::fromStdString(options.output), meshes, warnings);
     if (!exported) {
         fail("export: " + exported.error()); // alone: a failure is one line
         return 1;
     }
+    printWarnings(modelWarnings);
     printWarnings(warnings);
     std::cout << base::printable(options.output, 4096) << "\n";
     return 0;

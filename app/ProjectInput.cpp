@@ -74,6 +74,10 @@ void printWarnings(const std::vector<std::string>& warnings) {
         std::cerr << "speculum: warning: " << oneLine(w) << "\n";
 }
 
+void printWarnings(const std::vector<scene::Warning>& warnings) {
+    printWarnings(scene::messages(warnings));
+}
+
 void printError(const std::string& message) {
     std::cerr << "speculum: error: " << oneLine(message) << "\n";
 }
@@ -91,7 +95,7 @@ base::Status loadProjectScene(const std::string& project, scene::Scene& scene) {
 }
 
 ProjectFiles checkProjectFiles(const std::string& project, const scene::Scene& scene,
-                               scene::MeshLibrary& meshes, std::vector<std::string>& warnings) {
+                               scene::MeshLibrary& meshes, std::vector<scene::Warning>& warnings) {
     ProjectFiles files;
     files.inputs.push_back(project);
     std::set<std::string> checked;
@@ -160,7 +164,7 @@ base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double t
         return base::Error{opened.error()};
     ProjectFrame frame;
     frame.meshes = std::make_unique<scene::MeshLibrary>();
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const ProjectFiles files = checkProjectFiles(project, scene, *frame.meshes, warnings);
     if (base::Status missing = applyMissingFiles(files, policy); !missing)
         return base::Error{missing.error()};

@@ -4,6 +4,7 @@
 #include "render/frame/FrameInput.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/model/Scene.hpp"
+#include "scene/model/Warning.hpp"
 
 #include <memory>
 #include <set>
@@ -45,9 +46,9 @@ struct ProjectFrame {
 base::Status loadProjectScene(const std::string& project, scene::Scene& scene);
 
 // The models and textures `scene` names, each imported (into `meshes`, so a later snapshot reuses it) or
-// checked to be a readable regular file. Import warnings are appended to `warnings`.
+// checked to be a readable regular file. The readers' notes on the models are appended to `warnings`.
 ProjectFiles checkProjectFiles(const std::string& project, const scene::Scene& scene,
-                               scene::MeshLibrary& meshes, std::vector<std::string>& warnings);
+                               scene::MeshLibrary& meshes, std::vector<scene::Warning>& warnings);
 
 // Applies `policy` to the problems found: Fail gives one error line (the first problem, how many more, and
 // the option that goes on); KeepGoing prints each as a warning; Report does nothing.
@@ -63,8 +64,9 @@ base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double t
 // the layers themselves quote with base::quoted.
 std::string oneLine(std::string_view message);
 
-// Prints "speculum: warning: ..." lines on stderr, one line each.
+// Prints "speculum: warning: ..." lines on stderr, one line each (a scene warning's message).
 void printWarnings(const std::vector<std::string>& warnings);
+void printWarnings(const std::vector<scene::Warning>& warnings);
 
 // Prints "speculum: error: ..." on stderr, one line.
 void printError(const std::string& message);

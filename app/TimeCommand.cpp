@@ -129,7 +129,7 @@ private:
     render::Renderer& m_renderer;
     const render::RenderTarget m_target;
     render::RenderOptions m_renderOptions;
-    std::vector<std::string> m_snapshotWarnings;
+    std::vector<scene::Warning> m_snapshotWarnings;
     int m_frameNumber = 0;
     render::FrameReport m_last;
 };

@@ -63,7 +63,7 @@ void frame(benchmark::State& state, bool animated) {
     double gpuTotal = 0.0, t = 0.0;
     std::int64_t frames = 0;
     for (auto _ : state) {
-        std::vector<std::string> warnings;
+        std::vector<speculum::scene::Warning> warnings;
         const render::FrameInput input = speculum::scene::snapshot(f->scene, t, f->meshes, warnings);
         // Timer queries wait for the GPU at the end of the frame, so wall time includes the GPU's work.
         const render::FrameReport report =

@@ -62,7 +62,7 @@ std::optional<int> moveTarget(const scene::Scene& scene, scene::NodeId id, scene
 render::math::Box ownWorldBox(const scene::NodeData& d, const glm::dmat4& world, scene::MeshLibrary& builtins,
                               scene::MeshLibrary* files) {
     render::math::Box box;
-    std::vector<std::string> ignored;
+    std::vector<scene::Warning> ignored;
     if (d.mesh) {
         scene::MeshLibrary* library = d.mesh->builtin ? (files ? files : &builtins) : files;
         if (library) {

@@ -207,7 +207,7 @@ std::vector<render::math::Box> occupiedBoxes(const scene::Scene& scene, double t
                                              scene::MeshLibrary& meshes) {
     std::vector<render::math::Box> boxes;
     const auto worlds = scene::worldMatrices(scene, timeSeconds);
-    std::vector<std::string> ignored; // the viewport reports load problems already
+    std::vector<scene::Warning> ignored; // the viewport reports load problems already
     scene.forEachNode([&](const scene::Node& node) {
         const scene::NodeData& d = node.data();
         const auto it = worlds.find(node.id());

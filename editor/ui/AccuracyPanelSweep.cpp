@@ -186,7 +186,7 @@ QString AccuracyPanel::applyRecord(int index) {
     if (m_last) {
         proxy = document::sweepParallaxProxy(m_last->input);
     } else {
-        std::vector<std::string> ignored;
+        std::vector<scene::Warning> ignored;
         proxy = document::sweepParallaxProxy(
             scene::snapshot(m_scene, m_clock.time(), m_viewport.meshes(), ignored));
     }
@@ -240,12 +240,12 @@ void AccuracyPanel::runSweep(bool quick) {
     if (m_sweep->running()) {
         return;
     }
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const QString name =
         m_scene.projectPath().isEmpty() ? tr("untitled") : QFileInfo(m_scene.projectPath()).fileName();
     accuracy::SweepInput input = SweepRunJob::inputFor(m_scene, m_viewport.meshes(), name, quick, warnings);
-    for (const std::string& w : warnings) {
-        emit message(tr("Sweep: %1").arg(QString::fromStdString(w)));
+    for (const scene::Warning& w : warnings) {
+        emit message(tr("Sweep: %1").arg(QString::fromStdString(w.message)));
     }
     m_chartBefore = m_chart->results();
     m_sceneChangedDuringSweep = false;

@@ -70,7 +70,7 @@ bool ExactComparison::start(int width, double time) {
     auto result = std::make_unique<ComparisonResult>();
     result->width = w;
     result->height = h;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     result->input = scene::snapshot(m_scene, time, m_viewport.meshes(), warnings);
     result->input.camera = m_viewport.viewCamera();
 
@@ -86,8 +86,8 @@ bool ExactComparison::start(int width, double time) {
     }
     result->rasterCpuMs = raster->cpuMs;
     result->rasterGpuMs = raster->gpuMs;
-    for (const auto& text : warnings) {
-        result->warnings << QString::fromStdString(text);
+    for (const scene::Warning& w : warnings) {
+        result->warnings << QString::fromStdString(w.message);
     }
 
     m_cancel = false;

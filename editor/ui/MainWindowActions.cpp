@@ -125,9 +125,12 @@ base::Status MainWindow::exportGltfFile(const QString& path) {
     std::vector<std::string> warnings;
     m_viewport->waitForModels(); // read on workers: none may be missing from the file
     auto status = scene::exportGltf(scene(), path, m_viewport->meshes(), warnings);
-    warnings = m_viewport->correctModelWarnings(std::move(warnings));
     for (const auto& w : warnings) {
         logMessage(QString::fromStdString(w));
+    }
+    // The exporter found a failed model file empty (its stand-in): the read's own error says why.
+    for (const scene::Warning& w : m_viewport->correctModelWarnings({})) {
+        logMessage(QString::fromStdString(w.message));
     }
     if (status) {
         logMessage(tr("Exported %1").arg(path));
@@ -183,7 +186,10 @@ void MainWindow::logStillExport(const QString& path, const scene::StillExportSet
         logMessage(tr("Still export failed: %1").arg(QString::fromStdString(result.error())));
         return;
     }
-    result->warnings = m_viewport->correctModelWarnings(std::move(result->warnings));
+    result->sceneWarnings = m_viewport->correctModelWarnings(std::move(result->sceneWarnings));
+    for (const scene::Warning& w : result->sceneWarnings) {
+        logMessage(QString::fromStdString(w.message));
+    }
     for (const auto& w : result->warnings) {
         logMessage(QString::fromStdString(w));
     }

@@ -25,7 +25,7 @@ SweepRunJob::~SweepRunJob() {
 
 accuracy::SweepInput SweepRunJob::inputFor(const scene::Scene& scene, scene::MeshLibrary& meshes,
                                            const QString& sceneName, bool quick,
-                                           std::vector<std::string>& warnings) {
+                                           std::vector<scene::Warning>& warnings) {
     accuracy::SweepInput input;
     input.sceneName = sceneName.toStdString();
     input.quick = quick;

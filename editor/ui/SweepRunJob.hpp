@@ -1,6 +1,7 @@
 #pragma once
 
 #include "accuracy/run/SweepRun.hpp"
+#include "scene/model/Warning.hpp"
 
 #include <QObject>
 #include <QString>
@@ -31,7 +32,7 @@ public:
     // library the snapshot's meshes came from (its built-in teapots are swapped by identity).
     static accuracy::SweepInput inputFor(const scene::Scene& scene, scene::MeshLibrary& meshes,
                                          const QString& sceneName, bool quick,
-                                         std::vector<std::string>& warnings);
+                                         std::vector<scene::Warning>& warnings);
 
     // Starts the sweep; false (and failed()) when one is already running.
     bool start(accuracy::SweepInput input);

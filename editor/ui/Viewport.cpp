@@ -124,7 +124,7 @@ void Viewport::waitForModels() {
     disconnect(connection);
 }
 
-std::vector<std::string> Viewport::correctModelWarnings(std::vector<std::string> warnings) {
+std::vector<scene::Warning> Viewport::correctModelWarnings(std::vector<scene::Warning> warnings) {
     m_models->prepare(m_scene);
     return m_models->correct(std::move(warnings), false);
 }
@@ -262,7 +262,7 @@ void Viewport::paintGL() {
     frameOnScreen(); // the last frame, when its composition was never reported: timed by its drawing
     m_frameClock.start();
     const double time = m_clock.time();
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     // Model files are read on workers (ViewportModels), never here: a file still loading draws nothing yet.
     m_models->prepare(m_scene);
     render::FrameInput input = scene::snapshot(m_scene, time, m_meshes, warnings);
@@ -339,14 +339,14 @@ void Viewport::countFrame() {
 }
 
 // The frame's warnings: the viewport's own, the snapshot's and the renderer's.
-void Viewport::reportFrameWarnings(bool composedAsStored, const std::vector<std::string>& warnings) {
+void Viewport::reportFrameWarnings(bool composedAsStored, const std::vector<scene::Warning>& warnings) {
     QStringList all;
     if (textureFormat() == kSrgbTextureFormat && !composedAsStored) {
         all << tr("The viewport may look darker than the scene: this GPU cannot show its sRGB buffer as "
                   "stored (no EXT_texture_sRGB_decode). Stills are not affected.");
     }
-    for (const auto& w : warnings) {
-        all << QString::fromStdString(w);
+    for (const scene::Warning& w : warnings) {
+        all << QString::fromStdString(w.message);
     }
     for (const auto& w : m_lastReport.warnings) {
         all << QString::fromStdString(w);

@@ -7,6 +7,7 @@
 #include "render/renderer/Renderer.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/model/SceneData.hpp"
+#include "scene/model/Warning.hpp"
 
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
@@ -97,8 +98,9 @@ public:
     // loading.
     void waitForModels();
     // Warnings of a snapshot of the scene made with meshes() (an export) with the ones about model files
-    // that failed on the workers put right (the stand-ins would make them say "no triangles", or nothing).
-    std::vector<std::string> correctModelWarnings(std::vector<std::string> warnings);
+    // that failed on the workers put right (the stand-ins would make them say "no triangles", or nothing):
+    // ViewportModels::correct.
+    std::vector<scene::Warning> correctModelWarnings(std::vector<scene::Warning> warnings);
     // A model read elsewhere (Import's worker), so the viewport does not read the file again.
     void adoptModel(const std::string& absolutePath, std::shared_ptr<const scene::ImportedModel> model);
     const render::Camera& viewCamera() const { return m_navigation.camera(); }
@@ -205,7 +207,7 @@ private:
     view::PreviewLevel previewLevel(bool previewing, render::FrameInput& input);
     render::RenderTarget frameTarget(bool composedAsStored) const;
     void countFrame();
-    void reportFrameWarnings(bool composedAsStored, const std::vector<std::string>& warnings);
+    void reportFrameWarnings(bool composedAsStored, const std::vector<scene::Warning>& warnings);
     void updateTicking();
     void reportWarnings(QStringList warnings);
     void interacted(); // navigation or a handle drag: previews until kRestMs after the last one

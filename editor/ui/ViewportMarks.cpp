@@ -65,7 +65,7 @@ std::vector<Edge> outlineEdges(const scene::NodeData& d, const glm::dmat4& world
             edges.emplace_back(c[p[0]], c[p[1]]);
         }
     };
-    std::vector<std::string> ignored;
+    std::vector<scene::Warning> ignored;
     if (d.mesh) {
         if (auto mesh = meshes.get(*d.mesh, ignored)) {
             const render::Bounds b = scene::meshBounds(*mesh);

@@ -14,14 +14,16 @@ namespace speculum::ui {
 
 namespace {
 
-// The snapshot's warning about a node starts like this (its name quoted, or in double quotes in older text).
-bool isAboutNode(const std::string& warning, const std::string& node) {
-    return warning.rfind("node " + base::quoted(node) + ": ", 0) == 0 ||
-           warning.rfind("node \"" + node + "\": ", 0) == 0;
-}
-
 std::string fileName(const std::string& path) {
     return QFileInfo(QString::fromStdString(path)).fileName().toStdString();
+}
+
+// The stand-in an unread or failed file leaves in the library makes the snapshot say what is not true
+// ("no triangles", "part 2 does not exist"), and of a reflector on that node that it has no mesh.
+bool isFromStandIn(const scene::Warning& warning, const std::string& node, const std::string& file) {
+    return (warning.code == scene::WarningCode::MeshSkipped ||
+            warning.code == scene::WarningCode::ReflectorWithoutMesh) &&
+           warning.node == node && warning.file == file;
 }
 
 } // namespace
@@ -145,7 +147,8 @@ void ViewportModels::finished(ModelImportJob* job) {
     e.job = nullptr;
     ModelImportJob::Output out = job->takeOutput();
     for (const auto& w : out.warnings) {
-        m_pendingWarnings.push_back(base::quoted(fileName(it->first)) + ": " + w);
+        m_pendingWarnings.push_back(
+            scene::modelFileNote(it->first, base::quoted(fileName(it->first)) + ": " + w));
     }
     if (out.model) {
         m_meshes.addModel(it->first,
@@ -154,6 +157,7 @@ void ViewportModels::finished(ModelImportJob* job) {
     } else {
         e.state = State::Failed;
         e.error = out.model.error();
+        e.errorNamesFile = true;
     }
     emit changed();
 }
@@ -175,28 +179,28 @@ void ViewportModels::adopt(const std::string& absolutePath,
     m_meshes.addModel(absolutePath, std::move(model));
 }
 
-std::vector<std::string> ViewportModels::correct(std::vector<std::string> warnings, bool takePending) {
-    std::vector<std::string> own;
+std::vector<scene::Warning> ViewportModels::correct(std::vector<scene::Warning> warnings, bool takePending) {
+    std::vector<scene::Warning> own;
     for (const User& user : m_users) {
         const auto it = m_entries.find(user.path);
         if (it == m_entries.end() || it->second.state == State::Ready) {
             continue;
         }
-        // What the stand-in made the snapshot say ("no triangles", "part 2 does not exist") is not true.
-        std::erase_if(warnings, [&](const std::string& w) {
-            return isAboutNode(w, user.node) && w.find("skipped") != std::string::npos;
+        std::erase_if(warnings,
+                      [&](const scene::Warning& w) { return isFromStandIn(w, user.node, user.path); });
+        const Entry& entry = it->second;
+        const std::string errorPrefix =
+            entry.errorNamesFile ? std::string() : base::quoted(fileName(user.path)) + ": ";
+        scene::Warning warning =
+            entry.state == State::Loading
+                ? scene::meshLoading(user.node, user.path)
+                : scene::meshSkipped(user.node, user.path, errorPrefix + base::printable(entry.error, 200));
+        // A node may name the file twice (its mesh and an embedded texture): one warning says it.
+        const bool said = std::any_of(own.begin(), own.end(), [&](const scene::Warning& w) {
+            return w.code == warning.code && w.node == warning.node && w.file == warning.file;
         });
-        const std::string name = fileName(user.path), file = base::quoted(name);
-        const std::string& error = it->second.error;
-        // The reader's errors may name the file already ("dag.gltf: the node graph ...").
-        const bool named = error.rfind(name + ": ", 0) == 0 || error.rfind(file + ": ", 0) == 0;
-        std::string line =
-            "node " + base::quoted(user.node) + ": " +
-            (it->second.state == State::Loading
-                 ? "mesh loading: " + file + "..."
-                 : "mesh skipped: " + (named ? std::string() : file + ": ") + base::printable(error, 200));
-        if (std::find(own.begin(), own.end(), line) == own.end()) {
-            own.push_back(std::move(line));
+        if (!said) {
+            own.push_back(std::move(warning));
         }
     }
     warnings.insert(warnings.end(), own.begin(), own.end());

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "scene/import/ModelImport.hpp"
+#include "scene/model/Warning.hpp"
 
 #include <QDateTime>
 #include <QObject>
@@ -46,9 +47,11 @@ public:
     bool isLoading() const;
 
     // The frame's warnings (scene::snapshot's) with those about nodes whose file is still loading or
-    // failed replaced by what is true ("loading", the real error), plus the warnings of reads that ended
-    // since the last call (unless takePending is false: an export's warnings, the viewport shows those).
-    std::vector<std::string> correct(std::vector<std::string> warnings, bool takePending = true);
+    // failed replaced by what is true: the snapshot's MeshSkipped and ReflectorWithoutMesh of that node
+    // and file give way to one MeshLoading or one MeshSkipped with the read's own error. Then come the
+    // readers' notes of reads that ended since the last call (unless takePending is false: an export's
+    // warnings, the viewport shows those).
+    std::vector<scene::Warning> correct(std::vector<scene::Warning> warnings, bool takePending = true);
 
 signals:
     void changed(); // a read ended: draw again
@@ -60,6 +63,7 @@ private:
         qint64 size = -1;
         State state = State::Loading;
         std::string error;
+        bool errorNamesFile = false; // the reader's errors do ("dag.gltf: the node graph ..."), a stat's not
         ModelImportJob* job = nullptr;
     };
     struct User {
@@ -73,8 +77,8 @@ private:
 
     scene::MeshLibrary& m_meshes;
     std::map<std::string, Entry> m_entries;
-    std::vector<User> m_users;                  // of the last prepare()
-    std::vector<std::string> m_pendingWarnings; // of reads that ended, not shown yet
+    std::vector<User> m_users;                     // of the last prepare()
+    std::vector<scene::Warning> m_pendingWarnings; // of reads that ended, not shown yet
 };
 
 } // namespace speculum::ui

@@ -24,7 +24,7 @@ namespace {
 // nothing.
 bool addOwnBounds(render::math::Box& box, const scene::NodeData& d, const glm::dmat4& world,
                   scene::MeshLibrary& meshes) {
-    std::vector<std::string> ignored;
+    std::vector<scene::Warning> ignored;
     bool added = false;
     if (d.mesh) {
         if (auto mesh = meshes.get(*d.mesh, ignored)) {

@@ -41,7 +41,7 @@ PickScene buildPickScene(const Scene& scene, double timeSeconds, MeshLibrary& me
     PickScene out;
     out.mirrorDepth = scene.settings().mirrorDepth;
     const auto worlds = worldMatrices(scene, timeSeconds);
-    std::vector<std::string> ignored; // the viewport reports load problems already
+    std::vector<Warning> ignored; // the viewport reports load problems already
     scene.forEachNode([&](const Node& node) {
         const NodeData& d = node.data();
         const glm::dmat4& world = worlds.at(node.id());

@@ -1,6 +1,5 @@
 #include "scene/evaluate/Snapshot.hpp"
 
-#include "base/Printable.hpp"
 #include "scene/import/ModelNodes.hpp"
 #include "scene/model/NodeMath.hpp"
 
@@ -15,7 +14,7 @@ namespace {
 
 class SnapshotBuilder {
 public:
-    SnapshotBuilder(const Scene& scene, double time, MeshLibrary& meshes, std::vector<std::string>& warnings)
+    SnapshotBuilder(const Scene& scene, double time, MeshLibrary& meshes, std::vector<Warning>& warnings)
         : m_projectDir(QFileInfo(scene.projectPath()).absoluteDir())
         , m_hasProject(!scene.projectPath().isEmpty())
         , m_time(time)
@@ -40,7 +39,7 @@ public:
             if (loaded) {
                 mesh = *loaded;
             } else {
-                warn(d, "mesh skipped: " + loaded.error());
+                m_warnings.push_back(meshSkipped(d.name, source.file, loaded.error()));
             }
         }
 
@@ -85,7 +84,7 @@ private:
         const std::string file = absolute(d.mesh->file);
         const auto model = m_meshes.model(file, m_warnings);
         if (!model) {
-            warn(d, "mesh skipped: " + model.error());
+            m_warnings.push_back(meshSkipped(d.name, file, model.error()));
             return;
         }
         const ImportedModel& m = **model;
@@ -114,19 +113,17 @@ private:
         return QDir::cleanPath(m_projectDir.absoluteFilePath(QString::fromStdString(path))).toStdString();
     }
 
-    void warn(const NodeData& d, const std::string& what) {
-        m_warnings.push_back("node " + base::quoted(d.name) + ": " + what);
-    }
-
     void addReflector(const NodeData& d, const glm::dmat4& world, const render::MeshHandle& mesh,
                       const render::Material& material, render::FrameInput& frame) {
         if (frame.reflector) {
-            warn(d, "reflector skipped: the scene already has one (" + base::quoted(frame.reflector->name) +
-                        ")");
+            m_warnings.push_back(reflectorSkipped(d.name, frame.reflector->name));
             return;
         }
         if (!mesh) {
-            warn(d, "reflector skipped: it needs a mesh on the same node");
+            // With the node's model file: when that failed to load, the editor puts the file's reason
+            // instead.
+            m_warnings.push_back(
+                reflectorWithoutMesh(d.name, d.mesh ? absolute(d.mesh->file) : std::string()));
             return;
         }
         render::Reflector r;
@@ -154,13 +151,13 @@ private:
     bool m_hasProject;
     double m_time;
     MeshLibrary& m_meshes;
-    std::vector<std::string>& m_warnings;
+    std::vector<Warning>& m_warnings;
 };
 
 } // namespace
 
 render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary& meshes,
-                            std::vector<std::string>& warnings) {
+                            std::vector<Warning>& warnings) {
     render::FrameInput frame;
     frame.settings = scene.settings();
     frame.camera = scene.camera();

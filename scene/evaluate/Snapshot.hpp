@@ -3,8 +3,8 @@
 #include "render/frame/FrameInput.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/model/Scene.hpp"
+#include "scene/model/Warning.hpp"
 
-#include <string>
 #include <vector>
 
 namespace speculum::scene {
@@ -17,9 +17,11 @@ namespace speculum::scene {
 //   light                   → a Light at the world origin of the node, pointing along its world −Y;
 //   mirror                  → a Mirror (world matrix, size, reflectivity, technique, material if any);
 //   reflector               → the Reflector, whose surface is the node's mesh (not also a DrawItem).
-// A mesh that cannot be loaded, a reflector without a mesh or a second reflector give a warning naming the
-// node, and that part of the node is skipped; snapshot never fails.
+// A mesh that cannot be loaded (MeshSkipped, with the node and the model file), a reflector without a mesh
+// (ReflectorWithoutMesh) or a second reflector (ReflectorSkipped) give a warning, and that part of the
+// node is skipped; the reader's notes on a model file read for it come too (ModelFileNote). snapshot never
+// fails.
 render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary& meshes,
-                            std::vector<std::string>& warnings);
+                            std::vector<Warning>& warnings);
 
 } // namespace speculum::scene

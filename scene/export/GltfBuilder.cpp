@@ -427,7 +427,7 @@ private:
     int addMesh(const NodeData& d, const std::string& name) {
         tinygltf::Mesh mesh;
         if (d.mesh) {
-            std::vector<std::string> importWarnings;
+            std::vector<Warning> importWarnings;
             auto loaded = m_library.get(*d.mesh, importWarnings);
             if (!loaded) {
                 m_warnings.push_back("node \"" + d.name + "\": mesh not exported: " + loaded.error());

@@ -163,7 +163,7 @@ base::Result<GltfImage> GltfImageSource::loadEmbedded(const std::string& model, 
     const std::string label = model + "#" + texture;
     const aiTexture* t = it->second ? it->second->GetScene()->GetEmbeddedTexture(texture.c_str()) : nullptr;
     if (!t || !t->pcData) {
-        std::vector<std::string> ignored; // the import's own warnings were given when it was drawn
+        std::vector<Warning> ignored; // the import's own warnings were given when it was drawn
         if (auto decoded = m_meshes.embeddedTexture(label, ignored)) {
             return encodePng(*decoded);
         }

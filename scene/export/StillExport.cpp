@@ -149,14 +149,14 @@ base::Result<StillExportResult> exportStill(render::Renderer* renderer, const Sc
     const std::string path = outputPath.toStdString();
     if (auto valid = validateStillExport(settings, path); !valid)
         return base::Error{valid.error()};
-    std::vector<std::string> warnings;
+    std::vector<Warning> warnings;
     render::FrameInput input = snapshot(scene, settings.time, meshes, warnings);
     if (settings.camera)
         input.camera = *settings.camera;
     auto result = writeStill(renderer, input, scene.projectPath().toStdString(), settings, path, progress,
                              rendererDescription);
     if (result)
-        result->warnings.insert(result->warnings.begin(), warnings.begin(), warnings.end());
+        result->sceneWarnings = std::move(warnings);
     return result;
 }
 

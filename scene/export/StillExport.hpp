@@ -6,6 +6,7 @@
 #include "render/renderer/StillRenderer.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/model/Scene.hpp"
+#include "scene/model/Warning.hpp"
 
 #include <QString>
 #include <optional>
@@ -43,9 +44,10 @@ struct TraceFigures {
 
 struct StillExportResult {
     render::StillResult still;
-    std::vector<std::string> warnings; // renderer or tracer
-    std::optional<TraceFigures> trace; // a reference still's noise
-    std::string renderer;              // what drew it: the GL description, or the tracer's
+    std::vector<Warning> sceneWarnings; // exportStill's snapshot, shown before the renderer's
+    std::vector<std::string> warnings;  // renderer or tracer
+    std::optional<TraceFigures> trace;  // a reference still's noise
+    std::string renderer;               // what drew it: the GL description, or the tracer's
 };
 
 // The attributes stored in the file: software, a description with the settings, the project path, the
@@ -63,7 +65,7 @@ base::Result<StillExportResult> writeStill(render::Renderer* renderer, const ren
                                            const std::string& rendererDescription = {});
 
 // The document's still: the scene evaluated at settings.time (through settings.camera when set), then
-// writeStill. Snapshot warnings come first in the result's.
+// writeStill. The snapshot's warnings are the result's sceneWarnings.
 base::Result<StillExportResult> exportStill(render::Renderer* renderer, const Scene& scene,
                                             MeshLibrary& meshes, const StillExportSettings& settings,
                                             const QString& outputPath,

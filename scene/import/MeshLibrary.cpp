@@ -34,7 +34,7 @@ render::MeshHandle MeshLibrary::builtin(BuiltinMesh kind, int tessellation) {
 }
 
 base::Result<MeshLibrary::FileEntry*> MeshLibrary::entry(const std::string& absolutePath,
-                                                         std::vector<std::string>& warnings) {
+                                                         std::vector<Warning>& warnings) {
     const QFileInfo info(QString::fromStdString(absolutePath));
     if (!info.isFile()) {
         // Not cached: the file may appear later (being copied in, or the user fixes the path on disk).
@@ -50,7 +50,11 @@ base::Result<MeshLibrary::FileEntry*> MeshLibrary::entry(const std::string& abso
         FileEntry fresh;
         fresh.modified = modified;
         fresh.size = size;
-        base::Result<ImportedModel> imported = importModelFile(absolutePath, warnings);
+        std::vector<std::string> notes;
+        base::Result<ImportedModel> imported = importModelFile(absolutePath, notes);
+        for (const std::string& note : notes) {
+            warnings.push_back(modelFileNote(absolutePath, note));
+        }
         if (imported) {
             fresh.model = std::make_shared<const ImportedModel>(std::move(imported).value());
         } else {
@@ -65,7 +69,7 @@ base::Result<MeshLibrary::FileEntry*> MeshLibrary::entry(const std::string& abso
 }
 
 base::Result<std::shared_ptr<const ImportedModel>> MeshLibrary::model(const std::string& absolutePath,
-                                                                      std::vector<std::string>& warnings) {
+                                                                      std::vector<Warning>& warnings) {
     auto found = entry(absolutePath, warnings);
     if (!found) {
         return base::Error{found.error()};
@@ -74,7 +78,7 @@ base::Result<std::shared_ptr<const ImportedModel>> MeshLibrary::model(const std:
 }
 
 base::Result<render::MeshHandle> MeshLibrary::file(const std::string& absolutePath,
-                                                   std::vector<std::string>& warnings) {
+                                                   std::vector<Warning>& warnings) {
     auto found = entry(absolutePath, warnings);
     if (!found) {
         return base::Error{found.error()};
@@ -108,7 +112,7 @@ base::Result<render::MeshHandle> MeshLibrary::file(const std::string& absolutePa
 }
 
 base::Result<render::MeshHandle> MeshLibrary::part(const std::string& absolutePath, int part,
-                                                   std::vector<std::string>& warnings) {
+                                                   std::vector<Warning>& warnings) {
     auto found = entry(absolutePath, warnings);
     if (!found) {
         return base::Error{found.error()};
@@ -127,8 +131,7 @@ base::Result<render::MeshHandle> MeshLibrary::part(const std::string& absolutePa
     return model.parts[part].mesh;
 }
 
-base::Result<render::MeshHandle> MeshLibrary::get(const MeshComponent& mesh,
-                                                  std::vector<std::string>& warnings) {
+base::Result<render::MeshHandle> MeshLibrary::get(const MeshComponent& mesh, std::vector<Warning>& warnings) {
     if (mesh.builtin) {
         return builtin(*mesh.builtin, mesh.tessellation);
     }
@@ -151,7 +154,7 @@ void MeshLibrary::addModel(const std::string& absolutePath, std::shared_ptr<cons
 }
 
 std::shared_ptr<const render::TextureImage> MeshLibrary::embeddedTexture(const std::string& name,
-                                                                         std::vector<std::string>& warnings) {
+                                                                         std::vector<Warning>& warnings) {
     const std::size_t hash = name.rfind('#');
     if (hash == std::string::npos || hash == 0 || hash + 1 == name.size()) {
         return nullptr;

@@ -5,6 +5,7 @@
 #include "render/mesh/MeshData.hpp"
 #include "scene/import/ModelImport.hpp"
 #include "scene/model/SceneData.hpp"
+#include "scene/model/Warning.hpp"
 
 #include <QDateTime>
 #include <map>
@@ -28,21 +29,20 @@ class MeshLibrary {
 public:
     render::MeshHandle builtin(BuiltinMesh kind, int tessellation);
 
-    // The whole file (read on first use). Import warnings are appended the first time a file (version)
-    // is imported.
+    // The whole file (read on first use). The reader's notes on it are appended as ModelFileNote warnings
+    // the first time a file (version) is imported.
     base::Result<std::shared_ptr<const ImportedModel>> model(const std::string& absolutePath,
-                                                             std::vector<std::string>& warnings);
+                                                             std::vector<Warning>& warnings);
 
     // Every part of the file placed by its node tree, as one mesh.
-    base::Result<render::MeshHandle> file(const std::string& absolutePath,
-                                          std::vector<std::string>& warnings);
+    base::Result<render::MeshHandle> file(const std::string& absolutePath, std::vector<Warning>& warnings);
 
     // One part of the file in its own coordinates; an out-of-range part is an error naming the part count.
     base::Result<render::MeshHandle> part(const std::string& absolutePath, int part,
-                                          std::vector<std::string>& warnings);
+                                          std::vector<Warning>& warnings);
 
     // Any of the above, by the component (file with `part` → part, without → flattened).
-    base::Result<render::MeshHandle> get(const MeshComponent& mesh, std::vector<std::string>& warnings);
+    base::Result<render::MeshHandle> get(const MeshComponent& mesh, std::vector<Warning>& warnings);
 
     // Takes a model imported elsewhere (a worker thread) for `absolutePath`, keyed by the file's current
     // time and size, so the next get() does not read it again.
@@ -52,7 +52,7 @@ public:
     // not cached yet). Null when the name is not such a texture (no '#', the part before it is not a
     // model file, or the whole name is an existing file) or the model has no texture by that name.
     std::shared_ptr<const render::TextureImage> embeddedTexture(const std::string& name,
-                                                                std::vector<std::string>& warnings);
+                                                                std::vector<Warning>& warnings);
 
     // Bounds of a mesh handed out (or any mesh), computed once per mesh and cached by its identity.
     render::Bounds bounds(const render::MeshHandle& mesh);
@@ -74,7 +74,7 @@ private:
         std::weak_ptr<const render::MeshData> mesh;
         render::Bounds bounds;
     };
-    base::Result<FileEntry*> entry(const std::string& absolutePath, std::vector<std::string>& warnings);
+    base::Result<FileEntry*> entry(const std::string& absolutePath, std::vector<Warning>& warnings);
 
     std::map<std::pair<BuiltinMesh, int>, render::MeshHandle> m_builtins;
     std::map<std::string, FileEntry> m_files;

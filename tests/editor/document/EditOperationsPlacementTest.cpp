@@ -37,7 +37,7 @@ protected:
     render::math::Box box(scene::NodeId id) {
         render::math::Box b;
         const scene::NodeData& d = scene.findNode(id)->data();
-        std::vector<std::string> ignored;
+        std::vector<scene::Warning> ignored;
         if (d.mesh) {
             auto mesh = meshes.get(*d.mesh, ignored);
             EXPECT_TRUE(mesh && *mesh);

@@ -61,7 +61,7 @@ protected:
     render::math::Box box(scene::NodeId id) {
         render::math::Box b;
         const auto worlds = scene::worldMatrices(scene(), 0.0);
-        std::vector<std::string> ignored;
+        std::vector<scene::Warning> ignored;
         scene().forEachNode([&](const scene::Node& n) {
             if (!scene().isAncestor(id, n.id())) {
                 return;

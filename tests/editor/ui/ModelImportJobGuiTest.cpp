@@ -3,12 +3,17 @@
 // child per part with its material) in one undo step, at its real size (or fitted, when asked), standing on
 // the ground where the view looks and beside what is already there; a broken or missing file, or a
 // cancelled import, leaves the document as it was. The pick hierarchy of a big model is built on the
-// worker, so the first click does not build it and the first frame does not read the file again.
+// worker, so the first click does not build it and the first frame does not read the file again. While
+// the viewport reads a project's model file, and after the read failed, its warnings say so.
+#include "base/Printable.hpp"
 #include "editor/document/NodeFactory.hpp"
+#include "editor/ui/ViewportModels.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
 #include "scene/evaluate/PickScene.hpp"
 #include "scene/evaluate/Picking.hpp"
+#include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/MeshLibrary.hpp"
 #include "scene/import/ModelImport.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
@@ -29,6 +34,7 @@
 #include <gtest/gtest.h>
 #include <set>
 #include <string>
+#include <sys/stat.h>
 #include <thread>
 
 namespace {
@@ -76,7 +82,7 @@ protected:
     render::math::Box worldBox(speculum::scene::NodeId root = speculum::scene::kNoNode) {
         render::math::Box box;
         const auto worlds = speculum::scene::worldMatrices(m_window->scene(), 0.0);
-        std::vector<std::string> ignored;
+        std::vector<speculum::scene::Warning> ignored;
         m_window->scene().forEachNode([&](const speculum::scene::Node& n) {
             if (!n.data().mesh ||
                 (root != speculum::scene::kNoNode && !m_window->scene().isAncestor(root, n.id()))) {
@@ -394,6 +400,82 @@ TEST_F(ModelImportGui, WindowRepaintsDuringABigImportAndCancelLeavesTheDocument)
     ASSERT_TRUE(hit);
     EXPECT_TRUE(m_window->scene().isAncestor(scan, hit->id));
     EXPECT_EQ(speculum::scene::pickCacheStats().accelBuilds, builds) << "built on the worker, once";
+}
+
+// ---- The viewport's warnings about the model files it reads on workers ----
+
+// The warnings of a node, in order.
+std::vector<speculum::scene::Warning> about(const std::vector<speculum::scene::Warning>& warnings,
+                                            const std::string& node) {
+    std::vector<speculum::scene::Warning> out;
+    std::copy_if(warnings.begin(), warnings.end(), std::back_inserter(out),
+                 [&](const speculum::scene::Warning& w) { return w.node == node; });
+    return out;
+}
+
+// While a file is read, and after its read failed, the library holds an empty stand-in for it: what the
+// snapshot then says of the node (no triangles, a reflector without a mesh) gives way to one warning that
+// says what is true. Warnings about other nodes and files are left as they are.
+TEST(ViewportModelsGui, WarningsAboutAFileBeingReadOrFailedSayWhatIsTrue) {
+    using namespace speculum::scene;
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const std::string broken = dir.filePath(QStringLiteral("broken.gltf")).toStdString();
+    const std::string pipe = dir.filePath(QStringLiteral("pipe.glb")).toStdString();
+    const std::string ghost = dir.filePath(QStringLiteral("ghost.obj")).toStdString();
+    {
+        QFile file(QString::fromStdString(broken));
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write("this is not a model\n");
+    }
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    SceneData data;
+    const auto node = [&](const std::string& name, const std::string& path) {
+        NodeTree tree;
+        tree.data.name = name;
+        tree.data.mesh = MeshComponent::fromFile(path);
+        return tree;
+    };
+    data.nodes = {node("Broken", broken), node("Pipe", pipe), node("Ghost", ghost)};
+    data.nodes[0].data.reflector = ReflectorComponent{};
+    Scene scene;
+    scene.reset(data);
+    MeshLibrary meshes;
+    ui::ViewportModels models(meshes);
+    const auto frameWarnings = [&] {
+        models.prepare(scene);
+        std::vector<Warning> warnings;
+        snapshot(scene, 0.0, meshes, warnings);
+        const std::vector<Warning> ghostWarnings = about(warnings, "Ghost");
+        std::vector<Warning> corrected = models.correct(std::move(warnings));
+        EXPECT_EQ(about(corrected, "Ghost"), ghostWarnings)
+            << "a file nobody reads is the library's to report";
+        return corrected;
+    };
+
+    // Before the worker's answer is delivered, the file is being read; the FIFO is refused at once.
+    std::vector<Warning> warnings = frameWarnings();
+    const std::vector<Warning> loading = about(warnings, "Broken");
+    ASSERT_EQ(loading.size(), 1u) << ::testing::PrintToString(messages(warnings));
+    EXPECT_EQ(loading[0], meshLoading("Broken", broken));
+    EXPECT_EQ(loading[0].message, "node 'Broken': mesh loading: 'broken.gltf'...");
+    const std::vector<Warning> pipeWarnings = about(warnings, "Pipe");
+    ASSERT_EQ(pipeWarnings.size(), 1u) << ::testing::PrintToString(messages(warnings));
+    EXPECT_EQ(pipeWarnings[0].code, WarningCode::MeshSkipped);
+    EXPECT_EQ(pipeWarnings[0].file, pipe);
+    EXPECT_EQ(pipeWarnings[0].message.rfind("node 'Pipe': mesh skipped: 'pipe.glb': ", 0), 0u)
+        << pipeWarnings[0].message;
+
+    // The read failed: its own error, which names the file, replaces the stand-in's "no triangles".
+    ASSERT_TRUE(waitFor([&] { return !models.isLoading(); }));
+    warnings = frameWarnings();
+    std::vector<std::string> notes;
+    const auto read = importModelFile(broken, notes);
+    ASSERT_FALSE(read.ok());
+    EXPECT_EQ(about(warnings, "Broken"),
+              std::vector<Warning>{meshSkipped("Broken", broken, base::printable(read.error(), 200))})
+        << ::testing::PrintToString(messages(warnings));
+    EXPECT_EQ(about(warnings, "Pipe"), pipeWarnings);
 }
 
 } // namespace

@@ -33,7 +33,8 @@ speculum_add_test(EditorRecoveryGuiTest TIER gui SOURCES EditorRecoveryGuiTest.c
 # The Accuracy dock: compare with the exact tracer, the chart of a bench run.
 speculum_add_test(AccuracyPanelGuiTest TIER gui
     SOURCES AccuracyPanelGuiTest.cpp ${gui_main} LIBS speculum_editor_ui Qt6::Test)
-# Model import in the editor: worker thread, progress and cancel, one undo step, placement, pick hierarchy.
+# Model import in the editor: worker thread, progress and cancel, one undo step, placement, pick hierarchy;
+# the viewport's warnings about the model files it reads on workers.
 speculum_add_test(ModelImportJobGuiTest TIER gui
     SOURCES ModelImportJobGuiTest.cpp ${gui_main} LIBS speculum_editor_ui Qt6::Test assimp::assimp)
 # Esc during a handle drag restores the node and leaves no undo step and a clean document.

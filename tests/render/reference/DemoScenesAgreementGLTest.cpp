@@ -30,7 +30,8 @@ FrameInput loadDemo(const char* name) {
         QString::fromStdString(speculum::testSourcePath("resources/scenes/")) + QString::fromUtf8(name);
     EXPECT_TRUE(scene::openProject(scene, path, warnings).ok()) << name;
     scene::MeshLibrary meshes;
-    return scene::snapshot(scene, 0.0, meshes, warnings);
+    std::vector<scene::Warning> snapshotWarnings;
+    return scene::snapshot(scene, 0.0, meshes, snapshotWarnings);
 }
 
 reference::TraceResult traceFrame(const FrameInput& input, int width, int height, int ssaa,

@@ -66,7 +66,8 @@ FrameInput demo(const std::string& name) {
     const QString path =
         QString::fromStdString(speculum::testSourcePath("resources/scenes/")) + QString::fromStdString(name);
     EXPECT_TRUE(scene::openProject(scene, path, warnings)) << name;
-    return scene::snapshot(scene, 0.4, meshes, warnings);
+    std::vector<scene::Warning> snapshotWarnings;
+    return scene::snapshot(scene, 0.4, meshes, snapshotWarnings);
 }
 
 class CameraBufferTest : public GlTest {

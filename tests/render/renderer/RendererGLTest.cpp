@@ -114,7 +114,8 @@ TEST_F(GlTest, ConsecutiveFramesOfAnUnchangedDemoSceneAreIdentical) {
                 scene, QString::fromStdString(speculum::testSourcePath("resources/scenes/")) + name, warnings)
                 .ok());
         scene::MeshLibrary meshes;
-        const render::FrameInput input = scene::snapshot(scene, 0.25, meshes, warnings);
+        std::vector<scene::Warning> snapshotWarnings;
+        const render::FrameInput input = scene::snapshot(scene, 0.25, meshes, snapshotWarnings);
         const render::Image first = renderImage(input, 160, 90);
         const render::Image second = renderImage(input, 160, 90);
         const render::Image third = renderImage(input, 160, 90);

@@ -25,7 +25,8 @@ FrameInput chromeScene() {
                     warnings)
                     .ok());
     scene::MeshLibrary meshes;
-    FrameInput input = scene::snapshot(scene, 0.0, meshes, warnings);
+    std::vector<scene::Warning> snapshotWarnings;
+    FrameInput input = scene::snapshot(scene, 0.0, meshes, snapshotWarnings);
     EXPECT_TRUE(input.reflector.has_value());
     Light spot;
     spot.name = "Spot";

@@ -48,7 +48,8 @@ void soak(render::Renderer& renderer, const Sweep& sweep, int frames) {
     double memoryAtBaseline = 0.0;
     int nanFrames = 0;
     for (int i = 0; i < frames; ++i) {
-        render::FrameInput input = scene::snapshot(scene, i / 30.0, meshes, warnings);
+        std::vector<scene::Warning> snapshotWarnings;
+        render::FrameInput input = scene::snapshot(scene, i / 30.0, meshes, snapshotWarnings);
         input.camera.position = sweep.position(i, frames);
         input.camera.target = sweep.target;
         if (sweep.cycleMaps && input.reflector)

@@ -27,7 +27,8 @@ FrameInput mirrorsAndReflector() {
             warnings)
             .ok());
     scene::MeshLibrary meshes;
-    FrameInput input = scene::snapshot(scene, 0.25, meshes, warnings);
+    std::vector<scene::Warning> snapshotWarnings;
+    FrameInput input = scene::snapshot(scene, 0.25, meshes, snapshotWarnings);
     for (Mirror& mirror : input.mirrors)
         mirror.roughness = 0.0;
     const auto ball = std::find_if(input.items.begin(), input.items.end(),

@@ -47,9 +47,9 @@ TEST(DemoScenes, EachLoadsCleanlyAndIsInTheFormSpeculumWrites) {
         scene::Scene scene;
         ASSERT_TRUE(scene::openProject(scene, path, warnings).ok());
         scene::MeshLibrary meshes;
-        warnings.clear();
-        const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
-        EXPECT_TRUE(warnings.empty());
+        std::vector<scene::Warning> snapshotWarnings;
+        const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, snapshotWarnings);
+        EXPECT_TRUE(snapshotWarnings.empty()) << ::testing::PrintToString(scene::messages(snapshotWarnings));
         EXPECT_FALSE(frame.items.empty() && frame.mirrors.empty());
         EXPECT_FALSE(frame.lights.empty());
     }
@@ -64,7 +64,8 @@ TEST(DemoScenes, MirrorRoomHasTwoFacingMirrorsAndObjectsBetween) {
             warnings)
             .ok());
     scene::MeshLibrary meshes;
-    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
+    std::vector<scene::Warning> snapshotWarnings;
+    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, snapshotWarnings);
     ASSERT_GE(frame.mirrors.size(), 3u);
     // Two of them face each other: opposite normals, each in front of the other.
     auto normal = [](const render::Mirror& m) {

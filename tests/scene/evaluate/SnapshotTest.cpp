@@ -38,7 +38,7 @@ scene::NodeTree boxNode(const std::string& name, const scene::Transform& transfo
 }
 
 render::FrameInput snap(const scene::SceneData& data, double time, scene::MeshLibrary& meshes,
-                        std::vector<std::string>& warnings) {
+                        std::vector<scene::Warning>& warnings) {
     scene::Scene scene;
     scene.reset(data);
     return scene::snapshot(scene, time, meshes, warnings);
@@ -58,7 +58,7 @@ TEST(Snapshot, LocalMatrixIsTranslateRotateScale) {
     scene::SceneData data;
     data.nodes.push_back(boxNode("n", {{10, 0, 0}, {0, 0, 90}, {2, 1, 1}}));
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 1u);
     expectNear(apply(frame.items[0].world, {1, 0, 0}), {10, 2, 0});
@@ -73,7 +73,7 @@ TEST(Snapshot, ChildWorldIsParentWorldTimesLocal) {
     parent.children.push_back(child);
     data.nodes.push_back(parent);
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 3u);
     EXPECT_EQ(frame.items[1].name, "child");
@@ -91,7 +91,7 @@ TEST(Snapshot, WorldMatricesKeepDoublePrecisionFarFromTheOrigin) {
     far.children.push_back(boxNode("near it", {{0.125 + 1e-6, 0, 0}, {0, 0, 0}, {1, 1, 1}}));
     data.nodes.push_back(far);
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 2u);
     EXPECT_NEAR(frame.items[1].world[3].x - 1e8, 0.125 + 1e-6,
@@ -104,7 +104,7 @@ TEST(Snapshot, BounceFollowsItsDefinition) {
     node.data.animation = scene::AnimationComponent{scene::BounceAnimation{1.0, 2.0}, std::nullopt};
     data.nodes.push_back(node);
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     auto yAt = [&](double t) { return snap(data, t, meshes, warnings).items.at(0).world[3].y; };
     EXPECT_NEAR(yAt(0.0), -1.0, kTolerance);
     EXPECT_NEAR(yAt(1.0), 0.0, kTolerance);                                   // top of the hop at period/2
@@ -128,7 +128,7 @@ TEST(Snapshot, OrbitFollowsItsDefinitionInTheParentsSpace) {
     parent.children.push_back(light);
     data.nodes.push_back(parent);
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     auto at = [&](double t) { return snap(data, t, meshes, warnings).lights.at(0).position; };
     expectNear(at(0.0), {101.5, 2, -3});
     expectNear(at(1.5), {100, 2, -1.5}); // quarter turn: +Z
@@ -156,7 +156,7 @@ TEST(Snapshot, LightsPointAlongTheirWorldMinusY) {
                                             scene::ShadowComponent{512, 3}};
     data.nodes = {sun, spot};
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.lights.size(), 2u);
     EXPECT_TRUE(frame.items.empty());
@@ -200,7 +200,7 @@ TEST(Snapshot, MirrorsAndTheReflector) {
         scene::ReflectorParallax{scene::ParallaxShape::Box, 1, {-1, -2, -3}, {4, 5, 6}};
     data.nodes = {table, plain, ball};
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     EXPECT_TRUE(warnings.empty());
     EXPECT_TRUE(frame.items.empty()) << "a reflector's mesh is not drawn a second time as an item";
@@ -242,21 +242,27 @@ TEST(Snapshot, ABrokenReflectorBecomesAWarning) {
     scene::NodeTree meshless;
     meshless.data.name = "Meshless";
     meshless.data.reflector = scene::ReflectorComponent{};
-    data.nodes = {first, second, meshless};
+    data.nodes = {meshless, first, second};
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_TRUE(frame.reflector.has_value());
     EXPECT_EQ(frame.reflector->name, "First");
     ASSERT_EQ(warnings.size(), 2u);
-    EXPECT_NE(warnings[0].find("Second"), std::string::npos) << warnings[0];
-    EXPECT_NE(warnings[1].find("Meshless"), std::string::npos) << warnings[1];
+    EXPECT_EQ(warnings[0].code, scene::WarningCode::ReflectorWithoutMesh);
+    EXPECT_EQ(warnings[0].node, "Meshless");
+    EXPECT_EQ(warnings[0].file, "");
+    EXPECT_EQ(warnings[0].message, "node 'Meshless': reflector skipped: it needs a mesh on the same node");
+    EXPECT_EQ(warnings[1].code, scene::WarningCode::ReflectorSkipped);
+    EXPECT_EQ(warnings[1].node, "Second");
+    EXPECT_EQ(warnings[1].message, "node 'Second': reflector skipped: the scene already has one ('First')");
 }
 
 TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {
-    std::vector<std::string> warnings;
+    std::vector<std::string> loadWarnings;
     scene::Scene scene;
-    ASSERT_TRUE(scene::openProject(scene, test::demoScenePath(), warnings).ok());
+    ASSERT_TRUE(scene::openProject(scene, test::demoScenePath(), loadWarnings).ok());
+    std::vector<scene::Warning> warnings;
     scene::MeshLibrary meshes;
     const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
     EXPECT_TRUE(warnings.empty());
@@ -298,7 +304,7 @@ TEST(Snapshot, ARelativePathSetByCodeIsTakenRelativeToTheProject) {
     scene.reset(data);
     scene.setProjectPath("/projects/demo/scene.speculum.json");
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
     EXPECT_EQ(frame.items.at(0).material.texture.path, "/projects/demo/textures/wood.png");
 }
@@ -312,7 +318,7 @@ TEST(Snapshot, MeshHandlesAreStableAcrossFrames) {
     scene::Scene scene;
     scene.reset(data);
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput one = scene::snapshot(scene, 0.0, meshes, warnings);
     const render::FrameInput two = scene::snapshot(scene, 1.0, meshes, warnings);
     EXPECT_EQ(one.items[0].mesh, two.items[0].mesh);
@@ -333,18 +339,50 @@ TEST(Snapshot, AMissingMeshFileIsAWarningNotACrash) {
     test::writeBytes(qpath(folder / "garbage.obj"), "this is not a model\n\x01\x02\x03");
     data.nodes = {missing, garbage, boxNode("Box", {})};
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
     ASSERT_EQ(frame.items.size(), 1u);
     EXPECT_EQ(frame.items[0].name, "Box");
-    ASSERT_GE(warnings.size(), 2u);
-    auto mentions = [&](const std::string& a, const std::string& b) {
-        return std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) {
-            return w.find(a) != std::string::npos && w.find(b) != std::string::npos;
+    const auto skipped = [&](const std::string& node, const std::filesystem::path& file) {
+        return std::count_if(warnings.begin(), warnings.end(), [&](const scene::Warning& w) {
+            return w.code == scene::WarningCode::MeshSkipped && w.node == node && w.file == file.string();
         });
     };
-    EXPECT_TRUE(mentions("Ghost", "ghost.obj"));
-    EXPECT_TRUE(mentions("Garbage", "garbage.obj"));
+    EXPECT_EQ(skipped("Ghost", folder / "ghost.obj"), 1)
+        << ::testing::PrintToString(scene::messages(warnings));
+    EXPECT_EQ(skipped("Garbage", folder / "garbage.obj"), 1)
+        << ::testing::PrintToString(scene::messages(warnings));
+}
+
+// The warning names its node and the model file by its absolute path (a relative one is the project's),
+// whether the node draws the file's parts or the file as one mesh (under a material of its own).
+TEST(Snapshot, AMissingModelFileIsAMeshSkippedWarningOnItsNodeAndFile) {
+    const auto folder = freshTestFolder();
+    scene::SceneData data;
+    scene::NodeTree statue;
+    statue.data.name = "Statue";
+    statue.data.mesh = scene::MeshComponent::fromFile("models/statue.glb");
+    scene::NodeTree plinth = statue;
+    plinth.data.name = "Plinth";
+    plinth.data.material = scene::MaterialComponent{};
+    data.nodes = {statue, plinth};
+    scene::Scene scene;
+    scene.reset(data);
+    scene.setProjectPath(qpath(folder / "scene.speculum.json"));
+    scene::MeshLibrary meshes;
+    std::vector<scene::Warning> warnings;
+    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
+    EXPECT_TRUE(frame.items.empty());
+    const std::string file = (folder / "models" / "statue.glb").string();
+    ASSERT_EQ(warnings.size(), 2u) << ::testing::PrintToString(scene::messages(warnings));
+    EXPECT_EQ(warnings[0].code, scene::WarningCode::MeshSkipped);
+    EXPECT_EQ(warnings[0].node, "Statue");
+    EXPECT_EQ(warnings[0].file, file);
+    EXPECT_EQ(warnings[1].code, scene::WarningCode::MeshSkipped);
+    EXPECT_EQ(warnings[1].node, "Plinth");
+    EXPECT_EQ(warnings[1].file, file);
+    // What `speculum render --keep-going` prints and the editor lists.
+    EXPECT_EQ(warnings[0].message, "node 'Statue': mesh skipped: '" + file + "': file not found");
 }
 
 TEST(Snapshot, MeshFilesAreImportedOnceAndAgainWhenTheyChange) {
@@ -352,7 +390,7 @@ TEST(Snapshot, MeshFilesAreImportedOnceAndAgainWhenTheyChange) {
     const QString path = qpath(folder / "tri.obj");
     test::writeBytes(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     auto first = meshes.file(path.toStdString(), warnings);
     ASSERT_TRUE(first.ok()) << first.error();
     EXPECT_EQ((*first)->triangleCount(), 1u);
@@ -393,9 +431,9 @@ TEST(Snapshot, ImportedPartMaterialReachesTheRenderer) {
     node.data.material = m;
     data.nodes.push_back(node);
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
-    ASSERT_EQ(frame.items.size(), 1u) << ::testing::PrintToString(warnings);
+    ASSERT_EQ(frame.items.size(), 1u) << ::testing::PrintToString(scene::messages(warnings));
     const render::Material& r = frame.items[0].material;
     ASSERT_TRUE(r.texture.image);
     EXPECT_GT(r.texture.image->width, 0);

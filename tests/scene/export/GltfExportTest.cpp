@@ -88,7 +88,7 @@ TEST(GltfExport, TheDemoSceneReadsBackWithItsNodesAndMeshes) {
         ASSERT_TRUE(teapot) << name;
         ASSERT_EQ(teapot->mNumMeshes, 1u);
         speculum::scene::MeshLibrary check;
-        std::vector<std::string> ignored;
+        std::vector<speculum::scene::Warning> ignored;
         const auto teapotMesh = check.get(*scene.topLevelNodes()[0]->data().mesh, ignored);
         ASSERT_TRUE(teapotMesh.ok());
         EXPECT_EQ(read->mMeshes[teapot->mMeshes[0]]->mNumFaces, (*teapotMesh)->triangleCount());
@@ -395,7 +395,7 @@ TEST(GltfExport, GlbIsSelfContainedWithCameraLightsAndOnlyUsedExtensions) {
     EXPECT_STREQ(texturePath.C_Str(), "*0");
 
     // The uvs come back as speculum had them (Assimp turns glTF's v back on import).
-    std::vector<std::string> ignored;
+    std::vector<speculum::scene::Warning> ignored;
     const auto planeMesh = meshes.get(*scene.topLevelNodes()[0]->data().mesh, ignored);
     ASSERT_TRUE(planeMesh.ok());
     const aiMesh* mesh = read->mMeshes[findNodeIn(read, "Floor")->mMeshes[0]];
@@ -408,7 +408,7 @@ TEST(GltfExport, GlbIsSelfContainedWithCameraLightsAndOnlyUsedExtensions) {
 
     // Lights by type, each shining where speculum's does.
     ASSERT_EQ(read->mNumLights, 3u);
-    std::vector<std::string> snapshotWarnings;
+    std::vector<speculum::scene::Warning> snapshotWarnings;
     const auto frame = speculum::scene::snapshot(scene, 0.0, meshes, snapshotWarnings);
     std::set<aiLightSourceType> types;
     for (unsigned i = 0; i < read->mNumLights; ++i) {
@@ -617,7 +617,7 @@ TEST(GltfExport, EmbeddedTexturesAndVertexColoursAreKept) {
     EXPECT_EQ(raw.find(dir.string()), std::string::npos) << "no path to the model";
 
     // Vertex colours: what speculum has, in the file and back through Assimp.
-    std::vector<std::string> ignored;
+    std::vector<speculum::scene::Warning> ignored;
     const auto triangle = meshes.get(*colours.data.mesh, ignored);
     ASSERT_TRUE(triangle.ok()) << triangle.error();
     ASSERT_EQ((*triangle)->colors.size(), 3u) << "the importer keeps PLY vertex colours";

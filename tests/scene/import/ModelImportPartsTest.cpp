@@ -308,7 +308,7 @@ TEST(ModelParts, GlbEmbeddedTextureIsDecodedOnceAndMatchesTheExternalFile) {
 
     // The library hands it out by name, and the part by index.
     scene::MeshLibrary library;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     const auto image = library.embeddedTexture(name, warnings);
     ASSERT_TRUE(image);
     EXPECT_EQ(image->width, embedded.width);
@@ -414,7 +414,7 @@ TEST(ModelParts, LibraryServesPartsAndNamesABadPart) {
     REQUIRE_TEST_MODELS();
     const fs::path file = writeQuadGltf(freshFolder());
     scene::MeshLibrary library;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     scene::MeshComponent component = scene::MeshComponent::fromFile(file.string());
     component.part = 1;
     auto part = library.get(component, warnings);
@@ -512,7 +512,7 @@ TEST(ModelParts, BinaryPlyGridKeepsItsTopology) {
     EXPECT_NEAR(model.bounds.max.z, 1.0f, 1e-6f);
     // The whole file drawn as one mesh is that part itself, not a copy.
     scene::MeshLibrary library;
-    std::vector<std::string> warnings;
+    std::vector<scene::Warning> warnings;
     auto whole = library.file(file.string(), warnings);
     ASSERT_TRUE(whole.ok());
     auto part = library.part(file.string(), 0, warnings);

@@ -468,7 +468,8 @@ TEST(ProjectFile, TheEditorViewLeavesTheSceneCameraAndWhatRenderDrawsAlone) {
     ASSERT_TRUE(viewedScene.editorView().has_value());
     EXPECT_EQ(viewedScene.camera(), plainScene.camera());
     scene::MeshLibrary meshes;
-    const render::Camera drawn = scene::snapshot(viewedScene, 0.0, meshes, warnings).camera;
+    std::vector<scene::Warning> snapshotWarnings;
+    const render::Camera drawn = scene::snapshot(viewedScene, 0.0, meshes, snapshotWarnings).camera;
     const render::Camera expected = plain->camera;
     EXPECT_EQ(drawn.position, expected.position);
     EXPECT_EQ(drawn.target, expected.target);
@@ -591,8 +592,8 @@ TEST(ProjectFile, BlurLoadsAsRoughnessAndGlossySettingsRoundTrip) {
     scene::Scene scene;
     scene.reset(*settings);
     scene::MeshLibrary meshes;
-    std::vector<std::string> warnings;
-    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, warnings);
+    std::vector<scene::Warning> snapshotWarnings;
+    const render::FrameInput frame = scene::snapshot(scene, 0.0, meshes, snapshotWarnings);
     EXPECT_EQ(frame.settings.glossyFilter, render::GlossyFilter::Mip);
     EXPECT_EQ(frame.settings.glossyTaps, 5);
     EXPECT_EQ(frame.settings.prefilterSamples, 9);
