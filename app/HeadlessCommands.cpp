@@ -60,26 +60,21 @@ std::string commandName(const CliOptions& options) {
 }
 
 // Skips that are the frame working as meant (nothing to do, reused, out of sight, the user's own depth
-// setting). Every other skip drops something the scene asks for and is a warning: a numeric failure, a
-// capacity limit, and whatever reason the planner adds later (unknown reasons warn).
-bool expectedSkip(const std::string& reason) {
-    static const char* const kExpected[] = {
-        "shadow pass not needed",
-        "shadow map reused",
-        "environment pass not needed",
-        "environment map reused",
-        "no reflection: outside",
-        "no reflection: the camera is behind the mirror",
-        "no reflection: the camera is on the mirror's plane",
-        "no reflection: covers less than one pixel",
-        "no reflection: the mirror depth limit",
-        "no reflection: mirrorDepth is 0",
-        "no reflection: fully occluded", // hidden behind something nearer, this frame or this tile
+// setting), and lights past kMaxLights, which lightDrops reports once. Every other skip drops something
+// the scene asks for and is a warning: a numeric failure, a capacity limit, and whatever code the planner
+// adds later (unknown codes warn).
+bool expectedSkip(render::PlanReason code) {
+    using render::PlanReason;
+    static const PlanReason kExpected[] = {
+        PlanReason::LightLimit,           PlanReason::ShadowsOff,       PlanReason::NoShadowCasters,
+        PlanReason::NoShadowReceivers,    PlanReason::ShadowMapReused,  PlanReason::EnvmapOutOfSight,
+        PlanReason::EnvmapReusedOnce,     PlanReason::EnvmapUnchanged,  PlanReason::MirrorOutsideView,
+        PlanReason::MirrorOutsideParent,  PlanReason::MirrorBehind,     PlanReason::MirrorEdgeOn,
+        PlanReason::MirrorBelowPixel,     PlanReason::MirrorDepthLimit, PlanReason::MirrorDepthZero,
+        PlanReason::MirrorOccluded, // hidden behind something nearer, this frame or this tile
+        PlanReason::MirrorOccludedInTile,
     };
-    for (const char* prefix : kExpected)
-        if (reason.rfind(prefix, 0) == 0)
-            return true;
-    return false;
+    return std::find(std::begin(kExpected), std::end(kExpected), code) != std::end(kExpected);
 }
 
 // What kind of node a plan's target names, for "mirror 'M': skipped: ...".
@@ -110,12 +105,11 @@ std::vector<std::string> lightDrops(const render::FrameInput& input) {
 // plan's and those found while running it.
 std::vector<std::string> frameDrops(const render::FrameInput& input, const render::FrameReport& report) {
     std::vector<std::string> drops = lightDrops(input);
-    const std::string lightLimit = "more than " + std::to_string(render::kMaxLights) + " lights";
     for (const render::SkippedEffect& s : report.skipped) {
-        if (expectedSkip(s.reason) || s.reason.rfind(lightLimit, 0) == 0)
+        if (expectedSkip(s.code))
             continue;
         drops.push_back((s.target.empty() ? std::string("frame") : targetLabel(input, s.target)) +
-                        ": skipped: " + base::printable(s.reason, 400));
+                        ": skipped: " + base::printable(s.reason(), 400));
     }
     return drops;
 }
@@ -223,8 +217,17 @@ base::Result<render::StillResult> renderExplainedFrame(HeadlessFrame& frame, con
     return render::renderStill(*frame.renderer, frame.input, settings);
 }
 
+QString jsonText(std::string_view name) {
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
+}
+
 QString kindText(render::PassKind kind) {
-    return QString::fromUtf8(render::toString(kind).data(), qsizetype(render::toString(kind).size()));
+    return jsonText(render::toString(kind));
+}
+
+// The reason's code as explain's JSON names it ("mirror-outside-view").
+QString codeText(render::PlanReason code) {
+    return jsonText(render::toString(code));
 }
 
 QJsonArray passesJson(const render::FrameReport& report) {
@@ -235,6 +238,7 @@ QJsonArray passesJson(const render::FrameReport& report) {
         o["kind"] = kindText(p.kind);
         o["target"] = QString::fromStdString(p.target);
         o["reason"] = QString::fromStdString(report.reason(run));
+        o["code"] = codeText(p.code);
         o["gpuMs"] = run.gpuMs;
         o["cpuMs"] = run.cpuMs;
         passes.append(o);
@@ -246,7 +250,8 @@ QJsonArray skippedJson(const std::vector<render::SkippedEffect>& skipped) {
     QJsonArray array;
     for (const render::SkippedEffect& s : skipped)
         array.append(QJsonObject{{"target", QString::fromStdString(s.target)},
-                                 {"reason", QString::fromStdString(s.reason)}});
+                                 {"reason", QString::fromStdString(s.reason())},
+                                 {"code", codeText(s.code)}});
     return array;
 }
 
@@ -263,13 +268,15 @@ QJsonObject envmapJson(const render::EnvmapPlan& map) {
         const render::MirrorView& view = map.views[static_cast<std::size_t>(p.view)];
         mapPasses.append(QJsonObject{{"kind", kindText(p.kind)},
                                      {"target", QString::fromStdString(p.target)},
-                                     {"reason", QString::fromStdString(p.reason)},
+                                     {"reason", QString::fromStdString(p.reason())},
+                                     {"code", codeText(p.code)},
                                      {"face", faceLabel(view.face)},
                                      {"depth", view.depth}});
     }
     for (const render::SkippedEffect& s : map.skipped)
         mapSkipped.append(QJsonObject{{"target", QString::fromStdString(s.target)},
-                                      {"reason", QString::fromStdString(s.reason)},
+                                      {"reason", QString::fromStdString(s.reason())},
+                                      {"code", codeText(s.code)},
                                       {"face", faceLabel(s.face)}});
     return QJsonObject{{"target", QString::fromStdString(map.target)},
                        {"faces", faces},
@@ -311,11 +318,11 @@ void printEnvmapPasses(const render::EnvmapPlan& map) {
     for (const render::PlannedPass& p : map.passes) {
         const std::string kind(render::toString(p.kind));
         std::printf("  %-11s %-14s %s\n", kind.c_str(), base::printable(p.target).c_str(),
-                    oneLine(p.reason).c_str());
+                    oneLine(p.reason()).c_str());
     }
     for (const render::SkippedEffect& s : map.skipped)
         std::printf("  %-11s %-14s %s\n", "skipped", base::printable(s.target).c_str(),
-                    oneLine(s.reason).c_str());
+                    oneLine(s.reason()).c_str());
 }
 
 void printExplanationText(const CliOptions& options, const HeadlessFrame& frame,
@@ -341,7 +348,7 @@ void printExplanationText(const CliOptions& options, const HeadlessFrame& frame,
         std::printf("  (nothing)\n");
     for (const render::SkippedEffect& s : report.skipped)
         std::printf("  %-14s %s\n", s.target.empty() ? "-" : base::printable(s.target).c_str(),
-                    oneLine(s.reason).c_str());
+                    oneLine(s.reason()).c_str());
     // What the frame could not do as the scene asks (a map larger than the GPU holds, a missing texture).
     if (!report.warnings.empty()) {
         std::printf("\nWarnings:\n");

@@ -156,10 +156,10 @@ std::string compositeReasonOf(const render::FrameReport& report) {
     std::string compositeReason;
     for (const render::PlannedPass& pass : report.plan.passes)
         if (pass.kind == render::PassKind::Composite)
-            compositeReason = pass.reason;
+            compositeReason = pass.reason();
     for (const render::SkippedEffect& skip : report.plan.skipped)
         if (report.plan.cameraBufferIsOutput && skip.target == "output")
-            compositeReason = skip.reason;
+            compositeReason = skip.reason();
     return compositeReason;
 }
 

@@ -63,7 +63,7 @@ void RenderPassesPanel::showReportNow(const render::FrameReport& report) {
     }
     layout += QStringLiteral("--\n");
     for (const auto& s : report.skipped) {
-        layout += QString::fromStdString(s.target) + QLatin1Char('/') + QString::fromStdString(s.reason) +
+        layout += QString::fromStdString(s.target) + QLatin1Char('/') + QString::fromStdString(s.reason()) +
                   QLatin1Char('\n');
     }
     if (layout == m_lastLayout && m_tree->topLevelItemCount() == 2) {
@@ -89,9 +89,10 @@ void RenderPassesPanel::showReportNow(const render::FrameReport& report) {
     }
     auto* skipped = new QTreeWidgetItem(m_tree, {tr("Skipped effects (%1)").arg(report.skipped.size())});
     for (const auto& s : report.skipped) {
-        auto* item = new QTreeWidgetItem(skipped, {tr("skipped"), QString::fromStdString(s.target), QString(),
-                                                   QString::fromStdString(s.reason)});
-        item->setToolTip(3, QString::fromStdString(s.reason));
+        const QString reason = QString::fromStdString(s.reason());
+        auto* item = new QTreeWidgetItem(
+            skipped, {tr("skipped"), QString::fromStdString(s.target), QString(), reason});
+        item->setToolTip(3, reason);
         item->setForeground(0, QColor(150, 90, 20));
     }
     m_tree->expandAll();

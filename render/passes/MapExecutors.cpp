@@ -19,8 +19,7 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
     if (!frame.plan.envmap) // the planner plans every envmap pass's map
         return {false, {}};
     if (!frame.envmapAllocated) {
-        frame.skipped.push_back(
-            {frame.plan.envmap->target, "no environment map: none could be allocated (see the warnings)"});
+        frame.skipped.push_back({frame.plan.envmap->target, PlanReason::EnvmapNotAllocated});
         return {false, {}};
     }
     bindWrites(pass.writes, frame);
@@ -53,7 +52,7 @@ PassResult runPrefilter(const PlannedPass& pass, FrameExecution& frame) {
     const Reflector* reflector = frame.input.reflector ? &*frame.input.reflector : nullptr;
     FrameResources& r = frame.resources;
     if (!reflector || !r.reflector.hasMap(*reflector)) { // the map could not be allocated or drawn
-        frame.skipped.push_back({pass.target, "no GGX pre-filtered chain: the reflector has no map"});
+        frame.skipped.push_back({pass.target, PlanReason::PrefilterNoMap});
         return {false, {}};
     }
     bindWrites(pass.writes, frame);

@@ -54,9 +54,8 @@ PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame, const V
         result.outcome = "visible last frame, so not waiting for its occlusion test";
     }
     if (!marked)
-        frame.hidden[static_cast<std::size_t>(pass.view)] =
-            frame.tile ? "fully occluded in this tile: no pixel of it passed the depth test"
-                       : "fully occluded: no pixel of it passed the depth test";
+        frame.hidden[static_cast<std::size_t>(pass.view)] = SkippedEffect{
+            pass.target, frame.tile ? PlanReason::MirrorOccludedInTile : PlanReason::MirrorOccluded};
     return result;
 }
 
@@ -73,10 +72,11 @@ PassResult runMirror(const PlannedPass& pass, FrameExecution& frame, const ViewS
             !made) {
             // No texture to draw the reflection into: the mirror's passes (and those of views inside it)
             // are skipped and reported, with the reason.
-            const std::string why = "its reflection texture: " + made.error();
-            frame.warnings.push_back("mirror " + base::quoted(pass.target) + ": no reflection, " + why);
-            frame.hidden[static_cast<std::size_t>(pass.view)] = why;
-            frame.skipped.push_back({pass.target, "no reflection: " + why});
+            frame.warnings.push_back("mirror " + base::quoted(pass.target) +
+                                     ": no reflection, its reflection texture: " + made.error());
+            const SkippedEffect skip{pass.target, PlanReason::MirrorNoTexture, {.error = made.error()}};
+            frame.hidden[static_cast<std::size_t>(pass.view)] = skip;
+            frame.skipped.push_back(skip);
             return {false, {}};
         }
     }

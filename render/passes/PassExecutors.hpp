@@ -16,6 +16,7 @@
 #include "render/plan/RenderOptions.hpp"
 
 #include <glm/mat4x4.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,9 +65,9 @@ struct FrameExecution {
     const RenderTarget* output = nullptr;
     const RenderTarget& outputTarget() const { return output ? *output : target; }
 
-    // Filled while running: why a view found no reflection (fully occluded, no texture), by view; a
-    // non-empty reason stops the passes of the view and of the views inside it.
-    std::vector<std::string> hidden;
+    // Filled while running: why a view found no reflection (fully occluded, no texture), by view, as the
+    // skip it reports; a view with one runs no more passes, nor do the views inside it.
+    std::vector<std::optional<SkippedEffect>> hidden;
     std::vector<SkippedEffect> skipped; // effects execution found it could not draw, in pass order
 };
 

@@ -3,6 +3,7 @@
 #include "render/envmap/CaptureMath.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/ShadowFrustum.hpp"
+#include "render/plan/PlanReason.hpp"
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>
@@ -53,22 +54,28 @@ struct PassWrites {
 // what ran, what execution found and what it cost are the FrameReport's.
 struct PlannedPass {
     PassKind kind = PassKind::Main;
-    std::string target; // node name, or empty for the whole frame
-    std::string reason;
-    int lightIndex = -1; // shadow passes: index into FrameInput::lights
-    int view = -1;       // mirror passes: index into FramePlan::views
+    std::string target;      // node name, or empty for the whole frame
+    PlanReason code{};       // why it runs: every planned pass sets it
+    ReasonDetails details{}; // what the sentence of `code` names
+    int lightIndex = -1;     // shadow passes: index into FrameInput::lights
+    int view = -1;           // mirror passes: index into FramePlan::views
     // Shadow passes: the signature of what the map holds (shadowSignature), which the renderer records
     // once the map is drawn, so the next frame's planner can reuse it. Prefilter passes: the chain's
     // (prefilterKey), recorded the same way.
     std::uint64_t signature = 0;
     PassWrites writes;
+
+    std::string reason() const { return formatReason(code, details); }
 };
 
 // An effect the scene has that got no pass this frame, and why.
 struct SkippedEffect {
     std::string target;
-    std::string reason;
+    PlanReason code{}; // why it got none: every skip sets it
+    ReasonDetails details{};
     int face = -1; // skips inside the environment map: index into EnvmapPlan::faces (-1: every face)
+
+    std::string reason() const { return formatReason(code, details); }
 };
 
 // The scene seen in one mirror, possibly through other mirrors: everything the renderer needs to draw

@@ -56,7 +56,7 @@ struct FrameReport {
     // The plan's reason for the pass, then what running it found: "…; waited for its occlusion test".
     std::string reason(const PassRun& run) const {
         const PlannedPass& pass = planned(run);
-        return run.outcome.empty() ? pass.reason : pass.reason + "; " + run.outcome;
+        return run.outcome.empty() ? pass.reason() : pass.reason() + "; " + run.outcome;
     }
     // How many passes of this kind ran (for `target` only, when given).
     std::size_t countRan(PassKind kind, std::string_view target = {}) const {

@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <optional>
@@ -27,29 +26,6 @@ std::string label(const FrameInput& input, int mirror) {
     return name;
 }
 
-std::string pixels(double area) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.0f", area);
-    return text;
-}
-
-// Which approximation of a rough mirror's reflection its surface pass draws, for its reason.
-std::string glossyApproximation(const Settings& settings, const Mirror& mirror, bool ownTarget) {
-    const double roughness = std::clamp(mirror.roughness, 0.0, 1.0);
-    if (roughness <= 0.0)
-        return {};
-    char value[16];
-    std::snprintf(value, sizeof value, "%.2f", roughness);
-    const std::string rough = "; rough (roughness " + std::string(value) + "): ";
-    if (!ownTarget)
-        return rough + "drawn sharp, as every mirror inside the environment map";
-    if (settings.glossyFilter == GlossyFilter::Mip)
-        return rough + "one mip level of its reflection, chosen by the roughness alone (the cheap filter)";
-    return rough + "its reflection sampled over the GGX lobe's footprint, " +
-           std::to_string(glossyTapCount(settings)) +
-           " taps a pixel, wider the farther what it reflects lies beyond the mirror";
-}
-
 // Where mirror views are planned: the camera's image, or one face or component of the environment map.
 struct ViewSpace {
     glm::dvec3 eye{0.0};      // the camera or the capture point: the origin of relative coordinates
@@ -61,9 +37,7 @@ struct ViewSpace {
     int face = -1;                                // index into EnvmapPlan::faces; -1: the camera
     const envmap::WarpParameters* warp = nullptr; // a direct-fill component: no projection, no pixels
     bool mirrorTextures = true;                   // texture-technique mirrors get a texture (the camera)
-    std::string viewer;                           // "the camera", "the capture point"
-    std::string in;                               // "" or ", in Ball's map, +X face": for reasons
-    std::string unit;                             // "px" or "texels"
+    std::string mapFace;                          // "Ball's map, +X face"; empty: the camera's image
 };
 
 struct Planner {
@@ -75,22 +49,19 @@ struct Planner {
     glm::dmat4 toRelative;
     int spaceViews = 0; // views planned in this space
 
-    // "seen directly" or "seen in Left → Right (depth 3)"
-    std::string where(int parentView) const {
-        if (parentView < 0)
-            return "seen directly" + space.in;
-        std::string chain;
-        for (int v = parentView; v >= 0; v = views[static_cast<std::size_t>(v)].parent) {
-            const std::string& name =
-                input.mirrors[static_cast<std::size_t>(views[static_cast<std::size_t>(v)].mirror)].name;
-            chain = chain.empty() ? name : name + " → " + chain;
-        }
-        return "seen in " + chain + " (depth " +
-               std::to_string(views[static_cast<std::size_t>(parentView)].depth + 1) + ")" + space.in;
+    // `details` with where a mirror seen from `parentView` (-1: the space's own view) is seen, for its
+    // reasons: the mirrors it is seen in, outermost first, and the map's face.
+    ReasonDetails seenFrom(int parentView, ReasonDetails details = {}) const {
+        for (int v = parentView; v >= 0; v = views[static_cast<std::size_t>(v)].parent)
+            details.seenIn.insert(details.seenIn.begin(),
+                                  mirrorAt(views[static_cast<std::size_t>(v)].mirror).name);
+        details.mapFace = space.mapFace;
+        return details;
     }
 
-    void skip(int parentView, int mirror, const std::string& reason) {
-        skipped.push_back({label(input, mirror), reason + " (" + where(parentView) + ")", space.face});
+    // Skips the mirror where it is seen from `parentView`; `details`: what the code's sentence names.
+    void skip(int parentView, int mirror, PlanReason code, ReasonDetails details = {}) {
+        skipped.push_back({label(input, mirror), code, seenFrom(parentView, std::move(details)), space.face});
     }
 
     // False when a paraboloid component cannot show the polygon: every corner lies in the cone behind it
@@ -150,25 +121,23 @@ struct Planner {
         if (!(mirror.size.x > 0.0 && mirror.size.y > 0.0 && std::isfinite(mirror.size.x) &&
               std::isfinite(mirror.size.y))) {
             if (!parent.view)
-                skip(parent.index, m, "no reflection: the mirror's size is not a positive finite number");
+                skip(parent.index, m, PlanReason::MirrorSizeInvalid);
             return std::nullopt;
         }
         const auto plane = math::mirrorPlane(mirror.world);
         if (!plane) {
             if (!parent.view)
-                skip(parent.index, m, "no reflection: " + plane.error());
+                skip(parent.index, m, PlanReason::MirrorNoPlane, {.error = plane.error()});
             return std::nullopt;
         }
         const double side = plane->distance(parent.eye);
         const double scale = std::max({1.0, glm::length(parent.eye), std::abs(plane->d)});
         if (std::abs(side) <= 1e-12 * scale) {
-            skip(parent.index, m,
-                 "no reflection: " + space.viewer + " is on the mirror's plane, which it sees edge-on");
+            skip(parent.index, m, PlanReason::MirrorEdgeOn);
             return std::nullopt;
         }
         if (side < 0.0) {
-            skip(parent.index, m,
-                 "no reflection: " + space.viewer + " is behind the mirror (it sees its back)");
+            skip(parent.index, m, PlanReason::MirrorBehind);
             return std::nullopt;
         }
         return *plane;
@@ -183,8 +152,8 @@ struct Planner {
         glm::dvec4 keepRelative = parent.keepPlane;
         if (parent.view) // the keep plane in relative coordinates
             keepRelative = math::transformPlane(parent.keepPlane, toRelative);
-        const std::string outside = parent.view ? "no reflection: outside the parent mirror's reflected view"
-                                                : "no reflection: outside the view";
+        const PlanReason outside =
+            parent.view ? PlanReason::MirrorOutsideParent : PlanReason::MirrorOutsideView;
         math::ScreenCoverage coverage;
         if (space.warp) {
             // No projection to measure pixels with: the mirror is kept if any of it lies beyond the
@@ -207,9 +176,7 @@ struct Planner {
             return std::nullopt;
         }
         if (coverage.pixelArea < 1.0) {
-            skip(parent.index, m,
-                 "no reflection: covers less than one " + std::string(space.face < 0 ? "pixel" : "texel") +
-                     " (" + pixels(coverage.pixelArea * 100) + "% of one)");
+            skip(parent.index, m, PlanReason::MirrorBelowPixel, {.area = coverage.pixelArea});
             return std::nullopt;
         }
         return coverage;
@@ -218,16 +185,11 @@ struct Planner {
     // False (the mirror skipped with the reason) when the space has no room for another mirror view.
     bool withinLimits(const ParentView& parent, int m) {
         if (parent.depth > space.maxDepth) {
-            skip(parent.index, m,
-                 "no reflection: the mirror depth limit (" + std::to_string(space.maxDepth) +
-                     ") is reached; drawn with its own material");
+            skip(parent.index, m, PlanReason::MirrorDepthLimit, {.limit = space.maxDepth});
             return false;
         }
         if (spaceViews >= kMaxMirrorViews) {
-            skip(parent.index, m,
-                 "no reflection: " + std::string(space.face < 0 ? "the frame" : "this face") +
-                     " already has " + std::to_string(kMaxMirrorViews) +
-                     " mirror views; drawn with its own material");
+            skip(parent.index, m, PlanReason::MirrorViewLimit, {.limit = kMaxMirrorViews});
             return false;
         }
         return true;
@@ -240,7 +202,7 @@ struct Planner {
         const Mirror& mirror = mirrorAt(m);
         auto reflection = math::reflectionMatrix(plane);
         if (!reflection) {
-            skip(parent.index, m, "no reflection: " + reflection.error());
+            skip(parent.index, m, PlanReason::MirrorNoReflectionMatrix, {.error = reflection.error()});
             return std::nullopt;
         }
         MirrorView view;
@@ -259,7 +221,7 @@ struct Planner {
             auto oblique = math::obliqueProjection(space.projection(parent.depth),
                                                    math::transformPlane(drawn, space.rotation * toRelative));
             if (!oblique) {
-                skip(parent.index, m, "no reflection: " + oblique.error());
+                skip(parent.index, m, PlanReason::MirrorNoObliqueProjection, {.error = oblique.error()});
                 return std::nullopt;
             }
             view.projection = *oblique;
@@ -279,52 +241,48 @@ struct Planner {
         view.parentStencilLevel = parentLevel;
         view.textureSlot = view.ownTarget ? parentSlot + 1 : parentSlot;
         if (!view.ownTarget && view.stencilLevel > kStencilLevels) {
-            skip(parent.index, m, "no reflection: the stencil buffer cannot nest deeper");
+            skip(parent.index, m, PlanReason::MirrorStencilTooDeep);
             return std::nullopt;
         }
         return view;
+    }
+
+    // A pass of the view `index`, and why it runs.
+    void addPass(PassKind kind, const MirrorView& view, int index, PlanReason code,
+                 const ReasonDetails& details) {
+        PlannedPass pass;
+        pass.kind = kind;
+        pass.target = label(input, view.mirror);
+        pass.code = code;
+        pass.details = details;
+        pass.view = index;
+        passes.push_back(std::move(pass));
     }
 
     // The passes that draw a view's reflection before the views seen in it: its mask, then the scene
     // reflected in it.
     void planReflectionPasses(const MirrorView& view, int index) {
         const Mirror& mirror = mirrorAt(view.mirror);
-        const std::string name = label(input, view.mirror);
-        const std::string context = where(view.parent);
-        const std::string area =
-            space.warp ? std::string() : ", " + pixels(view.pixelArea) + " " + space.unit;
-        if (!view.ownTarget)
-            passes.push_back({PassKind::MirrorMask, name,
-                              "marks the mirror's visible " +
-                                  std::string(space.face < 0 ? "pixels" : "texels") +
-                                  " in the stencil buffer (" + context + area + ")",
-                              -1, index});
-        else
-            passes.push_back(
-                {PassKind::MirrorMask, name,
-                 "counts the mirror's visible pixels, so a hidden mirror costs nothing (" + context + ")", -1,
-                 index});
-        passes.push_back(
-            {PassKind::Mirror, name,
-             std::string("draws the scene reflected in the mirror ") +
-                 (view.ownTarget ? "into its reflection texture" : "inside its stencil mask") +
-                 (view.ownTarget && mirror.technique == MirrorTechnique::Stencil
-                      ? " (rough: the stencil technique leaves no image of the reflection to filter)"
-                      : "") +
-                 (space.warp ? " with a clip plane on the mirror ("
-                             : " with an oblique near plane on the mirror (") +
-                 context + area + ")",
-             -1, index});
+        ReasonDetails details = seenFrom(view.parent);
+        if (!space.warp)
+            details.area = view.pixelArea;
+        addPass(PassKind::MirrorMask, view, index,
+                view.ownTarget ? PlanReason::MirrorMaskCount : PlanReason::MirrorMaskStencil, details);
+        details.roughStencil = view.ownTarget && mirror.technique == MirrorTechnique::Stencil;
+        addPass(PassKind::Mirror, view, index,
+                view.ownTarget ? PlanReason::MirrorIntoTexture : PlanReason::MirrorInStencil, details);
     }
 
     // The pass that finishes a view, after the views seen in it: the mirror's own surface over it.
     void planSurfacePass(const MirrorView& view, int index) {
         const Mirror& mirror = mirrorAt(view.mirror);
-        passes.push_back({PassKind::MirrorSurface, label(input, view.mirror),
-                          std::string("blends the mirror's own surface over the reflection (reflectivity ") +
-                              pixels(mirror.reflectivity * 100) + "%" + space.in + ")" +
-                              glossyApproximation(input.settings, mirror, view.ownTarget),
-                          -1, index});
+        ReasonDetails details;
+        details.mapFace = space.mapFace;
+        details.reflectivity = mirror.reflectivity;
+        details.roughness = std::clamp(mirror.roughness, 0.0, 1.0);
+        if (input.settings.glossyFilter == GlossyFilter::Footprint)
+            details.glossyTaps = glossyTapCount(input.settings);
+        addPass(PassKind::MirrorSurface, view, index, PlanReason::MirrorSurface, details);
     }
 
     // Plans every mirror seen from `parentView` (-1: the space's own view) and recurses. Each test that
@@ -366,12 +324,10 @@ void planMirrors(const FrameInput& input, const PlanViewport& viewport, FramePla
     space.width = viewport.width;
     space.height = viewport.height;
     space.maxDepth = std::clamp(input.settings.mirrorDepth, 0, kStencilLevels);
-    space.viewer = "the camera";
-    space.unit = "px";
     Planner planner{input, space, plan.views, plan.passes, plan.skipped, math::cameraRelative(input.camera)};
     if (space.maxDepth == 0) {
         for (int m = 0; m < static_cast<int>(input.mirrors.size()); ++m)
-            planner.skip(-1, m, "no reflection: mirrorDepth is 0; drawn with its own material");
+            planner.skip(-1, m, PlanReason::MirrorDepthZero);
         return;
     }
     planner.planChildren(-1);
@@ -385,9 +341,7 @@ void planEnvmapMirrors(const FrameInput& input, EnvmapPlan& map) {
     const int maxDepth = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
     if (maxDepth == 0) {
         for (int m = 0; m < static_cast<int>(input.mirrors.size()); ++m)
-            map.skipped.push_back({label(input, m), "no reflection in " + name +
-                                                        "'s map: the reflector's mirrorDepth is 0; drawn "
-                                                        "with its own material (every face)"});
+            map.skipped.push_back({label(input, m), PlanReason::MapMirrorDepthZero, {.node = name}});
         return;
     }
     Camera capturePoint; // the map's views are drawn relative to the capture point
@@ -409,9 +363,7 @@ void planEnvmapMirrors(const FrameInput& input, EnvmapPlan& map) {
         space.face = f;
         space.warp = face.warped ? &face.warp : nullptr;
         space.mirrorTextures = false; // the map nests every mirror with the stencil technique
-        space.viewer = "the capture point";
-        space.in = ", in " + name + "'s map, " + face.label;
-        space.unit = "texels";
+        space.mapFace = name + "'s map, " + face.label;
         Planner planner{input, space, map.views, map.passes, map.skipped, toRelative};
         planner.planChildren(-1);
     }

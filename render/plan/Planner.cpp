@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdio>
 #include <cstring>
 #include <functional>
+#include <optional>
 
 namespace speculum::render {
 
@@ -58,33 +58,36 @@ const ShadowPlan* FramePlan::shadowOf(int lightIndex) const {
 
 namespace {
 
-std::string plural(std::size_t n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
-}
+// A stencil mirror whose blend keeps the camera's colour buffer in half float: the composite's reason.
+struct BlendingMirror {
+    PlanReason code = PlanReason::CompositeStencilBlend;
+    std::string name;
+};
 
-// Why the camera's colour buffer must keep radiance above 1 (empty: it need not). A stencil mirror drawn
+// Why the camera's colour buffer must keep radiance above 1 (none: it need not). A stencil mirror drawn
 // there blends its surface onto the reflection it drew (reflection × weight + surface): a reflected
 // highlight brighter than 1 must not be clamped before it is weighted. A perfect, untinted mirror's blend
 // multiplies by one and changes nothing.
-std::string blendOntoRadiance(const FrameInput& input, const std::vector<MirrorView>& views) {
+std::optional<BlendingMirror> blendOntoRadiance(const FrameInput& input,
+                                                const std::vector<MirrorView>& views) {
     for (const MirrorView& view : views) {
         if (view.ownTarget || view.textureSlot >= 0)
             continue;
         const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
         if (mirror.reflectivity >= 1.0 && mirror.tint == glm::dvec3(1.0))
             continue;
-        return "stencil mirror '" + mirror.name + "' blends onto the reflection it drew";
+        return BlendingMirror{PlanReason::CompositeStencilBlend, mirror.name};
     }
-    return {};
+    return std::nullopt;
 }
 
 // Gives every view drawn into the camera's buffer the weight its scene is kept with (the stencil mirrors'
 // reflectivity × tint, multiplied down the nesting), so that the 8-bit buffer can hold its stencil
-// mirrors. Returns why it cannot, leaving every weight 1; empty when the weights are set. It cannot where
+// mirrors. Returns why it cannot, leaving every weight 1; none when the weights are set. It cannot where
 // a Fresnel term makes a weight vary over the mirror, or where a stencil mirror that adds its surface is
 // seen in another that does: each surface added rounds the pixel to 8 bits once more, and the image
 // would no longer be within one step of the half-float one.
-std::string preWeightStencilMirrors(const FrameInput& input, FramePlan& plan) {
+std::optional<BlendingMirror> preWeightStencilMirrors(const FrameInput& input, FramePlan& plan) {
     std::vector<int> surfacesAdded(plan.views.size(), 0); // stencil surfaces added, down to each view
     for (std::size_t v = 0; v < plan.views.size(); ++v) {
         const MirrorView& view = plan.views[v];
@@ -93,13 +96,11 @@ std::string preWeightStencilMirrors(const FrameInput& input, FramePlan& plan) {
         const Mirror& mirror = input.mirrors[static_cast<std::size_t>(view.mirror)];
         const bool addsSurface = !(mirror.reflectivity >= 1.0);
         if (mirror.fresnel && addsSurface)
-            return "stencil mirror '" + mirror.name +
-                   "' blends onto the reflection it drew, with a Fresnel weight that varies over it";
+            return BlendingMirror{PlanReason::CompositeFresnelBlend, mirror.name};
         const int above = view.parent < 0 ? 0 : surfacesAdded[static_cast<std::size_t>(view.parent)];
         surfacesAdded[v] = above + (addsSurface ? 1 : 0);
         if (surfacesAdded[v] > 1)
-            return "stencil mirror '" + mirror.name +
-                   "' blends onto the reflection it drew inside another stencil mirror's reflection";
+            return BlendingMirror{PlanReason::CompositeNestedBlend, mirror.name};
     }
     // Parents come before their children in plan.views.
     for (MirrorView& view : plan.views) {
@@ -110,7 +111,7 @@ std::string preWeightStencilMirrors(const FrameInput& input, FramePlan& plan) {
             view.parent < 0 ? glm::dvec3(1.0) : plan.views[static_cast<std::size_t>(view.parent)].weight;
         view.weight = parent * std::clamp(mirror.reflectivity, 0.0, 1.0) * mirror.tint;
     }
-    return {};
+    return std::nullopt;
 }
 
 // Big meshes in reflected views: which items the mirror and environment passes draw at their simplified
@@ -122,38 +123,25 @@ void planReflectedDetail(const FrameInput& input, FramePlan& plan) {
     });
     if (!reflected)
         return;
-    std::string simplified;
-    std::string whole;
-    std::size_t simplifiedCount = 0;
+    std::vector<ReflectedMesh> bigMeshes;
     std::vector<bool> coarse(input.items.size(), false);
     for (std::size_t i = 0; i < input.items.size(); ++i) {
         const DrawItem& item = input.items[i];
         if (!item.mesh || item.mesh->coarse.indices.empty())
             continue;
-        const std::string full = std::to_string(item.mesh->triangleCount());
-        if (!input.settings.simplifyReflections) {
-            whole += (whole.empty() ? "'" : ", '") + item.name + "' (" + full + " triangles)";
-            continue;
+        ReflectedMesh big{item.name, item.mesh->triangleCount()};
+        if (input.settings.simplifyReflections) {
+            coarse[i] = true;
+            big.simplifiedTriangles = item.mesh->coarse.triangleCount();
+            big.simplificationError = double(item.mesh->coarse.error);
         }
-        coarse[i] = true;
-        ++simplifiedCount;
-        char error[32];
-        std::snprintf(error, sizeof error, "%.2g%%", double(item.mesh->coarse.error) * 100.0);
-        simplified += (simplified.empty() ? "'" : ", '") + item.name + "' " + full + " → " +
-                      std::to_string(item.mesh->coarse.triangleCount()) + " triangles, within " + error +
-                      " of its size";
+        bigMeshes.push_back(std::move(big));
     }
-    std::string note;
-    if (!simplified.empty()) {
-        note = "; draws " + std::string(simplifiedCount == 1 ? "a big mesh" : "big meshes") +
-               " simplified (" + simplified + ")";
+    if (std::find(coarse.begin(), coarse.end(), true) != coarse.end())
         plan.coarseItems = std::move(coarse);
-    } else if (!whole.empty()) {
-        note = "; draws big meshes whole, settings.simplifyReflections is off: " + whole;
-    }
     for (PlannedPass& pass : plan.passes)
         if (pass.kind == PassKind::Mirror || pass.kind == PassKind::Envmap)
-            pass.reason += note;
+            pass.details.bigMeshes = bigMeshes;
 }
 
 std::string lightLabel(const Light& light, int index) {
@@ -225,16 +213,15 @@ std::size_t countShadowCasters(const FrameInput& input) {
     return casters;
 }
 
-// Why a light's shadow pass runs: its map, its casters, and whether a map was drawn for it before.
-std::string shadowPassReason(const Light& light, std::size_t casters, const math::ShadowFrustum& frustum,
-                             bool firstMap) {
-    std::string reason = "light casts shadows (" + std::to_string(light.shadows->mapSize) + "² map, PCF " +
-                         std::to_string(light.shadows->pcf) + "×" + std::to_string(light.shadows->pcf) +
-                         ") from " + plural(casters, "caster", "casters");
+// What a light's shadow pass says it draws: its map, its casters, and whether a map was drawn for it before.
+void explainShadowPass(const Light& light, std::size_t casters, const math::ShadowFrustum& frustum,
+                       bool firstMap, PlannedPass& pass) {
+    pass.code = firstMap ? PlanReason::ShadowFirstMap : PlanReason::ShadowChanged;
+    pass.details.mapSize = light.shadows->mapSize;
+    pass.details.pcf = light.shadows->pcf;
+    pass.details.casters = casters;
     if (frustum.cube)
-        reason += "; " + std::to_string(std::popcount(frustum.faceMask)) + " of 6 cube faces hold casters";
-    reason += firstMap ? "; no map yet" : "; light or casters changed";
-    return reason;
+        pass.details.cubeFacesWithCasters = std::popcount(frustum.faceMask);
 }
 
 // The shadow maps of the lights that cast shadows (at most kMaxShadowedLights), each redrawn only when its
@@ -247,22 +234,19 @@ void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& 
         const Light& light = input.lights[static_cast<std::size_t>(i)];
         const std::string name = lightLabel(light, i);
         if (i >= kMaxLights) {
-            plan.skipped.push_back(
-                {name, "more than " + std::to_string(kMaxLights) + " lights: this light is ignored"});
+            plan.skipped.push_back({name, PlanReason::LightLimit, {.limit = kMaxLights}});
             continue;
         }
         if (!light.shadows.has_value()) {
-            plan.skipped.push_back({name, "shadow pass not needed: shadows are off for this light"});
+            plan.skipped.push_back({name, PlanReason::ShadowsOff});
             continue;
         }
         if (casters == 0) {
-            plan.skipped.push_back({name, "shadow pass not needed: nothing in the scene casts a shadow"});
+            plan.skipped.push_back({name, PlanReason::NoShadowCasters});
             continue;
         }
         if (shadowSlots >= kMaxShadowedLights) {
-            plan.skipped.push_back({name, "shadow pass skipped: at most " +
-                                              std::to_string(kMaxShadowedLights) +
-                                              " lights cast shadows; this one lights without them"});
+            plan.skipped.push_back({name, PlanReason::ShadowedLightLimit, {.limit = kMaxShadowedLights}});
             continue;
         }
         // The one frustum of this light's map this frame, at the size the map is drawn at: the signature,
@@ -270,8 +254,7 @@ void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& 
         const int mapSize = std::max(light.shadows->mapSize, kMinShadowMapSize);
         const auto frustum = math::shadowFrustum(input, light, mapSize);
         if (!frustum) {
-            plan.skipped.push_back(
-                {name, "shadow pass not needed: nothing in the scene can receive a shadow"});
+            plan.skipped.push_back({name, PlanReason::NoShadowReceivers});
             continue;
         }
         ++shadowSlots;
@@ -281,14 +264,13 @@ void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& 
         const bool reused = previous != state.shadowSignatures.end() && previous->second == signature;
         plan.shadows.push_back({i, mapSize, light.shadows->pcf, *frustum, signature, !reused});
         if (reused) {
-            plan.skipped.push_back(
-                {name, "shadow map reused: light and casters unchanged since the last frame"});
+            plan.skipped.push_back({name, PlanReason::ShadowMapReused});
             continue;
         }
         PlannedPass pass;
         pass.kind = PassKind::Shadow;
         pass.target = name;
-        pass.reason = shadowPassReason(light, casters, *frustum, previous == state.shadowSignatures.end());
+        explainShadowPass(light, casters, *frustum, previous == state.shadowSignatures.end(), pass);
         pass.lightIndex = i;
         pass.signature = signature;
         plan.passes.push_back(std::move(pass));
@@ -298,11 +280,9 @@ void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& 
 PlannedPass mainPass(const FrameInput& input) {
     PlannedPass main;
     main.kind = PassKind::Main;
-    main.reason =
-        "draws " +
-        plural(input.items.size() + input.mirrors.size() + (input.reflector ? 1 : 0), "object", "objects") +
-        " lit by " + plural(std::min<std::size_t>(input.lights.size(), kMaxLights), "light", "lights") +
-        " into the camera's colour buffer";
+    main.code = PlanReason::MainHalfFloat; // until planCameraBuffer chooses the buffer
+    main.details.objects = input.items.size() + input.mirrors.size() + (input.reflector ? 1 : 0);
+    main.details.lights = std::min<std::size_t>(input.lights.size(), kMaxLights);
     return main;
 }
 
@@ -311,36 +291,31 @@ PlannedPass mainPass(const FrameInput& input) {
 // composite pass that brings it to the output unless it is the output's own buffer. Needs the mirror
 // views and the main pass planned.
 void planCameraBuffer(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {
-    std::string blend = blendOntoRadiance(input, plan.views);
-    if (viewport.eightBitOutput && !blend.empty()) {
+    std::optional<BlendingMirror> blend = blendOntoRadiance(input, plan.views);
+    if (viewport.eightBitOutput && blend) {
         blend = preWeightStencilMirrors(input, plan);
-        plan.preWeighted = blend.empty();
+        plan.preWeighted = !blend;
     }
-    plan.cameraBuffer =
-        viewport.eightBitOutput && blend.empty() ? CameraBuffer::Srgb8 : CameraBuffer::HalfFloat;
+    plan.cameraBuffer = viewport.eightBitOutput && !blend ? CameraBuffer::Srgb8 : CameraBuffer::HalfFloat;
     PlannedPass& mainPass = *std::find_if(plan.passes.begin(), plan.passes.end(),
                                           [](const PlannedPass& p) { return p.kind == PassKind::Main; });
-    if (plan.preWeighted)
-        mainPass.reason +=
-            "; stencil mirrors draw their reflections weighted and add their surfaces over them";
+    mainPass.details.preWeighted = plan.preWeighted;
     PlannedPass composite;
     composite.kind = PassKind::Composite;
     if (plan.cameraBuffer == CameraBuffer::Srgb8 && viewport.outputTakesCameraBuffer) {
         plan.cameraBufferIsOutput = true;
-        mainPass.reason += " (8-bit sRGB: the output's own buffer, encoded as it is written)";
-        plan.skipped.push_back({"output",
-                                "composite pass not needed: the frame is drawn straight into the "
-                                "output, an 8-bit sRGB buffer, and no blend needs radiance above 1"});
+        mainPass.code = PlanReason::MainIntoOutput;
+        plan.skipped.push_back({"output", PlanReason::CompositeNotNeeded});
     } else if (plan.cameraBuffer == CameraBuffer::Srgb8) {
-        mainPass.reason += " (8-bit sRGB, encoded as it is written)";
-        composite.reason =
-            "copies the sRGB colour buffer to the output: no blend in it needs radiance above 1";
+        mainPass.code = PlanReason::MainSrgb;
+        composite.code = PlanReason::CompositeCopiesSrgb;
+    } else if (viewport.eightBitOutput) { // a blend keeps the buffer in half float
+        mainPass.code = PlanReason::MainHalfFloat;
+        composite.code = blend->code;
+        composite.details.node = blend->name;
     } else {
-        mainPass.reason += " (half float)";
-        composite.reason =
-            viewport.eightBitOutput
-                ? "resolves the half-float colour buffer into the 8-bit output with sRGB encoding: " + blend
-                : "resolves the half-float colour buffer into the float output (linear)";
+        mainPass.code = PlanReason::MainHalfFloat;
+        composite.code = PlanReason::CompositeToFloat;
     }
     if (!plan.cameraBufferIsOutput)
         plan.passes.push_back(std::move(composite));

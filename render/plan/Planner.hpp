@@ -83,9 +83,9 @@ std::uint64_t prefilterKey(std::uint64_t envmapSignature, std::uint64_t envmapSe
 
 // Whether the reflector's world bounds can be seen by the camera or in one of the mirror views planned
 // in `plan` (its reflected frustum, with the oblique near plane, narrowed to the mirror's pixels).
-// `where` gets "seen directly" or "seen in <mirror>".
+// `seenIn` gets the mirror it is seen in, or nothing when it is seen directly.
 bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, const FramePlan& plan,
-                      std::string* where = nullptr);
+                      std::vector<std::string>* seenIn = nullptr);
 
 // The environment-map part of planning: appends the envmap pass to `plan` (or a skip with its reason), then
 // the GGX pre-filter's pass (or a skip) for a rough reflector.

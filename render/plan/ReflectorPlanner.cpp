@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 
 namespace speculum::render {
@@ -152,7 +151,7 @@ std::uint64_t envmapSignature(const FrameInput& input) {
 }
 
 bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, const FramePlan& plan,
-                      std::string* where) {
+                      std::vector<std::string>* seenIn) {
     const Reflector& reflector = *input.reflector;
     const math::Box box = math::worldBounds(computeBounds(*reflector.mesh), reflector.world);
     const glm::dmat4 rotation = math::viewRotation(input.camera);
@@ -167,8 +166,8 @@ bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, con
     const math::PixelRect whole{0, 0, viewport.width, viewport.height};
     if (!boxOutside(clipCorners(cameraProjection(input, viewport) * rotation * toCameraRelative),
                     clipPlanes(whole, viewport))) {
-        if (where)
-            *where = "seen directly";
+        if (seenIn)
+            seenIn->clear();
         return true;
     }
     for (const MirrorView& view : plan.views) {
@@ -176,8 +175,8 @@ bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, con
         // with the oblique near plane on the mirror and only the mirror's pixels.
         const glm::dmat4 worldToClip = view.projection * rotation * toCameraRelative * view.reflection;
         if (!boxOutside(clipCorners(worldToClip), clipPlanes(view.rect, viewport))) {
-            if (where)
-                *where = "seen in " + input.mirrors[static_cast<std::size_t>(view.mirror)].name;
+            if (seenIn)
+                *seenIn = {input.mirrors[static_cast<std::size_t>(view.mirror)].name};
             return true;
         }
     }
@@ -203,51 +202,37 @@ void planPrefilter(const FrameInput& input, const PlannerState& state, std::opti
     const Reflector& reflector = *input.reflector;
     const std::string name = reflector.name;
     if (!(reflector.roughness > 0.0)) {
-        plan.skipped.push_back({name, "GGX pre-filter not needed: the reflector's roughness is 0 (a sharp "
-                                      "reflection reads the map itself)"});
+        plan.skipped.push_back({name, PlanReason::PrefilterSharp});
         return;
     }
     const envmap::MapLayout layout = envmap::makeLayout(mapTypeOf(reflector.map), reflector.resolution);
     if (input.settings.glossyFilter == GlossyFilter::Mip) {
         const int levels = envmap::mipLevelCount(layout.width, layout.height);
-        plan.skipped.push_back(
-            {name, "GGX pre-filter not needed: settings.glossyFilter is mip (the reflector "
-                   "reads its map's mip chain at LOD roughness × " +
-                       std::to_string(levels - 1) + ")"});
+        plan.skipped.push_back({name, PlanReason::PrefilterMipFilter, {.levels = levels}});
         return;
     }
     const int samples = std::clamp(input.settings.prefilterSamples, 1, 4096);
     const std::uint64_t settings = envmapSettingsKey(reflector);
-    std::string why;
+    PlanReason why = PlanReason::PrefilterMapRendered;
     std::uint64_t key = 0;
     if (captured) {
-        why = "the map is rendered this frame";
         key = prefilterKey(*captured, settings, samples);
     } else {
         key = prefilterKey(state.envmapSignature.value_or(0), settings, samples);
         if (state.prefilterKey && *state.prefilterKey == key) {
-            plan.skipped.push_back(
-                {name, "GGX pre-filter reused: the map did not change: the chain is reused"});
+            plan.skipped.push_back({name, PlanReason::PrefilterReused});
             return;
         }
-        why = state.prefilterKey ? "the chain was filtered with other settings (prefilterSamples)"
-                                 : "no chain yet";
+        why = state.prefilterKey ? PlanReason::PrefilterSettingsChanged : PlanReason::PrefilterFirstChain;
     }
-    const int levels = envmap::prefilterLevels(layout);
-    const double roughness = std::min(reflector.roughness, 1.0);
-    const double at = roughness * (levels - 1);
-    const int below = static_cast<int>(std::floor(at));
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", roughness);
-    const std::string reads =
-        at == below ? "reads level " + std::to_string(below)
-                    : "reads between levels " + std::to_string(below) + " and " + std::to_string(below + 1);
     PlannedPass pass;
     pass.kind = PassKind::Prefilter;
     pass.target = name;
-    pass.reason = "convolves " + name + "'s map with the GGX lobe into " + std::to_string(levels) +
-                  " levels (roughness r_k = k/" + std::to_string(levels - 1) + "; " + text + " " + reads +
-                  "), " + std::to_string(samples) + " samples a texel; " + why;
+    pass.code = why;
+    pass.details.node = name;
+    pass.details.roughness = std::min(reflector.roughness, 1.0);
+    pass.details.levels = envmap::prefilterLevels(layout);
+    pass.details.samples = samples;
     pass.signature = key;
     plan.passes.push_back(std::move(pass));
 }
@@ -259,60 +244,38 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     if (!input.reflector || !input.reflector->mesh)
         return;
     const Reflector& reflector = *input.reflector;
-    std::string where;
-    if (!reflectorVisible(input, viewport, mirrors, &where)) {
-        plan.skipped.push_back({reflector.name, "environment pass not needed: the reflector is outside the "
-                                                "view and outside every mirror's reflected view"});
+    std::vector<std::string> seenIn;
+    if (!reflectorVisible(input, viewport, mirrors, &seenIn)) {
+        plan.skipped.push_back({reflector.name, PlanReason::EnvmapOutOfSight});
         return;
     }
     const bool haveMap = state.envmapSignature && state.envmapSettings == envmapSettingsKey(reflector);
-    std::string why;
-    std::string reused;
+    PlanReason why = PlanReason::EnvmapChanged;
     if (!haveMap) {
-        why = "no map yet";
+        why = PlanReason::EnvmapFirstMap;
     } else if (reflector.update == ReflectorUpdate::Always) {
-        why = "update: always";
+        why = PlanReason::EnvmapAlways;
     } else if (reflector.update == ReflectorUpdate::Once) {
-        reused = "environment map reused: update is \"once\" and the map was rendered";
+        why = PlanReason::EnvmapReusedOnce;
     } else if (*state.envmapSignature == envmapSignature(input)) {
-        reused = "environment map reused: nothing it sees changed since it was rendered (update on-change)";
-    } else {
-        why = "something it sees changed (update on-change)";
+        why = PlanReason::EnvmapUnchanged;
     }
-    if (!reused.empty()) {
-        plan.skipped.push_back({reflector.name, std::move(reused)});
+    if (why == PlanReason::EnvmapReusedOnce || why == PlanReason::EnvmapUnchanged) {
+        plan.skipped.push_back({reflector.name, why});
         planPrefilter(input, state, {}, plan);
         return;
-    }
-    const int n = reflector.resolution;
-    const std::string size = std::to_string(n) + "×" + std::to_string(n);
-    std::string what;
-    if (reflector.map == ReflectorMap::Cube)
-        what = "a cube map (6 faces of " + size + ")";
-    else {
-        what = "a " + std::string(names::fileName(names::kReflectorMaps, reflector.map)) +
-               " map (2 components of " +
-               (reflector.map == ReflectorMap::TennisBall ? std::to_string(n) + "×" + std::to_string(3 * n)
-                                                          : size) +
-               ", " +
-               (reflector.fill == ReflectorFill::Direct
-                    ? std::string("direct: vertices warped, 2 scene passes")
-                    : "resampled from a " + size + " cube: 6 scene passes + 2 resampling passes") +
-               ")";
-    }
-    // Mirrors in the map cost a scene draw per mirror view in each face or component they show in.
-    std::string inMap;
-    if (!input.mirrors.empty()) {
-        const int depth = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
-        inMap = depth == 0 ? "; its mirrors show their own material in it (the reflector's mirrorDepth is 0)"
-                           : "; planar mirrors reflect in it up to " + std::to_string(depth) +
-                                 (depth == 1 ? " level" : " levels") + " deep (the reflector's mirrorDepth)";
     }
     PlannedPass pass;
     pass.kind = PassKind::Envmap;
     pass.target = reflector.name;
-    pass.reason = "renders the scene around the reflector, lit and shadowed, from its centre into " + what +
-                  inMap + "; the reflector is " + where + "; " + why;
+    pass.code = why;
+    pass.details.seenIn = std::move(seenIn);
+    pass.details.map = reflector.map;
+    pass.details.fill = reflector.fill;
+    pass.details.resolution = reflector.resolution;
+    // Mirrors in the map cost a scene draw per mirror view in each face or component they show in.
+    if (!input.mirrors.empty())
+        pass.details.mapMirrorDepth = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
     plan.passes.push_back(std::move(pass));
 
     EnvmapPlan map;

@@ -190,17 +190,17 @@ RenderTarget drawnTarget(const RenderTarget& target, const RenderOptions& option
     return drawn;
 }
 
-// Why a view draws nothing: the reason of the first view found hidden that it is, or lies inside; null if
+// Why a view draws nothing: the skip of the first view found hidden that it is, or lies inside; null if
 // it draws (and for passes of no view).
-const std::string* hiddenReason(const passes::FrameExecution& frame, int view) {
+const SkippedEffect* hiddenReason(const passes::FrameExecution& frame, int view) {
     if (view < 0)
         return nullptr;
     for (std::size_t v = 0; v < frame.hidden.size(); ++v) {
-        if (frame.hidden[v].empty())
+        if (!frame.hidden[v])
             continue;
         for (int u = view; u >= 0; u = frame.plan.views[static_cast<std::size_t>(u)].parent)
             if (u == static_cast<int>(v))
-                return &frame.hidden[v];
+                return &*frame.hidden[v];
     }
     return nullptr;
 }
@@ -292,9 +292,9 @@ void runPasses(passes::FrameExecution& frame, bool srgbBuffer, const RenderOptio
     for (std::size_t i = 0; i < plan.passes.size(); ++i) {
         const PlannedPass& pass = plan.passes[i];
         // A view inside a mirror found hidden runs nothing; its reflection is reported skipped.
-        if (const std::string* why = hiddenReason(frame, pass.view)) {
+        if (const SkippedEffect* why = hiddenReason(frame, pass.view)) {
             if (pass.kind == PassKind::Mirror)
-                frame.skipped.push_back({pass.target, "no reflection: " + *why});
+                frame.skipped.push_back({pass.target, why->code, why->details});
             continue;
         }
         const auto passStart = Clock::now();

@@ -18,6 +18,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -246,15 +247,21 @@ TEST_F(Cli, ExplainJsonListsShadowAndMainPassesWithReasons) {
     for (const auto& value : passes) {
         const QJsonObject p = value.toObject();
         EXPECT_FALSE(p["reason"].toString().isEmpty());
+        EXPECT_FALSE(p["code"].toString().isEmpty()) << "every pass names its reason's code";
         EXPECT_TRUE(p.contains("gpuMs"));
         EXPECT_TRUE(p.contains("cpuMs"));
         EXPECT_TRUE(p.contains("target"));
-        shadow |= p["kind"].toString() == "shadow" && p["target"].toString() == "Light";
+        shadow |= p["kind"].toString() == "shadow" && p["target"].toString() == "Light" &&
+                  p["code"].toString() == "shadow-first-map";
         main |= p["kind"].toString() == "main";
     }
     EXPECT_TRUE(shadow) << run.out;
     EXPECT_TRUE(main) << run.out;
     EXPECT_TRUE(doc.object()["skipped"].isArray());
+    for (const auto& value : doc.object()["skipped"].toArray()) {
+        EXPECT_FALSE(value.toObject()["reason"].toString().isEmpty());
+        EXPECT_FALSE(value.toObject()["code"].toString().isEmpty()) << "every skip names its reason's code";
+    }
 }
 
 // What a frame could not do as asked (here a texture that is missing; a map larger than the GPU holds
@@ -298,7 +305,13 @@ TEST_F(Cli, ExplainOfASecondStaticFrameShowsTheReusedMaps) {
     EXPECT_EQ(second.out.find("\"envmap\""), std::string::npos)
         << "a static scene reuses its environment map";
     EXPECT_EQ(second.out.find("\"shadow\""), std::string::npos) << "and its shadow maps";
-    EXPECT_NE(second.out.find("reused"), std::string::npos);
+    // Both reuses are skips, with their codes.
+    const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(second.out));
+    std::vector<std::string> codes;
+    for (const auto& value : doc.object()["skipped"].toArray())
+        codes.push_back(value.toObject()["code"].toString().toStdString());
+    EXPECT_NE(std::find(codes.begin(), codes.end(), "shadow-map-reused"), codes.end()) << second.out;
+    EXPECT_NE(std::find(codes.begin(), codes.end(), "envmap-unchanged"), codes.end()) << second.out;
     EXPECT_NE(speculum("explain " + chrome + " --frame 0").status, 0);
 }
 

@@ -32,8 +32,8 @@ TEST(LayersCoreOnly, PlansAFrameWithoutGl) {
     report.plan = plan;
     report.ran.push_back({0, "", 1.0, 0.5});
     report.ran.push_back({int(plan.passes.size()) - 1, "found something", 2.0, 0.5});
-    EXPECT_EQ(report.reason(report.ran[0]), plan.passes.front().reason);
-    EXPECT_EQ(report.reason(report.ran[1]), plan.passes.back().reason + "; found something");
+    EXPECT_EQ(report.reason(report.ran[0]), plan.passes.front().reason());
+    EXPECT_EQ(report.reason(report.ran[1]), plan.passes.back().reason() + "; found something");
     EXPECT_EQ(report.countRan(PassKind::Shadow, "Lamp"), 1u);
     EXPECT_EQ(report.countRan(PassKind::Shadow, "Elsewhere"), 0u);
 }

@@ -85,10 +85,8 @@ TEST(EnvmapMirrors, AMirrorTheReflectorSeesHasViewsInTheMapFacesItShowsIn) {
         EXPECT_FALSE(view.ownTarget) << "the map nests every mirror with the stencil technique";
         inMinusX |= view.face == 1;
         const std::string& label = map.faces[static_cast<std::size_t>(view.face)].label;
-        EXPECT_NE(p->reason.find("draws the scene reflected in the mirror inside its stencil mask"),
-                  std::string::npos)
-            << p->reason;
-        EXPECT_NE(p->reason.find("in Ball's map, " + label), std::string::npos) << p->reason;
+        EXPECT_EQ(p->code, PlanReason::MirrorInStencil);
+        EXPECT_EQ(p->details.mapFace, "Ball's map, " + label);
         // The virtual capture point is the centre mirrored in the mirror's plane x = −3.
         EXPECT_NEAR(view.eye.x, -6.0, 1e-9);
     }
@@ -103,8 +101,8 @@ TEST(EnvmapMirrors, AMirrorTheReflectorSeesHasViewsInTheMapFacesItShowsIn) {
     // Faces the facing mirror is not in skip it with a reason naming the face.
     bool outsideNamed = false;
     for (const SkippedEffect* s : skipsOf(map, "Facing"))
-        outsideNamed |= s->reason.find("no reflection: outside the view") != std::string::npos &&
-                        s->reason.find("+X face") != std::string::npos && s->face == 0;
+        outsideNamed |= s->code == PlanReason::MirrorOutsideView &&
+                        s->details.mapFace == "Ball's map, +X face" && s->face == 0;
     EXPECT_TRUE(outsideNamed);
 }
 
@@ -114,12 +112,15 @@ TEST(EnvmapMirrors, AMirrorBehindTheCapturePointIsSkippedWithAReason) {
     const EnvmapPlan& map = *plan.envmap;
     EXPECT_TRUE(passesOf(map, "Away", PassKind::Mirror).empty());
     // Once per face seen from the capture point itself (deeper, in the facing mirror, the depth limit).
-    int behind = 0;
+    std::vector<const SkippedEffect*> behind;
     for (const SkippedEffect* s : skipsOf(map, "Away"))
-        if (s->reason.find("no reflection: the capture point is behind the mirror (it sees its back) "
-                           "(seen directly, in Ball's map, ") != std::string::npos)
-            ++behind;
-    EXPECT_EQ(behind, 6);
+        if (s->code == PlanReason::MirrorBehind && s->details.seenIn.empty())
+            behind.push_back(s);
+    ASSERT_EQ(behind.size(), 6u);
+    // The sentence names the capture point and the face.
+    EXPECT_EQ(behind[0]->reason(), "no reflection: the capture point is behind the mirror (it sees its back) "
+                                   "(seen directly, in Ball's map, " +
+                                       map.faces[static_cast<std::size_t>(behind[0]->face)].label + ")");
 }
 
 TEST(EnvmapMirrors, MirrorsNestToTheReflectorsOwnDepth) {
@@ -142,7 +143,7 @@ TEST(EnvmapMirrors, MirrorsNestToTheReflectorsOwnDepth) {
     EXPECT_EQ(deepest, 3);
     bool limitNamed = false;
     for (const SkippedEffect& s : plan.envmap->skipped)
-        limitNamed |= s.reason.find("the mirror depth limit (3) is reached") != std::string::npos;
+        limitNamed |= s.code == PlanReason::MirrorDepthLimit && s.details.limit == 3;
     EXPECT_TRUE(limitNamed);
 }
 
@@ -158,7 +159,7 @@ TEST(EnvmapMirrors, DirectFillPlansEachComponentWithAClipPlane) {
     const auto mirrorPasses = passesOf(map, "Facing", PassKind::Mirror);
     ASSERT_EQ(mirrorPasses.size(), 2u);
     for (const PlannedPass* p : mirrorPasses) {
-        EXPECT_NE(p->reason.find("with a clip plane on the mirror"), std::string::npos) << p->reason;
+        EXPECT_FALSE(p->details.area) << "no pixels to count: a clip plane, not an oblique near plane";
         const MirrorView& view = map.views[static_cast<std::size_t>(p->view)];
         // In drawn (reflected) coordinates relative to the capture point, the reflection keeps what lies
         // beyond the mirror's plane x = −3 and cuts the capture point's side.
@@ -179,7 +180,7 @@ TEST(EnvmapMirrors, NoMirrorViewsWhenTheMapIsReusedOrItsDepthIsZero) {
     ASSERT_TRUE(plan.envmap);
     EXPECT_TRUE(plan.envmap->views.empty());
     ASSERT_EQ(plan.envmap->skipped.size(), 2u);
-    EXPECT_NE(plan.envmap->skipped[0].reason.find("mirrorDepth is 0"), std::string::npos);
+    EXPECT_EQ(plan.envmap->skipped[0].code, PlanReason::MapMirrorDepthZero);
 }
 
 } // namespace

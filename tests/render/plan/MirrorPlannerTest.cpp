@@ -1,4 +1,4 @@
-// Which mirrors get passes, without any GL: each skip has its reason.
+// Which mirrors get passes, without any GL: each skip has its reason code.
 #include "PlanScenes.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/plan/Planner.hpp"
@@ -14,11 +14,12 @@ constexpr PlanViewport kViewport{640, 360};
 using test::cameraAtOrigin;
 using test::wall;
 
-std::string skipReason(const FramePlan& plan, const std::string& target) {
+// The target's skip; nullptr when the plan has none for it.
+const SkippedEffect* skipOf(const FramePlan& plan, const std::string& target) {
     for (const auto& s : plan.skipped)
         if (s.target == target)
-            return s.reason;
-    return {};
+            return &s;
+    return nullptr;
 }
 
 int passesFor(const FramePlan& plan, const std::string& target) {
@@ -48,7 +49,9 @@ TEST(MirrorPlanner, AnOutputThatHoldsTheCameraBufferNeedsNoComposite) {
         EXPECT_NE(p.writes.target, PassTarget::Output)
             << toString(p.kind) << ": the camera's buffer is the output";
     }
-    EXPECT_NE(skipReason(plan, "output").find("composite pass not needed"), std::string::npos);
+    ASSERT_NE(skipOf(plan, "output"), nullptr);
+    EXPECT_EQ(skipOf(plan, "output")->code, PlanReason::CompositeNotNeeded);
+    EXPECT_EQ(plan.passes.front().code, PlanReason::MainIntoOutput);
 
     input.mirrors[0].reflectivity = 0.5;
     const FramePlan weighted = planFrame(input, {}, direct);
@@ -63,10 +66,10 @@ TEST(MirrorPlanner, AnOutputThatHoldsTheCameraBufferNeedsNoComposite) {
     EXPECT_FALSE(blended.cameraBufferIsOutput);
     EXPECT_FALSE(blended.preWeighted);
     EXPECT_EQ(blended.views[0].weight, glm::dvec3(1.0));
-    EXPECT_NE(blended.passes.back().reason.find("Fresnel"), std::string::npos)
-        << blended.passes.back().reason;
+    EXPECT_EQ(blended.passes.back().code, PlanReason::CompositeFresnelBlend);
+    EXPECT_EQ(blended.passes.back().details.node, "Wall");
     EXPECT_EQ(blended.passes.back().kind, PassKind::Composite);
-    EXPECT_EQ(skipReason(blended, "output"), "");
+    EXPECT_EQ(skipOf(blended, "output"), nullptr);
 }
 
 TEST(MirrorPlanner, NestedStencilMirrorsMultiplyTheirWeights) {
@@ -116,18 +119,18 @@ TEST(MirrorPlanner, AVisibleMirrorGetsMaskMirrorAndSurfacePassesInOrder) {
     EXPECT_EQ(plan.views[0].depth, 1);
     EXPECT_EQ(plan.views[0].stencilLevel, 1);
     EXPECT_NEAR(plan.views[0].eye.z, -6.0, 1e-12);
-    EXPECT_TRUE(skipReason(plan, "Wall").empty());
+    EXPECT_EQ(skipOf(plan, "Wall"), nullptr);
 }
 
 TEST(MirrorPlanner, SkipsWithReasons) {
     struct Case {
         const char* what;
         Mirror mirror;
-        const char* reason;
+        PlanReason code;
     };
     const std::vector<Case> cases = {
-        {"behind the camera", wall("M", 3.0, false), "outside the view"},
-        {"facing away", wall("M", -3.0, false), "behind the mirror"},
+        {"behind the camera", wall("M", 3.0, false), PlanReason::MirrorOutsideView},
+        {"facing away", wall("M", -3.0, false), PlanReason::MirrorBehind},
         {"camera on its plane",
          [] {
              Mirror m = wall("M", -3.0);
@@ -135,15 +138,15 @@ TEST(MirrorPlanner, SkipsWithReasons) {
                                    glm::dvec3(0, 0, 1)); // the plane x = 0 contains the camera
              return m;
          }(),
-         "on the mirror's plane"},
-        {"far away and tiny", wall("M", -90.0, true, 0.05), "less than one pixel"},
+         PlanReason::MirrorEdgeOn},
+        {"far away and tiny", wall("M", -90.0, true, 0.05), PlanReason::MirrorBelowPixel},
         {"collapsed",
          [] {
              Mirror m = wall("M", -3.0);
              m.world = glm::scale(m.world, glm::dvec3(0, 1, 1));
              return m;
          }(),
-         "zero area"},
+         PlanReason::MirrorNoPlane},
     };
     for (const Case& c : cases) {
         FrameInput input = cameraAtOrigin();
@@ -151,9 +154,19 @@ TEST(MirrorPlanner, SkipsWithReasons) {
         const FramePlan plan = planFrame(input, {}, kViewport);
         EXPECT_TRUE(plan.views.empty()) << c.what;
         EXPECT_EQ(passesFor(plan, "M"), 0) << c.what;
-        EXPECT_NE(skipReason(plan, "M").find(c.reason), std::string::npos)
-            << c.what << ": " << skipReason(plan, "M");
+        ASSERT_NE(skipOf(plan, "M"), nullptr) << c.what;
+        EXPECT_EQ(skipOf(plan, "M")->code, c.code) << c.what << ": " << skipOf(plan, "M")->reason();
     }
+}
+
+TEST(MirrorPlanner, ASkipSaysWhyAndWhereTheMirrorIsSeen) {
+    FrameInput input = cameraAtOrigin();
+    input.mirrors = {wall("M", -3.0, false)};
+    const FramePlan plan = planFrame(input, {}, kViewport);
+    ASSERT_NE(skipOf(plan, "M"), nullptr);
+    EXPECT_EQ(skipOf(plan, "M")->reason(),
+              "no reflection: the camera is behind the mirror (it sees its back) (seen "
+              "directly)");
 }
 
 TEST(MirrorPlanner, NearlyEdgeOnMirrorIsSkippedOrFiniteNeverNan) {
@@ -171,7 +184,7 @@ TEST(MirrorPlanner, NearlyEdgeOnMirrorIsSkippedOrFiniteNeverNan) {
                     ASSERT_TRUE(std::isfinite(v.projection[c][r])) << angle;
                 }
         if (plan.views.empty()) {
-            EXPECT_FALSE(skipReason(plan, "M").empty()) << angle;
+            EXPECT_NE(skipOf(plan, "M"), nullptr) << angle;
         }
     }
 }
@@ -198,7 +211,7 @@ TEST(MirrorPlanner, FacingMirrorsNestToTheDepthLimitAndSayWhereItStopped) {
     EXPECT_EQ(deepest, 5);
     bool limit = false;
     for (const auto& s : plan.skipped)
-        limit |= s.reason.find("depth limit (5)") != std::string::npos;
+        limit |= s.code == PlanReason::MirrorDepthLimit && s.details.limit == 5;
     EXPECT_TRUE(limit);
     input.settings.mirrorDepth = 0;
     EXPECT_TRUE(planFrame(input, {}, kViewport).views.empty());
@@ -237,7 +250,16 @@ TEST(MirrorPlanner, MirrorOnlyVisibleThroughAnotherIsCulledOutsideItsReflectedVi
     input.mirrors = {wall("Wall", -3.0), side};
     const FramePlan plan = planFrame(input, {}, kViewport);
     ASSERT_EQ(plan.views.size(), 1u);
-    EXPECT_NE(skipReason(plan, "Side").find("outside"), std::string::npos) << skipReason(plan, "Side");
+    bool outsideWall = false, outsideView = false;
+    for (const SkippedEffect& s : plan.skipped) {
+        if (s.target != "Side")
+            continue;
+        outsideWall |=
+            s.code == PlanReason::MirrorOutsideParent && s.details.seenIn == std::vector<std::string>{"Wall"};
+        outsideView |= s.code == PlanReason::MirrorOutsideView && s.details.seenIn.empty();
+    }
+    EXPECT_TRUE(outsideWall) << "outside the wall's reflected view";
+    EXPECT_TRUE(outsideView) << "outside the camera's view";
 }
 
 } // namespace

@@ -35,11 +35,18 @@ TEST(ReflectedDetail, MirrorViewsDrawBigMeshesSimplifiedAndSaySo) {
     const PlannedPass* mirror = passOf(plan, PassKind::Mirror);
     ASSERT_NE(mirror, nullptr);
     const MeshData& big = *input.items[0].mesh;
-    EXPECT_NE(mirror->reason.find("simplified ('Statue' " + std::to_string(big.triangleCount()) + " → " +
-                                  std::to_string(big.coarse.triangleCount()) + " triangles"),
+    ASSERT_EQ(mirror->details.bigMeshes.size(), 1u);
+    const ReflectedMesh& statue = mirror->details.bigMeshes[0];
+    EXPECT_EQ(statue.name, "Statue");
+    EXPECT_EQ(statue.triangles, big.triangleCount());
+    EXPECT_EQ(statue.simplifiedTriangles, big.coarse.triangleCount());
+    // The sentence the pass shows names the mesh and both triangle counts.
+    EXPECT_NE(mirror->reason().find("; draws a big mesh simplified ('Statue' " +
+                                    std::to_string(big.triangleCount()) + " → " +
+                                    std::to_string(big.coarse.triangleCount()) + " triangles, within "),
               std::string::npos)
-        << mirror->reason;
-    EXPECT_EQ(passOf(plan, PassKind::Main)->reason.find("simplified"), std::string::npos)
+        << mirror->reason();
+    EXPECT_TRUE(passOf(plan, PassKind::Main)->details.bigMeshes.empty())
         << "the camera's own view always draws every triangle";
 }
 
@@ -50,10 +57,10 @@ TEST(ReflectedDetail, TurnedOffTheMirrorSaysItDrawsThemWhole) {
     EXPECT_TRUE(plan.coarseItems.empty());
     const PlannedPass* mirror = passOf(plan, PassKind::Mirror);
     ASSERT_NE(mirror, nullptr);
-    EXPECT_NE(mirror->reason.find("draws big meshes whole, settings.simplifyReflections is off: 'Statue' (" +
-                                  std::to_string(input.items[0].mesh->triangleCount()) + " triangles)"),
-              std::string::npos)
-        << mirror->reason;
+    ASSERT_EQ(mirror->details.bigMeshes.size(), 1u);
+    EXPECT_EQ(mirror->details.bigMeshes[0].name, "Statue");
+    EXPECT_EQ(mirror->details.bigMeshes[0].triangles, input.items[0].mesh->triangleCount());
+    EXPECT_FALSE(mirror->details.bigMeshes[0].simplifiedTriangles) << "drawn whole";
 }
 
 TEST(ReflectedDetail, NothingReflectedNothingSimplified) {
@@ -62,7 +69,7 @@ TEST(ReflectedDetail, NothingReflectedNothingSimplified) {
     const FramePlan plan = planFrame(input, {}, {320, 240});
     EXPECT_TRUE(plan.coarseItems.empty());
     for (const PlannedPass& pass : plan.passes)
-        EXPECT_EQ(pass.reason.find("simplified"), std::string::npos) << pass.reason;
+        EXPECT_TRUE(pass.details.bigMeshes.empty()) << pass.reason();
 }
 
 TEST(ReflectedDetail, TheEnvironmentMapDrawsThemSimplifiedToo) {
@@ -76,7 +83,9 @@ TEST(ReflectedDetail, TheEnvironmentMapDrawsThemSimplifiedToo) {
     const FramePlan plan = planFrame(input, {}, {320, 240});
     const PlannedPass* envmap = passOf(plan, PassKind::Envmap);
     ASSERT_NE(envmap, nullptr);
-    EXPECT_NE(envmap->reason.find("simplified ('Statue'"), std::string::npos) << envmap->reason;
+    ASSERT_EQ(envmap->details.bigMeshes.size(), 1u);
+    EXPECT_EQ(envmap->details.bigMeshes[0].name, "Statue");
+    EXPECT_TRUE(envmap->details.bigMeshes[0].simplifiedTriangles);
     EXPECT_EQ(plan.coarseItems, (std::vector<bool>{true, false}));
 }
 

@@ -35,11 +35,13 @@ const PlannedPass* passOf(const FramePlan& plan, PassKind kind) {
     return it == plan.passes.end() ? nullptr : &*it;
 }
 
-std::string prefilterSkip(const FramePlan& plan) {
+// The skip of the reflector's pre-filter; nullptr when the plan has none.
+const SkippedEffect* prefilterSkip(const FramePlan& plan) {
     for (const SkippedEffect& s : plan.skipped)
-        if (s.reason.find("GGX pre-filter") != std::string::npos)
-            return s.reason;
-    return {};
+        if (s.code == PlanReason::PrefilterSharp || s.code == PlanReason::PrefilterMipFilter ||
+            s.code == PlanReason::PrefilterReused)
+            return &s;
+    return nullptr;
 }
 
 // What the renderer records once the map and the chain are drawn.
@@ -63,21 +65,23 @@ TEST(PrefilterPlanner, RoughFootprintReflectorFiltersRightAfterTheEnvironmentPas
     ASSERT_NE(prefilter, nullptr);
     EXPECT_EQ(prefilter->target, "Ball");
     EXPECT_EQ(prefilter->writes.target, PassTarget::OwnMap);
-    EXPECT_NE(prefilter->reason.find("convolves Ball's map with the GGX lobe into 6 levels"),
-              std::string::npos)
-        << prefilter->reason;
-    EXPECT_NE(prefilter->reason.find("0.35 reads between levels 1 and 2"), std::string::npos)
-        << prefilter->reason;
-    EXPECT_NE(prefilter->reason.find("64 samples a texel"), std::string::npos) << prefilter->reason;
+    EXPECT_EQ(prefilter->code, PlanReason::PrefilterMapRendered);
+    EXPECT_EQ(prefilter->details.levels, 6);
+    EXPECT_EQ(prefilter->details.samples, 64);
+    // The sentence the pass shows, as explain prints it.
+    EXPECT_EQ(prefilter->reason(),
+              "convolves Ball's map with the GGX lobe into 6 levels (roughness r_k = k/5; "
+              "0.35 reads between levels 1 and 2), 64 samples a texel; the map is rendered this frame");
     EXPECT_EQ(toString(PassKind::Prefilter), "prefilter");
-    EXPECT_TRUE(prefilterSkip(plan).empty());
+    EXPECT_EQ(prefilterSkip(plan), nullptr);
 }
 
 TEST(PrefilterPlanner, RoughnessZeroPlansNoPrefilter) {
     for (GlossyFilter filter : {GlossyFilter::Footprint, GlossyFilter::Mip}) {
         const FramePlan plan = planFrame(roughBall(0.0, filter), {});
         EXPECT_EQ(passOf(plan, PassKind::Prefilter), nullptr);
-        EXPECT_NE(prefilterSkip(plan).find("roughness is 0"), std::string::npos) << prefilterSkip(plan);
+        ASSERT_NE(prefilterSkip(plan), nullptr);
+        EXPECT_EQ(prefilterSkip(plan)->code, PlanReason::PrefilterSharp);
     }
 }
 
@@ -85,9 +89,9 @@ TEST(PrefilterPlanner, MipFilterPlansNoPrefilter) {
     const FramePlan plan = planFrame(roughBall(0.5, GlossyFilter::Mip), {});
     EXPECT_EQ(passOf(plan, PassKind::Prefilter), nullptr);
     EXPECT_NE(passOf(plan, PassKind::Envmap), nullptr);
-    // 256² cube: 9 mip levels, LOD roughness × 8.
-    EXPECT_NE(prefilterSkip(plan).find("glossyFilter is mip"), std::string::npos) << prefilterSkip(plan);
-    EXPECT_NE(prefilterSkip(plan).find("roughness × 8"), std::string::npos) << prefilterSkip(plan);
+    ASSERT_NE(prefilterSkip(plan), nullptr);
+    EXPECT_EQ(prefilterSkip(plan)->code, PlanReason::PrefilterMipFilter);
+    EXPECT_EQ(prefilterSkip(plan)->details.levels, 9) << "256² cube: 9 mip levels, LOD roughness × 8";
 }
 
 TEST(PrefilterPlanner, ReusedMapReusesTheChain) {
@@ -95,8 +99,8 @@ TEST(PrefilterPlanner, ReusedMapReusesTheChain) {
     const FramePlan plan = planFrame(input, afterRendering(input));
     EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr);
     EXPECT_EQ(passOf(plan, PassKind::Prefilter), nullptr);
-    EXPECT_NE(prefilterSkip(plan).find("the map did not change: the chain is reused"), std::string::npos)
-        << prefilterSkip(plan);
+    ASSERT_NE(prefilterSkip(plan), nullptr);
+    EXPECT_EQ(prefilterSkip(plan)->code, PlanReason::PrefilterReused);
 }
 
 TEST(PrefilterPlanner, NewRoughnessOrFilterKeepsTheChain) {
@@ -115,8 +119,8 @@ TEST(PrefilterPlanner, ChangedSampleCountFiltersAgainWithoutCapturing) {
     EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr) << "the map is not captured again";
     const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
     ASSERT_NE(prefilter, nullptr);
-    EXPECT_NE(prefilter->reason.find("256 samples a texel"), std::string::npos) << prefilter->reason;
-    EXPECT_NE(prefilter->reason.find("prefilterSamples"), std::string::npos) << prefilter->reason;
+    EXPECT_EQ(prefilter->code, PlanReason::PrefilterSettingsChanged);
+    EXPECT_EQ(prefilter->details.samples, 256);
 }
 
 TEST(PrefilterPlanner, ReusedMapWithoutAChainFiltersOnce) {
@@ -128,7 +132,7 @@ TEST(PrefilterPlanner, ReusedMapWithoutAChainFiltersOnce) {
     EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr);
     const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
     ASSERT_NE(prefilter, nullptr);
-    EXPECT_NE(prefilter->reason.find("no chain yet"), std::string::npos) << prefilter->reason;
+    EXPECT_EQ(prefilter->code, PlanReason::PrefilterFirstChain);
     EXPECT_EQ(prefilter->signature, prefilterKey(*state.envmapSignature, *state.envmapSettings, 64));
 }
 
@@ -140,8 +144,7 @@ TEST(PrefilterPlanner, RecapturedMapIsFilteredAgain) {
     ASSERT_NE(passOf(plan, PassKind::Envmap), nullptr);
     const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
     ASSERT_NE(prefilter, nullptr);
-    EXPECT_NE(prefilter->reason.find("the map is rendered this frame"), std::string::npos)
-        << prefilter->reason;
+    EXPECT_EQ(prefilter->code, PlanReason::PrefilterMapRendered);
     EXPECT_EQ(prefilter->signature,
               prefilterKey(envmapSignature(after), envmapSettingsKey(*after.reflector), 64));
 }
@@ -160,8 +163,9 @@ TEST(PrefilterPlanner, LevelsFollowTheMapSize) {
     const FramePlan plan = planFrame(input, {}); // the pass below points into it
     const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
     ASSERT_NE(prefilter, nullptr);
-    EXPECT_NE(prefilter->reason.find("into 4 levels"), std::string::npos) << prefilter->reason;
-    EXPECT_NE(prefilter->reason.find("1 reads level 3"), std::string::npos) << prefilter->reason;
+    EXPECT_EQ(prefilter->details.levels, 4);
+    EXPECT_NE(prefilter->reason().find("(roughness r_k = k/3; 1 reads level 3)"), std::string::npos)
+        << prefilter->reason();
 }
 
 } // namespace

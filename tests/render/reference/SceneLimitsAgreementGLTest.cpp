@@ -184,7 +184,7 @@ protected:
         if (std::getenv("SPECULUM_TEST_DUMP")) {
             const FramePlan plan = planFrame(input, PlannerState{}, PlanViewport{kWidth, kHeight});
             for (const SkippedEffect& s : plan.skipped)
-                std::printf("  skipped %s: %s\n", s.target.c_str(), s.reason.c_str());
+                std::printf("  skipped %s: %s\n", s.target.c_str(), s.reason().c_str());
             for (const MirrorView& v : plan.views)
                 std::printf("  view of mirror %d: %g px\n", v.mirror, v.pixelArea);
         }
@@ -350,16 +350,18 @@ TEST(ExtremeMirrorPlan, UndrawableMirrorsAreSkippedWithAPlainReason) {
     input.mirrors[1].world[3] = glm::dvec4(nan, 0.0, 0.0, 1.0);
     input.mirrors[2].name = "Good";
     const FramePlan plan = planFrame(input, PlannerState{}, PlanViewport{kWidth, kHeight});
-    auto reasonFor = [&](const std::string& name) {
+    auto skipOf = [&](const std::string& name) -> const SkippedEffect* {
         for (const SkippedEffect& s : plan.skipped)
             if (s.target.find(name) != std::string::npos)
-                return s.reason;
-        return std::string();
+                return &s;
+        return nullptr;
     };
-    EXPECT_NE(reasonFor("NaN size").find("size is not a positive finite number"), std::string::npos)
-        << reasonFor("NaN size");
-    EXPECT_NE(reasonFor("NaN transform").find("not a finite number"), std::string::npos)
-        << reasonFor("NaN transform");
+    ASSERT_NE(skipOf("NaN size"), nullptr);
+    EXPECT_EQ(skipOf("NaN size")->code, PlanReason::MirrorSizeInvalid) << skipOf("NaN size")->reason();
+    ASSERT_NE(skipOf("NaN transform"), nullptr);
+    EXPECT_EQ(skipOf("NaN transform")->code, PlanReason::MirrorNoPlane) << skipOf("NaN transform")->reason();
+    EXPECT_NE(skipOf("NaN transform")->details.error.find("not a finite number"), std::string::npos)
+        << skipOf("NaN transform")->reason();
     ASSERT_EQ(plan.views.size(), 1u);
     EXPECT_EQ(plan.views[0].mirror, 2);
 }

@@ -1,0 +1,394 @@
+// The sentences of the plan's reasons: what every planned pass and every skip (the planner's and the
+// executors') says, worded here from its code and the details it names.
+#include "render/plan/PlanReason.hpp"
+
+#include "render/frame/SceneNames.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+namespace speculum::render {
+
+namespace {
+
+std::string plural(std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string rounded(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f", value);
+    return text;
+}
+
+bool inMap(const ReasonDetails& d) {
+    return !d.mapFace.empty();
+}
+
+// "seen directly" or "seen in Left → Right (depth 3)", then the map's face (", in Ball's map, +X face").
+std::string whereSeen(const ReasonDetails& d) {
+    std::string where = "seen directly";
+    if (!d.seenIn.empty()) {
+        std::string chain;
+        for (auto name = d.seenIn.rbegin(); name != d.seenIn.rend(); ++name)
+            chain = chain.empty() ? *name : *name + " → " + chain;
+        where = "seen in " + chain + " (depth " + std::to_string(d.seenIn.size() + 1) + ")";
+    }
+    return inMap(d) ? where + ", in " + d.mapFace : where;
+}
+
+// ", 1234 px" (texels in the map); nothing in a direct-fill component.
+std::string areaCovered(const ReasonDetails& d) {
+    return d.area ? ", " + rounded(*d.area) + (inMap(d) ? " texels" : " px") : std::string();
+}
+
+// The big meshes a reflected view draws simplified, or whole; nothing when it draws none.
+std::string reflectedMeshes(const ReasonDetails& d) {
+    std::string simplified;
+    std::string whole;
+    std::size_t simplifiedCount = 0;
+    for (const ReflectedMesh& mesh : d.bigMeshes) {
+        const std::string full = std::to_string(mesh.triangles);
+        if (!mesh.simplifiedTriangles) {
+            whole += (whole.empty() ? "'" : ", '") + mesh.name + "' (" + full + " triangles)";
+            continue;
+        }
+        ++simplifiedCount;
+        char error[32];
+        std::snprintf(error, sizeof error, "%.2g%%", mesh.simplificationError * 100.0);
+        simplified += (simplified.empty() ? "'" : ", '") + mesh.name + "' " + full + " → " +
+                      std::to_string(*mesh.simplifiedTriangles) + " triangles, within " + error +
+                      " of its size";
+    }
+    if (!simplified.empty())
+        return "; draws " + std::string(simplifiedCount == 1 ? "a big mesh" : "big meshes") +
+               " simplified (" + simplified + ")";
+    if (!whole.empty())
+        return "; draws big meshes whole, settings.simplifyReflections is off: " + whole;
+    return {};
+}
+
+std::string lightSentence(PlanReason code, const ReasonDetails& d) {
+    switch (code) {
+    case PlanReason::LightLimit:
+        return "more than " + std::to_string(d.limit) + " lights: this light is ignored";
+    case PlanReason::ShadowsOff:
+        return "shadow pass not needed: shadows are off for this light";
+    case PlanReason::NoShadowCasters:
+        return "shadow pass not needed: nothing in the scene casts a shadow";
+    case PlanReason::NoShadowReceivers:
+        return "shadow pass not needed: nothing in the scene can receive a shadow";
+    case PlanReason::ShadowedLightLimit:
+        return "shadow pass skipped: at most " + std::to_string(d.limit) +
+               " lights cast shadows; this one lights without them";
+    case PlanReason::ShadowMapReused:
+        return "shadow map reused: light and casters unchanged since the last frame";
+    default:
+        break;
+    }
+    std::string sentence = "light casts shadows (" + std::to_string(d.mapSize) + "² map, PCF " +
+                           std::to_string(d.pcf) + "×" + std::to_string(d.pcf) + ") from " +
+                           plural(d.casters, "caster", "casters");
+    if (d.cubeFacesWithCasters)
+        sentence += "; " + std::to_string(*d.cubeFacesWithCasters) + " of 6 cube faces hold casters";
+    return sentence + (code == PlanReason::ShadowFirstMap ? "; no map yet" : "; light or casters changed");
+}
+
+std::string mainSentence(PlanReason code, const ReasonDetails& d) {
+    std::string sentence = "draws " + plural(d.objects, "object", "objects") + " lit by " +
+                           plural(d.lights, "light", "lights") + " into the camera's colour buffer";
+    if (d.preWeighted)
+        sentence += "; stencil mirrors draw their reflections weighted and add their surfaces over them";
+    if (code == PlanReason::MainIntoOutput)
+        return sentence + " (8-bit sRGB: the output's own buffer, encoded as it is written)";
+    if (code == PlanReason::MainSrgb)
+        return sentence + " (8-bit sRGB, encoded as it is written)";
+    return sentence + " (half float)";
+}
+
+std::string compositeSentence(PlanReason code, const ReasonDetails& d) {
+    switch (code) {
+    case PlanReason::CompositeToFloat:
+        return "resolves the half-float colour buffer into the float output (linear)";
+    case PlanReason::CompositeCopiesSrgb:
+        return "copies the sRGB colour buffer to the output: no blend in it needs radiance above 1";
+    case PlanReason::CompositeNotNeeded:
+        return "composite pass not needed: the frame is drawn straight into the output, an 8-bit sRGB "
+               "buffer, and no blend needs radiance above 1";
+    default:
+        break;
+    }
+    const std::string blend =
+        "resolves the half-float colour buffer into the 8-bit output with sRGB encoding: "
+        "stencil mirror '" +
+        d.node + "' blends onto the reflection it drew";
+    if (code == PlanReason::CompositeFresnelBlend)
+        return blend + ", with a Fresnel weight that varies over it";
+    if (code == PlanReason::CompositeNestedBlend)
+        return blend + " inside another stencil mirror's reflection";
+    return blend;
+}
+
+// Which approximation of a rough mirror's reflection its surface pass draws.
+std::string glossyApproximation(const ReasonDetails& d) {
+    if (d.roughness <= 0.0)
+        return {};
+    char value[16];
+    std::snprintf(value, sizeof value, "%.2f", d.roughness);
+    const std::string rough = "; rough (roughness " + std::string(value) + "): ";
+    if (inMap(d))
+        return rough + "drawn sharp, as every mirror inside the environment map";
+    if (d.glossyTaps == 0)
+        return rough + "one mip level of its reflection, chosen by the roughness alone (the cheap filter)";
+    return rough + "its reflection sampled over the GGX lobe's footprint, " + std::to_string(d.glossyTaps) +
+           " taps a pixel, wider the farther what it reflects lies beyond the mirror";
+}
+
+std::string mirrorPassSentence(PlanReason code, const ReasonDetails& d) {
+    switch (code) {
+    case PlanReason::MirrorMaskStencil:
+        return "marks the mirror's visible " + std::string(inMap(d) ? "texels" : "pixels") +
+               " in the stencil buffer (" + whereSeen(d) + areaCovered(d) + ")";
+    case PlanReason::MirrorMaskCount:
+        return "counts the mirror's visible pixels, so a hidden mirror costs nothing (" + whereSeen(d) + ")";
+    case PlanReason::MirrorSurface:
+        return "blends the mirror's own surface over the reflection (reflectivity " +
+               rounded(d.reflectivity * 100) + "%" + (inMap(d) ? ", in " + d.mapFace : std::string()) + ")" +
+               glossyApproximation(d);
+    default:
+        break;
+    }
+    return std::string("draws the scene reflected in the mirror ") +
+           (code == PlanReason::MirrorIntoTexture ? "into its reflection texture"
+                                                  : "inside its stencil mask") +
+           (d.roughStencil ? " (rough: the stencil technique leaves no image of the reflection to filter)"
+                           : "") +
+           (d.area ? " with an oblique near plane on the mirror (" : " with a clip plane on the mirror (") +
+           whereSeen(d) + areaCovered(d) + ")" + reflectedMeshes(d);
+}
+
+// Why a mirror gets no view where the planner sees it.
+std::string whyNoView(PlanReason code, const ReasonDetails& d) {
+    const std::string viewer = inMap(d) ? "the capture point" : "the camera";
+    switch (code) {
+    case PlanReason::MirrorSizeInvalid:
+        return "the mirror's size is not a positive finite number";
+    case PlanReason::MirrorEdgeOn:
+        return viewer + " is on the mirror's plane, which it sees edge-on";
+    case PlanReason::MirrorBehind:
+        return viewer + " is behind the mirror (it sees its back)";
+    case PlanReason::MirrorOutsideView:
+        return "outside the view";
+    case PlanReason::MirrorOutsideParent:
+        return "outside the parent mirror's reflected view";
+    case PlanReason::MirrorBelowPixel:
+        return "covers less than one " + std::string(inMap(d) ? "texel" : "pixel") + " (" +
+               rounded(d.area.value_or(0.0) * 100) + "% of one)";
+    case PlanReason::MirrorDepthLimit:
+        return "the mirror depth limit (" + std::to_string(d.limit) +
+               ") is reached; drawn with its own material";
+    case PlanReason::MirrorViewLimit:
+        return std::string(inMap(d) ? "this face" : "the frame") + " already has " + std::to_string(d.limit) +
+               " mirror views; drawn with its own material";
+    case PlanReason::MirrorStencilTooDeep:
+        return "the stencil buffer cannot nest deeper";
+    case PlanReason::MirrorDepthZero:
+        return "mirrorDepth is 0; drawn with its own material";
+    default: // MirrorNoPlane, MirrorNoReflectionMatrix, MirrorNoObliqueProjection: the maths' own words
+        return d.error;
+    }
+}
+
+// A mirror that gets no view where the planner sees it: why, then where.
+std::string mirrorSkipSentence(PlanReason code, const ReasonDetails& d) {
+    return "no reflection: " + whyNoView(code, d) + " (" + whereSeen(d) + ")";
+}
+
+// A mirror without a reflection for a reason found outside the planner's view by view tests.
+std::string mirrorDroppedSentence(PlanReason code, const ReasonDetails& d) {
+    switch (code) {
+    case PlanReason::MapMirrorDepthZero:
+        return "no reflection in " + d.node +
+               "'s map: the reflector's mirrorDepth is 0; drawn with its own material (every face)";
+    case PlanReason::MirrorOccluded:
+        return "no reflection: fully occluded: no pixel of it passed the depth test";
+    case PlanReason::MirrorOccludedInTile:
+        return "no reflection: fully occluded in this tile: no pixel of it passed the depth test";
+    default: // MirrorNoTexture
+        return "no reflection: its reflection texture: " + d.error;
+    }
+}
+
+// "a cube map (6 faces of 256×256)", "a dual-paraboloid map (2 components of 256×256, direct: …)"
+std::string mapLayout(const ReasonDetails& d) {
+    const int n = d.resolution;
+    const std::string size = std::to_string(n) + "×" + std::to_string(n);
+    if (d.map == ReflectorMap::Cube)
+        return "a cube map (6 faces of " + size + ")";
+    return "a " + std::string(names::fileName(names::kReflectorMaps, d.map)) + " map (2 components of " +
+           (d.map == ReflectorMap::TennisBall ? std::to_string(n) + "×" + std::to_string(3 * n) : size) +
+           ", " +
+           (d.fill == ReflectorFill::Direct
+                ? std::string("direct: vertices warped, 2 scene passes")
+                : "resampled from a " + size + " cube: 6 scene passes + 2 resampling passes") +
+           ")";
+}
+
+std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
+    switch (code) {
+    case PlanReason::EnvmapOutOfSight:
+        return "environment pass not needed: the reflector is outside the view and outside every mirror's "
+               "reflected view";
+    case PlanReason::EnvmapReusedOnce:
+        return "environment map reused: update is \"once\" and the map was rendered";
+    case PlanReason::EnvmapUnchanged:
+        return "environment map reused: nothing it sees changed since it was rendered (update on-change)";
+    case PlanReason::EnvmapNotAllocated:
+        return "no environment map: none could be allocated (see the warnings)";
+    default:
+        break;
+    }
+    // Mirrors in the map cost a scene draw per mirror view in each face or component they show in.
+    std::string mirrors;
+    if (d.mapMirrorDepth) {
+        const int depth = *d.mapMirrorDepth;
+        mirrors = depth == 0
+                      ? "; its mirrors show their own material in it (the reflector's mirrorDepth is 0)"
+                      : "; planar mirrors reflect in it up to " + std::to_string(depth) +
+                            (depth == 1 ? " level" : " levels") + " deep (the reflector's mirrorDepth)";
+    }
+    const std::string where = d.seenIn.empty() ? "seen directly" : "seen in " + d.seenIn.front();
+    const char* why = code == PlanReason::EnvmapFirstMap ? "no map yet"
+                      : code == PlanReason::EnvmapAlways ? "update: always"
+                                                         : "something it sees changed (update on-change)";
+    return "renders the scene around the reflector, lit and shadowed, from its centre into " + mapLayout(d) +
+           mirrors + "; the reflector is " + where + "; " + why + reflectedMeshes(d);
+}
+
+std::string prefilterSentence(PlanReason code, const ReasonDetails& d) {
+    switch (code) {
+    case PlanReason::PrefilterSharp:
+        return "GGX pre-filter not needed: the reflector's roughness is 0 (a sharp reflection reads the map "
+               "itself)";
+    case PlanReason::PrefilterMipFilter:
+        return "GGX pre-filter not needed: settings.glossyFilter is mip (the reflector reads its map's mip "
+               "chain at LOD roughness × " +
+               std::to_string(d.levels - 1) + ")";
+    case PlanReason::PrefilterReused:
+        return "GGX pre-filter reused: the map did not change: the chain is reused";
+    case PlanReason::PrefilterNoMap:
+        return "no GGX pre-filtered chain: the reflector has no map";
+    default:
+        break;
+    }
+    // Which levels of the chain the reflector's roughness reads between.
+    const double at = d.roughness * (d.levels - 1);
+    const int below = static_cast<int>(std::floor(at));
+    char roughness[32];
+    std::snprintf(roughness, sizeof roughness, "%.3g", d.roughness);
+    const std::string reads =
+        at == below ? "reads level " + std::to_string(below)
+                    : "reads between levels " + std::to_string(below) + " and " + std::to_string(below + 1);
+    const char* why = code == PlanReason::PrefilterMapRendered ? "the map is rendered this frame"
+                      : code == PlanReason::PrefilterSettingsChanged
+                          ? "the chain was filtered with other settings (prefilterSamples)"
+                          : "no chain yet";
+    return "convolves " + d.node + "'s map with the GGX lobe into " + std::to_string(d.levels) +
+           " levels (roughness r_k = k/" + std::to_string(d.levels - 1) + "; " + roughness + " " + reads +
+           "), " + std::to_string(d.samples) + " samples a texel; " + why;
+}
+
+using Sentence = std::string (*)(PlanReason, const ReasonDetails&);
+
+struct CodeEntry {
+    PlanReason code;
+    std::string_view name;
+    Sentence sentence;
+};
+
+// Every code, in the enum's order: its name and the function that words it.
+constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
+    {PlanReason::LightLimit, "light-limit", lightSentence},
+    {PlanReason::ShadowsOff, "shadows-off", lightSentence},
+    {PlanReason::NoShadowCasters, "no-shadow-casters", lightSentence},
+    {PlanReason::NoShadowReceivers, "no-shadow-receivers", lightSentence},
+    {PlanReason::ShadowedLightLimit, "shadowed-light-limit", lightSentence},
+    {PlanReason::ShadowMapReused, "shadow-map-reused", lightSentence},
+    {PlanReason::ShadowFirstMap, "shadow-first-map", lightSentence},
+    {PlanReason::ShadowChanged, "shadow-changed", lightSentence},
+    {PlanReason::MainHalfFloat, "main-half-float", mainSentence},
+    {PlanReason::MainSrgb, "main-srgb", mainSentence},
+    {PlanReason::MainIntoOutput, "main-into-output", mainSentence},
+    {PlanReason::CompositeToFloat, "composite-to-float", compositeSentence},
+    {PlanReason::CompositeCopiesSrgb, "composite-copies-srgb", compositeSentence},
+    {PlanReason::CompositeStencilBlend, "composite-stencil-blend", compositeSentence},
+    {PlanReason::CompositeFresnelBlend, "composite-fresnel-blend", compositeSentence},
+    {PlanReason::CompositeNestedBlend, "composite-nested-blend", compositeSentence},
+    {PlanReason::CompositeNotNeeded, "composite-not-needed", compositeSentence},
+    {PlanReason::MirrorMaskStencil, "mirror-mask-stencil", mirrorPassSentence},
+    {PlanReason::MirrorMaskCount, "mirror-mask-count", mirrorPassSentence},
+    {PlanReason::MirrorIntoTexture, "mirror-into-texture", mirrorPassSentence},
+    {PlanReason::MirrorInStencil, "mirror-in-stencil", mirrorPassSentence},
+    {PlanReason::MirrorSurface, "mirror-surface", mirrorPassSentence},
+    {PlanReason::MirrorSizeInvalid, "mirror-size-invalid", mirrorSkipSentence},
+    {PlanReason::MirrorNoPlane, "mirror-no-plane", mirrorSkipSentence},
+    {PlanReason::MirrorEdgeOn, "mirror-edge-on", mirrorSkipSentence},
+    {PlanReason::MirrorBehind, "mirror-behind", mirrorSkipSentence},
+    {PlanReason::MirrorOutsideView, "mirror-outside-view", mirrorSkipSentence},
+    {PlanReason::MirrorOutsideParent, "mirror-outside-parent", mirrorSkipSentence},
+    {PlanReason::MirrorBelowPixel, "mirror-below-pixel", mirrorSkipSentence},
+    {PlanReason::MirrorDepthLimit, "mirror-depth-limit", mirrorSkipSentence},
+    {PlanReason::MirrorViewLimit, "mirror-view-limit", mirrorSkipSentence},
+    {PlanReason::MirrorNoReflectionMatrix, "mirror-no-reflection-matrix", mirrorSkipSentence},
+    {PlanReason::MirrorNoObliqueProjection, "mirror-no-oblique-projection", mirrorSkipSentence},
+    {PlanReason::MirrorStencilTooDeep, "mirror-stencil-too-deep", mirrorSkipSentence},
+    {PlanReason::MirrorDepthZero, "mirror-depth-zero", mirrorSkipSentence},
+    {PlanReason::MapMirrorDepthZero, "map-mirror-depth-zero", mirrorDroppedSentence},
+    {PlanReason::MirrorOccluded, "mirror-occluded", mirrorDroppedSentence},
+    {PlanReason::MirrorOccludedInTile, "mirror-occluded-in-tile", mirrorDroppedSentence},
+    {PlanReason::MirrorNoTexture, "mirror-no-texture", mirrorDroppedSentence},
+    {PlanReason::EnvmapFirstMap, "envmap-first-map", envmapSentence},
+    {PlanReason::EnvmapAlways, "envmap-always", envmapSentence},
+    {PlanReason::EnvmapChanged, "envmap-changed", envmapSentence},
+    {PlanReason::EnvmapOutOfSight, "envmap-out-of-sight", envmapSentence},
+    {PlanReason::EnvmapReusedOnce, "envmap-reused-once", envmapSentence},
+    {PlanReason::EnvmapUnchanged, "envmap-unchanged", envmapSentence},
+    {PlanReason::EnvmapNotAllocated, "envmap-not-allocated", envmapSentence},
+    {PlanReason::PrefilterFirstChain, "prefilter-first-chain", prefilterSentence},
+    {PlanReason::PrefilterMapRendered, "prefilter-map-rendered", prefilterSentence},
+    {PlanReason::PrefilterSettingsChanged, "prefilter-settings-changed", prefilterSentence},
+    {PlanReason::PrefilterSharp, "prefilter-sharp", prefilterSentence},
+    {PlanReason::PrefilterMipFilter, "prefilter-mip-filter", prefilterSentence},
+    {PlanReason::PrefilterReused, "prefilter-reused", prefilterSentence},
+    {PlanReason::PrefilterNoMap, "prefilter-no-map", prefilterSentence},
+}};
+
+constexpr bool inEnumOrder() {
+    for (std::size_t i = 0; i < kCodes.size(); ++i)
+        if (kCodes[i].code != static_cast<PlanReason>(i))
+            return false;
+    return true;
+}
+static_assert(inEnumOrder(), "kCodes lists every code once, at its enum value");
+
+const CodeEntry& entryOf(PlanReason code) {
+    return kCodes.at(static_cast<std::size_t>(code));
+}
+
+} // namespace
+
+std::string_view toString(PlanReason code) {
+    return entryOf(code).name;
+}
+
+std::ostream& operator<<(std::ostream& out, PlanReason code) {
+    return out << toString(code);
+}
+
+std::string formatReason(PlanReason code, const ReasonDetails& details) {
+    return entryOf(code).sentence(code, details);
+}
+
+} // namespace speculum::render

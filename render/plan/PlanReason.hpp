@@ -1,0 +1,143 @@
+#pragma once
+
+#include "render/frame/Reflector.hpp"
+
+#include <cstddef>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace speculum::render {
+
+// Why a pass runs, or why an effect got none: one code per sentence the plan can show. Tools and tests
+// compare codes (and `explain --json` prints toString's name); the sentence, formatReason's, is for people.
+enum class PlanReason {
+    // A light and its shadow map.
+    LightLimit,         // skip: more than kMaxLights lights
+    ShadowsOff,         // skip
+    NoShadowCasters,    // skip
+    NoShadowReceivers,  // skip
+    ShadowedLightLimit, // skip: more than kMaxShadowedLights lights cast shadows
+    ShadowMapReused,    // skip
+    ShadowFirstMap,     // pass: the light has no map yet
+    ShadowChanged,      // pass: the light or its casters changed
+    // The camera's colour buffer: the main pass (by its buffer) and the composite.
+    MainHalfFloat,
+    MainSrgb,
+    MainIntoOutput, // the output's own 8-bit sRGB buffer
+    CompositeToFloat,
+    CompositeCopiesSrgb,
+    CompositeStencilBlend, // a stencil mirror's blend needs radiance above 1
+    CompositeFresnelBlend, // … and its Fresnel weight keeps it from being pre-weighted
+    CompositeNestedBlend,  // … and it blends inside another stencil mirror's reflection
+    CompositeNotNeeded,    // skip: the frame is drawn straight into the output
+    // A planar mirror's passes.
+    MirrorMaskStencil, // marks its pixels in the stencil buffer
+    MirrorMaskCount,   // counts its pixels (a texture-technique mirror)
+    MirrorIntoTexture,
+    MirrorInStencil,
+    MirrorSurface,
+    // A planar mirror that gets no view where it is seen (directly, in mirrors, in a face of the map).
+    MirrorSizeInvalid,
+    MirrorNoPlane, // its transform leaves no plane (details.error)
+    MirrorEdgeOn,
+    MirrorBehind,
+    MirrorOutsideView,
+    MirrorOutsideParent, // outside the reflected view of the mirror it is seen in
+    MirrorBelowPixel,
+    MirrorDepthLimit,
+    MirrorViewLimit,           // kMaxMirrorViews in the frame or the face
+    MirrorNoReflectionMatrix,  // details.error
+    MirrorNoObliqueProjection, // details.error
+    MirrorStencilTooDeep,
+    MirrorDepthZero,    // settings.mirrorDepth is 0
+    MapMirrorDepthZero, // the reflector's mirrorDepth is 0: no mirror reflects in its map
+    // A planar mirror found without a reflection while the frame runs (it, or a mirror it is seen in).
+    MirrorOccluded,
+    MirrorOccludedInTile,
+    MirrorNoTexture, // its reflection texture could not be allocated (details.error)
+    // The curved reflector's environment map.
+    EnvmapFirstMap,   // pass: no map yet
+    EnvmapAlways,     // pass: update "always"
+    EnvmapChanged,    // pass: something it sees changed
+    EnvmapOutOfSight, // skip: the reflector is seen neither directly nor in a mirror
+    EnvmapReusedOnce,
+    EnvmapUnchanged,
+    EnvmapNotAllocated, // skip while running
+    // The reflector's GGX pre-filtered chain.
+    PrefilterFirstChain,      // pass: no chain yet
+    PrefilterMapRendered,     // pass: the map is rendered this frame
+    PrefilterSettingsChanged, // pass: the chain was filtered with another sample count
+    PrefilterSharp,           // skip: roughness 0
+    PrefilterMipFilter,       // skip: settings.glossyFilter is mip
+    PrefilterReused,
+    PrefilterNoMap, // skip while running: the map could not be allocated or drawn
+};
+
+inline constexpr std::size_t kPlanReasonCount = static_cast<std::size_t>(PlanReason::PrefilterNoMap) + 1;
+
+// The code's stable kebab-case name ("mirror-outside-view"): explain's JSON "code".
+std::string_view toString(PlanReason code);
+
+// Writes the code's name, as test failures and logs show it.
+std::ostream& operator<<(std::ostream& out, PlanReason code);
+
+// A big mesh that a mirror's or the environment map's pass draws at its simplified level, or whole.
+struct ReflectedMesh {
+    std::string name{};
+    std::size_t triangles = 0;
+    std::optional<std::size_t> simplifiedTriangles{}; // none: drawn whole (settings.simplifyReflections off)
+    double simplificationError = 0.0;                 // of the simplified mesh, as a fraction of its size
+};
+
+// What a reason's sentence names besides its code; each code reads only the fields its sentence needs.
+struct ReasonDetails {
+    // Where a mirror is seen (its views' passes and its skips), or the reflector (its map's pass).
+    std::vector<std::string> seenIn{}; // the mirrors it is seen in, outermost first; empty: seen directly
+    std::string
+        mapFace{}; // the face of the map it is planned in ("Ball's map, +X face"); empty: the camera's
+    // The pixels (texels in the map) a mirror covers. None: a component of a direct-fill map, which has no
+    // pixels to count and draws its reflection with a clip plane instead of an oblique near plane.
+    std::optional<double> area{};
+
+    std::string node{};  // a node named besides the target: the reflector of a map, the mirror that blends
+    std::string error{}; // the failure's own words
+    int limit = 0;       // the limit reached: lights, shadowed lights, mirror depth, mirror views
+
+    // A shadow pass.
+    int mapSize = 0;
+    int pcf = 1;
+    std::size_t casters = 0;
+    std::optional<int> cubeFacesWithCasters{}; // a point light's cube map; none: a 2D map
+
+    // The main pass.
+    std::size_t objects = 0;
+    std::size_t lights = 0;
+    bool preWeighted = false; // FramePlan::preWeighted
+
+    // A mirror's passes.
+    bool roughStencil = false; // a rough stencil mirror, drawn into a texture to be filtered
+    double reflectivity = 1.0;
+    double roughness = 0.0; // also the reflector's, for its pre-filter
+    int glossyTaps = 0;     // a rough mirror's filter: taps a pixel over the GGX footprint; 0: one mip level
+
+    // The environment map's pass.
+    ReflectorMap map = ReflectorMap::Cube;
+    ReflectorFill fill = ReflectorFill::Resampled;
+    int resolution = 0;
+    std::optional<int> mapMirrorDepth{}; // how deep planar mirrors reflect in the map; none: no mirrors
+
+    // The pre-filtered chain (and the map's mip chain, for the mip filter).
+    int levels = 0;
+    int samples = 0;
+
+    // Mirror and environment map passes: the big meshes they draw simplified, or whole.
+    std::vector<ReflectedMesh> bigMeshes{};
+};
+
+// The sentence `explain`, the editor's Render Passes panel and the timing tools show for a code.
+std::string formatReason(PlanReason code, const ReasonDetails& details);
+
+} // namespace speculum::render
