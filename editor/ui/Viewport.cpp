@@ -278,6 +278,9 @@ void Viewport::paintGL() {
     render::RenderOptions options;
     options.resolutionScale = level.scale;
     m_lastReport = m_renderer->render(input, frameTarget(composedAsStored), options);
+    // A map did not fit at its planned size: the next frame draws it at one that does.
+    if (m_lastReport.drawAgain)
+        QTimer::singleShot(0, this, qOverload<>(&Viewport::update));
     m_lastFrameMs = double(m_frameClock.nsecsElapsed()) * 1e-6;
     m_lastFrameTime = time;
     m_lastLevel = level;

@@ -82,24 +82,19 @@ base::Status checkFramebuffer(GLenum target) {
 SizeFallback::Fitted SizeFallback::fit(int requested, int minimum,
                                        const std::function<base::Status(int)>& allocate) {
     Fitted fitted;
-    int size = std::max(requested, minimum);
-    if (size >= m_failedAt) {
-        fitted.reason = m_reason;
-        while (size >= m_failedAt && size > minimum)
-            size = std::max(minimum, size / 2);
-        if (size >= m_failedAt)
-            return fitted; // even the minimum failed before
-    }
+    int size = belowFailure(requested, minimum, m_failed);
+    if (size != std::max(requested, minimum))
+        fitted.reason = m_failed.reason;
+    if (size == 0)
+        return fitted; // even the minimum failed before
     for (;;) {
         base::Status done = allocate(size);
         if (done) {
             fitted.size = size;
             return fitted;
         }
-        if (size < m_failedAt) {
-            m_failedAt = size;
-            m_reason = done.error();
-        }
+        if (size < m_failed.size)
+            m_failed = {size, done.error()};
         if (fitted.reason.empty())
             fitted.reason = done.error();
         if (size <= minimum)

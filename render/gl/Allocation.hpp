@@ -1,8 +1,8 @@
 #pragma once
 
 #include "base/Result.hpp"
+#include "render/plan/GpuLimits.hpp"
 
-#include <climits>
 #include <cstddef>
 #include <epoxy/gl.h>
 #include <functional>
@@ -35,10 +35,17 @@ base::Status checkFramebuffer(GLenum target = GL_FRAMEBUFFER);
 // tests/support/DebugOutput, does not count them as errors).
 bool allocationBeingChecked();
 
+// What allocating a map the frame planned found.
+enum class PlannedAllocation {
+    Done,     // the map is there, at the planned size
+    FellBack, // the planned size failed: the largest that works (or that none does) is remembered for the
+              // next frame's plan; this frame has no map
+    Failed,   // another error (warned): no map, and a map of another size would not help
+};
+
 // Chooses the largest size, from the one asked for down by halving, whose allocation works, and remembers
-// the sizes that failed, so a huge allocation that did not fit is not tried again every frame. One
-// SizeFallback per kind of allocation (2D shadow maps, cube shadow maps, each environment map layout),
-// kept as long as the context.
+// the sizes that failed, so a huge allocation that did not fit is not tried again every frame: the planner
+// plans below them (MapLimits). One SizeFallback per kind of map (MapKind), kept as long as the context.
 class SizeFallback {
 public:
     struct Fitted {
@@ -46,15 +53,15 @@ public:
         std::string reason; // why the first size tried (requested or remembered) failed, if it did
     };
     // Calls allocate(size) for the requested size, or the largest half of it below every size that
-    // failed before, then halves after each failure down to `minimum`. allocate() must leave nothing
-    // behind when it fails.
+    // failed before (belowFailure), then halves after each failure down to `minimum`. allocate() must
+    // leave nothing behind when it fails.
     Fitted fit(int requested, int minimum, const std::function<base::Status(int)>& allocate);
-    // The smallest size that failed (INT_MAX: none).
-    int failedAt() const { return m_failedAt; }
+    // The smallest size that failed (kNoFailedSize: none), and why.
+    int failedAt() const { return m_failed.size; }
+    const FailedAllocation& failed() const { return m_failed; }
 
 private:
-    int m_failedAt = INT_MAX;
-    std::string m_reason;
+    FailedAllocation m_failed;
 };
 
 } // namespace speculum::render::gl

@@ -1,5 +1,5 @@
-// The one GL call behind GpuLimits: the struct and fitToGpuLimits belong to the GL-free core, so that
-// the planner's tests fit sizes without a context.
+// The one GL call behind GpuLimits: the struct and the fitting of map sizes belong to the GL-free core, so
+// that the planner's tests fit sizes without a context.
 #include "render/gl/Objects.hpp"
 #include "render/plan/GpuLimits.hpp"
 

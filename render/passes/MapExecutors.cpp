@@ -2,6 +2,8 @@
 // mirror passes planned inside it) and its GGX pre-filtered chain.
 #include "render/passes/PassExecutors.hpp"
 
+#include <algorithm>
+
 namespace speculum::render::passes {
 
 PassResult runShadow(const PlannedPass& pass, FrameExecution& frame) {
@@ -10,6 +12,12 @@ PassResult runShadow(const PlannedPass& pass, FrameExecution& frame) {
     const ShadowPlan* shadow = frame.plan.shadowOf(pass.lightIndex);
     if (!shadow) // the planner plans every shadow pass's map: nothing to draw into otherwise
         return {false, {}};
+    const std::vector<int>& missing = frame.shadowsMissing;
+    if (std::find(missing.begin(), missing.end(), pass.lightIndex) != missing.end()) {
+        frame.skipped.push_back(
+            {pass.target, PlanReason::ShadowMapNotAllocated, {.mapSize = shadow->mapSize}});
+        return {false, {}};
+    }
     r.shadows.render(frame.input, *shadow, r.meshes, r.shadowProgram, &r.textures);
     frame.commits.shadowSignatures[pass.lightIndex] = shadow->signature;
     return {};

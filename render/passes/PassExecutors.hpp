@@ -60,6 +60,9 @@ struct FrameExecution {
     std::vector<std::string>& warnings;
     // The reflector's map could be allocated for this frame's settings; false: its Envmap pass does not run.
     bool envmapAllocated = true;
+    // Lights whose planned shadow map could not be allocated this frame: their Shadow pass does not run, and
+    // they light without shadows.
+    std::vector<int> shadowsMissing;
     // The caller's target, which only the composite writes: larger than `target` (the size every other
     // pass draws at) for a preview at a reduced resolution; null: `target` itself.
     const RenderTarget* output = nullptr;

@@ -70,13 +70,12 @@ bool ReflectorPass::hasMap(const Reflector& reflector) const {
     return m_capture && m_settingsKey == envmapSettingsKey(reflector);
 }
 
-int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>& warnings) {
+gl::PlannedAllocation ReflectorPass::allocate(const Reflector& reflector,
+                                              std::vector<std::string>& warnings) {
     const envmap::CaptureSettings wanted = captureSettings(reflector);
-    const std::pair<int, int> kind{static_cast<int>(wanted.type),
-                                   wanted.type == envmap::MapType::Cube ? 0 : static_cast<int>(wanted.fill)};
     std::string otherError;
-    const gl::SizeFallback::Fitted fitted =
-        m_fallbacks[kind].fit(reflector.resolution, kMinEnvmapResolution, [&](int n) -> base::Status {
+    const gl::SizeFallback::Fitted fitted = m_fallbacks[envmapKind(reflector)].fit(
+        reflector.resolution, kMinEnvmapResolution, [&](int n) -> base::Status {
             envmap::CaptureSettings settings = wanted;
             settings.resolution = n;
             if (m_capture && sameSettings(m_capture->settings(), settings))
@@ -95,24 +94,22 @@ int ReflectorPass::allocate(const Reflector& reflector, std::vector<std::string>
             m_capture = std::move(*created);
             return base::Done{};
         });
-    const std::string name = "reflector " + base::quoted(reflector.name);
     if (!otherError.empty()) {
         m_capture.reset();
-        warnings.push_back(name + ": " + otherError);
-        return 0;
+        warnings.push_back("reflector " + base::quoted(reflector.name) + ": " + otherError);
+        return gl::PlannedAllocation::Failed;
     }
     if (fitted.size == reflector.resolution)
-        return fitted.size;
-    const std::string asked = std::to_string(reflector.resolution) + " " +
-                              std::string(names::fileName(names::kReflectorMaps, reflector.map)) +
-                              " environment map";
-    if (fitted.size == 0)
-        warnings.push_back(name + ": the " + asked + " " + fitted.reason + ", nor did any down to " +
-                           std::to_string(kMinEnvmapResolution) + "; the reflector is drawn without it");
-    else
-        warnings.push_back(name + ": the " + asked + " " + fitted.reason + "; using " +
-                           std::to_string(fitted.size));
-    return fitted.size;
+        return gl::PlannedAllocation::Done;
+    // The map of the size that works stays allocated for the next frame; this one's plan is for the other.
+    warnings.push_back(envmapFallbackWarning(reflector, reflector.resolution, fitted.reason, fitted.size));
+    return gl::PlannedAllocation::FellBack;
+}
+
+void ReflectorPass::failedSizes(std::map<MapKind, FailedAllocation>& failed) const {
+    for (const auto& [kind, fallback] : m_fallbacks)
+        if (fallback.failedAt() != kNoFailedSize)
+            failed[kind] = fallback.failed();
 }
 
 base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,

@@ -13,7 +13,6 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace speculum::render::passes {
@@ -34,12 +33,14 @@ public:
     // Selects the lit shaders' variant for the frame's lights (gl::Program::select) in every program.
     base::Status selectLighting(const std::string& variant, bool drawVariants);
 
-    // Allocates (or keeps) the reflector's map at the largest resolution up to its own that the GPU holds
-    // (halving from there) and returns it; 0 if not even the smallest fits, or on another error (both
-    // warned). A smaller resolution than asked adds a warning naming the reflector and both sizes.
-    // Resolutions that failed are remembered per map layout. The renderer plans and draws the frame with
-    // the resolution returned; the map is rendered by capture().
-    int allocate(const Reflector& reflector, std::vector<std::string>& warnings);
+    // Allocates (or keeps) the reflector's map at the resolution the frame planned, its own. The planner
+    // plans below every resolution of its layout that failed before (failedSizes), so a failure here is of
+    // one never tried: the largest that works is then found by halving and remembered, with a warning
+    // naming the reflector and both sizes, for the next frame to plan; this frame has no map (FellBack).
+    // Another error (a shader) is warned (Failed). The map is rendered by capture().
+    gl::PlannedAllocation allocate(const Reflector& reflector, std::vector<std::string>& warnings);
+    // The smallest resolution of each layout that failed to allocate, for the planner.
+    void failedSizes(std::map<MapKind, FailedAllocation>& failed) const;
 
     // Renders the map for `input.reflector` (re-creating its textures when the map settings changed) as
     // `plan` says: from its capture point, each face or component with the mirror passes planned in it,
@@ -81,10 +82,10 @@ private:
     std::uint64_t m_settingsKey = 0; // of the map last rendered into m_capture; 0: not rendered yet
     std::uint64_t m_captures = 0;    // captures so far: the chain knows which one it filtered
     std::uint64_t m_chainOf = 0;     // the capture the chain holds (0: none)
-    std::optional<envmap::GgxPrefilter> m_prefilter;             // built by the first Prefilter pass
-    std::map<std::pair<int, int>, gl::SizeFallback> m_fallbacks; // by map type and fill
-    glm::dvec3 m_centre{0.0};                                    // the capture point of the map, world space
-    gl::Program m_warp;                                          // mesh.vert with ENVMAP_WARP + mesh.frag
+    std::optional<envmap::GgxPrefilter> m_prefilter; // built by the first Prefilter pass
+    std::map<MapKind, gl::SizeFallback> m_fallbacks; // by map layout and fill
+    glm::dvec3 m_centre{0.0};                        // the capture point of the map, world space
+    gl::Program m_warp;                              // mesh.vert with ENVMAP_WARP + mesh.frag
     gl::Program m_warpFlat;   // shadow.vert with ENVMAP_WARP + flat.frag: mirror masks in the warp
     gl::Program m_warpMirror; // mesh.vert with ENVMAP_WARP + mirror.frag: mirror surfaces in the warp
     gl::Program m_surface;    // mesh.vert + reflector.frag

@@ -1,6 +1,5 @@
 #include "render/passes/ShadowMaps.hpp"
 
-#include "base/Printable.hpp"
 #include "render/gl/Memory.hpp"
 #include "render/math/Projection.hpp"
 #include "render/passes/MainPass.hpp"
@@ -91,35 +90,36 @@ base::Status ShadowMaps::allocateMap(int lightIndex, bool cube, int size, int pc
     return base::Done{};
 }
 
-int ShadowMaps::allocate(const FrameInput& input, const ShadowPlan& shadow,
-                         std::vector<std::string>& warnings) {
+gl::PlannedAllocation ShadowMaps::allocate(const FrameInput& input, const ShadowPlan& shadow,
+                                           std::vector<std::string>& warnings) {
     const int lightIndex = shadow.light;
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
-    const int requested = shadow.mapSize;
+    const int planned = shadow.mapSize;
     const bool cube = shadow.frustum.cube;
     gl::SizeFallback& fallback = cube ? m_fallbackCube : m_fallback2D;
     const gl::SizeFallback::Fitted fitted =
-        fallback.fit(requested, kMinShadowMapSize, [&](int size) -> base::Status {
+        fallback.fit(planned, kMinShadowMapSize, [&](int size) -> base::Status {
             if (const ShadowMap* map = find(lightIndex);
                 map && map->depth && map->cube == cube && map->size == size)
                 return base::Done{};
             return allocateMap(lightIndex, cube, size, shadow.pcf);
         });
+    if (fitted.size != planned) {
+        // A map of another size would not match the plan's frustum: the light goes without this frame.
+        m_maps.erase(lightIndex);
+        warnings.push_back(shadowFallbackWarning(light, lightIndex, planned, fitted.reason, fitted.size));
+        return gl::PlannedAllocation::FellBack;
+    }
     if (auto it = m_maps.find(lightIndex); it != m_maps.end())
         useFilter(it->second, shadow.pcf);
-    if (fitted.size == requested)
-        return requested;
-    const std::string name =
-        light.name.empty() ? "light " + std::to_string(lightIndex) : "light " + base::quoted(light.name);
-    const std::string asked = std::to_string(requested) + "²" + (cube ? " cube" : "");
-    if (fitted.size == 0)
-        warnings.push_back(name + ": the " + asked + " shadow map " + fitted.reason +
-                           ", nor did any down to " + std::to_string(kMinShadowMapSize) +
-                           "²; the light casts no shadows");
-    else
-        warnings.push_back(name + ": the " + asked + " shadow map " + fitted.reason + "; using " +
-                           std::to_string(fitted.size) + "²");
-    return fitted.size;
+    return gl::PlannedAllocation::Done;
+}
+
+void ShadowMaps::failedSizes(std::map<MapKind, FailedAllocation>& failed) const {
+    if (m_fallback2D.failedAt() != kNoFailedSize)
+        failed[MapKind::Shadow2D] = m_fallback2D.failed();
+    if (m_fallbackCube.failedAt() != kNoFailedSize)
+        failed[MapKind::ShadowCube] = m_fallbackCube.failed();
 }
 
 namespace {
@@ -210,7 +210,7 @@ const ShadowMap* ShadowMaps::find(int lightIndex) const {
 
 void ShadowMaps::render(const FrameInput& input, const ShadowPlan& shadow, gl::MeshCache& meshes,
                         const gl::Program& program, gl::TextureCache* textures) {
-    // The renderer already fitted the size to the GPU's limits (fitToGpuLimits, allocate).
+    // The planner fitted the size to the GPU's limits and to the sizes that failed (fitShadowMapSize).
     const int size = shadow.mapSize;
     const math::ShadowFrustum& frustum = shadow.frustum;
     ShadowMap& map = prepare(shadow);

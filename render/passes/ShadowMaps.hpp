@@ -10,6 +10,7 @@
 #include "render/plan/FramePlan.hpp"
 
 #include <array>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -37,13 +38,16 @@ struct ShadowMap {
 
 class ShadowMaps {
 public:
-    // Allocates (or keeps) the depth map `shadow` plans (a cube map where its frustum is one) at the
-    // largest size up to shadow.mapSize that the GPU holds, halving from there, and returns that size; 0
-    // if not even the smallest map fits. A smaller size than asked adds a warning naming the light and
-    // both sizes. Sizes that failed are remembered: later frames go straight to the size that worked. The
-    // renderer plans and draws the frame with the size returned. The map's filtering is set for
-    // shadow.pcf, which may change without the map being drawn again (PCF is a lookup setting).
-    int allocate(const FrameInput& input, const ShadowPlan& shadow, std::vector<std::string>& warnings);
+    // Allocates (or keeps) the depth map `shadow` plans (a cube map where its frustum is one) at
+    // shadow.mapSize. The planner plans below every size that failed before (failedSizes), so a failure
+    // here is of a size never tried: the largest that works is then found by halving and remembered, with
+    // a warning naming the light and both sizes, for the next frame to plan; this frame the light has no
+    // map (FellBack). The map's filtering is set for shadow.pcf, which may change without the map being
+    // drawn again (PCF is a lookup setting).
+    gl::PlannedAllocation allocate(const FrameInput& input, const ShadowPlan& shadow,
+                                   std::vector<std::string>& warnings);
+    // The smallest 2D and cube map sizes that failed to allocate, for the planner.
+    void failedSizes(std::map<MapKind, FailedAllocation>& failed) const;
     // Renders the depth map `shadow` plans, through its frustum, from every shadow caster. Casters with an
     // alpha mask (Material::alphaMode) draw with the program's SHADOW_MASK variant, which discards where
     // the material is cut away, so their shadows have the same holes; that needs `textures` (null: they

@@ -142,9 +142,11 @@ struct EnvmapPlan {
 // A light whose shadow map the main pass samples this frame, rendered now or reused: its frustum is
 // computed once, here, and used by the signature, the allocation, the shadow pass and every lookup.
 struct ShadowPlan {
-    int light = -1;  // index into FrameInput::lights
-    int mapSize = 0; // texels per side (per cube face)
-    int pcf = 1;     // the lookup's filter width
+    int light = -1; // index into FrameInput::lights
+    // Texels per side (per cube face): the light's own, within the GPU's limits and below every size of its
+    // kind that failed to allocate (fitShadowMapSize).
+    int mapSize = 0;
+    int pcf = 1; // the lookup's filter width
     math::ShadowFrustum frustum;
     std::uint64_t signature = 0; // shadowSignature: what the map holds
     bool render = false;         // a Shadow pass draws it this frame; false: the map is reused
@@ -178,6 +180,14 @@ struct FramePlan {
     // Per item (by index into FrameInput::items): the mirrors' views and the environment map draw it at its
     // simplified level (MeshData::coarse). Empty when no reflected view draws a simplified mesh.
     std::vector<bool> coarseItems;
+    // The reflector's map resolution: its own, within the GPU's limits and below every size of its layout
+    // that failed to allocate (fitEnvmapResolution); 0 without a reflector, or where no map of its layout
+    // fits. The map is allocated, drawn and looked up at this resolution (plannedInput).
+    int reflectorResolution = 0;
+    // What the frame cannot do as the scene asks, found while planning: a map larger than the GPU holds, or
+    // of a size that failed to allocate in an earlier frame, and the size planned instead. The renderer
+    // reports them first among FrameReport::warnings.
+    std::vector<std::string> warnings;
 
     // The shadow plan of a light, or nullptr if the main pass does not sample a map of it.
     const ShadowPlan* shadowOf(int lightIndex) const;

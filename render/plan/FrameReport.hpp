@@ -41,6 +41,10 @@ struct FrameReport {
     std::vector<std::string> warnings;
     // Non-empty: the frame could not be drawn at all (its colour buffer did not fit); also a warning.
     std::string error;
+    // A map failed to allocate at the size planned, one never tried before: the frame went without it (see
+    // `skipped` and `warnings`), and the next frame, planned with the size found to work, draws it. A still
+    // draws such a frame again; the editor's viewport draws another.
+    bool drawAgain = false;
     TargetMemory memory;
     // The size the frame was drawn at: the target's, or less with RenderOptions::resolutionScale (then
     // scaled up to the target).

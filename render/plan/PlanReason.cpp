@@ -83,8 +83,14 @@ std::string lightSentence(PlanReason code, const ReasonDetails& d) {
     case PlanReason::ShadowedLightLimit:
         return "shadow pass skipped: at most " + std::to_string(d.limit) +
                " lights cast shadows; this one lights without them";
+    case PlanReason::ShadowMapDoesNotFit:
+        return "shadow pass skipped: no shadow map of its kind fits in GPU memory (see the warnings); this "
+               "light lights without shadows";
     case PlanReason::ShadowMapReused:
         return "shadow map reused: light and casters unchanged since the last frame";
+    case PlanReason::ShadowMapNotAllocated:
+        return "no shadow this frame: its " + std::to_string(d.mapSize) +
+               "² map could not be allocated (see the warnings)";
     default:
         break;
     }
@@ -241,6 +247,9 @@ std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
     case PlanReason::EnvmapOutOfSight:
         return "environment pass not needed: the reflector is outside the view and outside every mirror's "
                "reflected view";
+    case PlanReason::EnvmapDoesNotFit:
+        return "environment pass skipped: no map of its layout fits in GPU memory (see the warnings); the "
+               "reflector is drawn without it";
     case PlanReason::EnvmapReusedOnce:
         return "environment map reused: update is \"once\" and the map was rendered";
     case PlanReason::EnvmapUnchanged:
@@ -315,9 +324,11 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::NoShadowCasters, "no-shadow-casters", lightSentence},
     {PlanReason::NoShadowReceivers, "no-shadow-receivers", lightSentence},
     {PlanReason::ShadowedLightLimit, "shadowed-light-limit", lightSentence},
+    {PlanReason::ShadowMapDoesNotFit, "shadow-map-does-not-fit", lightSentence},
     {PlanReason::ShadowMapReused, "shadow-map-reused", lightSentence},
     {PlanReason::ShadowFirstMap, "shadow-first-map", lightSentence},
     {PlanReason::ShadowChanged, "shadow-changed", lightSentence},
+    {PlanReason::ShadowMapNotAllocated, "shadow-map-not-allocated", lightSentence},
     {PlanReason::MainHalfFloat, "main-half-float", mainSentence},
     {PlanReason::MainSrgb, "main-srgb", mainSentence},
     {PlanReason::MainIntoOutput, "main-into-output", mainSentence},
@@ -353,6 +364,7 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::EnvmapAlways, "envmap-always", envmapSentence},
     {PlanReason::EnvmapChanged, "envmap-changed", envmapSentence},
     {PlanReason::EnvmapOutOfSight, "envmap-out-of-sight", envmapSentence},
+    {PlanReason::EnvmapDoesNotFit, "envmap-does-not-fit", envmapSentence},
     {PlanReason::EnvmapReusedOnce, "envmap-reused-once", envmapSentence},
     {PlanReason::EnvmapUnchanged, "envmap-unchanged", envmapSentence},
     {PlanReason::EnvmapNotAllocated, "envmap-not-allocated", envmapSentence},

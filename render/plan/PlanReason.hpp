@@ -15,14 +15,16 @@ namespace speculum::render {
 // compare codes (and `explain --json` prints toString's name); the sentence, formatReason's, is for people.
 enum class PlanReason {
     // A light and its shadow map.
-    LightLimit,         // skip: more than kMaxLights lights
-    ShadowsOff,         // skip
-    NoShadowCasters,    // skip
-    NoShadowReceivers,  // skip
-    ShadowedLightLimit, // skip: more than kMaxShadowedLights lights cast shadows
-    ShadowMapReused,    // skip
-    ShadowFirstMap,     // pass: the light has no map yet
-    ShadowChanged,      // pass: the light or its casters changed
+    LightLimit,            // skip: more than kMaxLights lights
+    ShadowsOff,            // skip
+    NoShadowCasters,       // skip
+    NoShadowReceivers,     // skip
+    ShadowedLightLimit,    // skip: more than kMaxShadowedLights lights cast shadows
+    ShadowMapDoesNotFit,   // skip: no map of its kind fits in GPU memory
+    ShadowMapReused,       // skip
+    ShadowFirstMap,        // pass: the light has no map yet
+    ShadowChanged,         // pass: the light or its casters changed
+    ShadowMapNotAllocated, // skip while running: its planned map (details.mapSize) could not be allocated
     // The camera's colour buffer: the main pass (by its buffer) and the composite.
     MainHalfFloat,
     MainSrgb,
@@ -63,6 +65,7 @@ enum class PlanReason {
     EnvmapAlways,     // pass: update "always"
     EnvmapChanged,    // pass: something it sees changed
     EnvmapOutOfSight, // skip: the reflector is seen neither directly nor in a mirror
+    EnvmapDoesNotFit, // skip: no map of its layout fits in GPU memory
     EnvmapReusedOnce,
     EnvmapUnchanged,
     EnvmapNotAllocated, // skip while running

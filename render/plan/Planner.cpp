@@ -160,15 +160,17 @@ glm::dmat4 cameraProjection(const FrameInput& input, const PlanViewport& viewpor
 
 namespace {
 
-// The one definition of the shadow signature; `frustum` null: the scene has nothing to receive a shadow.
-std::uint64_t hashShadow(const FrameInput& input, int lightIndex, const math::ShadowFrustum* frustum) {
+// The one definition of the shadow signature, for a map of `mapSize` texels a side; `frustum` null: the
+// scene has nothing to receive a shadow.
+std::uint64_t hashShadow(const FrameInput& input, int lightIndex, const math::ShadowFrustum* frustum,
+                         int mapSize) {
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
     Hasher h;
     h.add(light.type);
     h.add(light.position);
     h.add(light.direction);
     h.add(light.spotAngle);
-    h.add(light.shadows->mapSize);
+    h.add(mapSize);
     if (frustum) {
         for (const auto& m : frustum->viewProjection)
             h.add(m);
@@ -191,13 +193,14 @@ std::uint64_t hashShadow(const FrameInput& input, int lightIndex, const math::Sh
 } // namespace
 
 std::uint64_t shadowSignature(const FrameInput& input, int lightIndex, const math::ShadowFrustum& frustum) {
-    return hashShadow(input, lightIndex, &frustum);
+    const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
+    return hashShadow(input, lightIndex, &frustum, light.shadows->mapSize);
 }
 
 std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
     const Light& light = input.lights.at(static_cast<std::size_t>(lightIndex));
     const auto frustum = math::shadowFrustum(input, light, light.shadows->mapSize);
-    return hashShadow(input, lightIndex, frustum ? &*frustum : nullptr);
+    return hashShadow(input, lightIndex, frustum ? &*frustum : nullptr, light.shadows->mapSize);
 }
 
 namespace {
@@ -213,20 +216,30 @@ std::size_t countShadowCasters(const FrameInput& input) {
     return casters;
 }
 
-// What a light's shadow pass says it draws: its map, its casters, and whether a map was drawn for it before.
-void explainShadowPass(const Light& light, std::size_t casters, const math::ShadowFrustum& frustum,
-                       bool firstMap, PlannedPass& pass) {
+// What a light's shadow pass says it draws: its map (at the size it is drawn at), its casters, and whether a
+// map was drawn for it before.
+void explainShadowPass(const Light& light, int mapSize, std::size_t casters,
+                       const math::ShadowFrustum& frustum, bool firstMap, PlannedPass& pass) {
     pass.code = firstMap ? PlanReason::ShadowFirstMap : PlanReason::ShadowChanged;
-    pass.details.mapSize = light.shadows->mapSize;
+    pass.details.mapSize = mapSize;
     pass.details.pcf = light.shadows->pcf;
     pass.details.casters = casters;
     if (frustum.cube)
         pass.details.cubeFacesWithCasters = std::popcount(frustum.faceMask);
 }
 
+// The size a light's map is drawn at (see fitShadowMapSize); 0 where none fits, the light then skipped.
+int plannedShadowMapSize(const Light& light, int index, const MapLimits& limits, FramePlan& plan) {
+    const int size = fitShadowMapSize(light, index, light.shadows->mapSize, limits, plan.warnings);
+    if (size == 0)
+        plan.skipped.push_back({lightLabel(light, index), PlanReason::ShadowMapDoesNotFit});
+    return size;
+}
+
 // The shadow maps of the lights that cast shadows (at most kMaxShadowedLights), each redrawn only when its
 // signature changed; every light without one is skipped with the reason.
-void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& plan) {
+void planShadows(const FrameInput& input, const PlannerState& state, const MapLimits& limits,
+                 FramePlan& plan) {
     const std::size_t casters = countShadowCasters(input);
     int shadowSlots = 0;
     const int lightCount = static_cast<int>(input.lights.size());
@@ -249,9 +262,11 @@ void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& 
             plan.skipped.push_back({name, PlanReason::ShadowedLightLimit, {.limit = kMaxShadowedLights}});
             continue;
         }
+        const int mapSize = plannedShadowMapSize(light, i, limits, plan);
+        if (mapSize == 0)
+            continue;
         // The one frustum of this light's map this frame, at the size the map is drawn at: the signature,
         // the shadow pass and every lookup use it.
-        const int mapSize = std::max(light.shadows->mapSize, kMinShadowMapSize);
         const auto frustum = math::shadowFrustum(input, light, mapSize);
         if (!frustum) {
             plan.skipped.push_back({name, PlanReason::NoShadowReceivers});
@@ -260,7 +275,7 @@ void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& 
         ++shadowSlots;
         plan.shadowedLights.push_back(i);
         const auto previous = state.shadowSignatures.find(i);
-        const std::uint64_t signature = shadowSignature(input, i, *frustum);
+        const std::uint64_t signature = hashShadow(input, i, &*frustum, mapSize);
         const bool reused = previous != state.shadowSignatures.end() && previous->second == signature;
         plan.shadows.push_back({i, mapSize, light.shadows->pcf, *frustum, signature, !reused});
         if (reused) {
@@ -270,7 +285,7 @@ void planShadows(const FrameInput& input, const PlannerState& state, FramePlan& 
         PlannedPass pass;
         pass.kind = PassKind::Shadow;
         pass.target = name;
-        explainShadowPass(light, casters, *frustum, previous == state.shadowSignatures.end(), pass);
+        explainShadowPass(light, mapSize, casters, *frustum, previous == state.shadowSignatures.end(), pass);
         pass.lightIndex = i;
         pass.signature = signature;
         plan.passes.push_back(std::move(pass));
@@ -323,17 +338,41 @@ void planCameraBuffer(const FrameInput& input, const PlanViewport& viewport, Fra
 
 } // namespace
 
-FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport) {
+std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan& plan) {
+    auto differs = [&](const ShadowPlan& shadow) {
+        const Light& light = input.lights[static_cast<std::size_t>(shadow.light)];
+        return light.shadows->mapSize != shadow.mapSize;
+    };
+    const bool shadows = std::any_of(plan.shadows.begin(), plan.shadows.end(), differs);
+    const bool reflector = input.reflector && plan.reflectorResolution > 0 &&
+                           input.reflector->resolution != plan.reflectorResolution;
+    if (!shadows && !reflector)
+        return std::nullopt;
+    FrameInput planned = input;
+    for (const ShadowPlan& shadow : plan.shadows)
+        planned.lights[static_cast<std::size_t>(shadow.light)].shadows->mapSize = shadow.mapSize;
+    if (reflector)
+        planned.reflector->resolution = plan.reflectorResolution;
+    return planned;
+}
+
+FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
+                    const PlanOptions& options) {
     FramePlan plan;
-    planShadows(input, state, plan);
+    planShadows(input, state, options.maps, plan);
+    if (input.reflector)
+        plan.reflectorResolution = fitEnvmapResolution(*input.reflector, options.maps, plan.warnings);
+    // The rest is planned for the scene as it is drawn: its map sizes as just planned.
+    const std::optional<FrameInput> planned = plannedInput(input, plan);
+    const FrameInput& scene = planned ? *planned : input;
 
     // Mirror views are planned first (their passes run after the main pass): the environment pass, which
     // runs before the main pass, is needed only if the reflector is seen directly or in one of them.
     FramePlan mirrors;
-    planMirrors(input, viewport, mirrors);
-    planReflector(input, state, viewport, mirrors, plan);
+    planMirrors(scene, viewport, mirrors);
+    planReflector(scene, state, viewport, mirrors, plan);
 
-    plan.passes.push_back(mainPass(input));
+    plan.passes.push_back(mainPass(scene));
 
     // The mirror passes keep their view indices: plan.views is empty until here.
     plan.views = std::move(mirrors.views);
@@ -342,9 +381,9 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     for (SkippedEffect& skip : mirrors.skipped)
         plan.skipped.push_back(std::move(skip));
 
-    planCameraBuffer(input, viewport, plan);
-    planReflectedDetail(input, plan);
-    declareWrites(input, plan);
+    planCameraBuffer(scene, viewport, plan);
+    planReflectedDetail(scene, plan);
+    declareWrites(scene, plan);
     return plan;
 }
 

@@ -2,6 +2,7 @@
 
 #include "render/frame/FrameInput.hpp"
 #include "render/plan/FramePlan.hpp"
+#include "render/plan/GpuLimits.hpp"
 
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -54,9 +55,23 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex);
 // matrices and face mask, which is all the signature reads of it): the planner computes it once per light.
 std::uint64_t shadowSignature(const FrameInput& input, int lightIndex, const math::ShadowFrustum& frustum);
 
-// The pure planning step: which passes run this frame, in order, with the reason for each, and which
-// effects got no pass and why. Needs no GL.
-FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport = {});
+// What a frame is planned within besides its scene, its target and what earlier frames left: the map sizes
+// the GPU holds (its limits, and the sizes that failed to allocate before).
+struct PlanOptions {
+    MapLimits maps;
+};
+
+// The pure planning step: which passes run this frame, in order, with the reason for each, which effects
+// got no pass and why, and the size of every map, fitted to `options.maps` (with FramePlan::warnings where
+// a size had to change). Needs no GL.
+FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport = {},
+                    const PlanOptions& options = {});
+
+// The scene as `plan` draws it: `input` with each planned shadow map's size (ShadowPlan::mapSize) and the
+// reflector's resolution (FramePlan::reflectorResolution) the planner chose; nothing where they are the
+// scene's own. The planner plans this scene, and the
+// renderer's executors draw it, so what they allocate and draw is what was planned.
+std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan& plan);
 
 // How every pass of `plan` writes (PassWrites), from its kind and its view: the last step of planFrame,
 // so the renderer binds, clears, scissors, stencils and winds each pass as the plan says. The
@@ -88,7 +103,8 @@ bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, con
                       std::vector<std::string>* seenIn = nullptr);
 
 // The environment-map part of planning: appends the envmap pass to `plan` (or a skip with its reason), then
-// the GGX pre-filter's pass (or a skip) for a rough reflector.
+// the GGX pre-filter's pass (or a skip) for a rough reflector. `input` is the scene as planned (its
+// reflector at plan.reflectorResolution, see plannedInput).
 // `mirrors` holds the frame's mirror views, used for visibility.
 void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
                    const FramePlan& mirrors, FramePlan& plan);

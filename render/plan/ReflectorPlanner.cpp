@@ -249,6 +249,10 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
         plan.skipped.push_back({reflector.name, PlanReason::EnvmapOutOfSight});
         return;
     }
+    if (plan.reflectorResolution == 0) {
+        plan.skipped.push_back({reflector.name, PlanReason::EnvmapDoesNotFit});
+        return;
+    }
     const bool haveMap = state.envmapSignature && state.envmapSettings == envmapSettingsKey(reflector);
     PlanReason why = PlanReason::EnvmapChanged;
     if (!haveMap) {

@@ -111,48 +111,41 @@ void Renderer::lowerGpuLimits(const GpuLimits& limits) {
 
 namespace {
 
-// Maps that do not fit in GPU memory (or that the driver cannot draw into) are allocated smaller, with a
-// warning, and the frame is planned again, explained and drawn with the sizes that worked. Failed sizes
-// are remembered by the passes, so later frames go straight to the size that works. Returns false where
-// the reflector's map could not be allocated at all: its pass does not run, and the reflector is drawn
-// without it.
-bool allocateMaps(const FrameInput& requested, std::optional<FrameInput>& fitted, FramePlan& plan,
-                  const PlannerState& plannerState, const PlanViewport& viewport, passes::FrameResources& r,
-                  std::vector<std::string>& warnings) {
-    auto current = [&]() -> const FrameInput& { return fitted ? *fitted : requested; };
-    auto edit = [&]() -> FrameInput& {
-        if (!fitted)
-            fitted = requested;
-        return *fitted;
+// What allocating the frame's maps found.
+struct AllocatedMaps {
+    std::vector<int> shadowsMissing; // lights whose planned map could not be allocated: no shadow this frame
+    bool envmapAllocated = true;     // false: the reflector's Envmap pass does not run
+    bool fellBack = false;           // a planned size failed: the next frame plans the one that works
+};
+
+// Allocates the maps the plan sizes: each planned shadow map, and the reflector's map where the frame
+// captures it. The plan is below every size that failed before; a size that fails now (one never tried)
+// leaves its map out of this frame, with a warning, and is remembered, so the next frame is planned with a
+// size that works. The plan is never made again for this frame.
+AllocatedMaps allocateMaps(const FrameInput& input, const FramePlan& plan, passes::FrameResources& r,
+                           std::vector<std::string>& warnings) {
+    AllocatedMaps allocated;
+    auto note = [&](gl::PlannedAllocation outcome) {
+        allocated.fellBack = allocated.fellBack || outcome == gl::PlannedAllocation::FellBack;
+        return outcome == gl::PlannedAllocation::Done;
     };
-    bool changed = false;
-    for (const ShadowPlan& shadow : plan.shadows) {
-        const int size = r.shadows.allocate(current(), shadow, warnings);
-        if (size == shadow.mapSize)
-            continue;
-        changed = true;
-        Light& light = edit().lights[static_cast<std::size_t>(shadow.light)];
-        if (size == 0)
-            light.shadows.reset();
-        else
-            light.shadows->mapSize = size;
-    }
-    bool envmapAllocated = true;
+    for (const ShadowPlan& shadow : plan.shadows)
+        if (!note(r.shadows.allocate(input, shadow, warnings)))
+            allocated.shadowsMissing.push_back(shadow.light);
     const bool capturing = std::any_of(plan.passes.begin(), plan.passes.end(),
                                        [](const PlannedPass& p) { return p.kind == PassKind::Envmap; });
-    if (capturing) {
-        const int asked = current().reflector->resolution;
-        const int n = r.reflector.allocate(*current().reflector, warnings);
-        if (n == 0) {
-            envmapAllocated = false;
-        } else if (n != asked) {
-            edit().reflector->resolution = n;
-            changed = true;
-        }
-    }
-    if (changed)
-        plan = planFrame(*fitted, plannerState, viewport);
-    return envmapAllocated;
+    if (capturing)
+        allocated.envmapAllocated = note(r.reflector.allocate(*input.reflector, warnings));
+    return allocated;
+}
+
+// What the planner plans the frame's maps within: the context's limits and every size the passes found
+// failing in earlier frames.
+MapLimits mapLimits(const GpuLimits& gpu, const passes::FrameResources& r) {
+    MapLimits limits{gpu, {}};
+    r.shadows.failedSizes(limits.failed);
+    r.reflector.failedSizes(limits.failed);
+    return limits;
 }
 
 // The lit shaders, built for this frame's lights. A variant that fails to build leaves the shaders that
@@ -205,21 +198,20 @@ const SkippedEffect* hiddenReason(const passes::FrameExecution& frame, int view)
     return nullptr;
 }
 
-// The frame as it will be drawn (its plan is the report's): the scene as fitted to the GPU where it had
-// to be, the camera's projection, and whether the reflector's map could be allocated.
+// The frame as it will be drawn (its plan is the report's): the scene with the sizes the plan chose, the
+// camera's projection, and what allocating its maps found.
 struct DrawnFrame {
-    std::optional<FrameInput> fitted; // empty: the scene as requested
-    glm::dmat4 projection{1.0};       // restricted to the tile for a tile
-    bool envmapAllocated = true;
+    std::optional<FrameInput> planned; // empty: the scene as requested
+    glm::dmat4 projection{1.0};        // restricted to the tile for a tile
+    AllocatedMaps maps;
 };
 
-// Planning, into report.plan and report.skipped. Map sizes beyond the GPU's limits would fail to allocate:
-// the frame is planned and drawn with sizes it can hold, and says so.
+// Planning, once, into report.plan and report.skipped, with the map sizes fitted to the GPU (the plan's
+// warnings open the report's), then the maps' allocation.
 DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& target, const RenderTarget& drawn,
                           const RenderOptions& options, const GpuLimits& limits,
                           const PlannerState& committed, passes::FrameResources& r, FrameReport& report) {
     DrawnFrame frame;
-    frame.fitted = fitToGpuLimits(requested, limits, report.warnings);
     // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
     // untiled frame would, with the same sub-pixel sample positions.
     const bool eightBitOutput = target.encodeSrgb && !options.halfFloatCameraBuffer;
@@ -229,11 +221,14 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
                                 eightBitOutput, eightBitOutput && drawnWhole && target.srgbDepthStencil};
     const PlannerState freshState;
     const PlannerState& plannerState = options.reuseMaps ? committed : freshState;
+    const PlanOptions planOptions{mapLimits(limits, r)};
     FramePlan& plan = report.plan;
-    plan = planFrame(frame.fitted ? *frame.fitted : requested, plannerState, viewport);
-    frame.envmapAllocated =
-        allocateMaps(requested, frame.fitted, plan, plannerState, viewport, r, report.warnings);
-    const FrameInput& input = frame.fitted ? *frame.fitted : requested;
+    plan = planFrame(requested, plannerState, viewport, planOptions);
+    report.warnings = plan.warnings;
+    frame.planned = plannedInput(requested, plan);
+    const FrameInput& input = frame.planned ? *frame.planned : requested;
+    frame.maps = allocateMaps(input, plan, r, report.warnings);
+    report.drawAgain = frame.maps.fellBack;
     frame.projection = cameraProjection(input, viewport);
     if (options.tile) {
         const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,
@@ -367,7 +362,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     const DrawnFrame planned =
         planDrawnFrame(requested, target, drawn, options, s.limits, s.plannerState, r, report);
     const FramePlan& plan = report.plan;
-    const FrameInput& input = planned.fitted ? *planned.fitted : requested;
+    const FrameInput& input = planned.planned ? *planned.planned : requested;
 
     selectLighting(r, input, plan, options, report.warnings);
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
@@ -388,7 +383,8 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     passes::FrameExecution frame{input, plan,    drawn,          planned.projection, options.tile.has_value(),
                                  r,     context, s.plannerState, report.warnings};
     frame.output = &target;
-    frame.envmapAllocated = planned.envmapAllocated;
+    frame.envmapAllocated = planned.maps.envmapAllocated;
+    frame.shadowsMissing = planned.maps.shadowsMissing;
     frame.hidden.resize(plan.views.size());
     gl::FramebufferBinding keepCallerBinding;
     runPasses(frame, plan.cameraBuffer == CameraBuffer::Srgb8, options, s.timer, report);

@@ -31,9 +31,9 @@ public:
     // Frees every GL object now, while the context is still current. The renderer is unusable after.
     void releaseGlResources();
 
-    // What the context can hold (queried by create()); frames asking for more are fitted to it, with a
-    // warning (fitToGpuLimits). Tests lower the limits to see that happen without allocating gigabytes;
-    // each limit only ever goes down.
+    // What the context can hold (queried by create()); frames asking for more are planned within it, with
+    // a warning (fitShadowMapSize, fitEnvmapResolution). Tests lower the limits to see that happen without
+    // allocating gigabytes; each limit only ever goes down.
     const GpuLimits& gpuLimits() const;
     void lowerGpuLimits(const GpuLimits& limits);
 

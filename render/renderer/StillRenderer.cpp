@@ -175,8 +175,10 @@ base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& inpu
             const int step = t * n * n + k;
             if (progress && !progress(double(step) / steps, stageText(grid, t, k, n)))
                 return base::Error{"render cancelled"};
-            FrameReport report =
-                renderer.render(input, target, sampleOptions(settings, grid, x0, y0, k, n, step));
+            const RenderOptions options = sampleOptions(settings, grid, x0, y0, k, n, step);
+            FrameReport report = renderer.render(input, target, options);
+            if (report.drawAgain) // planned again with the map sizes that fit, which the renderer now knows
+                report = renderer.render(input, target, options);
             // A frame the renderer could not draw at all (its colour buffer did not fit) is no still.
             if (!report.error.empty())
                 return base::Error{report.error};

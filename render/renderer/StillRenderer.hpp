@@ -49,7 +49,8 @@ int maxStillSize();
 // supersampling by averaging N×N frames each shifted by a sub-pixel offset: the same result as
 // rendering N times larger and box-filtering, without the N²-times larger buffers. Stills larger than a
 // tile render tile by tile, each tile a window of the whole image's view (see RenderOptions::tile), so
-// the pixels are those of an untiled render.
+// the pixels are those of an untiled render. A frame that had to leave out a map whose planned size did not
+// fit (FrameReport::drawAgain) is drawn again, planned with the size that does.
 base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input,
                                       const StillSettings& settings, const ProgressCallback& progress = {});
 

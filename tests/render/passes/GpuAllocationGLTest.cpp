@@ -4,6 +4,7 @@
 // (what `speculum explain` prints) says the size used. Real 8192² maps on this machine's driver, and a
 // test limit (gl::setAllocationLimitForTesting) that makes any GPU refuse large allocations.
 #include "render/gl/Allocation.hpp"
+#include "render/gl/Objects.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/passes/EnvironmentCapture.hpp"
 #include "support/GlTest.hpp"
@@ -299,6 +300,51 @@ TEST_F(GlTest, ReflectorMapOfEveryLayoutFallsBackUnderAnAllocationLimit) {
         EXPECT_TRUE(lastReport().warnings.empty()) << ::testing::PrintToString(lastReport().warnings);
         EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), direct.rgba.begin()));
     }
+}
+
+// One frame on a float target of its own, its report.
+FrameReport drawFrame(Renderer& renderer, const FrameInput& input, int width, int height) {
+    gl::FramebufferBinding keep;
+    gl::Texture color = gl::makeTexture();
+    glBindTexture(GL_TEXTURE_2D, color.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    gl::Framebuffer framebuffer = gl::makeFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+    return renderer.render(input, {framebuffer.id(), width, height, false});
+}
+
+// Any GPU: each frame is planned once. A planned size that fails now (one never tried) is not planned
+// again within the frame: the frame goes without that map, says so (a warning, a skip, drawAgain) and keeps
+// the plan it was drawn with; the next frame is planned with the size found to work, the warning among the
+// plan's own. A still draws such a frame again (renderImage, above), so it is never without the map.
+TEST_F(GlTest, AMapThatFailsAtItsPlannedSizeIsLeftOutOfThatFrameAndPlannedSmallerInTheNext) {
+    AllocationLimit limit(16u << 20);
+    const FrameInput input = scene(8192);
+    const std::vector<std::string> fellBack{
+        "light 'Lamp': the 8192² cube shadow map did not fit in GPU memory "
+        "(over the test limit of 16777216 bytes); using 512²"};
+    const FrameReport first = drawFrame(renderer(), input, 64, 36);
+    ASSERT_EQ(first.plan.shadows.size(), 1u);
+    EXPECT_EQ(first.plan.shadows[0].mapSize, 8192) << "the plan the frame was drawn with, made once";
+    EXPECT_TRUE(first.plan.warnings.empty()) << "nothing had failed when it was planned";
+    EXPECT_EQ(first.warnings, fellBack);
+    EXPECT_TRUE(first.drawAgain);
+    EXPECT_EQ(findPass(first, PassKind::Shadow), nullptr);
+    EXPECT_TRUE(std::any_of(first.skipped.begin(), first.skipped.end(), [](const SkippedEffect& e) {
+        return e.target == "Lamp" && e.code == PlanReason::ShadowMapNotAllocated;
+    })) << "the frame says it went without the map";
+    EXPECT_EQ(first.memory.shadows, 0u);
+
+    const FrameReport second = drawFrame(renderer(), input, 64, 36);
+    EXPECT_FALSE(second.drawAgain);
+    ASSERT_EQ(second.plan.shadows.size(), 1u);
+    EXPECT_EQ(second.plan.shadows[0].mapSize, 512);
+    EXPECT_EQ(second.plan.warnings, fellBack) << "planned with what the first frame learnt";
+    EXPECT_EQ(second.warnings, fellBack);
+    ASSERT_NE(findPass(second, PassKind::Shadow), nullptr);
+    EXPECT_EQ(second.memory.shadows, 6u * 512 * 512 * 4);
 }
 
 // Any GPU: the frame's own colour buffer does not fit. Nothing can be drawn: the report says so instead of

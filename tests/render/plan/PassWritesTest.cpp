@@ -351,6 +351,8 @@ TEST(ShadowPlan, EachShadowedLightHasItsOneFrustumAndSignatureInSlotOrder) {
     const FramePlan plan = planFrame(input, {}, kViewport);
     ASSERT_EQ(plan.shadowedLights, (std::vector<int>{0, 2}));
     ASSERT_EQ(plan.shadows.size(), plan.shadowedLights.size());
+    // The scene as drawn: the spot's map at the smallest size, which its signature is of.
+    const FrameInput drawn = plannedInput(input, plan).value_or(input);
     for (std::size_t k = 0; k < plan.shadows.size(); ++k) {
         const ShadowPlan& shadow = plan.shadows[k];
         const Light& light = input.lights[static_cast<std::size_t>(shadow.light)];
@@ -361,8 +363,8 @@ TEST(ShadowPlan, EachShadowedLightHasItsOneFrustumAndSignatureInSlotOrder) {
         const auto frustum = math::shadowFrustum(input, light, shadow.mapSize);
         ASSERT_TRUE(frustum);
         expectSameFrustum(shadow.frustum, *frustum);
-        EXPECT_EQ(shadow.signature, shadowSignature(input, shadow.light));
-        EXPECT_EQ(shadow.signature, shadowSignature(input, shadow.light, shadow.frustum));
+        EXPECT_EQ(shadow.signature, shadowSignature(drawn, shadow.light));
+        EXPECT_EQ(shadow.signature, shadowSignature(drawn, shadow.light, shadow.frustum));
         EXPECT_TRUE(shadow.render);
         EXPECT_EQ(plan.shadowOf(shadow.light), &shadow);
     }
@@ -381,9 +383,10 @@ TEST(ShadowPlan, EachShadowedLightHasItsOneFrustumAndSignatureInSlotOrder) {
 
 TEST(ShadowPlan, AReusedMapIsPlannedButNotRendered) {
     const FrameInput input = litScene();
+    const FrameInput drawn = plannedInput(input, planFrame(input, {}, kViewport)).value_or(input);
     PlannerState state;
-    state.shadowSignatures[2] = shadowSignature(input, 2);
-    state.shadowSignatures[0] = shadowSignature(input, 0) + 1; // an old map of something else
+    state.shadowSignatures[2] = shadowSignature(drawn, 2);
+    state.shadowSignatures[0] = shadowSignature(drawn, 0) + 1; // an old map of something else
     const FramePlan plan = planFrame(input, state, kViewport);
     ASSERT_NE(plan.shadowOf(0), nullptr);
     ASSERT_NE(plan.shadowOf(2), nullptr);

@@ -83,6 +83,8 @@ TEST(PlanReason, SentencesNameTheirDetails) {
          "map, +X face, 1234 texels)"},
         {PlanReason::MirrorOutsideParent, inCamera,
          "no reflection: outside the parent mirror's reflected view (seen in Left → Right (depth 3))"},
+        {PlanReason::ShadowMapNotAllocated, flat,
+         "no shadow this frame: its 2048² map could not be allocated (see the warnings)"},
         {PlanReason::MirrorOccluded, inCamera,
          "no reflection: fully occluded: no pixel of it passed the depth test"},
     };

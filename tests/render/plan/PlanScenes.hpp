@@ -1,8 +1,11 @@
 #pragma once
-// Small scenes the planner tests share: mirrors facing a camera at the origin that looks down −Z.
+// Small scenes the planner tests share: mirrors facing a camera at the origin that looks down −Z; and what
+// they look up in a plan.
 #include "render/frame/FrameInput.hpp"
+#include "render/plan/FramePlan.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <optional>
 #include <string>
 
 namespace speculum::render::test {
@@ -23,6 +26,30 @@ inline FrameInput cameraAtOrigin() {
     input.camera.target = {0, 0, -1};
     input.camera.far = 100.0;
     return input;
+}
+
+// The first pass of this kind the plan holds, or null.
+inline const PlannedPass* passOf(const FramePlan& plan, PassKind kind) {
+    for (const PlannedPass& pass : plan.passes)
+        if (pass.kind == kind)
+            return &pass;
+    return nullptr;
+}
+
+// The code of the plan's first skip of `target`, or none.
+inline std::optional<PlanReason> skipCode(const FramePlan& plan, const std::string& target) {
+    for (const SkippedEffect& s : plan.skipped)
+        if (s.target == target)
+            return s.code;
+    return std::nullopt;
+}
+
+// The reason the plan gives for the first skip of `target`, or nothing.
+inline std::string skipReason(const FramePlan& plan, const std::string& target) {
+    for (const SkippedEffect& s : plan.skipped)
+        if (s.target == target)
+            return s.reason();
+    return {};
 }
 
 } // namespace speculum::render::test

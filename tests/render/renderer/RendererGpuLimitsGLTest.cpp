@@ -70,8 +70,17 @@ TEST_F(GlTest, MapsLargerThanTheGpuHoldsAreDrawnAtItsLimitWithAWarning) {
             << ::testing::PrintToString(warnings);
         EXPECT_TRUE(mentions(warnings, "light \"Light\"")) << ::testing::PrintToString(warnings);
         EXPECT_TRUE(mentions(warnings, "light \"Spot\"")) << ::testing::PrintToString(warnings);
-        // The plan says which sizes it drew.
+        // The plan says which sizes it drew: fitted while planning, with the warnings, the one plan of the
+        // frame.
         const FrameReport& report = lastReport();
+        EXPECT_FALSE(report.drawAgain);
+        EXPECT_EQ(report.plan.reflectorResolution, c.expected);
+        ASSERT_EQ(report.plan.shadows.size(), 2u);
+        EXPECT_EQ(report.plan.shadows[0].mapSize, 256);
+        EXPECT_EQ(report.plan.shadows[1].mapSize, 512);
+        ASSERT_EQ(report.plan.warnings.size(), 3u) << ::testing::PrintToString(report.plan.warnings);
+        EXPECT_TRUE(std::equal(report.plan.warnings.begin(), report.plan.warnings.end(), warnings.begin()))
+            << "the report's warnings open with the plan's";
         const auto envmap = std::find_if(report.ran.begin(), report.ran.end(), [&](const PassRun& run) {
             return report.planned(run).kind == PassKind::Envmap;
         });
