@@ -51,6 +51,34 @@ base::Result<double> parseTime(const std::string& text) {
     }
 }
 
+// explain --preview SCALE[,CUT]: the fraction of the width and height drawn, and the levels of mirror
+// nesting left out.
+base::Status parsePreview(const std::string& text, render::PreviewPolicy& preview) {
+    const std::string expected =
+        "--preview: expected SCALE[,CUT] such as 0.5 or 0.25,1, got " + base::quoted(text);
+    const std::size_t comma = text.find(',');
+    const std::string scaleText = text.substr(0, comma);
+    double scale = 0.0;
+    try {
+        std::size_t used = 0;
+        scale = std::stod(scaleText, &used);
+        if (used != scaleText.size() || !std::isfinite(scale))
+            return Error{expected};
+    } catch (const std::exception&) {
+        return Error{expected};
+    }
+    if (scale < render::kMinResolutionScale || scale > 1.0)
+        return Error{"--preview: scale " + base::quoted(scaleText) + " is out of range (0.125..1)"};
+    preview.scale = scale;
+    if (comma == std::string::npos)
+        return base::Done{};
+    auto cut = parseInt("--preview mirror depth cut", text.substr(comma + 1), 0, render::kMaxMirrorDepth);
+    if (!cut)
+        return Error{cut.error()};
+    preview.mirrorDepthCut = *cut;
+    return base::Done{};
+}
+
 constexpr std::array<std::string_view, 6> kCommands = {"render", "explain", "bench",
                                                        "time",   "export",  "help"};
 
@@ -110,7 +138,8 @@ std::string usageText() {
            "  speculum [PROJECT]                          open the editor\n"
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference [--samples N]] "
            "[--keep-going]\n"
-           "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--json]\n"
+           "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--preview SCALE[,CUT] "
+           "[--preview-drag]] [--json]\n"
            "  speculum bench PROJECT --out DIR [--quick] [--size WxH] [--keep-going]\n"
            "  speculum time PROJECT [--size WxH] [--frames N] [--animated] [--time T] [--half-float] "
            "[--json]\n"
@@ -123,6 +152,9 @@ std::string usageText() {
            "per sample average rough reflections, and the noise left is printed.\n"
            "explain renders a frame and lists the passes that ran and the effects skipped, with reasons;\n"
            "--frame N explains the Nth of N identical frames, showing what a static scene reuses.\n"
+           "--preview SCALE[,CUT] explains the frame as the editor previews it while the view moves: drawn\n"
+           "at SCALE (0.125..1) of the width and height, CUT levels of mirror nesting left out, the\n"
+           "environment map held; --preview-drag as while a handle is dragged (shadow maps drawn smaller).\n"
            "bench sweeps the settings the scene uses (map type and resolution, parallax, mirror technique "
            "and\n"
            "depth, PCF, tessellation), times each and measures its error against the exact tracer; it "
@@ -175,7 +207,7 @@ const char* describe(Command command) {
 // The values of a command's options as typed: checked after parsing, with the same messages whatever
 // form they came in (--size 64x36, --size=64x36).
 struct Typed {
-    std::string size, ssaa, time, frame, frames, samples;
+    std::string size, ssaa, time, frame, frames, samples, preview;
 };
 
 base::Status checkValues(const Typed& t, CliOptions& o) {
@@ -226,6 +258,11 @@ base::Status checkValues(const Typed& t, CliOptions& o) {
             return Error{n.error()};
         o.frame = *n;
     }
+    if (!t.preview.empty())
+        if (base::Status preview = parsePreview(t.preview, o.preview); !preview)
+            return preview;
+    if (o.preview.redrawsShadows && t.preview.empty())
+        return Error{"--preview-drag: only with --preview (a handle drag's preview)"};
     if (!t.frames.empty()) {
         auto n = parseInt("--frames", t.frames, 1, 100000);
         if (!n)
@@ -242,6 +279,17 @@ std::string optionNamed(const std::string& what) {
         return {};
     const std::size_t end = what.find_first_of(": ", dash);
     return what.substr(dash, end == std::string::npos ? std::string::npos : end - dash);
+}
+
+// explain's own options: which frame, and which preview of it.
+void addExplainOptions(CLI::App& app, Typed& typed, CliOptions& o) {
+    app.add_option("--frame", typed.frame, "Explain the Nth of N identical frames (1..100)")->type_name("N");
+    app.add_option("--preview", typed.preview,
+                   "Explain the editor's preview: SCALE (0.125..1) of the width and height, CUT mirror "
+                   "levels left out, the environment map held")
+        ->type_name("SCALE[,CUT]");
+    app.add_flag("--preview-drag", o.preview.redrawsShadows,
+                 "With --preview: as while a handle is dragged (shadow maps drawn smaller)");
 }
 
 // One command's options, parsed by CLI11: --opt value and --opt=value alike, -h/--help for the command's
@@ -277,8 +325,7 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
     if (renders || command == Command::Time)
         app.add_option("--time", typed.time, "Evaluate animations at T seconds (default 0)")->type_name("T");
     if (command == Command::Explain)
-        app.add_option("--frame", typed.frame, "Explain the Nth of N identical frames (1..100)")
-            ->type_name("N");
+        addExplainOptions(app, typed, o);
     if (command == Command::Explain || command == Command::Time)
         app.add_flag("--json", o.json, "Print JSON");
     if (command == Command::Time) {

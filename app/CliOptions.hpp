@@ -1,6 +1,7 @@
 #pragma once
 
 #include "base/Result.hpp"
+#include "render/plan/RenderOptions.hpp"
 
 #include <optional>
 #include <string>
@@ -27,6 +28,8 @@ struct CliOptions {
     bool json = false;
     bool quick = false;
     int frame = 1; // explain: which of consecutive frames of the same scene to explain (reuse shows from 2)
+    // explain --preview SCALE[,CUT] [--preview-drag]: the frame as the editor's preview of that level
+    render::PreviewPolicy preview;
     // render, bench, export: go on without a referenced model or texture that is missing or unreadable
     // (each is then a warning); without it such a file is an error and nothing is written.
     bool keepGoing = false;

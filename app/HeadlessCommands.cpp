@@ -211,6 +211,7 @@ scene::StillExportSettings stillSettings(const CliOptions& options) {
 base::Result<render::StillResult> renderExplainedFrame(HeadlessFrame& frame, const CliOptions& options) {
     // In one piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
     render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
+    settings.preview = options.preview;
     for (int warmUp = 1; warmUp < options.frame; ++warmUp)
         if (auto earlier = render::renderStill(*frame.renderer, frame.input, settings); !earlier)
             return base::Error{earlier.error()};
@@ -294,6 +295,13 @@ void printExplanationJson(const CliOptions& options, const HeadlessFrame& frame,
     QJsonValue envmap; // null when the map was not drawn this frame
     if (drawnEnvmap)
         envmap = envmapJson(*drawnEnvmap);
+    QJsonValue preview; // null for a frame at rest
+    if (options.preview.active())
+        preview = QJsonObject{
+            {"scale", options.preview.scale},
+            {"mirrorDepthCut", options.preview.mirrorDepthCut},
+            {"drag", options.preview.redrawsShadows},
+            {"drawnSize", QString::fromStdString(sizeText(report.drawnWidth, report.drawnHeight))}};
     QJsonObject root{{"passes", passesJson(report)},
                      {"envmapMirrors", envmap},
                      {"skipped", skippedJson(report.skipped)},
@@ -301,6 +309,7 @@ void printExplanationJson(const CliOptions& options, const HeadlessFrame& frame,
                      {"size", QString::fromStdString(sizeText(options.width, options.height))},
                      {"time", options.time},
                      {"frame", options.frame},
+                     {"preview", preview},
                      {"tiles", still.tiles},
                      {"frameGpuMs", report.gpuMs},
                      {"frameCpuMs", report.cpuMs},
@@ -333,6 +342,11 @@ void printExplanationText(const CliOptions& options, const HeadlessFrame& frame,
     if (still.tiles > 1)
         std::printf("Larger than this GPU renders in one piece: the passes of the first of %d tiles.\n\n",
                     still.tiles);
+    else if (options.preview.active())
+        std::printf(
+            "A preview%s, drawn at %s: what it gives up is skipped, with reasons starting \"preview:\".\n\n",
+            options.preview.redrawsShadows ? " while a handle is dragged" : " while the view moves",
+            sizeText(report.drawnWidth, report.drawnHeight).c_str());
     std::printf("Passes (in order):\n");
     for (const render::PassRun& run : report.ran) {
         const render::PlannedPass& p = report.planned(run);

@@ -23,24 +23,8 @@ using view::Selection;
 
 namespace {
 
-constexpr int kMinPreviewShadowMap = 256; // texels a side: smaller shadows of a dragged object blur away
-
 // GL_SRGB8_ALPHA8 (the widget's texture format is a GL enum; no GL header is included here).
 constexpr unsigned kSrgbTextureFormat = 0x8C43;
-
-// A handle drag changes what casts shadows every frame, so each shadow map is drawn again anyway: at a
-// size that goes with the preview's (a power of two less, never under 256²).
-void shrinkShadowMaps(render::FrameInput& input, double scale) {
-    for (render::Light& light : input.lights) {
-        if (!light.shadows)
-            continue;
-        int size = light.shadows->mapSize;
-        for (double s = scale; s <= 0.5 && size > kMinPreviewShadowMap; s *= 2.0) {
-            size /= 2;
-        }
-        light.shadows->mapSize = std::min(light.shadows->mapSize, std::max(size, kMinPreviewShadowMap));
-    }
-}
 
 } // namespace
 
@@ -270,13 +254,15 @@ void Viewport::paintGL() {
     input.camera = m_navigation.camera();
 
     const bool previewing = m_adaptive && m_interacting;
-    const view::PreviewLevel level = previewLevel(previewing, input);
+    const view::PreviewLevel level = previewLevel(previewing, input.settings.mirrorDepth);
     // Qt draws the widget's texture into the window as it would a plain one: it must read the stored,
     // encoded bytes. Where it cannot, the frame goes through the renderer's own buffer and a copy.
     const bool composedAsStored =
         m_skipsSrgbDecode && render::composeSrgbTextureAsStored(defaultFramebufferObject());
     render::RenderOptions options;
-    options.resolutionScale = level.scale;
+    // A handle drag changes what casts shadows every frame, so the preview draws the shadow maps smaller.
+    options.preview = {level.scale, level.mirrorDepthCut,
+                       m_handles.press() == ViewportHandles::Press::Handle};
     m_lastReport = m_renderer->render(input, frameTarget(composedAsStored), options);
     // A map did not fit at its planned size: the next frame draws it at one that does.
     if (m_lastReport.drawAgain)
@@ -295,24 +281,13 @@ void Viewport::paintGL() {
     emit frameRendered(m_lastReport, time);
 }
 
-// A preview while navigating: fewer pixels, scaled up by the renderer, then fewer mirror levels; the
-// environment map keeps what it has (an orbit never changes it; a handle drag would redraw it every
-// frame). The frame at rest draws everything. Changes `input` to the preview's settings.
-view::PreviewLevel Viewport::previewLevel(bool previewing, render::FrameInput& input) {
-    const int depth = input.settings.mirrorDepth;
-    m_maxDepthCut = std::max(0, depth - 1);
+// The level of a preview while navigating: fewer pixels, then fewer mirror levels (of the scene's
+// `mirrorDepth`, down to one). The renderer's planner applies it (render::PreviewPolicy). The frame at rest
+// draws everything.
+view::PreviewLevel Viewport::previewLevel(bool previewing, int mirrorDepth) {
+    m_maxDepthCut = std::max(0, mirrorDepth - 1);
     view::PreviewLevel level = previewing ? m_resolution.level() : view::PreviewLevel{};
     level.mirrorDepthCut = std::clamp(level.mirrorDepthCut, 0, m_maxDepthCut);
-    if (level.reduced()) {
-        input.settings.mirrorDepth = depth - level.mirrorDepthCut;
-        if (input.reflector && input.reflector->update != render::ReflectorUpdate::Once) {
-            input.reflector->update = render::ReflectorUpdate::Once; // drawn only when there is no map yet
-        }
-        // Orbiting reuses the shadow maps as they are.
-        if (m_handles.press() == ViewportHandles::Press::Handle) {
-            shrinkShadowMaps(input, level.scale);
-        }
-    }
     return level;
 }
 

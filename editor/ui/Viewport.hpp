@@ -202,9 +202,9 @@ protected:
 private:
     void releaseGlResources();
     void paintError();
-    // paintGL's steps: the preview's level (and the frame's settings for it), the target it draws into,
-    // the frame counter behind framesPerSecond(), and the frame's warnings.
-    view::PreviewLevel previewLevel(bool previewing, render::FrameInput& input);
+    // paintGL's steps: the preview's level, the target it draws into, the frame counter behind
+    // framesPerSecond(), and the frame's warnings.
+    view::PreviewLevel previewLevel(bool previewing, int mirrorDepth);
     render::RenderTarget frameTarget(bool composedAsStored) const;
     void countFrame();
     void reportFrameWarnings(bool composedAsStored, const std::vector<scene::Warning>& warnings);

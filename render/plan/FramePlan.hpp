@@ -4,6 +4,7 @@
 #include "render/math/Mirror.hpp"
 #include "render/math/ShadowFrustum.hpp"
 #include "render/plan/PlanReason.hpp"
+#include "render/plan/RenderOptions.hpp"
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>
@@ -143,8 +144,8 @@ struct EnvmapPlan {
 // computed once, here, and used by the signature, the allocation, the shadow pass and every lookup.
 struct ShadowPlan {
     int light = -1; // index into FrameInput::lights
-    // Texels per side (per cube face): the light's own, within the GPU's limits and below every size of its
-    // kind that failed to allocate (fitShadowMapSize).
+    // Texels per side (per cube face): the light's own, shrunk by a preview, within the GPU's limits and
+    // below every size of its kind that failed to allocate (fitShadowMapSize).
     int mapSize = 0;
     int pcf = 1; // the lookup's filter width
     math::ShadowFrustum frustum;
@@ -184,6 +185,10 @@ struct FramePlan {
     // that failed to allocate (fitEnvmapResolution); 0 without a reflector, or where no map of its layout
     // fits. The map is allocated, drawn and looked up at this resolution (plannedInput).
     int reflectorResolution = 0;
+    // Levels of mirror nesting the camera's views go to: settings.mirrorDepth, less what a preview cuts.
+    int mirrorDepth = 0;
+    // The preview the frame is (RenderOptions::preview); what it gives up is among `skipped`.
+    PreviewPolicy preview;
     // What the frame cannot do as the scene asks, found while planning: a map larger than the GPU holds, or
     // of a size that failed to allocate in an earlier frame, and the size planned instead. The renderer
     // reports them first among FrameReport::warnings.

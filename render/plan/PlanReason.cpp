@@ -309,6 +309,26 @@ std::string prefilterSentence(PlanReason code, const ReasonDetails& d) {
            "), " + std::to_string(d.samples) + " samples a texel; " + why;
 }
 
+std::string previewSentence(PlanReason code, const ReasonDetails& d) {
+    switch (code) {
+    case PlanReason::PreviewScaled: {
+        char percent[16];
+        std::snprintf(percent, sizeof percent, "%.0f%%", d.scale * 100.0);
+        return std::string("preview: drawn at ") + percent +
+               " of the output's width and height and scaled up to it";
+    }
+    case PlanReason::PreviewMirrorDepth:
+        return "preview: mirrors nest " + plural(static_cast<std::size_t>(d.limit), "level", "levels") +
+               " deep, not " + std::to_string(d.asked) + " (settings.mirrorDepth)";
+    case PlanReason::PreviewShadowMapSize:
+        return "preview: shadow map drawn at " + std::to_string(d.mapSize) + "², not " +
+               std::to_string(d.asked) + "², while a handle is dragged";
+    default:
+        return "preview: environment map held while the view moves (update \"" +
+               std::string(names::fileName(names::kReflectorUpdates, d.update)) + "\" applies again at rest)";
+    }
+}
+
 using Sentence = std::string (*)(PlanReason, const ReasonDetails&);
 
 struct CodeEntry {
@@ -375,6 +395,10 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::PrefilterMipFilter, "prefilter-mip-filter", prefilterSentence},
     {PlanReason::PrefilterReused, "prefilter-reused", prefilterSentence},
     {PlanReason::PrefilterNoMap, "prefilter-no-map", prefilterSentence},
+    {PlanReason::PreviewScaled, "preview-scaled", previewSentence},
+    {PlanReason::PreviewMirrorDepth, "preview-mirror-depth", previewSentence},
+    {PlanReason::PreviewShadowMapSize, "preview-shadow-map-size", previewSentence},
+    {PlanReason::PreviewEnvmapHeld, "preview-envmap-held", previewSentence},
 }};
 
 constexpr bool inEnumOrder() {
@@ -390,6 +414,10 @@ const CodeEntry& entryOf(PlanReason code) {
 }
 
 } // namespace
+
+bool isPreview(PlanReason code) {
+    return code >= PlanReason::PreviewScaled;
+}
 
 std::string_view toString(PlanReason code) {
     return entryOf(code).name;

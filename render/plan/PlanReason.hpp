@@ -77,9 +77,17 @@ enum class PlanReason {
     PrefilterMipFilter,       // skip: settings.glossyFilter is mip
     PrefilterReused,
     PrefilterNoMap, // skip while running: the map could not be allocated or drawn
+    // What a preview (RenderOptions::preview) gives up, each a skip whose sentence starts "preview: ".
+    PreviewScaled,        // details.scale of the output's width and height
+    PreviewMirrorDepth,   // mirrors nest details.limit levels, not details.asked
+    PreviewShadowMapSize, // a handle drag's shadow map: details.mapSize², not details.asked²
+    PreviewEnvmapHeld,    // the map is kept while the view moves (details.update applies at rest)
 };
 
-inline constexpr std::size_t kPlanReasonCount = static_cast<std::size_t>(PlanReason::PrefilterNoMap) + 1;
+inline constexpr std::size_t kPlanReasonCount = static_cast<std::size_t>(PlanReason::PreviewEnvmapHeld) + 1;
+
+// Whether the code is one of a preview's skips (its name starts "preview-").
+bool isPreview(PlanReason code);
 
 // The code's stable kebab-case name ("mirror-outside-view"): explain's JSON "code".
 std::string_view toString(PlanReason code);
@@ -135,6 +143,12 @@ struct ReasonDetails {
     // The pre-filtered chain (and the map's mip chain, for the mip filter).
     int levels = 0;
     int samples = 0;
+
+    // A preview's skips: what the scene asks for where the preview draws less (mirror levels, shadow map
+    // texels), its fraction of the output's width and height, and the reflector's update it holds.
+    int asked = 0;
+    double scale = 1.0;
+    ReflectorUpdate update = ReflectorUpdate::OnChange;
 
     // Mirror and environment map passes: the big meshes they draw simplified, or whole.
     std::vector<ReflectedMesh> bigMeshes{};

@@ -228,11 +228,28 @@ void explainShadowPass(const Light& light, int mapSize, std::size_t casters,
         pass.details.cubeFacesWithCasters = std::popcount(frustum.faceMask);
 }
 
-// The size a light's map is drawn at (see fitShadowMapSize); 0 where none fits, the light then skipped.
+// The size a preview draws a light's shadow map at (PreviewPolicy::redrawsShadows): a power of two less per
+// halving of the preview's scale, never under kMinPreviewShadowMapSize nor above the light's own.
+int previewShadowMapSize(int size, const PreviewPolicy& preview) {
+    if (!preview.active() || !preview.redrawsShadows)
+        return size;
+    int shrunk = size;
+    for (double s = preview.scale; s <= 0.5 && shrunk > kMinPreviewShadowMapSize; s *= 2.0)
+        shrunk /= 2;
+    return std::min(size, std::max(shrunk, kMinPreviewShadowMapSize));
+}
+
+// The size a light's map is drawn at (see fitShadowMapSize, previewShadowMapSize); 0 where none fits, the
+// light then skipped. A preview's smaller map is said among the skips.
 int plannedShadowMapSize(const Light& light, int index, const MapLimits& limits, FramePlan& plan) {
-    const int size = fitShadowMapSize(light, index, light.shadows->mapSize, limits, plan.warnings);
+    const std::string name = lightLabel(light, index);
+    const int own = light.shadows->mapSize;
+    const int asked = previewShadowMapSize(own, plan.preview);
+    const int size = fitShadowMapSize(light, index, asked, limits, plan.warnings);
     if (size == 0)
-        plan.skipped.push_back({lightLabel(light, index), PlanReason::ShadowMapDoesNotFit});
+        plan.skipped.push_back({name, PlanReason::ShadowMapDoesNotFit});
+    else if (asked < own)
+        plan.skipped.push_back({name, PlanReason::PreviewShadowMapSize, {.mapSize = size, .asked = own}});
     return size;
 }
 
@@ -336,6 +353,28 @@ void planCameraBuffer(const FrameInput& input, const PlanViewport& viewport, Fra
         plan.passes.push_back(std::move(composite));
 }
 
+// Levels of mirror nesting a preview leaves: `depth` less its cut, but never less than one level.
+int previewMirrorDepth(int depth, const PreviewPolicy& preview) {
+    if (!preview.active())
+        return depth;
+    return depth - std::clamp(preview.mirrorDepthCut, 0, std::max(0, depth - 1));
+}
+
+// What a preview gives up of the whole frame, among the skips: pixels, and levels of mirror nesting. (Its
+// smaller shadow maps and the environment map it holds are said with those.)
+void notePreview(const FrameInput& input, FramePlan& plan) {
+    const PreviewPolicy& preview = plan.preview;
+    if (!preview.active())
+        return;
+    if (preview.scale < 1.0)
+        plan.skipped.push_back(
+            {"output", PlanReason::PreviewScaled, {.scale = std::max(preview.scale, kMinResolutionScale)}});
+    if (plan.mirrorDepth < input.settings.mirrorDepth && !input.mirrors.empty())
+        plan.skipped.push_back({"",
+                                PlanReason::PreviewMirrorDepth,
+                                {.limit = plan.mirrorDepth, .asked = input.settings.mirrorDepth}});
+}
+
 } // namespace
 
 std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan& plan) {
@@ -346,23 +385,27 @@ std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan&
     const bool shadows = std::any_of(plan.shadows.begin(), plan.shadows.end(), differs);
     const bool reflector = input.reflector && plan.reflectorResolution > 0 &&
                            input.reflector->resolution != plan.reflectorResolution;
-    if (!shadows && !reflector)
+    const bool mirrors = input.settings.mirrorDepth != plan.mirrorDepth;
+    if (!shadows && !reflector && !mirrors)
         return std::nullopt;
     FrameInput planned = input;
     for (const ShadowPlan& shadow : plan.shadows)
         planned.lights[static_cast<std::size_t>(shadow.light)].shadows->mapSize = shadow.mapSize;
     if (reflector)
         planned.reflector->resolution = plan.reflectorResolution;
+    planned.settings.mirrorDepth = plan.mirrorDepth;
     return planned;
 }
 
 FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
                     const PlanOptions& options) {
     FramePlan plan;
+    plan.preview = options.preview;
     planShadows(input, state, options.maps, plan);
     if (input.reflector)
         plan.reflectorResolution = fitEnvmapResolution(*input.reflector, options.maps, plan.warnings);
-    // The rest is planned for the scene as it is drawn: its map sizes as just planned.
+    plan.mirrorDepth = previewMirrorDepth(input.settings.mirrorDepth, plan.preview);
+    // The rest is planned for the scene as it is drawn: its map sizes and mirror depth as just planned.
     const std::optional<FrameInput> planned = plannedInput(input, plan);
     const FrameInput& scene = planned ? *planned : input;
 
@@ -383,6 +426,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
 
     planCameraBuffer(scene, viewport, plan);
     planReflectedDetail(scene, plan);
+    notePreview(input, plan);
     declareWrites(scene, plan);
     return plan;
 }

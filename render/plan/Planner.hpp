@@ -3,6 +3,7 @@
 #include "render/frame/FrameInput.hpp"
 #include "render/plan/FramePlan.hpp"
 #include "render/plan/GpuLimits.hpp"
+#include "render/plan/RenderOptions.hpp"
 
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -56,9 +57,10 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex);
 std::uint64_t shadowSignature(const FrameInput& input, int lightIndex, const math::ShadowFrustum& frustum);
 
 // What a frame is planned within besides its scene, its target and what earlier frames left: the map sizes
-// the GPU holds (its limits, and the sizes that failed to allocate before).
+// the GPU holds (its limits, and the sizes that failed to allocate before), and the preview it is.
 struct PlanOptions {
     MapLimits maps;
+    PreviewPolicy preview;
 };
 
 // The pure planning step: which passes run this frame, in order, with the reason for each, which effects
@@ -67,9 +69,9 @@ struct PlanOptions {
 FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport = {},
                     const PlanOptions& options = {});
 
-// The scene as `plan` draws it: `input` with each planned shadow map's size (ShadowPlan::mapSize) and the
-// reflector's resolution (FramePlan::reflectorResolution) the planner chose; nothing where they are the
-// scene's own. The planner plans this scene, and the
+// The scene as `plan` draws it: `input` with each planned shadow map's size (ShadowPlan::mapSize), the
+// reflector's resolution (FramePlan::reflectorResolution) and the mirror depth (FramePlan::mirrorDepth)
+// the planner chose; nothing where they are the scene's own. The planner plans this scene, and the
 // renderer's executors draw it, so what they allocate and draw is what was planned.
 std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan& plan);
 
@@ -104,7 +106,7 @@ bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, con
 
 // The environment-map part of planning: appends the envmap pass to `plan` (or a skip with its reason), then
 // the GGX pre-filter's pass (or a skip) for a rough reflector. `input` is the scene as planned (its
-// reflector at plan.reflectorResolution, see plannedInput).
+// reflector at plan.reflectorResolution, see plannedInput); a preview (plan.preview) holds the map there is.
 // `mirrors` holds the frame's mirror views, used for visibility.
 void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
                    const FramePlan& mirrors, FramePlan& plan);

@@ -257,6 +257,8 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     PlanReason why = PlanReason::EnvmapChanged;
     if (!haveMap) {
         why = PlanReason::EnvmapFirstMap;
+    } else if (plan.preview.active() && reflector.update != ReflectorUpdate::Once) {
+        why = PlanReason::PreviewEnvmapHeld;
     } else if (reflector.update == ReflectorUpdate::Always) {
         why = PlanReason::EnvmapAlways;
     } else if (reflector.update == ReflectorUpdate::Once) {
@@ -264,8 +266,9 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     } else if (*state.envmapSignature == envmapSignature(input)) {
         why = PlanReason::EnvmapUnchanged;
     }
-    if (why == PlanReason::EnvmapReusedOnce || why == PlanReason::EnvmapUnchanged) {
-        plan.skipped.push_back({reflector.name, why});
+    if (why == PlanReason::EnvmapReusedOnce || why == PlanReason::EnvmapUnchanged ||
+        why == PlanReason::PreviewEnvmapHeld) {
+        plan.skipped.push_back({reflector.name, why, {.update = reflector.update}});
         planPrefilter(input, state, {}, plan);
         return;
     }

@@ -31,6 +31,31 @@ struct ImageTile {
 // The smallest RenderOptions::resolutionScale; less is drawn at this.
 inline constexpr double kMinResolutionScale = 0.125;
 
+// The smallest shadow map a preview shrinks a light's to (texels a side): smaller, the shadow of a dragged
+// object blurs away.
+inline constexpr int kMinPreviewShadowMapSize = 256;
+
+// What an interactive preview gives up to keep up with the view (the editor's viewport while it is navigated
+// or a handle dragged): pixels, levels of mirror nesting, the environment map's updates and, while a handle
+// is dragged, shadow map texels. The renderer draws at the scale; the planner applies the rest and lists
+// each effect among the frame's skips, with a preview code (isPreview). The default gives up nothing: a
+// frame at rest.
+struct PreviewPolicy {
+    // The fraction of the target's width and height drawn, scaled up by the composite pass (as
+    // resolutionScale: the smaller of the two applies).
+    double scale = 1.0;
+    // Levels of mirror nesting left out: settings.mirrorDepth less this, but never less than one level.
+    int mirrorDepthCut = 0;
+    // A handle is dragged: what casts shadows changes every frame, so every shadow map is drawn again anyway,
+    // a power of two smaller per halving of `scale` (never under kMinPreviewShadowMapSize², nor larger than
+    // the light's own). Navigating changes no shadow: the maps are reused as they are.
+    bool redrawsShadows = false;
+
+    // Something is given up. The environment map is then held as it is, drawn only where there is none
+    // yet: an orbit never changes it, and a handle drag would draw it again every frame.
+    bool active() const { return scale < 1.0 || mirrorDepthCut > 0; }
+};
+
 struct RenderOptions {
     glm::dvec2 jitterPixels{0.0}; // sub-pixel image offset, for supersampling
     bool gpuTimings = true;       // timer queries per pass (waits for the GPU at the end of the frame)
@@ -63,6 +88,8 @@ struct RenderOptions {
     // would draw it in 8-bit sRGB (FramePlan::cameraBuffer): the reference the tests and `speculum time
     // --half-float` compare the cheaper path with.
     bool halfFloatCameraBuffer = false;
+    // An interactive preview (see PreviewPolicy); the default is a frame at rest. Ignored for tiles.
+    PreviewPolicy preview;
 };
 
 } // namespace speculum::render

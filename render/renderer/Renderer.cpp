@@ -172,7 +172,7 @@ void selectLighting(passes::FrameResources& r, const FrameInput& input, const Fr
 // The target the passes draw at: the caller's, or a fraction of its size for a preview (scaled up by the
 // composite). A tile is a part of an exact image: always drawn whole.
 RenderTarget drawnTarget(const RenderTarget& target, const RenderOptions& options) {
-    const double scale = options.resolutionScale;
+    const double scale = std::min(options.resolutionScale, options.preview.scale);
     if (options.tile || !(scale < 1.0)) { // NaN draws every pixel too
         return target;
     }
@@ -213,7 +213,8 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
                           const PlannerState& committed, passes::FrameResources& r, FrameReport& report) {
     DrawnFrame frame;
     // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
-    // untiled frame would, with the same sub-pixel sample positions.
+    // untiled frame would, with the same sub-pixel sample positions. It is part of an exact still: never a
+    // preview.
     const bool eightBitOutput = target.encodeSrgb && !options.halfFloatCameraBuffer;
     const bool drawnWhole = !options.tile && drawn.width == target.width && drawn.height == target.height;
     const PlanViewport viewport{options.tile ? options.tile->imageWidth : drawn.width,
@@ -221,7 +222,7 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
                                 eightBitOutput, eightBitOutput && drawnWhole && target.srgbDepthStencil};
     const PlannerState freshState;
     const PlannerState& plannerState = options.reuseMaps ? committed : freshState;
-    const PlanOptions planOptions{mapLimits(limits, r)};
+    const PlanOptions planOptions{mapLimits(limits, r), options.tile ? PreviewPolicy{} : options.preview};
     FramePlan& plan = report.plan;
     plan = planFrame(requested, plannerState, viewport, planOptions);
     report.warnings = plan.warnings;

@@ -100,6 +100,7 @@ RenderOptions sampleOptions(const StillSettings& settings, const TileGrid& grid,
     options.lightingVariants = settings.lightingVariants;
     options.boundShadowLookups = settings.boundShadowLookups;
     options.cullHiddenBackFaces = settings.cullHiddenBackFaces;
+    options.preview = settings.preview;
     return options;
 }
 

@@ -26,6 +26,9 @@ struct StillSettings {
     bool lightingVariants = true;   // RenderOptions::lightingVariants for every sample
     bool boundShadowLookups = true; // RenderOptions::boundShadowLookups for every sample
     bool cullHiddenBackFaces = true; // RenderOptions::cullHiddenBackFaces for every sample
+    // RenderOptions::preview for every sample (`speculum explain --preview` shows what a preview gives up);
+    // ignored where the still is drawn in tiles.
+    PreviewPolicy preview;
 };
 
 // Reports progress in 0..1 with a short stage name; returning false cancels the render.

@@ -81,7 +81,7 @@ TEST_F(Cli, RenderWritesEveryFormatByExtension) {
 TEST_F(Cli, EachCommandHasItsOwnHelp) {
     const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
         {"render", {"--output", "--size", "--ssaa", "--time", "--reference", "--samples", "--keep-going"}},
-        {"explain", {"--size", "--time", "--frame", "--json"}},
+        {"explain", {"--size", "--time", "--frame", "--preview", "--preview-drag", "--json"}},
         {"bench", {"--out", "--size", "--quick", "--keep-going"}},
         {"time", {"--size", "--frames", "--animated", "--half-float", "--json"}},
         {"export", {"--output", "--keep-going"}},
@@ -313,6 +313,62 @@ TEST_F(Cli, ExplainOfASecondStaticFrameShowsTheReusedMaps) {
     EXPECT_NE(std::find(codes.begin(), codes.end(), "shadow-map-reused"), codes.end()) << second.out;
     EXPECT_NE(std::find(codes.begin(), codes.end(), "envmap-unchanged"), codes.end()) << second.out;
     EXPECT_NE(speculum("explain " + chrome + " --frame 0").status, 0);
+}
+
+// `explain --preview SCALE[,CUT]` explains the frame as the editor's preview at that level draws it: every
+// effect the preview gives up is a skip with a code starting "preview-", and the JSON says the level and
+// the size drawn. --preview-drag is a handle drag's preview, whose shadow maps are drawn smaller.
+TEST_F(Cli, ExplainPreviewShowsWhatThePreviewGivesUp) {
+    const std::string mirrors = speculum::testSourcePath("resources/scenes/mirrors.speculum.json");
+    auto json = [](const CliRun& run) {
+        return QJsonDocument::fromJson(QByteArray::fromStdString(run.out)).object();
+    };
+    auto previewReasons = [](const QJsonObject& root) {
+        QStringList reasons;
+        for (const auto& skip : root["skipped"].toArray())
+            if (skip.toObject()["code"].toString().startsWith("preview-"))
+                reasons.append(skip.toObject()["reason"].toString());
+        return reasons;
+    };
+    auto mirrorPasses = [](const QJsonObject& root) {
+        int n = 0;
+        for (const auto& pass : root["passes"].toArray())
+            n += pass.toObject()["kind"].toString() == "mirror";
+        return n;
+    };
+    const CliRun rest = speculum("explain " + mirrors + " --size 160x90 --json");
+    ASSERT_EQ(rest.status, 0) << rest.err;
+    EXPECT_TRUE(json(rest)["preview"].isNull());
+    EXPECT_TRUE(previewReasons(json(rest)).isEmpty());
+
+    const CliRun drag =
+        speculum("explain " + mirrors + " --size 160x90 --json --preview 0.5,2 --preview-drag");
+    ASSERT_EQ(drag.status, 0) << drag.err;
+    const QJsonObject preview = json(drag)["preview"].toObject();
+    EXPECT_EQ(preview["drawnSize"].toString(), "80x45") << drag.out;
+    EXPECT_EQ(preview["mirrorDepthCut"].toInt(), 2);
+    EXPECT_TRUE(preview["drag"].toBool());
+    const QStringList reasons = previewReasons(json(drag));
+    EXPECT_TRUE(
+        reasons.contains("preview: drawn at 50% of the output's width and height and scaled up to it"))
+        << reasons.join("\n").toStdString();
+    EXPECT_TRUE(reasons.contains("preview: mirrors nest 2 levels deep, not 4 (settings.mirrorDepth)"))
+        << reasons.join("\n").toStdString();
+    EXPECT_TRUE(reasons.contains("preview: shadow map drawn at 512², not 1024², while a handle is dragged"))
+        << reasons.join("\n").toStdString();
+    EXPECT_LT(mirrorPasses(json(drag)), mirrorPasses(json(rest))) << "mirrors nest less deep";
+
+    // A static frame after the first: the preview holds the environment map instead of checking it.
+    const std::string chrome = speculum::testSourcePath("resources/scenes/chrome.speculum.json");
+    const CliRun held = speculum("explain " + chrome + " --size 160x90 --frame 2 --preview 0.25");
+    ASSERT_EQ(held.status, 0) << held.err;
+    EXPECT_NE(held.out.find("A preview while the view moves, drawn at 40x23"), std::string::npos) << held.out;
+    EXPECT_NE(held.out.find("preview: environment map held while the view moves"), std::string::npos)
+        << held.out;
+
+    EXPECT_EQ(speculum("explain " + chrome + " --preview 2").status, 2);
+    EXPECT_EQ(speculum("explain " + chrome + " --preview 0.5,x").status, 2);
+    EXPECT_EQ(speculum("explain " + chrome + " --preview-drag").status, 2) << "a bad command line";
 }
 
 // `speculum export`: a self-contained .glb (the demo's marble PNG inside it, camera and light there), a

@@ -85,11 +85,21 @@ TEST(PlanReason, SentencesNameTheirDetails) {
          "no reflection: outside the parent mirror's reflected view (seen in Left → Right (depth 3))"},
         {PlanReason::ShadowMapNotAllocated, flat,
          "no shadow this frame: its 2048² map could not be allocated (see the warnings)"},
+        {PlanReason::PreviewMirrorDepth, ReasonDetails{.limit = 2, .asked = 4},
+         "preview: mirrors nest 2 levels deep, not 4 (settings.mirrorDepth)"},
+        {PlanReason::PreviewEnvmapHeld, ReasonDetails{.update = ReflectorUpdate::Always},
+         "preview: environment map held while the view moves (update \"always\" applies again at rest)"},
         {PlanReason::MirrorOccluded, inCamera,
          "no reflection: fully occluded: no pixel of it passed the depth test"},
     };
     for (const auto& c : cases)
         EXPECT_EQ(formatReason(c.code, c.details), c.sentence) << c.code;
+}
+
+// A preview's skips are told apart by their code, whose name says so.
+TEST(PlanReason, PreviewCodesAreNamedSo) {
+    for (PlanReason code : everyCode())
+        EXPECT_EQ(isPreview(code), toString(code).starts_with("preview-")) << code;
 }
 
 } // namespace

@@ -4,4 +4,5 @@ speculum_add_test(RenderPlanTest TIER unit
     SOURCES PlannerTest.cpp PlannerReflectedDetailTest.cpp PlannerSignaturesTest.cpp MirrorPlannerTest.cpp
             MirrorPlannerEnvmapTest.cpp ReflectorPlannerTest.cpp ReflectorPlannerPrefilterTest.cpp
             PassWritesTest.cpp TilePlanTest.cpp GpuLimitsTest.cpp PlanReasonTest.cpp
+            PlannerPreviewTest.cpp
     LIBS speculum_render_plan speculum_render_imageio speculum_render_gl)
