@@ -110,6 +110,10 @@ public:
     // plane stay the view's. Looking through the scene camera, it is an edit of that camera, as
     // navigation is. Repaints.
     void setViewCamera(const render::Camera& camera);
+    // A step of the keypad's orbit (degrees, as view::ViewCamera::orbit turns) or zoom (wheel notches):
+    // moves the view as a preset does, an edit step of its own when looking through the scene camera.
+    void orbitView(double yawDegrees, double pitchDegrees);
+    void zoomView(double notches);
     // Where the view looks from and at, for the project's saved editor view (scene::EditorView).
     std::pair<glm::dvec3, glm::dvec3> viewPositionTarget() const;
     // Puts the view at `position` looking at `target` (a saved editor view: view::ViewCamera::place),

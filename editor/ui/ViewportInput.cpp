@@ -34,6 +34,16 @@ void Viewport::setViewCamera(const render::Camera& camera) {
     update();
 }
 
+void Viewport::orbitView(double yawDegrees, double pitchDegrees) {
+    m_navigation.orbitStep(yawDegrees, pitchDegrees);
+    update();
+}
+
+void Viewport::zoomView(double notches) {
+    m_navigation.zoomStep(notches);
+    update();
+}
+
 std::pair<glm::dvec3, glm::dvec3> Viewport::viewPositionTarget() const {
     return m_navigation.positionTarget();
 }

@@ -156,6 +156,17 @@ void ViewportNavigation::zoom(double notches) {
     moved();
 }
 
+void ViewportNavigation::orbitStep(double yawDegrees, double pitchDegrees) {
+    ++m_gestureSerial;
+    m_view.orbit(yawDegrees, pitchDegrees);
+    moved();
+}
+
+void ViewportNavigation::zoomStep(double notches) {
+    ++m_gestureSerial;
+    zoom(notches);
+}
+
 void ViewportNavigation::moved() {
     if (!m_looksThroughSceneCamera || !m_undoStack) {
         return;

@@ -69,6 +69,10 @@ public:
     bool endDrag();
     // The wheel: each notch (120 units of angle delta) 15% closer, or farther when negative.
     void zoom(double notches);
+    // The keypad's steps: an orbit (view::ViewCamera::orbit) or a zoom, each an edit step of its own when
+    // looking through the scene camera (a wheel's notches merge into the gesture under way).
+    void orbitStep(double yawDegrees, double pitchDegrees);
+    void zoomStep(double notches);
 
 private:
     void moved(); // after every edit-worthy move: the scene camera's edit when looking through it

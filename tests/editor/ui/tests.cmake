@@ -23,6 +23,9 @@ speculum_add_test(MainWindowOutputGuiTest TIER gui USES_CLI
 # raised camera, new objects and duplicates placed beside each other.
 speculum_add_test(MainWindowInputGuiTest TIER gui
     SOURCES MainWindowInputGuiTest.cpp ${gui_main} LIBS speculum_editor_ui Qt6::Test)
+# The numeric keypad from a real X keyboard (xdotool's XTEST), NumLock on and off: views, orbit and zoom
+# steps, and the keys it shares with Home and Delete doing neither.
+speculum_add_test(KeypadKeysGuiTest TIER gui SOURCES KeypadKeysGuiTest.cpp ${gui_main} LIBS speculum_editor_ui)
 # Import and Open of hostile files (FIFOs, devices, DAG and deep node graphs, duplicate keys, overflowing
 # values) show an error, keep the event loop running and leave the open document as it was.
 speculum_add_test(MainWindowHostileFilesGuiTest TIER gui
