@@ -1,6 +1,8 @@
-// The main window's part in the editor view: the view presets and guides, the vertical orbit
-// preference, and the project's saved editor view ("editorView"), which is put in place when a document
-// opens and taken from the viewport when it is saved. Moving the view is never an edit.
+// The main window's part in the editor view: the view presets and guides, the keyboard handed back to the
+// viewport after a field (FieldKeys), the vertical orbit preference, and the project's saved editor view
+// ("editorView"), which is put in place when a document opens and taken from the viewport when it is saved.
+// Moving the view is never an edit.
+#include "editor/ui/FieldKeys.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/ViewPresetActions.hpp"
 #include "editor/ui/Viewport.hpp"
@@ -11,6 +13,7 @@ namespace speculum::ui {
 
 void MainWindow::createViewPlacement() {
     addViewPresetActions(*this, m_viewMenu, *m_viewport);
+    new FieldKeys(*this, *m_viewport);
     // The viewport has put the view back on the scene camera already (its own connection to the reset
     // runs first); a saved editor view takes its place.
     connect(m_viewport, &Viewport::viewReset, this, [this] {

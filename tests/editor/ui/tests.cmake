@@ -26,6 +26,8 @@ speculum_add_test(MainWindowInputGuiTest TIER gui
 # The numeric keypad from a real X keyboard (xdotool's XTEST), NumLock on and off: views, orbit and zoom
 # steps, and the keys it shares with Home and Delete doing neither.
 speculum_add_test(KeypadKeysGuiTest TIER gui SOURCES KeypadKeysGuiTest.cpp ${gui_main} LIBS speculum_editor_ui)
+# The keyboard after a field on a real X keyboard: Enter commits and hands it back, Esc reverts.
+speculum_add_test(FieldKeysGuiTest TIER gui SOURCES FieldKeysGuiTest.cpp ${gui_main} LIBS speculum_editor_ui)
 # Import and Open of hostile files (FIFOs, devices, DAG and deep node graphs, duplicate keys, overflowing
 # values) show an error, keep the event loop running and leave the open document as it was.
 speculum_add_test(MainWindowHostileFilesGuiTest TIER gui
