@@ -1,8 +1,13 @@
 #pragma once
 
+#include "support/GuiTestSupport.hpp"
+
+#include <QGuiApplication>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QStringList>
+#include <QWindow>
+#include <memory>
 
 namespace speculum::ui::test {
 
@@ -20,6 +25,22 @@ inline bool pressXKeys(const QStringList& keys) {
 
 inline bool haveXKeyboard() {
     return !QStandardPaths::findExecutable(QStringLiteral("xdotool")).isEmpty();
+}
+
+// A main window at 1280×800, its animation stopped, with X's input focus (so that pressXKeys reaches it)
+// and its first frames drawn; null where it never got there.
+inline std::unique_ptr<MainWindow> mainWindowWithXFocus() {
+    auto window = std::make_unique<MainWindow>();
+    window->resize(1280, 800);
+    window->show();
+    if (!waitFor([&] { return window->windowHandle() && window->windowHandle()->isExposed(); }))
+        return nullptr;
+    window->clock().setPlaying(false);
+    window->activateWindow();
+    if (!waitFor([&] { return QGuiApplication::focusWindow() == window->windowHandle(); }) ||
+        !waitForFrames(*window))
+        return nullptr;
+    return window;
 }
 
 } // namespace speculum::ui::test

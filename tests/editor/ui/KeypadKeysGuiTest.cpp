@@ -28,7 +28,6 @@ namespace speculum::ui {
 namespace {
 
 using test::waitFor;
-using test::waitForFrames;
 
 void runFor(int ms) {
     QElapsedTimer timer;
@@ -62,17 +61,9 @@ class KeypadKeysTest : public ::testing::Test {
 protected:
     void SetUp() override {
         ASSERT_TRUE(test::haveXKeyboard()) << "xdotool is missing: scripts/setup-deps installs it";
-        m_window = std::make_unique<MainWindow>();
-        m_window->resize(1280, 800);
-        m_window->show();
-        ASSERT_TRUE(
-            waitFor([&] { return m_window->windowHandle() && m_window->windowHandle()->isExposed(); }));
-        m_window->clock().setPlaying(false);
-        m_window->activateWindow();
-        ASSERT_TRUE(waitFor([&] { return QGuiApplication::focusWindow() == m_window->windowHandle(); }))
-            << "the window has X's input focus";
+        m_window = test::mainWindowWithXFocus();
+        ASSERT_NE(m_window, nullptr) << "the window is shown and has X's input focus";
         m_window->viewport().setFocus(Qt::OtherFocusReason);
-        ASSERT_TRUE(waitForFrames(*m_window));
         qApp->installEventFilter(&m_recorder); // after the window's filters: it sees each key first
         const QAction* rewind = action("actionRewind");
         ASSERT_NE(rewind, nullptr);
