@@ -202,8 +202,10 @@ QString AccuracyPanel::applyRecord(int index) {
                       .arg(family, label)
                       .arg(accuracy::frameMs(record), 0, 'f', 2)
                       .arg(record.psnr, 0, 'f', 2);
-    } else {
+    } else if (application.skipped.isEmpty()) {
         summary = tr("%1 %2: the document already has these settings.").arg(family, label);
+    } else {
+        summary = tr("%1 %2: nothing applied.").arg(family, label);
     }
     if (!application.skipped.isEmpty()) {
         summary +=

@@ -77,11 +77,22 @@ const char* kResults = R"({
   ]
 })";
 
-QString writeResults(const QTemporaryDir& dir) {
+// A point of a later version's sweep, whose one setting this version does not know.
+const char* kUnknownSettingResults = R"({
+  "format": "speculum-bench", "version": 1, "scene": "chrome.speculum.json", "size": "480x270",
+  "results": [
+    {"id": "future-1", "family": "envmap", "label": "future", "series": "future", "reference": "scene",
+     "sceneSetting": false, "settings": {"futureSetting": "on"},
+     "gpuMs": 2.0, "cpuMs": 3.0, "memoryBytes": 500, "rmse": 0.04, "psnr": 28.0,
+     "psnrMirrors": null, "psnrReflector": 22.0}
+  ]
+})";
+
+QString writeResults(const QTemporaryDir& dir, const char* results = kResults) {
     const QString path = dir.filePath(QStringLiteral("results.json"));
     QFile file(path);
     EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(kResults);
+    file.write(results);
     return path;
 }
 
@@ -243,7 +254,22 @@ TEST_F(AccuracyPanelTest, ClickingASweepPointAppliesItsSettingsAsOneUndoStep) {
     m_window->undoStack().undo();
     const QString message = panel().applyRecord(0);
     EXPECT_TRUE(message.contains(QStringLiteral("Not applied")) == false) << message.toStdString();
+    EXPECT_TRUE(message.contains(QStringLiteral("the document already has these settings")))
+        << message.toStdString();
     EXPECT_EQ(m_window->scene().toData(), before); // the scene's own settings: nothing to change
+}
+
+// A point none of whose settings the document can take says so, and names them; it never claims the
+// document already had them.
+TEST_F(AccuracyPanelTest, APointThatAppliesNothingSaysWhy) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir, kUnknownSettingResults)).ok());
+    const int steps = m_window->undoStack().count();
+    const QString message = panel().applyRecord(0);
+    EXPECT_EQ(message,
+              QStringLiteral("envmap future: nothing applied. Not applied: futureSetting = on: this version "
+                             "does not know the setting."));
+    EXPECT_EQ(m_window->undoStack().count(), steps);
 }
 
 TEST_F(AccuracyPanelTest, RunSweepFillsTheChartAsItGoesAndShowsTheFindings) {
