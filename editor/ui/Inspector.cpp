@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -55,6 +56,9 @@ Inspector::Inspector(scene::Scene& scene, QUndoStack& undoStack, view::Selection
     m_scroll = new QScrollArea(this);
     m_scroll->setWidgetResizable(true);
     m_scroll->setFrameShape(QFrame::NoFrame);
+    // Never cut a row off on the right (a vector's Z field behind a scroll bar): the panel is as wide as
+    // its widest row needs (fitToContent), and the dock around it follows.
+    m_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     layout->addWidget(m_scroll, 1);
 
     connect(&selection, &view::Selection::changed, this, [this] {
@@ -151,9 +155,15 @@ void Inspector::rebuild() {
         old->deleteLater();
     }
     m_scroll->setWidget(m_content);
+    fitToContent();
     if (!m_invalidKey.isEmpty() && m_editors.contains(m_invalidKey)) {
         m_editors[m_invalidKey]->setInvalid(true);
     }
+}
+
+void Inspector::fitToContent() {
+    const int scrollBar = m_scroll->verticalScrollBar()->sizeHint().width();
+    m_scroll->setMinimumWidth(m_content->minimumSizeHint().width() + scrollBar);
 }
 
 void Inspector::refresh() {

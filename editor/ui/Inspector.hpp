@@ -44,6 +44,8 @@ signals:
 
 private:
     void rebuild();
+    // The panel's least width: its widest row, every field shown whole.
+    void fitToContent();
     void refresh();
     QString layoutSignature() const;
     void showError(const QString& key, const QString& text);

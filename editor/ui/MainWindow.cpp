@@ -481,24 +481,20 @@ QDockWidget* MainWindow::createAccuracyDock(QDockWidget* inspectorDock) {
     auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
     accuracyDock->setObjectName(QStringLiteral("accuracyDock"));
     accuracyDock->setWidget(m_accuracyPanel);
-    // Beside the Properties, not tabbed behind them: comparing and then editing a setting needs both in
-    // sight. View ▸ Accuracy brings it to the front even where a saved layout tabbed it.
+    // Beside the Properties where there is room (placeAccuracyDock): comparing and then editing a setting
+    // wants both in sight. View ▸ Accuracy brings it to the front even where it is tabbed.
     addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
     splitDockWidget(inspectorDock, accuracyDock, Qt::Horizontal);
     accuracyDock->hide();
     connect(accuracyDock->toggleViewAction(), &QAction::toggled, accuracyDock,
             [this, accuracyDock, inspectorDock](bool shown) {
                 if (shown) {
-                    accuracyDock->raise();
-                    // Room for both: the Properties keep a readable width, the images get theirs. After
-                    // the dock is laid out (a resize before that is undone by its first layout), and
-                    // taken from the viewport, which can spare it.
-                    QTimer::singleShot(0, this, [this, accuracyDock, inspectorDock] {
-                        const int properties = std::max(inspectorDock->width(), 300);
-                        const int spare = std::max(m_viewport->width() - 480, 0);
-                        const int docks = inspectorDock->width() + accuracyDock->width() + spare;
-                        const int accuracy = std::clamp(docks - properties, 320, 480);
-                        resizeDocks({inspectorDock, accuracyDock}, {properties, accuracy}, Qt::Horizontal);
+                    placeAccuracyDock(accuracyDock, inspectorDock);
+                } else if (m_propertiesWidth > 0 && inspectorDock->isVisible()) {
+                    // Its room goes back to the viewport: the Properties return to the width they had
+                    // before it opened (after the layout has taken the dock out).
+                    QTimer::singleShot(0, this, [this, inspectorDock] {
+                        resizeDocks({inspectorDock}, {m_propertiesWidth}, Qt::Horizontal);
                     });
                 }
             });
@@ -507,6 +503,41 @@ QDockWidget* MainWindow::createAccuracyDock(QDockWidget* inspectorDock) {
         statusBar()->showMessage(text, 8000);
     });
     return accuracyDock;
+}
+
+namespace {
+constexpr int kMinViewportWidth = 480; // the least the viewport keeps for the Accuracy panel beside it
+constexpr int kAccuracyWidth = 400;    // the Accuracy panel's width beside the Properties, at least
+} // namespace
+
+// Beside the Properties where the window has room for both and a viewport of kMinViewportWidth, else
+// tabbed with them (a window as wide as a laptop's screen would otherwise grow past it, or squeeze the
+// Properties' fields). Only while the two share a dock area: a layout the user made stays theirs.
+void MainWindow::placeAccuracyDock(QDockWidget* accuracyDock, QDockWidget* inspectorDock) {
+    m_propertiesWidth = inspectorDock->width();
+    const bool together = !accuracyDock->isFloating() && !inspectorDock->isFloating() &&
+                          dockWidgetArea(accuracyDock) == dockWidgetArea(inspectorDock);
+    if (together) {
+        const int room = inspectorDock->width() + m_viewport->width();
+        const int besideNeeds = m_propertiesWidth +
+                                std::max(kAccuracyWidth, accuracyDock->minimumSizeHint().width()) +
+                                kMinViewportWidth;
+        if (besideNeeds > room) {
+            tabifyDockWidget(inspectorDock, accuracyDock);
+        } else if (!tabifiedDockWidgets(inspectorDock).isEmpty()) {
+            splitDockWidget(inspectorDock, accuracyDock, Qt::Horizontal);
+        }
+    }
+    accuracyDock->raise();
+    if (!together || !tabifiedDockWidgets(inspectorDock).isEmpty())
+        return;
+    // Room for both: the Properties keep their width, the images get theirs, taken from the viewport.
+    // After the dock is laid out (a resize before that is undone by its first layout).
+    QTimer::singleShot(0, this, [this, accuracyDock, inspectorDock] {
+        const int spare = std::max(m_viewport->width() - kMinViewportWidth, 0);
+        const int accuracy = std::clamp(accuracyDock->width() + spare, kAccuracyWidth, 480);
+        resizeDocks({inspectorDock, accuracyDock}, {m_propertiesWidth, accuracy}, Qt::Horizontal);
+    });
 }
 
 QDockWidget* MainWindow::createLogDock() {

@@ -193,6 +193,7 @@ private:
     QDockWidget* createInspectorDock();
     QDockWidget* createPassesDock(QDockWidget* treeDock);
     QDockWidget* createAccuracyDock(QDockWidget* inspectorDock);
+    void placeAccuracyDock(QDockWidget* accuracyDock, QDockWidget* inspectorDock);
     QDockWidget* createLogDock();
     void rebuildRecentMenu();
     void addRecentFile(const QString& path);
@@ -216,6 +217,7 @@ private:
     Inspector* m_inspector = nullptr;
     RenderPassesPanel* m_passesPanel = nullptr;
     AccuracyPanel* m_accuracyPanel = nullptr;
+    int m_propertiesWidth = 0; // the Properties dock's width before the Accuracy panel opened beside it
     std::unique_ptr<scene::RecoveryStore> m_recovery;
     QTimer m_autosave;
 

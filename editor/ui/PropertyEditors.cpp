@@ -14,6 +14,8 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStyle>
+#include <QStyleOptionSpinBox>
 #include <QToolButton>
 #include <QWheelEvent>
 #include <cmath>
@@ -68,6 +70,24 @@ public:
 
     void fixup(QString&) const override {}
 
+    // Wide enough to show a value of the sizes scenes hold ("-0000.000", at the decimals shown) with the
+    // prefix and unit. Qt's own hints measure the range's ends, and the range here is ±1e12 (the
+    // property's validation decides, not the spin box), which would ask for the width of 22 digits; a
+    // spin box's size policy makes its size hint its least width, so both say the same.
+    QSize sizeHint() const override { return minimumSizeHint(); }
+    QSize minimumSizeHint() const override {
+        ensurePolished();
+        const QString sample = QStringLiteral("-0000") + (m_shown > 0 ? QStringLiteral(".") : QString()) +
+                               QString(m_shown, QLatin1Char('0'));
+        const int text = fontMetrics().horizontalAdvance(prefix() + sample + suffix()) + 2; // + the cursor
+        QStyleOptionSpinBox option;
+        initStyleOption(&option);
+        const int height = QDoubleSpinBox::minimumSizeHint().height();
+        const QSize withFrame =
+            style()->sizeFromContents(QStyle::CT_SpinBox, &option, QSize(text, height), this);
+        return {withFrame.width(), height};
+    }
+
     static QString fieldText(double value, int shown, const QLocale& locale) {
         const QString fixed = locale.toString(value, 'f', shown);
         const double back = locale.toDouble(fixed);
@@ -118,7 +138,6 @@ QDoubleSpinBox* makeSpin(const PropertyInfo& info, QWidget* parent, const QStrin
         spin->setSuffix(info.unit);
     }
     spin->setToolTip(info.tooltip);
-    spin->setMinimumWidth(70);
     spin->setFocusPolicy(Qt::StrongFocus);
     return spin;
 }
@@ -218,7 +237,6 @@ public:
             spin->setSuffix(QString());
             spin->setPrefix(QString::fromLatin1(color ? rgb[i] : xyz[i]).toUpper() + QLatin1Char(' '));
             spin->setToolTip(info.tooltip.isEmpty() ? info.unit.trimmed() : info.tooltip);
-            spin->setMinimumWidth(60);
             layout->addWidget(spin, 1);
             watchFocus(spin);
             connect(spin, &QDoubleSpinBox::valueChanged, this, [this] {

@@ -261,5 +261,80 @@ TEST_F(InspectorInputTest, AccuracyPanelScreenshotAfterAComparison) {
     EXPECT_TRUE(m_window->grab().save(shots + QStringLiteral("/accuracy-panel.png")));
 }
 
+// The Properties dock at the window's first size and at a laptop's: every number field is shown whole
+// (a vector's three, with their text), opening the Accuracy panel beside it does not squeeze it, and
+// closing that panel gives its room back to the viewport, not to the Properties.
+class InspectorLayoutTest : public ::testing::TestWithParam<QSize> {};
+
+// Fields of the inspector cut off on the right or narrower than their text needs, by name.
+QStringList cutFields(Inspector& inspector) {
+    QStringList cut;
+    auto* scroll = inspector.findChild<QScrollArea*>();
+    for (QDoubleSpinBox* spin : inspector.findChildren<QDoubleSpinBox*>()) {
+        if (!spin->isVisibleTo(&inspector))
+            continue;
+        const int right = spin->mapTo(scroll->viewport(), QPoint(spin->width(), 0)).x();
+        if (spin->width() < spin->minimumSizeHint().width() || right > scroll->viewport()->width())
+            cut.append(spin->objectName());
+    }
+    return cut;
+}
+
+TEST_P(InspectorLayoutTest, VectorsFitAndTheAccuracyPanelGivesItsRoomBack) {
+    MainWindow window;
+    if (GetParam().isValid())
+        window.resize(GetParam());
+    window.show();
+    ASSERT_TRUE(window
+                    .openProjectFile(QString::fromStdString(
+                        speculum::testSourcePath("resources/scenes/teapot.speculum.json")))
+                    .ok());
+    ASSERT_TRUE(waitForFrames(window, 1));
+    // Nothing selected: the scene's settings and its camera, whose position is a vector.
+    window.selection().clear();
+    QCoreApplication::processEvents();
+    ASSERT_NE(window.inspector().findChild<QDoubleSpinBox*>(QStringLiteral("camera.position.z")), nullptr);
+    EXPECT_EQ(cutFields(window.inspector()), QStringList{}) << "at the first layout";
+
+    auto* properties = window.findChild<QDockWidget*>(QStringLiteral("inspectorDock"));
+    auto* accuracy = window.findChild<QDockWidget*>(QStringLiteral("accuracyDock"));
+    ASSERT_NE(properties, nullptr);
+    ASSERT_NE(accuracy, nullptr);
+    const int propertiesWidth = properties->width();
+    const int viewportWidth = window.viewport().width();
+    const int windowWidth = window.width();
+    accuracy->toggleViewAction()->trigger();
+    ASSERT_TRUE(waitFor([&] { return accuracy->isVisible(); }));
+    waitFor([] { return false; }, 300); // its layout settles
+    EXPECT_EQ(window.width(), windowWidth) << "the window does not grow to make room";
+    const bool tabbed = window.tabifiedDockWidgets(properties).contains(accuracy);
+    EXPECT_EQ(tabbed, GetParam().width() < 1600) << "beside the Properties only where there is room";
+    if (tabbed) {
+        EXPECT_EQ(window.viewport().width(), viewportWidth) << "tabbed with the Properties: no room taken";
+    } else {
+        EXPECT_GE(window.viewport().width(), 480) << "beside them, where the viewport keeps 480 pixels";
+        EXPECT_EQ(cutFields(window.inspector()), QStringList{}) << "beside the Accuracy panel";
+        EXPECT_GE(properties->width(), propertiesWidth - 2) << "its room came from the viewport";
+    }
+
+    accuracy->toggleViewAction()->trigger();
+    ASSERT_TRUE(waitFor([&] { return !accuracy->isVisible(); }));
+    ASSERT_TRUE(waitFor([&] { return std::abs(window.viewport().width() - viewportWidth) <= 2; }, 5000))
+        << "closed, its room goes back to the viewport: " << window.viewport().width() << " against "
+        << viewportWidth;
+    EXPECT_LE(std::abs(properties->width() - propertiesWidth), 2);
+    window.undoStack().setClean();
+}
+
+// The window's first size and a laptop's tab the Accuracy panel with the Properties; a wide screen's has
+// room for it beside them.
+INSTANTIATE_TEST_SUITE_P(WindowSizes, InspectorLayoutTest,
+                         ::testing::Values(QSize(), QSize(1280, 800), QSize(1900, 1000)),
+                         [](const auto& info) {
+                             return !info.param.isValid()       ? "FirstSize"
+                                    : info.param.width() < 1600 ? "Laptop"
+                                                                : "WideScreen";
+                         });
+
 } // namespace
 } // namespace speculum::ui
