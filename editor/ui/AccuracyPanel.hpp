@@ -71,7 +71,7 @@ private:
 // The Accuracy dock: "Compare with exact" measures the current view's raster frame against the exact tracer
 // (numbers explained in a sentence; the exact image, the raster image and the error map side by side, or a
 // flip view that alternates the exact and the raster image in one place; the error map optionally over the
-// viewport). A new or opened document clears it (Scene::sceneReset, or clear()). "Run sweep…" runs the
+// viewport). A new or opened document clears it (Scene::sceneReset, or clear()). "Run sweep" runs the
 // bench's sweep on the document's scene in-process (accuracy::runSweep on a worker thread, with progress and
 // cancel), filling the chart as points arrive and showing the report's findings when done; "Load sweep…"
 // charts a results.json that `speculum bench` wrote. Clicking a point applies that configuration's settings

@@ -89,9 +89,9 @@ QGroupBox* AccuracyPanel::buildSweepBox() {
     return sweepBox;
 }
 
-// Run sweep…, its size, Cancel and Load sweep….
+// Run sweep (it starts at once: no ellipsis), its size, Cancel and Load sweep… (a file dialog).
 QGridLayout* AccuracyPanel::buildSweepButtons(QGroupBox* sweepBox) {
-    m_runSweep = new QPushButton(tr("Run sweep…"), sweepBox);
+    m_runSweep = new QPushButton(tr("Run sweep"), sweepBox);
     m_runSweep->setObjectName(QStringLiteral("runSweep"));
     m_runSweep->setToolTip(tr("Measure every setting the scene uses against the exact tracer, as "
                               "`speculum bench` does: the scene's camera at t = 0, in this process"));

@@ -3,8 +3,6 @@
 #include "editor/ui/AppIdentity.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/Screenshot.hpp"
-#include "editor/view/AnimationClock.hpp"
-#include "scene/model/SceneAnimation.hpp"
 
 #include <QApplication>
 #include <QMessageBox>
@@ -56,9 +54,8 @@ int runEditor(int& argc, char** argv, const std::string& projectPath) {
     }
 
     window.restoreLayout();
-    // A live view where something moves (Space pauses); a static scene stays paused and draws nothing
+    // Paused, as a project opened from the File menu is: Space plays it. A paused view draws nothing
     // until something changes.
-    window.clock().setPlaying(scene::sceneHasAnimation(window.scene()));
     window.show();
     if (openError.isEmpty() && projectPath.empty()) {
         // A previous session that crashed left unsaved work: offer it (only when no file was asked for).

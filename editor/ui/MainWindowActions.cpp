@@ -481,6 +481,10 @@ void MainWindow::createViewMenu() {
     m_playAction->setShortcutContext(Qt::WindowShortcut);
     connect(m_playAction, &QAction::toggled, m_clock, &view::AnimationClock::setPlaying);
     connect(m_clock, &view::AnimationClock::playingChanged, m_playAction, &QAction::setChecked);
+    // Its name says what pressing it does next, so the timeline's button shows whether the clock runs.
+    connect(m_clock, &view::AnimationClock::playingChanged, m_playAction, [this](bool playing) {
+        m_playAction->setText(playing ? tr("&Pause Animation") : tr("&Play Animation"));
+    });
     connect(
         makeAction(view, QStringLiteral("actionRewind"), tr("&Rewind Animation"), QKeySequence(Qt::Key_Home)),
         &QAction::triggered, m_clock, [this] { m_clock->setTime(0.0); });
