@@ -32,6 +32,10 @@ RenderPassesPanel::RenderPassesPanel(QWidget* parent)
     m_tree->setObjectName(QStringLiteral("passesTree"));
     m_tree->setColumnCount(4);
     m_tree->setHeaderLabels({tr("Pass"), tr("Target"), tr("GPU ms"), tr("Why")});
+    m_tree->headerItem()->setToolTip(
+        2, tr("Time each pass took on the GPU, from OpenGL timestamp queries. On a software renderer "
+              "(Mesa llvmpipe, on machines without a graphics card) the \"GPU\" is the CPU's cores, so "
+              "these times compete with the editor's own work and say little about a graphics card."));
     m_tree->setRootIsDecorated(true);
     m_tree->setUniformRowHeights(true);
     m_tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);

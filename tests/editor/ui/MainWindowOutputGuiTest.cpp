@@ -133,6 +133,8 @@ TEST_F(EditorOutput, RenderPassesPanelShowsTheLivePlan) {
     m_window->passesPanel().showReportNow(report);
     QTreeWidget& tree = m_window->passesPanel().tree();
     ASSERT_EQ(tree.topLevelItemCount(), 2);
+    EXPECT_TRUE(tree.headerItem()->toolTip(2).contains(QStringLiteral("software renderer")))
+        << "the GPU column says what its times mean without a graphics card";
     // The passes that ran, in order, each with the plan's reason and what running it found.
     QTreeWidgetItem* passes = tree.topLevelItem(0);
     ASSERT_EQ(passes->childCount(), int(report.ran.size()));
