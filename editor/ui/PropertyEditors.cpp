@@ -346,6 +346,11 @@ public:
         m_combo = new QComboBox(this);
         m_combo->setObjectName(info.key);
         m_combo->addItems(info.options);
+        // The panel is as wide as its widest row (Inspector::fitToContent): an option naming a node of an
+        // imported model must not widen it, so the combo asks for a few words and shows the rest as room
+        // allows (the list that drops down is as wide as its items).
+        m_combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        m_combo->setMinimumContentsLength(14);
         m_combo->setToolTip(info.tooltip);
         m_combo->setFocusPolicy(Qt::StrongFocus); // WheelFocus would let a passing wheel focus and edit it
         guardWheel(m_combo);
