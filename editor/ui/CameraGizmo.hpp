@@ -1,11 +1,10 @@
 #pragma once
 
-#include "editor/ui/ViewGrid.hpp"
+#include "render/frame/FrameInput.hpp"
+#include "render/frame/Guides.hpp"
 
-#include <QLineF>
+#include <utility>
 #include <vector>
-
-class QPainter;
 
 namespace speculum::ui {
 
@@ -14,9 +13,11 @@ namespace speculum::ui {
 // rectangle's top edge showing its up side. Its size follows the scene camera's distance to its target,
 // within limits, so it reads as a camera at any scale. Nothing when the view sits where the scene camera
 // does (looking through it).
-std::vector<QLineF> cameraGizmoLines(const render::Camera& sceneCamera, const ClipProjection& view,
-                                     const render::Camera& viewCamera, double aspect);
-void paintCameraGizmo(QPainter& painter, const render::Camera& sceneCamera, const render::Camera& viewCamera,
-                      QSizeF size);
+std::vector<std::pair<glm::dvec3, glm::dvec3>>
+cameraGizmoSegments(const render::Camera& sceneCamera, const render::Camera& viewCamera, double aspect);
+// The same as guide lines for the renderer (a dark halo under a light line), faint where the scene hides
+// them.
+void addCameraGizmoGuides(const render::Camera& sceneCamera, const render::Camera& viewCamera, double aspect,
+                          std::vector<render::GuideLine>& guides);
 
 } // namespace speculum::ui

@@ -2,7 +2,6 @@
 
 #include "render/math/Projection.hpp"
 
-#include <QPainter>
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -35,27 +34,6 @@ QPointF ClipProjection::toWidget(const glm::dvec4& clip) const {
     return QPointF((x * 0.5 + 0.5) * m_size.width(), (0.5 - y * 0.5) * m_size.height());
 }
 
-std::optional<QLineF> ClipProjection::segment(const glm::dvec3& a, const glm::dvec3& b) const {
-    glm::dvec4 ca = m_viewProjection * glm::dvec4(a, 1.0);
-    glm::dvec4 cb = m_viewProjection * glm::dvec4(b, 1.0);
-    // For a perspective projection clip w is the depth in front of the eye: keep w ≥ near.
-    const double da = ca.w - m_near, db = cb.w - m_near;
-    if (da < 0.0 && db < 0.0) {
-        return std::nullopt;
-    }
-    if (da < 0.0) {
-        ca = ca + (cb - ca) * (da / (da - db));
-    } else if (db < 0.0) {
-        cb = cb + (ca - cb) * (db / (db - da));
-    }
-    const QPointF pa = toWidget(ca), pb = toWidget(cb);
-    if (!std::isfinite(pa.x()) || !std::isfinite(pa.y()) || !std::isfinite(pb.x()) ||
-        !std::isfinite(pb.y())) {
-        return std::nullopt;
-    }
-    return QLineF(pa, pb);
-}
-
 std::optional<QPointF> ClipProjection::point(const glm::dvec3& p) const {
     const glm::dvec4 c = m_viewProjection * glm::dvec4(p, 1.0);
     if (c.w < m_near) {
@@ -64,7 +42,7 @@ std::optional<QPointF> ClipProjection::point(const glm::dvec3& p) const {
     return toWidget(c);
 }
 
-GroundGrid groundGrid(const render::Camera& camera, QSizeF size) {
+GroundGrid groundGrid(const render::Camera& camera) {
     GroundGrid grid;
     const double distance = glm::length(camera.position - camera.target);
     // What the view is about: its distance to the target, or its height when it hovers over the ground
@@ -79,10 +57,9 @@ GroundGrid groundGrid(const render::Camera& camera, QSizeF size) {
     // Centred under the camera, snapped to the grid so lines do not swim as the view moves.
     const double cx = std::round(camera.position.x / s) * s, cz = std::round(camera.position.z / s) * s;
     const double height = std::abs(camera.position.y);
-    const ClipProjection projection(camera, size);
     const double fadeDistance = std::max(extent * 0.9, 1e-9);
 
-    auto addLine = [&](const glm::dvec3& from, const glm::dvec3& to, QColor color, double alpha) {
+    auto addLine = [&](const glm::dvec3& from, const glm::dvec3& to, glm::vec3 color, double alpha) {
         for (int i = 0; i < kPiecesPerLine; ++i) {
             const glm::dvec3 a = from + (to - from) * (double(i) / kPiecesPerLine);
             const glm::dvec3 b = from + (to - from) * (double(i + 1) / kPiecesPerLine);
@@ -92,17 +69,19 @@ GroundGrid groundGrid(const render::Camera& camera, QSizeF size) {
             // sine of the angle under which the ground is seen there).
             const double fade = (1.0 - smoothstep(0.3 * fadeDistance, fadeDistance, toEye)) *
                                 smoothstep(0.02, 0.25, height / toEye);
-            const double a8 = alpha * fade;
-            if (a8 < 0.02) {
+            const double faded = alpha * fade;
+            if (faded < 0.02) {
                 continue;
             }
-            if (auto line = projection.segment(a, b)) {
-                color.setAlphaF(float(a8));
-                grid.pieces.push_back({*line, color});
-            }
+            render::GuideLine line;
+            line.from = a;
+            line.to = b;
+            line.color = glm::vec4(color, float(faded));
+            grid.lines.push_back(line);
         }
     };
-    const QColor grey(200, 200, 205), red(225, 70, 70), blue(70, 120, 235);
+    const glm::vec3 grey(200 / 255.f, 200 / 255.f, 205 / 255.f), red(225 / 255.f, 70 / 255.f, 70 / 255.f),
+        blue(70 / 255.f, 120 / 255.f, 235 / 255.f);
     for (int i = -kHalfLines; i <= kHalfLines; ++i) {
         const double x = cx + i * s, z = cz + i * s;
         const long long kx = std::llround(x / s), kz = std::llround(z / s);
@@ -114,17 +93,6 @@ GroundGrid groundGrid(const render::Camera& camera, QSizeF size) {
                 xAxis ? kAxisAlpha : (kz % 10 == 0 ? kMajorAlpha : kMinorAlpha));
     }
     return grid;
-}
-
-void paintGroundGrid(QPainter& painter, const render::Camera& camera, QSizeF size) {
-    const GroundGrid grid = groundGrid(camera, size);
-    painter.save();
-    painter.setBrush(Qt::NoBrush);
-    for (const GridPiece& piece : grid.pieces) {
-        painter.setPen(QPen(piece.color, 1.0));
-        painter.drawLine(piece.line);
-    }
-    painter.restore();
 }
 
 } // namespace speculum::ui

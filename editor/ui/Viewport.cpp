@@ -3,6 +3,8 @@
 // ViewportInput.cpp, the marks painted over the frame in ViewportMarks.cpp.
 #include "editor/ui/Viewport.hpp"
 
+#include "editor/ui/CameraGizmo.hpp"
+#include "editor/ui/ViewGrid.hpp"
 #include "editor/ui/ViewportModels.hpp"
 #include "editor/ui/ViewportOverlay.hpp"
 #include "editor/view/AnimationClock.hpp"
@@ -263,6 +265,8 @@ void Viewport::paintGL() {
     // A handle drag changes what casts shadows every frame, so the preview draws the shadow maps smaller.
     options.preview = {level.scale, level.mirrorDepthCut,
                        m_handles.press() == ViewportHandles::Press::Handle};
+    if (m_overlay->guidesVisible())
+        options.guides = guideLines();
     m_lastReport = m_renderer->render(input, frameTarget(composedAsStored), options);
     // A map did not fit at its planned size: the next frame draws it at one that does.
     if (m_lastReport.drawAgain)
@@ -279,6 +283,16 @@ void Viewport::paintGL() {
     reportFrameWarnings(composedAsStored, warnings);
     m_overlay->update(); // handles follow animated nodes
     emit frameRendered(m_lastReport, time);
+}
+
+// The guides the renderer draws in the frame, behind what stands in front of them: the ground grid and the
+// scene camera. (The pivot, the axes in the corner and the handles are painted over the frame.)
+std::vector<render::GuideLine> Viewport::guideLines() const {
+    const render::Camera& view = m_navigation.camera();
+    std::vector<render::GuideLine> lines = groundGrid(view).lines;
+    const double aspect = double(width()) / std::max(height(), 1);
+    addCameraGizmoGuides(sceneCamera(), view, aspect, lines);
+    return lines;
 }
 
 // The level of a preview while navigating: fewer pixels, then fewer mirror levels (of the scene's

@@ -209,6 +209,7 @@ private:
     // paintGL's steps: the preview's level, the target it draws into, the frame counter behind
     // framesPerSecond(), and the frame's warnings.
     view::PreviewLevel previewLevel(bool previewing, int mirrorDepth);
+    std::vector<render::GuideLine> guideLines() const;
     render::RenderTarget frameTarget(bool composedAsStored) const;
     void countFrame();
     void reportFrameWarnings(bool composedAsStored, const std::vector<scene::Warning>& warnings);

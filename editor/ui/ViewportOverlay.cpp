@@ -1,7 +1,6 @@
 #include "editor/ui/ViewportOverlay.hpp"
 
 #include "editor/ui/AxisGizmo.hpp"
-#include "editor/ui/CameraGizmo.hpp"
 #include "editor/ui/ViewGrid.hpp"
 #include "editor/ui/Viewport.hpp"
 
@@ -36,13 +35,14 @@ void ViewportOverlay::setGuidesVisible(bool on) {
     m_guides = on;
     QSettings().setValue(kGuidesKey, on);
     update();
+    m_viewport.update(); // the grid and the camera are in the frame
 }
 
+// The grid and the scene camera are drawn by the renderer, in the frame, behind what stands in front of them
+// (Viewport::guideLines); the pivot is a mark of the view, not of the scene: it stays on top.
 void ViewportOverlay::paintGuidesUnder(QPainter& painter) {
     const render::Camera& view = m_viewport.viewCamera();
     const QSizeF size(width(), height());
-    paintGroundGrid(painter, view, size);
-    paintCameraGizmo(painter, m_viewport.sceneCamera(), view, size);
     if (auto pivot = ClipProjection(view, size).point(view.target)) {
         paintPivot(painter, *pivot);
     }

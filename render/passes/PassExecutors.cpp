@@ -114,6 +114,8 @@ PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpa
         return runPrefilter(pass, frame);
     case PassKind::Main:
         return runMain(pass, frame);
+    case PassKind::Guides:
+        return runGuides(pass, frame);
     case PassKind::Composite:
         return runComposite(pass, frame);
     }

@@ -6,6 +6,7 @@
 #include "render/gl/Program.hpp"
 #include "render/gl/RenderTexture.hpp"
 #include "render/gl/TextureCache.hpp"
+#include "render/passes/GuidesPass.hpp"
 #include "render/passes/MainPass.hpp"
 #include "render/passes/MirrorOcclusion.hpp"
 #include "render/passes/MirrorPasses.hpp"
@@ -33,6 +34,7 @@ struct FrameResources {
     gl::TextureCache textures;
     ShadowMaps shadows;
     ReflectorPass reflector; // the curved reflector's environment map and surface
+    GuidesPass guides;       // the editor's guide lines over the camera's view
     // The linear (half-float) colour buffer every frame is drawn into before the composite pass, with
     // the depth-stencil buffer the mirror passes nest in.
     gl::RenderTexture linear;
@@ -67,6 +69,8 @@ struct FrameExecution {
     // pass draws at) for a preview at a reduced resolution; null: `target` itself.
     const RenderTarget* output = nullptr;
     const RenderTarget& outputTarget() const { return output ? *output : target; }
+    // The lines the Guides pass draws (RenderOptions::guides); null: none.
+    const std::vector<GuideLine>* guides = nullptr;
 
     // Filled while running: why a view found no reflection (fully occluded, no texture), by view, as the
     // skip it reports; a view with one runs no more passes, nor do the views inside it.
@@ -101,6 +105,7 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame);
 PassResult runPrefilter(const PlannedPass& pass, FrameExecution& frame);
 PassResult runMain(const PlannedPass& pass, FrameExecution& frame);
 PassResult runComposite(const PlannedPass& pass, FrameExecution& frame);
+PassResult runGuides(const PlannedPass& pass, FrameExecution& frame);
 PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
 PassResult runMirror(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
 PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);

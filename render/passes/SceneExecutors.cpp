@@ -1,4 +1,5 @@
 // The passes of the camera's own view: the scene into the linear buffer, and its composite into the target.
+#include "render/math/Projection.hpp"
 #include "render/passes/MirrorPasses.hpp"
 #include "render/passes/PassExecutors.hpp"
 
@@ -10,6 +11,24 @@ PassResult runMain(const PlannedPass& pass, FrameExecution& frame) {
     const ViewSpace camera = cameraSpace(frame);
     bindWrites(pass.writes, frame, camera);
     drawSpaceView(camera, -1, pass.writes.clockwise);
+    return {};
+}
+
+// The guides over the camera's view, in its buffer, tested against the depth its passes left there.
+PassResult runGuides(const PlannedPass& pass, FrameExecution& frame) {
+    if (!frame.guides || frame.guides->empty())
+        return {false, {}};
+    bindWrites(pass.writes, frame);
+    const GuidesView view{frame.projection,
+                          math::viewRotation(frame.input.camera),
+                          frame.input.camera.position,
+                          frame.input.camera.near,
+                          {frame.target.width, frame.target.height},
+                          double(frame.target.width) / double(frame.outputTarget().width)};
+    if (base::Status drawn = frame.resources.guides.draw(*frame.guides, view); !drawn) {
+        frame.warnings.push_back("the guides could not be drawn: " + drawn.error());
+        return {false, {}};
+    }
     return {};
 }
 

@@ -18,7 +18,7 @@ namespace speculum::render {
 
 // Prefilter: the reflector's GGX pre-filtered chain, convolved from its environment map (runs after Envmap,
 // only when the map changed or the chain's sample count did).
-enum class PassKind { Shadow, MirrorMask, Mirror, MirrorSurface, Envmap, Prefilter, Main, Composite };
+enum class PassKind { Shadow, MirrorMask, Mirror, MirrorSurface, Envmap, Prefilter, Main, Guides, Composite };
 
 std::string_view toString(PassKind kind);
 

@@ -35,6 +35,9 @@ PassWrites cameraWrites(const FrameInput& input, const FramePlan& plan, const Pl
         writes.target = PassTarget::Linear;
         writes.clear = true;
         break;
+    case PassKind::Guides: // over the camera's view, in its buffer, against its depth
+        writes.target = PassTarget::Linear;
+        break;
     case PassKind::Composite:
         writes.target = PassTarget::Output;
         break;
@@ -103,6 +106,7 @@ PassWrites envmapWrites(const EnvmapPlan& map, const PlannedPass& pass) {
     case PassKind::Envmap:
     case PassKind::Prefilter:
     case PassKind::Main:
+    case PassKind::Guides:
     case PassKind::Composite:
         break;
     }

@@ -137,6 +137,12 @@ std::string compositeSentence(PlanReason code, const ReasonDetails& d) {
     return blend;
 }
 
+std::string guidesSentence(PlanReason, const ReasonDetails& d) {
+    return "draws the editor's guides (" + plural(d.lines, "line", "lines") +
+           ": grid, camera) over the view, hidden where the scene is in front of them; never in a "
+           "reflection or a still";
+}
+
 // Which approximation of a rough mirror's reflection its surface pass draws.
 std::string glossyApproximation(const ReasonDetails& d) {
     if (d.roughness <= 0.0)
@@ -358,6 +364,7 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::CompositeFresnelBlend, "composite-fresnel-blend", compositeSentence},
     {PlanReason::CompositeNestedBlend, "composite-nested-blend", compositeSentence},
     {PlanReason::CompositeNotNeeded, "composite-not-needed", compositeSentence},
+    {PlanReason::GuidesOverView, "guides-over-view", guidesSentence},
     {PlanReason::MirrorMaskStencil, "mirror-mask-stencil", mirrorPassSentence},
     {PlanReason::MirrorMaskCount, "mirror-mask-count", mirrorPassSentence},
     {PlanReason::MirrorIntoTexture, "mirror-into-texture", mirrorPassSentence},

@@ -35,6 +35,7 @@ enum class PlanReason {
     CompositeFresnelBlend, // … and its Fresnel weight keeps it from being pre-weighted
     CompositeNestedBlend,  // … and it blends inside another stencil mirror's reflection
     CompositeNotNeeded,    // skip: the frame is drawn straight into the output
+    GuidesOverView,        // the editor's guide lines (details.lines), depth-tested against the view
     // A planar mirror's passes.
     MirrorMaskStencil, // marks its pixels in the stencil buffer
     MirrorMaskCount,   // counts its pixels (a texture-technique mirror)
@@ -127,6 +128,9 @@ struct ReasonDetails {
     std::size_t objects = 0;
     std::size_t lights = 0;
     bool preWeighted = false; // FramePlan::preWeighted
+
+    // The guides pass: how many lines it draws.
+    std::size_t lines = 0;
 
     // A mirror's passes.
     bool roughStencil = false; // a rough stencil mirror, drawn into a texture to be filtered

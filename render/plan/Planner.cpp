@@ -29,6 +29,8 @@ std::string_view toString(PassKind kind) {
         return "prefilter";
     case PassKind::Main:
         return "main";
+    case PassKind::Guides:
+        return "guides";
     case PassKind::Composite:
         return "composite";
     }
@@ -318,6 +320,16 @@ PlannedPass mainPass(const FrameInput& input) {
     return main;
 }
 
+// The editor's guide lines, over the camera's view and the mirrors in it: after their passes, so that they
+// test against the depth those leave (the mirrors' surfaces, not their reflections), and never inside one.
+PlannedPass guidesPass(std::size_t lines) {
+    PlannedPass guides;
+    guides.kind = PassKind::Guides;
+    guides.code = PlanReason::GuidesOverView;
+    guides.details.lines = lines;
+    return guides;
+}
+
 // The camera's colour buffer (8-bit sRGB where no blend needs radiance above 1, pre-weighting the stencil
 // mirrors where that makes it so; half float otherwise), said in the main pass's reason, and the
 // composite pass that brings it to the output unless it is the output's own buffer. Needs the mirror
@@ -424,6 +436,8 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     for (SkippedEffect& skip : mirrors.skipped)
         plan.skipped.push_back(std::move(skip));
 
+    if (options.guideLines > 0)
+        plan.passes.push_back(guidesPass(options.guideLines));
     planCameraBuffer(scene, viewport, plan);
     planReflectedDetail(scene, plan);
     notePreview(input, plan);

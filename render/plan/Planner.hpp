@@ -61,6 +61,9 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex, const mat
 struct PlanOptions {
     MapLimits maps;
     PreviewPolicy preview;
+    // Guide lines the caller draws over the camera's view (RenderOptions::guides): a Guides pass draws them
+    // after the mirrors, before the composite.
+    std::size_t guideLines = 0;
 };
 
 // The pure planning step: which passes run this frame, in order, with the reason for each, which effects

@@ -1,7 +1,10 @@
 #pragma once
 
+#include "render/frame/Guides.hpp"
+
 #include <glm/vec2.hpp>
 #include <optional>
+#include <vector>
 
 namespace speculum::render {
 
@@ -90,6 +93,9 @@ struct RenderOptions {
     bool halfFloatCameraBuffer = false;
     // An interactive preview (see PreviewPolicy); the default is a frame at rest. Ignored for tiles.
     PreviewPolicy preview;
+    // Lines drawn over the camera's view after its mirrors, depth-tested against them (PassKind::Guides):
+    // the editor's grid and camera wireframe. Ignored for tiles, which are parts of stills.
+    std::vector<GuideLine> guides;
 };
 
 } // namespace speculum::render

@@ -222,7 +222,8 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
                                 eightBitOutput, eightBitOutput && drawnWhole && target.srgbDepthStencil};
     const PlannerState freshState;
     const PlannerState& plannerState = options.reuseMaps ? committed : freshState;
-    const PlanOptions planOptions{mapLimits(limits, r), options.tile ? PreviewPolicy{} : options.preview};
+    const PlanOptions planOptions{mapLimits(limits, r), options.tile ? PreviewPolicy{} : options.preview,
+                                  options.tile ? 0 : options.guides.size()};
     FramePlan& plan = report.plan;
     plan = planFrame(requested, plannerState, viewport, planOptions);
     report.warnings = plan.warnings;
@@ -384,6 +385,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     passes::FrameExecution frame{input, plan,    drawn,          planned.projection, options.tile.has_value(),
                                  r,     context, s.plannerState, report.warnings};
     frame.output = &target;
+    frame.guides = &options.guides;
     frame.envmapAllocated = planned.maps.envmapAllocated;
     frame.shadowsMissing = planned.maps.shadowsMissing;
     frame.hidden.resize(plan.views.size());

@@ -12,6 +12,8 @@
 #include "support/TestPaths.hpp"
 
 #include <QAction>
+#include <QDir>
+#include <QFile>
 #include <QMouseEvent>
 #include <QUndoStack>
 #include <QWheelEvent>
@@ -345,19 +347,100 @@ TEST_F(ViewportActions, NumpadKeysTurnTheViewAroundItsTarget) {
     EXPECT_TRUE(m_scene.camera() == speculum::scene::CameraData{}) << "the scene camera is not edited";
 }
 
-TEST_F(ViewportActions, ShowGuidesTogglesTheOverlayGuides) {
+TEST_F(ViewportActions, ShowGuidesTogglesTheGuides) {
     QAction* guides = action("viewShowGuides");
     ASSERT_NE(guides, nullptr);
     ASSERT_TRUE(guides->isCheckable());
     EXPECT_EQ(guides->isChecked(), m_viewport->guidesVisible());
     guides->setChecked(true);
     EXPECT_TRUE(m_viewport->guidesVisible());
-    const int frames = m_viewport->framesRendered();
+    action("viewTop")->trigger(); // looking down at the ground grid
+    auto guidesPasses = [&] { return m_viewport->lastReport().countRan(render::PassKind::Guides); };
+    ASSERT_TRUE(waitFor([&] { return guidesPasses() == 1u; }, 30000)) << "the grid is drawn in the frame";
     guides->setChecked(false);
     EXPECT_FALSE(m_viewport->guidesVisible());
-    runFor(300);
-    EXPECT_EQ(m_viewport->framesRendered(), frames) << "the guides are overlay: no GL frame for them";
+    EXPECT_TRUE(waitFor([&] { return guidesPasses() == 0u; }, 30000)) << "a frame without them follows";
     guides->setChecked(true);
+    EXPECT_TRUE(waitFor([&] { return guidesPasses() == 1u; }, 30000));
+}
+
+// ---- the guides in the window: a grid line never crosses an opaque object standing in front of it ----
+
+// A tall red box on the ground, no floor, seen from the scene camera, which looks past it (the pivot mark
+// is beside the box): the ground grid lies behind and around the box.
+constexpr const char* kBoxOnGroundProject = R"({
+  "format": "speculum-scene", "version": 1,
+  "settings": {"background": [0.02, 0.02, 0.03], "mirrorDepth": 1, "ambient": 0.6},
+  "camera": {"position": [0, 1.4, 5], "target": [0.9, 0.5, 0], "up": [0, 1, 0], "fovY": 50, "near": 0.1,
+             "far": 60},
+  "nodes": [
+    {"name": "Box", "transform": {"translate": [0, 0.9, -0.5], "rotate": [0, 0, 0], "scale": [0.6, 0.9, 0.6]},
+     "mesh": {"builtin": "box", "tessellation": 1},
+     "material": {"color": [0.9, 0.05, 0.05], "ambient": 1, "diffuse": 1, "specular": 0, "shininess": 8,
+                  "emission": [0, 0, 0]}}
+  ]
+})";
+
+bool isBoxRed(QRgb c) {
+    return qRed(c) > 120 && qGreen(c) < qRed(c) / 2 && qBlue(c) < qRed(c) / 2;
+}
+
+// Pixels well inside the box: red, and red for two pixels around (no anti-aliased edge).
+std::vector<QPoint> insideBox(const QImage& image) {
+    std::vector<QPoint> inside;
+    for (int y = 2; y < image.height() - 2; ++y)
+        for (int x = 2; x < image.width() - 2; ++x) {
+            bool all = true;
+            for (int dy = -2; dy <= 2 && all; ++dy)
+                for (int dx = -2; dx <= 2 && all; ++dx)
+                    all = isBoxRed(image.pixel(x + dx, y + dy));
+            if (all)
+                inside.push_back({x, y});
+        }
+    return inside;
+}
+
+int channelDifference(QRgb a, QRgb b) {
+    return std::max(
+        {std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)), std::abs(qBlue(a) - qBlue(b))});
+}
+
+TEST_F(AdaptiveResolution, AGridLineNeverCrossesAnOpaqueObjectInFrontOfIt) {
+    const QString folder = QDir::temp().filePath(QStringLiteral("speculum-guides-test"));
+    QDir(folder).removeRecursively();
+    ASSERT_TRUE(QDir().mkpath(folder));
+    const QString path = QDir(folder).filePath(QStringLiteral("box.speculum.json"));
+    {
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(kBoxOnGroundProject);
+    }
+    open(path);
+    auto screenshot = [&](bool guides) {
+        viewport().setGuidesVisible(guides);
+        const int frames = viewport().framesRendered();
+        viewport().update();
+        EXPECT_TRUE(waitFor([&] { return viewport().framesRendered() > frames; }, 30000));
+        runFor(100);
+        return m_window->grab(QRect(viewport().mapTo(m_window.get(), QPoint(0, 0)), viewport().size()))
+            .toImage()
+            .convertToFormat(QImage::Format_RGB32);
+    };
+    const QImage without = screenshot(false);
+    const QImage with = screenshot(true);
+    ASSERT_EQ(without.size(), with.size());
+    const std::vector<QPoint> box = insideBox(without);
+    ASSERT_GT(box.size(), 1000u) << "the box is on screen";
+    int crossing = 0;
+    for (const QPoint& p : box)
+        crossing += channelDifference(without.pixel(p), with.pixel(p)) > 2 ? 1 : 0;
+    EXPECT_EQ(crossing, 0) << "pixels of the box that a guide changed";
+    int grid = 0;
+    for (int y = 0; y < with.height(); ++y)
+        for (int x = 0; x < with.width(); ++x)
+            grid += channelDifference(without.pixel(x, y), with.pixel(x, y)) > 8 ? 1 : 0;
+    EXPECT_GT(grid, 1000) << "the grid shows around the box";
+    QDir(folder).removeRecursively();
 }
 
 TEST_F(ViewportActions, VerticalOrbitFollowsTheMouseUnlessInverted) {
