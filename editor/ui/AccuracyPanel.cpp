@@ -63,7 +63,12 @@ protected:
     void paintEvent(QPaintEvent*) override {
         QPainter painter(this);
         painter.setOpacity(0.85);
-        painter.drawImage(rect(), m_image);
+        // The compared image has the view's field of view over its height, in its own aspect: over the
+        // viewport it spans the height, centred (cut at the sides of a narrower viewport).
+        if (!m_image.isNull()) {
+            const double w = double(height()) * m_image.width() / std::max(1, m_image.height());
+            painter.drawImage(QRectF((width() - w) / 2.0, 0.0, w, height()), m_image);
+        }
         painter.setOpacity(1.0);
         const QString caption = tr("Error map of the compared view (brighter = worse; 64/255 or more = top)");
         const QRect box = painter.fontMetrics().boundingRect(caption).adjusted(-6, -3, 6, 3);
@@ -159,6 +164,13 @@ void ImageTile::mousePressEvent(QMouseEvent* event) {
 
 namespace {
 
+// "12 s", "2 min 5 s": a time the user waits.
+QString duration(double seconds) {
+    const int s = std::max(1, int(std::lround(seconds)));
+    return s < 60 ? AccuracyPanel::tr("%1 s").arg(s)
+                  : AccuracyPanel::tr("%1 min %2 s").arg(s / 60).arg(s % 60);
+}
+
 QString decibels(const std::optional<double>& db) {
     return db ? QStringLiteral("%1 dB").arg(*db, 0, 'f', 2) : QObject::tr("— (no such pixels)");
 }
@@ -192,7 +204,7 @@ AccuracyPanel::AccuracyPanel(scene::Scene& scene, QUndoStack& undoStack, Viewpor
 // "This view against the exact tracer": the buttons, the numbers, the images and the overlay switch.
 QGroupBox* AccuracyPanel::buildCompareBox() {
     auto* compareBox = new QGroupBox(tr("This view against the exact tracer"), this);
-    QHBoxLayout* buttons = buildCompareButtons(compareBox);
+    QVBoxLayout* buttons = buildCompareButtons(compareBox);
     m_progress = new QProgressBar(compareBox);
     m_progress->setObjectName(QStringLiteral("accuracyProgress"));
     m_progress->setRange(0, 1000);
@@ -220,25 +232,43 @@ QGroupBox* AccuracyPanel::buildCompareBox() {
     return compareBox;
 }
 
-// The preview width, Compare with exact and Cancel, in one row.
-QHBoxLayout* AccuracyPanel::buildCompareButtons(QGroupBox* compareBox) {
+// The comparison's quality (width, paths per rough pixel), then Compare with exact and Cancel.
+QVBoxLayout* AccuracyPanel::buildCompareButtons(QGroupBox* compareBox) {
     m_width = new QSpinBox(compareBox);
     m_width->setObjectName(QStringLiteral("accuracyWidth"));
     m_width->setRange(32, 4096);
     m_width->setValue(480); // interactive on a software rasterizer; the tracer's time grows with pixels
     m_width->setSuffix(tr(" px wide"));
-    m_width->setToolTip(tr("Both images are rendered this wide (at most the viewport's width), in the "
-                           "viewport's aspect"));
+    m_width->setToolTip(tr("Both images are rendered this wide, in the 16:9 aspect of a still (the view's "
+                           "field of view, whatever the viewport's shape)"));
+    m_paths = new QComboBox(compareBox);
+    m_paths->setObjectName(QStringLiteral("accuracyPaths"));
+    m_paths->addItem(tr("Auto: refine for about 20 s"), 0);
+    for (int paths : kComparisonPathLevels) {
+        m_paths->addItem(tr("%1 paths per rough pixel").arg(paths), paths);
+    }
+    m_paths->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_paths->setMinimumContentsLength(14);
+    m_paths->setToolTip(
+        tr("How exact the traced image is where it sees a rough mirror or reflector: it is traced with 4 "
+           "paths a pixel first, then refined with four times as many at each step (its noise halves) up to "
+           "this count. Auto refines while the estimate stays within about 20 seconds. Pixels that see no "
+           "rough surface are exact with one path."));
     m_compare = new QPushButton(tr("Compare with exact"), compareBox);
     m_compare->setObjectName(QStringLiteral("compareExact"));
     m_cancel = new QPushButton(tr("Cancel"), compareBox);
     m_cancel->setObjectName(QStringLiteral("cancelCompare"));
     m_cancel->setEnabled(false);
+    auto* quality = new QHBoxLayout;
+    quality->addWidget(m_width);
+    quality->addWidget(m_paths, 1);
     auto* buttons = new QHBoxLayout;
-    buttons->addWidget(m_width);
     buttons->addWidget(m_compare, 1);
     buttons->addWidget(m_cancel);
-    return buttons;
+    auto* rows = new QVBoxLayout;
+    rows->addLayout(quality);
+    rows->addLayout(buttons);
+    return rows;
 }
 
 // RMSE, the PSNRs and the two times, and under them the sentence that says what the figures mean.
@@ -256,12 +286,17 @@ QFormLayout* AccuracyPanel::buildNumbers(QGroupBox* compareBox) {
     m_psnrReflector = label("accuracyPsnrReflector");
     m_rasterMs = label("accuracyRasterMs");
     m_traceMs = label("accuracyTraceMs");
+    m_noise = label("accuracyNoise");
+    m_noise->setToolTip(tr("The exact image's own Monte Carlo noise where it sees rough surfaces: the RMS "
+                           "standard error of a pixel (linear radiance). It halves with each refinement; "
+                           "differences smaller than it are noise, not error."));
     numbers->addRow(tr("RMSE (sRGB)"), m_rmse);
     numbers->addRow(tr("PSNR"), m_psnr);
     numbers->addRow(tr("PSNR mirrors"), m_psnrMirrors);
     numbers->addRow(tr("PSNR reflector"), m_psnrReflector);
     numbers->addRow(tr("Raster frame"), m_rasterMs);
     numbers->addRow(tr("Exact tracer"), m_traceMs);
+    numbers->addRow(tr("Exact image's noise"), m_noise);
 
     m_explanation = new QLabel(
         tr("<b>RMSE</b> is the typical difference of a pixel's colour between the two images (sRGB, 0 = "
@@ -376,8 +411,20 @@ void AccuracyPanel::buildScrollArea(QGroupBox* compareBox, QGroupBox* sweepBox) 
 void AccuracyPanel::connectComparison() {
     connect(m_compare, &QPushButton::clicked, this, &AccuracyPanel::compareWithExact);
     connect(m_cancel, &QPushButton::clicked, this, &AccuracyPanel::cancelComparison);
-    connect(m_comparison, &ExactComparison::progress, this,
-            [this](double fraction) { m_progress->setValue(int(fraction * 1000)); });
+    connect(m_comparison, &ExactComparison::estimated, this, [this](double seconds, int paths) {
+        m_status->setText(tr("Tracing the exact image up to %1 paths per rough pixel: about %2 in all.")
+                              .arg(paths)
+                              .arg(duration(seconds)));
+    });
+    connect(m_comparison, &ExactComparison::progress, this, [this](double fraction, int paths, double left) {
+        m_progress->setValue(int(std::clamp(fraction, 0.0, 1.0) * 1000));
+        m_progress->setFormat(tr("%1 paths per rough pixel · about %2 left").arg(paths).arg(duration(left)));
+    });
+    connect(m_comparison, &ExactComparison::refined, this, [this](const ComparisonResult& result) {
+        showResult(result);
+        m_status->setText(
+            tr("Refining the exact image (%1 paths per rough pixel so far)…").arg(result.paths));
+    });
     connect(m_comparison, &ExactComparison::finished, this, &AccuracyPanel::showResult);
     connect(m_comparison, &ExactComparison::failed, this, &AccuracyPanel::comparisonFailed);
     connect(m_overlay, &QCheckBox::toggled, m_overlayWidget, &QWidget::setVisible);
@@ -400,7 +447,7 @@ void AccuracyPanel::clear() {
         cancelSweep();
     }
     m_last.reset();
-    for (QLabel* l : {m_rmse, m_psnr, m_psnrMirrors, m_psnrReflector, m_rasterMs, m_traceMs}) {
+    for (QLabel* l : {m_rmse, m_psnr, m_psnrMirrors, m_psnrReflector, m_rasterMs, m_traceMs, m_noise}) {
         l->setText(QStringLiteral("—"));
     }
     for (ImageTile* tile : {m_reference, m_raster, m_errorMap, m_flipView}) {
@@ -451,17 +498,23 @@ void AccuracyPanel::setPreviewWidth(int pixels) {
     m_width->setValue(pixels);
 }
 
+void AccuracyPanel::setPaths(int paths) {
+    m_paths->setCurrentIndex(std::max(0, m_paths->findData(paths)));
+}
+
 void AccuracyPanel::setBusy(bool busy) {
     m_compare->setEnabled(!busy);
     m_cancel->setEnabled(busy);
     m_progress->setVisible(busy);
     m_progress->setValue(0);
+    m_progress->setTextVisible(busy);
+    m_progress->setFormat(tr("estimating…"));
 }
 
 void AccuracyPanel::compareWithExact() {
     setBusy(true);
-    m_status->setText(tr("Tracing the exact image…"));
-    if (!m_comparison->start(m_width->value(), m_clock.time())) {
+    m_status->setText(tr("Estimating the exact image's time…"));
+    if (!m_comparison->start({m_width->value(), m_paths->currentData().toInt()}, m_clock.time())) {
         setBusy(false);
     }
 }
@@ -471,7 +524,9 @@ void AccuracyPanel::cancelComparison() {
 }
 
 void AccuracyPanel::showResult(const ComparisonResult& result) {
-    setBusy(false);
+    if (result.final) {
+        setBusy(false);
+    }
     m_last = result;
     m_rmse->setText(QString::number(result.rmse, 'f', 4));
     m_psnr->setText(decibels(result.psnr));
@@ -482,6 +537,10 @@ void AccuracyPanel::showResult(const ComparisonResult& result) {
                                                         .arg(result.rasterCpuMs, 0, 'f', 2)
                                                   : tr("%1 ms CPU").arg(result.rasterCpuMs, 0, 'f', 2));
     m_traceMs->setText(tr("%1 ms").arg(result.traceMs, 0, 'f', 0));
+    m_noise->setText(
+        result.roughPixels == 0
+            ? tr("none: no rough surface in view, every pixel is exact")
+            : tr("%1 at %2 paths per rough pixel").arg(result.noiseRms, 0, 'g', 2).arg(result.paths));
     m_status->setText(tr("%1×%2 px, the view at t = %3 s; shadows traced with each light's PCF footprint.")
                           .arg(result.width)
                           .arg(result.height)
@@ -493,6 +552,9 @@ void AccuracyPanel::showResult(const ComparisonResult& result) {
     m_images->show();
     m_overlayWidget->setImage(result.errorMap);
     m_overlay->setEnabled(true);
+    if (!result.final) {
+        return; // the messages once, for the result that stands
+    }
     for (const QString& w : result.warnings) {
         emit message(tr("Accuracy: %1").arg(w));
     }

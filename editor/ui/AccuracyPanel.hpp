@@ -15,6 +15,7 @@ class QFormLayout;
 class QGridLayout;
 class QGroupBox;
 class QHBoxLayout;
+class QVBoxLayout;
 class QProgressBar;
 class QScrollArea;
 class QPushButton;
@@ -86,6 +87,8 @@ public:
     const std::optional<ComparisonResult>& lastComparison() const { return m_last; }
     bool comparing() const { return m_comparison->running(); }
     void setPreviewWidth(int pixels);
+    // The paths per rough pixel the comparison refines to (0: auto, within about 20 s).
+    void setPaths(int paths);
     // Loads a bench results.json into the chart; the error names the file and the problem.
     base::Status loadSweepFile(const QString& path);
     SweepChart& chart() { return *m_chart; }
@@ -123,7 +126,7 @@ private:
     // Construction, one group of widgets each, called in the order the widgets sit. The sweep's are in
     // AccuracyPanelSweep.cpp.
     QGroupBox* buildCompareBox();
-    QHBoxLayout* buildCompareButtons(QGroupBox* compareBox);
+    QVBoxLayout* buildCompareButtons(QGroupBox* compareBox);
     QFormLayout* buildNumbers(QGroupBox* compareBox);
     void buildImages(QGroupBox* compareBox);
     void buildSideBySide();
@@ -152,6 +155,7 @@ private:
     std::optional<ComparisonResult> m_last;
 
     QSpinBox* m_width = nullptr;
+    QComboBox* m_paths = nullptr;
     QPushButton* m_compare = nullptr;
     QPushButton* m_cancel = nullptr;
     QProgressBar* m_progress = nullptr;
@@ -162,6 +166,7 @@ private:
     QLabel* m_psnrReflector = nullptr;
     QLabel* m_rasterMs = nullptr;
     QLabel* m_traceMs = nullptr;
+    QLabel* m_noise = nullptr;
     QLabel* m_explanation = nullptr;
     QWidget* m_images = nullptr;
     QComboBox* m_imageMode = nullptr;

@@ -7,6 +7,7 @@
 // The compared images show side by side and in a flip view; chart points label themselves on hover; clear()
 // (New, Open) forgets it all.
 #include "editor/ui/AccuracyPanel.hpp"
+#include "editor/ui/ExactComparison.hpp"
 #include "editor/ui/SweepChart.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
@@ -38,6 +39,8 @@ using test::waitForFrames;
 
 const QString kChrome =
     QString::fromStdString(speculum::testSourcePath("resources/scenes/chrome.speculum.json"));
+const QString kGlossy =
+    QString::fromStdString(speculum::testSourcePath("resources/scenes/glossy.speculum.json"));
 
 // Configurations of a sweep on the chrome scene in the layout `speculum bench` writes: its own, a coarse
 // tennis-ball map with shallower mirrors and a sharper PCF kernel (the one the test clicks), and a few more.
@@ -375,6 +378,96 @@ TEST_F(AccuracyPanelTest, CancelStopsTheSweepAndLeavesEverythingAsItWas) {
 
 // What the numbers measured is on screen: the exact image, the raster image and the error map side by
 // side, and a flip view in which the Flip button (or a click on the image) alternates exact and raster.
+// The glossy demo's rough mirror: the exact image is refined level by level, each shown as it is done with
+// the noise it has left, after an estimate of the whole; the images have a still's aspect whatever the
+// viewport's shape.
+TEST_F(AccuracyPanelTest, TheExactImageIsRefinedProgressivelyWithItsNoiseAndTimeLeft) {
+    ASSERT_TRUE(m_window->openProjectFile(kGlossy).ok());
+    ASSERT_TRUE(waitForFrames(*m_window, 2));
+    ExactComparison* comparison = panel().findChild<ExactComparison*>();
+    ASSERT_NE(comparison, nullptr);
+    std::vector<double> estimates;
+    std::vector<ComparisonResult> levels;
+    std::vector<double> secondsLeft;
+    int lastLevel = 64;
+    QObject::connect(comparison, &ExactComparison::estimated, comparison, [&](double seconds, int paths) {
+        EXPECT_TRUE(levels.empty()) << "the estimate comes before the first level";
+        EXPECT_EQ(paths, lastLevel);
+        estimates.push_back(seconds);
+    });
+    QObject::connect(comparison, &ExactComparison::progress, comparison,
+                     [&](double, int, double left) { secondsLeft.push_back(left); });
+    QObject::connect(comparison, &ExactComparison::refined, comparison, [&](const ComparisonResult& r) {
+        levels.push_back(r);
+        EXPECT_TRUE(panel().comparing()) << "a level shown while the next is traced";
+        EXPECT_EQ(text("accuracyPsnr"), QStringLiteral("%1 dB").arg(r.psnr, 0, 'f', 2)) << "shown at once";
+    });
+    QObject::connect(comparison, &ExactComparison::finished, comparison,
+                     [&](const ComparisonResult& r) { levels.push_back(r); });
+    panel().setPreviewWidth(96);
+    panel().setPaths(64);
+    panel().compareWithExact();
+    ASSERT_TRUE(waitFor([&] { return !panel().comparing(); }, 180000));
+    ASSERT_EQ(estimates.size(), 1u);
+    EXPECT_GT(estimates.front(), 0.0);
+    ASSERT_EQ(levels.size(), 3u) << text("accuracyStatus").toStdString();
+    const int expectedPaths[] = {4, 16, 64};
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        SCOPED_TRACE(i);
+        EXPECT_EQ(levels[i].paths, expectedPaths[i]);
+        EXPECT_EQ(levels[i].final, i + 1 == levels.size());
+        EXPECT_EQ(levels[i].width, 96);
+        EXPECT_EQ(levels[i].height, 54) << "a still's aspect, not the viewport's";
+        EXPECT_GT(levels[i].roughPixels, 0) << "the rough mirror is in view";
+        EXPECT_TRUE(std::isfinite(levels[i].psnr));
+        if (i > 0) {
+            // Four times the paths: about half the noise.
+            EXPECT_LT(levels[i].noiseRms, levels[i - 1].noiseRms * 0.7);
+            EXPECT_GT(levels[i].noiseRms, levels[i - 1].noiseRms * 0.3);
+        }
+    }
+    EXPECT_FALSE(secondsLeft.empty());
+    for (double left : secondsLeft)
+        EXPECT_TRUE(std::isfinite(left) && left >= 0.0) << left;
+    EXPECT_EQ(panel().lastComparison()->paths, 64);
+    EXPECT_TRUE(text("accuracyNoise").contains(QStringLiteral("at 64 paths per rough pixel")))
+        << text("accuracyNoise").toStdString();
+
+    // Cancel while refining: the last level done stands, and nothing is lost.
+    levels.clear();
+    lastLevel = 256;
+    panel().setPaths(256);
+    panel().setPreviewWidth(160);
+    QObject::connect(comparison, &ExactComparison::refined, comparison, [&] { panel().cancelComparison(); });
+    panel().compareWithExact();
+    ASSERT_TRUE(waitFor([&] { return !panel().comparing(); }, 180000));
+    // (A level the worker finished while the cancel was on its way is shown too.)
+    ASSERT_GE(levels.size(), 2u) << "a level, then the result it stands as";
+    const ComparisonResult& stands = levels.back();
+    EXPECT_TRUE(stands.final);
+    EXPECT_EQ(stands.paths, levels[levels.size() - 2].paths) << "the last level shown";
+    EXPECT_LT(stands.paths, 256) << "stopped before the end";
+    EXPECT_EQ(panel().lastComparison()->paths, stands.paths);
+    EXPECT_EQ(panel().lastComparison()->width, 160);
+}
+
+// A scene with nothing rough in view is exact at the first level: no refinement, and it says so.
+TEST_F(AccuracyPanelTest, AViewWithNothingRoughIsExactAtOnce) {
+    int refinements = 0;
+    QObject::connect(panel().findChild<ExactComparison*>(), &ExactComparison::refined, &panel(),
+                     [&] { ++refinements; });
+    panel().setPreviewWidth(96);
+    panel().setPaths(256);
+    panel().compareWithExact();
+    ASSERT_TRUE(waitFor([&] { return !panel().comparing(); }, 180000));
+    ASSERT_TRUE(panel().lastComparison().has_value());
+    EXPECT_EQ(refinements, 0);
+    EXPECT_EQ(panel().lastComparison()->roughPixels, 0);
+    EXPECT_EQ(panel().lastComparison()->noiseRms, 0.0);
+    EXPECT_TRUE(text("accuracyNoise").startsWith(QStringLiteral("none")))
+        << text("accuracyNoise").toStdString();
+}
+
 TEST_F(AccuracyPanelTest, TheImagesShowSideBySideAndTheFlipViewAlternates) {
     EXPECT_TRUE(panel().explanationText().contains(QStringLiteral("above 40 dB")))
         << panel().explanationText().toStdString();

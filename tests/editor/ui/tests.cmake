@@ -1,7 +1,8 @@
 # editor/ui without a widget: the handle-drag state machine (plain mouse positions and the handles as the
-# view camera sets them up) and how a handle drag carries over to the other selected nodes. Unit tier, no
-# display, although they live in the UI library.
-speculum_add_test(EditorUiTest TIER unit SOURCES HandleDragTest.cpp GizmoTest.cpp LIBS speculum_editor_ui)
+# view camera sets them up), how a handle drag carries over to the other selected nodes, and the levels an
+# exact comparison refines through. Unit tier, no display, although they live in the UI library.
+speculum_add_test(EditorUiTest TIER unit SOURCES HandleDragTest.cpp GizmoTest.cpp ComparisonLevelsTest.cpp
+    LIBS speculum_editor_ui)
 
 # Gui tier: each program runs as one CTest entry under scripts/with-display (Xvfb with GLX on llvmpipe
 # when there is no display), with a QApplication and a temporary XDG home of its own. The programs have
