@@ -39,16 +39,6 @@ bool hasReflector(const scene::NodeTree& tree) {
     return false;
 }
 
-void dropReflectors(scene::NodeTree& tree, bool& dropped) {
-    if (tree.data.reflector) {
-        tree.data.reflector.reset();
-        dropped = true;
-    }
-    for (scene::NodeTree& child : tree.children) {
-        dropReflectors(child, dropped);
-    }
-}
-
 } // namespace
 
 QString displayName(NewNodeKind kind) {
@@ -267,6 +257,16 @@ base::Status canAdd(const scene::Scene& scene, const scene::NodeTree& tree) {
                            "\" already is one. Remove its reflector first, or make this a mirror."};
     }
     return base::Done{};
+}
+
+void dropReflectors(scene::NodeTree& tree, bool& dropped) {
+    if (tree.data.reflector) {
+        tree.data.reflector.reset();
+        dropped = true;
+    }
+    for (scene::NodeTree& child : tree.children) {
+        dropReflectors(child, dropped);
+    }
 }
 
 scene::NodeTree duplicateTree(const scene::Scene& scene, scene::NodeId id, bool* droppedReflector) {

@@ -31,6 +31,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QUndoStack>
+#include <QUndoView>
 #include <algorithm>
 
 namespace speculum::ui {
@@ -85,6 +86,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     createActions();
     createDocks();
+    createViewportMenu();
     createStatusBar();
     createTimeline();
     createViewPlacement();
@@ -429,12 +431,13 @@ void MainWindow::createDocks() {
     QDockWidget* passesDock = createPassesDock(treeDock);
     QDockWidget* accuracyDock = createAccuracyDock(inspectorDock);
     QDockWidget* logDock = createLogDock();
+    QDockWidget* historyDock = createHistoryDock(treeDock);
 
     resizeDocks({treeDock, inspectorDock}, {240, 320}, Qt::Horizontal);
     resizeDocks({treeDock, passesDock}, {300, 200}, Qt::Vertical);
 
     m_viewMenu->addSeparator();
-    for (QDockWidget* dock : {treeDock, inspectorDock, passesDock, accuracyDock, logDock}) {
+    for (QDockWidget* dock : {treeDock, inspectorDock, passesDock, accuracyDock, historyDock, logDock}) {
         m_viewMenu->addAction(dock->toggleViewAction());
     }
     logDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
@@ -447,7 +450,8 @@ QDockWidget* MainWindow::createSceneDock() {
     treeDock->setObjectName(QStringLiteral("sceneDock"));
     treeDock->setWidget(m_treePanel);
     addDockWidget(Qt::LeftDockWidgetArea, treeDock);
-    m_treePanel->setContextActions({m_renameAction, m_duplicateAction, m_deleteAction, nullptr,
+    m_treePanel->setContextActions({m_renameAction, m_duplicateAction, m_cutAction, m_copyAction,
+                                    action(QStringLiteral("actionPaste")), m_deleteAction, nullptr,
                                     action(QStringLiteral("actionFrameSelected"))},
                                    m_addMenu);
     // Ctrl+A in the tree selects the nodes (the view on its own would select the camera row too).
@@ -538,6 +542,31 @@ void MainWindow::placeAccuracyDock(QDockWidget* accuracyDock, QDockWidget* inspe
         const int accuracy = std::clamp(accuracyDock->width() + spare, kAccuracyWidth, 480);
         resizeDocks({inspectorDock, accuracyDock}, {m_propertiesWidth, accuracy}, Qt::Horizontal);
     });
+}
+
+// Every step of the undo stack by name, the current one marked; clicking a step goes back (or forward) to
+// it, as Blender's Undo History does. Hidden at first.
+QDockWidget* MainWindow::createHistoryDock(QDockWidget* treeDock) {
+    auto* historyDock = new QDockWidget(tr("Undo History"), this);
+    historyDock->setObjectName(QStringLiteral("historyDock"));
+    auto* history = new QUndoView(&undoStack(), historyDock);
+    history->setObjectName(QStringLiteral("undoHistory"));
+    history->setEmptyLabel(tr("Opened"));
+    historyDock->setWidget(history);
+    addDockWidget(Qt::LeftDockWidgetArea, historyDock);
+    historyDock->hide();
+    // Tabbed with the Scene tree once shown (a hidden dock in the tree's tab group would still widen it).
+    connect(historyDock->toggleViewAction(), &QAction::toggled, historyDock,
+            [this, treeDock, historyDock](bool shown) {
+                if (shown && !historyDock->isFloating() &&
+                    dockWidgetArea(historyDock) == dockWidgetArea(treeDock) &&
+                    !tabifiedDockWidgets(treeDock).contains(historyDock)) {
+                    tabifyDockWidget(treeDock, historyDock);
+                    historyDock->raise();
+                }
+            });
+    historyDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_Z));
+    return historyDock;
 }
 
 QDockWidget* MainWindow::createLogDock() {

@@ -116,6 +116,11 @@ public:
     // ancestor), as one undo step; the copies of a duplicate are selected afterwards.
     base::Status deleteSelected();
     base::Status duplicateSelected();
+    // Copies the selected nodes to the clipboard (document::copyNodes); Cut deletes them after, as one step.
+    void copySelected();
+    base::Status cutSelected();
+    // Adds the clipboard's nodes at the top level, where they were, and selects them.
+    base::Status paste();
     // Edit ▸ Select All: every node of the scene.
     void selectAll();
 
@@ -150,6 +155,8 @@ signals:
     // After every import request ends: ok, or the error ("cancelled" when cancelled). The added root node
     // is the current selection when ok.
     void importFinished(const QString& path, bool ok, const QString& message);
+    // The viewport's right-click menu, about to open (tests close it from here).
+    void viewportMenuShown(QMenu* menu);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -195,6 +202,8 @@ private:
     QDockWidget* createAccuracyDock(QDockWidget* inspectorDock);
     void placeAccuracyDock(QDockWidget* accuracyDock, QDockWidget* inspectorDock);
     QDockWidget* createLogDock();
+    QDockWidget* createHistoryDock(QDockWidget* treeDock);
+    void createViewportMenu();
     void rebuildRecentMenu();
     void addRecentFile(const QString& path);
     base::Status addTree(scene::NodeTree tree);
@@ -227,6 +236,8 @@ private:
     QAction* m_playAction = nullptr;
     QAction* m_deleteAction = nullptr;
     QAction* m_duplicateAction = nullptr;
+    QAction* m_copyAction = nullptr;
+    QAction* m_cutAction = nullptr;
     QAction* m_renameAction = nullptr;
     QLabel* m_frameLabel = nullptr;
     QLabel* m_timeLabel = nullptr;

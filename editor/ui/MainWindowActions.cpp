@@ -1,5 +1,6 @@
 // MainWindow: menus and what runs behind them (the edit operations of the document layer, export).
 #include "editor/document/EditOperations.hpp"
+#include "editor/document/NodeClipboard.hpp"
 #include "editor/document/NodeFactory.hpp"
 #include "editor/ui/AppIdentity.hpp"
 #include "editor/ui/ExportStillDialog.hpp"
@@ -16,10 +17,13 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QClipboard>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
@@ -106,6 +110,47 @@ base::Status MainWindow::duplicateSelected() {
     return base::Done{};
 }
 
+void MainWindow::copySelected() {
+    const std::vector<scene::NodeId> roots = m_selection->roots();
+    if (roots.empty()) {
+        return;
+    }
+    const QByteArray copied = document::copyNodes(scene(), roots);
+    auto* mime = new QMimeData;
+    mime->setData(QString::fromLatin1(document::kNodesMimeType), copied);
+    mime->setText(QString::fromUtf8(copied)); // readable, and pasteable from a text editor
+    QGuiApplication::clipboard()->setMimeData(mime);
+    statusBar()->showMessage(
+        roots.size() == 1 ? tr("Copied 1 node.") : tr("Copied %1 nodes.").arg(roots.size()), 4000);
+}
+
+base::Status MainWindow::cutSelected() {
+    const std::vector<scene::NodeId> roots = m_selection->roots();
+    if (roots.empty()) {
+        return base::Error{"nothing is selected"};
+    }
+    copySelected();
+    return document::deleteNodes(scene(), undoStack(), roots);
+}
+
+base::Status MainWindow::paste() {
+    const QMimeData* mime = QGuiApplication::clipboard()->mimeData();
+    const QString type = QString::fromLatin1(document::kNodesMimeType);
+    const QByteArray copied = !mime                   ? QByteArray()
+                              : mime->hasFormat(type) ? mime->data(type)
+                                                      : mime->text().toUtf8();
+    auto pasted = document::pasteNodes(scene(), undoStack(), copied);
+    if (!pasted) {
+        statusBar()->showMessage(tr("Nothing pasted: %1").arg(QString::fromStdString(pasted.error())), 8000);
+        return base::Error{pasted.error()};
+    }
+    m_selection->setNodes(pasted->nodes, pasted->nodes.front());
+    if (pasted->droppedReflector) {
+        statusBar()->showMessage(tr("The pasted node is not a reflector: a scene has at most one."), 8000);
+    }
+    return base::Done{};
+}
+
 void MainWindow::selectAll() {
     std::vector<scene::NodeId> all;
     scene().forEachNode([&](const scene::Node& node) { all.push_back(node.id()); });
@@ -116,6 +161,8 @@ void MainWindow::updateEditActions() {
     const bool hasNode = !m_selection->roots().empty();
     m_deleteAction->setEnabled(hasNode);
     m_duplicateAction->setEnabled(hasNode);
+    m_copyAction->setEnabled(hasNode);
+    m_cutAction->setEnabled(hasNode);
     m_renameAction->setEnabled(m_selection->selectedNode() != nullptr);
 }
 
@@ -372,6 +419,10 @@ void MainWindow::showControls() {
            "<tr><td><b>Numpad 0</b> / <b>Numpad .</b></td><td>back to the scene camera / frame the "
            "selection</td></tr>"
            "<tr><td><b>Esc</b> while dragging</td><td>cancel the drag</td></tr>"
+           "<tr><td><b>Right-click</b></td><td>the menu of Add, the Edit commands and the view</td></tr>"
+           "<tr><td><b>Ctrl+C / Ctrl+X / Ctrl+V</b></td><td>copy / cut / paste nodes (also between "
+           "windows)</td></tr>"
+           "<tr><td><b>Ctrl+Alt+Z</b></td><td>the undo history: click a step to go back to it</td></tr>"
            "<tr><td><b>Space</b> / <b>Home</b></td><td>play or pause / rewind the animation</td></tr>"
            "</table><p>Moving the view does not change the document, unless View ▸ Look Through Scene "
            "Camera is on.</p>"));
@@ -455,6 +506,13 @@ void MainWindow::createEditMenu() {
     m_deleteAction = makeAction(edit, QStringLiteral("actionDelete"), tr("&Delete"), QKeySequence::Delete);
     connect(m_deleteAction, &QAction::triggered, this, [this] { deleteSelected(); });
     edit->addSeparator();
+    m_cutAction = makeAction(edit, QStringLiteral("actionCut"), tr("Cu&t"), QKeySequence::Cut);
+    connect(m_cutAction, &QAction::triggered, this, [this] { cutSelected(); });
+    m_copyAction = makeAction(edit, QStringLiteral("actionCopy"), tr("&Copy"), QKeySequence::Copy);
+    connect(m_copyAction, &QAction::triggered, this, &MainWindow::copySelected);
+    QAction* pasteAction = makeAction(edit, QStringLiteral("actionPaste"), tr("&Paste"), QKeySequence::Paste);
+    connect(pasteAction, &QAction::triggered, this, [this] { paste(); });
+    edit->addSeparator();
     QAction* selectAll =
         makeAction(edit, QStringLiteral("actionSelectAll"), tr("Select &All"), QKeySequence::SelectAll);
     connect(selectAll, &QAction::triggered, this, &MainWindow::selectAll);
@@ -466,7 +524,8 @@ void MainWindow::createEditMenu() {
     // before a shortcut fires Qt sends the focus widget a ShortcutOverride, which line edits, spin boxes
     // and the tree's rename editor accept for the keys they type with (Delete, Ctrl+A, letters), so
     // Delete in a name field deletes characters and Ctrl+A selects its text.
-    for (QAction* a : {m_renameAction, m_duplicateAction, m_deleteAction, selectAll}) {
+    for (QAction* a : {m_renameAction, m_duplicateAction, m_deleteAction, m_cutAction, m_copyAction,
+                       pasteAction, selectAll}) {
         a->setShortcutContext(Qt::WindowShortcut);
     }
     updateEditActions();
@@ -540,6 +599,33 @@ void MainWindow::createHandleModeActions(QMenu* view) {
         handles->addAction(a);
         connect(a, &QAction::triggered, m_viewport, [this, mode = mode] { m_viewport->setHandleMode(mode); });
     }
+}
+
+// The viewport's right-click menu, as in Blender and Godot: what the Edit and Add menus do to the selection,
+// and the view's own commands. The right button does nothing else in the viewport.
+void MainWindow::createViewportMenu() {
+    m_viewport->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_viewport, &QWidget::customContextMenuRequested, this, [this](const QPoint& at) {
+        QMenu menu(m_viewport);
+        menu.setObjectName(QStringLiteral("viewportMenu"));
+        menu.addMenu(m_addMenu);
+        menu.addSeparator();
+        for (QAction* a : {m_duplicateAction, m_cutAction, m_copyAction,
+                           action(QStringLiteral("actionPaste")), m_deleteAction}) {
+            menu.addAction(a);
+        }
+        menu.addSeparator();
+        for (const char* name : {"actionFrameSelected", "actionResetView", "actionCameraFromView"}) {
+            menu.addAction(action(QString::fromLatin1(name)));
+        }
+        menu.addSeparator();
+        for (const char* name :
+             {"actionHandleSelect", "actionHandleMove", "actionHandleRotate", "actionHandleScale"}) {
+            menu.addAction(action(QString::fromLatin1(name)));
+        }
+        emit viewportMenuShown(&menu);
+        menu.exec(m_viewport->mapToGlobal(at));
+    });
 }
 
 void MainWindow::createHelpMenu() {

@@ -19,17 +19,22 @@
 #include "support/TestPaths.hpp"
 
 #include <QAction>
+#include <QClipboard>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QDropEvent>
 #include <QFile>
+#include <QGuiApplication>
 #include <QLabel>
+#include <QMenu>
 #include <QMimeData>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QTreeView>
 #include <QUndoStack>
+#include <QUndoView>
 #include <QUrl>
 #include <QWindow>
 #include <algorithm>
@@ -721,6 +726,65 @@ TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandleDragsActOnTh
     EXPECT_EQ(selection.nodes(), Ids{light});
     QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, QPoint(viewport.width() / 2, 5));
     EXPECT_TRUE(selection.isEmpty());
+}
+
+// Copy and paste through the clipboard, the viewport's right-click menu, and the undo history, as a
+// Blender user reaches for them.
+TEST_F(EditorWorkflow, CopyPasteTheRightClickMenuAndTheUndoHistory) {
+    openTeapot();
+    scene::Scene& scene = m_window->scene();
+    NodeId teapot = scene::kNoNode;
+    scene.forEachNode([&](const scene::Node& n) {
+        if (n.data().mesh && teapot == scene::kNoNode) {
+            teapot = n.id();
+        }
+    });
+    ASSERT_NE(teapot, scene::kNoNode);
+    const std::string name = scene.findNode(teapot)->name();
+    m_window->selection().selectNode(teapot);
+    const int steps = m_window->undoStack().count();
+    trigger("actionCopy");
+    EXPECT_EQ(m_window->undoStack().count(), steps) << "copying is no edit";
+    EXPECT_TRUE(
+        QGuiApplication::clipboard()->mimeData()->hasFormat(QStringLiteral("application/x-speculum-nodes")));
+    EXPECT_TRUE(QGuiApplication::clipboard()->text().contains(QString::fromStdString(name)));
+    trigger("actionPaste");
+    ASSERT_EQ(m_window->undoStack().count(), steps + 1);
+    const NodeId pasted = m_window->selection().node();
+    ASSERT_NE(pasted, teapot) << "the pasted copy is selected";
+    EXPECT_EQ(scene.findNode(pasted)->name(), name + " 2");
+    EXPECT_EQ(scene.findNode(pasted)->data().transform, scene.findNode(teapot)->data().transform);
+    // Cut: copied and deleted as one step; pasting brings it back.
+    trigger("actionCut");
+    EXPECT_EQ(scene.findNode(pasted), nullptr);
+    trigger("actionPaste");
+    EXPECT_EQ(m_window->undoStack().count(), steps + 3);
+
+    // The right-click menu holds the Add menu and the Edit commands for the selection.
+    QStringList items;
+    QObject::connect(m_window.get(), &MainWindow::viewportMenuShown, m_window.get(), [&](QMenu* menu) {
+        for (QAction* a : menu->actions()) {
+            if (!a->isSeparator()) {
+                items << (a->menu() ? a->menu()->objectName() : a->objectName());
+            }
+        }
+        QTimer::singleShot(0, menu, &QMenu::close);
+    });
+    ui::Viewport& viewport = m_window->viewport();
+    emit viewport.customContextMenuRequested(QPoint(viewport.width() / 2, viewport.height() / 2));
+    for (const char* expected : {"addMenu", "actionDuplicate", "actionCopy", "actionPaste", "actionDelete",
+                                 "actionFrameSelected", "actionHandleMove"}) {
+        EXPECT_TRUE(items.contains(QString::fromLatin1(expected))) << expected;
+    }
+
+    // The undo history names every step; choosing one goes back to it.
+    auto* history = m_window->findChild<QUndoView*>(QStringLiteral("undoHistory"));
+    ASSERT_NE(history, nullptr);
+    EXPECT_EQ(history->stack(), &m_window->undoStack());
+    EXPECT_EQ(history->model()->rowCount(), m_window->undoStack().count() + 1) << "and the opened state";
+    history->setCurrentIndex(history->model()->index(steps, 0));
+    EXPECT_EQ(m_window->undoStack().index(), steps);
+    EXPECT_EQ(scene.findNode(pasted), nullptr) << "back before the paste";
 }
 
 TEST_F(EditorWorkflow, ImportsDroppedModelsAndOffersRecoveredWork) {
