@@ -243,12 +243,12 @@ QVBoxLayout* AccuracyPanel::buildCompareButtons(QGroupBox* compareBox) {
                            "field of view, whatever the viewport's shape)"));
     m_paths = new QComboBox(compareBox);
     m_paths->setObjectName(QStringLiteral("accuracyPaths"));
-    m_paths->addItem(tr("Auto: refine for about 20 s"), 0);
+    m_paths->addItem(tr("Auto (≤ 20 s)"), 0);
     for (int paths : kComparisonPathLevels) {
-        m_paths->addItem(tr("%1 paths per rough pixel").arg(paths), paths);
+        m_paths->addItem(tr("%1 paths").arg(paths), paths);
     }
     m_paths->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_paths->setMinimumContentsLength(14);
+    m_paths->setMinimumContentsLength(9);
     m_paths->setToolTip(
         tr("How exact the traced image is where it sees a rough mirror or reflector: it is traced with 4 "
            "paths a pixel first, then refined with four times as many at each step (its noise halves) up to "
@@ -296,7 +296,7 @@ QFormLayout* AccuracyPanel::buildNumbers(QGroupBox* compareBox) {
     numbers->addRow(tr("PSNR reflector"), m_psnrReflector);
     numbers->addRow(tr("Raster frame"), m_rasterMs);
     numbers->addRow(tr("Exact tracer"), m_traceMs);
-    numbers->addRow(tr("Exact image's noise"), m_noise);
+    numbers->addRow(tr("Tracer noise"), m_noise);
 
     m_explanation = new QLabel(
         tr("<b>RMSE</b> is the typical difference of a pixel's colour between the two images (sRGB, 0 = "
