@@ -346,6 +346,32 @@ PlacedModel placeImportedModel(const scene::Scene& scene, scene::MeshLibrary& me
     return placed;
 }
 
+// A new reflector's parallax proxy: the box around everything already in the scene, when that box
+// surrounds the reflector (what the bench's "parallax on" gives a reflector without a proxy of its own,
+// and finds closer to the exact reflection wherever the scene is not far away); none when nothing
+// surrounds it, where a proxy would say nothing true.
+namespace {
+
+std::optional<scene::ReflectorParallax> surroundingProxy(const render::math::Box& reflector,
+                                                         const std::vector<render::math::Box>& occupied) {
+    render::math::Box around;
+    for (const render::math::Box& b : occupied) {
+        around.add(b);
+    }
+    if (around.empty() || reflector.empty())
+        return std::nullopt;
+    if (!glm::all(glm::lessThanEqual(around.min, reflector.min)) ||
+        !glm::all(glm::greaterThanEqual(around.max, reflector.max)))
+        return std::nullopt;
+    scene::ReflectorParallax proxy;
+    proxy.shape = render::ParallaxShape::Box;
+    proxy.min = around.min - reflector.center();
+    proxy.max = around.max - reflector.center();
+    return proxy;
+}
+
+} // namespace
+
 scene::NodeTree placeNewNode(const scene::Scene& scene, scene::MeshLibrary& meshes, NewNodeKind kind,
                              const NewNodePlacement& placement) {
     const bool light = kind == NewNodeKind::PointLight || kind == NewNodeKind::DirectionalLight ||
@@ -388,6 +414,11 @@ scene::NodeTree placeNewNode(const scene::Scene& scene, scene::MeshLibrary& mesh
         offset.y += 0.005 * std::max({size.x, size.z, 1e-3});
     }
     d.transform.translate += offset;
+    if (d.reflector) {
+        box.min += offset;
+        box.max += offset;
+        d.reflector->parallax = surroundingProxy(box, occupied);
+    }
     return tree;
 }
 

@@ -152,3 +152,32 @@ TEST_F(Placement, ADuplicateStepsAsideAlongXAndCopiesDoNotLandInEachOther) {
 
 } // namespace
 } // namespace speculum::document
+
+namespace speculum::document {
+namespace {
+
+// A new chrome sphere inside a scene gets the parallax proxy the bench's "parallax on" would give it (a box
+// around everything else); one that nothing surrounds gets none.
+TEST_F(Placement, ANewReflectorInsideTheSceneStartsWithParallaxOn) {
+    // On the new scene's floor alone nothing stands above the sphere: no proxy.
+    const scene::NodeId alone = add(NewNodeKind::ReflectorSphere);
+    EXPECT_FALSE(scene.findNode(alone)->data().reflector->parallax);
+    undo.undo();
+    // A tall box at the floor's corner closes the space above it.
+    scene::NodeTree tall = makeNode(NewNodeKind::Box, {4.0, 4.0, -4.0});
+    tall.data.transform.scale = {0.5, 4.0, 0.5};
+    auto tower = addNodeTree(scene, undo, tall);
+    ASSERT_TRUE(tower) << tower.error();
+    const scene::NodeId ball = add(NewNodeKind::ReflectorSphere);
+    const auto& proxy = scene.findNode(ball)->data().reflector->parallax;
+    ASSERT_TRUE(proxy);
+    EXPECT_EQ(proxy->shape, render::ParallaxShape::Box);
+    const render::math::Box own = box(ball);
+    render::math::Box around = box(*tower);
+    around.add(box(scene.topLevelNodes().front()->id())); // the floor
+    EXPECT_LT(glm::length(own.center() + proxy->min - around.min), 1e-6);
+    EXPECT_LT(glm::length(own.center() + proxy->max - around.max), 1e-6);
+}
+
+} // namespace
+} // namespace speculum::document
