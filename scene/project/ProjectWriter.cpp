@@ -136,8 +136,19 @@ private:
         }
     }
 
+    // Relative to the project's folder where the file lies inside it or beside it (they share a folder
+    // below the root: the project and its models move together); absolute where they share only the root
+    // (a model from /usr/share in a project in the home folder), so moving the project does not lose it.
     std::string relative(const std::string& absolutePath) const {
-        return m_baseDir.relativeFilePath(QString::fromStdString(absolutePath)).toStdString();
+        const QString path = QString::fromStdString(absolutePath);
+        const QString relativePath = m_baseDir.relativeFilePath(path);
+        if (!relativePath.startsWith(QStringLiteral("../")) && relativePath != QStringLiteral(".."))
+            return relativePath.toStdString();
+        const QStringList base = QDir::cleanPath(m_baseDir.absolutePath()).split(u'/', Qt::SkipEmptyParts);
+        const QStringList file = QDir::cleanPath(path).split(u'/', Qt::SkipEmptyParts);
+        const bool shareAFolder =
+            !base.isEmpty() && !file.isEmpty() && base.front() == file.front() && QDir::isAbsolutePath(path);
+        return shareAFolder ? relativePath.toStdString() : absolutePath;
     }
 
     QDir m_baseDir;

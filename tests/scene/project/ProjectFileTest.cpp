@@ -116,6 +116,35 @@ TEST(ProjectFile, DemoSceneLoadsWithoutWarnings) {
     EXPECT_EQ(scene.nodes[2].data.light->shadows->pcf, 5);
 }
 
+// A model path is written relative where the model lies in the project's folder or beside it, absolute
+// where the two share only the root: moving such a project keeps its models found.
+TEST(ProjectFile, PathsAreRelativeInsideAndBesideTheProjectAndAbsoluteElsewhere) {
+    scene::SceneData data;
+    const std::pair<const char*, const char*> cases[] = {
+        {"/home/ada/project/models/duck.obj", "models/duck.obj"},
+        {"/home/ada/models/duck.obj", "../models/duck.obj"},
+        {"/usr/share/assimp/models/OBJ/box.obj", "/usr/share/assimp/models/OBJ/box.obj"},
+    };
+    for (const auto& [file, written] : cases) {
+        scene::NodeTree node;
+        node.data.name = file;
+        node.data.mesh = scene::MeshComponent::fromFile(file);
+        data.nodes.push_back(node);
+    }
+    const QByteArray json = scene::serializeProject(data, QDir(QStringLiteral("/home/ada/project")));
+    for (const auto& [file, written] : cases) {
+        EXPECT_TRUE(json.contains(QByteArray("\"file\": \"") + written + "\"")) << file << "\n"
+                                                                                << json.toStdString();
+    }
+    // And it reads back to the same absolute paths.
+    std::vector<std::string> warnings;
+    auto reread = scene::parseProject(json, QDir(QStringLiteral("/home/ada/project")), warnings);
+    ASSERT_TRUE(reread) << reread.error();
+    for (std::size_t i = 0; i < std::size(cases); ++i) {
+        EXPECT_EQ(reread->nodes[i].data.mesh->file, cases[i].first);
+    }
+}
+
 TEST(ProjectFile, DemoSceneSavesTwiceToIdenticalBytes) {
     const auto folder = freshTestFolder();
     std::vector<std::string> warnings;
