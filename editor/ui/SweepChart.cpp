@@ -53,6 +53,40 @@ int SweepChart::pointCount() const {
     return n;
 }
 
+namespace {
+
+// Each family's colour and marker, fixed by the family (not by the order series happen to be added), so a
+// family looks the same in every run; colours from the Okabe–Ito set, told apart with colour blindness
+// too, and a shape of their own besides.
+struct FamilyStyle {
+    QColor color;
+    QScatterSeries::MarkerShape shape;
+};
+
+FamilyStyle familyStyle(accuracy::Family family) {
+    static const QColor colors[] = {QColor(0, 0, 0),       QColor(230, 159, 0),  QColor(86, 180, 233),
+                                    QColor(0, 158, 115),   QColor(213, 94, 0),   QColor(0, 114, 178),
+                                    QColor(204, 121, 167), QColor(240, 228, 66), QColor(153, 153, 153),
+                                    QColor(128, 64, 160)};
+    // In the families' order: the scene (the anchor) a star; the families a chart usually shows together
+    // (the reflector's, the mirrors', the shadows') shapes that differ.
+    using S = QScatterSeries;
+    static const S::MarkerShape shapes[] = {S::MarkerShapeStar,
+                                            S::MarkerShapeCircle,
+                                            S::MarkerShapeRectangle,
+                                            S::MarkerShapeTriangle,
+                                            S::MarkerShapeRotatedRectangle,
+                                            S::MarkerShapePentagon,
+                                            S::MarkerShapeCircle,
+                                            S::MarkerShapeRectangle,
+                                            S::MarkerShapeTriangle,
+                                            S::MarkerShapeRotatedRectangle};
+    const auto i = static_cast<std::size_t>(family);
+    return {colors[i % std::size(colors)], shapes[i % std::size(shapes)]};
+}
+
+} // namespace
+
 void SweepChart::setResults(const document::SweepResults& results) {
     m_results = results;
     QChart* c = chart();
@@ -72,7 +106,9 @@ void SweepChart::setResults(const document::SweepResults& results) {
     }
     QValueAxis* axisX = m_axisX;
     QValueAxis* axisY = m_axisY;
-    axisX->setTitleText(m_results.gpuTimes() ? tr("GPU ms per frame") : tr("CPU ms per frame"));
+    // One title whatever the run: each point's callout says which clock timed it (the GPU's where it is
+    // timed, else the CPU's), and an empty chart does not change its title when it fills.
+    axisX->setTitleText(tr("ms per frame"));
     axisX->setRange(0.0, 1.0);
     axisY->setRange(0.0, 1.0);
     // The panel names the run under the chart; a title here would squeeze the plot in a narrow dock.
@@ -92,6 +128,10 @@ void SweepChart::setResults(const document::SweepResults& results) {
             auto* series = new QScatterSeries;
             series->setName(family);
             series->setMarkerSize(9);
+            const FamilyStyle style = familyStyle(r.config.family);
+            series->setColor(style.color);
+            series->setBorderColor(style.color.darker(140));
+            series->setMarkerShape(style.shape);
             byFamily[family] = series;
             families.push_back(family);
         }
@@ -102,6 +142,7 @@ void SweepChart::setResults(const document::SweepResults& results) {
     }
     auto* front = new QLineSeries;
     front->setName(tr("Pareto front"));
+    front->setColor(QColor(110, 110, 110)); // not a family's colour
     for (std::size_t i : accuracy::paretoFront(records)) {
         front->append(accuracy::frameMs(records[i]), records[i].psnr);
     }
@@ -153,10 +194,11 @@ QString SweepChart::pointLabel(int index) const {
     for (const auto& [key, value] : r.settings) {
         settings << QString::fromStdString(key + " " + value);
     }
-    return tr("%1 %2\n%3 ms · PSNR %4 dB\n%5")
+    return tr("%1 %2\n%3 ms %4 · PSNR %5 dB\n%6")
         .arg(QString::fromStdString(accuracy::familyName(r.config.family)),
              QString::fromStdString(r.config.label))
         .arg(accuracy::frameMs(r), 0, 'f', 2)
+        .arg(r.gpuMs >= 0.0 ? tr("GPU") : tr("CPU"))
         .arg(r.psnr, 0, 'f', 2)
         .arg(settings.join(QStringLiteral(", ")));
 }

@@ -30,6 +30,8 @@
 #include <QTest>
 #include <QUndoStack>
 #include <gtest/gtest.h>
+#include <map>
+#include <set>
 
 namespace speculum::ui {
 namespace {
@@ -591,6 +593,44 @@ TEST_F(AccuracyPanelTest, ClearEmptiesTheImagesTheNumbersAndTheChart) {
 
 // Resting the pointer on a chart point labels it with its configuration, its settings, its frame time
 // and its PSNR; moving off takes the label away.
+// Each family has a colour and a marker of its own, the same in every run; the time axis keeps its title
+// from the empty chart to the filled one.
+TEST_F(AccuracyPanelTest, FamiliesHaveDistinctColoursAndMarkersAndTheAxisTitleStays) {
+    SweepChart& chart = panel().chart();
+    auto timeAxisTitle = [&] {
+        const auto axes = chart.chart()->axes(Qt::Horizontal);
+        return axes.isEmpty() ? QString() : axes.front()->titleText();
+    };
+    chart.setResults({});
+    const QString emptyTitle = timeAxisTitle();
+    QTemporaryDir dir;
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
+    EXPECT_EQ(timeAxisTitle(), emptyTitle);
+    std::map<QString, std::pair<QRgb, int>> styles;
+    for (QAbstractSeries* s : chart.chart()->series()) {
+        auto* scatter = qobject_cast<QScatterSeries*>(s);
+        if (scatter && scatter->name() != QStringLiteral("applied")) {
+            styles[scatter->name()] = {scatter->color().rgb(), int(scatter->markerShape())};
+        }
+    }
+    ASSERT_GE(styles.size(), 4u) << "scene, envmap, mirror-depth, shadows";
+    std::set<QRgb> colours;
+    std::set<int> shapes;
+    for (const auto& [family, style] : styles) {
+        EXPECT_TRUE(colours.insert(style.first).second) << family.toStdString() << ": a colour of its own";
+        shapes.insert(style.second);
+    }
+    EXPECT_GE(shapes.size(), 4u) << "markers differ too, for a reader who cannot tell the colours apart";
+    // Loaded again, the families keep their looks.
+    ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
+    for (QAbstractSeries* s : chart.chart()->series()) {
+        auto* scatter = qobject_cast<QScatterSeries*>(s);
+        if (scatter && styles.count(scatter->name())) {
+            EXPECT_EQ(scatter->color().rgb(), styles[scatter->name()].first);
+        }
+    }
+}
+
 TEST_F(AccuracyPanelTest, AChartPointShowsItsSettingsTimeAndPsnrOnHover) {
     QTemporaryDir dir;
     ASSERT_TRUE(panel().loadSweepFile(writeResults(dir)).ok());
@@ -612,7 +652,8 @@ TEST_F(AccuracyPanelTest, AChartPointShowsItsSettingsTimeAndPsnrOnHover) {
         << "no label at " << at.x() << "," << at.y();
     const QString label = chart.hoverText();
     EXPECT_TRUE(label.startsWith(QStringLiteral("envmap 64"))) << label.toStdString();
-    EXPECT_TRUE(label.contains(QStringLiteral("2.00 ms"))) << label.toStdString();
+    EXPECT_TRUE(label.contains(QStringLiteral("2.00 ms GPU")))
+        << "which clock timed it: " << label.toStdString();
     EXPECT_TRUE(label.contains(QStringLiteral("PSNR 28.00 dB"))) << label.toStdString();
     EXPECT_TRUE(label.contains(QStringLiteral("map tennis-ball"))) << label.toStdString();
     EXPECT_TRUE(label.contains(QStringLiteral("resolution 64"))) << label.toStdString();
