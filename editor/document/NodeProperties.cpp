@@ -181,7 +181,20 @@ ComponentInfo lightGroup() {
 }
 
 ComponentInfo mirrorGroup() {
-    return component(&NodeData::mirror, "mirror");
+    ComponentInfo c = component(&NodeData::mirror, "mirror");
+    // The planner draws a rough mirror into a texture whatever its technique says (the stencil technique
+    // leaves no image of the reflection to blur): the field says so rather than show a technique that is
+    // not the one drawn.
+    if (Property<NodeData>* technique = find(c, "mirror.technique")) {
+        technique->note = [](const NodeData& d) {
+            return d.mirror && d.mirror->roughness > 0.0 &&
+                           d.mirror->technique == render::MirrorTechnique::Stencil
+                       ? QObject::tr("Drawn with the texture technique while rough: the stencil technique "
+                                     "leaves no image of the reflection to blur.")
+                       : QString();
+        };
+    }
+    return c;
 }
 
 ComponentInfo animationGroup() {

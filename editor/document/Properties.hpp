@@ -51,6 +51,10 @@ struct Property {
     std::function<base::Status(T&, const QVariant&)> set;
     // Hidden when it does not apply (a spot angle on a point light); empty = always shown.
     std::function<bool(const T&)> visible;
+    // What the value does in this case when that is not what it says (a rough mirror set to the stencil
+    // technique is drawn with the texture technique): shown under the editor; empty = nothing to add.
+    std::function<QString(const T&)> note;
+    QString noteFor(const T& value) const { return note ? note(value) : QString(); }
 
     bool isVisible(const T& value) const { return !visible || visible(value); }
 };

@@ -111,8 +111,13 @@ QString Inspector::layoutSignature() const {
 }
 
 void Inspector::rebuild() {
+    // The same node laid out again (a choice that adds or removes rows): the view stays where it was.
+    const QString before = m_signature.section(QLatin1Char('|'), 0, 0);
+    const int scrolled = m_scroll->verticalScrollBar()->value();
     m_signature = layoutSignature();
+    const bool sameNode = !before.isEmpty() && before == m_signature.section(QLatin1Char('|'), 0, 0);
     m_editors.clear();
+    m_notes.clear();
     // Replace the whole content widget: simplest way to drop every generated editor and layout.
     m_content = new QWidget;
     m_contentLayout = new QVBoxLayout(m_content);
@@ -130,6 +135,9 @@ void Inspector::rebuild() {
             for (const auto& p : c.properties) {
                 if (p.isVisible(d)) {
                     addEditor(group, p.info, p.get(d));
+                    if (p.note) {
+                        addNote(group, p.info.key, p.noteFor(d));
+                    }
                 }
             }
         }
@@ -156,6 +164,11 @@ void Inspector::rebuild() {
     }
     m_scroll->setWidget(m_content);
     fitToContent();
+    if (sameNode) {
+        // After the new content is laid out, or the scroll bar's range is still the empty widget's.
+        m_content->adjustSize();
+        m_scroll->verticalScrollBar()->setValue(scrolled);
+    }
     if (!m_invalidKey.isEmpty() && m_editors.contains(m_invalidKey)) {
         m_editors[m_invalidKey]->setInvalid(true);
     }
@@ -178,6 +191,11 @@ void Inspector::refresh() {
         for (auto it = m_editors.begin(); it != m_editors.end(); ++it) {
             if (const auto* p = document::findNodeProperty(it.key())) {
                 it.value()->setValue(p->get(node->data()));
+            }
+        }
+        for (auto it = m_notes.begin(); it != m_notes.end(); ++it) {
+            if (const auto* p = document::findNodeProperty(it.key())) {
+                showNote(it.value(), p->noteFor(node->data()));
             }
         }
         return;
@@ -221,6 +239,23 @@ void Inspector::addEditor(QWidget* group, const document::PropertyInfo& info, co
     connect(editor, &PropertyEditor::interactionStarted, this, [this] { ++m_gesture; });
     connect(editor, &PropertyEditor::edited, this,
             [this, key = info.key](const QVariant& v) { applyValue(key, v); });
+}
+
+// A line under an editor saying what its value does here when that differs from what it says; hidden
+// while there is nothing to say.
+void Inspector::addNote(QWidget* group, const QString& key, const QString& text) {
+    auto* note = new QLabel(group);
+    note->setObjectName(key + QStringLiteral(".note"));
+    note->setWordWrap(true);
+    note->setForegroundRole(QPalette::PlaceholderText);
+    static_cast<QFormLayout*>(group->layout())->addRow(QString(), note);
+    m_notes.insert(key, note);
+    showNote(note, text);
+}
+
+void Inspector::showNote(QLabel* note, const QString& text) {
+    note->setText(text);
+    note->setVisible(!text.isEmpty());
 }
 
 void Inspector::addComponentButton(const NodeData& d) {

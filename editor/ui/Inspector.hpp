@@ -51,6 +51,8 @@ private:
     void showError(const QString& key, const QString& text);
     void clearError();
     void addEditor(QWidget* group, const document::PropertyInfo& info, const QVariant& value);
+    void addNote(QWidget* group, const QString& key, const QString& text);
+    static void showNote(QLabel* note, const QString& text);
     QWidget* addGroup(const QString& title, const QString& componentKey, bool removable);
     void addComponentButton(const scene::NodeData& data);
     void changeComponent(const QString& key, bool add);
@@ -69,6 +71,7 @@ private:
     QWidget* m_content = nullptr;
     QVBoxLayout* m_contentLayout = nullptr;
     QHash<QString, PropertyEditor*> m_editors;
+    QHash<QString, QLabel*> m_notes; // by property key: the editors' notes (Property::note)
     QString m_signature;
     QString m_invalidKey;
     int m_gesture = 0;

@@ -187,6 +187,62 @@ TEST_F(InspectorInputTest, ParallaxProxyIsEditableAndRoundTrips) {
     m_window->undoStack().clear();
 }
 
+// A choice that adds rows (the parallax proxy's box fields) rebuilds the panel: it stays scrolled where it
+// was, not back at the top.
+TEST_F(InspectorInputTest, AChoiceThatAddsRowsKeepsTheScrollPosition) {
+    const scene::NodeId id = findNode(scene(), isReflector);
+    m_window->selection().selectNode(id);
+    QCoreApplication::processEvents();
+    auto* scroll = m_window->inspector().findChild<QScrollArea*>();
+    ASSERT_NE(scroll, nullptr);
+    ASSERT_GT(scroll->verticalScrollBar()->maximum(), 0) << "the panel should be taller than the window";
+    // Off first, so that choosing a box adds rows.
+    ASSERT_TRUE(m_window->inspector().applyValue(QStringLiteral("reflector.parallax"), 0).ok());
+    QCoreApplication::processEvents();
+    const int scrolled = scroll->verticalScrollBar()->maximum() * 2 / 3;
+    scroll->verticalScrollBar()->setValue(scrolled);
+    ASSERT_TRUE(m_window->inspector().applyValue(QStringLiteral("reflector.parallax"), 2).ok());
+    QCoreApplication::processEvents();
+    ASSERT_NE(m_window->inspector().editor(QStringLiteral("reflector.parallax.max")), nullptr)
+        << "rows added";
+    EXPECT_EQ(scroll->verticalScrollBar()->value(), scrolled);
+    // Another node starts at the top.
+    m_window->selection().selectNode(
+        findNode(scene(), [](const scene::NodeData& d) { return d.light.has_value(); }));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(scroll->verticalScrollBar()->value(), 0);
+    m_window->undoStack().clear();
+}
+
+// A rough mirror set to the stencil technique is drawn with the texture technique: its Technique field
+// says so, and stops saying it when it is no longer true.
+TEST_F(InspectorInputTest, ARoughMirrorsTechniqueSaysHowItIsDrawn) {
+    ASSERT_TRUE(m_window
+                    ->openProjectFile(QString::fromStdString(
+                        speculum::testSourcePath("resources/scenes/mirrors.speculum.json")))
+                    .ok());
+    const scene::NodeId mirror = findNode(
+        scene(), [](const scene::NodeData& d) { return d.mirror.has_value() && d.mirror->roughness > 0.0; });
+    ASSERT_NE(mirror, scene::kNoNode) << "the mirrors demo has a rough mirror";
+    m_window->selection().selectNode(mirror);
+    QCoreApplication::processEvents();
+    Inspector& inspector = m_window->inspector();
+    ASSERT_TRUE(inspector.applyValue(QStringLiteral("mirror.technique"), 0).ok()); // stencil
+    QCoreApplication::processEvents();
+    auto* note = inspector.findChild<QLabel*>(QStringLiteral("mirror.technique.note"));
+    ASSERT_NE(note, nullptr);
+    EXPECT_TRUE(note->isVisibleTo(&inspector));
+    EXPECT_TRUE(note->text().contains(QStringLiteral("texture technique"))) << note->text().toStdString();
+    ASSERT_TRUE(inspector.applyValue(QStringLiteral("mirror.technique"), 1).ok()); // texture
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(note->isVisibleTo(&inspector)) << "drawn as it says";
+    ASSERT_TRUE(inspector.applyValue(QStringLiteral("mirror.technique"), 0).ok());
+    ASSERT_TRUE(inspector.applyValue(QStringLiteral("mirror.roughness"), 0.0).ok());
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(note->isVisibleTo(&inspector)) << "a sharp mirror is drawn with the stencil technique";
+    m_window->undoStack().clear();
+}
+
 TEST_F(InspectorInputTest, ExportStillExactReferenceWritesAndCancelWritesNothing) {
     QTemporaryDir dir;
     scene::StillExportSettings settings;
