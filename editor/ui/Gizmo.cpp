@@ -1,5 +1,6 @@
 #include "editor/ui/Gizmo.hpp"
 
+#include "editor/ui/ViewGrid.hpp"
 #include "render/math/Projection.hpp"
 #include "scene/model/NodeMath.hpp"
 
@@ -123,6 +124,11 @@ int Gizmo::hitTest(QPointF point) const {
     if (!m_valid) {
         return -1;
     }
+    // The centre of the scale handles scales evenly: the centre wins over the axes that start there.
+    if (m_mode == HandleMode::Scale &&
+        std::hypot(point.x() - m_originPx.x(), point.y() - m_originPx.y()) <= kCentrePixels) {
+        return kUniformAxis;
+    }
     int best = -1;
     double bestDistance = kHitPixels;
     for (const Axis& a : m_axes) {
@@ -137,9 +143,42 @@ int Gizmo::hitTest(QPointF point) const {
     return best;
 }
 
-scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from, QPointF to) const {
+namespace {
+
+// `value` on a grid of `step` (nothing for a step that is not a positive finite number).
+double onGrid(double value, double step) {
+    return step > 0.0 && std::isfinite(step) ? std::round(value / step) * step : value;
+}
+
+// `value` to `digits` significant digits: what a drag can mean, without the noise of the pixels' maths.
+double significant(double value, int digits) {
+    if (value == 0.0 || !std::isfinite(value)) {
+        return value;
+    }
+    return onGrid(value, std::pow(10.0, std::floor(std::log10(std::abs(value))) - (digits - 1)));
+}
+
+} // namespace
+
+double Gizmo::gridStep() const {
+    return groundGridSpacing(m_projection.camera());
+}
+
+scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from, QPointF to,
+                            bool snap) const {
     scene::NodeData out = start;
-    if (!m_valid || axis < 0 || axis > 2) {
+    if (!m_valid || axis < 0 || axis > kUniformAxis ||
+        (axis == kUniformAxis && m_mode != HandleMode::Scale)) {
+        return out;
+    }
+    if (axis == kUniformAxis) {
+        // Right or up grows it, left or down shrinks it: one handle length doubles the size.
+        const QPointF mouse = to - from;
+        const double pixels = kHandlePixels;
+        const double factor = std::max(1.0 + (mouse.x() - mouse.y()) / pixels, 0.01);
+        for (int i = 0; i < 3; ++i) {
+            out.transform.scale[i] = scaled(start.transform.scale[i], factor, snap);
+        }
         return out;
     }
     const Axis& a = m_axes[std::size_t(axis)];
@@ -152,7 +191,9 @@ scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from
         // the axis tip (axis towards the camera) that is a positive rotation.
         const glm::dvec3 toCamera = m_projection.camera().position - m_origin;
         const double sign = glm::dot(a.direction, toCamera) >= 0.0 ? -1.0 : 1.0;
-        out.transform.rotate[axis] = start.transform.rotate[axis] + glm::degrees(delta) * sign;
+        // Snapped: 15° steps; else hundredths of a degree, which no pixel of the drag can tell apart.
+        out.transform.rotate[axis] =
+            onGrid(start.transform.rotate[axis] + glm::degrees(delta) * sign, snap ? 15.0 : 0.01);
         return out;
     }
     if (a.line.size() < 2) {
@@ -166,14 +207,27 @@ scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from
     const double fraction = QPointF::dotProduct(mouse, screenAxis) / len2; // in handle lengths
     if (m_mode == HandleMode::Move) {
         const glm::dvec3 worldDelta = a.direction * (fraction * m_length);
-        out.transform.translate =
+        const glm::dvec3 moved =
             start.transform.translate + glm::dvec3(glm::inverse(m_parentWorld) * glm::dvec4(worldDelta, 0.0));
+        // Snapped: on the ground grid's lines; else on a grid a thousand times finer (below a pixel).
+        const double step = snap ? gridStep() : gridStep() * 1e-3;
+        for (int i = 0; i < 3; ++i) {
+            if (moved[i] != start.transform.translate[i]) { // what the drag changes, and nothing else
+                out.transform.translate[i] = onGrid(moved[i], step);
+            }
+        }
     } else if (m_mode == HandleMode::Scale) {
         // One handle length outwards doubles the scale; the factor never reaches zero or flips sign.
         const double factor = std::max(1.0 + fraction, 0.01);
-        out.transform.scale[axis] = start.transform.scale[axis] * factor;
+        out.transform.scale[axis] = scaled(start.transform.scale[axis], factor, snap);
     }
     return out;
+}
+
+double Gizmo::scaled(double scale, double factor, bool snap) {
+    // Snapped: the factor in steps of 0.1 (never 0); the result to 4 significant digits either way.
+    const double f = snap ? std::max(onGrid(factor, 0.1), 0.1) : factor;
+    return significant(scale * f, 4);
 }
 
 scene::NodeData followDrag(HandleMode mode, const scene::NodeData& leadStart, const scene::NodeData& leadNow,

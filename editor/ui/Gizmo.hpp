@@ -41,6 +41,7 @@ class Gizmo {
 public:
     static constexpr double kHandlePixels = 90.0; // on-screen length of the axes
     static constexpr double kHitPixels = 7.0;
+    static constexpr double kCentrePixels = 9.0; // around the origin: the uniform-scale handle
 
     struct Axis {
         int index = 0;             // 0 x, 1 y, 2 z
@@ -60,10 +61,20 @@ public:
     // The axis under a widget point, or -1.
     int hitTest(QPointF point) const;
 
-    // The node data after dragging `axis` from `from` to `to` (widget pixels), starting from `start`.
-    scene::NodeData drag(const scene::NodeData& start, int axis, QPointF from, QPointF to) const;
+    // The centre of the scale handles (hitTest, drag): scales the three axes together.
+    static constexpr int kUniformAxis = 3;
+
+    // The node data after dragging `axis` from `from` to `to` (widget pixels), starting from `start`. What
+    // the drag changes is rounded to what a pixel can mean (a thousandth of the ground grid's spacing,
+    // 0.01°, 4 significant digits of a scale), so no value carries the noise of the pixels' maths; with
+    // `snap` (Ctrl held) to the ground grid's lines, 15° steps and scale factors in steps of 0.1.
+    scene::NodeData drag(const scene::NodeData& start, int axis, QPointF from, QPointF to,
+                         bool snap = false) const;
+    // The ground grid's spacing where the handles are seen from (ViewGrid's).
+    double gridStep() const;
 
 private:
+    static double scaled(double scale, double factor, bool snap);
     bool m_valid = false;
     HandleMode m_mode = HandleMode::Select;
     ScreenProjection m_projection;

@@ -19,7 +19,8 @@ bool HandleDrag::press(const Gizmo& gizmo, int axis, QPointF position, scene::No
                        const std::vector<scene::NodeId>& nodes, double time) {
     release(); // a press while a drag is under way (its release was lost) ends that drag first
     const scene::Node* leadNode = m_scene.findNode(lead);
-    if (!gizmo.isValid() || axis < 0 || axis > 2 || !leadNode) {
+    const int lastAxis = gizmo.mode() == HandleMode::Scale ? Gizmo::kUniformAxis : 2;
+    if (!gizmo.isValid() || axis < 0 || axis > lastAxis || !leadNode) {
         return false;
     }
     std::vector<DraggedNode> dragged;
@@ -42,7 +43,7 @@ bool HandleDrag::press(const Gizmo& gizmo, int axis, QPointF position, scene::No
     return true;
 }
 
-void HandleDrag::move(QPointF position) {
+void HandleDrag::move(QPointF position, bool snap) {
     if (!isActive() || !m_scene.findNode(m_lead)) {
         return; // the lead node went away (an undo during the drag): nothing to measure on
     }
@@ -50,7 +51,7 @@ void HandleDrag::move(QPointF position) {
         return;
     }
     m_state = State::Dragging;
-    const scene::NodeData lead = m_gizmo.drag(m_leadStart, m_axis, m_pressPosition, position);
+    const scene::NodeData lead = m_gizmo.drag(m_leadStart, m_axis, m_pressPosition, position, snap);
     std::vector<document::SetNodesDataCommand::Change> changes;
     for (const DraggedNode& dragged : m_nodes) {
         if (!m_scene.findNode(dragged.id)) {

@@ -35,8 +35,9 @@ public:
     // (and starts nothing) when the handles, the axis or a node is not valid. A drag under way ends first.
     bool press(const Gizmo& gizmo, int axis, QPointF position, scene::NodeId lead,
                const std::vector<scene::NodeId>& nodes, double time);
-    // The mouse is at `position`: the nodes follow (Pressed becomes Dragging once the mouse has moved).
-    void move(QPointF position);
+    // The mouse is at `position`: the nodes follow (Pressed becomes Dragging once the mouse has moved);
+    // `snap` (Ctrl held) snaps what the drag changes (Gizmo::drag).
+    void move(QPointF position, bool snap = false);
     // Mouse released: the drag's step (if it changed anything) stays.
     void release();
     // Puts every node back as it was at the press, leaving no undo step.

@@ -399,13 +399,17 @@ void MainWindow::showControls() {
     QMessageBox::information(
         this, tr("Viewport Controls"),
         tr("<table>"
-           "<tr><td><b>Click</b></td><td>select (in a mirror: the reflected object)</td></tr>"
+           "<tr><td><b>Click</b></td><td>select (in a mirror: the reflected object); a model in parts: the "
+           "model first, each click again one level deeper</td></tr>"
            "<tr><td><b>Alt+click</b></td><td>select a mirror itself</td></tr>"
            "<tr><td><b>Ctrl+click</b></td><td>add to the selection or remove from it (also in the "
            "scene tree, where Shift+click selects a range)</td></tr>"
            "<tr><td><b>Drag a handle</b></td><td>move / rotate / scale every selected node (the handles "
            "sit on the current, last selected one; each node turns and scales about its own origin)"
            "</td></tr>"
+           "<tr><td><b>Ctrl</b> while dragging a handle</td><td>snap: to the grid's lines, to 15°, to "
+           "scale factors in steps of 0.1</td></tr>"
+           "<tr><td><b>Drag the scale handles' centre</b></td><td>scale evenly</td></tr>"
            "<tr><td><b>Q / W / E / R</b></td><td>no handles / move / rotate / scale</td></tr>"
            "<tr><td><b>Left drag</b></td><td>orbit around the camera target</td></tr>"
            "<tr><td><b>Middle drag</b> or <b>Shift+left drag</b></td><td>pan</td></tr>"

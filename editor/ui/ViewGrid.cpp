@@ -42,16 +42,21 @@ std::optional<QPointF> ClipProjection::point(const glm::dvec3& p) const {
     return toWidget(c);
 }
 
-GroundGrid groundGrid(const render::Camera& camera) {
-    GroundGrid grid;
+double groundGridSpacing(const render::Camera& camera) {
     const double distance = glm::length(camera.position - camera.target);
     // What the view is about: its distance to the target, or its height when it hovers over the ground
     // looking far away.
     const double scale = std::max({distance, std::abs(camera.position.y), 1e-6});
-    if (!std::isfinite(scale)) {
+    return std::isfinite(scale) ? std::pow(10.0, std::floor(std::log10(scale / 2.0))) : 0.0;
+}
+
+GroundGrid groundGrid(const render::Camera& camera) {
+    GroundGrid grid;
+    const double spacing = groundGridSpacing(camera);
+    if (!(spacing > 0.0)) {
         return grid;
     }
-    grid.spacing = std::pow(10.0, std::floor(std::log10(scale / 2.0)));
+    grid.spacing = spacing;
     const double s = grid.spacing;
     const double extent = kHalfLines * s;
     // Centred under the camera, snapped to the grid so lines do not swim as the view moves.

@@ -37,5 +37,7 @@ struct GroundGrid {
     std::vector<render::GuideLine> lines;
 };
 GroundGrid groundGrid(const render::Camera& camera);
+// Its spacing alone (what Ctrl snaps a moved node to).
+double groundGridSpacing(const render::Camera& camera);
 
 } // namespace speculum::ui

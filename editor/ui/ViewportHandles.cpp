@@ -79,8 +79,25 @@ bool ViewportHandles::leavesClick(QPointF position) {
     return true;
 }
 
-void ViewportHandles::dragHandle(QPointF position) {
-    m_handleDrag->move(position);
+void ViewportHandles::dragHandle(QPointF position, bool snap) {
+    m_handleDrag->move(position, snap);
+}
+
+// What a click on the mesh of node `hit` selects: the top of its hierarchy first (an imported model's
+// root, as Blender, Godot and Unity select the object, not its deepest part); a click again goes one level
+// deeper, down to the part itself. Ctrl+click (`deeper` false) always means the top.
+scene::NodeId ViewportHandles::clickTarget(scene::NodeId hit, bool deeper) const {
+    std::vector<scene::NodeId> chain{hit}; // hit, its parent, …, the top-level node
+    for (scene::NodeId up = m_scene.parentOf(hit); up != scene::kNoNode; up = m_scene.parentOf(up)) {
+        chain.push_back(up);
+    }
+    if (deeper && m_selection && m_selection->nodes().size() == 1) {
+        const auto selected = std::find(chain.begin(), chain.end(), m_selection->node());
+        if (selected != chain.end()) {
+            return selected == chain.begin() ? hit : *(selected - 1); // the part itself stays selected
+        }
+    }
+    return chain.back();
 }
 
 bool ViewportHandles::release(const ViewOnScreen& view) {
@@ -90,9 +107,9 @@ bool ViewportHandles::release(const ViewOnScreen& view) {
         const std::uint64_t id = pickAt(m_pressPosition, m_pressAlt, view);
         if (m_pressCtrl) {
             // Ctrl+click adds or removes; Ctrl+click on nothing keeps the selection.
-            m_selection->toggleNode(scene::NodeId(id));
+            m_selection->toggleNode(clickTarget(scene::NodeId(id), false));
         } else if (id) {
-            m_selection->selectNode(scene::NodeId(id));
+            m_selection->selectNode(clickTarget(scene::NodeId(id), true));
         } else {
             m_selection->clear();
         }

@@ -129,6 +129,14 @@ void paintGizmo(QPainter& painter, const Gizmo& gizmo, int active) {
             }
         }
     }
+    if (gizmo.mode() == HandleMode::Scale) {
+        // The uniform-scale handle: a square around the origin.
+        const bool hot = active == Gizmo::kUniformAxis;
+        painter.setPen(QPen(hot ? kActiveColor : QColor(235, 235, 235), hot ? 2.5 : 1.5));
+        painter.setBrush(Qt::NoBrush);
+        const double r = Gizmo::kCentrePixels - 1.5;
+        painter.drawRect(QRectF(gizmo.origin() - QPointF(r, r), QSizeF(2 * r, 2 * r)));
+    }
     painter.setPen(QPen(Qt::white, 1.5));
     painter.setBrush(QColor(40, 40, 40));
     painter.drawEllipse(gizmo.origin(), 3.5, 3.5);

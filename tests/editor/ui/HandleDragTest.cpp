@@ -7,8 +7,11 @@
 #include "scene/model/NodeMath.hpp"
 #include "scene/model/Scene.hpp"
 
+#include <QString>
 #include <QUndoStack>
+#include <cmath>
 #include <gtest/gtest.h>
+#include <string>
 
 namespace speculum::ui {
 namespace {
@@ -176,6 +179,62 @@ TEST_F(HandleDragTest, EachDragIsItsOwnStep) {
     drag.cancel();
     EXPECT_EQ(scene.findNode(a_)->data(), afterTwo);
     EXPECT_EQ(stack.count(), 3);
+}
+
+} // namespace
+} // namespace speculum::ui
+
+namespace speculum::ui {
+namespace {
+
+// What a drag writes is what a pixel can mean, never the noise of the pixels' maths; Ctrl snaps it to the
+// ground grid, to 15° and to scale factors in steps of 0.1.
+TEST_F(HandleDragTest, DraggedValuesCarryNoNoiseAndCtrlSnapsThem) {
+    const Gizmo move = gizmo(HandleMode::Move);
+    const QPointF p = grip(move);
+    const double grid = move.gridStep();
+    ASSERT_GT(grid, 0.0);
+    for (double dx : {7.0, 13.0, 29.0, 41.0}) {
+        const double x = move.drag(startA, 0, p, p + QPointF(dx, 3.0)).transform.translate.x;
+        EXPECT_NE(x, 0.0) << dx;
+        EXPECT_NEAR(x, std::round(x / (grid * 1e-3)) * grid * 1e-3, 1e-12) << "on a thousandth of the grid";
+        const double snapped = move.drag(startA, 0, p, p + QPointF(dx, 3.0), true).transform.translate.x;
+        EXPECT_NEAR(snapped, std::round(snapped / grid) * grid, 1e-12) << "on the grid's lines";
+        EXPECT_NEAR(snapped, x, grid / 2 + 1e-9);
+    }
+    EXPECT_EQ(move.drag(startA, 0, p, p + QPointF(20.0, 0.0)).transform.translate.y,
+              startA.transform.translate.y)
+        << "what the drag does not change keeps its value";
+
+    const Gizmo rotate = gizmo(HandleMode::Rotate);
+    const QPointF r = rotate.axes()[1].line[rotate.axes()[1].line.size() / 4];
+    const double turned = rotate.drag(startA, 1, r, r + QPointF(17.0, 9.0)).transform.rotate.y;
+    EXPECT_NEAR(turned * 100.0, std::round(turned * 100.0), 1e-9) << "hundredths of a degree";
+    const double snappedTurn = rotate.drag(startA, 1, r, r + QPointF(60.0, 40.0), true).transform.rotate.y;
+    EXPECT_NEAR(std::fmod(std::abs(snappedTurn), 15.0), 0.0, 1e-9) << snappedTurn;
+
+    const Gizmo scale = gizmo(HandleMode::Scale);
+    const QPointF s = grip(scale);
+    const double grown = scale.drag(startA, 0, s, s + QPointF(23.0, 0.0)).transform.scale.x;
+    EXPECT_EQ(grown, std::stod(QString::number(grown, 'g', 4).toStdString())) << "4 significant digits";
+    const double snappedScale = scale.drag(startA, 0, s, s + QPointF(23.0, 0.0), true).transform.scale.x;
+    EXPECT_NEAR(snappedScale * 10.0, std::round(snappedScale * 10.0), 1e-9) << "a factor in steps of 0.1";
+}
+
+// The centre of the scale handles scales the three axes together, by one factor.
+TEST_F(HandleDragTest, TheScaleHandlesCentreScalesEvenly) {
+    const Gizmo g = gizmo(HandleMode::Scale);
+    ASSERT_EQ(g.hitTest(g.origin()), Gizmo::kUniformAxis);
+    EXPECT_NE(gizmo(HandleMode::Move).hitTest(g.origin()), Gizmo::kUniformAxis) << "scale handles only";
+    HandleDrag drag(scene, stack);
+    ASSERT_TRUE(drag.press(g, Gizmo::kUniformAxis, g.origin(), a_, {a_}, 0.0));
+    drag.move(g.origin() + QPointF(45.0, 0.0)); // half a handle to the right: 1.5 times the size
+    drag.release();
+    const glm::dvec3 scaled = scene.findNode(a_)->data().transform.scale;
+    EXPECT_NEAR(scaled.x, 1.5, 1e-9);
+    EXPECT_EQ(scaled.x, scaled.y);
+    EXPECT_EQ(scaled.x, scaled.z);
+    EXPECT_EQ(stack.undoText(), QStringLiteral("Scale \u201cA\u201d"));
 }
 
 } // namespace

@@ -728,6 +728,50 @@ TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandleDragsActOnTh
     EXPECT_TRUE(selection.isEmpty());
 }
 
+// A model in parts: a click selects the model (the top of the hierarchy), a second click the part under
+// the mouse, as Blender, Godot and Unity pick the object before its pieces.
+TEST_F(EditorWorkflow, AClickSelectsTheModelFirstAndASecondClickThePart) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("parts.speculum.json"));
+    {
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "speculum-scene", "version": 1,
+          "camera": {"position": [0, 1, 5], "target": [0, 0.5, 0], "up": [0, 1, 0], "fovY": 50, "near": 0.1,
+                     "far": 50},
+          "nodes": [{"name": "Model", "children": [
+            {"name": "Body", "transform": {"translate": [0, 0.5, 0], "scale": [0.5, 0.5, 0.5]}, "children": [
+              {"name": "Knob", "transform": {"translate": [0, 2.6, 0], "scale": [0.3, 0.3, 0.3]},
+               "mesh": {"builtin": "sphere"}}],
+             "mesh": {"builtin": "box"}}]}]})");
+    }
+    ASSERT_TRUE(m_window->openProjectFile(path).ok());
+    ASSERT_TRUE(waitForFrames(*m_window));
+    ui::Viewport& viewport = m_window->viewport();
+    auto named = [&](const std::string& name) {
+        NodeId found = scene::kNoNode;
+        m_window->scene().forEachNode([&](const scene::Node& n) {
+            if (n.name() == name) {
+                found = n.id();
+            }
+        });
+        return found;
+    };
+    auto click = [&](glm::dvec3 at) {
+        QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, onScreen(at));
+        return m_window->selection().node();
+    };
+    const glm::dvec3 knob(0.0, 1.8, 0.0), body(0.2, 0.5, 0.5); // the knob stands on the body
+    EXPECT_EQ(click(knob), named("Model")) << "the model first";
+    EXPECT_EQ(click(knob), named("Body")) << "then one level deeper";
+    EXPECT_EQ(click(knob), named("Knob")) << "down to the part under the mouse";
+    EXPECT_EQ(click(knob), named("Knob")) << "and there it stays";
+    EXPECT_EQ(click(body), named("Model")) << "another part: the model again";
+    EXPECT_EQ(click(body), named("Body"));
+    QTest::mouseClick(&viewport, Qt::LeftButton, Qt::NoModifier, QPoint(5, 5)); // the sky
+    EXPECT_EQ(click(body), named("Model")) << "from nothing selected, the model again";
+}
+
 // Copy and paste through the clipboard, the viewport's right-click menu, and the undo history, as a
 // Blender user reaches for them.
 TEST_F(EditorWorkflow, CopyPasteTheRightClickMenuAndTheUndoHistory) {
