@@ -316,6 +316,15 @@ base::Status setCameraFromView(scene::Scene& scene, QUndoStack& undo, const rend
     return base::Done{};
 }
 
+namespace {
+
+double largestSide(const render::math::Box& box) {
+    const glm::dvec3 extent = box.max - box.min;
+    return std::max({extent.x, extent.y, extent.z});
+}
+
+} // namespace
+
 PlacedModel placeImportedModel(const scene::Scene& scene, scene::MeshLibrary& meshes,
                                const scene::ImportedModel& model, const std::string& absolutePath,
                                const ImportPlacement& placement) {
@@ -330,19 +339,26 @@ PlacedModel placeImportedModel(const scene::Scene& scene, scene::MeshLibrary& me
         placed.tree = scene::modelNodeTree(
             model, absolutePath, QFileInfo(path).completeBaseName().toStdString(), &placed.warnings);
     }
-    if (placement.fitToUnitBox) {
-        const glm::dvec3 extent = box.max - box.min;
-        const double size = std::max({extent.x, extent.y, extent.z});
-        if (size > 0.0 && std::isfinite(size)) {
-            placed.fit = 1.0 / size;
-            scaleAboutParentOrigin(placed.tree.data, placed.fit);
-            box.min *= placed.fit;
-            box.max *= placed.fit;
-        }
+    const std::vector<render::math::Box> occupied = occupiedBoxes(scene, placement.timeSeconds, meshes);
+    const double size = largestSide(box);
+    render::math::Box around;
+    for (const render::math::Box& b : occupied)
+        around.add(b);
+    placed.sceneSize = around.empty() ? 0.0 : largestSide(around);
+    placed.timesTheScene = placed.sceneSize > 0.0 ? size / placed.sceneSize : 0.0;
+    const double fitTo = placement.fitToUnitBox ? 1.0 : placement.fitToSize;
+    if (fitTo > 0.0 && size > 0.0 && std::isfinite(size)) {
+        placed.fit = fitTo / size;
+        scaleAboutParentOrigin(placed.tree.data, placed.fit);
+        box.min *= placed.fit;
+        box.max *= placed.fit;
     }
-    placed.tree.data.transform.translate +=
-        placeOnGround(box, placement.focus, occupiedBoxes(scene, placement.timeSeconds, meshes));
+    const glm::dvec3 offset = placeOnGround(box, placement.focus, occupied);
+    placed.tree.data.transform.translate += offset;
     placed.size = box.max - box.min;
+    placed.box = box;
+    placed.box.min += offset;
+    placed.box.max += offset;
     return placed;
 }
 

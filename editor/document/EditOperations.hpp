@@ -67,16 +67,26 @@ base::Status setCameraFromView(scene::Scene& scene, QUndoStack& undo, const rend
 struct ImportPlacement {
     bool asReflector = false;  // the whole file is the curved reflector's surface
     bool fitToUnitBox = false; // scaled to fit a 1-unit box instead of its real size
+    double fitToSize = 0.0;    // > 0: scaled so its largest side is this long (the scene's, when asked)
     glm::dvec3 focus{0.0};     // where the view looks: the model stands on the ground there, moved along +X
                                // past what is already there
     double timeSeconds = 0.0;  // the animation time at which "what is already there" is measured
 };
 struct PlacedModel {
-    scene::NodeTree tree;              // ready for addNodeTree
-    double fit = 1.0;                  // the scale fitting applied (1: real size)
-    glm::dvec3 size{0.0};              // of the placed model, scene units
+    scene::NodeTree tree;  // ready for addNodeTree
+    double fit = 1.0;      // the scale fitting applied (1: real size)
+    glm::dvec3 size{0.0};  // of the placed model, scene units
+    render::math::Box box; // where it lands, in the top level's coordinates
+    // The largest side of what the scene already holds (0: nothing yet), and how many times the model's
+    // largest side is that: what an import far too big for the scene is judged by (kMuchLargerThanScene).
+    double sceneSize = 0.0;
+    double timesTheScene = 0.0;
     std::vector<std::string> warnings; // about the node tree (transforms that had to be approximated)
 };
+// A model this many times the scene's size is offered a fit to it: at its real size the scene would vanish
+// under it, or the view would have to leave the scene to see it.
+inline constexpr double kMuchLargerThanScene = 100.0;
+
 // The nodes for an imported model, placed (nothing changes yet): a node tree like the file's, or one
 // reflector node for the whole file. `meshes` gives the boxes of the nodes already in the scene.
 PlacedModel placeImportedModel(const scene::Scene& scene, scene::MeshLibrary& meshes,

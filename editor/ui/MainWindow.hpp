@@ -2,6 +2,7 @@
 
 #include "base/Result.hpp"
 #include "editor/document/DocumentSession.hpp"
+#include "editor/document/EditOperations.hpp"
 #include "editor/document/NodeFactory.hpp"
 #include "scene/export/StillExport.hpp"
 #include "scene/project/Recovery.hpp"
@@ -262,6 +263,9 @@ private:
     QProgressBar* m_importProgress = nullptr;
     QToolButton* m_importCancel = nullptr;
     QAction* m_fitImportsAction = nullptr;
+    bool offerFitToScene(const ImportRequest& request, const QString& fileName,
+                         const document::PlacedModel& placed);
+    bool frameIfOutOfView(const render::math::Box& box);
 
     // ---- time (MainWindowTime.cpp): the timeline toolbar (Play, Rewind, the time slider and
     // its "t = … s" readout) and the clock back to 0, paused, whenever the document is replaced (New, Open,

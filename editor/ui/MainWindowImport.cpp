@@ -2,6 +2,7 @@
 // places the imported model (placeImportedModel) and adds it as one undo step (addNodeTree).
 #include "base/FileKind.hpp"
 #include "editor/document/EditOperations.hpp"
+#include "editor/ui/Gizmo.hpp"
 #include "editor/ui/MainWindow.hpp"
 #include "editor/ui/ModelImportJob.hpp"
 #include "editor/ui/Viewport.hpp"
@@ -16,6 +17,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolButton>
@@ -193,6 +195,12 @@ void MainWindow::onImportDone() {
     placement.timeSeconds = m_clock->time();
     document::PlacedModel placed = document::placeImportedModel(scene(), m_viewport->meshes(), model,
                                                                 request.path.toStdString(), placement);
+    if (!placement.fitToUnitBox && placed.timesTheScene >= document::kMuchLargerThanScene &&
+        offerFitToScene(request, fileName, placed)) {
+        placement.fitToSize = placed.sceneSize;
+        placed = document::placeImportedModel(scene(), m_viewport->meshes(), model,
+                                              request.path.toStdString(), placement);
+    }
     for (const auto& w : placed.warnings) {
         logMessage(tr("Import: %1").arg(QString::fromStdString(w)));
     }
@@ -226,8 +234,16 @@ void MainWindow::onImportDone() {
                    .arg(size.y, 0, 'g', 3)
                    .arg(size.z, 0, 'g', 3)
                    .arg(placed.fit != 1.0 ? tr(" (fitted to a unit box)") : QString()));
+    const bool framed = frameIfOutOfView(placed.box);
+    if (framed) {
+        logMessage(tr("%1 landed outside the view: the view now frames it (Shift+F goes back to the scene "
+                      "camera).")
+                       .arg(fileName));
+    }
     if (out.warnings.empty()) {
-        statusBar()->showMessage(tr("Imported %1").arg(fileName), 5000);
+        statusBar()->showMessage(framed ? tr("Imported %1; the view frames it").arg(fileName)
+                                        : tr("Imported %1").arg(fileName),
+                                 5000);
     } else {
         statusBar()->showMessage(tr("Imported %1 with %2 warning(s): %3")
                                      .arg(fileName)
@@ -236,6 +252,51 @@ void MainWindow::onImportDone() {
                                  8000);
     }
     finish(true, QString());
+}
+
+// A model far larger than the scene (kMuchLargerThanScene): asked, when the import is the user's own,
+// whether to scale it to the scene's size; a drop or a scripted import keeps its real size and says so.
+bool MainWindow::offerFitToScene(const ImportRequest& request, const QString& fileName,
+                                 const document::PlacedModel& placed) {
+    const QString sizes = tr("%1 is %2 times as large as the scene (%3 units against %4).")
+                              .arg(fileName)
+                              .arg(placed.timesTheScene, 0, 'f', 0)
+                              .arg(std::max({placed.size.x, placed.size.y, placed.size.z}), 0, 'g', 3)
+                              .arg(placed.sceneSize, 0, 'g', 3);
+    if (!request.interactive) {
+        logMessage(sizes + QLatin1Char(' ') + tr("Imported at its real size."));
+        return false;
+    }
+    QMessageBox question(QMessageBox::Question, tr("Import Model"),
+                         sizes + QStringLiteral("\n\n") + tr("Scale it to the scene's size?"),
+                         QMessageBox::NoButton, this);
+    question.setObjectName(QStringLiteral("fitToSceneQuestion"));
+    QPushButton* fit = question.addButton(tr("Fit to the Scene"), QMessageBox::AcceptRole);
+    question.addButton(tr("Keep Real Size"), QMessageBox::RejectRole);
+    question.setDefaultButton(fit);
+    question.exec();
+    const bool fitted = question.clickedButton() == fit;
+    logMessage(sizes + QLatin1Char(' ') +
+               (fitted ? tr("Scaled to the scene's size.") : tr("Kept at its real size.")));
+    return fitted;
+}
+
+// Frames the newly imported model (selected) when any part of its box lies outside the view or behind
+// the eye; true when it did.
+bool MainWindow::frameIfOutOfView(const render::math::Box& box) {
+    if (box.empty()) {
+        return false;
+    }
+    const ScreenProjection screen(m_viewport->viewCamera(), QSizeF(m_viewport->size()));
+    const QRectF view(QPointF(0.0, 0.0), QSizeF(m_viewport->size()));
+    for (const glm::dvec3& corner : box.corners()) {
+        const auto at = screen.project(corner);
+        if (!at || !view.contains(*at)) {
+            m_viewport->frameSelected();
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace speculum::ui

@@ -19,10 +19,13 @@
 #include "support/GuiTestSupport.hpp"
 #include "support/TestPaths.hpp"
 
+#include <QAbstractButton>
 #include <QFile>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QWindow>
@@ -132,6 +135,7 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
 
     QUndoStack& undo = m_window->undoStack();
     const int steps = undo.count();
+    const glm::dvec3 focus = m_window->viewport().lookAtPoint(); // where the view looks before the import
     auto status = m_window->importModelFile(kEngine);
     ASSERT_TRUE(status.ok()) << status.error();
     EXPECT_EQ(undo.count(), steps + 1) << "the whole model is one undo step";
@@ -179,7 +183,6 @@ TEST_F(ModelImportGui, ModelComesInAsItsNodeTreeInOneUndoStepAtItsRealSizeOnTheG
     EXPECT_NEAR(size.y, fileSize.y, 1e-3 * fileSize.y);
     EXPECT_GT(std::max({size.x, size.y, size.z}), 10.0) << "the engine is hundreds of units long";
     EXPECT_NEAR(placed.min.y, 0.0, 1e-3 * size.y) << "on the ground";
-    const glm::dvec3 focus = m_window->viewport().lookAtPoint();
     EXPECT_NEAR(placed.center().x, focus.x, 1e-3 * size.x);
     EXPECT_NEAR(placed.center().z, focus.z, 1e-3 * size.z);
 
@@ -229,6 +232,75 @@ TEST_F(ModelImportGui, SecondImportLandsBesideTheFirstAndFittingIsAnOption) {
     EXPECT_GT(fitted.min.x, second.max.x) << "still beside the others";
     fit->setChecked(false);
     EXPECT_FALSE(m_window->fitImportsToUnitBox());
+}
+
+// A model thousands of times the scene's size: the user is asked whether to fit it to the scene (and it
+// then stands about as large as the scene); a scripted import keeps its real size, says so, and the view
+// frames what landed outside it.
+TEST_F(ModelImportGui, AModelFarLargerThanTheSceneIsOfferedAFitAndFramed) {
+    QTemporaryDir dir;
+    const QString obj = dir.filePath(QStringLiteral("tower.obj"));
+    {
+        QFile file(obj);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        // A cube 20 000 units a side: centimetres read as metres, say.
+        file.write("v -10000 0 -10000\nv 10000 0 -10000\nv 10000 0 10000\nv -10000 0 10000\n"
+                   "v -10000 20000 -10000\nv 10000 20000 -10000\nv 10000 20000 10000\nv -10000 20000 10000\n"
+                   "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\n");
+    }
+    const double sceneSide = [&] {
+        const render::math::Box b = worldBox();
+        const glm::dvec3 e = b.max - b.min;
+        return std::max({e.x, e.y, e.z});
+    }();
+    ASSERT_GT(sceneSide, 0.0);
+
+    // As File ▸ Import Model does it: asked, and fitted.
+    bool asked = false;
+    QTimer answer;
+    QObject::connect(&answer, &QTimer::timeout, m_window.get(), [&] {
+        if (auto* box = m_window->findChild<QMessageBox*>(QStringLiteral("fitToSceneQuestion"))) {
+            asked = true;
+            for (QAbstractButton* b : box->buttons()) {
+                if (b->text() == QStringLiteral("Fit to the Scene")) {
+                    b->click();
+                }
+            }
+        }
+    });
+    answer.start(50);
+    bool finished = false;
+    QObject::connect(m_window.get(), &MainWindow::importFinished, m_window.get(),
+                     [&](const QString&, bool ok, const QString&) { finished = ok; });
+    ASSERT_TRUE(m_window->startModelImport(obj, false, true).ok());
+    ASSERT_TRUE(waitFor([&] { return finished; }, 60000));
+    answer.stop();
+    EXPECT_TRUE(asked);
+    ASSERT_EQ(importedCount(), 1u);
+    const render::math::Box fitted = worldBox(imported(0).id());
+    const glm::dvec3 e = fitted.max - fitted.min;
+    EXPECT_NEAR(std::max({e.x, e.y, e.z}), sceneSide, sceneSide * 1e-6) << "as large as the scene was";
+    const auto& said = m_window->logLines();
+    EXPECT_TRUE(std::any_of(said.begin(), said.end(), [](const QString& l) {
+        return l.contains(QStringLiteral("Scaled to the scene's size"));
+    }));
+    m_window->undoStack().undo();
+
+    // Scripted (no one to ask): its real size, said in the log, and the view frames it.
+    const glm::dvec3 eyeBefore = m_window->viewport().viewCamera().position;
+    ASSERT_TRUE(m_window->importModelFile(obj).ok());
+    const render::math::Box real = worldBox(imported(0).id());
+    EXPECT_NEAR(real.max.y - real.min.y, 20000.0, 1e-6);
+    const auto& log = m_window->logLines();
+    EXPECT_TRUE(std::any_of(log.begin(), log.end(), [](const QString& l) {
+        return l.contains(QStringLiteral("times as large as the scene")) &&
+               l.contains(QStringLiteral("real size"));
+    }));
+    EXPECT_TRUE(std::any_of(log.begin(), log.end(), [](const QString& l) {
+        return l.contains(QStringLiteral("landed outside the view"));
+    }));
+    EXPECT_GT(glm::length(m_window->viewport().viewCamera().position - eyeBefore), 1000.0)
+        << "the view moved out to frame it";
 }
 
 TEST_F(ModelImportGui, ReflectorSurfaceIsTheWholeFileOnTheGround) {
