@@ -438,4 +438,36 @@ scene::NodeTree placeNewNode(const scene::Scene& scene, scene::MeshLibrary& mesh
     return tree;
 }
 
+base::Status setNodesHidden(scene::Scene& scene, QUndoStack& undo, const std::vector<scene::NodeId>& ids,
+                            bool hidden) {
+    std::vector<SetNodesDataCommand::Change> changes;
+    for (scene::NodeId id : existing(scene, ids)) {
+        scene::NodeData data = scene.findNode(id)->data();
+        if (data.hidden != hidden) {
+            data.hidden = hidden;
+            changes.push_back({id, std::move(data)});
+        }
+    }
+    if (changes.empty()) {
+        return base::Error{hidden ? "nothing to hide" : "nothing to show"};
+    }
+    const QString verb = hidden ? QStringLiteral("Hide") : QStringLiteral("Show");
+    const QString text =
+        changes.size() == 1
+            ? QStringLiteral("%1 \u201c%2\u201d").arg(verb, QString::fromStdString(changes.front().data.name))
+            : QStringLiteral("%1 %2 nodes").arg(verb).arg(changes.size());
+    undo.push(new SetNodesDataCommand(scene, std::move(changes), text));
+    return base::Done{};
+}
+
+base::Status showAllNodes(scene::Scene& scene, QUndoStack& undo) {
+    std::vector<scene::NodeId> hidden;
+    scene.forEachNode([&](const scene::Node& node) {
+        if (node.data().hidden) {
+            hidden.push_back(node.id());
+        }
+    });
+    return setNodesHidden(scene, undo, hidden, false);
+}
+
 } // namespace speculum::document

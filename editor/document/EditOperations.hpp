@@ -30,6 +30,12 @@ base::Result<scene::NodeId> addNodeTree(scene::Scene& scene, QUndoStack& undo, s
 // (view::Selection::roots()): none under another. Unknown ids are skipped; none left is an error.
 base::Status deleteNodes(scene::Scene& scene, QUndoStack& undo, const std::vector<scene::NodeId>& roots);
 
+// Hides the nodes (and so what is under them) or shows them again: "Hide “A”", "Show 3 nodes", one undo
+// step; nodes already so change nothing (no step when none changes). showAllNodes shows every hidden node.
+base::Status setNodesHidden(scene::Scene& scene, QUndoStack& undo, const std::vector<scene::NodeId>& ids,
+                            bool hidden);
+base::Status showAllNodes(scene::Scene& scene, QUndoStack& undo);
+
 struct Duplicates {
     std::vector<scene::NodeId> copies;          // one per root, in the same order
     scene::NodeId currentCopy = scene::kNoNode; // the copy of `current`, or of the root it lies under

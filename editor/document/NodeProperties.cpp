@@ -128,6 +128,14 @@ ComponentInfo nodeGroup() {
         return base::Done{};
     };
     c.properties.push_back(name);
+    Property<NodeData> hidden;
+    hidden.info = fieldprops::infoOf(*render::findField<NodeData>("hidden"), QStringLiteral("node.hidden"));
+    hidden.get = [](const NodeData& d) { return QVariant(d.hidden); };
+    hidden.set = [](NodeData& d, const QVariant& v) -> base::Status {
+        d.hidden = v.toBool();
+        return base::Done{};
+    };
+    c.properties.push_back(hidden);
     return c;
 }
 

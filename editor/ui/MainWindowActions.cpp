@@ -427,6 +427,8 @@ void MainWindow::showControls() {
            "<tr><td><b>Ctrl+C / Ctrl+X / Ctrl+V</b></td><td>copy / cut / paste nodes (also between "
            "windows)</td></tr>"
            "<tr><td><b>Ctrl+Alt+Z</b></td><td>the undo history: click a step to go back to it</td></tr>"
+           "<tr><td><b>H</b> / <b>Alt+H</b></td><td>hide the selection / show every hidden node (the tick "
+           "in the scene tree shows or hides one)</td></tr>"
            "<tr><td><b>Space</b> / <b>Home</b></td><td>play or pause / rewind the animation</td></tr>"
            "</table><p>Moving the view does not change the document, unless View ▸ Look Through Scene "
            "Camera is on.</p>"));
@@ -567,6 +569,17 @@ void MainWindow::createViewMenu() {
     connect(makeAction(view, QStringLiteral("actionCameraFromView"), tr("Set Scene &Camera from View")),
             &QAction::triggered, this,
             [this] { document::setCameraFromView(scene(), undoStack(), m_viewport->viewCamera()); });
+    view->addSeparator();
+    // Hide and show, as Blender's H and Alt+H: from anywhere in the window (a name field still types H).
+    QAction* hide =
+        makeAction(view, QStringLiteral("actionHideSelected"), tr("&Hide Selected"), QKeySequence(Qt::Key_H));
+    hide->setShortcutContext(Qt::WindowShortcut);
+    connect(hide, &QAction::triggered, this,
+            [this] { document::setNodesHidden(scene(), undoStack(), m_selection->roots(), true); });
+    QAction* showAll =
+        makeAction(view, QStringLiteral("actionShowAll"), tr("Show &All"), QKeySequence(Qt::ALT | Qt::Key_H));
+    showAll->setShortcutContext(Qt::WindowShortcut);
+    connect(showAll, &QAction::triggered, this, [this] { document::showAllNodes(scene(), undoStack()); });
     view->addSeparator();
     createHandleModeActions(view);
     view->addSeparator();

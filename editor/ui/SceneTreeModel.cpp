@@ -6,6 +6,7 @@
 #include <QDataStream>
 #include <QIODevice>
 #include <QMimeData>
+#include <QPalette>
 #include <QUndoStack>
 #include <algorithm>
 #include <utility>
@@ -137,7 +138,15 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
     case Qt::DecorationRole:
         return kindIcon(nodeKind(node->data()));
     case Qt::ToolTipRole:
-        return tr("%1 — %2").arg(QString::fromStdString(node->name()), kindName(nodeKind(node->data())));
+        return tr("%1 — %2%3")
+            .arg(QString::fromStdString(node->name()), kindName(nodeKind(node->data())),
+                 m_scene.isHidden(node->id()) ? tr(" (hidden: in no picture; tick it to show it)")
+                                              : QString());
+    case Qt::CheckStateRole: // the row's eye: ticked while the node is in the pictures
+        return node->data().hidden ? Qt::Unchecked : Qt::Checked;
+    case Qt::ForegroundRole: // hidden, or under a hidden node: greyed
+        return m_scene.isHidden(node->id()) ? QVariant(QPalette().brush(QPalette::Disabled, QPalette::Text))
+                                            : QVariant();
     default:
         return {};
     }
@@ -146,6 +155,10 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
 bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, int role) {
     const NodeId id = nodeId(index);
     const scene::Node* node = m_scene.findNode(id);
+    if (role == Qt::CheckStateRole && node) {
+        const bool hidden = Qt::CheckState(value.toInt()) != Qt::Checked;
+        return bool(document::setNodesHidden(m_scene, m_undoStack, {id}, hidden));
+    }
     if (role != Qt::EditRole || !node) {
         return false;
     }
@@ -161,7 +174,7 @@ Qt::ItemFlags SceneTreeModel::flags(const QModelIndex& index) const {
         return Qt::ItemIsSelectable | Qt::ItemIsEnabled;
     }
     return Qt::ItemIsSelectable | Qt::ItemIsEnabled | Qt::ItemIsEditable | Qt::ItemIsDragEnabled |
-           Qt::ItemIsDropEnabled;
+           Qt::ItemIsDropEnabled | Qt::ItemIsUserCheckable;
 }
 
 QStringList SceneTreeModel::mimeTypes() const {

@@ -44,6 +44,9 @@ PickScene buildPickScene(const Scene& scene, double timeSeconds, MeshLibrary& me
     std::vector<Warning> ignored; // the viewport reports load problems already
     scene.forEachNode([&](const Node& node) {
         const NodeData& d = node.data();
+        if (scene.isHidden(node.id())) {
+            return; // not in the picture: nothing to click
+        }
         const glm::dmat4& world = worlds.at(node.id());
         if (d.mesh) {
             if (auto mesh = meshes.get(*d.mesh, ignored)) {

@@ -23,6 +23,9 @@ public:
 
     void visit(const Node& node, const glm::dmat4& parentWorld, render::FrameInput& frame) {
         const NodeData& d = node.data();
+        if (d.hidden) {
+            return; // with everything under it
+        }
         const glm::dmat4 world = parentWorld * animatedLocalMatrix(d, m_time);
         render::Material material = d.material ? resolved(*d.material) : render::Material{};
 

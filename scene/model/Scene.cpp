@@ -101,6 +101,15 @@ bool Scene::isAncestor(NodeId ancestor, NodeId id) const {
     return false;
 }
 
+bool Scene::isHidden(NodeId id) const {
+    for (const Node* node = findNode(id); node; node = node->m_parent) {
+        if (node->data().hidden) {
+            return true;
+        }
+    }
+    return false;
+}
+
 void Scene::setSettings(const SceneSettings& settings) {
     m_settings = settings;
     emit settingsChanged();

@@ -83,6 +83,7 @@ public:
     int indexOf(NodeId id) const;                        // position among its siblings, -1 when no such node
     NodeId parentOf(NodeId id) const;                    // kNoNode for top level (and unknown ids)
     bool isAncestor(NodeId ancestor, NodeId node) const; // true also when ancestor == node
+    bool isHidden(NodeId id) const; // the node or one above it is hidden (NodeData::hidden)
 
     // Calls f(const Node&) for every node, parents before children, in file order.
     template <typename F>

@@ -145,6 +145,7 @@ struct EditorView {
 // One node's own data, without its children: what SetNodeDataCommand replaces as a whole.
 struct NodeData {
     std::string name;
+    bool hidden = false; // left out of every picture, with the nodes under it; kept in the document
     Transform transform;
     std::optional<MeshComponent> mesh;
     std::optional<MaterialComponent> material;
@@ -325,6 +326,12 @@ void NodeData::fields(Visit&& visit) {
     };
     visit(field(&NodeData::name,
                 {.name = "name", .label = "Name", .meaning = "The node's name", .type = FieldType::Text}));
+    visit(field(&NodeData::hidden, {.name = "hidden",
+                                    .label = "Hidden",
+                                    .meaning = "Left out of every picture (the viewport, stills, the bench, "
+                                               "picking) with the nodes under it; kept in the document",
+                                    .type = FieldType::Bool,
+                                    .write = render::FieldWrite::UnlessDefault}));
     visit(field(&NodeData::transform, component("transform", "Transform", "Where the node is")));
     visit(field(&NodeData::mesh, component("mesh", "Mesh", "The node's shape: built in, or from a file")));
     visit(field(&NodeData::material, component("material", "Material", "How the node's surface is lit")));

@@ -159,3 +159,27 @@ TEST_F(EditOperationsTest, SetCameraFromViewTakesTheViewAndKeepsTheDepthRange) {
 
 } // namespace
 } // namespace speculum::document
+
+namespace speculum::document {
+namespace {
+
+// Hide and show: one undo step each; a hidden node and what is under it are in no picture and cannot be
+// clicked; the file keeps it.
+TEST_F(EditOperationsTest, HiddenNodesLeaveEveryPictureAndComeBackWithShowAll) {
+    ASSERT_TRUE(setNodesHidden(scene, undo, {idOf("B")}, true));
+    EXPECT_TRUE(scene.isHidden(idOf("B")));
+    EXPECT_TRUE(scene.isHidden(idOf("B1"))) << "under a hidden node";
+    EXPECT_FALSE(scene.isHidden(idOf("A")));
+    expectOneStepThatUndoesExactly("Hide \u201cB\u201d", original);
+    EXPECT_FALSE(setNodesHidden(scene, undo, {idOf("B")}, true)) << "already hidden: no step";
+    EXPECT_EQ(undo.count(), 1);
+    ASSERT_TRUE(setNodesHidden(scene, undo, {idOf("A"), idOf("C")}, true));
+    EXPECT_EQ(undo.undoText().toStdString(), "Hide 2 nodes");
+    ASSERT_TRUE(showAllNodes(scene, undo));
+    EXPECT_EQ(undo.undoText().toStdString(), "Show 3 nodes");
+    EXPECT_EQ(scene.toData(), original);
+    EXPECT_FALSE(showAllNodes(scene, undo)) << "nothing hidden: no step";
+}
+
+} // namespace
+} // namespace speculum::document

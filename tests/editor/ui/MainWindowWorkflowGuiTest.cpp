@@ -772,6 +772,45 @@ TEST_F(EditorWorkflow, AClickSelectsTheModelFirstAndASecondClickThePart) {
     EXPECT_EQ(click(body), named("Model")) << "from nothing selected, the model again";
 }
 
+// H hides the selection, Alt+H shows everything again, the tick in the scene tree hides or shows one node:
+// each one undo step, and a hidden node leaves the viewport's frame.
+TEST_F(EditorWorkflow, HideAndShowFromTheKeysAndTheTree) {
+    openTeapot();
+    scene::Scene& scene = m_window->scene();
+    NodeId teapot = scene::kNoNode;
+    scene.forEachNode([&](const scene::Node& n) {
+        if (n.name() == "Teapot") {
+            teapot = n.id();
+        }
+    });
+    ASSERT_NE(teapot, scene::kNoNode);
+    auto drawnItems = [&] {
+        ui::Viewport& viewport = m_window->viewport();
+        const int before = viewport.framesRendered();
+        viewport.update();
+        EXPECT_TRUE(waitFor([&] { return viewport.framesRendered() > before; }, 30000));
+        return viewport.lastReport().plan.passes.front().details.objects;
+    };
+    const std::size_t all = drawnItems();
+    m_window->selection().selectNode(teapot);
+    const int steps = m_window->undoStack().count();
+    trigger("actionHideSelected");
+    EXPECT_TRUE(scene.findNode(teapot)->data().hidden);
+    EXPECT_EQ(m_window->undoStack().undoText(), QStringLiteral("Hide “Teapot”"));
+    EXPECT_LT(drawnItems(), all) << "not drawn";
+    ui::SceneTreeModel& tree = m_window->sceneTreeModel();
+    const QModelIndex row = tree.indexOf(teapot);
+    EXPECT_EQ(tree.data(row, Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
+    trigger("actionShowAll");
+    EXPECT_FALSE(scene.findNode(teapot)->data().hidden);
+    EXPECT_EQ(drawnItems(), all);
+    ASSERT_TRUE(tree.setData(row, Qt::Unchecked, Qt::CheckStateRole)) << "the tick hides it";
+    EXPECT_TRUE(scene.findNode(teapot)->data().hidden);
+    EXPECT_EQ(m_window->undoStack().count(), steps + 3);
+    m_window->undoStack().undo();
+    EXPECT_FALSE(scene.findNode(teapot)->data().hidden);
+}
+
 // Copy and paste through the clipboard, the viewport's right-click menu, and the undo history, as a
 // Blender user reaches for them.
 TEST_F(EditorWorkflow, CopyPasteTheRightClickMenuAndTheUndoHistory) {

@@ -1,9 +1,11 @@
 #include "scene/evaluate/Snapshot.hpp"
 
+#include "scene/evaluate/PickScene.hpp"
 #include "scene/model/NodeMath.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/DocumentTestSupport.hpp"
 
+#include <QDir>
 #include <QFileInfo>
 #include <cmath>
 #include <filesystem>
@@ -450,6 +452,41 @@ TEST(Snapshot, ImportedPartMaterialReachesTheRenderer) {
     auto part = meshes.part(glb, 0, warnings);
     ASSERT_TRUE(part.ok());
     EXPECT_EQ(frame.items[0].mesh, part.value());
+}
+
+} // namespace
+} // namespace speculum::document
+
+namespace speculum::document {
+namespace {
+
+// A hidden node, and everything under it, is in no frame and under no click; the file keeps it (written
+// only where set).
+TEST(Snapshot, AHiddenNodeAndItsChildrenAreInNoFrameAndUnderNoClick) {
+    scene::SceneData data;
+    scene::NodeTree shown = boxNode("Shown", {});
+    scene::NodeTree hidden = boxNode("Hidden", {{0.0, 0.0, -5.0}, {}, {1.0, 1.0, 1.0}});
+    hidden.data.hidden = true;
+    hidden.children.push_back(boxNode("Child", {{0.0, 3.0, 0.0}, {}, {1.0, 1.0, 1.0}}));
+    data.nodes = {shown, hidden};
+    scene::MeshLibrary meshes;
+    std::vector<scene::Warning> warnings;
+    const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
+    ASSERT_EQ(frame.items.size(), 1u);
+    EXPECT_EQ(frame.items.front().name, "Shown");
+
+    scene::Scene scene;
+    scene.reset(data);
+    const scene::PickScene picks = scene::buildPickScene(scene, 0.0, meshes);
+    ASSERT_EQ(picks.meshes.size(), 1u);
+    EXPECT_EQ(scene.findNode(picks.meshes.front().id)->name(), "Shown");
+
+    const QByteArray json = scene::serializeProject(data, QDir(QStringLiteral("/tmp")));
+    EXPECT_EQ(json.count("\"hidden\": true"), 1) << "written where set, and only there";
+    std::vector<std::string> notes;
+    auto reread = scene::parseProject(json, QDir(QStringLiteral("/tmp")), notes);
+    ASSERT_TRUE(reread) << reread.error();
+    EXPECT_EQ(*reread, data);
 }
 
 } // namespace
