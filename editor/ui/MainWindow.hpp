@@ -266,6 +266,8 @@ private:
     bool offerFitToScene(const ImportRequest& request, const QString& fileName,
                          const document::PlacedModel& placed);
     bool frameIfOutOfView(const render::math::Box& box);
+    void reportImported(const QString& fileName, const document::PlacedModel& placed,
+                        const std::vector<std::string>& warnings);
 
     // ---- time (MainWindowTime.cpp): the timeline toolbar (Play, Rewind, the time slider and
     // its "t = … s" readout) and the clock back to 0, paused, whenever the document is replaced (New, Open,

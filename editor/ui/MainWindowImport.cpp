@@ -234,24 +234,31 @@ void MainWindow::onImportDone() {
                    .arg(size.y, 0, 'g', 3)
                    .arg(size.z, 0, 'g', 3)
                    .arg(placed.fit != 1.0 ? tr(" (fitted to a unit box)") : QString()));
+    reportImported(fileName, placed, out.warnings);
+    finish(true, QString());
+}
+
+// After an import: the view frames the model where it landed outside it, and the status bar says so, or
+// names the first warning.
+void MainWindow::reportImported(const QString& fileName, const document::PlacedModel& placed,
+                                const std::vector<std::string>& warnings) {
     const bool framed = frameIfOutOfView(placed.box);
     if (framed) {
         logMessage(tr("%1 landed outside the view: the view now frames it (Shift+F goes back to the scene "
                       "camera).")
                        .arg(fileName));
     }
-    if (out.warnings.empty()) {
+    if (warnings.empty()) {
         statusBar()->showMessage(framed ? tr("Imported %1; the view frames it").arg(fileName)
                                         : tr("Imported %1").arg(fileName),
                                  5000);
     } else {
         statusBar()->showMessage(tr("Imported %1 with %2 warning(s): %3")
                                      .arg(fileName)
-                                     .arg(out.warnings.size())
-                                     .arg(QString::fromStdString(out.warnings.front())),
+                                     .arg(warnings.size())
+                                     .arg(QString::fromStdString(warnings.front())),
                                  8000);
     }
-    finish(true, QString());
 }
 
 // A model far larger than the scene (kMuchLargerThanScene): asked, when the import is the user's own,
