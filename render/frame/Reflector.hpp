@@ -171,7 +171,7 @@ void ReflectorParams::fields(Visit&& visit) {
                  .label = "Mirror depth in the map",
                  .meaning =
                      "How many levels of planar mirrors reflect inside the environment map, mirrors seen "
-                     "in mirrors included; 0 shows them with their own material",
+                     "in mirrors included; 0 shows only their surface's share (1 − reflectivity)",
                  .type = FieldType::Integer,
                  .min = 0,
                  .max = kMaxMirrorDepth}));

@@ -73,8 +73,8 @@ using RunFacePasses = std::function<void(const ViewSpace& face)>;
 // Draws the environment `env` (the scene without the reflector, camera at the capture point) into the
 // bound target: the face's own view over the whole target, then, through runFacePasses, the mirror passes
 // the planner planned in it (target.plan, target.face), which reflect the scene (mirrors in mirrors
-// included; mirrors without a view show their own material). They run in the face as a ViewSpace, with
-// the executors and the stencil recipe of the camera's mirrors (MirrorPasses); the face decides nothing
+// included; mirrors without a view show only their surface's share). They run in the face as a ViewSpace,
+// with the executors and the stencil recipe of the camera's mirrors (MirrorPasses); the face decides nothing
 // about them, and adds what the capture alone knows: the face's view and projection (a cube face's; the
 // warp has none and cuts each reflection at its mirror with clip distance 0), a far distance that grows
 // to (2·depth + 1)·far with each level since reflected points lie that far, a direct-fill warp that

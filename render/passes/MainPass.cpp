@@ -342,6 +342,26 @@ bool drawsBackFacesLast(const DrawItem& item, const FrameInput& input, const Vie
     return deepest < 0.0 && deepest >= -kThinCut * diagonal;
 }
 
+namespace {
+
+// A mirror with no pass of its own in the view: one whose paths end here (the depth limit or the view
+// budget) shows its surface's share alone in front (mesh.frag's MIRROR_CUT), one without a plane its
+// material, as the tracer draws them.
+void drawMirrorWithoutReflection(const FrameInput& input, std::size_t i, const ViewSetup& view,
+                                 MainPassContext& ctx) {
+    const Mirror& mirror = input.mirrors[i];
+    const gl::Program& p = ctx.program;
+    const bool cut = math::mirrorPlane(mirror.world).ok();
+    setMaterial(mirror.material, p, ctx, cut ? "#define MIRROR_CUT 1\n" : "");
+    if (cut) {
+        p.set("uMirrorReflectivity", float(std::clamp(mirror.reflectivity, 0.0, 1.0)));
+        p.set("uMirrorFresnel", mirror.fresnel ? 1 : 0);
+    }
+    drawLitMesh(ctx.mirrorMesh(i), drawnMirrorWorld(input, i, view, ctx), input, p, ctx);
+}
+
+} // namespace
+
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& ctx) {
     drawStencilMirrorDepths(input, view, ctx);
     const gl::Program& p = ctx.program;
@@ -371,8 +391,7 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
         if ((i < view.skipMirror.size() && view.skipMirror[i]) ||
             outsideView(ctx.meshes.get(ctx.unitPlane).bounds, mirrorRectangle(input.mirrors[i]), input, view))
             continue;
-        setMaterial(input.mirrors[i].material, p, ctx);
-        drawLitMesh(ctx.mirrorMesh(i), drawnMirrorWorld(input, i, view, ctx), input, p, ctx);
+        drawMirrorWithoutReflection(input, i, view, ctx);
     }
     if (input.reflector && input.reflector->mesh &&
         !(ctx.drawReflector && ctx.drawReflector(input, view, ctx))) {

@@ -117,7 +117,8 @@ bool drawsBackFacesLast(const DrawItem& item, const FrameInput& input, const Vie
                         const MainPassContext& context);
 
 // Draws every object with Blinn-Phong lighting and filtered shadows into the bound framebuffer, and the
-// mirrors that got no pass of their own as surfaces of their own material (they reflect nothing).
+// mirrors that got no pass of their own: their paths end there, so their front shows only their surface's
+// share (1 − reflectivity) and their back their material.
 void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContext& context);
 
 // Sets a material's uniforms (and binds its textures) on the lit program, and binds the program's draw

@@ -13,6 +13,10 @@ namespace speculum::render {
 
 namespace {
 
+// What a mirror whose paths end (a depth limit or the view budget) looks like, in the tracer as well.
+constexpr const char* kDrawnDark =
+    "drawn dark: its reflection is not followed, so only its surface's share (1 − reflectivity) shows";
+
 std::string plural(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
@@ -199,15 +203,14 @@ std::string whyNoView(PlanReason code, const ReasonDetails& d) {
         return "covers less than one " + std::string(inMap(d) ? "texel" : "pixel") + " (" +
                rounded(d.area.value_or(0.0) * 100) + "% of one)";
     case PlanReason::MirrorDepthLimit:
-        return "the mirror depth limit (" + std::to_string(d.limit) +
-               ") is reached; drawn with its own material";
+        return "the mirror depth limit (" + std::to_string(d.limit) + ") is reached; " + kDrawnDark;
     case PlanReason::MirrorViewLimit:
         return std::string(inMap(d) ? "this face" : "the frame") + " already has " + std::to_string(d.limit) +
-               " mirror views; drawn with its own material";
+               " mirror views; " + kDrawnDark;
     case PlanReason::MirrorStencilTooDeep:
         return "the stencil buffer cannot nest deeper";
     case PlanReason::MirrorDepthZero:
-        return "mirrorDepth is 0; drawn with its own material";
+        return std::string("mirrorDepth is 0; ") + kDrawnDark;
     default: // MirrorNoPlane, MirrorNoReflectionMatrix, MirrorNoObliqueProjection: the maths' own words
         return d.error;
     }
@@ -222,8 +225,8 @@ std::string mirrorSkipSentence(PlanReason code, const ReasonDetails& d) {
 std::string mirrorDroppedSentence(PlanReason code, const ReasonDetails& d) {
     switch (code) {
     case PlanReason::MapMirrorDepthZero:
-        return "no reflection in " + d.node +
-               "'s map: the reflector's mirrorDepth is 0; drawn with its own material (every face)";
+        return "no reflection in " + d.node + "'s map: the reflector's mirrorDepth is 0; " + kDrawnDark +
+               " (every face)";
     case PlanReason::MirrorOccluded:
         return "no reflection: fully occluded: no pixel of it passed the depth test";
     case PlanReason::MirrorOccludedInTile:
@@ -270,7 +273,8 @@ std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
     if (d.mapMirrorDepth) {
         const int depth = *d.mapMirrorDepth;
         mirrors = depth == 0
-                      ? "; its mirrors show their own material in it (the reflector's mirrorDepth is 0)"
+                      ? "; its mirrors show only their surface's share in it, not their reflections (the "
+                        "reflector's mirrorDepth is 0)"
                       : "; planar mirrors reflect in it up to " + std::to_string(depth) +
                             (depth == 1 ? " level" : " levels") + " deep (the reflector's mirrorDepth)";
     }

@@ -148,7 +148,6 @@ struct Tracer::Impl {
         }
         const glm::dvec3 viewDir = -glm::normalize(direction);
         const Surface& surface = *hit->surface;
-        const double eps = SceneGeometry::offset(hit->position);
         switch (surface.kind) {
         case SurfaceKind::Object: {
             if (id)
@@ -157,84 +156,99 @@ struct Tracer::Impl {
             return shader.shade(item.material, itemTexture[static_cast<std::size_t>(surface.index)], *hit,
                                 viewDir);
         }
-        case SurfaceKind::Mirror: {
-            const std::size_t m = static_cast<std::size_t>(surface.index);
-            const Mirror& mirror = input.mirrors[m];
-            const MaterialTextures& texture = mirrorTexture[m];
-            const bool reflects =
-                hit->frontFacing && mirrorPlanes[m] && path.mirrorLevel + 1 <= path.mirrorLimit;
+        case SurfaceKind::Mirror:
             if (id)
                 *id = {hit->frontFacing ? HitKind::Mirror : HitKind::MirrorBack, surface.index};
-            if (!reflects)
-                return shader.shade(mirror.material, texture, *hit, viewDir);
-            // mirror.frag: surface·(1−R) + reflection·R·tint, Schlick's R with fresnel.
-            const glm::dvec3 normal = mirrorPlanes[m]->normal;
-            double r = std::clamp(mirror.reflectivity, 0.0, 1.0);
-            if (mirror.fresnel) {
-                const double c = std::clamp(glm::dot(normal, viewDir), 0.0, 1.0);
-                r = r + (1.0 - r) * std::pow(1.0 - c, 5.0);
-            }
-            glm::dvec3 result(0.0);
-            if (r < 1.0) {
-                Hit surfaceHit = *hit;
-                surfaceHit.normal = normal;
-                result +=
-                    shader.shade(mirror.hasMaterial ? mirror.material : Material{},
-                                 mirror.hasMaterial ? texture : MaterialTextures{}, surfaceHit, viewDir) *
-                    (1.0 - r);
-            }
-            Path next = path;
-            next.mirrorLevel += 1;
-            next.farLeft = path.farLeft - hit->t;
-            double weight = 1.0;
-            const glm::dvec3 reflected =
-                reflectedDirection(direction, normal, viewDir, mirror.roughness, path, next, weight);
-            if (weight <= 0.0) // a lobe sample lost below the mirror
-                return result;
-            const glm::dvec3 seen =
-                radiance(shader, settings, hit->position + normal * eps, reflected, 0.0, next, nullptr);
-            // A perfect mirror's weight is exactly 1, and 1·x = x: its pixels do not change by a bit.
-            result += mirror.tint * r * (weight * seen);
-            return result;
-        }
-        case SurfaceKind::Reflector: {
+            return mirrorRadiance(shader, settings, direction, *hit, viewDir, path);
+        case SurfaceKind::Reflector:
             if (id)
                 *id = {HitKind::Reflector, 0};
-            const Reflector& reflector = *input.reflector;
-            if (path.reflectorLevel >= settings.reflectorDepth)
-                return shader.shade(reflector.material, reflectorTexture, *hit, viewDir);
-            // reflector.frag: surface·(1−R) + environment·R, Schlick's R with fresnel.
-            double r = std::clamp(reflector.reflectivity, 0.0, 1.0);
-            if (reflector.fresnel) {
-                const double c = std::clamp(glm::dot(hit->normal, viewDir), 0.0, 1.0);
-                r = r + (1.0 - r) * std::pow(1.0 - c, 5.0);
-            }
-            glm::dvec3 result(0.0);
-            if (r < 1.0)
-                result += shader.shade(reflector.material, reflectorTexture, *hit, viewDir) * (1.0 - r);
-            // Reflected about the interpolated normal (what an environment-map lookup uses too); the
-            // new ray leaves from the side the viewer is on. An environment map has no far plane, and
-            // shows planar mirrors to the reflector's own mirror depth.
-            Path next = path;
-            next.reflectorLevel += 1;
-            next.farLeft = kInfinity;
-            next.mirrorLevel = 0;
-            next.mirrorLimit = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
-            const glm::dvec3 d = glm::normalize(direction);
-            double weight = 1.0;
-            const glm::dvec3 reflected =
-                reflectedDirection(d, hit->normal, viewDir, reflector.roughness, path, next, weight);
-            if (weight <= 0.0) // a lobe sample lost below the (interpolated) surface
-                return result;
-            const glm::dvec3 side = glm::dot(reflected, hit->geometricNormal) >= 0.0 ? hit->geometricNormal
-                                                                                     : -hit->geometricNormal;
-            const glm::dvec3 seen =
-                radiance(shader, settings, hit->position + side * eps, reflected, 0.0, next, nullptr);
-            result += r * (weight * seen);
-            return result;
-        }
+            return reflectorRadiance(shader, settings, direction, *hit, viewDir, path);
         }
         return input.settings.background;
+    }
+
+    // A planar mirror's colour where the ray met it: its material from behind (or when it has no plane);
+    // in front, mirror.frag's surface·(1−R) + reflection·R·tint, Schlick's R with fresnel.
+    glm::dvec3 mirrorRadiance(const Shader& shader, const TraceSettings& settings,
+                              const glm::dvec3& direction, const Hit& hit, const glm::dvec3& viewDir,
+                              const Path& path) const {
+        const std::size_t m = static_cast<std::size_t>(hit.surface->index);
+        const Mirror& mirror = input.mirrors[m];
+        const MaterialTextures& texture = mirrorTexture[m];
+        if (!hit.frontFacing || !mirrorPlanes[m])
+            return shader.shade(mirror.material, texture, hit, viewDir);
+        const glm::dvec3 normal = mirrorPlanes[m]->normal;
+        double r = std::clamp(mirror.reflectivity, 0.0, 1.0);
+        if (mirror.fresnel) {
+            const double c = std::clamp(glm::dot(normal, viewDir), 0.0, 1.0);
+            r = r + (1.0 - r) * std::pow(1.0 - c, 5.0);
+        }
+        glm::dvec3 result(0.0);
+        if (r < 1.0) {
+            Hit surfaceHit = hit;
+            surfaceHit.normal = normal;
+            result += shader.shade(mirror.hasMaterial ? mirror.material : Material{},
+                                   mirror.hasMaterial ? texture : MaterialTextures{}, surfaceHit, viewDir) *
+                      (1.0 - r);
+        }
+        // Beyond the depth limit the reflection is not followed and adds nothing (as a path tracer's
+        // bounce limit ends a path): the last mirror of a corridor is dark, not lit like a wall.
+        if (path.mirrorLevel + 1 > path.mirrorLimit)
+            return result;
+        Path next = path;
+        next.mirrorLevel += 1;
+        next.farLeft = path.farLeft - hit.t;
+        double weight = 1.0;
+        const glm::dvec3 reflected =
+            reflectedDirection(direction, normal, viewDir, mirror.roughness, path, next, weight);
+        if (weight <= 0.0) // a lobe sample lost below the mirror
+            return result;
+        const double eps = SceneGeometry::offset(hit.position);
+        const glm::dvec3 seen =
+            radiance(shader, settings, hit.position + normal * eps, reflected, 0.0, next, nullptr);
+        // A perfect mirror's weight is exactly 1, and 1·x = x: its pixels do not change by a bit.
+        result += mirror.tint * r * (weight * seen);
+        return result;
+    }
+
+    // The curved reflector's colour where the ray met it: reflector.frag's surface·(1−R) + environment·R,
+    // Schlick's R with fresnel; its material alone beyond the reflector depth.
+    glm::dvec3 reflectorRadiance(const Shader& shader, const TraceSettings& settings,
+                                 const glm::dvec3& direction, const Hit& hit, const glm::dvec3& viewDir,
+                                 const Path& path) const {
+        const Reflector& reflector = *input.reflector;
+        if (path.reflectorLevel >= settings.reflectorDepth)
+            return shader.shade(reflector.material, reflectorTexture, hit, viewDir);
+        double r = std::clamp(reflector.reflectivity, 0.0, 1.0);
+        if (reflector.fresnel) {
+            const double c = std::clamp(glm::dot(hit.normal, viewDir), 0.0, 1.0);
+            r = r + (1.0 - r) * std::pow(1.0 - c, 5.0);
+        }
+        glm::dvec3 result(0.0);
+        if (r < 1.0)
+            result += shader.shade(reflector.material, reflectorTexture, hit, viewDir) * (1.0 - r);
+        // Reflected about the interpolated normal (what an environment-map lookup uses too); the new ray
+        // leaves from the side the viewer is on. An environment map has no far plane, and shows planar
+        // mirrors to the reflector's own mirror depth.
+        Path next = path;
+        next.reflectorLevel += 1;
+        next.farLeft = kInfinity;
+        next.mirrorLevel = 0;
+        next.mirrorLimit = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
+        const glm::dvec3 d = glm::normalize(direction);
+        double weight = 1.0;
+        const glm::dvec3 reflected =
+            reflectedDirection(d, hit.normal, viewDir, reflector.roughness, path, next, weight);
+        if (weight <= 0.0) // a lobe sample lost below the (interpolated) surface
+            return result;
+        const glm::dvec3 side =
+            glm::dot(reflected, hit.geometricNormal) >= 0.0 ? hit.geometricNormal : -hit.geometricNormal;
+        const double eps = SceneGeometry::offset(hit.position);
+        const glm::dvec3 seen =
+            radiance(shader, settings, hit.position + side * eps, reflected, 0.0, next, nullptr);
+        result += r * (weight * seen);
+        return result;
     }
 };
 

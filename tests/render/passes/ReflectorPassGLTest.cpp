@@ -190,9 +190,9 @@ TEST_F(ReflectorFrames, StaticSceneRendersItsEnvironmentOnce) {
 }
 
 TEST_F(ReflectorFrames, MirrorsInTheEnvironmentReflectToTheirDepthBudget) {
-    // A mirror in front of the +X (red) wall, facing the ball: what the ball sees towards +X is the mirror's
-    // reflection of the room, whose far wall is the −X (green) one. With mirrorDepth 0 the mirror shows its
-    // own (grey, emissive) material instead.
+    // A half-silvered mirror in front of the +X (red) wall, facing the ball: what the ball sees towards +X is
+    // half the mirror's (grey, emissive) surface and half its reflection of the room, whose far wall is the
+    // −X (green) one. With mirrorDepth 0 the reflection is not followed: the surface's half alone.
     FrameInput input = ballInRoom(ReflectorMap::Cube, ReflectorFill::Resampled);
     Mirror mirror;
     mirror.name = "Mirror";
@@ -201,6 +201,7 @@ TEST_F(ReflectorFrames, MirrorsInTheEnvironmentReflectToTheirDepthBudget) {
     mirror.size = {30.0, 30.0};
     mirror.material = emissive({0.5, 0.5, 0.5});
     mirror.hasMaterial = true;
+    mirror.reflectivity = 0.5;
     input.mirrors.push_back(mirror);
     input.camera.position = {3.2, 0.0, 0.0}; // looking from +X at the ball: its centre reflects +X
     input.camera.up = {0.0, 1.0, 0.0};
@@ -209,11 +210,11 @@ TEST_F(ReflectorFrames, MirrorsInTheEnvironmentReflectToTheirDepthBudget) {
         return glm::dvec3(renderImage(input, 64, 64).at(32, 32));
     };
     const glm::dvec3 reflected = centre(1);
-    EXPECT_LT(glm::length(reflected - kWallColors[1]), 0.1)
+    EXPECT_LT(glm::length(reflected - (glm::dvec3(0.25) + 0.5 * kWallColors[1])), 0.1)
         << reflected.x << " " << reflected.y << " " << reflected.z;
-    const glm::dvec3 material = centre(0);
-    EXPECT_LT(glm::length(material - glm::dvec3(0.5)), 0.1)
-        << material.x << " " << material.y << " " << material.z;
+    const glm::dvec3 surfaceAlone = centre(0);
+    EXPECT_LT(glm::length(surfaceAlone - glm::dvec3(0.25)), 0.05)
+        << surfaceAlone.x << " " << surfaceAlone.y << " " << surfaceAlone.z;
 }
 
 // A mirror's Fresnel is drawn into the map (its surface in pass 1), so with update on-change toggling it
@@ -249,9 +250,10 @@ TEST_F(ReflectorFrames, TogglingAMirrorsFresnelRedrawsAnOnChangeMap) {
 // Two mirrors in the ball's environment, for every map and fill. The camera looks at the ball from −Z, so
 // the ball's centre reflects −Z, where mirror A faces it. A reflects the ball's surroundings towards +Z,
 // where mirror B stands behind the ball, turned 45° so that it reflects +X, where a white box stands (large:
-// it is 35 units away in the reflections). So the centre shows A's own grey at mirror depth 0, B (its orange
-// material: an object seen in A) at depth 1, the white box (seen in B seen in A) at depth 2, and still the
-// box at depth 3.
+// it is 35 units away in the reflections). Both are half-silvered, so each level adds half of what the
+// last showed: the centre shows half of A's own grey at mirror depth 0 (its reflection not followed), and
+// half of B's orange beneath at depth 1, and half of the white box beneath B's at depth 2; depth 3 adds
+// nothing more (the box is no mirror).
 class ReflectorMirrorDepth : public GlTest, public ::testing::WithParamInterface<Variant> {};
 
 glm::dmat4 mirrorFacing(const glm::dvec3& at, const glm::dvec3& normal) {
@@ -271,6 +273,7 @@ TEST_P(ReflectorMirrorDepth, MirrorsInTheMapReflectToTheReflectorsBudget) {
     a.size = {12.0, 12.0};
     a.material = emissive({0.5, 0.5, 0.5});
     a.hasMaterial = true;
+    a.reflectivity = 0.5;
     Mirror b = a;
     b.name = "B";
     b.world = mirrorFacing({0.0, 0.0, 8.0}, {1.0, 0.0, -1.0});
@@ -292,7 +295,9 @@ TEST_P(ReflectorMirrorDepth, MirrorsInTheMapReflectToTheReflectorsBudget) {
             << "depth " << depth << ": a new mirror depth must render the map again";
         return c;
     };
-    const glm::dvec3 expected[] = {{0.5, 0.5, 0.5}, {1.0, 0.5, 0.0}, {1.0, 1.0, 1.0}, {1.0, 1.0, 1.0}};
+    // A's surface: 0.5·grey; B's surface seen in A: 0.5·0.5·orange; the box seen in B seen in A: 0.25·white.
+    const glm::dvec3 expected[] = {
+        {0.25, 0.25, 0.25}, {0.5, 0.375, 0.25}, {0.75, 0.625, 0.5}, {0.75, 0.625, 0.5}};
     for (int depth = 0; depth < 4; ++depth) {
         const glm::dvec3 got = centre(depth);
         EXPECT_LT(glm::length(got - expected[depth]), 0.1) << GetParam().name << " depth " << depth << ": ("

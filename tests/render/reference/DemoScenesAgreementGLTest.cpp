@@ -91,7 +91,7 @@ int classify(FrameInput& input) {
         mirror.tint = glm::dvec3(1.0);
         mirror.fresnel = false;
         mirror.roughness = 0.0;
-        mirror.hasMaterial = true; // shown beyond the depth limit and from behind
+        mirror.hasMaterial = true; // shown from behind (beyond the depth limit a perfect mirror is black)
         mirror.material = flat(paletteColour(next++));
     }
     if (input.reflector)

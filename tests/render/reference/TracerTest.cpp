@@ -226,8 +226,9 @@ TEST(ReferenceTracer, FresnelRaisesReflectivityAtGrazingAngles) {
     EXPECT_GT(grazing.r, steep.r + 0.1f);
 }
 
-TEST(ReferenceTracer, MirrorDepthLimitShowsTheMirrorsOwnMaterial) {
-    // Floor (blue) and ceiling (green) mirrors facing each other; a steep ray bounces between them.
+TEST(ReferenceTracer, MirrorDepthLimitEndsThePathWithTheSurfaceShareAlone) {
+    // Floor (blue) and ceiling (green) half-silvered mirrors facing each other; a steep ray bounces
+    // between them.
     FrameInput input;
     input.camera.position = {0, 0, 0};
     input.camera.target = {0, 0, -1};
@@ -237,9 +238,11 @@ TEST(ReferenceTracer, MirrorDepthLimitShowsTheMirrorsOwnMaterial) {
     render::Mirror floor = mirror({0, -1, 0}, {0, 1, 0}, {200, 200});
     floor.hasMaterial = true;
     floor.material = emissive({0, 0, 1});
+    floor.reflectivity = 0.5;
     render::Mirror ceiling = mirror({0, 1, 0}, {0, -1, 0}, {200, 200});
     ceiling.hasMaterial = true;
     ceiling.material = emissive({0, 1, 0});
+    ceiling.reflectivity = 0.5;
     input.mirrors = {floor, ceiling};
     const int size = 101;
     const glm::ivec2 px = pixelOf({0, -1, -1.5}, size);
@@ -247,10 +250,23 @@ TEST(ReferenceTracer, MirrorDepthLimitShowsTheMirrorsOwnMaterial) {
     for (int depth = 0; depth <= 5; ++depth) {
         input.settings.mirrorDepth = depth;
         const TraceResult result = trace(input, size, size);
-        // The ray meets the floor at depth 1, the ceiling at 2, the floor at 3, …: the first mirror beyond
-        // the limit shows its material.
+        // The ray meets the floor at level 1, the ceiling at 2, the floor at 3, …; the k-th mirror adds
+        // its surface's share, 0.5^k of its colour, up to the first mirror beyond the limit, which reflects
+        // nothing: what lies behind it is not followed.
+        glm::dvec3 expected(0.0);
+        for (int k = 1; k <= depth + 1; ++k)
+            expected += std::pow(0.5, k) * (k % 2 == 1 ? blue : green);
         SCOPED_TRACE("mirrorDepth " + std::to_string(depth));
-        expectColour(result.image.at(px.x, px.y), depth % 2 == 0 ? blue : green);
+        expectColour(result.image.at(px.x, px.y), expected);
+    }
+    // Perfect mirrors keep nothing of their surfaces: the end of the corridor is dark at every depth, not
+    // a lit wall.
+    input.mirrors[0].reflectivity = 1.0;
+    input.mirrors[1].reflectivity = 1.0;
+    for (int depth = 0; depth <= 5; ++depth) {
+        input.settings.mirrorDepth = depth;
+        SCOPED_TRACE("perfect mirrors, mirrorDepth " + std::to_string(depth));
+        expectColour(trace(input, size, size).image.at(px.x, px.y), {0, 0, 0});
     }
 }
 
@@ -293,13 +309,16 @@ TEST(ReferenceTracer, ReflectorReflectsAboutItsSurfaceNormal) {
 }
 
 TEST(ReferenceTracer, ReflectorShowsPlanarMirrorsToItsOwnMirrorDepth) {
-    // A flat reflector floor sees a green-backed mirror ahead; that mirror reflects only the black sky.
+    // A flat reflector floor sees a half-silvered green mirror ahead; that mirror reflects only the dim red
+    // sky.
     FrameInput input = boxAboveFloorMirror();
     input.items.clear();
     input.settings.mirrorDepth = 5; // the camera's own limit does not apply inside the reflector's map
+    input.settings.background = {0.2, 0, 0};
     render::Mirror ahead = mirror({0, 0, -5}, {0, 0, 1}, {20, 20});
     ahead.hasMaterial = true;
     ahead.material = emissive({0, 1, 0});
+    ahead.reflectivity = 0.5;
     input.mirrors = {ahead};
     render::Reflector reflector;
     reflector.mesh = planeMesh();
@@ -307,10 +326,11 @@ TEST(ReferenceTracer, ReflectorShowsPlanarMirrorsToItsOwnMirrorDepth) {
     reflector.material = emissive({0, 0, 0});
     input.reflector = reflector;
     const glm::ivec2 px = pixelOf({0, -1, -2}, 101);
+    // At depth 0 the mirror shows its surface's share alone; at depth 1 the sky behind it too.
     input.reflector->mirrorDepth = 0;
-    expectColour(trace(input, 101, 101).image.at(px.x, px.y), {0, 1, 0});
+    expectColour(trace(input, 101, 101).image.at(px.x, px.y), {0, 0.5, 0});
     input.reflector->mirrorDepth = 1;
-    expectColour(trace(input, 101, 101).image.at(px.x, px.y), {0, 0, 0});
+    expectColour(trace(input, 101, 101).image.at(px.x, px.y), {0.1, 0.5, 0});
     // Fresnel: at this angle (cos ≈ 0.45) Schlick's R rises from 0.3 to 0.3 + 0.7·0.55^5.
     input.reflector->mirrorDepth = 0;
     input.reflector->reflectivity = 0.3;
@@ -318,7 +338,7 @@ TEST(ReferenceTracer, ReflectorShowsPlanarMirrorsToItsOwnMirrorDepth) {
     const glm::dvec3 dir(2.0 * (px.x + 0.5) / 101 - 1.0, 1.0 - 2.0 * (px.y + 0.5) / 101, -1.0);
     const double c = -dir.y / glm::length(dir);
     const double r = 0.3 + 0.7 * std::pow(1.0 - c, 5.0);
-    expectColour(trace(input, 101, 101).image.at(px.x, px.y), glm::dvec3(0, r, 0));
+    expectColour(trace(input, 101, 101).image.at(px.x, px.y), glm::dvec3(0, 0.5 * r, 0));
 }
 
 TEST(ReferenceTracer, SupersamplingAveragesTheOrderedGrid) {
