@@ -6,6 +6,8 @@
 
 #include <QLineF>
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -145,9 +147,22 @@ int Gizmo::hitTest(QPointF point) const {
 
 namespace {
 
+// The double nearest to `value` written with 12 significant digits: a multiple of a step such as 0.1
+// comes out of the arithmetic as 0.30000000000000004, which a file would then write out in full.
+double shortDecimal(double value) {
+    std::array<char, 32> text{};
+    const auto written =
+        std::to_chars(text.data(), text.data() + text.size(), value, std::chars_format::general, 12);
+    double parsed = value;
+    if (written.ec == std::errc{}) {
+        std::from_chars(text.data(), written.ptr, parsed);
+    }
+    return parsed;
+}
+
 // `value` on a grid of `step` (nothing for a step that is not a positive finite number).
 double onGrid(double value, double step) {
-    return step > 0.0 && std::isfinite(step) ? std::round(value / step) * step : value;
+    return step > 0.0 && std::isfinite(step) ? shortDecimal(std::round(value / step) * step) : value;
 }
 
 // `value` to `digits` significant digits: what a drag can mean, without the noise of the pixels' maths.
@@ -165,7 +180,7 @@ double Gizmo::gridStep() const {
 }
 
 scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from, QPointF to,
-                            bool snap) const {
+                            const std::optional<SnapSteps>& snap) const {
     scene::NodeData out = start;
     if (!m_valid || axis < 0 || axis > kUniformAxis ||
         (axis == kUniformAxis && m_mode != HandleMode::Scale)) {
@@ -191,9 +206,9 @@ scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from
         // the axis tip (axis towards the camera) that is a positive rotation.
         const glm::dvec3 toCamera = m_projection.camera().position - m_origin;
         const double sign = glm::dot(a.direction, toCamera) >= 0.0 ? -1.0 : 1.0;
-        // Snapped: 15° steps; else hundredths of a degree, which no pixel of the drag can tell apart.
+        // Snapped: the rotate step; else hundredths of a degree, which no pixel of the drag can tell apart.
         out.transform.rotate[axis] =
-            onGrid(start.transform.rotate[axis] + glm::degrees(delta) * sign, snap ? 15.0 : 0.01);
+            onGrid(start.transform.rotate[axis] + glm::degrees(delta) * sign, snap ? snap->rotate : 0.01);
         return out;
     }
     if (a.line.size() < 2) {
@@ -209,8 +224,9 @@ scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from
         const glm::dvec3 worldDelta = a.direction * (fraction * m_length);
         const glm::dvec3 moved =
             start.transform.translate + glm::dvec3(glm::inverse(m_parentWorld) * glm::dvec4(worldDelta, 0.0));
-        // Snapped: on the ground grid's lines; else on a grid a thousand times finer (below a pixel).
-        const double step = snap ? gridStep() : gridStep() * 1e-3;
+        // Snapped: on the move step's lines (the ground grid's by default); else on a grid a thousand times
+        // finer than the ground grid (below a pixel).
+        const double step = !snap ? gridStep() * 1e-3 : snap->move > 0.0 ? snap->move : gridStep();
         for (int i = 0; i < 3; ++i) {
             if (moved[i] != start.transform.translate[i]) { // what the drag changes, and nothing else
                 out.transform.translate[i] = onGrid(moved[i], step);
@@ -224,9 +240,9 @@ scene::NodeData Gizmo::drag(const scene::NodeData& start, int axis, QPointF from
     return out;
 }
 
-double Gizmo::scaled(double scale, double factor, bool snap) {
-    // Snapped: the factor in steps of 0.1 (never 0); the result to 4 significant digits either way.
-    const double f = snap ? std::max(onGrid(factor, 0.1), 0.1) : factor;
+double Gizmo::scaled(double scale, double factor, const std::optional<SnapSteps>& snap) {
+    // Snapped: the factor in the scale steps (never 0); the result to 4 significant digits either way.
+    const double f = snap ? std::max(onGrid(factor, snap->scale), snap->scale) : factor;
     return significant(scale * f, 4);
 }
 

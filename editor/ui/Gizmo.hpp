@@ -14,6 +14,16 @@ namespace speculum::ui {
 
 enum class HandleMode { Select, Move, Rotate, Scale };
 
+// What a snapped handle drag rounds to (SnapSettings remembers the user's choice): a move to multiples of
+// `move` (0: the ground grid's spacing where the handles are seen from, so the step follows the zoom), a
+// turn to multiples of `rotate` degrees, a scale factor to multiples of `scale`.
+struct SnapSteps {
+    double move = 0.0;
+    double rotate = 15.0;
+    double scale = 0.1;
+    bool operator==(const SnapSteps&) const = default;
+};
+
 // Projects world points to widget pixels with the renderer's own matrices (render/math/Projection.hpp),
 // so overlays drawn with QPainter line up with the GL frame.
 class ScreenProjection {
@@ -67,14 +77,14 @@ public:
     // The node data after dragging `axis` from `from` to `to` (widget pixels), starting from `start`. What
     // the drag changes is rounded to what a pixel can mean (a thousandth of the ground grid's spacing,
     // 0.01°, 4 significant digits of a scale), so no value carries the noise of the pixels' maths; with
-    // `snap` (Ctrl held) to the ground grid's lines, 15° steps and scale factors in steps of 0.1.
+    // `snap` to its steps (by default the ground grid's lines, 15° and scale factors in steps of 0.1).
     scene::NodeData drag(const scene::NodeData& start, int axis, QPointF from, QPointF to,
-                         bool snap = false) const;
+                         const std::optional<SnapSteps>& snap = std::nullopt) const;
     // The ground grid's spacing where the handles are seen from (ViewGrid's).
     double gridStep() const;
 
 private:
-    static double scaled(double scale, double factor, bool snap);
+    static double scaled(double scale, double factor, const std::optional<SnapSteps>& snap);
     bool m_valid = false;
     HandleMode m_mode = HandleMode::Select;
     ScreenProjection m_projection;

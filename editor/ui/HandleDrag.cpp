@@ -43,7 +43,7 @@ bool HandleDrag::press(const Gizmo& gizmo, int axis, QPointF position, scene::No
     return true;
 }
 
-void HandleDrag::move(QPointF position, bool snap) {
+void HandleDrag::move(QPointF position, const std::optional<SnapSteps>& snap) {
     if (!isActive() || !m_scene.findNode(m_lead)) {
         return; // the lead node went away (an undo during the drag): nothing to measure on
     }

@@ -36,8 +36,8 @@ public:
     bool press(const Gizmo& gizmo, int axis, QPointF position, scene::NodeId lead,
                const std::vector<scene::NodeId>& nodes, double time);
     // The mouse is at `position`: the nodes follow (Pressed becomes Dragging once the mouse has moved);
-    // `snap` (Ctrl held) snaps what the drag changes (Gizmo::drag).
-    void move(QPointF position, bool snap = false);
+    // With `snap`, what the drag changes snaps to its steps (Gizmo::drag).
+    void move(QPointF position, const std::optional<SnapSteps>& snap = std::nullopt);
     // Mouse released: the drag's step (if it changed anything) stays.
     void release();
     // Puts every node back as it was at the press, leaving no undo step.

@@ -42,6 +42,7 @@ class ModelImportJob;
 class RenderPassesPanel;
 class SceneTreeModel;
 class SceneTreePanel;
+struct SnapSettings;
 class Viewport;
 
 // A path, file name or value from the user or a file, made safe for a one-line message: control
@@ -285,9 +286,15 @@ private:
 public:
     bool invertsVerticalOrbit() const;
     void setInvertVerticalOrbit(bool on);
+    // View ▸ Snap While Dragging and Snap Steps…: SnapSettings, remembered in QSettings, handed to the
+    // viewport.
+    void setSnapSettings(const SnapSettings& settings);
 
 private:
+    void createSnapActions(QMenu* view);
+    void editSnapSettings();
     QAction* m_invertOrbitAction = nullptr;
+    QAction* m_snapAlwaysAction = nullptr;
 };
 
 } // namespace speculum::ui

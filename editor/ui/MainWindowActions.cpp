@@ -407,8 +407,9 @@ void MainWindow::showControls() {
            "<tr><td><b>Drag a handle</b></td><td>move / rotate / scale every selected node (the handles "
            "sit on the current, last selected one; each node turns and scales about its own origin)"
            "</td></tr>"
-           "<tr><td><b>Ctrl</b> while dragging a handle</td><td>snap: to the grid's lines, to 15°, to "
-           "scale factors in steps of 0.1</td></tr>"
+           "<tr><td><b>Ctrl</b> while dragging a handle</td><td>snap: by default to the grid's lines, "
+           "to 15°, to scale factors in steps of 0.1 (View ▸ Snap Steps… sets the steps; with View ▸ "
+           "Snap While Dragging on, Ctrl drags freely instead)</td></tr>"
            "<tr><td><b>Drag the scale handles' centre</b></td><td>scale evenly</td></tr>"
            "<tr><td><b>Q / W / E / R</b></td><td>no handles / move / rotate / scale</td></tr>"
            "<tr><td><b>Left drag</b></td><td>orbit around the camera target</td></tr>"
@@ -592,6 +593,7 @@ void MainWindow::createViewMenu() {
            "follows Blender and three.js: the scene follows the mouse)"));
     connect(m_invertOrbitAction, &QAction::toggled, this, &MainWindow::setInvertVerticalOrbit);
     setInvertVerticalOrbit(invertsVerticalOrbit()); // the viewport starts with the remembered choice
+    createSnapActions(view);
     m_viewMenu = view;
 }
 

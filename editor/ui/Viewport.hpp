@@ -1,6 +1,7 @@
 #pragma once
 
 #include "editor/ui/Gizmo.hpp"
+#include "editor/ui/SnapSettings.hpp"
 #include "editor/ui/ViewportHandles.hpp"
 #include "editor/ui/ViewportNavigation.hpp"
 #include "editor/view/AdaptiveResolution.hpp"
@@ -127,6 +128,10 @@ public:
     // the preference.
     void setInvertVerticalOrbit(bool inverted) { m_navigation.setInvertVerticalOrbit(inverted); }
     bool invertsVerticalOrbit() const { return m_navigation.invertsVerticalOrbit(); }
+    // How handle drags snap (View ▸ Snap While Dragging, Snap Steps…): with Ctrl held, or without it when
+    // `always` is set. Not remembered here: the window keeps the settings.
+    void setSnapSettings(const SnapSettings& settings) { m_snap = settings; }
+    const SnapSettings& snapSettings() const { return m_snap; }
     // View ▸ Show Guides: the ground grid, the scene camera's wireframe, the pivot and the axis gizmo,
     // painted over the frame (ViewportOverlay; remembered in QSettings there).
     void setGuidesVisible(bool visible);
@@ -231,6 +236,7 @@ private:
     bool m_skipsSrgbDecode = false; // the context has EXT_texture_sRGB_decode (initializeGL)
     ViewportNavigation m_navigation;
     ViewportHandles m_handles;
+    SnapSettings m_snap;
     QTimer m_tick;                // drives repaints while the animation plays over a scene that moves
     bool m_sceneAnimated = false; // scene::sceneHasAnimation, kept up to date on every change
     ViewportOverlay* m_overlay = nullptr;

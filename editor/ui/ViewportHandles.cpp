@@ -79,7 +79,7 @@ bool ViewportHandles::leavesClick(QPointF position) {
     return true;
 }
 
-void ViewportHandles::dragHandle(QPointF position, bool snap) {
+void ViewportHandles::dragHandle(QPointF position, const std::optional<SnapSteps>& snap) {
     m_handleDrag->move(position, snap);
 }
 

@@ -75,7 +75,7 @@ public:
     // the slop, when the press becomes a drag of the view.
     bool leavesClick(QPointF position);
     // The mouse at `position` with a handle held: the nodes follow.
-    void dragHandle(QPointF position, bool snap = false); // snap: Ctrl held (Gizmo::drag)
+    void dragHandle(QPointF position, const std::optional<SnapSteps>& snap); // Gizmo::drag
     scene::NodeId clickTarget(scene::NodeId hit, bool deeper) const;
     // A button released: a pending click selects, a handle drag ends with its undo step. False when no
     // left-button gesture was on.

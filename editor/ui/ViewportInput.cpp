@@ -108,7 +108,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const QPointF position = event->position();
     if (m_handles.press() == ViewportHandles::Press::Handle) {
         interacted();
-        m_handles.dragHandle(position, event->modifiers().testFlag(Qt::ControlModifier));
+        m_handles.dragHandle(position, m_snap.forDrag(event->modifiers().testFlag(Qt::ControlModifier)));
         event->accept();
         return;
     }

@@ -3,6 +3,7 @@
 #include "editor/ui/HandleDrag.hpp"
 
 #include "editor/document/Commands.hpp"
+#include "editor/ui/SnapSettings.hpp"
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/model/NodeMath.hpp"
 #include "scene/model/Scene.hpp"
@@ -198,7 +199,8 @@ TEST_F(HandleDragTest, DraggedValuesCarryNoNoiseAndCtrlSnapsThem) {
         const double x = move.drag(startA, 0, p, p + QPointF(dx, 3.0)).transform.translate.x;
         EXPECT_NE(x, 0.0) << dx;
         EXPECT_NEAR(x, std::round(x / (grid * 1e-3)) * grid * 1e-3, 1e-12) << "on a thousandth of the grid";
-        const double snapped = move.drag(startA, 0, p, p + QPointF(dx, 3.0), true).transform.translate.x;
+        const double snapped =
+            move.drag(startA, 0, p, p + QPointF(dx, 3.0), SnapSteps{}).transform.translate.x;
         EXPECT_NEAR(snapped, std::round(snapped / grid) * grid, 1e-12) << "on the grid's lines";
         EXPECT_NEAR(snapped, x, grid / 2 + 1e-9);
     }
@@ -210,15 +212,58 @@ TEST_F(HandleDragTest, DraggedValuesCarryNoNoiseAndCtrlSnapsThem) {
     const QPointF r = rotate.axes()[1].line[rotate.axes()[1].line.size() / 4];
     const double turned = rotate.drag(startA, 1, r, r + QPointF(17.0, 9.0)).transform.rotate.y;
     EXPECT_NEAR(turned * 100.0, std::round(turned * 100.0), 1e-9) << "hundredths of a degree";
-    const double snappedTurn = rotate.drag(startA, 1, r, r + QPointF(60.0, 40.0), true).transform.rotate.y;
+    const double snappedTurn =
+        rotate.drag(startA, 1, r, r + QPointF(60.0, 40.0), SnapSteps{}).transform.rotate.y;
     EXPECT_NEAR(std::fmod(std::abs(snappedTurn), 15.0), 0.0, 1e-9) << snappedTurn;
 
     const Gizmo scale = gizmo(HandleMode::Scale);
     const QPointF s = grip(scale);
     const double grown = scale.drag(startA, 0, s, s + QPointF(23.0, 0.0)).transform.scale.x;
     EXPECT_EQ(grown, std::stod(QString::number(grown, 'g', 4).toStdString())) << "4 significant digits";
-    const double snappedScale = scale.drag(startA, 0, s, s + QPointF(23.0, 0.0), true).transform.scale.x;
+    const double snappedScale =
+        scale.drag(startA, 0, s, s + QPointF(23.0, 0.0), SnapSteps{}).transform.scale.x;
     EXPECT_NEAR(snappedScale * 10.0, std::round(snappedScale * 10.0), 1e-9) << "a factor in steps of 0.1";
+}
+
+// Steps the user chose (View ▸ Snap Steps…) replace the defaults; a snapped value is the short decimal it
+// means (3 × 0.1 is written 0.3, not 0.30000000000000004).
+TEST_F(HandleDragTest, SnappedDragsUseTheChosenStepsAndWriteShortDecimals) {
+    const SnapSteps steps{.move = 0.1, .rotate = 45.0, .scale = 0.25};
+    const auto shortest = [](double v) { return std::stod(QString::number(v, 'g', 12).toStdString()); };
+    const Gizmo move = gizmo(HandleMode::Move);
+    const QPointF p = grip(move);
+    for (double dx : {7.0, 13.0, 29.0, 41.0, 67.0}) {
+        const double x = move.drag(startA, 0, p, p + QPointF(dx, 3.0), steps).transform.translate.x;
+        EXPECT_NEAR(x * 10.0, std::round(x * 10.0), 1e-9) << "on the 0.1 lines";
+        EXPECT_EQ(x, shortest(x)) << x;
+    }
+    const Gizmo rotate = gizmo(HandleMode::Rotate);
+    const QPointF r = rotate.axes()[1].line[rotate.axes()[1].line.size() / 4];
+    for (QPointF d : {QPointF(60.0, 40.0), QPointF(-90.0, 20.0), QPointF(5.0, 5.0)}) {
+        const double turn = rotate.drag(startA, 1, r, r + d, steps).transform.rotate.y;
+        EXPECT_NEAR(std::fmod(std::abs(turn), 45.0), 0.0, 1e-9) << turn;
+    }
+    const Gizmo scale = gizmo(HandleMode::Scale);
+    const QPointF s = grip(scale);
+    for (double dx : {23.0, 61.0, -40.0, -200.0}) {
+        const double factor = scale.drag(startA, 0, s, s + QPointF(dx, 0.0), steps).transform.scale.x /
+                              startA.transform.scale.x;
+        EXPECT_NEAR(factor * 4.0, std::round(factor * 4.0), 1e-3) << "a factor in steps of 0.25";
+        EXPECT_GE(factor, 0.25 - 1e-9) << "never zero";
+    }
+}
+
+// Ctrl snaps; with "snap while dragging" on, Ctrl drags freely instead.
+TEST(SnapSettings, CtrlInvertsTheSnapWhileDraggingChoice) {
+    SnapSettings settings;
+    settings.steps.rotate = 5.0;
+    EXPECT_FALSE(settings.forDrag(false));
+    ASSERT_TRUE(settings.forDrag(true));
+    EXPECT_EQ(settings.forDrag(true)->rotate, 5.0);
+    settings.always = true;
+    ASSERT_TRUE(settings.forDrag(false));
+    EXPECT_EQ(*settings.forDrag(false), settings.steps);
+    EXPECT_FALSE(settings.forDrag(true));
 }
 
 // The centre of the scale handles scales the three axes together, by one factor.
