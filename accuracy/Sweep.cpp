@@ -312,8 +312,8 @@ void planShadowsAndMeshes(Configurations& out, const render::FrameInput& scene, 
         }
 }
 
-// At three roughnesses, each against its own traced reference: the cheap mip level, then the footprint
-// (planar lobe taps, the reflector's pre-filtered chain) at rising quality.
+// At three roughnesses, each against its own traced reference: the cheap mip level, the convolved chain,
+// then the footprint (planar lobe taps, the reflector's pre-filtered chain) at rising quality.
 void planGlossy(Configurations& out, const SceneTraits& traits, const SweepOptions& options) {
     if (traits.roughMirrors == 0 && !traits.roughReflector)
         return;
@@ -328,6 +328,15 @@ void planGlossy(Configurations& out, const SceneTraits& traits, const SweepOptio
         mip.set(Part::Settings, "glossyFilter", int(render::GlossyFilter::Mip));
         out.push_back(
             configuration(Family::Glossy, "glossy-r" + r + "-mip", "mip", "r " + r + " mip", mip, kind));
+        // The convolved chain: one point (its cost does not grow with taps); the reflector's chain at the
+        // default samples.
+        Variation chain;
+        chain.roughness = roughness;
+        chain.set(Part::Settings, "glossyFilter", int(render::GlossyFilter::Chain))
+            .set(Part::Settings, "prefilterSamples", 64);
+        out.push_back(configuration(Family::Glossy, "glossy-r" + r + "-chain",
+                                    traits.roughReflector ? "chain 64 samples" : "chain", "r " + r + " chain",
+                                    chain, kind));
         for (const GlossyQuality& q : qualities) {
             Variation v;
             v.roughness = roughness;

@@ -69,16 +69,19 @@ bool parseInt(std::string_view text, int& out) {
     return error == std::errc() && end == text.data() + text.size();
 }
 
-// "footprint 16 taps / 64 samples", "footprint 16 taps", "footprint 64 samples", "mip".
+// "footprint 16 taps / 64 samples", "footprint 16 taps", "footprint 64 samples", "chain", "chain 64
+// samples", "mip".
 base::Result<Variation> glossyVariation(std::string_view text) {
     Variation v;
     if (text == "mip")
         return v.set(Part::Settings, "glossyFilter", int(render::GlossyFilter::Mip));
-    constexpr std::string_view footprint = "footprint";
-    if (text.substr(0, footprint.size()) != footprint)
-        return base::Error{"expected mip or footprint"};
-    v.set(Part::Settings, "glossyFilter", int(render::GlossyFilter::Footprint));
-    std::string_view rest = text.substr(footprint.size());
+    constexpr std::string_view footprint = "footprint", chain = "chain";
+    const bool isChain = text.starts_with(chain);
+    if (!isChain && !text.starts_with(footprint))
+        return base::Error{"expected mip, footprint or chain"};
+    v.set(Part::Settings, "glossyFilter",
+          int(isChain ? render::GlossyFilter::Chain : render::GlossyFilter::Footprint));
+    std::string_view rest = text.substr(isChain ? chain.size() : footprint.size());
     while (!rest.empty()) {
         rest.remove_prefix(std::min(rest.find_first_not_of(" /"), rest.size()));
         const std::size_t space = rest.find(' ');
@@ -295,6 +298,8 @@ render::FrameInput applyVariation(const render::FrameInput& scene, const Variati
 std::string glossyText(const render::Settings& settings, bool roughMirrors, bool roughReflector) {
     if (settings.glossyFilter == render::GlossyFilter::Mip)
         return "mip";
+    if (settings.glossyFilter == render::GlossyFilter::Chain)
+        return roughReflector ? "chain " + std::to_string(settings.prefilterSamples) + " samples" : "chain";
     std::string label;
     if (roughMirrors)
         label = std::to_string(settings.glossyTaps) + " taps";

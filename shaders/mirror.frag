@@ -4,6 +4,7 @@
 // blurred over the GGX lobe of a rough mirror (glossyReflection below).
 #include "material.glsl"
 #include "hammersley.glsl"
+#include "ggx_albedo.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -21,8 +22,11 @@ uniform vec2 uTargetSize;
 uniform float uBlurLod;   // the Mip filter: one lookup at this level
 uniform int uGlossyTaps;  // the Footprint filter: lobe samples per pixel; 0: the Mip filter (or sharp)
 uniform float uGgxAlpha;  // roughness²
+uniform float uRoughness; // 0: a sharp mirror, whose reflection keeps its energy
 uniform float uFocalPx;   // pixels per unit of lateral offset at unit distance (the camera's focal length)
 uniform float uMaxLod;    // the reflection texture's last mip level
+uniform float uChainSigma; // > 0: the Chain filter, the lobe's deviation in tan 2θh per unit of α
+uniform vec2 uChainTail;   // the lobe's tail: its deviation as a multiple of the core's, and its weight
 uniform mat4 uViewProjection; // the parent view's (mesh.vert's), to find the mirror normal on screen
 uniform mat4 uReflection;
 
@@ -39,6 +43,11 @@ uniform mat4 uReflection;
 #define MIRROR_USES_GLOSSY_TAPS (MIRROR_GLOSSY_TAPS != 0)
 #else
 #define MIRROR_USES_GLOSSY_TAPS (uGlossyTaps > 0)
+#endif
+#ifdef MIRROR_CHAIN
+#define MIRROR_USES_CHAIN (MIRROR_CHAIN != 0)
+#else
+#define MIRROR_USES_CHAIN (uChainSigma > 0.0)
 #endif
 #ifdef MIRROR_FRESNEL
 #define MIRROR_USES_FRESNEL (MIRROR_FRESNEL != 0)
@@ -93,17 +102,32 @@ vec2 toPixels(vec3 p) {
 // of the sharp reflection at this pixel, so a near object's edge takes the far background's blur), offsets
 // that treat the tilts along and across the plane of incidence apart, tilts capped at tan θh = 0.9, and
 // microfacet normals sampled by D alone, equally weighted.
-vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
+struct Footprint {
+    float scale;    // pixels per unit of tan 2θh
+    float cosView;  // at least 0.02
+    vec2 along;     // the plane of incidence on screen (unit)
+    vec2 across;
+};
+
+Footprint lobeFootprint(vec2 uv, vec3 normal, vec3 viewDir) {
     vec4 sharp = textureLod(uReflectionTexture, uv, 0.0);
     float eyeDistance = length(vWorld - uEye);
     float pathLength = max(sharp.a, eyeDistance);
     float beyond = pathLength - eyeDistance;
-    float cosView = clamp(dot(normal, viewDir), 0.02, 1.0);
-    float scale = uFocalPx * beyond / pathLength; // pixels per unit of tan 2θh
+    Footprint f;
+    f.cosView = clamp(dot(normal, viewDir), 0.02, 1.0);
+    f.scale = uFocalPx * beyond / pathLength;
     // The plane of incidence on screen: where the normal points from this pixel.
     vec2 along = toPixels(vWorld + normal * (0.05 * eyeDistance)) - gl_FragCoord.xy;
-    along = dot(along, along) > 1e-6 ? normalize(along) : vec2(0.0, 1.0);
-    vec2 across = vec2(-along.y, along.x);
+    f.along = dot(along, along) > 1e-6 ? normalize(along) : vec2(0.0, 1.0);
+    f.across = vec2(-f.along.y, f.along.x);
+    return f;
+}
+
+vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
+    Footprint f = lobeFootprint(uv, normal, viewDir);
+    float scale = f.scale, cosView = f.cosView;
+    vec2 along = f.along, across = f.across;
     float taps = float(uGlossyTaps);
     float footprintArea = kPi * (2.0 * scale * uGgxAlpha) * (2.0 * scale * uGgxAlpha) * cosView;
     float lod = clamp(0.5 * log2(max(footprintArea / taps, 1.0)), 0.0, uMaxLod);
@@ -123,6 +147,30 @@ vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
         sum += textureLod(uReflectionTexture, uv + offset / uTargetSize, lod).rgb;
     }
     return sum / taps;
+}
+
+// The Chain filter: the lobe as two Gaussians in tan 2θh (a core of deviation uChainSigma·α and a wider
+// tail, uChainTail), each of that deviation along the plane of incidence and cos θ times it across (the
+// footprint's stretch), read from the convolved chain (shaders/mip_convolve.frag: level k is a Gaussian of
+// variance (4^k − 1)/4 texels²) at the level of the narrower axis, twice, ±d along the plane of incidence,
+// so that the two lookups spread the rest of the stretch (d² + the level's variance = the variance
+// along). The stretch is capped where two lookups would show as two images. Four lookups a pixel.
+// One Gaussian of deviation sigmaAlong (pixels) along the plane of incidence, in two lookups.
+vec3 chainLookups(vec2 uv, Footprint f, float sigmaAlong) {
+    float sigmaLevel = max(sigmaAlong * f.cosView, 0.6 * sigmaAlong);
+    float lod = clamp(0.5 * log2(4.0 * sigmaLevel * sigmaLevel + 1.0), 0.0, uMaxLod);
+    float d = sqrt(max(sigmaAlong * sigmaAlong - sigmaLevel * sigmaLevel, 0.0));
+    vec2 offset = f.along * d / uTargetSize;
+    return 0.5 * (textureLod(uReflectionTexture, uv + offset, lod).rgb +
+                  textureLod(uReflectionTexture, uv - offset, lod).rgb);
+}
+
+vec3 chainReflection(vec2 uv, vec3 normal, vec3 viewDir) {
+    Footprint f = lobeFootprint(uv, normal, viewDir);
+    float core = f.scale * uChainSigma * uGgxAlpha; // pixels
+    vec3 narrow = chainLookups(uv, f, core);
+    vec3 wide = chainLookups(uv, f, core * uChainTail.x);
+    return mix(narrow, wide, uChainTail.y);
 }
 
 void main() {
@@ -150,7 +198,11 @@ void main() {
         vec2 uv = gl_FragCoord.xy / uTargetSize;
         vec3 reflection = MIRROR_READS_OWN_TEXEL ? texelFetch(uReflectionTexture, ivec2(gl_FragCoord.xy), 0).rgb
                           : MIRROR_USES_GLOSSY_TAPS ? glossyReflection(uv, normal, viewDir)
+                          : MIRROR_USES_CHAIN       ? chainReflection(uv, normal, viewDir)
                                                     : textureLod(uReflectionTexture, uv, uBlurLod).rgb;
+        // A rough mirror loses what its microfacets mask and shadow, as the tracer's lobe samples do.
+        if (!MIRROR_READS_OWN_TEXEL && uRoughness > 0.0)
+            reflection *= ggxAlbedo(dot(normal, viewDir), uRoughness);
         fragColor = vec4(storableRadiance((surface + weight * reflection) * uViewWeight), alpha);
         reflectionWeight = vec4(0.0);
     } else {

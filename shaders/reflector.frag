@@ -3,6 +3,7 @@
 // virtual eye, so the reflector seen in a mirror reflects what it would from there.
 #include "material.glsl"
 #include "envmap_lookup.glsl"
+#include "ggx_albedo.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -22,6 +23,7 @@ uniform vec3 uParallaxMin;      // relative to the capture point
 uniform vec3 uParallaxMax;
 uniform int uRough;             // roughness > 0: one lookup at an explicit LOD in the bound texture
 uniform float uRoughnessLod;    // roughness × (levels − 1) of that texture (ReflectorPass::drawSurface)
+uniform float uRoughness;
 
 out vec4 fragColor;
 
@@ -60,9 +62,11 @@ void main() {
         environment = uEnvType == ENVMAP_CUBE ? envmapLookupCube(uEnvCube, d, dx, dy).rgb
                                               : envmapLookup2D(uEnvArray, uEnvType, uEnvLayout, d, dx, dy).rgb;
     else
-        environment = uEnvType == ENVMAP_CUBE ? envmapLookupCubeLod(uEnvCube, d, dx, dy, uRoughnessLod).rgb
-                                              : envmapLookup2DLod(uEnvArray, uEnvType, uEnvLayout, d, dx, dy,
-                                                                  uRoughnessLod).rgb;
+        // The chain's levels are normalised blurs: the lobe's masking and shadowing come on top.
+        environment = (uEnvType == ENVMAP_CUBE ? envmapLookupCubeLod(uEnvCube, d, dx, dy, uRoughnessLod).rgb
+                                               : envmapLookup2DLod(uEnvArray, uEnvType, uEnvLayout, d, dx, dy,
+                                                                   uRoughnessLod).rgb) *
+                      ggxAlbedo(dot(N, E), uRoughness);
     float r = uReflectivity;
     if (uFresnel != 0) {
         // Schlick's approximation with the reflectivity as the value at normal incidence.

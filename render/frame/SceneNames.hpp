@@ -36,9 +36,10 @@ inline constexpr std::array<Name, 2> kMirrorTechniques{{
     {"stencil", "Stencil"},
     {"texture", "Texture"},
 }};
-inline constexpr std::array<Name, 2> kGlossyFilters{{
+inline constexpr std::array<Name, 3> kGlossyFilters{{
     {"mip", "Mip level (cheap)"},
     {"footprint", "Lobe footprint / pre-filtered map"},
+    {"chain", "Convolved chain / pre-filtered map"},
 }};
 // A true-or-false setting as bench results spell it: settings.simplifyReflections.
 inline constexpr std::array<Name, 2> kReflectedDetail{{

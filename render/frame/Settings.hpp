@@ -13,8 +13,11 @@ namespace speculum::render {
 // Footprint: planar mirrors sample their reflection texture over the GGX lobe's footprint, which grows with
 // the distance from the mirror to what it reflects; the curved reflector reads the level of its
 // GGX-convolved (pre-filtered) map chain that matches its roughness.
-enum class GlossyFilter { Mip, Footprint };
-static_assert(int(GlossyFilter::Footprint) + 1 == names::kGlossyFilters.size(), "one name per value");
+// Chain: planar mirrors convolve their reflection once into a mip chain of Gaussian-filtered levels and
+// read it with two lookups at the level the lobe's footprint asks for (its stretch along the plane of
+// incidence kept); the curved reflector reads its pre-filtered chain, as with Footprint.
+enum class GlossyFilter { Mip, Footprint, Chain };
+static_assert(int(GlossyFilter::Chain) + 1 == names::kGlossyFilters.size(), "one name per value");
 
 // The scene's own settings (the project file's "settings").
 struct Settings {
@@ -66,8 +69,10 @@ void Settings::fields(Visit&& visit) {
     visit(field(&Settings::glossyFilter,
                 {.name = "glossyFilter",
                  .label = "Glossy filter",
-                 .meaning = "How rough reflections are blurred: one mip level (cheap), or the GGX lobe's "
-                            "footprint on planar mirrors and the pre-filtered map on the reflector",
+                 .meaning = "How rough reflections are blurred: one mip level (cheap); the GGX lobe's "
+                            "footprint on planar mirrors (taps per pixel); or a convolved chain read at the "
+                            "footprint's level (two lookups). The reflector reads its pre-filtered map "
+                            "with either of the last two",
                  .type = FieldType::Choice,
                  .noun = "glossy filter",
                  .choices = names::kGlossyFilters,

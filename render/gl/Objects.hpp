@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <epoxy/gl.h>
 #include <utility>
 
@@ -115,6 +117,32 @@ public:
 
 private:
     GLint m_previous = 0;
+};
+
+// For passes that fill targets of their own with full-screen draws (filters, pre-filters): turns off the
+// depth and stencil tests, blending and the scissor, and puts them and the viewport back as it found them.
+class PlainDrawState {
+public:
+    PlainDrawState() {
+        glGetIntegerv(GL_VIEWPORT, m_viewport);
+        for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
+            m_enabled[i] = glIsEnabled(kCapabilities[i]);
+            glDisable(kCapabilities[i]);
+        }
+    }
+    ~PlainDrawState() {
+        glViewport(m_viewport[0], m_viewport[1], m_viewport[2], m_viewport[3]);
+        for (std::size_t i = 0; i < kCapabilities.size(); ++i)
+            (m_enabled[i] ? glEnable : glDisable)(kCapabilities[i]);
+    }
+    PlainDrawState(const PlainDrawState&) = delete;
+    PlainDrawState& operator=(const PlainDrawState&) = delete;
+
+private:
+    static constexpr std::array<GLenum, 4> kCapabilities{GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST,
+                                                         GL_STENCIL_TEST};
+    GLint m_viewport[4] = {};
+    std::array<GLboolean, 4> m_enabled{};
 };
 
 } // namespace speculum::render::gl

@@ -107,16 +107,7 @@ base::Status GgxPrefilter::filter(const EnvironmentCapture& map, int samples) {
     const bool cube = m_target == GL_TEXTURE_CUBE_MAP;
     const int components = cube ? 6 : 2;
     gl::FramebufferBinding keepBinding;
-    GLint viewport[4] = {};
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    const GLboolean depthTest = glIsEnabled(GL_DEPTH_TEST);
-    const GLboolean blend = glIsEnabled(GL_BLEND);
-    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
-    const GLboolean stencil = glIsEnabled(GL_STENCIL_TEST);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_STENCIL_TEST);
+    const gl::PlainDrawState plain;
 
     // Level 0 is the sharp map itself, copied texel for texel: roughness between 0 and r_1 reads between
     // them.
@@ -173,11 +164,6 @@ base::Status GgxPrefilter::filter(const EnvironmentCapture& map, int samples) {
     }
     glBindVertexArray(0);
     glBindTexture(map.target(), 0);
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    (depthTest ? glEnable : glDisable)(GL_DEPTH_TEST);
-    (blend ? glEnable : glDisable)(GL_BLEND);
-    (scissor ? glEnable : glDisable)(GL_SCISSOR_TEST);
-    (stencil ? glEnable : glDisable)(GL_STENCIL_TEST);
     return base::Done{};
 }
 

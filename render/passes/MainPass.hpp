@@ -22,6 +22,7 @@ inline constexpr int kEnvCubeUnit = 10;  // the reflector's cube map
 inline constexpr int kEnvArrayUnit = 11; // the reflector's dual-paraboloid or tennis-ball map
 inline constexpr int kEmissionTextureUnit = 12;
 inline constexpr int kNormalTextureUnit = 13;
+inline constexpr int kGgxAlbedoUnit = 14; // math::ggxAlbedoTable, bound for the whole frame (runPasses)
 
 struct MainPassContext;
 struct ViewSetup;

@@ -2,6 +2,7 @@
 // mirror's surface over it. They run in the space their views belong to: the camera's, or a face of the
 // reflector's environment map.
 #include "base/Printable.hpp"
+#include "render/passes/MipConvolve.hpp"
 #include "render/passes/MirrorPasses.hpp"
 #include "render/passes/PassExecutors.hpp"
 
@@ -93,8 +94,12 @@ PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame, cons
     if (pass.writes.readSlot >= 0) {
         gl::RenderTexture& texture =
             frame.resources.reflectionTextures.at(static_cast<std::size_t>(pass.writes.readSlot));
-        if (pass.writes.mipmaps)
+        if (pass.writes.convolveMips) {
+            FrameResources& r = frame.resources;
+            convolveMipChain(texture, r.mipConvolveProgram, r.convolveFramebuffer.id(), r.emptyVao.id());
+        } else if (pass.writes.mipmaps) {
             texture.generateMipmaps();
+        }
         reflection = texture.color();
         levels = texture.levels();
         encoded = texture.format() == GL_SRGB8_ALPHA8;

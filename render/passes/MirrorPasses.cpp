@@ -139,21 +139,40 @@ void tintPerfectMirror(const ViewSpace& space, const MirrorView& view, const Vie
 }
 
 // A rough mirror filtered over its lobe's footprint (GlossyFilter::Footprint), not one mip level.
-bool usesFootprint(const FrameInput& input, const Mirror& mirror) {
-    return mirror.roughness > 0.0 && input.settings.glossyFilter == GlossyFilter::Footprint;
+bool usesFootprint(const MirrorView& view, const Mirror& mirror) {
+    return mirror.roughness > 0.0 && view.glossyFilter == GlossyFilter::Footprint;
 }
+
+// A rough mirror read from its convolved chain at the footprint's level (GlossyFilter::Chain).
+bool usesChain(const MirrorView& view, const Mirror& mirror) {
+    return mirror.roughness > 0.0 && view.glossyFilter == GlossyFilter::Chain;
+}
+
+// The Chain filter's stand-in for the GGX lobe, which has a sharp core and long tails: two Gaussians in
+// tan 2θh, a core of deviation 0.6 α and a tail 3.5 times as wide weighing 0.4. Tuned against the tracer
+// on the glossy agreement scene (GlossyAgreementGLTest): a single Gaussian matched to the lobe's median
+// turn (2α) blurs the core away, 4.5 dB worse at roughness 0.3.
+constexpr double kChainCoreSigmaPerAlpha = 0.6;
+constexpr double kChainTailRatio = 3.5;
+constexpr double kChainTailWeight = 0.4;
 
 // A rough mirror's filter (shaders/mirror.frag). Mip: a level of the reflection texture set by the
 // roughness alone, up to 1/64 of its resolution at roughness 1 (the blur of old). Footprint: the GGX
-// lobe's taps, spread by the distance to what the mirror reflects.
-void setGlossyUniforms(const FrameInput& input, const Mirror& mirror, const gl::Program& program,
-                       int reflectionLevels, glm::ivec2 targetSize) {
+// lobe's taps, spread by the distance to what the mirror reflects. Chain: two lookups in the convolved
+// chain at the footprint's level.
+void setGlossyUniforms(const FrameInput& input, const MirrorView& view, const Mirror& mirror,
+                       const gl::Program& program, int reflectionLevels, glm::ivec2 targetSize) {
     const double roughness = std::clamp(mirror.roughness, 0.0, 1.0);
-    const bool footprint = usesFootprint(input, mirror);
+    const bool footprint = usesFootprint(view, mirror);
     const double maxLod = std::max(reflectionLevels - 1, 0);
-    program.set("uBlurLod", footprint ? 0.0f : float(std::min(6.0, maxLod) * roughness));
+    const bool chain = usesChain(view, mirror);
+    program.set("uBlurLod", footprint || chain ? 0.0f : float(std::min(6.0, maxLod) * roughness));
     program.set("uGlossyTaps", footprint ? glossyTapCount(input.settings) : 0);
+    program.set("uChainSigma", chain ? float(kChainCoreSigmaPerAlpha) : 0.0f);
+    program.set("uChainTail", glm::vec2(float(kChainTailRatio), float(kChainTailWeight)));
     program.set("uGgxAlpha", float(roughness * roughness));
+    program.set("uRoughness", float(roughness));
+    program.set("uGgxAlbedo", kGgxAlbedoUnit);
     const double tanHalfFov = std::tan(glm::radians(std::clamp(input.camera.fovY, 1.0, 179.0)) * 0.5);
     program.set("uFocalPx", float(targetSize.y / (2.0 * tanHalfFov)));
     program.set("uMaxLod", float(maxLod));
@@ -169,9 +188,10 @@ bool surfaceCopiesReflection(const Mirror& mirror, const glm::dvec3& viewWeight)
 namespace {
 
 // The draw variant of shaders/mirror.frag for this mirror: what it does not use is compiled out.
-std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fromTexture,
+std::string mirrorDefines(const MirrorView& view, const Mirror& mirror, bool fromTexture,
                           const glm::dvec3& viewWeight, bool encoded) {
-    const bool footprint = fromTexture && usesFootprint(input, mirror);
+    const bool footprint = fromTexture && usesFootprint(view, mirror);
+    const bool chain = fromTexture && usesChain(view, mirror);
     const bool sharp = fromTexture && !(mirror.roughness > 0.0);
     // Weight exactly 1 everywhere: the texel is the pixel.
     const bool copy = fromTexture && surfaceCopiesReflection(mirror, viewWeight);
@@ -179,8 +199,9 @@ std::string mirrorDefines(const FrameInput& input, const Mirror& mirror, bool fr
         return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
     };
     return define("MIRROR_FROM_TEXTURE", fromTexture) + define("MIRROR_GLOSSY_TAPS", footprint) +
-           define("MIRROR_FRESNEL", mirror.fresnel) + define("MIRROR_SHARP", sharp) +
-           define("MIRROR_COPY", copy) + define("MIRROR_COPY_ENCODED", copy && encoded) +
+           define("MIRROR_CHAIN", chain) + define("MIRROR_FRESNEL", mirror.fresnel) +
+           define("MIRROR_SHARP", sharp) + define("MIRROR_COPY", copy) +
+           define("MIRROR_COPY_ENCODED", copy && encoded) +
            define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));
 }
 
@@ -199,7 +220,7 @@ void drawMirrorSurface(const ViewSpace& space, const MirrorView& view, const Vie
     const Mirror& mirror = input.mirrors[index];
     beginLitView(input, parent, surfaceProgram, context);
     setMaterial(mirror.hasMaterial ? mirror.material : Material{}, surfaceProgram, context,
-                mirrorDefines(input, mirror, view.ownTarget, parent.weight, reflectionEncoded));
+                mirrorDefines(view, mirror, view.ownTarget, parent.weight, reflectionEncoded));
     surfaceProgram.set("uReflectivity", float(mirror.reflectivity));
     surfaceProgram.set("uTint", glm::vec3(mirror.tint));
     surfaceProgram.set("uFresnel", mirror.fresnel ? 1 : 0);
@@ -207,7 +228,7 @@ void drawMirrorSurface(const ViewSpace& space, const MirrorView& view, const Vie
     surfaceProgram.set("uReflectionPreWeighted", parent.preWeightedStencil && !view.ownTarget ? 1 : 0);
     surfaceProgram.set("uReflectionTexture", kReflectionTextureUnit);
     surfaceProgram.set("uTargetSize", glm::vec2(space.size));
-    setGlossyUniforms(input, mirror, surfaceProgram, reflectionLevels, space.size);
+    setGlossyUniforms(input, view, mirror, surfaceProgram, reflectionLevels, space.size);
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     if (view.ownTarget) {

@@ -30,6 +30,8 @@ struct FrameResources {
     gl::Program flatProgram;   // mirror masks and background resets
     gl::Program mirrorProgram;
     gl::Program compositeProgram;
+    gl::Program mipConvolveProgram;      // a rough mirror's convolved chain (MipConvolve.hpp)
+    gl::Framebuffer convolveFramebuffer; // its levels, one at a time
     gl::MeshCache meshes;
     gl::TextureCache textures;
     ShadowMaps shadows;
@@ -44,6 +46,7 @@ struct FrameResources {
     gl::VertexArray emptyVao; // core profile needs a VAO bound even for attribute-less draws
     gl::Texture dummyShadow2D;
     gl::Texture dummyShadowCube;
+    gl::Texture ggxAlbedo; // math::ggxAlbedoTable, which the glossy shaders read (kGgxAlbedoUnit)
     MeshHandle unitPlane;
 };
 

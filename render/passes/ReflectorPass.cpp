@@ -231,7 +231,7 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     GLuint texture = map.texture();
     float lod = 0.0f;
     if (roughness > 0.0) {
-        const bool chain = input.settings.glossyFilter == GlossyFilter::Footprint && hasChain(r);
+        const bool chain = input.settings.glossyFilter != GlossyFilter::Mip && hasChain(r);
         const int levels =
             chain ? m_prefilter->levels()
                   : (map.settings().mipmaps ? envmap::mipLevelCount(map.layout().width, map.layout().height)
@@ -241,6 +241,8 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     }
     p.set("uRough", roughness > 0.0 ? 1 : 0);
     p.set("uRoughnessLod", lod);
+    p.set("uRoughness", float(roughness));
+    p.set("uGgxAlbedo", kGgxAlbedoUnit);
     glActiveTexture(GL_TEXTURE0 + (map.target() == GL_TEXTURE_CUBE_MAP ? kEnvCubeUnit : kEnvArrayUnit));
     glBindTexture(map.target(), texture);
     glActiveTexture(GL_TEXTURE0);

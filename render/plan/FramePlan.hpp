@@ -48,6 +48,9 @@ struct PassWrites {
     // MirrorSurface of a blurred texture-technique mirror: builds the reflection texture's mip chain
     // before reading it; readSlot is the texture the surface reads (-1: none, a stencil mirror).
     bool mipmaps = false;
+    // The mip chain is convolved level by level with a Gaussian kernel (GlossyFilter::Chain) rather than
+    // box-filtered.
+    bool convolveMips = false;
     int readSlot = -1;
 };
 
@@ -103,6 +106,9 @@ struct MirrorView {
     // reflectivity × tint of the stencil mirrors down to it; everything the view draws is multiplied by it
     // as it is written. 1 for views drawn into a texture (and without pre-weighting).
     glm::dvec3 weight{1.0};
+    // How its reflection is filtered when the mirror is rough: the settings' filter, or the convolved chain
+    // where the planner trades the footprint's taps for it (MirrorPlanner's glossyFilterFor).
+    GlossyFilter glossyFilter = GlossyFilter::Footprint;
 };
 
 // Where the reflector's environment map is captured from: the centre of the reflector's world bounds

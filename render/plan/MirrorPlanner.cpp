@@ -19,6 +19,23 @@ namespace speculum::render {
 
 namespace {
 
+// Up to this roughness the convolved chain's error stays within 1 dB of 16 footprint taps
+// (GlossyAgreementGLTest), so the planner may trade the taps for it where they would buy little.
+constexpr double kChainBoundedRoughness = 0.3;
+// A reflection covering fewer pixels than this (64 × 64) is too small for 16 taps to show their worth.
+constexpr double kFewPixels = 4096.0;
+
+// How a mirror's rough reflection is filtered: as the settings say, but a Footprint mirror seen inside
+// another mirror (where the reflection is small and dimmed by the mirrors it is seen through) or covering
+// few pixels takes the convolved chain, four lookups a pixel instead of the taps, where its error is
+// bounded. The mirrors demo's rough back mirror, seen four times through the side mirrors, cost over
+// 200 ms of its frame on llvmpipe with 16 taps each time.
+GlossyFilter glossyFilterFor(const Settings& settings, const Mirror& mirror, int depth, double pixelArea) {
+    const bool trade = settings.glossyFilter == GlossyFilter::Footprint && mirror.roughness > 0.0 &&
+                       mirror.roughness <= kChainBoundedRoughness && (depth > 1 || pixelArea < kFewPixels);
+    return trade ? GlossyFilter::Chain : settings.glossyFilter;
+}
+
 std::string label(const FrameInput& input, int mirror) {
     std::string name = input.mirrors[static_cast<std::size_t>(mirror)].name;
     if (name.empty())
@@ -228,6 +245,7 @@ struct Planner {
         }
         view.rect = coverage.rect;
         view.pixelArea = coverage.pixelArea;
+        view.glossyFilter = glossyFilterFor(input.settings, mirror, view.depth, view.pixelArea);
         // A rough mirror needs its reflection as an image of its own to filter: the stencil technique
         // draws it straight into the parent's buffer, so a rough stencil mirror is drawn as a texture
         // one.
@@ -282,6 +300,9 @@ struct Planner {
         details.roughness = std::clamp(mirror.roughness, 0.0, 1.0);
         if (input.settings.glossyFilter == GlossyFilter::Footprint)
             details.glossyTaps = glossyTapCount(input.settings);
+        details.glossyChain = view.glossyFilter == GlossyFilter::Chain;
+        if (details.glossyChain && input.settings.glossyFilter != GlossyFilter::Chain)
+            details.chainInstead = view.depth > 1 ? "seen inside another mirror" : "it covers few pixels";
         addPass(PassKind::MirrorSurface, view, index, PlanReason::MirrorSurface, details);
     }
 

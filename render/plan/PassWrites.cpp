@@ -69,6 +69,7 @@ PassWrites cameraWrites(const FrameInput& input, const FramePlan& plan, const Pl
             writes.clockwise =
                 view.parent >= 0 && mirrored(plan.views[static_cast<std::size_t>(view.parent)]);
             writes.mipmaps = view.ownTarget && blurred;
+            writes.convolveMips = writes.mipmaps && view.glossyFilter == GlossyFilter::Chain;
             writes.readSlot = view.ownTarget ? view.textureSlot : -1;
         }
         break;

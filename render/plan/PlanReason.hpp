@@ -137,6 +137,8 @@ struct ReasonDetails {
     double reflectivity = 1.0;
     double roughness = 0.0; // also the reflector's, for its pre-filter
     int glossyTaps = 0;     // a rough mirror's filter: taps a pixel over the GGX footprint; 0: one mip level
+    bool glossyChain = false; // … or the convolved chain, four lookups a pixel
+    std::string chainInstead; // why the planner chose the chain over the settings' taps; empty: they ask it
 
     // The environment map's pass.
     ReflectorMap map = ReflectorMap::Cube;

@@ -2,6 +2,7 @@
 
 #include "render/gl/GpuTimer.hpp"
 #include "render/gl/Objects.hpp"
+#include "render/math/GgxAlbedoTable.hpp"
 #include "render/math/Projection.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/passes/LightingVariant.hpp"
@@ -42,6 +43,23 @@ gl::Texture makeDummyDepth(GLenum target) {
     return t;
 }
 
+// The GGX albedo table (math::ggxAlbedoTable) as a float texture the glossy shaders read bilinearly.
+gl::Texture makeGgxAlbedoTexture() {
+    const math::GgxAlbedoTable& table = math::ggxAlbedoTable();
+    constexpr int size = math::GgxAlbedoTable::kSize;
+    gl::Texture t = gl::makeTexture();
+    glBindTexture(GL_TEXTURE_2D, t.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, size, size, 0, GL_RED, GL_FLOAT, table.values.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
 } // namespace
 
 struct Renderer::State {
@@ -76,14 +94,20 @@ base::Result<std::unique_ptr<Renderer>> Renderer::create() {
     auto composite = gl::Program::build("fullscreen.vert", "composite.frag");
     if (!composite)
         return base::Error{composite.error()};
+    auto convolve = gl::Program::build("fullscreen.vert", "mip_convolve.frag");
+    if (!convolve)
+        return base::Error{convolve.error()};
     s.meshProgram = std::move(*mesh);
     s.shadowProgram = std::move(*shadow);
     s.mirrorProgram = std::move(*mirror);
     s.flatProgram = std::move(*flat);
     s.compositeProgram = std::move(*composite);
+    s.mipConvolveProgram = std::move(*convolve);
+    s.convolveFramebuffer = gl::makeFramebuffer();
     s.emptyVao = gl::makeVertexArray();
     s.dummyShadow2D = makeDummyDepth(GL_TEXTURE_2D);
     s.dummyShadowCube = makeDummyDepth(GL_TEXTURE_CUBE_MAP);
+    s.ggxAlbedo = makeGgxAlbedoTexture();
     s.unitPlane = std::make_shared<const MeshData>(makePlane(1));
     state.limits = queryGpuLimits();
     if (base::Status reflector = s.reflector.init(); !reflector)
@@ -286,6 +310,9 @@ void runPasses(passes::FrameExecution& frame, bool srgbBuffer, const RenderOptio
     // Only sRGB attachments are affected: the camera's buffer when it is one. Maps, reflection textures and
     // float outputs store what the shaders write.
     (srgbBuffer ? glEnable : glDisable)(GL_FRAMEBUFFER_SRGB);
+    glActiveTexture(GL_TEXTURE0 + passes::kGgxAlbedoUnit);
+    glBindTexture(GL_TEXTURE_2D, frame.resources.ggxAlbedo.id());
+    glActiveTexture(GL_TEXTURE0);
     for (std::size_t i = 0; i < plan.passes.size(); ++i) {
         const PlannedPass& pass = plan.passes[i];
         // A view inside a mirror found hidden runs nothing; its reflection is reported skipped.

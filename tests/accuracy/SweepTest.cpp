@@ -116,9 +116,9 @@ TEST(BenchSweep, BigMeshesInReflectionsAreSweptWholeAndSimplified) {
     }
 }
 
-// Rough surfaces call for the glossy family: at each of three roughnesses, the mip filter and the footprint
-// at rising quality, each against the reference traced at that roughness. Only surfaces that are rough in
-// the scene change roughness; a sharp mirror stays sharp.
+// Rough surfaces call for the glossy family: at each of three roughnesses, the mip filter, the convolved
+// chain and the footprint at rising quality, each against the reference traced at that roughness. Only
+// surfaces that are rough in the scene change roughness; a sharp mirror stays sharp.
 TEST(BenchSweep, RoughSurfacesAreSweptAtThreeRoughnessesAgainstTheirOwnReferences) {
     FrameInput scene = withMirrorsAndShadows(withReflector(plainScene()));
     EXPECT_FALSE(familiesOf(planSweep(scene, sceneTraits(scene, std::nullopt), {true})).count(Family::Glossy))
@@ -143,19 +143,22 @@ TEST(BenchSweep, RoughSurfacesAreSweptAtThreeRoughnessesAgainstTheirOwnReference
             EXPECT_EQ(applied.mirrors[0].roughness, *roughness) << c.id;
             EXPECT_EQ(applied.mirrors[1].roughness, 0.0) << c.id << ": the sharp mirror stays sharp";
             EXPECT_EQ(applied.reflector->roughness, *roughness) << c.id;
-            EXPECT_EQ(applied.settings.glossyFilter,
-                      c.label == "mip" ? render::GlossyFilter::Mip : render::GlossyFilter::Footprint);
+            const bool chain = c.label.starts_with("chain");
+            EXPECT_EQ(applied.settings.glossyFilter, c.label == "mip" ? render::GlossyFilter::Mip
+                                                     : chain          ? render::GlossyFilter::Chain
+                                                                      : render::GlossyFilter::Footprint);
             const FrameInput reference = referenceInput(scene, c.reference, {});
             EXPECT_EQ(reference.mirrors[0].roughness, *roughness);
             EXPECT_EQ(reference.mirrors[1].roughness, 0.0);
             const Settings s = effectiveSettings(applied, std::nullopt, traits.simplifiableMeshes > 0);
             const std::map<std::string, std::string> m(s.begin(), s.end());
-            EXPECT_EQ(m.at("glossy"), c.label == "mip" ? "mip" : "footprint " + c.label) << c.id;
+            EXPECT_EQ(m.at("glossy"), c.label == "mip" || chain ? c.label : "footprint " + c.label) << c.id;
         }
         ASSERT_EQ(labels.size(), 3u);
         for (const auto& [kind, list] : labels) {
             EXPECT_EQ(list.front(), "mip") << referenceName(kind);
-            EXPECT_EQ(list.size(), quick ? 3u : 4u) << referenceName(kind);
+            EXPECT_EQ(list[1], "chain 64 samples") << referenceName(kind);
+            EXPECT_EQ(list.size(), quick ? 4u : 5u) << referenceName(kind);
             EXPECT_EQ(referenceFromName(referenceName(kind)), kind);
         }
         EXPECT_EQ(labels.at(ReferenceKind::RoughMid).back(),

@@ -1,7 +1,9 @@
 // The rough reflector end to end: the GGX pre-filtered chain (Footprint) and the mip-chain fallback (Mip)
 // for every map layout. Roughness 0 draws the sharp image, bit for bit, with no Prefilter pass; a uniform
-// environment stays uniform at any roughness (the filter conserves a constant, across the seams too);
+// environment stays uniform at any roughness but for the lobe's albedo (the filter conserves a constant,
+// across the seams too);
 // more samples a texel come closer to a many-sample reference; nothing is NaN or infinite.
+#include "render/math/GgxAlbedoTable.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "support/GlTest.hpp"
 
@@ -114,13 +116,23 @@ TEST_F(Prefilter, UniformEnvironmentStaysUniform) {
                     EXPECT_TRUE(reused);
                 }
                 ASSERT_EQ(image.rgba.size(), std::size_t(kSize) * kSize * 4);
-                double worst = 0.0;
-                for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+                // Each pixel is the background's colour scaled by the lobe's albedo at its view angle
+                // (masking and shadowing take the same share of every channel), never more than 1.
+                double worst = 0.0, darkest = 1.0;
+                for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+                    const double scale = double(image.rgba[i + 2]) / background.b;
+                    darkest = std::min(darkest, scale);
                     for (int c = 0; c < 3; ++c)
-                        worst =
-                            std::max(worst, std::abs(double(image.rgba[i + std::size_t(c)]) - background[c]));
+                        worst = std::max(
+                            worst, std::abs(double(image.rgba[i + std::size_t(c)]) - scale * background[c]));
+                    EXPECT_LE(scale, 1.0 + 2e-3);
+                }
                 // Half-float storage of the map and the chain: about 1e-3 relative.
                 EXPECT_LT(worst, 2e-3);
+                EXPECT_GT(darkest, 0.2) << "no pixel far below the lobe's albedo";
+                // The centre faces the camera: the albedo at normal incidence.
+                const glm::vec4 centre = image.at(kSize / 2, kSize / 2);
+                EXPECT_NEAR(centre.b / background.b, math::ggxAlbedoTable().at(1.0, roughness), 3e-3);
             }
 }
 

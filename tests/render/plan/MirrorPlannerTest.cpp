@@ -241,6 +241,55 @@ TEST(MirrorPlanner, TextureMirrorsRenderIntoTheirOwnTextureAndNestFromAFreshSten
     EXPECT_EQ(third.textureSlot, 1) << "a texture view inside a texture view needs another texture";
 }
 
+// Simulate only what is needed, for glossy too: a slightly rough mirror seen inside another mirror takes
+// the convolved chain instead of the footprint's taps (its error is bounded up to roughness 0.3), and says
+// so; seen directly and large, or rougher, it keeps the taps the settings ask for.
+TEST(MirrorPlanner, ARoughMirrorSeenInsideAnotherTakesTheCheaperChainAndSaysWhy) {
+    FrameInput input = cameraAtOrigin();
+    input.camera.position = {0.3, 0.2, -1.0};
+    input.camera.target = {0, 0, -3};
+    Mirror front = wall("Front", -3.0, true, 4.0);
+    front.roughness = 0.2;
+    input.mirrors = {front, wall("Back", 1.0, false, 4.0)};
+    input.settings.mirrorDepth = 3;
+    input.settings.glossyFilter = GlossyFilter::Footprint;
+    auto frontViews = [](const FramePlan& plan) {
+        std::vector<const MirrorView*> out;
+        for (const MirrorView& v : plan.views)
+            if (v.mirror == 0)
+                out.push_back(&v);
+        return out;
+    };
+    const FramePlan plan = planFrame(input, {}, kViewport);
+    const std::vector<const MirrorView*> views = frontViews(plan);
+    ASSERT_GE(views.size(), 2u);
+    EXPECT_EQ(views[0]->depth, 1);
+    EXPECT_GT(views[0]->pixelArea, 4096.0);
+    EXPECT_EQ(views[0]->glossyFilter, GlossyFilter::Footprint) << "seen directly, large: the taps";
+    EXPECT_EQ(views[1]->depth, 3);
+    EXPECT_EQ(views[1]->glossyFilter, GlossyFilter::Chain) << "seen inside another mirror: the chain";
+    bool said = false, convolves = false;
+    for (const PlannedPass& pass : plan.passes) {
+        if (pass.kind != PassKind::MirrorSurface ||
+            plan.views[std::size_t(pass.view)].glossyFilter != GlossyFilter::Chain)
+            continue;
+        said |=
+            pass.reason().find("instead of 16 taps a pixel: seen inside another mirror") != std::string::npos;
+        convolves |= pass.writes.convolveMips;
+    }
+    EXPECT_TRUE(said);
+    EXPECT_TRUE(convolves) << "the chain is built as Gaussian levels";
+    // Rougher than the chain's error is known for: the taps everywhere.
+    input.mirrors[0].roughness = 0.6;
+    for (const MirrorView* v : frontViews(planFrame(input, {}, kViewport)))
+        EXPECT_EQ(v->glossyFilter, GlossyFilter::Footprint);
+    // The cheap filter asked for is kept as it is.
+    input.mirrors[0].roughness = 0.2;
+    input.settings.glossyFilter = GlossyFilter::Mip;
+    for (const MirrorView* v : frontViews(planFrame(input, {}, kViewport)))
+        EXPECT_EQ(v->glossyFilter, GlossyFilter::Mip);
+}
+
 TEST(MirrorPlanner, MirrorOnlyVisibleThroughAnotherIsCulledOutsideItsReflectedView) {
     FrameInput input = cameraAtOrigin();
     // A small mirror off to the side behind the camera: not in the view, and not in the reflected view of

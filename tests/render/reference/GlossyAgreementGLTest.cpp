@@ -1,9 +1,9 @@
 // Rough (glossy) planar mirrors in the rasterizer against the exact tracer. mirror.frag approximates the
 // GGX lobe's integral by blurring the mirror's reflection texture (render::GlossyFilter): these tests
 // check that roughness 0 runs no blur at all, that the Footprint filter's error falls towards the tracer as
-// its taps rise and beats the cheap Mip filter, that nothing non-finite comes out at the extremes (rough,
-// grazing, close), and that the blur grows with the distance beyond the mirror, which is what the
-// Footprint filter exists for.
+// its taps rise and beats the cheap Mip filter, that the convolved Chain comes within 1 dB of 16 taps,
+// that nothing non-finite comes out at the extremes (rough, grazing, close), and that the blur grows with
+// the distance beyond the mirror, which is what the Footprint and Chain filters exist for.
 #include "render/imageio/ImageWriter.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/reference/Tracer.hpp"
@@ -209,6 +209,38 @@ TEST_F(GlossyAgreement, FootprintErrorFallsWithTapsAndBeatsMip) {
     }
 }
 
+// The convolved chain (four lookups a pixel, whatever the roughness) against the 16-tap footprint, both
+// against the tracer on the mirror's pixels: within 1 dB of its PSNR at roughness 0.1 and 0.3, and better
+// than one mip level everywhere. At 0.6 it is not yet there (measured 21.5 against 27.3 dB: its wide
+// levels spill bright surroundings across the mirror), which the figure printed keeps in view.
+TEST_F(GlossyAgreement, ChainComesWithinOneDecibelOfSixteenTapsUpToRoughnessPointThree) {
+    const int width = 160, height = 96, samples = 1024;
+    for (double roughness : {0.1, 0.3, 0.6}) {
+        SCOPED_TRACE("roughness " + std::to_string(roughness));
+        const FrameInput input = floorMirrorScene(roughness);
+        const reference::TraceResult traced = traceFrame(input, width, height, samples);
+        const std::vector<std::uint8_t> mask = reference::mirrorMask(traced.ids);
+        const std::string tag = "r" + std::to_string(int(std::lround(roughness * 10)));
+        auto psnr = [&](GlossyFilter filter, const std::string& name) {
+            const Still still = renderWith(input, filter, 16, width, height);
+            dumpImage("glossy_" + tag + "_" + name, still.image);
+            auto stats = metrics::compare(still.image, traced.image, &mask);
+            EXPECT_TRUE(stats.ok()) << (stats.ok() ? "" : stats.error());
+            std::printf("[ measured ] roughness %.1f %-11s PSNR %.2f dB on the mirror, still %.1f ms\n",
+                        roughness, name.c_str(), stats.ok() ? stats->psnr : 0.0, still.ms);
+            return stats.ok() ? stats->psnr : 0.0;
+        };
+        dumpImage("glossy_" + tag + "_reference", traced.image);
+        const double taps16 = psnr(GlossyFilter::Footprint, "footprint16");
+        const double chain = psnr(GlossyFilter::Chain, "chain");
+        const double mip = psnr(GlossyFilter::Mip, "mip");
+        if (roughness < 0.5) {
+            EXPECT_GE(chain, taps16 - 1.0);
+        }
+        EXPECT_GT(chain, mip);
+    }
+}
+
 bool allFinite(const render::Image& image) {
     for (float v : image.rgba)
         if (!std::isfinite(v))
@@ -237,13 +269,12 @@ TEST_F(GlossyAgreement, NothingNonFiniteAtTheExtremes) {
         input.camera.target = c.target;
         input.camera.up = c.up;
         input.camera.near = c.near;
-        for (GlossyFilter filter : {GlossyFilter::Mip, GlossyFilter::Footprint})
+        for (GlossyFilter filter : {GlossyFilter::Mip, GlossyFilter::Footprint, GlossyFilter::Chain})
             for (int taps : {1, 64}) {
                 const render::Image image = renderWith(input, filter, taps, width, height).image;
                 ASSERT_EQ(image.width, width);
                 EXPECT_TRUE(allFinite(image))
-                    << c.name << ", " << (filter == GlossyFilter::Mip ? "Mip" : "Footprint") << ", " << taps
-                    << " taps";
+                    << c.name << ", filter " << int(filter) << ", " << taps << " taps";
                 if (filter == GlossyFilter::Footprint && taps == 64)
                     dumpImage(std::string("glossy_extreme_") + (c.name[0] == 'g' ? "grazing" : c.name),
                               image);
