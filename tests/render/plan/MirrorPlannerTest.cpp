@@ -281,12 +281,14 @@ TEST(MirrorPlanner, ARoughMirrorSeenInsideAnotherTakesTheCheaperChainAndSaysWhy)
     EXPECT_TRUE(convolves) << "the chain is built as Gaussian levels";
     // Rougher than the chain's error is known for: the taps everywhere.
     input.mirrors[0].roughness = 0.6;
-    for (const MirrorView* v : frontViews(planFrame(input, {}, kViewport)))
+    const FramePlan rougher = planFrame(input, {}, kViewport); // the views point into it: keep it alive
+    for (const MirrorView* v : frontViews(rougher))
         EXPECT_EQ(v->glossyFilter, GlossyFilter::Footprint);
     // The cheap filter asked for is kept as it is.
     input.mirrors[0].roughness = 0.2;
     input.settings.glossyFilter = GlossyFilter::Mip;
-    for (const MirrorView* v : frontViews(planFrame(input, {}, kViewport)))
+    const FramePlan cheap = planFrame(input, {}, kViewport);
+    for (const MirrorView* v : frontViews(cheap))
         EXPECT_EQ(v->glossyFilter, GlossyFilter::Mip);
 }
 
