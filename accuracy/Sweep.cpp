@@ -3,6 +3,7 @@
 #include "render/frame/SceneLimits.hpp"
 #include "render/frame/SceneNames.hpp"
 #include "render/math/Projection.hpp"
+#include "render/mesh/Simplify.hpp"
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
@@ -201,7 +202,7 @@ SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int
     t.roughReflector = scene.reflector && scene.reflector->mesh && scene.reflector->roughness > 0.0;
     if (!scene.mirrors.empty() || (scene.reflector && scene.reflector->mesh))
         for (const render::DrawItem& item : scene.items)
-            t.simplifiableMeshes += item.mesh && !item.mesh->coarse.indices.empty() ? 1 : 0;
+            t.simplifiableMeshes += item.mesh && render::wantsCoarseLevel(*item.mesh) ? 1 : 0;
     if (!scene.reflector || !scene.reflector->mesh)
         return t;
     t.reflector = true;

@@ -70,7 +70,8 @@ struct SceneTraits {
     std::size_t mirrors = 0;
     std::size_t shadowedLights = 0;        // lights with shadows on
     std::optional<int> teapotTessellation; // of the (first) built-in teapot
-    // Meshes with a simplified level (MeshData::coarse) in a scene with something that reflects them.
+    // Meshes big enough for a simplified level (MeshData::coarse) in a scene with something that reflects
+    // them.
     std::size_t simplifiableMeshes = 0;
     std::size_t roughMirrors = 0; // planar mirrors with roughness above 0
     bool roughReflector = false;

@@ -4,6 +4,7 @@
 #include "editor/ui/Viewport.hpp"
 
 #include "editor/ui/CameraGizmo.hpp"
+#include "editor/ui/CoarseLevelJobs.hpp"
 #include "editor/ui/ViewGrid.hpp"
 #include "editor/ui/ViewportModels.hpp"
 #include "editor/ui/ViewportOverlay.hpp"
@@ -47,6 +48,9 @@ Viewport::Viewport(scene::Scene& scene, scene::MeshLibrary& meshes, AnimationClo
     m_overlay = new ViewportOverlay(*this);
     m_models = new ViewportModels(m_meshes, this);
     connect(m_models, &ViewportModels::changed, this, qOverload<>(&Viewport::update));
+    // A reflection draws a big mesh whole until its simplified level is built, then at that level.
+    m_coarseLevels = new CoarseLevelJobs(this);
+    connect(m_coarseLevels, &CoarseLevelJobs::levelBuilt, this, qOverload<>(&Viewport::update));
 
     // The viewport draws only when what it shows changes (a static scene costs nothing at idle):
     // an edit, a new document, navigation, a time jump, a model read in, a resize, or the clock running
@@ -219,6 +223,8 @@ void Viewport::initializeGL() {
         auto renderer = render::Renderer::create();
         if (renderer) {
             m_renderer = std::move(*renderer);
+            m_renderer->setCoarseLevelRequest(
+                [this](const std::vector<render::MeshHandle>& meshes) { m_coarseLevels->request(meshes); });
         } else {
             m_rendererError =
                 tr("The renderer could not start: %1").arg(QString::fromStdString(renderer.error()));

@@ -31,6 +31,7 @@ class Selection;
 namespace speculum::ui {
 
 class ViewportModels;
+class CoarseLevelJobs;
 class ViewportOverlay;
 
 // The live 3D view: draws a snapshot of the document every frame with render::Renderer into this widget's
@@ -86,6 +87,8 @@ public:
     // The renderer, for work that must run on this widget's context (still export): call makeCurrent()
     // first. Null until the widget has been shown (or when it failed).
     render::Renderer* renderer() { return m_renderer.get(); }
+    // Builds the simplified levels of big meshes for the renderer's reflected views (tests wait on it).
+    CoarseLevelJobs& coarseLevelJobs() { return *m_coarseLevels; }
     // The document's mesh library (the session's own). Model files the scene references are read on
     // workers (ViewportModels) when a frame or waitForModels() asks for them; one not read yet is an empty
     // stand-in until it is.
@@ -232,6 +235,7 @@ private:
     QUndoStack* m_undoStack = nullptr;
     scene::MeshLibrary& m_meshes; // kept across frames: the renderer keys GPU meshes on the handles
     std::unique_ptr<render::Renderer> m_renderer;
+    CoarseLevelJobs* m_coarseLevels = nullptr; // big meshes' simplified levels, built off the GUI thread
     QString m_rendererError;
     bool m_skipsSrgbDecode = false; // the context has EXT_texture_sRGB_decode (initializeGL)
     ViewportNavigation m_navigation;

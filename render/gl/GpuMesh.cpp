@@ -31,8 +31,7 @@ GpuMesh upload(const MeshData& mesh, std::string& failure) {
         mesh.positions.size() * sizeof(glm::vec4) *
         ((mesh.colors.size() == mesh.positions.size() && !mesh.colors.empty() ? 1 : 0) +
          (mesh.tangents.size() == mesh.positions.size() && !mesh.tangents.empty() ? 1 : 0));
-    // The simplified level's indices follow the full list in the same buffer (same vertices).
-    const std::size_t indexBytes = (mesh.indices.size() + mesh.coarse.indices.size()) * sizeof(std::uint32_t);
+    const std::size_t indexBytes = mesh.indices.size() * sizeof(std::uint32_t);
     const std::size_t bytes = std::max({vertices.size() * sizeof(Vertex), indexBytes, extraBytes});
     if (base::Status fits = beginAllocation(bytes); !fits) {
         failure = fits.error();
@@ -42,21 +41,13 @@ GpuMesh upload(const MeshData& mesh, std::string& failure) {
     gpu.vertices = makeBuffer();
     gpu.indices = makeBuffer();
     gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
-    gpu.coarseIndexCount = static_cast<GLsizei>(mesh.coarse.indices.size());
     glBindVertexArray(gpu.vao.id());
     glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices.id());
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(),
                  GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices.id());
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indexBytes), nullptr, GL_STATIC_DRAW);
-    glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0,
-                    static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
-                    mesh.indices.data());
-    if (!mesh.coarse.indices.empty())
-        glBufferSubData(GL_ELEMENT_ARRAY_BUFFER,
-                        static_cast<GLintptr>(mesh.indices.size() * sizeof(std::uint32_t)),
-                        static_cast<GLsizeiptr>(mesh.coarse.indices.size() * sizeof(std::uint32_t)),
-                        mesh.coarse.indices.data());
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indexBytes), mesh.indices.data(),
+                 GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<void*>(offsetof(Vertex, position)));
@@ -97,6 +88,26 @@ GpuMesh upload(const MeshData& mesh, std::string& failure) {
     return gpu;
 }
 
+// The simplified level's indices, in a buffer of their own: the level is built after the mesh is first
+// drawn (when a reflected view first needs it), and the full list stays as it was uploaded.
+void uploadCoarseLevel(GpuMesh& gpu, const std::vector<std::uint32_t>& indices, std::string& failure) {
+    if (base::Status fits = beginAllocation(indices.size() * sizeof(std::uint32_t)); !fits) {
+        failure = fits.error();
+        return;
+    }
+    Buffer buffer = makeBuffer();
+    glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+    glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
+                 indices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    if (base::Status done = finishAllocation(); !done) {
+        failure = done.error();
+        return; // frees the buffer: the mesh draws whole
+    }
+    gpu.coarseIndices = std::move(buffer);
+    gpu.coarseIndexCount = static_cast<GLsizei>(indices.size());
+}
+
 } // namespace
 
 void GpuMesh::draw(Detail detail) const {
@@ -108,19 +119,24 @@ void GpuMesh::draw(Detail detail) const {
     if (!hasTangents)
         glVertexAttrib4f(kTangentAttribute, 1.0f, 0.0f, 0.0f, 1.0f);
     glBindVertexArray(vao.id());
-    if (detail == Detail::Coarse && coarseIndexCount > 0)
-        glDrawElements(GL_TRIANGLES, coarseIndexCount, GL_UNSIGNED_INT,
-                       reinterpret_cast<void*>(static_cast<std::size_t>(indexCount) * sizeof(std::uint32_t)));
-    else
+    if (detail == Detail::Coarse && coarseIndexCount > 0) {
+        // The element buffer is the vertex array's state: swapped in for this draw, and back.
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, coarseIndices.id());
+        glDrawElements(GL_TRIANGLES, coarseIndexCount, GL_UNSIGNED_INT, nullptr);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices.id());
+    } else {
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+    }
 }
 
 const GpuMesh& MeshCache::get(const MeshHandle& mesh) {
     assert(mesh && "MeshCache::get(): null mesh");
     auto it = m_entries.find(mesh.get());
     // A new mesh may reuse the address of a freed one: only a live weak pointer to this very mesh counts.
-    if (it != m_entries.end() && it->second.owner.lock() == mesh)
+    if (it != m_entries.end() && it->second.owner.lock() == mesh) {
+        addCoarseLevel(*mesh, it->second);
         return it->second.gpu;
+    }
     std::string failure;
     Entry entry{mesh, upload(*mesh, failure)};
     if (!failure.empty())
@@ -129,7 +145,24 @@ const GpuMesh& MeshCache::get(const MeshHandle& mesh) {
                              "; it is not drawn");
     entry.gpu.bounds = computeBounds(*mesh);
     auto [pos, inserted] = m_entries.insert_or_assign(mesh.get(), std::move(entry));
+    addCoarseLevel(*mesh, pos->second);
     return pos->second.gpu;
+}
+
+void MeshCache::addCoarseLevel(const MeshData& mesh, Entry& entry) {
+    if (entry.coarseTried || !entry.gpu.vao)
+        return;
+    const std::vector<std::uint32_t>* coarse = mesh.coarse.indices();
+    if (!coarse) {
+        entry.coarseTried = mesh.coarse.ready() != nullptr; // built, and nothing gained: never asked again
+        return;
+    }
+    entry.coarseTried = true;
+    std::string failure;
+    uploadCoarseLevel(entry.gpu, *coarse, failure);
+    if (!failure.empty())
+        m_warnings.push_back("the simplified level of a mesh of " + std::to_string(mesh.triangleCount()) +
+                             " triangles " + failure + "; its reflections draw it whole");
 }
 
 void MeshCache::purge() {

@@ -17,7 +17,7 @@ inline constexpr GLuint kColorAttribute = 3;
 inline constexpr GLuint kTangentAttribute = 4;
 
 // Which of a mesh's triangle lists a draw uses: all of them, or the simplified level where the mesh has
-// one (MeshData::coarse; a mesh without one draws whole either way).
+// one built (MeshData::coarse; a mesh without one draws whole either way).
 enum class Detail { Full, Coarse };
 
 struct GpuMesh {
@@ -26,7 +26,8 @@ struct GpuMesh {
     Buffer extras; // colours then tangents, where the mesh has them; empty otherwise
     Buffer indices;
     GLsizei indexCount = 0;
-    GLsizei coarseIndexCount = 0; // after the full list, in the same buffer; 0: no simplified level
+    Buffer coarseIndices;         // the simplified level's, uploaded once it is built
+    GLsizei coarseIndexCount = 0; // 0: no simplified level (yet)
     bool hasColors = false;
     bool hasTangents = false;
     Bounds bounds; // of the positions, in the mesh's own space: views cull with it
@@ -38,6 +39,7 @@ struct GpuMesh {
 // key, and a weak pointer tells when the CPU mesh is gone so its buffers can be freed.
 class MeshCache {
 public:
+    // The mesh's buffers, uploaded on first use; its simplified level is added once it has been built.
     const GpuMesh& get(const MeshHandle& mesh);
     // Frees the GPU copies of meshes nobody holds any more.
     void purge();
@@ -49,7 +51,9 @@ private:
     struct Entry {
         std::weak_ptr<const MeshData> owner;
         GpuMesh gpu;
+        bool coarseTried = false; // the simplified level uploaded, or found empty, or did not fit
     };
+    void addCoarseLevel(const MeshData& mesh, Entry& entry);
     std::unordered_map<const MeshData*, Entry> m_entries;
     std::vector<std::string> m_warnings;
 };

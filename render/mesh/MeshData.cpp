@@ -1,7 +1,5 @@
 #include "render/mesh/MeshData.hpp"
 
-#include "render/mesh/Simplify.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -37,8 +35,6 @@ Bounds computeBounds(const MeshData& mesh) {
 MeshHandle freezeMesh(MeshData&& mesh) {
     auto frozen = std::make_shared<MeshData>(std::move(mesh));
     frozen->knownBounds.set(computeBounds(*frozen));
-    if (frozen->coarse.indices.empty()) // a copy never has one; a mesh moved in keeps its own
-        buildCoarseLevel(*frozen);
     return frozen;
 }
 

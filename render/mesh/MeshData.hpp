@@ -1,11 +1,14 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace speculum::render {
@@ -36,24 +39,66 @@ private:
     bool m_set = false;
 };
 
-// A simplified triangle list over a mesh's own vertices. Like KnownBounds, a copy starts empty (a mesh
-// copied and then edited must not draw its original's triangles); a move keeps it, so a mesh read back
-// whole from a file or another process need not be simplified again.
+// A simplified triangle list over a mesh's own vertices.
 struct CoarseLevel {
-    std::vector<std::uint32_t> indices; // three per triangle
+    std::vector<std::uint32_t> indices; // three per triangle; empty: the mesh is drawn whole
     float error = 0.0f; // the largest deviation the simplification allowed, as a share of the mesh's size
 
-    CoarseLevel() = default;
-    CoarseLevel(const CoarseLevel&) {}
-    CoarseLevel& operator=(const CoarseLevel&) {
-        indices.clear();
-        error = 0.0f;
+    std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// Where a mesh keeps its simplified level. Building one costs seconds for a multi-million-triangle mesh,
+// so it is built only when a reflected view first needs it (coarseLevel() in Simplify.hpp), once, by
+// whichever thread asks first, while other threads read ready() without waiting. Like KnownBounds, a
+// copy starts without one (a mesh copied and then edited must not draw its original's triangles); a move
+// keeps it.
+class CoarseLevelSlot {
+public:
+    CoarseLevelSlot() = default;
+    CoarseLevelSlot(const CoarseLevelSlot&) {}
+    CoarseLevelSlot& operator=(const CoarseLevelSlot&) {
+        m_level = {};
+        m_built.store(false, std::memory_order_release);
         return *this;
     }
-    CoarseLevel(CoarseLevel&&) noexcept = default;
-    CoarseLevel& operator=(CoarseLevel&&) noexcept = default;
+    CoarseLevelSlot(CoarseLevelSlot&& other) noexcept
+        : m_level(std::move(other.m_level))
+        , m_built(other.m_built.load(std::memory_order_acquire)) {}
+    CoarseLevelSlot& operator=(CoarseLevelSlot&& other) noexcept {
+        m_level = std::move(other.m_level);
+        m_built.store(other.m_built.load(std::memory_order_acquire), std::memory_order_release);
+        return *this;
+    }
 
-    std::size_t triangleCount() const { return indices.size() / 3; }
+    // The level once built (its indices empty where simplifying gained too little); null before.
+    const CoarseLevel* ready() const { return m_built.load(std::memory_order_acquire) ? &m_level : nullptr; }
+    // The built level's indices, or none: what a draw of the simplified level uses.
+    const std::vector<std::uint32_t>* indices() const {
+        const CoarseLevel* level = ready();
+        return level && !level->indices.empty() ? &level->indices : nullptr;
+    }
+    // Builds the level with `build` unless it is built already; threads asking meanwhile wait for it.
+    template <typename Build>
+    const CoarseLevel& ensure(Build&& build) const {
+        if (const CoarseLevel* level = ready())
+            return *level;
+        const std::lock_guard lock(m_building);
+        if (!m_built.load(std::memory_order_acquire)) {
+            m_level = build();
+            m_built.store(true, std::memory_order_release);
+        }
+        return m_level;
+    }
+    // A level known before the mesh is shared (a mesh that must not be simplified: an empty one).
+    void set(CoarseLevel level) {
+        m_level = std::move(level);
+        m_built.store(true, std::memory_order_release);
+    }
+
+private:
+    mutable std::mutex m_building;
+    mutable CoarseLevel m_level;
+    mutable std::atomic<bool> m_built{false};
 };
 
 // CPU-side triangle mesh: what the GL layer uploads and the reference tracer intersects.
@@ -71,9 +116,9 @@ struct MeshData {
     std::vector<glm::vec4> tangents;
     std::vector<std::uint32_t> indices; // three per triangle
     KnownBounds knownBounds;            // set by freezeMesh: computeBounds() then costs nothing
-    // A simplified level over the same vertices, for views that may draw less detail (buildCoarseLevel,
-    // run by freezeMesh for big meshes); empty: the mesh has none and is always drawn whole.
-    CoarseLevel coarse;
+    // A simplified level over the same vertices, for the reflected views of a big mesh (coarseLevel() in
+    // Simplify.hpp builds it when one first needs it).
+    CoarseLevelSlot coarse;
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }
@@ -86,8 +131,8 @@ using MeshHandle = std::shared_ptr<const MeshData>;
 // culling ask every frame, and a multi-million-vertex scan each time would cost milliseconds).
 Bounds computeBounds(const MeshData& mesh);
 
-// The shared, immutable handle of a finished mesh, with its bounds computed once and, for a big mesh, its
-// simplified level (buildCoarseLevel) built once.
+// The shared, immutable handle of a finished mesh, with its bounds computed once. Its simplified level,
+// for a big mesh, is built later, when a reflected view first needs it.
 MeshHandle freezeMesh(MeshData&& mesh);
 
 // Whether the mesh is a closed, consistently and outward wound surface: every edge, by the positions of

@@ -7,16 +7,15 @@
 
 namespace speculum::render {
 
-void buildCoarseLevel(MeshData& mesh) {
-    mesh.coarse = {};
+CoarseLevel simplifyMesh(const MeshData& mesh) {
     const std::size_t triangles = mesh.triangleCount();
-    if (triangles <= kSimplifyAboveTriangles || mesh.positions.empty())
-        return;
+    if (!wantsCoarseLevel(mesh) || mesh.positions.empty())
+        return {};
     // meshoptimizer reads the positions as floats; a NaN or an infinity would poison its error metric,
     // and such a mesh (a hostile file) is better drawn whole.
     for (const glm::vec3& p : mesh.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            return;
+            return {};
     const std::size_t target =
         std::max(kSimplifiedMinimumTriangles, static_cast<std::size_t>(double(triangles) * kSimplifiedShare));
     std::vector<std::uint32_t> indices(mesh.indices.size());
@@ -28,11 +27,14 @@ void buildCoarseLevel(MeshData& mesh) {
         meshopt_simplify(indices.data(), mesh.indices.data(), mesh.indices.size(), &mesh.positions[0].x,
                          mesh.positions.size(), sizeof(glm::vec3), target * 3, kSimplifyMaxError, 0, &error);
     if (kept == 0 || kept / 3 > triangles * 3 / 4)
-        return; // too little gained for a second index list
+        return {}; // too little gained for a second index list
     indices.resize(kept);
     indices.shrink_to_fit();
-    mesh.coarse.indices = std::move(indices);
-    mesh.coarse.error = error;
+    return CoarseLevel{std::move(indices), error};
+}
+
+const CoarseLevel& coarseLevel(const MeshData& mesh) {
+    return mesh.coarse.ensure([&mesh] { return simplifyMesh(mesh); });
 }
 
 } // namespace speculum::render

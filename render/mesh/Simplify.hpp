@@ -17,10 +17,20 @@ inline constexpr double kSimplifiedShare = 1.0 / 8.0;
 inline constexpr std::size_t kSimplifiedMinimumTriangles = 20'000;
 inline constexpr float kSimplifyMaxError = 0.005f;
 
-// Sets mesh.coarse: a simplified triangle list over the mesh's own vertices (meshoptimizer's edge-collapse
-// simplifier, which keeps the surface closed and seams where uvs or normals split a vertex), and the error
-// it reached. Leaves it empty for a mesh at or below kSimplifyAboveTriangles, or where simplifying would not
-// remove at least a quarter of the triangles.
-void buildCoarseLevel(MeshData& mesh);
+// Whether a mesh is big enough for reflected views to draw a simplified level of it.
+inline bool wantsCoarseLevel(const MeshData& mesh) {
+    return mesh.triangleCount() > kSimplifyAboveTriangles;
+}
+
+// A simplified triangle list over the mesh's own vertices (meshoptimizer's edge-collapse simplifier,
+// which keeps the surface closed and seams where uvs or normals split a vertex), and the error it
+// reached. Empty for a mesh at or below kSimplifyAboveTriangles, one with a non-finite position, or where
+// simplifying would not remove at least a quarter of the triangles.
+CoarseLevel simplifyMesh(const MeshData& mesh);
+
+// The mesh's simplified level (mesh.coarse), built by the first call and kept: seconds for a
+// multi-million-triangle mesh, so an interactive caller asks a worker thread and reads
+// mesh.coarse.ready() meanwhile.
+const CoarseLevel& coarseLevel(const MeshData& mesh);
 
 } // namespace speculum::render

@@ -193,7 +193,9 @@ MeshHandle WarpMeshes::get(const MeshHandle& mesh, const glm::dmat4& world, cons
                            gl::Detail detail) {
     if (!mesh)
         return mesh;
-    const bool coarse = detail == gl::Detail::Coarse && !mesh->coarse.indices.empty();
+    const std::vector<std::uint32_t>* coarseIndices =
+        detail == gl::Detail::Coarse ? mesh->coarse.indices() : nullptr;
+    const bool coarse = coarseIndices != nullptr;
     const std::uint64_t key = entryKey(mesh.get(), world, tolerance) ^ (coarse ? 0x9e3779b97f4a7c15ull : 0);
     auto it = m_entries.find(key);
     if (it != m_entries.end() && it->second.owner.lock() == mesh && it->second.world == world &&
@@ -213,7 +215,7 @@ MeshHandle WarpMeshes::get(const MeshHandle& mesh, const glm::dmat4& world, cons
         level.uvs = mesh->uvs;
         level.colors = mesh->colors;
         level.tangents = mesh->tangents;
-        level.indices = mesh->coarse.indices;
+        level.indices = *coarseIndices;
         handle = std::make_shared<const MeshData>(subdivideForWarp(level, world, tolerance));
     } else if (MeshData fine = subdivideForWarp(*mesh, world, tolerance);
                fine.triangleCount() != mesh->triangleCount()) {

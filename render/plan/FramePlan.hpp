@@ -3,6 +3,7 @@
 #include "render/envmap/CaptureMath.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/ShadowFrustum.hpp"
+#include "render/mesh/MeshData.hpp"
 #include "render/plan/PlanReason.hpp"
 #include "render/plan/RenderOptions.hpp"
 
@@ -187,6 +188,9 @@ struct FramePlan {
     // Per item (by index into FrameInput::items): the mirrors' views and the environment map draw it at its
     // simplified level (MeshData::coarse). Empty when no reflected view draws a simplified mesh.
     std::vector<bool> coarseItems;
+    // Big meshes a reflected view draws that have no simplified level yet: drawn whole this frame, and the
+    // renderer has the level built (at once, or on the editor's worker thread). Each mesh once.
+    std::vector<MeshHandle> coarseLevelsWanted;
     // The reflector's map resolution: its own, within the GPU's limits and below every size of its layout
     // that failed to allocate (fitEnvmapResolution); 0 without a reflector, or where no map of its layout
     // fits. The map is allocated, drawn and looked up at this resolution (plannedInput).

@@ -52,9 +52,14 @@ std::string areaCovered(const ReasonDetails& d) {
 std::string reflectedMeshes(const ReasonDetails& d) {
     std::string simplified;
     std::string whole;
+    std::string building;
     std::size_t simplifiedCount = 0;
     for (const ReflectedMesh& mesh : d.bigMeshes) {
         const std::string full = std::to_string(mesh.triangles);
+        if (mesh.simplifying) {
+            building += (building.empty() ? "'" : ", '") + mesh.name + "' (" + full + " triangles)";
+            continue;
+        }
         if (!mesh.simplifiedTriangles) {
             whole += (whole.empty() ? "'" : ", '") + mesh.name + "' (" + full + " triangles)";
             continue;
@@ -66,12 +71,15 @@ std::string reflectedMeshes(const ReasonDetails& d) {
                       std::to_string(*mesh.simplifiedTriangles) + " triangles, within " + error +
                       " of its size";
     }
+    std::string said;
     if (!simplified.empty())
-        return "; draws " + std::string(simplifiedCount == 1 ? "a big mesh" : "big meshes") +
-               " simplified (" + simplified + ")";
+        said += "; draws " + std::string(simplifiedCount == 1 ? "a big mesh" : "big meshes") +
+                " simplified (" + simplified + ")";
+    if (!building.empty())
+        said += "; draws big meshes whole while their simplified level is built: " + building;
     if (!whole.empty())
-        return "; draws big meshes whole, settings.simplifyReflections is off: " + whole;
-    return {};
+        said += "; draws big meshes whole, settings.simplifyReflections is off: " + whole;
+    return said;
 }
 
 std::string lightSentence(PlanReason code, const ReasonDetails& d) {

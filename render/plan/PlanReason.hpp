@@ -100,8 +100,11 @@ std::ostream& operator<<(std::ostream& out, PlanReason code);
 struct ReflectedMesh {
     std::string name{};
     std::size_t triangles = 0;
-    std::optional<std::size_t> simplifiedTriangles{}; // none: drawn whole (settings.simplifyReflections off)
+    std::optional<std::size_t> simplifiedTriangles{}; // none: drawn whole
     double simplificationError = 0.0;                 // of the simplified mesh, as a fraction of its size
+    // Drawn whole while its simplified level is being built (the level is built when a reflected view
+    // first needs it; in the editor, on a worker thread).
+    bool simplifying = false;
 };
 
 // What a reason's sentence names besides its code; each code reads only the fields its sentence needs.

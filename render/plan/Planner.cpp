@@ -3,6 +3,7 @@
 #include "render/frame/SceneLimits.hpp"
 #include "render/math/Projection.hpp"
 #include "render/math/ShadowFrustum.hpp"
+#include "render/mesh/Simplify.hpp"
 #include "render/plan/FrameHashing.hpp"
 
 #include <algorithm>
@@ -129,13 +130,25 @@ void planReflectedDetail(const FrameInput& input, FramePlan& plan) {
     std::vector<bool> coarse(input.items.size(), false);
     for (std::size_t i = 0; i < input.items.size(); ++i) {
         const DrawItem& item = input.items[i];
-        if (!item.mesh || item.mesh->coarse.indices.empty())
+        if (!item.mesh)
             continue;
+        // A level may come with a mesh of any size (set before it was frozen); others are built for big
+        // meshes only.
+        const CoarseLevel* level = item.mesh->coarse.ready();
+        if (!level && !wantsCoarseLevel(*item.mesh))
+            continue;
+        if (level && level->indices.empty())
+            continue; // simplifying gained too little: drawn whole, like any small mesh
         ReflectedMesh big{item.name, item.mesh->triangleCount()};
-        if (input.settings.simplifyReflections) {
+        if (input.settings.simplifyReflections && level) {
             coarse[i] = true;
-            big.simplifiedTriangles = item.mesh->coarse.triangleCount();
-            big.simplificationError = double(item.mesh->coarse.error);
+            big.simplifiedTriangles = level->triangleCount();
+            big.simplificationError = double(level->error);
+        } else if (input.settings.simplifyReflections) {
+            big.simplifying = true;
+            if (std::find(plan.coarseLevelsWanted.begin(), plan.coarseLevelsWanted.end(), item.mesh) ==
+                plan.coarseLevelsWanted.end())
+                plan.coarseLevelsWanted.push_back(item.mesh);
         }
         bigMeshes.push_back(std::move(big));
     }

@@ -135,6 +135,8 @@ std::uint64_t envmapSignature(const FrameInput& input) {
     }
     for (const DrawItem& item : input.items) {
         h.add(static_cast<const void*>(item.mesh.get()));
+        // A big mesh is drawn whole until its simplified level is built, then at that level.
+        h.add(item.mesh && item.mesh->coarse.indices() != nullptr);
         h.add(item.world);
         h.add(item.castsShadows);
         addMaterial(h, item.material);

@@ -5,6 +5,7 @@
 #include "render/math/GgxAlbedoTable.hpp"
 #include "render/math/Projection.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "render/mesh/Simplify.hpp"
 #include "render/passes/LightingVariant.hpp"
 #include "render/passes/PassExecutors.hpp"
 #include "render/plan/Planner.hpp"
@@ -67,6 +68,7 @@ struct Renderer::State {
     gl::GpuTimer timer;
     PlannerState plannerState;
     GpuLimits limits;
+    CoarseLevelRequest coarseLevelRequest;
     bool released = false;
 };
 
@@ -123,6 +125,10 @@ void Renderer::releaseGlResources() {
 
 const GpuLimits& Renderer::gpuLimits() const {
     return m_state->limits;
+}
+
+void Renderer::setCoarseLevelRequest(CoarseLevelRequest request) {
+    m_state->coarseLevelRequest = std::move(request);
 }
 
 void Renderer::lowerGpuLimits(const GpuLimits& limits) {
@@ -234,7 +240,9 @@ struct DrawnFrame {
 // warnings open the report's), then the maps' allocation.
 DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& target, const RenderTarget& drawn,
                           const RenderOptions& options, const GpuLimits& limits,
-                          const PlannerState& committed, passes::FrameResources& r, FrameReport& report) {
+                          const PlannerState& committed,
+                          const Renderer::CoarseLevelRequest& coarseLevelRequest, passes::FrameResources& r,
+                          FrameReport& report) {
     DrawnFrame frame;
     // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
     // untiled frame would, with the same sub-pixel sample positions. It is part of an exact still: never a
@@ -250,6 +258,13 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
                                   options.tile ? 0 : options.guides.size()};
     FramePlan& plan = report.plan;
     plan = planFrame(requested, plannerState, viewport, planOptions);
+    if (!plan.coarseLevelsWanted.empty() && coarseLevelRequest) {
+        coarseLevelRequest(plan.coarseLevelsWanted);
+    } else if (!plan.coarseLevelsWanted.empty()) {
+        for (const MeshHandle& mesh : plan.coarseLevelsWanted)
+            coarseLevel(*mesh);
+        plan = planFrame(requested, plannerState, viewport, planOptions);
+    }
     report.warnings = plan.warnings;
     frame.planned = plannedInput(requested, plan);
     const FrameInput& input = frame.planned ? *frame.planned : requested;
@@ -388,8 +403,8 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     report.drawnWidth = drawn.width;
     report.drawnHeight = drawn.height;
 
-    const DrawnFrame planned =
-        planDrawnFrame(requested, target, drawn, options, s.limits, s.plannerState, r, report);
+    const DrawnFrame planned = planDrawnFrame(requested, target, drawn, options, s.limits, s.plannerState,
+                                              s.coarseLevelRequest, r, report);
     const FramePlan& plan = report.plan;
     const FrameInput& input = planned.planned ? *planned.planned : requested;
 

@@ -8,6 +8,7 @@
 #include "render/plan/RenderOptions.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <glm/vec2.hpp>
 #include <memory>
 #include <optional>
@@ -36,6 +37,14 @@ public:
     // allocating gigabytes; each limit only ever goes down.
     const GpuLimits& gpuLimits() const;
     void lowerGpuLimits(const GpuLimits& limits);
+
+    // Who builds a big mesh's simplified level when a reflected view first needs it. By default the frame
+    // builds it at once and draws with it (a still or a benchmark waits the seconds that takes). With a
+    // request set (the editor, whose frames must not stall), the frame hands the meshes to it and draws
+    // them whole until their levels are ready (FramePlan::coarseLevelsWanted); the request is called again
+    // each frame until then, so it ignores meshes it is already building.
+    using CoarseLevelRequest = std::function<void(const std::vector<MeshHandle>&)>;
+    void setCoarseLevelRequest(CoarseLevelRequest request);
 
 private:
     Renderer();

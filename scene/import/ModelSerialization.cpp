@@ -16,7 +16,7 @@ using base::Error;
 // A field added to one of these types must be written and read here too; the sizes (x86-64, libstdc++)
 // make the build say so rather than the child silently dropping it. Materials need no such check: they
 // travel field by field as their declaration lists them (render/frame/Material.hpp).
-static_assert(sizeof(render::MeshData) == 208, "MeshData changed: update writeMesh/readMesh");
+static_assert(sizeof(render::MeshData) == 256, "MeshData changed: update writeMesh/readMesh");
 static_assert(sizeof(ImportedPart) == 56, "ImportedPart changed: update the part serialization");
 static_assert(sizeof(ImportedNode) == 208, "ImportedNode changed: update writeNodes/readNodes");
 static_assert(sizeof(ImportedModel) == 336, "ImportedModel changed: update serializeChildImport");
@@ -46,6 +46,8 @@ bool readEnum(ByteReader& in, Enum& out, Enum last) {
     return true;
 }
 
+// The simplified level (MeshData::coarse) does not travel: the parent builds it when a reflection first
+// needs it, which most imports never do.
 void writeMesh(ByteWriter& out, const render::MeshData& mesh) {
     out.array(mesh.positions);
     out.array(mesh.normals);
@@ -53,9 +55,6 @@ void writeMesh(ByteWriter& out, const render::MeshData& mesh) {
     out.array(mesh.colors);
     out.array(mesh.tangents);
     out.array(mesh.indices);
-    // The simplified level the child built (freezeMesh): the parent keeps it instead of simplifying again.
-    out.array(mesh.coarse.indices);
-    out.array(std::vector<float>{mesh.coarse.error});
 }
 
 // A mesh whose attributes do not match its vertex count, or with an index out of range, is refused: the
@@ -67,22 +66,13 @@ bool readMesh(ByteReader& in, render::MeshData& mesh) {
     mesh.colors = in.array<glm::vec4>();
     mesh.tangents = in.array<glm::vec4>();
     mesh.indices = in.array<std::uint32_t>();
-    mesh.coarse.indices = in.array<std::uint32_t>();
-    const std::vector<float> coarseError = in.array<float>();
-    mesh.coarse.error = coarseError.size() == 1 ? coarseError[0] : 0.0f;
     const std::size_t n = mesh.positions.size();
     const auto matches = [n](std::size_t size) { return size == 0 || size == n; };
     if (in.failed() || !matches(mesh.normals.size()) || !matches(mesh.uvs.size()) ||
-        !matches(mesh.colors.size()) || !matches(mesh.tangents.size()) || mesh.indices.size() % 3 != 0 ||
-        mesh.coarse.indices.size() % 3 != 0 || coarseError.size() != 1 || !std::isfinite(coarseError[0])) {
+        !matches(mesh.colors.size()) || !matches(mesh.tangents.size()) || mesh.indices.size() % 3 != 0) {
         return false;
     }
     for (const std::uint32_t index : mesh.indices) {
-        if (index >= n) {
-            return false;
-        }
-    }
-    for (const std::uint32_t index : mesh.coarse.indices) {
         if (index >= n) {
             return false;
         }

@@ -4,6 +4,7 @@
 
 #include "accuracy/Analysis.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "render/mesh/Simplify.hpp"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -58,7 +59,7 @@ FrameInput withMirrorsAndShadows(FrameInput input) {
 // A mesh big enough to get a simplified level (MeshData::coarse).
 FrameInput withBigMesh(FrameInput input) {
     static const render::MeshHandle big = render::freezeMesh(render::makeSphere(256));
-    EXPECT_FALSE(big->coarse.indices.empty());
+    EXPECT_FALSE(render::coarseLevel(*big).indices.empty());
     glm::dmat4 world(1.0);
     world[3] = glm::dvec4(2.0, 1.0, 0.0, 1.0);
     input.items.push_back({"Statue", world, big, {}, true});

@@ -38,6 +38,15 @@ inline bool waitFor(const std::function<bool()>& condition, int timeoutMs = 6000
     return true;
 }
 
+// Writes `text` to a file named `name` in `dir` and returns its path; empty when it could not be written.
+inline QString writeFileIn(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size())
+        return {};
+    return path;
+}
+
 // Waits until the viewport has drawn at least `frames` more frames than now.
 // The scene's model files load on worker threads first (the viewport draws them once they are in).
 inline bool waitForFrames(MainWindow& window, int frames = 2) {

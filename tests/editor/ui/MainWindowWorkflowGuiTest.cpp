@@ -732,11 +732,8 @@ TEST_F(EditorWorkflow, CtrlClickInTheViewportAddsAndRemovesAndHandleDragsActOnTh
 // the mouse, as Blender, Godot and Unity pick the object before its pieces.
 TEST_F(EditorWorkflow, AClickSelectsTheModelFirstAndASecondClickThePart) {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("parts.speculum.json"));
-    {
-        QFile file(path);
-        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-        file.write(R"({"format": "speculum-scene", "version": 1,
+    const QString path =
+        writeFileIn(dir, QStringLiteral("parts.speculum.json"), R"({"format": "speculum-scene", "version": 1,
           "camera": {"position": [0, 1, 5], "target": [0, 0.5, 0], "up": [0, 1, 0], "fovY": 50, "near": 0.1,
                      "far": 50},
           "nodes": [{"name": "Model", "children": [
@@ -744,7 +741,7 @@ TEST_F(EditorWorkflow, AClickSelectsTheModelFirstAndASecondClickThePart) {
               {"name": "Knob", "transform": {"translate": [0, 2.6, 0], "scale": [0.3, 0.3, 0.3]},
                "mesh": {"builtin": "sphere"}}],
              "mesh": {"builtin": "box"}}]}]})");
-    }
+    ASSERT_FALSE(path.isEmpty());
     ASSERT_TRUE(m_window->openProjectFile(path).ok());
     ASSERT_TRUE(waitForFrames(*m_window));
     ui::Viewport& viewport = m_window->viewport();

@@ -2,11 +2,13 @@
 // seconds, even with the clock running; an edit, an undo, a time jump, navigation and a resize each draw
 // and then stop; an animated scene that plays keeps drawing until paused.
 #include "editor/document/Commands.hpp"
+#include "editor/ui/CoarseLevelJobs.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "scene/model/Scene.hpp"
 #include "support/GuiTestSupport.hpp"
 #include "support/TestPaths.hpp"
 
+#include <QTemporaryDir>
 #include <QUndoStack>
 #include <QWheelEvent>
 #include <QWindow>
@@ -82,6 +84,38 @@ protected:
 
     std::unique_ptr<ui::MainWindow> m_window;
 };
+
+// A big mesh seen in a mirror: the frames draw it whole while a worker builds its simplified level (the GUI
+// thread never waits seconds for it), then one more frame draws it at that level, and the view rests.
+TEST_F(IdleRedraw, ABigMeshInAMirrorIsSimplifiedOnAWorkerThenDrawnOnceMore) {
+    QTemporaryDir dir;
+    // A teapot of 32 patches × 64 × 64 × 2 = 262 144 triangles, above a floor mirror.
+    const QString path =
+        writeFileIn(dir, QStringLiteral("big.speculum.json"), R"({"format": "speculum-scene", "version": 1,
+          "camera": {"position": [0, 1.5, 4], "target": [0, 0, 0], "fovY": 50, "near": 0.1, "far": 50},
+          "nodes": [
+            {"name": "Teapot", "transform": {"translate": [0, 0.3, 0], "scale": [0.3, 0.3, 0.3]},
+             "mesh": {"builtin": "teapot", "tessellation": 64}},
+            {"name": "Floor", "mirror": {"size": [4, 4]}},
+            {"name": "Light", "transform": {"translate": [1, 3, 2]}, "light": {"type": "point"}}]})");
+    ASSERT_FALSE(path.isEmpty());
+    bool drawnWholeMeanwhile = false;
+    const QMetaObject::Connection watch = QObject::connect(
+        &viewport(), &ui::Viewport::frameRendered, [&](const render::FrameReport& report, double) {
+            for (const render::PlannedPass& pass : report.plan.passes)
+                for (const render::ReflectedMesh& mesh : pass.details.bigMeshes)
+                    drawnWholeMeanwhile = drawnWholeMeanwhile || (mesh.name == "Teapot" && mesh.simplifying);
+        });
+    auto status = m_window->openProjectFile(path);
+    ASSERT_TRUE(status.ok()) << status.error();
+    EXPECT_TRUE(waitFor([&] { return !viewport().lastReport().plan.coarseItems.empty(); }, 60000))
+        << "the mirror never drew the teapot's simplified level";
+    QObject::disconnect(watch);
+    EXPECT_TRUE(drawnWholeMeanwhile) << "a frame waited for the level instead of drawing the teapot whole";
+    EXPECT_EQ(viewport().coarseLevelJobs().pending(), 0);
+    framesOver(kSettleMs);
+    EXPECT_EQ(framesOver(kIdleMs), 0) << "with the level drawn, the view rests";
+}
 
 TEST_F(IdleRedraw, AStaticDemoDrawsNothingWhileLeftAlone) {
     open(kChromeProject);

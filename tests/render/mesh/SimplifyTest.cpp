@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <limits>
+#include <thread>
+#include <vector>
 
 namespace speculum::render {
 namespace {
@@ -21,7 +23,9 @@ MeshData bigSphere() {
 
 TEST(Simplify, ABigMeshGetsACoarseLevelWithinItsErrorBound) {
     const MeshHandle mesh = freezeMesh(bigSphere());
-    const CoarseLevel& coarse = mesh->coarse;
+    EXPECT_EQ(mesh->coarse.ready(), nullptr) << "freezing a mesh must not pay for a level nobody asked for";
+    const CoarseLevel& coarse = coarseLevel(*mesh);
+    EXPECT_EQ(mesh->coarse.ready(), &coarse) << "built once, then kept";
     ASSERT_FALSE(coarse.indices.empty());
     EXPECT_EQ(coarse.indices.size() % 3, 0u);
     EXPECT_LE(coarse.triangleCount(), mesh->triangleCount() * 3 / 4) << "too little gained to keep it";
@@ -42,35 +46,47 @@ TEST(Simplify, ABigMeshGetsACoarseLevelWithinItsErrorBound) {
 }
 
 TEST(Simplify, SmallMeshesAreAlwaysDrawnWhole) {
-    EXPECT_TRUE(freezeMesh(makeSphere())->coarse.indices.empty());
-    EXPECT_TRUE(freezeMesh(makeBox())->coarse.indices.empty());
-    EXPECT_TRUE(freezeMesh(MeshData{})->coarse.indices.empty());
+    EXPECT_TRUE(coarseLevel(*freezeMesh(makeSphere())).indices.empty());
+    EXPECT_TRUE(coarseLevel(*freezeMesh(makeBox())).indices.empty());
+    EXPECT_TRUE(coarseLevel(*freezeMesh(MeshData{})).indices.empty());
 }
 
 TEST(Simplify, NonFinitePositionsGetNoCoarseLevel) {
     MeshData sphere = bigSphere();
     sphere.positions[7].x = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_TRUE(freezeMesh(std::move(sphere))->coarse.indices.empty());
+    EXPECT_TRUE(coarseLevel(*freezeMesh(std::move(sphere))).indices.empty());
 }
 
 TEST(Simplify, ACopyDropsTheLevelAndAMoveKeepsIt) {
     const MeshHandle mesh = freezeMesh(bigSphere());
-    ASSERT_FALSE(mesh->coarse.indices.empty());
+    ASSERT_FALSE(coarseLevel(*mesh).indices.empty());
     MeshData copy = *mesh;
-    EXPECT_TRUE(copy.coarse.indices.empty()) << "a copy may be edited: its original's level would be stale";
+    EXPECT_EQ(copy.coarse.ready(), nullptr) << "a copy may be edited: its original's level would be stale";
     // A copy edited and frozen gets a level of its own, over its own triangles.
     copy.indices.resize(copy.indices.size() / 6 * 3); // half the triangles
     const MeshHandle edited = freezeMesh(std::move(copy));
-    for (std::uint32_t index : edited->coarse.indices)
+    for (std::uint32_t index : coarseLevel(*edited).indices)
         ASSERT_LT(index, edited->vertexCount());
 
     MeshData moved = bigSphere();
-    moved.coarse.indices = {0, 1, 2};
-    moved.coarse.error = 0.25f;
+    moved.coarse.set(CoarseLevel{{0, 1, 2}, 0.25f});
     const MeshHandle kept = freezeMesh(std::move(moved));
-    EXPECT_EQ(kept->coarse.indices, (std::vector<std::uint32_t>{0, 1, 2}))
-        << "a level that came with the mesh (read back from the import process) is kept";
-    EXPECT_EQ(kept->coarse.error, 0.25f);
+    ASSERT_NE(kept->coarse.ready(), nullptr) << "a level that came with the mesh is kept";
+    EXPECT_EQ(coarseLevel(*kept).indices, (std::vector<std::uint32_t>{0, 1, 2})) << "and not built again";
+    EXPECT_EQ(coarseLevel(*kept).error, 0.25f);
+}
+
+TEST(Simplify, ThreadsAskingAtOnceShareOneBuild) {
+    const MeshHandle mesh = freezeMesh(bigSphere());
+    std::vector<const CoarseLevel*> seen(4, nullptr);
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < seen.size(); ++i)
+        threads.emplace_back([&, i] { seen[i] = &coarseLevel(*mesh); });
+    for (std::thread& thread : threads)
+        thread.join();
+    for (const CoarseLevel* level : seen)
+        EXPECT_EQ(level, mesh->coarse.ready());
+    EXPECT_FALSE(mesh->coarse.ready()->indices.empty());
 }
 
 } // namespace

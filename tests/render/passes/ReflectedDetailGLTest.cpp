@@ -1,10 +1,12 @@
 // Reflected views draw a mesh's simplified level (MeshData::coarse) where the plan says so, and the
 // camera's own view always draws it whole. The mesh here is two boxes whose "simplified level" is made by
 // hand to hold only the left one, so the image shows which list each view drew.
+#include "render/mesh/Simplify.hpp"
 #include "support/GlTest.hpp"
 #include "support/SceneBuilder.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <vector>
 
 namespace speculum::test {
 namespace {
@@ -27,8 +29,8 @@ MeshHandle twoBoxesCoarselyOne() {
         for (std::uint32_t index : box.indices)
             mesh.indices.push_back(base + index);
     }
-    mesh.coarse.indices.assign(mesh.indices.begin(),
-                               mesh.indices.begin() + std::ptrdiff_t(box.indices.size()));
+    mesh.coarse.set(
+        CoarseLevel{{mesh.indices.begin(), mesh.indices.begin() + std::ptrdiff_t(box.indices.size())}, 0.0f});
     return freezeMesh(std::move(mesh)); // moved: the hand-made level is kept
 }
 
@@ -119,6 +121,57 @@ TEST_P(ReflectedDetailInTheMap, TheBallReflectsTheSimplifiedLevel) {
             EXPECT_GT(right, 3);
         }
     }
+}
+
+// A mesh's simplified level is built only when a reflected view first needs it: by the frame itself by
+// default (a still waits for it), or by whoever the renderer hands it to (the editor's worker), the frame
+// drawing the mesh whole meanwhile.
+class CoarseLevelOnDemand : public GlTest {
+protected:
+    static FrameInput withBigSphere(FrameInput input, const MeshHandle& big) {
+        input.items.clear();
+        input.items.push_back(
+            item("Statue", big, placed({0.0, 0.0, 9.0}, glm::dvec3(1.0)), emissive({1, 1, 1})));
+        return input;
+    }
+};
+
+TEST_F(CoarseLevelOnDemand, AStillBuildsTheLevelItsMirrorNeedsAndDrawsWithIt) {
+    const MeshHandle big = freezeMesh(makeSphere(256));
+    ASSERT_GT(big->triangleCount(), kSimplifyAboveTriangles);
+    FrameInput unreflected = withBigSphere(scene(MirrorTechnique::Stencil, true), big);
+    unreflected.mirrors.clear();
+    renderImage(unreflected, kWidth, kHeight);
+    EXPECT_EQ(big->coarse.ready(), nullptr) << "nothing reflects the mesh: its level is never built";
+
+    renderImage(withBigSphere(scene(MirrorTechnique::Stencil, true), big), kWidth, kHeight);
+    ASSERT_NE(big->coarse.ready(), nullptr) << "the mirror needed it: built within the frame";
+    EXPECT_EQ(lastReport().plan.coarseItems, (std::vector<bool>{true})) << "and drawn with at once";
+    EXPECT_TRUE(lastReport().plan.coarseLevelsWanted.empty());
+}
+
+TEST_F(CoarseLevelOnDemand, WithARequestTheFrameDrawsTheMeshWholeUntilTheLevelIsReady) {
+    const MeshHandle big = freezeMesh(makeSphere(256));
+    std::vector<MeshHandle> asked;
+    renderer().setCoarseLevelRequest([&](const std::vector<MeshHandle>& meshes) {
+        asked.insert(asked.end(), meshes.begin(), meshes.end());
+    });
+    const FrameInput input = withBigSphere(scene(MirrorTechnique::Texture, true), big);
+    const auto whole = litHalves(renderImage(input, kWidth, kHeight));
+    EXPECT_EQ(asked, (std::vector<MeshHandle>{big}));
+    EXPECT_EQ(big->coarse.ready(), nullptr) << "the frame did not build it itself";
+    EXPECT_TRUE(lastReport().plan.coarseItems.empty());
+    EXPECT_GT(whole.first + whole.second, 20) << "the reflection shows the mesh, whole";
+
+    coarseLevel(*big); // what the request's worker does
+    asked.clear();
+    const auto simplified = litHalves(renderImage(input, kWidth, kHeight));
+    EXPECT_TRUE(asked.empty()) << "a built level is not asked for again";
+    EXPECT_EQ(lastReport().plan.coarseItems, (std::vector<bool>{true}));
+    // The simplified sphere covers the same pixels within its error bound: an uploaded level, not garbage.
+    const int wholePixels = whole.first + whole.second;
+    const int simplifiedPixels = simplified.first + simplified.second;
+    EXPECT_NEAR(simplifiedPixels, wholePixels, wholePixels / 20 + 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothFills, ReflectedDetailInTheMap,
