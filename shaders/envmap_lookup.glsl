@@ -195,4 +195,12 @@ vec4 envmapLookup2DLod(sampler2DArray map, int type, vec4 mapLayout, vec3 d, vec
     return textureLod(map, vec3(uv, float(component)), max(lod, footprint));
 }
 
+// A lookup at exactly `lod`: for a chain whose levels are not resolutions (the GGX pre-filtered chain).
+vec4 envmapLookup2DAtLod(sampler2DArray map, int type, vec4 mapLayout, vec3 d, float lod) {
+    d = normalize(d);
+    int component = envmapComponent(type, d);
+    vec2 uv = mapLayout.zw + mapLayout.xy * envmapUv(type, component, d);
+    return textureLod(map, vec3(uv, float(component)), lod);
+}
+
 #endif

@@ -21,28 +21,53 @@ uniform int uParallax;          // 0 off, 1 sphere, 2 box
 uniform float uParallaxRadius;
 uniform vec3 uParallaxMin;      // relative to the capture point
 uniform vec3 uParallaxMax;
-uniform int uRough;             // roughness > 0: one lookup at an explicit LOD in the bound texture
+uniform int uRough;             // roughness > 0: one lookup at an explicit LOD in the bound texture,
+                                // REFLECTOR_MIP_LEVELS or REFLECTOR_GGX_CHAIN
 uniform float uRoughnessLod;    // roughness × (levels − 1) of that texture (ReflectorPass::drawSurface)
 uniform float uRoughness;
 
+const int REFLECTOR_MIP_LEVELS = 1; // the map's own mip chain: level k is 2^k times coarser
+const int REFLECTOR_GGX_CHAIN = 2;  // the pre-filtered chain: level k is the lobe of roughness k / (levels − 1)
+
 out vec4 fragColor;
 
-// Parallax correction: the point where the reflected ray from the shaded point leaves the proxy, seen
-// from the capture point. A ray that never meets the proxy (the point outside it) keeps its direction.
-vec3 parallaxDirection(vec3 p, vec3 r) {
+// Parallax correction: the point where the reflected ray from the shaded point p leaves the proxy, seen
+// from the capture point (xyz), and how far along the ray that is (w). A ray that never meets the proxy
+// (the point outside it) keeps its direction, and w is 0.
+vec4 parallaxHit(vec3 p, vec3 r) {
     if (uParallax == 1) {
         float b = dot(p, r);
         float c = dot(p, p) - uParallaxRadius * uParallaxRadius;
         float disc = b * b - c;
         float t = -b + sqrt(max(disc, 0.0));
-        return (disc >= 0.0 && t > 0.0) ? p + t * r : r;
+        return (disc >= 0.0 && t > 0.0) ? vec4(p + t * r, t) : vec4(r, 0.0);
     }
     vec3 safe = mix(vec3(1e-20), r, greaterThan(abs(r), vec3(1e-20)));
     vec3 t1 = (uParallaxMin - p) / safe;
     vec3 t2 = (uParallaxMax - p) / safe;
     vec3 tFar = max(t1, t2);
     float t = min(tFar.x, min(tFar.y, tFar.z));
-    return t > 0.0 ? p + t * r : r;
+    return t > 0.0 ? vec4(p + t * r, t) : vec4(r, 0.0);
+}
+
+// The LOD of a lookup in the GGX chain, whose levels are roughnesses (level k: k / (levels − 1)), not
+// resolutions: a lookup reads the roughness whose lobe covers both the surface's lobe and the pixel's
+// footprint. A lobe's width goes with α = roughness², the two widths add in squares, and the pixel's
+// footprint (dd radians of direction a pixel) counts as a lobe of α = dd / 2 (the lobe turns the ray by
+// about 2α).
+//
+// The glossy near field: the chain was filtered as seen from the capture point, a lobe w wide there. From
+// the shaded point, the lobe meets the proxy `along` away and covers about along·w of it, which the
+// capture point sees `hit` away as an angle (along / hit)·w: the nearer the proxy, the sharper its
+// reflection. Without a proxy hit (hit.w = 0), the lobe as captured.
+float chainLod(vec4 hit, vec3 dDdx, vec3 dDdy) {
+    float alpha = uRoughness * uRoughness;
+    if (hit.w > 0.0)
+        alpha *= clamp(hit.w / max(length(hit.xyz), 1e-6), 0.0, 1.0);
+    float pixel = 0.5 * sqrt(max(dot(dDdx, dDdx), dot(dDdy, dDdy)));
+    float roughness = sqrt(sqrt(alpha * alpha + pixel * pixel));
+    float levelsBelow = uRoughnessLod / uRoughness; // levels − 1
+    return clamp(roughness * levelsBelow, 0.0, levelsBelow);
 }
 
 void main() {
@@ -51,22 +76,30 @@ void main() {
         N = -N;
     vec3 E = normalize(uEye - vWorld);
     vec3 R = envmapReflection(E, N);
-    vec3 dir = uParallax != 0 ? parallaxDirection(vWorld - uEnvCentre, normalize(R)) : R;
-    vec3 d = normalize(uEnvMapFromWorld * dir);
+    vec4 hit = uParallax != 0 ? parallaxHit(vWorld - uEnvCentre, normalize(R)) : vec4(R, 0.0);
+    vec3 d = normalize(uEnvMapFromWorld * hit.xyz);
     // Screen derivatives of the unit direction: continuous across every seam, unlike those of texture
     // coordinates; the lookups turn them into an explicit LOD.
     vec3 dx = dFdx(d);
     vec3 dy = dFdy(d);
     vec3 environment;
-    if (uRough == 0)
+    if (uRough == 0) {
         environment = uEnvType == ENVMAP_CUBE ? envmapLookupCube(uEnvCube, d, dx, dy).rgb
                                               : envmapLookup2D(uEnvArray, uEnvType, uEnvLayout, d, dx, dy).rgb;
-    else
-        // The chain's levels are normalised blurs: the lobe's masking and shadowing come on top.
-        environment = (uEnvType == ENVMAP_CUBE ? envmapLookupCubeLod(uEnvCube, d, dx, dy, uRoughnessLod).rgb
-                                               : envmapLookup2DLod(uEnvArray, uEnvType, uEnvLayout, d, dx, dy,
-                                                                   uRoughnessLod).rgb) *
-                      ggxAlbedo(dot(N, E), uRoughness);
+    } else if (uRough == REFLECTOR_GGX_CHAIN) {
+        // Not the mip-level lookups: they would take the pixel's footprint as a level of resolution, which
+        // in this chain is a much wider lobe.
+        float lod = chainLod(hit, dx, dy);
+        environment = uEnvType == ENVMAP_CUBE ? textureLod(uEnvCube, d, lod).rgb
+                                              : envmapLookup2DAtLod(uEnvArray, uEnvType, uEnvLayout, d, lod).rgb;
+    } else {
+        environment = uEnvType == ENVMAP_CUBE ? envmapLookupCubeLod(uEnvCube, d, dx, dy, uRoughnessLod).rgb
+                                              : envmapLookup2DLod(uEnvArray, uEnvType, uEnvLayout, d, dx, dy,
+                                                                  uRoughnessLod).rgb;
+    }
+    // The chain's levels are normalised blurs: the lobe's masking and shadowing come on top.
+    if (uRough != 0)
+        environment *= ggxAlbedo(dot(N, E), uRoughness);
     float r = uReflectivity;
     if (uFresnel != 0) {
         // Schlick's approximation with the reflectivity as the value at normal incidence.

@@ -224,14 +224,16 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     p.set("uEnvCube", kEnvCubeUnit);
     p.set("uEnvArray", kEnvArrayUnit);
     // A rough reflector reads one texture at an explicit LOD: the pre-filtered chain (same target and
-    // layout as the map) at roughness × (levels − 1), or, for Mip (or without a chain), the map's own mip
+    // layout as the map) at the roughness that covers the lobe, narrowed by the proxy's distance, and the
+    // pixel's footprint (reflector.frag's chainLod), or, for Mip (or without a chain), the map's own mip
     // chain at roughness × (its levels − 1), box-filtered levels standing in for the lobe. Roughness 0
     // takes the sharp lookup, as before roughness existed.
     const double roughness = std::clamp(r.roughness, 0.0, 1.0);
     GLuint texture = map.texture();
     float lod = 0.0f;
+    bool chain = false;
     if (roughness > 0.0) {
-        const bool chain = input.settings.glossyFilter != GlossyFilter::Mip && hasChain(r);
+        chain = input.settings.glossyFilter != GlossyFilter::Mip && hasChain(r);
         const int levels =
             chain ? m_prefilter->levels()
                   : (map.settings().mipmaps ? envmap::mipLevelCount(map.layout().width, map.layout().height)
@@ -239,7 +241,7 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
         texture = chain ? m_prefilter->texture() : texture;
         lod = static_cast<float>(roughness * (levels - 1));
     }
-    p.set("uRough", roughness > 0.0 ? 1 : 0);
+    p.set("uRough", !(roughness > 0.0) ? 0 : chain ? 2 : 1); // reflector.frag's REFLECTOR_*
     p.set("uRoughnessLod", lod);
     p.set("uRoughness", float(roughness));
     p.set("uGgxAlbedo", kGgxAlbedoUnit);
