@@ -27,6 +27,8 @@ uniform float uFocalPx;   // pixels per unit of lateral offset at unit distance 
 uniform float uMaxLod;    // the reflection texture's last mip level
 uniform float uChainSigma; // > 0: the Chain filter, the lobe's deviation in tan 2θh per unit of α
 uniform vec2 uChainTail;   // the lobe's tail: its deviation as a multiple of the core's, and its weight
+uniform vec2 uChainTapsAbove; // the Chain filter blends from its Gaussians to taps between these roughnesses
+uniform int uChainTaps;       // and reads this many taps from there on
 uniform mat4 uViewProjection; // the parent view's (mesh.vert's), to find the mirror normal on screen
 uniform mat4 uReflection;
 
@@ -124,17 +126,18 @@ Footprint lobeFootprint(vec2 uv, vec3 normal, vec3 viewDir) {
     return f;
 }
 
-vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
-    Footprint f = lobeFootprint(uv, normal, viewDir);
+// `count` taps over the lobe (uGlossyTaps for the Footprint filter; the Chain filter's rough end reads
+// uChainTaps of them from its convolved levels).
+vec3 lobeTaps(vec2 uv, Footprint f, int count) {
     float scale = f.scale, cosView = f.cosView;
     vec2 along = f.along, across = f.across;
-    float taps = float(uGlossyTaps);
+    float taps = float(count);
     float footprintArea = kPi * (2.0 * scale * uGgxAlpha) * (2.0 * scale * uGgxAlpha) * cosView;
     float lod = clamp(0.5 * log2(max(footprintArea / taps, 1.0)), 0.0, uMaxLod);
     // Interleaved gradient noise: a rotation per pixel trades the sample pattern's ghosts for noise.
     float turn = 2.0 * kPi * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
     vec3 sum = vec3(0.0);
-    for (int k = 0; k < uGlossyTaps; ++k) {
+    for (int k = 0; k < count; ++k) {
         float u1 = (float(k) + 0.5) / taps;
         float u2 = radicalInverse(uint(k));
         // GGX: tan²θh = α² u / (1 − u); the reflection turns by 2θh. Capped: the lobe's far tail would
@@ -149,12 +152,16 @@ vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
     return sum / taps;
 }
 
-// The Chain filter: the lobe as two Gaussians in tan 2θh (a core of deviation uChainSigma·α and a wider
-// tail, uChainTail), each of that deviation along the plane of incidence and cos θ times it across (the
-// footprint's stretch), read from the convolved chain (shaders/mip_convolve.frag: level k is a Gaussian of
-// variance (4^k − 1)/4 texels²) at the level of the narrower axis, twice, ±d along the plane of incidence,
-// so that the two lookups spread the rest of the stretch (d² + the level's variance = the variance
-// along). The stretch is capped where two lookups would show as two images. Four lookups a pixel.
+vec3 glossyReflection(vec2 uv, vec3 normal, vec3 viewDir) {
+    return lobeTaps(uv, lobeFootprint(uv, normal, viewDir), uGlossyTaps);
+}
+
+// The Chain filter, up to roughness uChainTapsAbove.x: the lobe as two Gaussians in tan 2θh (a core of
+// deviation uChainSigma·α and a wider tail, uChainTail), each of that deviation along the plane of
+// incidence and cos θ times it across (the footprint's stretch), read from the convolved chain
+// (shaders/mip_convolve.frag: level k is a Gaussian of variance (4^k − 1)/4 texels²) at the level of the
+// narrower axis, twice, ±d along the plane of incidence, so that the two lookups spread the rest of the
+// stretch (d² + the level's variance = the variance along). Four lookups a pixel.
 // One Gaussian of deviation sigmaAlong (pixels) along the plane of incidence, in two lookups.
 vec3 chainLookups(vec2 uv, Footprint f, float sigmaAlong) {
     float sigmaLevel = max(sigmaAlong * f.cosView, 0.6 * sigmaAlong);
@@ -165,12 +172,28 @@ vec3 chainLookups(vec2 uv, Footprint f, float sigmaAlong) {
                   textureLod(uReflectionTexture, uv - offset, lod).rgb);
 }
 
-vec3 chainReflection(vec2 uv, vec3 normal, vec3 viewDir) {
-    Footprint f = lobeFootprint(uv, normal, viewDir);
+vec3 chainGaussians(vec2 uv, Footprint f) {
     float core = f.scale * uChainSigma * uGgxAlpha; // pixels
     vec3 narrow = chainLookups(uv, f, core);
     vec3 wide = chainLookups(uv, f, core * uChainTail.x);
     return mix(narrow, wide, uChainTail.y);
+}
+
+// Rougher, the lobe's wide share turns the ray off the screen, where the reflection texture has nothing:
+// a Gaussian that wide reads the coarsest levels, which spread what is on screen over all of it (6 dB off
+// the tracer at roughness 0.6), where the lobe's taps, clamped at the texture's edge, read what lies along
+// it. From uChainTapsAbove.y on, the chain reads uChainTaps taps of the lobe from its convolved levels,
+// whose Gaussian blur fills between the taps better than the plain mip chain does; in between, both,
+// blended, so that a roughness slider shows no jump.
+vec3 chainReflection(vec2 uv, vec3 normal, vec3 viewDir) {
+    Footprint f = lobeFootprint(uv, normal, viewDir);
+    float taps = clamp((uRoughness - uChainTapsAbove.x) / (uChainTapsAbove.y - uChainTapsAbove.x), 0.0, 1.0);
+    vec3 sum = vec3(0.0);
+    if (taps < 1.0)
+        sum += (1.0 - taps) * chainGaussians(uv, f);
+    if (taps > 0.0)
+        sum += taps * lobeTaps(uv, f, uChainTaps);
+    return sum;
 }
 
 void main() {

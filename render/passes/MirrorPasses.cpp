@@ -155,11 +155,17 @@ bool usesChain(const MirrorView& view, const Mirror& mirror) {
 constexpr double kChainCoreSigmaPerAlpha = 0.6;
 constexpr double kChainTailRatio = 3.5;
 constexpr double kChainTailWeight = 0.4;
+// Rougher than 0.4 the two Gaussians spill what is on screen over the lobe's off-screen share (21.5 dB
+// against the 16-tap footprint's 27.3 at roughness 0.6, whatever their widths); 12 taps read from the
+// convolved chain give 27.3 there (8 taps 26.2, 16 taps 27.8), so the Chain filter blends from its
+// Gaussians to 12 taps between roughness 0.4 and 0.5.
+constexpr glm::vec2 kChainTapsAbove{0.4f, 0.5f};
+constexpr int kChainTaps = 12;
 
 // A rough mirror's filter (shaders/mirror.frag). Mip: a level of the reflection texture set by the
 // roughness alone, up to 1/64 of its resolution at roughness 1 (the blur of old). Footprint: the GGX
-// lobe's taps, spread by the distance to what the mirror reflects. Chain: two lookups in the convolved
-// chain at the footprint's level.
+// lobe's taps, spread by the distance to what the mirror reflects. Chain: four lookups in the convolved
+// chain at the footprint's levels, or, rougher, taps read from it.
 void setGlossyUniforms(const FrameInput& input, const MirrorView& view, const Mirror& mirror,
                        const gl::Program& program, int reflectionLevels, glm::ivec2 targetSize) {
     const double roughness = std::clamp(mirror.roughness, 0.0, 1.0);
@@ -170,6 +176,8 @@ void setGlossyUniforms(const FrameInput& input, const MirrorView& view, const Mi
     program.set("uGlossyTaps", footprint ? glossyTapCount(input.settings) : 0);
     program.set("uChainSigma", chain ? float(kChainCoreSigmaPerAlpha) : 0.0f);
     program.set("uChainTail", glm::vec2(float(kChainTailRatio), float(kChainTailWeight)));
+    program.set("uChainTapsAbove", kChainTapsAbove);
+    program.set("uChainTaps", kChainTaps);
     program.set("uGgxAlpha", float(roughness * roughness));
     program.set("uRoughness", float(roughness));
     program.set("uGgxAlbedo", kGgxAlbedoUnit);

@@ -209,11 +209,11 @@ TEST_F(GlossyAgreement, FootprintErrorFallsWithTapsAndBeatsMip) {
     }
 }
 
-// The convolved chain (four lookups a pixel, whatever the roughness) against the 16-tap footprint, both
-// against the tracer on the mirror's pixels: within 1 dB of its PSNR at roughness 0.1 and 0.3, and better
-// than one mip level everywhere. At 0.6 it is not yet there (measured 21.5 against 27.3 dB: its wide
-// levels spill bright surroundings across the mirror), which the figure printed keeps in view.
-TEST_F(GlossyAgreement, ChainComesWithinOneDecibelOfSixteenTapsUpToRoughnessPointThree) {
+// The convolved chain (four lookups a pixel up to roughness 0.4, 12 taps of its levels from 0.5) against
+// the 16-tap footprint, both against the tracer on the mirror's pixels: within 1 dB of its PSNR at
+// roughness 0.1, 0.3 and 0.6, and better than one mip level everywhere. Measured on llvmpipe: 30.8 / 29.7,
+// 28.3 / 29.0 and 27.3 / 27.3 dB (chain / footprint).
+TEST_F(GlossyAgreement, ChainComesWithinOneDecibelOfSixteenTaps) {
     const int width = 160, height = 96, samples = 1024;
     for (double roughness : {0.1, 0.3, 0.6}) {
         SCOPED_TRACE("roughness " + std::to_string(roughness));
@@ -234,9 +234,7 @@ TEST_F(GlossyAgreement, ChainComesWithinOneDecibelOfSixteenTapsUpToRoughnessPoin
         const double taps16 = psnr(GlossyFilter::Footprint, "footprint16");
         const double chain = psnr(GlossyFilter::Chain, "chain");
         const double mip = psnr(GlossyFilter::Mip, "mip");
-        if (roughness < 0.5) {
-            EXPECT_GE(chain, taps16 - 1.0);
-        }
+        EXPECT_GE(chain, taps16 - 1.0);
         EXPECT_GT(chain, mip);
     }
 }
