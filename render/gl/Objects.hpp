@@ -120,11 +120,13 @@ private:
 };
 
 // For passes that fill targets of their own with full-screen draws (filters, pre-filters): turns off the
-// depth and stencil tests, blending and the scissor, and puts them and the viewport back as it found them.
+// depth and stencil tests, blending and the scissor, and puts them, the viewport and the scissor box back as
+// it found them.
 class PlainDrawState {
 public:
     PlainDrawState() {
         glGetIntegerv(GL_VIEWPORT, m_viewport);
+        glGetIntegerv(GL_SCISSOR_BOX, m_scissor);
         for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
             m_enabled[i] = glIsEnabled(kCapabilities[i]);
             glDisable(kCapabilities[i]);
@@ -132,6 +134,7 @@ public:
     }
     ~PlainDrawState() {
         glViewport(m_viewport[0], m_viewport[1], m_viewport[2], m_viewport[3]);
+        glScissor(m_scissor[0], m_scissor[1], m_scissor[2], m_scissor[3]);
         for (std::size_t i = 0; i < kCapabilities.size(); ++i)
             (m_enabled[i] ? glEnable : glDisable)(kCapabilities[i]);
     }
@@ -142,6 +145,7 @@ private:
     static constexpr std::array<GLenum, 4> kCapabilities{GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST,
                                                          GL_STENCIL_TEST};
     GLint m_viewport[4] = {};
+    GLint m_scissor[4] = {};
     std::array<GLboolean, 4> m_enabled{};
 };
 

@@ -96,7 +96,12 @@ PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame, cons
             frame.resources.reflectionTextures.at(static_cast<std::size_t>(pass.writes.readSlot));
         if (pass.writes.convolveMips) {
             FrameResources& r = frame.resources;
-            convolveMipChain(texture, r.mipConvolveProgram, r.convolveFramebuffer.id(), r.emptyVao.id());
+            const glm::dvec3& background = frame.input.settings.background;
+            // What the reflection pass cleared its texture to (bindWrites): the background, far away.
+            const glm::vec4 outside(float(background.r), float(background.g), float(background.b),
+                                    kFarPathLength);
+            convolveMipChain(texture, r.mipConvolveProgram, r.convolveFramebuffer.id(), r.emptyVao.id(),
+                             view.rect, outside);
         } else if (pass.writes.mipmaps) {
             texture.generateMipmaps();
         }

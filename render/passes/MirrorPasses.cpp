@@ -11,12 +11,6 @@
 
 namespace speculum::render::passes {
 
-namespace {
-// The alpha of a reflection texture's pixels that show no surface: as far as a path can be (the half
-// float's largest value), read by a rough mirror's blur (shaders/mirror.frag).
-constexpr float kFarPathLength = 65504.0f;
-} // namespace
-
 ViewSetup viewSetup(const ViewSpace& space, int viewIndex, bool clockwise) {
     ViewSetup setup;
     setup.cullOutside = space.frustum;

@@ -10,6 +10,10 @@
 
 namespace speculum::render::passes {
 
+// The alpha of a reflection texture's pixels that show no surface: as far as a path can be (the half
+// float's largest value), read by a rough mirror's blur (shaders/mirror.frag).
+inline constexpr float kFarPathLength = 65504.0f;
+
 class MirrorOcclusion;
 
 // What the views of a space draw beyond its input as it is: an environment map face draws each view

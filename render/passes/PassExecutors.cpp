@@ -67,7 +67,7 @@ void bindWrites(const PassWrites& writes, FrameExecution& frame, const ViewSpace
             scissorTo(*writes.scissor);
         const glm::dvec3& background = frame.input.settings.background;
         // A reflection texture's alpha holds path lengths (shaders/material.glsl): none is as far as can be.
-        const float alpha = writes.target == PassTarget::Reflection ? 65504.0f : 1.0f;
+        const float alpha = writes.target == PassTarget::Reflection ? kFarPathLength : 1.0f;
         glClearColor(float(background.r), float(background.g), float(background.b), alpha);
         glClearStencil(0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);

@@ -143,11 +143,10 @@ TEST_F(GlossyAgreement, RoughnessZeroIsTheSharpImageWhateverTheFilter) {
     ASSERT_EQ(sharp.width, width);
     EXPECT_EQ(lastReport().warnings.size(), 0u);
     dumpImage("glossy_roughness0", sharp);
-    for (GlossyFilter filter : {GlossyFilter::Mip, GlossyFilter::Footprint})
+    for (GlossyFilter filter : {GlossyFilter::Mip, GlossyFilter::Footprint, GlossyFilter::Chain})
         for (int taps : {1, 4, 16, 64}) {
             const render::Image other = renderWith(input, filter, taps, width, height).image;
-            EXPECT_TRUE(other.rgba == sharp.rgba)
-                << (filter == GlossyFilter::Mip ? "Mip" : "Footprint") << ", " << taps << " taps";
+            EXPECT_TRUE(other.rgba == sharp.rgba) << "filter " << int(filter) << ", " << taps << " taps";
         }
 }
 

@@ -128,7 +128,11 @@ TEST(GgxAlbedoTable, AgreesWithTheQuadratureOfTheLobe) {
     EXPECT_EQ(table.at(0.5, 0.0), 1.0) << "a perfect mirror loses nothing";
 }
 
-TEST_F(GlossyFurnace, RoughPlanarMirrorsReflectTheLobesAlbedoWithEitherFilter) {
+const char* filterName(GlossyFilter filter) {
+    return filter == GlossyFilter::Mip ? "mip" : filter == GlossyFilter::Chain ? "chain" : "footprint";
+}
+
+TEST_F(GlossyFurnace, RoughPlanarMirrorsReflectTheLobesAlbedoWithEveryFilter) {
     for (double roughness : {0.1, 0.3, 0.6, 1.0})
         for (double view : {0.0, 30.0, 60.0, 75.0, 85.0}) {
             const FrameInput input = floorFurnace(roughness, view);
@@ -141,12 +145,11 @@ TEST_F(GlossyFurnace, RoughPlanarMirrorsReflectTheLobesAlbedoWithEitherFilter) {
             // The tracer's own furnace (every view reads the same pixel, so the same random numbers: its
             // deviations from E run together).
             EXPECT_NEAR(exact.colour.g, expected, 4.0 * exact.noise + 1e-3);
-            for (GlossyFilter filter : {GlossyFilter::Footprint, GlossyFilter::Mip}) {
+            for (GlossyFilter filter : {GlossyFilter::Footprint, GlossyFilter::Mip, GlossyFilter::Chain}) {
                 const glm::dvec3 raster = rasterAt(input, filter, kSize, kSize, kCentre, kCentre);
                 std::printf(
                     "[ measured ] planar %-9s r %.1f view %2.0f°: raster %.4f, tracer %.4f ± %.4f, E %.4f\n",
-                    filter == GlossyFilter::Mip ? "mip" : "footprint", roughness, view, raster.g,
-                    exact.colour.g, exact.noise, expected);
+                    filterName(filter), roughness, view, raster.g, exact.colour.g, exact.noise, expected);
                 // E itself, to the table's reading between its nodes and the half-float buffer.
                 EXPECT_NEAR(raster.g, expected, 6e-3) << int(filter);
                 EXPECT_NEAR(raster.g, exact.colour.g, 4.0 * exact.noise + 6e-3) << int(filter);
@@ -163,11 +166,10 @@ TEST_F(GlossyFurnace, RoughReflectorReflectsTheLobesAlbedoWithEitherChain) {
         for (int x : {size / 2, rimX}) {
             const Traced exact = traceAt(input, size, size, x, size / 2);
             SCOPED_TRACE("roughness " + std::to_string(roughness) + ", pixel " + std::to_string(x));
-            for (GlossyFilter filter : {GlossyFilter::Footprint, GlossyFilter::Mip}) {
+            for (GlossyFilter filter : {GlossyFilter::Footprint, GlossyFilter::Mip, GlossyFilter::Chain}) {
                 const glm::dvec3 raster = rasterAt(input, filter, size, size, x, size / 2);
                 std::printf("[ measured ] reflector %-9s r %.1f px %d: raster %.4f, tracer %.4f ± %.4f\n",
-                            filter == GlossyFilter::Mip ? "mip" : "footprint", roughness, x, raster.g,
-                            exact.colour.g, exact.noise);
+                            filterName(filter), roughness, x, raster.g, exact.colour.g, exact.noise);
                 // The raster pixel's normal is interpolated over a tessellated sphere: a little more slack.
                 EXPECT_NEAR(raster.g, exact.colour.g, 4.0 * exact.noise + 1.5e-2) << int(filter);
             }
