@@ -3,12 +3,14 @@
 #include "app/HeadlessCommands.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
+#include "app/StandardOutput.hpp"
 #include "app/TimeCommand.hpp"
 #include "editor/ui/Editor.hpp"
 
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,32 @@ bool editorHasDisplay() {
            hasEnvironment("QT_QPA_PLATFORM");
 }
 
+// A command run without the editor; nothing for Command::Editor.
+std::optional<int> runCommand(const speculum::app::CliOptions& options) {
+    using namespace speculum::app;
+    switch (options.command) {
+    case Command::Help:
+        std::cout << options.helpText;
+        return 0;
+    case Command::Version:
+        std::cout << "speculum " << SPECULUM_VERSION << "\n";
+        return 0;
+    case Command::Render:
+        return runRender(options);
+    case Command::Explain:
+        return runExplain(options);
+    case Command::Bench:
+        return runBench(options);
+    case Command::Time:
+        return runTime(options);
+    case Command::Export:
+        return runExport(options);
+    case Command::Editor:
+        break;
+    }
+    return std::nullopt;
+}
+
 int run(int argc, char** argv) {
     using namespace speculum::app;
     const std::vector<std::string> args(argv + 1, argv + argc);
@@ -36,26 +64,8 @@ int run(int argc, char** argv) {
         return kUsageError;
     }
     Progress::setQuiet(options->quiet);
-    switch (options->command) {
-    case Command::Help:
-        std::cout << options->helpText;
-        return 0;
-    case Command::Version:
-        std::cout << "speculum " << SPECULUM_VERSION << "\n";
-        return 0;
-    case Command::Render:
-        return runRender(*options);
-    case Command::Explain:
-        return runExplain(*options);
-    case Command::Bench:
-        return runBench(*options);
-    case Command::Time:
-        return runTime(*options);
-    case Command::Export:
-        return runExport(*options);
-    case Command::Editor:
-        break;
-    }
+    if (const std::optional<int> status = runCommand(*options))
+        return finishStandardOutput(*status);
     if (!editorHasDisplay()) {
         printError("the editor needs a display (DISPLAY and WAYLAND_DISPLAY are unset); without one, use "
                    "'speculum render PROJECT -o OUT.png' (see speculum --help)");

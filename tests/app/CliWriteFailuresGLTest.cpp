@@ -156,4 +156,27 @@ TEST_F(CliWriteFailures, BenchKeepsThePreviousRunsOutput) {
     EXPECT_EQ(entries(m_dir), before) << "no staging folder or temporary left";
 }
 
+// Standard output on a full disk (/dev/full): the report, the JSON or the written file's path never arrives,
+// and every command says so in one line and fails, where it used to print half and exit 0.
+TEST_F(CliWriteFailures, OutputThatCannotReachStandardOutputFailsTheCommand) {
+    const std::string still = (m_dir / "still.png").string();
+    for (const std::string& arguments :
+         {"explain '" + demo() + "' --json", "explain '" + demo() + "'",
+          "time '" + demo() + "' --json --frames 2 -q", "time '" + demo() + "' --frames 2 -q",
+          "render '" + demo() + "' --size 32x18 -q -o '" + still + "'", std::string("--version"),
+          std::string("--help")}) {
+        const std::string command = speculum::testCliBinary() + " " + arguments + " >/dev/full 2>'" +
+                                    (m_errDir / "err.txt").string() + "'";
+        const int raw = std::system(("/bin/sh -c \"" + command + "\"").c_str());
+        const int status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+        const std::string err = readFile(m_errDir / "err.txt");
+        EXPECT_EQ(status, 1) << arguments << "\n" << err;
+        EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << arguments << ": one line\n" << err;
+        EXPECT_NE(err.find("could not write the output to standard output: No space left on device"),
+                  std::string::npos)
+            << arguments << "\n"
+            << err;
+    }
+}
+
 } // namespace
