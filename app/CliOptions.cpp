@@ -37,18 +37,17 @@ base::Result<int> parseInt(const std::string& option, const std::string& text, i
     return value;
 }
 
+// Plain decimal notation, as --ssaa and --size read their whole numbers: no spaces around it, no
+// hexadecimal floats ("0x1p1" is no way to write two seconds), no infinities.
 base::Result<double> parseTime(const std::string& text) {
-    try {
-        std::size_t used = 0;
-        const double value = std::stod(text, &used);
-        if (used != text.size() || !std::isfinite(value))
-            throw std::invalid_argument(text);
-        if (value < 0.0 || value > 1e7)
-            return Error{"--time: " + base::quoted(text) + " is out of range (0..1e7 seconds)"};
-        return value;
-    } catch (const std::exception&) {
+    double value = 0.0;
+    const auto [end, ec] =
+        std::from_chars(text.data(), text.data() + text.size(), value, std::chars_format::general);
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
         return Error{"--time: expected a number of seconds, got " + base::quoted(text)};
-    }
+    if (value < 0.0 || value > 1e7)
+        return Error{"--time: " + base::quoted(text) + " is out of range (0..1e7 seconds)"};
+    return value;
 }
 
 // explain --preview SCALE[,CUT]: the fraction of the width and height drawn, and the levels of mirror
@@ -281,6 +280,36 @@ std::string optionNamed(const std::string& what) {
     return what.substr(dash, end == std::string::npos ? std::string::npos : end - dash);
 }
 
+// How often the command line names `option` (as --name, --name=VALUE, -n or -nVALUE).
+int timesGiven(const CLI::Option& option, const std::vector<std::string>& words) {
+    int times = 0;
+    for (const std::string& word : words) {
+        for (const std::string& name : option.get_lnames())
+            times += word == "--" + name || word.starts_with("--" + name + "=") ? 1 : 0;
+        for (const std::string& name : option.get_snames())
+            times += word.starts_with("-" + name) && !word.starts_with("--") ? 1 : 0;
+    }
+    return times;
+}
+
+// Options that take a value, given twice (which of the two was meant?) or with an empty one (''),
+// refused with the option's name before any value is read.
+base::Status checkGivenOnceWithAValue(const CLI::App& app, const std::vector<std::string>& words,
+                                      bool parsed) {
+    for (const CLI::Option* option : app.get_options()) {
+        if (option->get_expected_min() == 0 || option->get_positional())
+            continue; // a flag, or PROJECT
+        const std::string name = option->get_name(false, false);
+        if (!parsed && timesGiven(*option, words) > 1)
+            return Error{name + ": given more than once"};
+        if (parsed && option->count() > 0 &&
+            std::all_of(option->results().begin(), option->results().end(),
+                        [](const std::string& value) { return value.empty(); }))
+            return Error{name + ": missing value"};
+    }
+    return base::Done{};
+}
+
 // explain's own options: which frame, and which preview of it.
 void addExplainOptions(CLI::App& app, Typed& typed, CliOptions& o) {
     app.add_option("--frame", typed.frame, "Explain the Nth of N identical frames (1..100)")->type_name("N");
@@ -340,6 +369,8 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
         app.add_flag("--keep-going", o.keepGoing, "A missing or unreadable model or texture is a warning");
     app.add_flag("-q,--quiet", o.quiet, "No progress on stderr (warnings and errors still)");
 
+    if (base::Status once = checkGivenOnceWithAValue(app, rest, false); !once)
+        return Error{once.error()};
     std::vector<std::string> reversed(rest.rbegin(), rest.rend()); // CLI11 reads the vector from its back
     try {
         app.parse(reversed);
@@ -359,6 +390,8 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
                          " --help)"};
         return Error{name + ": unexpected argument " + base::quoted(extra)};
     }
+    if (base::Status once = checkGivenOnceWithAValue(app, rest, true); !once)
+        return Error{once.error()};
     if (base::Status values = checkValues(typed, o); !values)
         return Error{values.error()};
     if (o.project.empty())

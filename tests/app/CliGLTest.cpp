@@ -123,6 +123,36 @@ TEST_F(Cli, OptionsTakeTheirValueAfterAnEqualsSignToo) {
         std::string::npos);
 }
 
+// Values are read one way for every option: an option given twice, or given an empty value, is refused
+// by name; numbers are plain decimals with nothing around them (a space, a hexadecimal float) for whole
+// numbers and seconds alike. Each is one line, status 2, nothing written.
+TEST_F(Cli, EveryOptionValueIsReadTheSameStrictWay) {
+    const fs::path out = m_dir / "strict.png";
+    const std::string render = "render " + demo() + " --size 32x18 ";
+    const struct {
+        std::string arguments;
+        std::string said;
+    } cases[] = {
+        {render + "-o " + out.string() + " -o " + out.string(), "--output: given more than once"},
+        {render + "-o " + out.string() + " --output=" + out.string(), "--output: given more than once"},
+        {render + "-o " + out.string() + " --size 16x16", "--size: given more than once"},
+        {render + "-o " + out.string() + " --ssaa ''", "--ssaa: missing value"},
+        {render + "-o ''", "--output: missing value"},
+        {render + "-o " + out.string() + " --ssaa ' 1'", "--ssaa: expected a whole number, got ' 1'"},
+        {render + "-o " + out.string() + " --time ' 1'", "--time: expected a number of seconds, got ' 1'"},
+        {render + "-o " + out.string() + " --time 0x1p1",
+         "--time: expected a number of seconds, got '0x1p1'"},
+        {render + "-o " + out.string() + " --time inf", "--time: expected a number of seconds, got 'inf'"},
+    };
+    for (const auto& c : cases) {
+        const CliRun run = speculum(c.arguments);
+        EXPECT_EQ(run.status, 2) << c.arguments;
+        EXPECT_EQ(run.err, "speculum: error: " + c.said + "\n") << c.arguments;
+        EXPECT_FALSE(fs::exists(out)) << c.arguments;
+    }
+    EXPECT_EQ(speculum(render + "-o " + out.string() + " --time 1.5e0 -q").status, 0) << "a plain decimal";
+}
+
 // --quiet leaves stderr to warnings and errors; without it a log gets a line per tenth of the work, and a
 // terminal one line rewritten in place.
 TEST_F(Cli, ProgressIsQuietOnRequestSparseInALogAndOneLineOnATerminal) {
