@@ -16,8 +16,9 @@ FrameInput bigMeshInAMirror(bool built = true) {
     FrameInput input = test::cameraAtOrigin();
     input.mirrors.push_back(test::wall("Mirror", -6.0, true, 6.0));
     const MeshHandle big = freezeMesh(makeSphere(256));
-    if (built)
+    if (built) {
         EXPECT_FALSE(coarseLevel(*big).indices.empty());
+    }
     input.items.push_back({"Statue", glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -3)), big, {}, true});
     input.items.push_back(
         {"Box", glm::translate(glm::dmat4(1.0), glm::dvec3(1, 0, -3)), freezeMesh(makeBox()), {}, true});
