@@ -135,6 +135,7 @@ std::string unknownCommand(const std::string& word) {
 std::string usageText() {
     return "usage:\n"
            "  speculum [PROJECT]                          open the editor\n"
+           "  speculum --recover FILE                     open the editor on an editor's recovery file\n"
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference [--samples N]] "
            "[--keep-going]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--preview SCALE[,CUT] "
@@ -429,6 +430,12 @@ base::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) 
     for (const auto& [word, command] : kNamed)
         if (first == word)
             return parseCommand(command, first, std::vector<std::string>(args.begin() + 1, args.end()));
+    if (first == "--recover") {
+        if (args.size() != 2 || args[1].empty())
+            return Error{"--recover takes one recovery file"};
+        o.recover = args[1];
+        return o;
+    }
     if (!first.empty() && first[0] == '-')
         return Error{"unknown option " + base::quoted(first) + " (see speculum --help)"};
     if (looksLikeCommand(first, args.size()))

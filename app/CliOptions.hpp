@@ -16,8 +16,11 @@ enum class Command { Editor, Render, Explain, Bench, Time, Export, Help, Version
 struct CliOptions {
     Command command = Command::Editor;
     std::string project; // PROJECT, empty for the editor with a new scene
-    std::string output;  // render -o, export -o
-    std::string outDir;  // bench --out
+    // The editor's --recover FILE: a recovery file another editor left (RecoveryStore), restored as the
+    // open document. Recovery's Restore in New Window starts an editor so.
+    std::string recover;
+    std::string output; // render -o, export -o
+    std::string outDir; // bench --out
     int width = 1280;
     int height = 720;
     bool sizeGiven = false; // --size was on the command line (bench picks its own default otherwise)

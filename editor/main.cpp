@@ -71,7 +71,7 @@ int run(int argc, char** argv) {
                    "'speculum render PROJECT -o OUT.png' (see speculum --help)");
         return 1;
     }
-    return speculum::ui::runEditor(argc, argv, options->project);
+    return speculum::ui::runEditor(argc, argv, options->project, options->recover);
 }
 
 } // namespace

@@ -21,7 +21,7 @@ void installDefaultSurfaceFormat() {
     QSurfaceFormat::setDefaultFormat(format);
 }
 
-int runEditor(int& argc, char** argv, const std::string& projectPath) {
+int runEditor(int& argc, char** argv, const std::string& projectPath, const std::string& recoveryPath) {
     // Both must precede the QApplication: the format is read when the first context is made, and shared
     // contexts let the viewport survive being re-parented (docking) without losing its GL objects.
     installDefaultSurfaceFormat();
@@ -38,8 +38,11 @@ int runEditor(int& argc, char** argv, const std::string& projectPath) {
 
     MainWindow window;
     QString openError;
-    if (!projectPath.empty()) {
-        base::Status status = window.openProjectFile(QString::fromStdString(projectPath));
+    const std::string& asked = projectPath.empty() ? recoveryPath : projectPath;
+    if (!asked.empty()) {
+        const QString path = QString::fromStdString(asked);
+        base::Status status =
+            projectPath.empty() ? window.restoreRecoveryFile(path) : window.openProjectFile(path);
         if (!status) {
             openError = QString::fromStdString(status.error());
         }
@@ -57,16 +60,16 @@ int runEditor(int& argc, char** argv, const std::string& projectPath) {
     // Paused, as a project opened from the File menu is: Space plays it. A paused view draws nothing
     // until something changes.
     window.show();
-    if (openError.isEmpty() && projectPath.empty()) {
+    if (openError.isEmpty() && asked.empty()) {
         // A previous session that crashed left unsaved work: offer it (only when no file was asked for).
         QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
     }
     if (!openError.isEmpty()) {
         // After the window is up, so the box has a parent on screen; the empty document stays open.
-        QTimer::singleShot(0, &window, [&window, openError, projectPath] {
+        QTimer::singleShot(0, &window, [&window, openError, asked] {
             QMessageBox::critical(
                 &window, QObject::tr("Open Project"),
-                QObject::tr("Could not open %1:\n\n%2").arg(QString::fromStdString(projectPath), openError));
+                QObject::tr("Could not open %1:\n\n%2").arg(QString::fromStdString(asked), openError));
         });
     }
     return app.exec();

@@ -141,6 +141,7 @@ base::Status MainWindow::openProjectFile(const QString& path) {
     // A running import's result was meant for the old document.
     cancelImports();
     m_recovery->discard();
+    m_restoredEdits.clear();
     for (const auto& w : warnings) {
         logMessage(QString::fromStdString(w));
     }
@@ -161,6 +162,7 @@ base::Status MainWindow::saveProjectFile(const QString& path) {
         return status;
     }
     m_recovery->discard(); // saved: nothing left to recover
+    m_restoredEdits.clear();
     QSettings().setValue(kLastFolderKey, QFileInfo(absolute).absolutePath());
     addRecentFile(absolute);
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(absolute).fileName()), 5000);
@@ -172,6 +174,7 @@ void MainWindow::newProject() {
     cancelImports();                                         // what they bring was meant for the old document
     m_session->replace(document::newSceneData(), QString()); // a floor, a sun, a raised camera
     m_recovery->discard();
+    m_restoredEdits.clear();
     updateTitle(); // the clock starts over on the scene's reset (createTimeline)
 }
 
@@ -181,69 +184,6 @@ void MainWindow::logMessage(const QString& message) {
         m_log->appendPlainText(message);
     }
     qInfo("%s", qPrintable(message));
-}
-
-// ---- recovery ----
-
-void MainWindow::setRecoveryStore(const scene::RecoveryStore& store) {
-    m_recovery = std::make_unique<scene::RecoveryStore>(store);
-}
-
-base::Status MainWindow::autosaveNow() {
-    if (!isModified()) {
-        return base::Done{};
-    }
-    rememberEditorView();
-    base::Status status = m_recovery->write(scene().toData(), scene().projectPath());
-    if (!status) {
-        logMessage(tr("Autosave failed: %1").arg(QString::fromStdString(status.error())));
-    }
-    return status;
-}
-
-base::Status MainWindow::restoreRecovery(const scene::RecoveryStore::Recovered& recovered) {
-    std::vector<std::string> warnings;
-    auto data = scene::RecoveryStore::load(recovered, warnings);
-    if (!data) {
-        return base::Error{data.error()};
-    }
-    cancelImports();
-    m_session->replace(std::move(*data), recovered.originalPath, true); // modified until saved
-    scene::RecoveryStore::remove(recovered);
-    autosaveNow(); // this session now owns the unsaved document
-    logMessage(
-        tr("Restored unsaved changes of %1 from %2")
-            .arg(recovered.originalPath.isEmpty() ? tr("an untitled document") : recovered.originalPath,
-                 recovered.savedAt.toLocalTime().toString()));
-    updateTitle();
-    return base::Done{};
-}
-
-void MainWindow::offerRecovery() {
-    const auto orphans = m_recovery->orphans();
-    if (orphans.empty()) {
-        return;
-    }
-    const auto& newest = orphans.front();
-    const QString name = newest.originalPath.isEmpty() ? tr("an untitled document")
-                                                       : QFileInfo(newest.originalPath).fileName();
-    const auto answer = QMessageBox::question(
-        this, tr("Recover Unsaved Changes"),
-        tr("speculum did not shut down properly. Unsaved changes to %1 from %2 were kept.\n\n"
-           "Do you want to restore them?")
-            .arg(name, newest.savedAt.toLocalTime().toString(QLocale().dateTimeFormat(QLocale::ShortFormat))),
-        QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
-    if (answer == QMessageBox::Yes) {
-        if (auto status = restoreRecovery(newest); !status) {
-            QMessageBox::critical(this, tr("Recover Unsaved Changes"),
-                                  QString::fromStdString(status.error()));
-        }
-    } else {
-        scene::RecoveryStore::remove(newest);
-    }
-    for (std::size_t i = 1; i < orphans.size(); ++i) {
-        scene::RecoveryStore::remove(orphans[i]); // older ones: only the newest is offered
-    }
 }
 
 // ---- layout and recent files ----

@@ -140,10 +140,22 @@ public:
     // Writes the recovery file now if there are unsaved changes (the timer does it every 30 s, or every
     // SPECULUM_AUTOSAVE_SECONDS).
     base::Status autosaveNow();
-    // Loads an orphaned recovery file as the open document, marked modified and titled as its project.
+    // Loads an orphaned recovery file as the open document, marked modified and titled as its project;
+    // the orphan's files are removed once this editor's own recovery file holds the document.
     base::Status restoreRecovery(const scene::RecoveryStore::Recovered& recovered);
-    // At start-up: asks whether to restore documents of a crashed session (declined ones are removed).
-    void offerRecovery();
+    // The same for the recovery file at scenePath (the editor's --recover, from another editor's dialog).
+    base::Status restoreRecoveryFile(const QString& scenePath);
+    // Starts another editor that restores `recovered` (RecoveryDialog's Restore in New Window).
+    base::Status restoreInNewEditor(const scene::RecoveryStore::Recovered& recovered);
+    // The program restoreInNewEditor starts; this program unless set (tests name the speculum binary).
+    void setNewEditorProgram(const QString& program) { m_newEditorProgram = program; }
+    // At start-up and from File ▸ Recover Unsaved Changes: lists every document editors that stopped left
+    // unsaved (RecoveryDialog); each is restored or discarded by name, the rest kept for later.
+    // sayWhenNothing: a message when there is nothing to recover (the menu; start-up stays silent).
+    void offerRecovery(bool sayWhenNothing = false);
+    // The edits not yet saved, oldest first (named in the recovery note): those of a restored document,
+    // then the undo stack's since the save.
+    QStringList unsavedEdits() const;
 
     // Window layout and dock state from the last session (QSettings).
     void restoreLayout();
@@ -230,6 +242,8 @@ private:
     AccuracyPanel* m_accuracyPanel = nullptr;
     int m_propertiesWidth = 0; // the Properties dock's width before the Accuracy panel opened beside it
     std::unique_ptr<scene::RecoveryStore> m_recovery;
+    QStringList m_restoredEdits; // the unsaved edits a restored recovery file named
+    QString m_newEditorProgram;
     QTimer m_autosave;
 
     QMenu* m_viewMenu = nullptr;

@@ -469,6 +469,8 @@ void MainWindow::createFileMenu() {
             &QAction::triggered, this, &MainWindow::onSave);
     connect(makeAction(file, QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs),
             &QAction::triggered, this, &MainWindow::onSaveAs);
+    connect(makeAction(file, QStringLiteral("actionRecover"), tr("Recover &Unsaved Changes…")),
+            &QAction::triggered, this, [this] { offerRecovery(true); });
     file->addSeparator();
     connect(makeAction(file, QStringLiteral("actionImportModel"), tr("&Import Model…"),
                        QKeySequence(Qt::CTRL | Qt::Key_I)),

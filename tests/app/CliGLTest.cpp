@@ -151,6 +151,11 @@ TEST_F(Cli, EveryOptionValueIsReadTheSameStrictWay) {
         EXPECT_FALSE(fs::exists(out)) << c.arguments;
     }
     EXPECT_EQ(speculum(render + "-o " + out.string() + " --time 1.5e0 -q").status, 0) << "a plain decimal";
+    for (const std::string recover : {"--recover", "--recover ''", "--recover a b"}) {
+        const CliRun run = speculum(recover);
+        EXPECT_EQ(run.status, 2) << recover;
+        EXPECT_EQ(run.err, "speculum: error: --recover takes one recovery file\n") << recover;
+    }
 }
 
 // --quiet leaves stderr to warnings and errors; without it a log gets a line per tenth of the work, and a

@@ -8,6 +8,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFile>
 #include <filesystem>
 #include <gtest/gtest.h>
 
@@ -63,6 +64,103 @@ TEST(Recovery, RunningEditorsAreNotOrphansAndDiscardCleansUp) {
     EXPECT_TRUE(other.orphans().empty()) << "the writer is alive";
     mine.discard();
     EXPECT_TRUE(QDir(dir).entryList(QDir::Files).isEmpty());
+}
+
+QByteArray bytesOf(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+SceneData sceneWithMirrors(int mirrors) {
+    SceneData data;
+    for (int i = 0; i < mirrors; ++i) {
+        data.nodes.push_back(makeNode(NewNodeKind::Mirror));
+    }
+    return data;
+}
+
+TEST(Recovery, EveryCrashedEditorsDocumentIsOfferedWithItsEdits) {
+    const QString dir = folder();
+    ASSERT_TRUE(
+        RecoveryStore(dir, kDeadPid)
+            .write(sceneWithMirrors(1), QStringLiteral("/p/a.speculum.json"), {QStringLiteral("Add Mirror")})
+            .ok());
+    ASSERT_TRUE(RecoveryStore(dir, kDeadPid + 1)
+                    .write(sceneWithMirrors(2), QString(),
+                           {QStringLiteral("Add Mirror"), QStringLiteral("Move Mirror")})
+                    .ok());
+    const RecoveryStore next(dir, QCoreApplication::applicationPid());
+    const RecoveryStore::Scan scan = next.scan();
+    ASSERT_EQ(scan.recoverable.size(), 2u) << "both documents, not only the newest";
+    EXPECT_TRUE(scan.unreadable.empty());
+    QStringList projects;
+    for (const auto& r : scan.recoverable) {
+        projects << r.originalPath;
+        EXPECT_FALSE(r.changes.isEmpty());
+    }
+    EXPECT_TRUE(projects.contains(QStringLiteral("/p/a.speculum.json")));
+    EXPECT_TRUE(projects.contains(QString())) << "the untitled one too";
+    // Listing changes nothing: both are offered again, whatever the first list was answered with.
+    EXPECT_EQ(next.scan().recoverable.size(), 2u);
+    std::vector<std::string> warnings;
+    for (const auto& r : scan.recoverable) {
+        auto data = RecoveryStore::load(r, warnings);
+        ASSERT_TRUE(data.ok()) << data.error();
+        EXPECT_EQ(data->nodes.size(), r.originalPath.isEmpty() ? 2u : 1u);
+        EXPECT_EQ(r.changes.size(), r.originalPath.isEmpty() ? 2 : 1);
+    }
+}
+
+TEST(Recovery, AnUnreadableRecoveryIsKeptAsideNeverDeletedAndTheOthersStillOffered) {
+    const QString dir = folder();
+    RecoveryStore older(dir, kDeadPid);
+    ASSERT_TRUE(older.write(sceneWithMirrors(1), QStringLiteral("/p/older.speculum.json")).ok());
+    RecoveryStore newer(dir, kDeadPid + 1);
+    ASSERT_TRUE(newer.write(sceneWithMirrors(3), QStringLiteral("/p/newer.speculum.json")).ok());
+    // The newest recovery file cut short, as a crash during a write on a filesystem without rename
+    // atomicity, or a full disk, can leave it.
+    QByteArray truncated = bytesOf(newer.scenePath());
+    truncated.truncate(truncated.size() / 2);
+    {
+        QFile cut(newer.scenePath());
+        ASSERT_TRUE(cut.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        cut.write(truncated);
+    }
+
+    const RecoveryStore next(dir, QCoreApplication::applicationPid());
+    const RecoveryStore::Scan scan = next.scan();
+    ASSERT_EQ(scan.recoverable.size(), 1u) << "the older, valid one is still offered";
+    EXPECT_EQ(scan.recoverable.front().originalPath, QStringLiteral("/p/older.speculum.json"));
+    EXPECT_TRUE(QFile::exists(older.scenePath()));
+    ASSERT_EQ(scan.unreadable.size(), 1u);
+    const auto& bad = scan.unreadable.front();
+    EXPECT_EQ(bad.recovered.originalPath, QStringLiteral("/p/newer.speculum.json"));
+    EXPECT_NE(bad.reason.find("JSON"), std::string::npos) << bad.reason;
+    EXPECT_TRUE(bad.keptAt.startsWith(next.quarantineFolder())) << bad.keptAt.toStdString();
+    EXPECT_EQ(bytesOf(bad.keptAt), truncated) << "kept as it was, byte for byte";
+    EXPECT_FALSE(QFile::exists(newer.scenePath()));
+
+    // Not offered again, and still kept.
+    const RecoveryStore::Scan again = next.scan();
+    EXPECT_EQ(again.recoverable.size(), 1u);
+    EXPECT_TRUE(again.unreadable.empty());
+    EXPECT_TRUE(QFile::exists(bad.keptAt));
+}
+
+TEST(Recovery, AFileIsTakenOverOnlyWhenItIsAnOrphanOfThisFolder) {
+    const QString dir = folder();
+    RecoveryStore crashed(dir, kDeadPid);
+    ASSERT_TRUE(crashed.write(sceneWithMirrors(1), QString(), {QStringLiteral("Add Mirror")}).ok());
+    const RecoveryStore next(dir, QCoreApplication::applicationPid());
+    const auto found = next.orphanAt(crashed.scenePath());
+    ASSERT_TRUE(found.ok()) << found.error();
+    EXPECT_EQ(found->changes, QStringList{QStringLiteral("Add Mirror")});
+
+    RecoveryStore mine(dir, QCoreApplication::applicationPid());
+    ASSERT_TRUE(mine.write(sceneWithMirrors(1), QString()).ok());
+    EXPECT_FALSE(RecoveryStore(dir, kDeadPid + 5).orphanAt(mine.scenePath()).ok())
+        << "a running editor's file is its own";
+    EXPECT_FALSE(next.orphanAt(QStringLiteral("/etc/passwd")).ok());
 }
 
 } // namespace
