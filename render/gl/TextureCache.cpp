@@ -59,6 +59,36 @@ void upload(const TextureImage& image, TextureUse use) {
                  values.data());
 }
 
+// The image to upload for `source`: its own decoded image (returned), else its file read within the GPU's
+// texture size or the checker, either one left in `loaded` (and null returned). Each stand-in and each file
+// read smaller than it is adds a warning.
+const TextureImage* imageFor(const TextureSource& source, TextureImage& loaded,
+                             std::vector<std::string>& warnings) {
+    if (source.image && complete(*source.image))
+        return source.image.get();
+    if (source.image) {
+        warnings.push_back("texture " + source.path +
+                           ": the decoded image has no pixels (showing a checker instead)");
+        loaded = checkerTexture();
+        return nullptr;
+    }
+    GLint maxTextureSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize);
+    TextureLimits limits;
+    limits.maxSide = std::clamp(static_cast<int>(maxTextureSize), 1, kMaxTextureSide);
+    std::string reduced;
+    auto file = loadTexture(source.path, limits, &reduced);
+    if (!file) {
+        warnings.push_back("texture " + source.path + ": " + file.error() + " (showing a checker instead)");
+        loaded = checkerTexture();
+        return nullptr;
+    }
+    if (!reduced.empty())
+        warnings.push_back(std::move(reduced));
+    loaded = std::move(*file);
+    return nullptr;
+}
+
 } // namespace
 
 TextureCache::Entry* TextureCache::entry(const TextureSource& source, TextureUse use) {
@@ -73,22 +103,7 @@ TextureCache::Entry* TextureCache::entry(const TextureSource& source, TextureUse
         m_textures.erase(it);
     }
     TextureImage loadedImage;
-    const TextureImage* image = source.image.get();
-    if (image && !complete(*image)) {
-        m_warnings.push_back("texture " + source.path +
-                             ": the decoded image has no pixels (showing a checker instead)");
-        image = nullptr;
-        loadedImage = checkerTexture();
-    } else if (!image) {
-        auto loaded = loadTexture(source.path);
-        if (loaded) {
-            loadedImage = std::move(*loaded);
-        } else {
-            m_warnings.push_back("texture " + source.path + ": " + loaded.error() +
-                                 " (showing a checker instead)");
-            loadedImage = checkerTexture();
-        }
-    }
+    const TextureImage* image = imageFor(source, loadedImage, m_warnings);
     Entry e;
     e.owner = source.image;
     e.texture = makeTexture();

@@ -116,10 +116,13 @@ int TextureSet::add(const TextureSource& source, TextureUse use) {
             m_textures.emplace_back(checkerTexture(), use);
         }
     } else {
-        auto loaded = loadTexture(source.path);
+        std::string reduced;
+        auto loaded = loadTexture(source.path, {}, &reduced);
         if (!loaded)
             m_warnings.push_back("texture " + source.path + ": " + loaded.error() +
                                  " (showing a checker instead)");
+        else if (!reduced.empty())
+            m_warnings.push_back(std::move(reduced));
         m_textures.emplace_back(loaded ? *loaded : checkerTexture(), use);
     }
     const int index = static_cast<int>(m_textures.size()) - 1;

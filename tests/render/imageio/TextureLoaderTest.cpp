@@ -1,13 +1,16 @@
 #include "render/imageio/TextureLoader.hpp"
 
 #include "render/image/ColorSpace.hpp"
+#include "support/BombPng.hpp"
 #include "support/TestFolder.hpp"
 
 #include <OpenImageIO/imageio.h>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -292,6 +295,126 @@ TEST(TextureLoader, AbsurdSizeIsRefused) {
     const base::Result<TextureImage> texture = loadTexture(path.string());
     ASSERT_FALSE(texture.ok());
     EXPECT_NE(texture.error().find("16384"), std::string::npos) << texture.error();
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The most memory this test program has held at once, in bytes.
+std::size_t peakResidentBytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<std::size_t>(usage.ru_maxrss) * 1024;
+}
+
+TEST(TextureLoader, ADecompressionBombIsRefusedBeforeItsDeclaredPixelsAreAllocated) {
+    const fs::path path = test::freshTestFolder() / "bomb.png";
+    speculum::test::writeBombPng(path);
+    const auto start = std::chrono::steady_clock::now();
+    const base::Result<TextureImage> texture = loadTexture(path.string());
+    EXPECT_LT(secondsSince(start), 1.0) << "69 bytes are refused at once, not after allocating 16384×16384";
+    ASSERT_FALSE(texture.ok()) << "the file holds a few bytes of its 2 GiB of texels";
+    EXPECT_NE(texture.error().find(path.string()), std::string::npos) << texture.error();
+    EXPECT_NE(texture.error().find("16384×16384"), std::string::npos) << texture.error();
+    EXPECT_LT(peakResidentBytes(), std::size_t{1} << 30) << "nothing near the declared size was allocated";
+
+    const std::string bytes = speculum::test::bombPng();
+    const base::Result<TextureImage> embedded = decodeTexture(bytes.data(), bytes.size(), "/abs/bomb.glb#*0");
+    ASSERT_FALSE(embedded.ok());
+    EXPECT_NE(embedded.error().find("/abs/bomb.glb#*0"), std::string::npos) << embedded.error();
+}
+
+// An 8×4 RGBA file of 2×2 blocks: opaque white, opaque black, a white/black mix and transparent red.
+fs::path writeBlocks(const fs::path& folder) {
+    std::vector<std::uint8_t> pixels(8 * 4 * 4);
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 8; ++x) {
+            std::uint8_t* p = &pixels[static_cast<std::size_t>(y * 8 + x) * 4];
+            const int block = (y / 2) * 4 + x / 2;
+            const std::uint8_t grey = block == 0 || (block == 2 && (x + y) % 2 == 0) ? 255 : 0;
+            p[0] = block == 3 ? 255 : grey;
+            p[1] = p[2] = block == 3 ? 0 : grey;
+            p[3] = block == 3 ? 0 : 255;
+        }
+    }
+    const fs::path path = folder / "blocks.png";
+    writeRaw(path, 8, 4, 4, OIIO::TypeDesc::UINT8, pixels);
+    return path;
+}
+
+TEST(TextureLoader, AFileLargerThanTheLimitsIsReadSmallerWithEachBlockAveragedInLinearLight) {
+    const fs::path path = writeBlocks(test::freshTestFolder());
+    TextureLimits limits;
+    limits.maxSide = 4;
+    std::string reduced;
+    const base::Result<TextureImage> texture = loadTexture(path.string(), limits, &reduced);
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    ASSERT_EQ(texture->width, 4);
+    ASSERT_EQ(texture->height, 2);
+    EXPECT_EQ(reduced, "texture '" + path.string() + "' is 8×4; loaded at 4×2");
+    // Row 1 is the file's top row of blocks (TextureImage puts the bottom row first).
+    EXPECT_EQ(pixel(*texture, 0, 1), (Bytes{255, 255, 255, 255}));
+    EXPECT_EQ(pixel(*texture, 1, 1), (Bytes{0, 0, 0, 255}));
+    EXPECT_EQ(pixel(*texture, 2, 1), (Bytes{188, 188, 188, 255})) << "half the light of white, sRGB-encoded";
+    EXPECT_EQ(pixel(*texture, 3, 1), (Bytes{255, 0, 0, 0})) << "straight alpha keeps a transparent colour";
+
+    std::string untouched = "stale";
+    ASSERT_TRUE(loadTexture(path.string(), {}, &untouched).ok());
+    EXPECT_EQ(untouched, "stale") << "a file read at its own size gives no warning";
+}
+
+TEST(TextureLoader, TheMemoryBudgetReducesFloatFilesByTheirSixteenBytesATexel) {
+    const fs::path path = test::freshTestFolder() / "float.exr";
+    writeRaw(path, 4, 4, 3, OIIO::TypeDesc::FLOAT, std::vector<float>(4 * 4 * 3, 0.5f));
+    TextureLimits limits;
+    limits.maxBytes = 2 * 2 * 16; // 2×2 float RGBA texels
+    std::string reduced;
+    const base::Result<TextureImage> texture = loadTexture(path.string(), limits, &reduced);
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    EXPECT_EQ(texture->width, 2);
+    EXPECT_EQ(texture->height, 2);
+    ASSERT_TRUE(texture->highPrecision());
+    EXPECT_FLOAT_EQ(texture->linear[0], 0.5f);
+    EXPECT_FLOAT_EQ(texture->linear[3], 1.0f);
+    EXPECT_NE(reduced.find("is 4×4; loaded at 2×2"), std::string::npos) << reduced;
+}
+
+TEST(TextureLoader, AFileWithMipLevelsIsReadFromTheLargestLevelThatFits) {
+    // A tiled EXR whose levels hold different values, so the test sees which one was read.
+    const fs::path path = test::freshTestFolder() / "levels.exr";
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->supports("mipmap")) << OIIO::geterror();
+    OIIO::ImageSpec spec(8, 8, 3, OIIO::TypeDesc::HALF);
+    spec.tile_width = spec.tile_height = 4;
+    spec.attribute("textureformat", "Plain Texture"); // what makes OpenEXR's writer keep MIP levels
+    spec.attribute("openexr:levelmode", 1);
+    ASSERT_TRUE(out->open(path.string(), spec, OIIO::ImageOutput::Create)) << out->geterror();
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, std::vector<float>(8 * 8 * 3, 1.0f).data()));
+    for (int side = 4; side >= 1; side /= 2) {
+        OIIO::ImageSpec level(side, side, 3, OIIO::TypeDesc::HALF);
+        level.tile_width = level.tile_height = 4;
+        ASSERT_TRUE(out->open(path.string(), level, OIIO::ImageOutput::AppendMIPLevel)) << out->geterror();
+        const float value = side == 4 ? 0.25f : 0.0f;
+        ASSERT_TRUE(
+            out->write_image(OIIO::TypeDesc::FLOAT,
+                             std::vector<float>(static_cast<std::size_t>(side * side * 3), value).data()));
+    }
+    ASSERT_TRUE(out->close()) << out->geterror();
+    out.reset(); // OpenEXR finishes a tiled file when its writer goes
+
+    TextureLimits limits;
+    limits.maxSide = 4;
+    std::string reduced;
+    const base::Result<TextureImage> texture = loadTexture(path.string(), limits, &reduced);
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    EXPECT_EQ(texture->width, 4);
+    EXPECT_FLOAT_EQ(texture->linear[0], 0.25f) << "the file's own 4×4 level, not level 0 averaged";
+    EXPECT_NE(reduced.find("is 8×8; loaded at 4×4"), std::string::npos) << reduced;
+    const base::Result<TextureImage> whole = loadTexture(path.string());
+    ASSERT_TRUE(whole.ok()) << whole.error();
+    EXPECT_EQ(whole->width, 8);
+    EXPECT_FLOAT_EQ(whole->linear[0], 1.0f);
 }
 
 TEST(TextureLoader, FolderIsAnError) {

@@ -2,4 +2,4 @@
 # onto FIFOs and devices. Unit tier.
 speculum_add_test(RenderImageioTest TIER unit
     SOURCES ImageWriterTest.cpp TextureLoaderTest.cpp ImageWriterFailuresTest.cpp
-    LIBS speculum_render_imageio PkgConfig::OIIO)
+    LIBS speculum_render_imageio PkgConfig::OIIO ZLIB::ZLIB)

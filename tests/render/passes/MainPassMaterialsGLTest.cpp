@@ -6,9 +6,12 @@
 #include "render/image/ColorSpace.hpp"
 #include "render/imageio/ImageWriter.hpp"
 #include "render/imageio/TextureLoader.hpp"
+#include "support/BombPng.hpp"
 #include "support/GlTest.hpp"
 #include "support/MaterialScenes.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 
 namespace speculum::test {
@@ -33,6 +36,25 @@ TEST_F(Materials, TextureOnThePlaneSeenFromAboveIsUprightAndUnmirrored) {
         renderImage(orientationScene(View::PlaneFromAbove, showTexture(texture)), 96, 96);
     dump("orientation_plane_raster", image);
     expectUprightQuadrants(image, "plane from above");
+}
+
+// The editor draws through this path: a texture that promises 2 GiB of texels in 69 bytes must cost a
+// warning naming it and the checker, never the memory it promises or an exception out of the frame.
+TEST_F(Materials, ADecompressionBombTextureIsAWarningNamingItAndTheFrameIsDrawn) {
+    const std::string bomb = (freshFolder() / "bomb.png").string();
+    writeBombPng(bomb);
+    const auto start = std::chrono::steady_clock::now();
+    const render::Image image =
+        renderImage(orientationScene(View::PlaneFromAbove, showTexture(bomb)), 32, 32);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0)
+        << "refused from its header and first bytes";
+    EXPECT_EQ(image.width, 32) << "the frame is drawn";
+    const std::vector<std::string>& warnings = lastReport().warnings;
+    const bool named = std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) {
+        return w.find(bomb) != std::string::npos && w.find("16384×16384") != std::string::npos;
+    });
+    EXPECT_TRUE(named) << "a warning names the file and its declared size; got " << warnings.size()
+                       << " warnings";
 }
 
 TEST_F(Materials, TextureOnTheBoxTopAndFrontIsUprightAndUnmirrored) {

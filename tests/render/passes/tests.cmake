@@ -10,7 +10,7 @@ speculum_add_test(RenderPassesGLTest TIER gl
             GgxPrefilterGLTest.cpp GpuAllocationGLTest.cpp MipConvolveGLTest.cpp
             ${SPECULUM_TEST_SUPPORT}/GlslRunner.cpp
     LIBS speculum_render_passes speculum_render_renderer speculum_render_metrics speculum_render_imageio
-         PkgConfig::OIIO)
+         PkgConfig::OIIO ZLIB::ZLIB)
 # Real 8192 reflectors drawn at the size the driver holds (seconds each on llvmpipe): slow.
 speculum_add_test(RenderPassesSlowGLTest TIER gl LABELS slow
     SOURCES GpuAllocationGLTest.cpp
