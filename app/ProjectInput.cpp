@@ -2,10 +2,12 @@
 
 #include "base/FileKind.hpp"
 #include "base/Printable.hpp"
+#include "render/imageio/TextureLoader.hpp"
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/project/ProjectFile.hpp"
 
 #include <QFileInfo>
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -29,20 +31,56 @@ std::string unreadable(const std::string& path) {
     return {};
 }
 
-// Each texture in `frame` whose file is in `bad` is cleared, so the renderer draws without it (the
-// warning was already given) instead of reporting it a second time.
-void dropTextures(render::FrameInput& frame, const std::set<std::string>& bad) {
-    const auto drop = [&](render::Material& m) {
-        for (render::TextureSource* source : {&m.texture, &m.emissionTexture, &m.normalTexture})
-            if (!source->image && bad.count(source->path))
-                *source = render::TextureSource{};
-    };
-    for (render::DrawItem& item : frame.items)
-        drop(item.material);
-    for (render::Mirror& mirror : frame.mirrors)
-        drop(mirror.material);
-    if (frame.reflector)
-        drop(frame.reflector->material);
+// Keeps a decoder's own output off standard error while it is alive: libpng prints "libpng error: ..." by
+// itself before OpenImageIO reports the same failure, which the command's one error line then carries.
+class QuietStandardError {
+public:
+    QuietStandardError() {
+        std::fflush(stderr);
+        m_saved = ::dup(STDERR_FILENO);
+        const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+        if (m_saved >= 0 && null >= 0)
+            ::dup2(null, STDERR_FILENO);
+        if (null >= 0)
+            ::close(null);
+    }
+    ~QuietStandardError() {
+        if (m_saved < 0)
+            return;
+        std::fflush(stderr);
+        ::dup2(m_saved, STDERR_FILENO);
+        ::close(m_saved);
+    }
+    QuietStandardError(const QuietStandardError&) = delete;
+    QuietStandardError& operator=(const QuietStandardError&) = delete;
+
+private:
+    int m_saved = -1;
+};
+
+// Why the texture file `path` cannot be used, or empty when it decodes; its image (and a note when it was
+// read smaller than the file) go into `files`. Decoded here, once: a file that exists but is corrupt,
+// truncated or not an image at all is found before the command writes anything.
+std::string textureProblem(const std::string& path, ProjectFiles& files) {
+    if (const std::string why = unreadable(path); !why.empty())
+        return "texture " + base::quoted(path) + ": " + why;
+    std::string reduced;
+    base::Result<render::TextureImage> image = base::Error{""};
+    {
+        const QuietStandardError quiet;
+        image = render::loadTexture(path, {}, &reduced);
+    }
+    if (!image)
+        return image.error();
+    if (!reduced.empty())
+        files.textureNotes.push_back(std::move(reduced));
+    files.textures.decoded.emplace(path, std::make_shared<const render::TextureImage>(std::move(*image)));
+    return {};
+}
+
+// The material's texture sources, for changing each in place.
+std::array<render::TextureSource*, 3> textureSources(render::Material& m) {
+    return {&m.texture, &m.emissionTexture, &m.normalTexture};
 }
 
 } // namespace
@@ -106,11 +144,10 @@ ProjectFiles checkProjectFiles(const std::string& project, const scene::Scene& s
         if (path.find('#') != std::string::npos && meshes.embeddedTexture(path, warnings))
             return;
         files.inputs.push_back(path);
-        if (const std::string why = unreadable(path); !why.empty()) {
-            files.problems.push_back("node " + base::quoted(node) + ": texture " + base::quoted(path) + ": " +
-                                     why);
+        if (std::string problem = textureProblem(path, files); !problem.empty()) {
+            files.problems.push_back("node " + base::quoted(node) + ": " + problem);
             files.textureProblems.push_back(files.problems.back());
-            files.badTextures.insert(path);
+            files.textures.bad.insert(path);
         }
     };
     const auto textures = [&](const std::string& node, const scene::MaterialComponent& m) {
@@ -157,6 +194,25 @@ base::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy) {
     return base::Error{message + "; --keep-going goes on without it"};
 }
 
+void useCheckedTextures(render::FrameInput& frame, const CheckedTextures& textures) {
+    const auto use = [&](render::Material& m) {
+        for (render::TextureSource* source : textureSources(m)) {
+            if (source->image)
+                continue;
+            if (auto found = textures.decoded.find(source->path); found != textures.decoded.end())
+                source->image = found->second;
+            else if (textures.dropBad && textures.bad.count(source->path))
+                *source = render::TextureSource{};
+        }
+    };
+    for (render::DrawItem& item : frame.items)
+        use(item.material);
+    for (render::Mirror& mirror : frame.mirrors)
+        use(mirror.material);
+    if (frame.reflector)
+        use(frame.reflector->material);
+}
+
 base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time, MissingFiles policy) {
     auto owned = std::make_unique<scene::Scene>();
     scene::Scene& scene = *owned;
@@ -169,10 +225,12 @@ base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double t
     if (base::Status missing = applyMissingFiles(files, policy); !missing)
         return base::Error{missing.error()};
     frame.inputs = files.inputs;
+    frame.textures = files.textures;
+    frame.textures.dropBad = policy == MissingFiles::KeepGoing;
     frame.input = scene::snapshot(scene, time, *frame.meshes, warnings);
-    if (policy == MissingFiles::KeepGoing)
-        dropTextures(frame.input, files.badTextures);
+    useCheckedTextures(frame.input, frame.textures);
     printWarnings(warnings);
+    printWarnings(files.textureNotes);
     scene.forEachNode([&](const scene::Node& node) {
         const auto& mesh = node.data().mesh;
         if (mesh && mesh->builtin == scene::BuiltinMesh::Teapot)

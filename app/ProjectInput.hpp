@@ -6,6 +6,7 @@
 #include "scene/model/Scene.hpp"
 #include "scene/model/Warning.hpp"
 
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -21,13 +22,22 @@ enum class MissingFiles {
     Report,    // left to the renderer, which lists it among the frame's warnings (explain)
 };
 
+// The texture files a project names, each decoded once when its files are checked: what decoded, for the
+// frame to draw without reading the file again, and what did not.
+struct CheckedTextures {
+    std::map<std::string, std::shared_ptr<const render::TextureImage>> decoded;
+    std::set<std::string> bad; // paths that are missing or do not decode
+    bool dropBad = false;      // the frame goes on without them (KeepGoing) rather than showing the checker
+};
+
 // Every file a project reads: the project itself, then the models and textures its nodes name (absolute),
 // and the problems found with them ("node 'Box': texture '/a/b.png': file not found").
 struct ProjectFiles {
     std::vector<std::string> inputs;
     std::vector<std::string> problems;
     std::vector<std::string> textureProblems; // the texture ones (the snapshot itself warns of models)
-    std::set<std::string> badTextures;        // texture paths that cannot be read (dropped with KeepGoing)
+    std::vector<std::string> textureNotes;    // textures read smaller than their files, one line each
+    CheckedTextures textures;
 };
 
 // A project loaded for a headless command: the frame at one time, and the mesh library its meshes came
@@ -39,6 +49,7 @@ struct ProjectFrame {
     std::vector<std::string> inputs;   // as ProjectFiles::inputs: what no output may overwrite
     // The scene itself, for commands that evaluate it at other times too (`time --animated`).
     std::unique_ptr<scene::Scene> scene;
+    CheckedTextures textures; // for useCheckedTextures() on each later snapshot
 };
 
 // Opens PROJECT into `scene`; load warnings go to stderr. Errors name the file and, for a bad file, the
@@ -46,13 +57,18 @@ struct ProjectFrame {
 base::Status loadProjectScene(const std::string& project, scene::Scene& scene);
 
 // The models and textures `scene` names, each imported (into `meshes`, so a later snapshot reuses it) or
-// checked to be a readable regular file. The readers' notes on the models are appended to `warnings`.
+// decoded (a texture file that exists but does not decode is as much a problem as a missing one). The
+// readers' notes on the models are appended to `warnings`.
 ProjectFiles checkProjectFiles(const std::string& project, const scene::Scene& scene,
                                scene::MeshLibrary& meshes, std::vector<scene::Warning>& warnings);
 
 // Applies `policy` to the problems found: Fail gives one error line (the first problem, how many more, and
 // the option that goes on); KeepGoing prints each as a warning; Report does nothing.
 base::Status applyMissingFiles(const ProjectFiles& files, MissingFiles policy);
+
+// Gives each texture of `frame` named by a path the image decoded when the files were checked, and clears
+// the bad ones when `textures.dropBad` (the warning was given then; the renderer would repeat it).
+void useCheckedTextures(render::FrameInput& frame, const CheckedTextures& textures);
 
 // Loads PROJECT and evaluates it at `time`; warnings go to stderr. Errors name the file and, for a bad
 // file, the JSON path; with MissingFiles::Fail, a missing or unreadable model or texture is an error too.

@@ -118,6 +118,7 @@ private:
         if (m_options.animated) {
             m_project.input = scene::snapshot(*m_project.scene, m_options.time + m_frameNumber * kFrameStep,
                                               *m_project.meshes, m_snapshotWarnings);
+            useCheckedTextures(m_project.input, m_project.textures);
             m_snapshotWarnings.clear();
         }
         ++m_frameNumber;

@@ -106,13 +106,15 @@ GltfImageSource::~GltfImageSource() = default;
 
 namespace {
 
+// PNG and JPEG bytes are embedded as they are, but only once they decode: a truncated or corrupt file
+// that merely starts like one must not reach the glTF as an image no viewer can show.
 base::Result<GltfImage> fromBytes(std::vector<unsigned char> bytes, const std::string& name) {
-    if (std::string mime = gltfMimeType(bytes.data(), bytes.size()); !mime.empty()) {
-        return GltfImage{std::move(bytes), std::move(mime)};
-    }
     auto decoded = render::decodeTexture(bytes.data(), bytes.size(), name);
     if (!decoded) {
         return base::Error{decoded.error()};
+    }
+    if (std::string mime = gltfMimeType(bytes.data(), bytes.size()); !mime.empty()) {
+        return GltfImage{std::move(bytes), std::move(mime)};
     }
     return encodePng(*decoded);
 }

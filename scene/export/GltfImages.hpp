@@ -27,11 +27,11 @@ std::string gltfMimeType(const unsigned char* bytes, std::size_t size);
 base::Result<GltfImage> encodePng(const render::TextureImage& image);
 
 // Turns speculum's texture names into glTF images: a file path (absolute) or an embedded texture of a model
-// ("<absolute model path>#<Assimp's name>", SceneData.hpp). PNG and JPEG bytes are taken as they are, so
-// nothing is re-encoded; any other format is decoded through OpenImageIO and written as PNG. Each model
-// file is read once per exporter; each name is resolved once. An embedded texture the model file does not
-// give by that name is asked of `meshes` (MeshLibrary::embeddedTexture, the decoded image the renderer
-// uses) and written as PNG.
+// ("<absolute model path>#<Assimp's name>", SceneData.hpp). PNG and JPEG bytes are taken as they are once
+// they decode, so nothing is re-encoded and nothing undecodable embedded; any other format is decoded through
+// OpenImageIO and written as PNG. Each model file is read once per exporter; each name is resolved once. An
+// embedded texture the model file does not give by that name is asked of `meshes`
+// (MeshLibrary::embeddedTexture, the decoded image the renderer uses) and written as PNG.
 class MeshLibrary;
 class GltfImageSource {
 public:

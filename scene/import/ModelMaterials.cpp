@@ -386,15 +386,22 @@ std::string MaterialConverter::external(const std::string& reference) {
             return fs::absolute(candidate, ec).lexically_normal().string();
         }
     }
-    m_notes.add("texture '" + reference + "' not found");
-    return {};
+    // Kept, missing as it is: the material still names the file, so that everything that draws or checks
+    // it reports it as it does a project's own missing texture (an error for the commands unless
+    // --keep-going, the checker and a warning in the editor) instead of drawing the model untextured.
+    std::error_code ec;
+    const fs::path expected = fs::absolute(candidates.front(), ec);
+    return (ec ? candidates.front() : expected).lexically_normal().string();
 }
 
 void decodeEmbeddedTextures(const std::map<std::string, EmbeddedBytes>& compressed, ImportedModel& model,
                             ImportNotes& notes) {
     for (const auto& [key, texture] : compressed) {
-        auto decoded = render::decodeTexture(texture.bytes.data(), texture.bytes.size(), key);
+        std::string reduced;
+        auto decoded = render::decodeTexture(texture.bytes.data(), texture.bytes.size(), key, {}, &reduced);
         if (decoded) {
+            if (!reduced.empty())
+                notes.add(reduced);
             model.embeddedTextures[key] = std::make_shared<render::TextureImage>(std::move(decoded).value());
             continue;
         }

@@ -32,8 +32,9 @@ private:
 };
 
 // Converts Assimp's materials of one scene into speculum's, resolving their textures: external files
-// relative to the model's folder (absolute, regular files only; a missing one is a note, the material
-// keeps no texture), embedded ones decoded once into model.embeddedTextures under
+// relative to the model's folder (absolute; a missing one keeps the path it was expected at, so that the
+// commands refuse it and the renderer shows it as missing, as they do a project's own textures), embedded
+// ones decoded once into model.embeddedTextures under
 // "<modelPath>#<Assimp's name>". The conversion is documented in ModelMaterials.cpp.
 // Given `compressedOut`, compressed embedded textures (PNG, JPEG, ...) are not decoded but handed over as
 // their file bytes under the same key: the import child leaves decoding (OpenImageIO, whose thread pool is

@@ -39,12 +39,7 @@ std::string readAll(const fs::path& path);
 
 class Cli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        m_dir = fs::path(speculum::testDataPath()) /
-                ("cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
+    void SetUp() override { m_dir = test::freshCliFolder("cli"); }
     fs::path m_dir;
 };
 

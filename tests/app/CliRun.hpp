@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,12 +21,14 @@ struct CliRun {
     std::string err;
 };
 
-inline CliRun runSpeculum(const std::string& arguments) {
+// `setup`, when given, is shell commands run first in the same shell (a `ulimit`, say).
+inline CliRun runSpeculum(const std::string& arguments, const std::string& setup = {}) {
     namespace fs = std::filesystem;
     static int counter = 0;
     const fs::path errFile = fs::temp_directory_path() / ("speculum-cli-" + std::to_string(::getpid()) + "-" +
                                                           std::to_string(++counter) + ".err");
-    const std::string command = speculum::testCliBinary() + " " + arguments + " 2>" + errFile.string();
+    const std::string command = (setup.empty() ? std::string() : setup + "; exec ") +
+                                speculum::testCliBinary() + " " + arguments + " 2>" + errFile.string();
     CliRun run;
     FILE* pipe = ::popen(command.c_str(), "r");
     std::array<char, 4096> buffer{};
@@ -37,6 +40,16 @@ inline CliRun runSpeculum(const std::string& arguments) {
     run.err.assign(std::istreambuf_iterator<char>(in), {});
     fs::remove(errFile);
     return run;
+}
+
+// An empty folder for the running test's files, "PREFIX-<test name>" under the tests' data folder.
+inline std::filesystem::path freshCliFolder(const std::string& prefix) {
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::path(speculum::testDataPath()) /
+                            (prefix + "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
 }
 
 } // namespace speculum::test

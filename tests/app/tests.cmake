@@ -2,9 +2,9 @@
 # bench, time; outputs onto a "full disk"). It renders on an EGL surfaceless context (no display), hence
 # the gl tier.
 speculum_add_test(AppGLTest TIER gl USES_CLI
-    SOURCES CliGLTest.cpp CliReferenceGLTest.cpp CliWriteFailuresGLTest.cpp BenchCommandGLTest.cpp
-            TimeCommandGLTest.cpp
-    LIBS Qt6::Core PkgConfig::OIIO speculum_render_renderer)
+    SOURCES CliGLTest.cpp CliReferenceGLTest.cpp CliWriteFailuresGLTest.cpp CliTexturesGLTest.cpp
+            BenchCommandGLTest.cpp TimeCommandGLTest.cpp
+    LIBS Qt6::Core PkgConfig::OIIO ZLIB::ZLIB speculum_render_renderer)
 # `speculum bench` on the chrome and mirrors demos at the quick size: tens of seconds each, so slow.
 speculum_add_test(AppSlowGLTest TIER gl USES_CLI LABELS slow
     SOURCES BenchCommandDemosSlowGLTest.cpp
