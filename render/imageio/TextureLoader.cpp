@@ -9,6 +9,7 @@
 #include <array>
 #include <cassert>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -48,20 +49,20 @@ std::string sizeText(int width, int height) {
 
 // How a file's values become TextureImage's: 8-bit files stay sRGB-encoded bytes, 16/32-bit integer files
 // are decoded from sRGB to linear floats, float files (EXR, float TIFF) are linear and premultiplied.
-enum class Encoding { Srgb8, SrgbWide, LinearFloat };
+enum class TexelEncoding { Srgb8, SrgbWide, LinearFloat };
 
-Encoding encodingOf(const OIIO::ImageSpec& spec) {
+TexelEncoding encodingOf(const OIIO::ImageSpec& spec) {
     // The widest channel decides: a file with any channel beyond 8 bits keeps its precision.
     std::size_t widest = spec.format.size();
     for (const OIIO::TypeDesc& t : spec.channelformats)
         widest = std::max(widest, t.size());
     if (spec.format.is_floating_point())
-        return Encoding::LinearFloat;
-    return widest > 1 ? Encoding::SrgbWide : Encoding::Srgb8;
+        return TexelEncoding::LinearFloat;
+    return widest > 1 ? TexelEncoding::SrgbWide : TexelEncoding::Srgb8;
 }
 
-std::size_t texelBytes(Encoding encoding) {
-    return encoding == Encoding::Srgb8 ? 4 : 4 * sizeof(float);
+std::size_t texelBytes(TexelEncoding encoding) {
+    return encoding == TexelEncoding::Srgb8 ? 4 : 4 * sizeof(float);
 }
 
 int ceilDiv(int a, int b) {
@@ -85,7 +86,7 @@ struct ReadPlan {
 
 // The largest level of `in` that fits `limits` (a file with MIP levels), or else its smallest, reduced
 // further by the smallest whole factor that fits. Only headers are read.
-ReadPlan planRead(OIIO::ImageInput& in, Encoding encoding, const TextureLimits& limits) {
+ReadPlan planRead(OIIO::ImageInput& in, TexelEncoding encoding, const TextureLimits& limits) {
     ReadPlan plan;
     plan.spec = in.spec();
     while (!fits(plan.spec.width, plan.spec.height, texelBytes(encoding), limits)) {
@@ -120,13 +121,16 @@ float srgbCodeToLinear(float encoded) {
 // Averages blocks of source rows into texels of TextureImage, one output row at a time. Colour is
 // averaged in linear light; float files are averaged premultiplied, then unpremultiplied, as filtering
 // premultiplied values is what keeps transparent texels' colours out.
+constexpr float kLargestHalf = 65504.0f;
+
 class BlockAverager {
 public:
-    BlockAverager(const ReadPlan& plan, int channels, Encoding encoding, TextureImage& out)
+    BlockAverager(const ReadPlan& plan, int channels, TexelEncoding encoding, TextureImage& out)
         : m_plan(plan)
         , m_channels(channels)
         , m_encoding(encoding)
-        , m_linearize(encoding == Encoding::SrgbWide || (encoding == Encoding::Srgb8 && plan.factor > 1))
+        , m_linearize(encoding == TexelEncoding::SrgbWide ||
+                      (encoding == TexelEncoding::Srgb8 && plan.factor > 1))
         , m_out(out) {}
 
     // Output row `row` (0 the top of the file) from `rowCount` source rows of floats starting at `rows`.
@@ -150,9 +154,19 @@ private:
     bool isAlpha(int c) const { return (m_channels == 2 || m_channels == 4) && c == m_channels - 1; }
 
     float value(float v, int c) const {
+        v = physical(v, isAlpha(c));
         if (!m_linearize || isAlpha(c))
             return v;
-        return m_encoding == Encoding::Srgb8 ? srgbCodeToLinear(v) : srgbToLinear(v);
+        return m_encoding == TexelEncoding::Srgb8 ? srgbCodeToLinear(v) : srgbToLinear(v);
+    }
+
+    // What a texel can mean: light and coverage are never negative, NaN or infinite. A float file's
+    // such texels (a difference image, a broken export) would otherwise be negative radiance in every
+    // still, down to -65504. Coverage ends at 1; light at the largest half float, as the EXR stills do.
+    static float physical(float v, bool alpha) {
+        if (std::isnan(v) || v < 0.0f)
+            return 0.0f;
+        return std::min(v, alpha ? 1.0f : kLargestHalf);
     }
 
     // Spreads 1..4 channels to RGBA (1 = grey, 2 = grey + alpha, 3 = RGB, 4 = RGBA) at texel `index`.
@@ -161,11 +175,12 @@ private:
         std::array<float, 4> rgba{m[0], grey ? m[0] : m[1], grey ? m[0] : m[2], 1.0f};
         if (m_channels == 2 || m_channels == 4)
             rgba[3] = m[static_cast<std::size_t>(m_channels - 1)];
-        if (m_encoding == Encoding::LinearFloat && rgba[3] > 0.0f && (m_channels == 2 || m_channels == 4))
+        if (m_encoding == TexelEncoding::LinearFloat && rgba[3] > 0.0f &&
+            (m_channels == 2 || m_channels == 4))
             for (int c = 0; c < 3; ++c)
                 rgba[c] /= rgba[3];
         for (int c = 0; c < 4; ++c) {
-            if (m_encoding != Encoding::Srgb8)
+            if (m_encoding != TexelEncoding::Srgb8)
                 m_out.linear[index * 4 + c] = rgba[c];
             else
                 m_out.rgba8[index * 4 + c] =
@@ -175,14 +190,14 @@ private:
 
     const ReadPlan& m_plan;
     const int m_channels;
-    const Encoding m_encoding;
+    const TexelEncoding m_encoding;
     const bool m_linearize;
     TextureImage& m_out;
 };
 
-void allocate(TextureImage& texture, Encoding encoding) {
+void allocate(TextureImage& texture, TexelEncoding encoding) {
     const std::size_t values = static_cast<std::size_t>(texture.width) * texture.height * 4;
-    if (encoding == Encoding::Srgb8)
+    if (encoding == TexelEncoding::Srgb8)
         texture.rgba8.resize(values);
     else
         texture.linear.resize(values);
@@ -211,7 +226,7 @@ bool readRows(OIIO::ImageInput& in, const ReadPlan& plan, int y0, int y1, int ch
 
 // Reads `plan`'s level of `in` in strips of rows and averages them into `out`, so that no more than one
 // strip of the file's full-size pixels is ever held.
-bool readInStrips(OIIO::ImageInput& in, const ReadPlan& plan, int channels, Encoding encoding,
+bool readInStrips(OIIO::ImageInput& in, const ReadPlan& plan, int channels, TexelEncoding encoding,
                   TextureImage& out) {
     const OIIO::ImageSpec& s = plan.spec;
     const int rows = rowsPerRead(plan);
@@ -248,14 +263,14 @@ base::Result<TextureImage> decode(OIIO::ImageInput& in, const std::string& label
     if (spec.depth > 1) {
         return failure(label, "volume images are not supported");
     }
-    const Encoding encoding = encodingOf(spec);
+    const TexelEncoding encoding = encodingOf(spec);
     const int channels = std::min(spec.nchannels, 4);
     const ReadPlan plan = planRead(in, encoding, limits);
     TextureImage texture;
     texture.width = plan.width;
     texture.height = plan.height;
     // 16-bit (and 32-bit) integer files are encoded like 8-bit ones: colour decoded from sRGB.
-    texture.decodedFromSrgb = encoding == Encoding::SrgbWide;
+    texture.decodedFromSrgb = encoding == TexelEncoding::SrgbWide;
     try {
         if (!readInStrips(in, plan, channels, encoding, texture)) {
             return failure(label, "its " + sizeText(spec.width, spec.height) +

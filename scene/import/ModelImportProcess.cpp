@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
 #include <new>
 #include <poll.h>
 #include <string_view>
@@ -287,10 +288,35 @@ ChildReading readChild(pid_t pid, int fd, const ImportControl& control, std::chr
     return reading;
 }
 
+// How many processes the kernel's out-of-memory killer has ended since boot (/proc/vmstat's oom_kill,
+// which counts a memory cgroup's kills too), or -1 where the kernel does not say.
+long long oomKillsSoFar() {
+    std::ifstream in("/proc/vmstat");
+    std::string key;
+    long long value = 0;
+    while (in >> key >> value) {
+        if (key == "oom_kill") {
+            return value;
+        }
+    }
+    return -1;
+}
+
+// Why SIGKILL ended the child: the out-of-memory killer only when it killed something meanwhile.
+std::string killedBecause(long long oomKillsBefore) {
+    if (oomKillsBefore < 0) {
+        return "the model reader was killed (SIGKILL): it ran out of memory, or was stopped from outside";
+    }
+    if (oomKillsSoFar() > oomKillsBefore) {
+        return "ran out of memory reading the model"; // the kernel's out-of-memory killer ended it
+    }
+    return "the model reader was killed from outside (SIGKILL) before it finished; not read";
+}
+
 // Why a child that gave no usable answer failed, for the user: from how the reading ended and, where the
 // child was reaped here, how it ended.
 std::string childFailure(const ChildReading& reading, bool reaped, int status, const rusage& usage,
-                         int cpuSeconds, std::chrono::seconds wallLimit) {
+                         int cpuSeconds, std::chrono::seconds wallLimit, long long oomKillsBefore) {
     const std::string limit = std::to_string(cpuSeconds);
     if (reading.outOfMemory) {
         return "ran out of memory reading the model";
@@ -308,7 +334,7 @@ std::string childFailure(const ChildReading& reading, bool reaped, int status, c
             return "took more than " + limit + " s of CPU to read; stopped";
         }
         if (signal == SIGKILL) {
-            return "ran out of memory reading the model"; // the OOM killer's signal
+            return killedBecause(oomKillsBefore);
         }
         return "the model reader crashed on this file (" + signalName(signal) + "); it is probably damaged";
     }
@@ -328,6 +354,7 @@ void setImportChildTestAction(void (*action)()) {
 ChildRun runInChildProcess(const std::function<std::string(const ChildProgress&)>& body,
                            const ImportControl& control, int cpuSeconds) {
     ChildRun run;
+    const long long oomKillsBefore = oomKillsSoFar();
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) {
         run.outcome = ChildRun::Outcome::NotStarted;
@@ -366,7 +393,7 @@ ChildRun runInChildProcess(const std::function<std::string(const ChildProgress&)
     }
     run.outcome = ChildRun::Outcome::Failed;
     run.answer.clear();
-    run.error = childFailure(reading, reaped, status, usage, cpuSeconds, wallLimit);
+    run.error = childFailure(reading, reaped, status, usage, cpuSeconds, wallLimit, oomKillsBefore);
     return run;
 }
 

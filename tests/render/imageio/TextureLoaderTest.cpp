@@ -6,10 +6,12 @@
 
 #include <OpenImageIO/imageio.h>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <limits>
 #include <sys/resource.h>
 #include <sys/stat.h>
 
@@ -234,6 +236,27 @@ TEST(TextureLoader, FloatFilesStayLinearAndStraight) {
     EXPECT_EQ(half->linear[0], 4.0f);
     EXPECT_EQ(half->linear[1], 0.25f);
     EXPECT_EQ(half->linear[3], 1.0f);
+}
+
+// A float file's negative, NaN and infinite texels are not light: each becomes 0 (or, infinite, the
+// largest half float), and coverage stays within 0..1, so no still shows negative or non-finite radiance.
+TEST(TextureLoader, FloatTexelsThatAreNotLightBecomePhysical) {
+    const fs::path folder = test::freshTestFolder();
+    const float inf = std::numeric_limits<float>::infinity();
+    writeRaw<float>(folder / "hostile.exr", 2, 1, 4, OIIO::TypeDesc::FLOAT,
+                    {-65504.0f, std::nanf(""), inf, 1.0f, 0.5f, -1.0f, 2.0f, 3.0f});
+    const base::Result<TextureImage> texture = loadTexture((folder / "hostile.exr").string());
+    ASSERT_TRUE(texture.ok()) << texture.error();
+    ASSERT_EQ(texture->linear.size(), 8u);
+    for (std::size_t i = 0; i < texture->linear.size(); ++i) {
+        EXPECT_TRUE(std::isfinite(texture->linear[i])) << i;
+        EXPECT_GE(texture->linear[i], 0.0f) << i;
+    }
+    EXPECT_EQ(texture->linear[0], 0.0f);
+    EXPECT_EQ(texture->linear[1], 0.0f);
+    EXPECT_EQ(texture->linear[2], 65504.0f);
+    EXPECT_EQ(texture->linear[7], 1.0f) << "coverage ends at 1";
+    EXPECT_EQ(texture->linear[4], 0.5f) << "premultiplied by a coverage of 1";
 }
 
 TEST(TextureLoader, MissingFileIsAnErrorNamingThePath) {

@@ -96,6 +96,20 @@ TEST(ImportChild, ReaderThatAbortsIsARefusal) {
     EXPECT_TRUE(noChildren());
 }
 
+// A reader killed from outside (kill -9 on the child, not the kernel's out-of-memory killer) is said to
+// be that, not an out-of-memory failure the user would chase.
+TEST(ImportChild, AReaderKilledFromOutsideIsNotCalledOutOfMemory) {
+    ChildSettings restore;
+    scene::detail::setImportChildTestAction([] { ::raise(SIGKILL); });
+    std::vector<std::string> warnings;
+    const auto result = scene::importModelFile(writeTriangleObj(freshFolder()).string(), warnings);
+    ASSERT_FALSE(result.ok());
+    expectOneLineNaming(result.error(), "triangle.obj");
+    EXPECT_EQ(result.error().find("ran out of memory"), std::string::npos) << result.error();
+    EXPECT_NE(result.error().find("killed"), std::string::npos) << result.error();
+    EXPECT_TRUE(noChildren());
+}
+
 TEST(ImportChild, HangingReaderIsStoppedByTheCpuLimit) {
     ChildSettings restore;
     scene::setModelImportCpuLimit(1);
