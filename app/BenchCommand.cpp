@@ -4,6 +4,7 @@
 #include "accuracy/Results.hpp"
 #include "accuracy/StagedOutput.hpp"
 #include "accuracy/run/SweepRun.hpp"
+#include "app/Interrupt.hpp"
 #include "app/OutputPaths.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
@@ -53,42 +54,8 @@ void progress(const std::string& line) {
     steps.step(line);
 }
 
-volatile std::sig_atomic_t g_stopSignal = 0;
-
-extern "C" void requestStop(int signal) {
-    g_stopSignal = signal;
-}
-
-// Ctrl-C (SIGINT) or a polite kill (SIGTERM) during a run: the run stops at its next step and, like any
-// failed run, leaves the output folder as it found it. The previous handlers return when the run ends.
-class StopOnSignal {
-public:
-    StopOnSignal() {
-        g_stopSignal = 0;
-        struct sigaction action {};
-        action.sa_handler = requestStop;
-        sigemptyset(&action.sa_mask);
-        sigaction(SIGINT, &action, &m_previousInt);
-        sigaction(SIGTERM, &action, &m_previousTerm);
-    }
-    ~StopOnSignal() {
-        sigaction(SIGINT, &m_previousInt, nullptr);
-        sigaction(SIGTERM, &m_previousTerm, nullptr);
-    }
-    StopOnSignal(const StopOnSignal&) = delete;
-    StopOnSignal& operator=(const StopOnSignal&) = delete;
-
-    static bool requested() { return g_stopSignal != 0; }
-
-private:
-    struct sigaction m_previousInt {};
-    struct sigaction m_previousTerm {};
-};
-
-// The exit status of a shell's command killed by SIGINT, which is what the user asked for.
 int interrupted() {
-    std::cerr << "speculum: bench: interrupted; nothing was written\n";
-    return 130;
+    return app::interrupted("bench");
 }
 
 // Writes the report and the plots; QPainter needs a QGuiApplication, the offscreen platform will do.

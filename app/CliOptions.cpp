@@ -408,6 +408,23 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
 
 } // namespace
 
+namespace {
+
+constexpr std::pair<const char*, Command> kNamed[] = {{"render", Command::Render},
+                                                      {"explain", Command::Explain},
+                                                      {"bench", Command::Bench},
+                                                      {"export", Command::Export},
+                                                      {"time", Command::Time}};
+
+} // namespace
+
+std::string commandWord(Command command) {
+    for (const auto& [word, named] : kNamed)
+        if (named == command)
+            return word;
+    return "speculum";
+}
+
 base::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) {
     CliOptions o;
     if (args.empty())
@@ -422,11 +439,6 @@ base::Result<CliOptions> parseCommandLine(const std::vector<std::string>& args) 
         o.command = Command::Version;
         return o;
     }
-    static const std::pair<const char*, Command> kNamed[] = {{"render", Command::Render},
-                                                             {"explain", Command::Explain},
-                                                             {"bench", Command::Bench},
-                                                             {"export", Command::Export},
-                                                             {"time", Command::Time}};
     for (const auto& [word, command] : kNamed)
         if (first == word)
             return parseCommand(command, first, std::vector<std::string>(args.begin() + 1, args.end()));

@@ -10,6 +10,8 @@
 namespace speculum::app {
 
 enum class Command { Editor, Render, Explain, Bench, Time, Export, Help, Version };
+// The word that names a command on the command line ("render"); "speculum" for the editor, help, version.
+std::string commandWord(Command command);
 
 // The parsed command line. Values are validated here, before any work, so
 // bad input costs nothing and writes nothing.

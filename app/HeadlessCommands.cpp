@@ -1,6 +1,7 @@
 #include "app/HeadlessCommands.hpp"
 
 #include "app/BenchCommand.hpp"
+#include "app/Interrupt.hpp"
 #include "app/OutputPaths.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
@@ -47,16 +48,7 @@ MissingFiles policyOf(const CliOptions& options) {
 }
 
 std::string commandName(const CliOptions& options) {
-    switch (options.command) {
-    case Command::Explain:
-        return "explain";
-    case Command::Bench:
-        return "bench";
-    case Command::Export:
-        return "export";
-    default:
-        return "render";
-    }
+    return commandWord(options.command);
 }
 
 // Skips that are the frame working as meant (nothing to do, reused, out of sight, the user's own depth
@@ -156,6 +148,7 @@ base::Result<HeadlessFrame> prepare(const CliOptions& options) {
     if (!renderer)
         return base::Error{renderer.error()};
     frame.renderer = std::move(*renderer);
+    warnAsPlanned(*frame.renderer);
     return frame;
 }
 
@@ -212,10 +205,12 @@ base::Result<render::StillResult> renderExplainedFrame(HeadlessFrame& frame, con
     // In one piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
     render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
     settings.preview = options.preview;
+    const auto untilStopped = [](double, const std::string&) { return !StopOnSignal::requested(); };
     for (int warmUp = 1; warmUp < options.frame; ++warmUp)
-        if (auto earlier = render::renderStill(*frame.renderer, frame.input, settings); !earlier)
+        if (auto earlier = render::renderStill(*frame.renderer, frame.input, settings, untilStopped);
+            !earlier)
             return base::Error{earlier.error()};
-    return render::renderStill(*frame.renderer, frame.input, settings);
+    return render::renderStill(*frame.renderer, frame.input, settings, untilStopped);
 }
 
 QString jsonText(std::string_view name) {
@@ -407,12 +402,14 @@ int runRender(const CliOptions& options) {
         const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
         if (seconds > (options.reference ? 0.5 : 1.0) || (!options.reference && samples > 1))
             progress.update(fraction, options.reference ? std::string() : stage);
-        return true;
+        return !StopOnSignal::requested(); // a stop ends the render here, before anything is written
     };
     auto still = scene::writeStill(frame ? frame->renderer.get() : nullptr, input,
                                    absoluteText(options.project), stillSettings(options), options.output,
                                    report, frame ? frame->glDescription : std::string());
     progress.finish();
+    if (!still && StopOnSignal::requested())
+        return interrupted("render");
     if (!still) {
         fail("render: " + still.error());
         return 1;
@@ -438,6 +435,8 @@ int runExplain(const CliOptions& options) {
     }
     // Explain what a frame at this size really does: render it offscreen and report its timings.
     auto still = renderExplainedFrame(*frame, options);
+    if (StopOnSignal::requested())
+        return interrupted("explain", "nothing was printed");
     if (!still) {
         fail("explain: " + still.error());
         return 1;
@@ -494,6 +493,8 @@ int runExport(const CliOptions& options) {
         fail("export: " + distinct.error());
         return 1;
     }
+    if (StopOnSignal::requested()) // the last moment before files are written
+        return interrupted("export");
     std::vector<std::string> warnings;
     const base::Status exported =
         scene::exportGltf(scene, QString::fromStdString(options.output), meshes, warnings);

@@ -3,6 +3,7 @@
 #include "base/FileKind.hpp"
 #include "base/Printable.hpp"
 #include "render/imageio/TextureLoader.hpp"
+#include "render/renderer/Renderer.hpp"
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/project/ProjectFile.hpp"
 
@@ -13,6 +14,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <iostream>
+#include <set>
 #include <unistd.h>
 
 namespace speculum::app {
@@ -108,8 +110,15 @@ std::string oneLine(std::string_view message) {
 }
 
 void printWarnings(const std::vector<std::string>& warnings) {
+    // Once each: a warning printed as the frame was planned is not repeated after it was drawn.
+    static std::set<std::string> printed;
     for (const std::string& w : warnings)
-        std::cerr << "speculum: warning: " << oneLine(w) << "\n";
+        if (printed.insert(w).second)
+            std::cerr << "speculum: warning: " << oneLine(w) << "\n";
+}
+
+void warnAsPlanned(render::Renderer& renderer) {
+    renderer.setPlanObserver([](const render::FramePlan& plan) { printWarnings(plan.warnings); });
 }
 
 void printWarnings(const std::vector<scene::Warning>& warnings) {

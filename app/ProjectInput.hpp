@@ -13,6 +13,10 @@
 #include <string_view>
 #include <vector>
 
+namespace speculum::render {
+class Renderer;
+}
+
 namespace speculum::app {
 
 // What a command does with a model or texture the scene names that is missing or cannot be read.
@@ -81,7 +85,11 @@ base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double t
 std::string oneLine(std::string_view message);
 
 // Prints "speculum: warning: ..." lines on stderr, one line each (a scene warning's message).
+// "speculum: warning: ..." on stderr, each line once per run.
 void printWarnings(const std::vector<std::string>& warnings);
+// Prints each frame plan's warnings as soon as the frame is planned, before it is drawn: a map that will
+// take minutes is said before the wait, not after it.
+void warnAsPlanned(render::Renderer& renderer);
 void printWarnings(const std::vector<scene::Warning>& warnings);
 
 // Prints "speculum: error: ..." on stderr, one line.

@@ -3,6 +3,7 @@
 // its pixels can be read back, and the share of each pass kind.
 #include "app/TimeCommand.hpp"
 
+#include "app/Interrupt.hpp"
 #include "app/ProjectInput.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/gl/Objects.hpp"
@@ -137,12 +138,12 @@ private:
 
 // The warm-up frames, then options.frames timed ones: their wall times in milliseconds.
 base::Result<std::vector<double>> timeFrames(FrameDrawer& drawer, int frames) {
-    for (int i = 0; i < kWarmUpFrames; ++i)
+    for (int i = 0; i < kWarmUpFrames && !StopOnSignal::requested(); ++i)
         if (!drawer.draw(false))
             return base::Error{drawer.last().error};
     std::vector<double> frameMs;
     frameMs.reserve(static_cast<std::size_t>(frames));
-    for (int i = 0; i < frames; ++i) {
+    for (int i = 0; i < frames && !StopOnSignal::requested(); ++i) {
         const auto ms = drawer.draw(false);
         if (!ms)
             return base::Error{drawer.last().error};
@@ -174,7 +175,7 @@ struct PassProfile {
 base::Result<PassProfile> profilePasses(FrameDrawer& drawer, int frames) {
     PassProfile profile;
     profile.frames = frames;
-    for (int i = 0; i < frames; ++i) {
+    for (int i = 0; i < frames && !StopOnSignal::requested(); ++i) {
         if (!drawer.draw(true))
             return base::Error{drawer.last().error};
         const render::FrameReport& last = drawer.last();
@@ -272,6 +273,7 @@ int runTime(const CliOptions& options) {
     auto renderer = render::Renderer::create();
     if (!renderer)
         return fail(renderer.error());
+    warnAsPlanned(**renderer);
     WindowLikeTarget window;
     if (!window.create(options.width, options.height))
         return fail("this GPU cannot hold a " + std::to_string(options.width) + "x" +
@@ -281,6 +283,8 @@ int runTime(const CliOptions& options) {
 
     TimeFigures figures;
     auto frameMs = timeFrames(drawer, options.frames);
+    if (StopOnSignal::requested())
+        return interrupted("time", "nothing was printed");
     if (!frameMs)
         return fail(frameMs.error());
     figures.frameMs = std::move(*frameMs);
@@ -288,6 +292,8 @@ int runTime(const CliOptions& options) {
     const render::CameraBuffer cameraBuffer = drawer.last().plan.cameraBuffer;
     figures.compositeReason = compositeReasonOf(drawer.last());
     auto profile = profilePasses(drawer, std::min(options.frames, kProfiledFrames));
+    if (StopOnSignal::requested())
+        return interrupted("time", "nothing was printed");
     if (!profile)
         return fail(profile.error());
     figures.profile = std::move(*profile);

@@ -6,10 +6,12 @@
 #include <atomic>
 #include <cerrno>
 #include <climits>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <pthread.h>
 #include <random>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -327,6 +329,106 @@ Status AtomicFile::commit() {
     }
     m_temp.clear();
     syncFolder(m_destination);
+    return Done{};
+}
+
+namespace {
+
+// Holds the signals that end a command until the set of files is in place or restored.
+class HeldSignals {
+public:
+    HeldSignals() {
+        sigset_t held;
+        sigemptyset(&held);
+        for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) {
+            sigaddset(&held, signal);
+        }
+        m_held = ::pthread_sigmask(SIG_BLOCK, &held, &m_before) == 0;
+    }
+    ~HeldSignals() {
+        if (m_held) {
+            ::pthread_sigmask(SIG_SETMASK, &m_before, nullptr);
+        }
+    }
+    HeldSignals(const HeldSignals&) = delete;
+    HeldSignals& operator=(const HeldSignals&) = delete;
+
+private:
+    sigset_t m_before{};
+    bool m_held = false;
+};
+
+// A hard link to the file at `destination` under a fresh hidden name beside it; empty when there is no
+// file or the file system has no hard links.
+std::string keepPrevious(const std::string& destination) {
+    if (!exists(destination)) {
+        return {};
+    }
+    for (unsigned attempt = 0; attempt < 64; ++attempt) {
+        std::string backup = temporaryName(destination, attempt);
+        if (::link(destination.c_str(), backup.c_str()) == 0) {
+            return backup;
+        }
+        if (errno != EEXIST) {
+            return {};
+        }
+    }
+    return {};
+}
+
+} // namespace
+
+Status commitTogether(std::vector<AtomicFile>& files) {
+    for (AtomicFile& file : files) {
+        if (Status finished = file.finish(); !finished) {
+            return finished;
+        }
+    }
+    std::vector<std::string> previous;
+    std::vector<bool> existed;
+    for (const AtomicFile& file : files) {
+        existed.push_back(exists(file.m_destination));
+        previous.push_back(keepPrevious(file.m_destination));
+    }
+    const auto dropBackups = [&] {
+        for (const std::string& backup : previous) {
+            if (!backup.empty()) {
+                ::unlink(backup.c_str());
+            }
+        }
+    };
+    HeldSignals held;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        AtomicFile& file = files[i];
+        if (::rename(file.m_temp.c_str(), file.m_destination.c_str()) == 0) {
+            file.m_temp.clear();
+            continue;
+        }
+        const std::string reason = describeWriteError(errno);
+        bool restored = true;
+        for (std::size_t j = i; j-- > 0;) { // put back what was replaced, newest first
+            const std::string& destination = files[j].m_destination;
+            if (!previous[j].empty()) {
+                restored = ::rename(previous[j].c_str(), destination.c_str()) == 0 && restored;
+                previous[j].clear();
+            } else if (existed[j]) {
+                restored = false;
+            } else {
+                ::unlink(destination.c_str());
+            }
+        }
+        dropBackups();
+        for (AtomicFile& rest : files) {
+            rest.cancel();
+        }
+        return Error{printable(file.m_target, 200) + ": " + reason +
+                     (restored ? "; the previous files are unchanged"
+                               : "; the files replaced before it could not all be put back")};
+    }
+    dropBackups();
+    for (const AtomicFile& file : files) {
+        syncFolder(file.m_destination);
+    }
     return Done{};
 }
 

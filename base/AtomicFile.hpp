@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace speculum::base {
 
@@ -58,6 +59,7 @@ public:
     const std::string& temporaryPath() const { return m_temp; }
 
 private:
+    friend Status commitTogether(std::vector<AtomicFile>& files);
     AtomicFile() = default;
     Error fail(int error);
 
@@ -69,6 +71,15 @@ private:
     bool m_failed = false;
     std::string m_failure;
 };
+
+// Files that belong together (a .gltf, its .bin and its images) replace their previous versions as one:
+// all are finished first, each previous file is kept by a hard link while the new ones are renamed into
+// place, and when any rename fails those already renamed are put back (or removed, where there was none
+// before), so the folder holds either the whole new set or the whole old one. SIGINT, SIGTERM, SIGHUP and
+// SIGQUIT wait until that is settled. The last file is renamed last: list the one that refers to the
+// others there. On a file system without hard links a file replaced before the failure cannot be put
+// back, and the error says so.
+Status commitTogether(std::vector<AtomicFile>& files);
 
 // The whole file in one call.
 Status writeFileAtomically(const std::string& target, const void* data, std::size_t size);

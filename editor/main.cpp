@@ -1,6 +1,7 @@
 // speculum: the editor when run with no command (or a project file), the headless commands otherwise.
 #include "app/CliOptions.hpp"
 #include "app/HeadlessCommands.hpp"
+#include "app/Interrupt.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
 #include "app/StandardOutput.hpp"
@@ -64,8 +65,17 @@ int run(int argc, char** argv) {
         return kUsageError;
     }
     Progress::setQuiet(options->quiet);
-    if (const std::optional<int> status = runCommand(*options))
+    if (options->command != Command::Editor) {
+        // From here a Ctrl-C or SIGTERM stops the command at its next step (exit 130) instead of killing
+        // it between a temporary file and its rename.
+        const StopOnSignal stop;
+        std::optional<int> status = runCommand(*options);
+        if (StopOnSignal::requested())
+            status = interrupted(commandWord(options->command),
+                                 *status == 0 ? "its output was complete before it stopped"
+                                              : "nothing was written");
         return finishStandardOutput(*status);
+    }
     if (!editorHasDisplay()) {
         printError("the editor needs a display (DISPLAY and WAYLAND_DISPLAY are unset); without one, use "
                    "'speculum render PROJECT -o OUT.png' (see speculum --help)");

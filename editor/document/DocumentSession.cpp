@@ -2,6 +2,7 @@
 
 #include "scene/project/ProjectFile.hpp"
 
+#include <QFileInfo>
 #include <QUndoStack>
 
 namespace speculum::document {
@@ -35,22 +36,31 @@ void DocumentSession::replace(scene::SceneData data, const QString& projectPath,
     m_scene->reset(std::move(data));
     m_scene->setProjectPath(projectPath);
     clearHistory(unsaved);
+    m_fileWatch.track(projectPath); // a restored document: changes from here on are someone else's
 }
 
 base::Status DocumentSession::open(const QString& absolutePath, std::vector<std::string>& warnings) {
     base::Status status = scene::openProject(*m_scene, absolutePath, warnings);
     if (status) {
         clearHistory(false); // the old document's commands refer to nodes that no longer exist
+        m_fileWatch.track(absolutePath);
     }
     return status;
 }
 
-base::Status DocumentSession::save(const QString& absolutePath) {
+base::Status DocumentSession::save(const QString& absolutePath, DiskChanges overwrite) {
+    if (overwrite == DiskChanges::Refuse && absolutePath == m_fileWatch.path() && m_fileWatch.changed()) {
+        return base::Error{QFileInfo(absolutePath).fileName().toStdString() +
+                           " changed on disk since this editor last read or saved it (another editor or "
+                           "program saved it); reload it, overwrite it with this version, or save as "
+                           "another file"};
+    }
     base::Status status = scene::saveProject(*m_scene, absolutePath);
     if (status) {
         m_scene->setProjectPath(absolutePath);
         m_undoStack->setClean();
         m_restoredUnsaved = false;
+        m_fileWatch.track(absolutePath);
     }
     return status;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "base/Result.hpp"
+#include "editor/document/ProjectFileWatch.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/model/Scene.hpp"
 
@@ -38,8 +39,15 @@ public:
     void replace(scene::SceneData data, const QString& projectPath, bool unsaved = false);
     // Opens a project file; on failure the open document stays exactly as it was. Load warnings are appended.
     base::Status open(const QString& absolutePath, std::vector<std::string>& warnings);
-    // Writes the document; on success the file becomes the document's and the history is clean.
-    base::Status save(const QString& absolutePath);
+    // Writes the document; on success the file becomes the document's and the history is clean. Saving
+    // over the document's own file after someone else changed it on disk is refused (the error says so)
+    // unless `overwrite` is DiskChanges::Overwrite: the user chose to keep this version.
+    enum class DiskChanges { Refuse, Overwrite };
+    base::Status save(const QString& absolutePath, DiskChanges overwrite = DiskChanges::Refuse);
+    // The document's file on disk is no longer what this editor last read or wrote (another editor or
+    // program saved it); fileWatch().changedOnDisk says so as it happens.
+    bool changedOnDisk() const { return m_fileWatch.changed(); }
+    ProjectFileWatch& fileWatch() { return m_fileWatch; }
 
 private:
     void clearHistory(bool unsaved);
@@ -48,6 +56,7 @@ private:
     QUndoStack* m_undoStack = nullptr; // QObject child
     scene::MeshLibrary m_meshes;
     bool m_restoredUnsaved = false;
+    ProjectFileWatch m_fileWatch;
 };
 
 } // namespace speculum::document

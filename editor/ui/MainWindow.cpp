@@ -97,6 +97,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_viewport, &Viewport::frameRendered, this, &MainWindow::onFrameRendered);
     connect(m_viewport, &Viewport::warningsChanged, this, &MainWindow::onWarningsChanged);
     connect(m_viewport, &Viewport::rendererFailed, this, &MainWindow::logMessage);
+    connect(&m_session->fileWatch(), &document::ProjectFileWatch::changedOnDisk, this,
+            &MainWindow::onProjectChangedOnDisk);
     connect(m_inspector, &Inspector::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, 8000); });
 
@@ -153,10 +155,12 @@ base::Status MainWindow::openProjectFile(const QString& path) {
     return status;
 }
 
-base::Status MainWindow::saveProjectFile(const QString& path) {
+base::Status MainWindow::saveProjectFile(const QString& path, bool overwriteDiskChanges) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     rememberEditorView(); // the file reopens where the editor looks now
-    base::Status status = m_session->save(absolute);
+    using DiskChanges = document::DocumentSession::DiskChanges;
+    base::Status status =
+        m_session->save(absolute, overwriteDiskChanges ? DiskChanges::Overwrite : DiskChanges::Refuse);
     if (!status) {
         logMessage(tr("Could not save %1: %2").arg(absolute, QString::fromStdString(status.error())));
         return status;

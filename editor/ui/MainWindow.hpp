@@ -4,6 +4,7 @@
 #include "editor/document/DocumentSession.hpp"
 #include "editor/document/EditOperations.hpp"
 #include "editor/document/NodeFactory.hpp"
+#include "scene/export/GltfExport.hpp"
 #include "scene/export/StillExport.hpp"
 #include "scene/project/Recovery.hpp"
 
@@ -85,7 +86,9 @@ public:
     // the JSON path or the file problem) is returned. Load warnings go to the log.
     base::Status openProjectFile(const QString& path);
     // Writes the document to path; on success it becomes the document's file and the undo stack is clean.
-    base::Status saveProjectFile(const QString& path);
+    // Writing over the document's own file after another editor or program changed it is refused unless
+    // overwriteDiskChanges (File ▸ Save asks first: reload, keep mine, save as).
+    base::Status saveProjectFile(const QString& path, bool overwriteDiskChanges = false);
     // Replaces the document with an empty scene (no prompt).
     void newProject();
     // Unsaved changes: edits since the last save, or a document restored from a recovery file.
@@ -126,8 +129,9 @@ public:
     // Edit ▸ Select All: every node of the scene.
     void selectAll();
 
-    // File ▸ Export Scene as glTF 2.0.
-    base::Status exportGltfFile(const QString& path);
+    // File ▸ Export Scene as glTF 2.0. mayReplace: asked before files beside a .gltf that no earlier
+    // export wrote are replaced (scene::exportGltf); without it such an export is refused.
+    base::Status exportGltfFile(const QString& path, const scene::ReplaceUnrelatedFiles& mayReplace = {});
     // File ▸ Export Still, without the dialog: renders on the viewport's context with the same code as
     // `speculum render`. `progress` may cancel (return false).
     base::Result<scene::StillExportResult> exportStillFile(const QString& path,
@@ -177,6 +181,12 @@ protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
+private:
+    // The document's file changed on disk: asks before a save whether to reload it, overwrite it with
+    // this version, or save this version as another file.
+    enum class DiskChoice { Reload, KeepMine, SaveAs, Cancel };
+    DiskChoice askAboutDiskChange();
+
 private slots:
     void onNew();
     void onOpen();
@@ -184,6 +194,7 @@ private slots:
     void openFromDialog(const QString& title, const QString& folder);
     bool onSave();
     bool onSaveAs();
+    void onProjectChangedOnDisk(const QString& path);
     void onImportModel(bool asReflector);
     void onExportGltf();
     void onExportStill();

@@ -25,6 +25,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QUndoStack>
@@ -168,10 +169,10 @@ void MainWindow::updateEditActions() {
 
 // ---- export ----
 
-base::Status MainWindow::exportGltfFile(const QString& path) {
+base::Status MainWindow::exportGltfFile(const QString& path, const scene::ReplaceUnrelatedFiles& mayReplace) {
     std::vector<std::string> warnings;
     m_viewport->waitForModels(); // read on workers: none may be missing from the file
-    auto status = scene::exportGltf(scene(), path, m_viewport->meshes(), warnings);
+    auto status = scene::exportGltf(scene(), path, m_viewport->meshes(), warnings, mayReplace);
     for (const auto& w : warnings) {
         logMessage(QString::fromStdString(w));
     }
@@ -294,7 +295,22 @@ bool MainWindow::onSave() {
     if (scene().projectPath().isEmpty()) {
         return onSaveAs();
     }
-    base::Status status = saveProjectFile(scene().projectPath());
+    bool overwrite = false;
+    if (m_session->changedOnDisk()) {
+        switch (askAboutDiskChange()) {
+        case DiskChoice::KeepMine:
+            overwrite = true;
+            break;
+        case DiskChoice::SaveAs:
+            return onSaveAs();
+        case DiskChoice::Reload:
+            openProjectFile(scene().projectPath()); // says itself what went wrong
+            return false;                           // this version was not saved
+        case DiskChoice::Cancel:
+            return false;
+        }
+    }
+    base::Status status = saveProjectFile(scene().projectPath(), overwrite);
     if (!status) {
         QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
         return false;
@@ -314,12 +330,41 @@ bool MainWindow::onSaveAs() {
     if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
         path += kProjectSuffix;
     }
-    base::Status status = saveProjectFile(path);
+    // The file dialog asked before replacing an existing file: the user chose to write over it.
+    base::Status status = saveProjectFile(path, true);
     if (!status) {
         QMessageBox::critical(this, tr("Save Project"), QString::fromStdString(status.error()));
         return false;
     }
     return true;
+}
+
+MainWindow::DiskChoice MainWindow::askAboutDiskChange() {
+    const QString name = QFileInfo(scene().projectPath()).fileName();
+    QMessageBox box(QMessageBox::Warning, tr("File Changed on Disk"),
+                    tr("%1 changed on disk since this editor opened or saved it: another editor or program "
+                       "saved it.\n\nReload it (this version's unsaved changes are lost), keep this version "
+                       "(overwrite the file), or save this version as another file?")
+                        .arg(name),
+                    QMessageBox::Cancel, this);
+    QPushButton* reload = box.addButton(tr("&Reload"), QMessageBox::DestructiveRole);
+    QPushButton* keepMine = box.addButton(tr("&Keep Mine"), QMessageBox::AcceptRole);
+    QPushButton* saveAs = box.addButton(tr("Save &As…"), QMessageBox::ActionRole);
+    box.setDefaultButton(saveAs); // the choice that loses nothing
+    box.exec();
+    if (box.clickedButton() == reload) {
+        return DiskChoice::Reload;
+    }
+    if (box.clickedButton() == keepMine) {
+        return DiskChoice::KeepMine;
+    }
+    return box.clickedButton() == saveAs ? DiskChoice::SaveAs : DiskChoice::Cancel;
+}
+
+void MainWindow::onProjectChangedOnDisk(const QString& path) {
+    logMessage(
+        tr("%1 changed on disk (another editor or program saved it); saving will ask first").arg(path));
+    statusBar()->showMessage(tr("%1 changed on disk").arg(QFileInfo(path).fileName()), 10000);
 }
 
 void MainWindow::onImportModel(bool asReflector) {
@@ -350,7 +395,18 @@ void MainWindow::onExportGltf() {
         !path.endsWith(QStringLiteral(".glb"), Qt::CaseInsensitive)) {
         path += QStringLiteral(".gltf");
     }
-    if (auto status = exportGltfFile(path); !status) {
+    const auto askToReplace = [this](const std::vector<std::string>& paths) {
+        QStringList names;
+        for (const std::string& p : paths) {
+            names << QString::fromStdString(p);
+        }
+        return QMessageBox::question(this, tr("Export glTF"),
+                                     tr("The export writes files beside it that already exist and that no "
+                                        "earlier export to this file wrote:\n\n%1\n\nReplace them?")
+                                         .arg(names.join(QLatin1Char('\n'))),
+                                     QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
+    };
+    if (auto status = exportGltfFile(path, askToReplace); !status) {
         QMessageBox::critical(this, tr("Export glTF"), QString::fromStdString(status.error()));
     }
 }

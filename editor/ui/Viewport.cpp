@@ -10,6 +10,7 @@
 #include "editor/ui/ViewportOverlay.hpp"
 #include "editor/view/AnimationClock.hpp"
 #include "editor/view/Selection.hpp"
+#include "render/plan/MapCost.hpp"
 #include "scene/evaluate/Snapshot.hpp"
 #include "scene/model/Scene.hpp"
 #include "scene/model/SceneAnimation.hpp"
@@ -273,6 +274,9 @@ void Viewport::paintGL() {
                        m_handles.press() == ViewportHandles::Press::Handle};
     if (m_overlay->guidesVisible())
         options.guides = guideLines();
+    // The view stays interactive whatever the reflector's settings: a map that would take longer is drawn
+    // smaller while editing (a warning says so); Export Still draws it as the scene asks.
+    options.maxMapSeconds = render::kInteractiveMapSeconds;
     m_lastReport = m_renderer->render(input, frameTarget(composedAsStored), options);
     // A map did not fit at its planned size: the next frame draws it at one that does.
     if (m_lastReport.drawAgain)

@@ -4,6 +4,7 @@
 #include "render/plan/GpuLimits.hpp"
 
 #include <algorithm>
+#include <string>
 
 namespace speculum::render {
 
@@ -15,6 +16,11 @@ GpuLimits queryGpuLimits() {
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &limits.maxRenderbufferSize);
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
     limits.maxViewportSize = std::min(viewport[0], viewport[1]);
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string name = renderer ? renderer : "";
+    limits.software = name.find("llvmpipe") != std::string::npos ||
+                      name.find("softpipe") != std::string::npos ||
+                      name.find("Software Rasterizer") != std::string::npos;
     return limits;
 }
 

@@ -195,6 +195,9 @@ struct FramePlan {
     // that failed to allocate (fitEnvmapResolution); 0 without a reflector, or where no map of its layout
     // fits. The map is allocated, drawn and looked up at this resolution (plannedInput).
     int reflectorResolution = 0;
+    // The pre-filter's lobe samples a texel where the plan lowered the scene's (PlanOptions::maxMapSeconds);
+    // 0: the scene's own.
+    int prefilterSamples = 0;
     // Levels of mirror nesting the camera's views go to: settings.mirrorDepth, less what a preview cuts.
     int mirrorDepth = 0;
     // The preview the frame is (RenderOptions::preview); what it gives up is among `skipped`.

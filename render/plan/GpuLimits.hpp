@@ -16,7 +16,13 @@ struct GpuLimits {
     int maxCubeMapSize = 16384;      // GL_MAX_CUBE_MAP_TEXTURE_SIZE
     int maxRenderbufferSize = 16384; // GL_MAX_RENDERBUFFER_SIZE
     int maxViewportSize = 16384;     // the smaller of GL_MAX_VIEWPORT_DIMS
+    // GL runs on the CPU (Mesa's llvmpipe or softpipe, by GL_RENDERER): the rates MapCost estimates with.
+    bool software = true;
 };
+
+// How much faster a GPU draws and filters maps than llvmpipe on two cores, roughly: a bound on an
+// interactive view's map work (RenderOptions::maxMapSeconds) allows this much more on one.
+inline constexpr double kGpuOverSoftware = 100.0;
 
 // Asks the current context. Defined by the GL library (render/gl/GpuLimitsQuery.cpp); the rest of this
 // header is GL-free.

@@ -1,10 +1,12 @@
 #include "render/plan/Planner.hpp"
 
 #include "render/frame/SceneLimits.hpp"
+#include "render/frame/SceneNames.hpp"
 #include "render/math/Projection.hpp"
 #include "render/math/ShadowFrustum.hpp"
 #include "render/mesh/Simplify.hpp"
 #include "render/plan/FrameHashing.hpp"
+#include "render/plan/MapCost.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -400,6 +402,61 @@ void notePreview(const FrameInput& input, FramePlan& plan) {
                                 {.limit = plan.mirrorDepth, .asked = input.settings.mirrorDepth}});
 }
 
+// A capped map keeps at least this resolution before its samples are lowered (a rough reflection shows
+// little of a finer map, and fewer samples are noise), and at least the least of each in the end.
+constexpr int kCappedResolutionFirst = 256;
+constexpr int kLeastCappedResolution = 64;
+constexpr int kLeastCappedSamples = 8;
+
+// Lowers the map's resolution (to kCappedResolutionFirst), then its pre-filter samples, then its
+// resolution again, by halves, until drawing it fits within `seconds` or both reach their least.
+void capMap(const Reflector& reflector, const Settings& settings, double seconds, int& resolution,
+            int& samples) {
+    const auto fits = [&] {
+        return mapCost(reflector, resolution, settings, samples).softwareSeconds() <= seconds;
+    };
+    while (!fits() && resolution > kCappedResolutionFirst)
+        resolution = std::max(kCappedResolutionFirst, resolution / 2);
+    while (!fits() && samples > kLeastCappedSamples)
+        samples = std::max(kLeastCappedSamples, samples / 2);
+    while (!fits() && resolution > kLeastCappedResolution)
+        resolution = std::max(kLeastCappedResolution, resolution / 2);
+}
+
+// What drawing the reflector's map costs, said before the work: a map that would take minutes on a
+// software renderer is warned of, with the estimate; where the view must stay interactive (maxSeconds)
+// it is drawn smaller and with fewer pre-filter samples instead, and the warning says so.
+void planMapCost(const FrameInput& input, double maxSeconds, FramePlan& plan) {
+    const Reflector& reflector = *input.reflector;
+    const int asked = plan.reflectorResolution;
+    const int samples = input.settings.prefilterSamples;
+    const MapCost full = mapCost(reflector, asked, input.settings, samples);
+    const std::string name = "reflector \"" + reflector.name + "\"";
+    const std::string what =
+        "its " + std::to_string(asked) + "² " +
+        std::string(names::fileName(names::kReflectorMaps, reflector.map)) + " map" +
+        (full.prefilterSamples > 0.0 ? " pre-filtered with " + std::to_string(samples) + " samples a texel"
+                                     : std::string());
+    const std::string often = reflector.update == ReflectorUpdate::Always
+                                  ? ", every frame (update: always)"
+                                  : ", whenever what it shows changes";
+    if (maxSeconds > 0.0 && full.softwareSeconds() > maxSeconds) {
+        int resolution = asked, fewer = samples;
+        capMap(reflector, input.settings, maxSeconds, resolution, fewer);
+        plan.reflectorResolution = resolution;
+        plan.prefilterSamples = fewer != samples ? fewer : 0;
+        plan.warnings.push_back(name + ": drawn at " + std::to_string(resolution) + "² with " +
+                                std::to_string(fewer) + " pre-filter samples while editing; " + what +
+                                " is " + costText(full) + often +
+                                "; Export Still and `speculum render` draw it in full");
+        return;
+    }
+    if (full.softwareSeconds() > kMapCostWarningSeconds) {
+        plan.warnings.push_back(name + ": " + what + " is " + costText(full) + often +
+                                "; a lower resolution or fewer pre-filter samples cost far less");
+    }
+}
+
 } // namespace
 
 std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan& plan) {
@@ -411,7 +468,9 @@ std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan&
     const bool reflector = input.reflector && plan.reflectorResolution > 0 &&
                            input.reflector->resolution != plan.reflectorResolution;
     const bool mirrors = input.settings.mirrorDepth != plan.mirrorDepth;
-    if (!shadows && !reflector && !mirrors)
+    const bool samples =
+        plan.prefilterSamples > 0 && plan.prefilterSamples != input.settings.prefilterSamples;
+    if (!shadows && !reflector && !mirrors && !samples)
         return std::nullopt;
     FrameInput planned = input;
     for (const ShadowPlan& shadow : plan.shadows)
@@ -419,6 +478,8 @@ std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan&
     if (reflector)
         planned.reflector->resolution = plan.reflectorResolution;
     planned.settings.mirrorDepth = plan.mirrorDepth;
+    if (samples)
+        planned.settings.prefilterSamples = plan.prefilterSamples;
     return planned;
 }
 
@@ -427,8 +488,10 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     FramePlan plan;
     plan.preview = options.preview;
     planShadows(input, state, options.maps, plan);
-    if (input.reflector)
+    if (input.reflector) {
         plan.reflectorResolution = fitEnvmapResolution(*input.reflector, options.maps, plan.warnings);
+        planMapCost(input, options.maxMapSeconds, plan);
+    }
     plan.mirrorDepth = previewMirrorDepth(input.settings.mirrorDepth, plan.preview);
     // The rest is planned for the scene as it is drawn: its map sizes and mirror depth as just planned.
     const std::optional<FrameInput> planned = plannedInput(input, plan);

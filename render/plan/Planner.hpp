@@ -64,7 +64,14 @@ struct PlanOptions {
     // Guide lines the caller draws over the camera's view (RenderOptions::guides): a Guides pass draws them
     // after the mirrors, before the composite.
     std::size_t guideLines = 0;
+    // A view that must stay interactive (the editor's): the reflector's map is drawn smaller and with
+    // fewer pre-filter samples where drawing it would take longer than this on a software renderer
+    // (MapCost), with a warning that says so. 0: drawn as the scene asks (stills, benchmarks).
+    double maxMapSeconds = 0.0;
 };
+
+// The layout of a reflector's map type.
+envmap::MapType mapTypeOf(ReflectorMap map);
 
 // The pure planning step: which passes run this frame, in order, with the reason for each, which effects
 // got no pass and why, and the size of every map, fitted to `options.maps` (with FramePlan::warnings where

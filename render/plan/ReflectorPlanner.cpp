@@ -14,13 +14,13 @@
 
 namespace speculum::render {
 
-namespace {
-
 envmap::MapType mapTypeOf(ReflectorMap map) {
     return map == ReflectorMap::Cube             ? envmap::MapType::Cube
            : map == ReflectorMap::DualParaboloid ? envmap::MapType::DualParaboloid
                                                  : envmap::MapType::TennisBall;
 }
+
+namespace {
 
 // True if all eight corners lie on the negative side of one of the planes (clip-space rows): the box is
 // outside. Conservative: a box near a frustum edge may be reported inside.

@@ -69,6 +69,7 @@ struct Renderer::State {
     PlannerState plannerState;
     GpuLimits limits;
     CoarseLevelRequest coarseLevelRequest;
+    PlanObserver planObserver;
     bool released = false;
 };
 
@@ -129,6 +130,10 @@ const GpuLimits& Renderer::gpuLimits() const {
 
 void Renderer::setCoarseLevelRequest(CoarseLevelRequest request) {
     m_state->coarseLevelRequest = std::move(request);
+}
+
+void Renderer::setPlanObserver(PlanObserver observer) {
+    m_state->planObserver = std::move(observer);
 }
 
 void Renderer::lowerGpuLimits(const GpuLimits& limits) {
@@ -241,7 +246,8 @@ struct DrawnFrame {
 DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& target, const RenderTarget& drawn,
                           const RenderOptions& options, const GpuLimits& limits,
                           const PlannerState& committed,
-                          const Renderer::CoarseLevelRequest& coarseLevelRequest, passes::FrameResources& r,
+                          const Renderer::CoarseLevelRequest& coarseLevelRequest,
+                          const Renderer::PlanObserver& planObserver, passes::FrameResources& r,
                           FrameReport& report) {
     DrawnFrame frame;
     // A tile is planned as the whole image, then restricted to its pixels: it draws them exactly as an
@@ -255,7 +261,8 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
     const PlannerState freshState;
     const PlannerState& plannerState = options.reuseMaps ? committed : freshState;
     const PlanOptions planOptions{mapLimits(limits, r), options.tile ? PreviewPolicy{} : options.preview,
-                                  options.tile ? 0 : options.guides.size()};
+                                  options.tile ? 0 : options.guides.size(),
+                                  options.maxMapSeconds * (limits.software ? 1.0 : kGpuOverSoftware)};
     FramePlan& plan = report.plan;
     plan = planFrame(requested, plannerState, viewport, planOptions);
     if (!plan.coarseLevelsWanted.empty() && coarseLevelRequest) {
@@ -266,6 +273,8 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
         plan = planFrame(requested, plannerState, viewport, planOptions);
     }
     report.warnings = plan.warnings;
+    if (planObserver)
+        planObserver(plan);
     frame.planned = plannedInput(requested, plan);
     const FrameInput& input = frame.planned ? *frame.planned : requested;
     frame.maps = allocateMaps(input, plan, r, report.warnings);
@@ -404,7 +413,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     report.drawnHeight = drawn.height;
 
     const DrawnFrame planned = planDrawnFrame(requested, target, drawn, options, s.limits, s.plannerState,
-                                              s.coarseLevelRequest, r, report);
+                                              s.coarseLevelRequest, s.planObserver, r, report);
     const FramePlan& plan = report.plan;
     const FrameInput& input = planned.planned ? *planned.planned : requested;
 

@@ -46,6 +46,12 @@ public:
     using CoarseLevelRequest = std::function<void(const std::vector<MeshHandle>&)>;
     void setCoarseLevelRequest(CoarseLevelRequest request);
 
+    // Called with each frame's plan as soon as it is made, before any pass runs: a command prints the
+    // plan's warnings (a map that will take minutes, a size the GPU cannot hold) before the wait, not
+    // after it.
+    using PlanObserver = std::function<void(const FramePlan&)>;
+    void setPlanObserver(PlanObserver observer);
+
 private:
     Renderer();
     struct State;

@@ -2,6 +2,7 @@
 
 #include "render/frame/SceneLimits.hpp"
 #include "render/mesh/Primitives.hpp"
+#include "scene/import/ModelNodes.hpp"
 #include "scene/model/NodeMath.hpp"
 
 #include <QString>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <limits>
 #include <map>
 #include <optional>
@@ -397,10 +399,16 @@ private:
         tinygltf::Node out;
         out.name = utf8(name);
         setPose(out, d);
-        out.mesh = addMesh(d, name);
+        const bool parts = drawsModelParts(d);
+        if (!parts) {
+            out.mesh = addMesh(d, name);
+        }
 
         // Reserve this node's index before its children take theirs.
         const int index = push(m_model.nodes, tinygltf::Node{});
+        if (parts) {
+            addModelParts(d, name, out);
+        }
         if (d.light) {
             tinygltf::ExtensionMap extension{
                 {kLights, object("light", tinygltf::Value(push(m_model.lights, gltfLight(*d.light, name))))}};
@@ -421,6 +429,74 @@ private:
         }
         m_model.nodes[static_cast<std::size_t>(index)] = std::move(out);
         return index;
+    }
+
+    // As the renderer draws it: a whole model file on a plain node without a material of its own is every
+    // part of the file with the file's own material, where the file's node tree places it.
+    static bool drawsModelParts(const NodeData& d) {
+        return d.mesh && !d.mesh->builtin && !d.mesh->part && !d.material && !d.reflector && !d.mirror;
+    }
+
+    // A child node per placed part, its matrix the file's placement of the part; a file of one part that
+    // the file does not move has it on the node itself.
+    void addModelParts(const NodeData& d, const std::string& name, tinygltf::Node& out) {
+        std::vector<Warning> importWarnings;
+        const auto model = m_library.model(d.mesh->file, importWarnings);
+        if (!model) {
+            m_warnings.push_back("node \"" + d.name + "\": mesh not exported: " + model.error());
+            return;
+        }
+        const ImportedModel& m = **model;
+        std::vector<std::pair<int, glm::dmat4>> placed;
+        detail::forEachPlacedPart(m, [&](int index, const glm::dmat4& placement) {
+            if (m.parts[static_cast<std::size_t>(index)].mesh) {
+                placed.emplace_back(index, placement);
+            }
+        });
+        if (placed.size() == 1 && placed.front().second == glm::dmat4(1.0)) {
+            out.mesh = partMesh(d.mesh->file, m, placed.front().first, name);
+            return;
+        }
+        for (const auto& [index, placement] : placed) {
+            const int mesh = partMesh(d.mesh->file, m, index, name);
+            if (mesh < 0) {
+                continue;
+            }
+            const ImportedPart& part = m.parts[static_cast<std::size_t>(index)];
+            tinygltf::Node child;
+            child.name = utf8(name + "/" + (part.name.empty() ? "part " + std::to_string(index) : part.name));
+            child.matrix.assign(glm::value_ptr(placement), glm::value_ptr(placement) + 16);
+            child.mesh = mesh;
+            out.children.push_back(push(m_model.nodes, std::move(child)));
+        }
+    }
+
+    // The glTF mesh of a model file's part with the file's material for it: made once per part, however
+    // often the file's node tree (or the scene) places it; -1 when it has no triangles.
+    int partMesh(const std::string& file, const ImportedModel& m, int index, const std::string& owner) {
+        const auto key = std::make_pair(file, index);
+        if (const auto found = m_partMeshes.find(key); found != m_partMeshes.end()) {
+            return found->second;
+        }
+        const ImportedPart& part = m.parts[static_cast<std::size_t>(index)];
+        const std::string name =
+            owner + "/" + (part.name.empty() ? "part " + std::to_string(index) : part.name);
+        std::optional<tinygltf::Primitive> primitive = geometry(*part.mesh);
+        int mesh = -1;
+        if (primitive) {
+            const bool hasMaterial =
+                part.material >= 0 && part.material < static_cast<int>(m.materials.size());
+            primitive->material = addMaterial(
+                name,
+                hasMaterial ? m.materials[static_cast<std::size_t>(part.material)] : MaterialComponent{},
+                std::nullopt, std::nullopt);
+            tinygltf::Mesh out;
+            out.name = utf8(name);
+            out.primitives.push_back(std::move(*primitive));
+            mesh = push(m_model.meshes, std::move(out));
+        }
+        m_partMeshes.emplace(key, mesh);
+        return mesh;
     }
 
     // The node's mesh (its shape or model, and a mirror's quad), or -1 when it has none.
@@ -492,6 +568,7 @@ private:
     }
 
     MeshLibrary& m_library;
+    std::map<std::pair<std::string, int>, int> m_partMeshes; // (model file, part) → glTF mesh
     GltfLayout m_layout;
     std::vector<std::string>& m_warnings;
     GltfImageSource m_imageSource;

@@ -1,6 +1,7 @@
 #include "scene/export/GltfExport.hpp"
 
 #include "base/AtomicFile.hpp"
+#include "base/FileKind.hpp"
 #include "base/Printable.hpp"
 #include "scene/export/GltfBuilder.hpp"
 
@@ -9,6 +10,7 @@
 #include <cctype>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <tiny_gltf.h>
@@ -19,6 +21,9 @@ namespace speculum::scene {
 namespace fs = std::filesystem;
 
 namespace {
+
+// A previous .gltf is read only for the names of its companions; one larger than this is not ours.
+constexpr std::size_t kMaxPreviousGltfBytes = std::size_t(256) << 20;
 
 // The .glb whole (header, JSON chunk, BIN chunk) or the .gltf's JSON, compact, as tinygltf writes them.
 std::string serialize(const tinygltf::Model& model, bool binary) {
@@ -62,10 +67,9 @@ struct PendingFile {
     std::size_t size;
 };
 
-// Writes every file to its own staged temporary (base::AtomicFile) and finishes them all (fsync, close)
-// before any is renamed into place, `files.back()` last (the file that refers to the others). A full disk
-// or any other failed write stops the export while every previous file is still untouched, and no
-// temporary stays behind (AtomicFile removes its own).
+// Writes every file to its own staged temporary (base::AtomicFile), then replaces the previous set as one
+// (base::commitTogether), `files.back()` (the file that refers to the others) last: a full disk, a failed
+// rename or any other failure leaves every previous file as it was, and no temporary behind.
 base::Status writeAllOrNothing(const std::vector<PendingFile>& files) {
     std::vector<base::AtomicFile> staged;
     staged.reserve(files.size());
@@ -77,25 +81,57 @@ base::Status writeAllOrNothing(const std::vector<PendingFile>& files) {
         if (base::Status s = file->write(f.data, f.size); !s) {
             return s;
         }
-        if (base::Status s = file->finish(); !s) {
-            return s;
-        }
         staged.push_back(std::move(file).value());
     }
-    for (base::AtomicFile& file : staged) {
-        // Only a rename can fail here (in the same folder, after every byte is on disk): rare, and the
-        // companions renamed so far are complete files of this export.
-        if (base::Status s = file.commit(); !s) {
-            return s;
+    return base::commitTogether(staged);
+}
+
+// The file names a previous .gltf at `target` refers to (its buffers' and images' relative URIs): the
+// companions an earlier export wrote, which this one may replace. Empty for no file, a .glb or a file that
+// does not parse (nothing beside it is then known to be the export's).
+std::set<std::string> previousCompanions(const fs::path& target) {
+    std::set<std::string> names;
+    base::Result<std::string> text = base::readRegularFile(target.string(), kMaxPreviousGltfBytes);
+    if (!text) {
+        return names;
+    }
+    const nlohmann::json doc = nlohmann::json::parse(*text, nullptr, /*allow_exceptions=*/false);
+    if (!doc.is_object()) {
+        return names;
+    }
+    for (const char* list : {"buffers", "images"}) {
+        const auto entries = doc.find(list);
+        if (entries == doc.end() || !entries->is_array()) {
+            continue;
+        }
+        for (const nlohmann::json& entry : *entries) {
+            const auto uri = entry.is_object() ? entry.find("uri") : entry.end();
+            if (entry.is_object() && uri != entry.end() && uri->is_string()) {
+                names.insert(fs::path(uri->get<std::string>()).filename().string());
+            }
         }
     }
-    return base::Done{};
+    return names;
+}
+
+// Files beside the target this export would replace that the previous export did not write.
+std::vector<std::string> unrelatedFiles(const std::vector<PendingFile>& files) {
+    const fs::path& target = files.back().target;
+    const std::set<std::string> ours = previousCompanions(target);
+    std::vector<std::string> unrelated;
+    for (std::size_t i = 0; i + 1 < files.size(); ++i) {
+        std::error_code error;
+        if (fs::exists(files[i].target, error) && !ours.count(files[i].target.filename().string())) {
+            unrelated.push_back(files[i].target.string());
+        }
+    }
+    return unrelated;
 }
 
 } // namespace
 
 base::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& meshes,
-                        std::vector<std::string>& warnings) {
+                        std::vector<std::string>& warnings, const ReplaceUnrelatedFiles& mayReplace) {
     const QFileInfo info(path);
     const QString suffix = info.suffix().toLower();
     if (suffix != QStringLiteral("gltf") && suffix != QStringLiteral("glb")) {
@@ -140,6 +176,15 @@ base::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& me
         }
     }
     files.push_back({target, reinterpret_cast<const unsigned char*>(written->data()), written->size()});
+    if (const std::vector<std::string> unrelated = unrelatedFiles(files);
+        !unrelated.empty() && !(mayReplace && mayReplace(unrelated))) {
+        return base::Error{base::printable(unrelated.front(), 200) +
+                           " exists and is not part of an earlier " + "export to " +
+                           base::printable(target.filename().string(), 200) +
+                           (unrelated.size() > 1 ? " (nor " + std::to_string(unrelated.size() - 1) + " more)"
+                                                 : std::string()) +
+                           "; move it or export under another name; nothing was written"};
+    }
     return writeAllOrNothing(files);
 }
 

@@ -5,6 +5,7 @@
 #include "scene/model/Scene.hpp"
 
 #include <QString>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ namespace speculum::scene {
 //   glTF counterpart and are dropped.
 // - Images: PNG and JPEG files (and embedded textures, "<model>#<name>") are copied byte for byte; any
 //   other format is decoded through OpenImageIO and written as PNG.
+// - A whole model file on a node without a material of its own is written as the viewport draws it: a
+//   child node per part the file's node tree places (its matrix that placement), each part's mesh once,
+//   with the file's own material and textures.
 // - A planar mirror becomes a quad of its size (the renderer's uvs) with metallic = its reflectivity and
 //   roughness = its roughness; the curved reflector's mesh gets metallic = its reflectivity and its
 //   roughness (both are GGX roughness, α = roughness², as glTF's).
@@ -37,10 +41,16 @@ namespace speculum::scene {
 // - The scene camera: a perspective camera (yfov, znear, zfar) on a top-level node "Camera".
 // - extensionsUsed lists exactly the extensions written.
 //
-// All or nothing: every file is written to a temporary in the target folder and renamed into place once
-// all are complete (the main file last), so a failure leaves no partial output. Meshes and textures that
-// cannot be loaded are skipped with a warning.
+// All or nothing: every file is written to a temporary in the target folder, and once all are complete
+// they replace the previous files as one set (base::commitTogether, the main file last): a failure at any
+// point leaves the previous export whole, with no partial output. Meshes and textures that cannot be
+// loaded are skipped with a warning.
+//
+// A `.gltf` export never replaces a `<name>.bin` or `<name>_<n>.png` beside it that an earlier export to
+// the same file did not write (the previous `.gltf` names its companions): mayReplace is asked with their
+// paths; without it, or when it says no, the export is refused with one line and nothing is written.
+using ReplaceUnrelatedFiles = std::function<bool(const std::vector<std::string>& paths)>;
 base::Status exportGltf(const Scene& scene, const QString& path, MeshLibrary& meshes,
-                        std::vector<std::string>& warnings);
+                        std::vector<std::string>& warnings, const ReplaceUnrelatedFiles& mayReplace = {});
 
 } // namespace speculum::scene

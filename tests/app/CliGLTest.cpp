@@ -434,6 +434,21 @@ TEST_F(Cli, ExportGltfWritesItsCompanionsBesideIt) {
     EXPECT_TRUE(fs::exists(out));
     EXPECT_TRUE(fs::exists(m_dir / "teapot.bin"));
     EXPECT_TRUE(fs::exists(m_dir / "teapot_0.png"));
+
+    // Again over its own earlier export: replaced without a word. Over a .bin nobody exported: refused.
+    const CliRun again = speculum("export " + demo() + " -o " + out.string() + " -q");
+    EXPECT_EQ(again.status, 0) << again.err;
+    EXPECT_TRUE(again.err.empty()) << again.err;
+    const fs::path other = m_dir / "other.gltf";
+    std::ofstream(m_dir / "other.bin") << "not an export's";
+    const CliRun refused = speculum("export " + demo() + " -o " + other.string());
+    EXPECT_EQ(refused.status, 1);
+    EXPECT_EQ(refused.err, "speculum: error: export: " + (m_dir / "other.bin").string() +
+                               " exists and is not part of an earlier export to other.gltf; move it or "
+                               "export under another name; nothing was written\n");
+    EXPECT_FALSE(fs::exists(other));
+    std::ifstream kept(m_dir / "other.bin");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "not an export's");
 }
 
 TEST_F(Cli, BadExportFailsWithOneLineAndWritesNothing) {

@@ -9,6 +9,7 @@
 #include "render/math/Projection.hpp"
 #include "support/TestPaths.hpp"
 
+#include <QFile>
 #include <QTemporaryDir>
 #include <glm/mat4x4.hpp>
 
@@ -75,6 +76,52 @@ TEST(DocumentSession, NewAndRestoreReplaceTheDocumentARestoredOneIsModifiedUntil
     EXPECT_TRUE(session.isModified()) << "a restored document has unsaved changes";
     ASSERT_TRUE(session.save(path));
     EXPECT_FALSE(session.isModified());
+}
+
+QByteArray fileBytes(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+// Two sessions on one project, as two editors: the later save over a file the other changed is refused
+// until this session's user chose to overwrite it; saves of its own never count as someone else's.
+TEST(DocumentSession, SavingOverAFileSomeoneElseChangedIsRefusedUntilOverwriteIsChosen) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("shared.speculum.json"));
+    ASSERT_TRUE(QFile::copy(demoScene(), path));
+    std::vector<std::string> warnings;
+    DocumentSession first, second;
+    ASSERT_TRUE(first.open(path, warnings));
+    ASSERT_TRUE(second.open(path, warnings));
+
+    ASSERT_TRUE(addNodeTree(first.scene(), first.undoStack(), makeNode(NewNodeKind::Box)));
+    ASSERT_TRUE(first.save(path));
+    ASSERT_TRUE(first.save(path)) << "its own save is not a change by someone else";
+    EXPECT_FALSE(first.changedOnDisk());
+    const QByteArray firstBytes = fileBytes(path);
+
+    ASSERT_TRUE(addNodeTree(second.scene(), second.undoStack(), makeNode(NewNodeKind::Mirror)));
+    EXPECT_TRUE(second.changedOnDisk());
+    const base::Status refused = second.save(path);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().find("changed on disk"), std::string::npos) << refused.error();
+    EXPECT_EQ(fileBytes(path), firstBytes) << "the other editor's save is intact";
+    EXPECT_TRUE(second.isModified()) << "and this version is still unsaved, not lost";
+
+    ASSERT_TRUE(second.save(path, DocumentSession::DiskChanges::Overwrite));
+    EXPECT_NE(fileBytes(path), firstBytes);
+    EXPECT_FALSE(second.changedOnDisk());
+    EXPECT_TRUE(first.changedOnDisk()) << "now the first editor is the one to be asked";
+
+    // Touching the file, or writing the same bytes again, is no change.
+    const QByteArray now = fileBytes(path);
+    {
+        QFile same(path);
+        ASSERT_TRUE(same.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        same.write(now);
+    }
+    EXPECT_FALSE(second.changedOnDisk());
 }
 
 TEST(PlaceImportedModel, StandsOnTheGroundWhereTheViewLooksBesideWhatIsThere) {

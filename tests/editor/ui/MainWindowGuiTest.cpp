@@ -13,6 +13,7 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QMouseEvent>
 #include <QPixmap>
@@ -263,6 +264,37 @@ TEST_F(MainWindowTest, UndoableEditMarksTitleAndUndoClearsIt) {
     ASSERT_TRUE(waitForFrames(*m_window));
     const Rgb after = bodyPatch();
     EXPECT_LT(after.distance(before), 4.0) << "undo did not restore the picture";
+}
+
+// A reflector whose map would take minutes a frame on this software renderer (2048², pre-filtered with
+// 1024 samples, redrawn every frame: about 90 s) does not hold the window: the first frame comes at once,
+// the map drawn smaller, and the editor says so and by how much.
+TEST_F(MainWindowTest, ACostlyMapIsDrawnSmallerWhileEditingAndSaysSo) {
+    const QString chrome = QFileInfo(kTeapotProject).absolutePath() + QStringLiteral("/chrome.speculum.json");
+    ASSERT_TRUE(m_window->openProjectFile(chrome).ok());
+    speculum::scene::SceneSettings settings = m_window->scene().settings();
+    settings.prefilterSamples = 1024;
+    m_window->scene().setSettings(settings);
+    const auto ball = nodeNamed("Chrome ball");
+    ASSERT_TRUE(ball.has_value());
+    speculum::scene::NodeData data = m_window->scene().findNode(*ball)->data();
+    data.reflector->resolution = 2048;
+    data.reflector->roughness = 0.5;
+    data.reflector->update = speculum::render::ReflectorUpdate::Always;
+    m_window->scene().setNodeData(*ball, data);
+
+    QElapsedTimer clock;
+    clock.start();
+    ASSERT_TRUE(waitForFrames(*m_window, 1));
+    EXPECT_LT(clock.elapsed(), 30000) << "the first frame did not wait for the whole map";
+    const speculum::render::FrameReport& report = m_window->viewport().lastReport();
+    EXPECT_LT(report.plan.reflectorResolution, 2048);
+    bool said = false;
+    for (const std::string& w : report.warnings) {
+        said =
+            said || (w.find("while editing") != std::string::npos && w.find("roughly") != std::string::npos);
+    }
+    EXPECT_TRUE(said) << "the editor says the map is drawn smaller, and what the full one would cost";
 }
 
 TEST_F(MainWindowTest, BrokenFileKeepsTheOpenDocument) {

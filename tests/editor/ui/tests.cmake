@@ -10,8 +10,10 @@ speculum_add_test(EditorUiTest TIER unit SOURCES HandleDragTest.cpp GizmoTest.cp
 find_package(Qt6 REQUIRED COMPONENTS Test) # QTest mouse and key events
 set(gui_main ${SPECULUM_TEST_SUPPORT}/gui_main.cpp)
 # The main window on the reference project: the viewport draws it, edits mark the title as modified and
-# undo clears it, a broken file leaves the open document alone.
-speculum_add_test(MainWindowGuiTest TIER gui SOURCES MainWindowGuiTest.cpp ${gui_main} LIBS speculum_editor_ui)
+# undo clears it, a broken file leaves the open document alone; two editors on one file ask before the
+# second save.
+speculum_add_test(MainWindowGuiTest TIER gui SOURCES MainWindowGuiTest.cpp MainWindowDiskChangesGuiTest.cpp ${gui_main}
+    LIBS speculum_editor_ui)
 # The editor as a user drives it: the Add menu and the inspector, undo and redo, save and reopen, the
 # scene tree, click-to-select and handle drags, multiple selection.
 speculum_add_test(MainWindowWorkflowGuiTest TIER gui

@@ -12,7 +12,9 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <limits>
+#include <map>
 #include <random>
+#include <set>
 #include <sys/stat.h>
 
 namespace speculum::render {
@@ -194,6 +196,54 @@ TEST(WriteFailures, DeviceAndFifoTargetsAreRefusedAndLeftAlone) {
     ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
     EXPECT_TRUE(S_ISFIFO(st.st_mode));
     EXPECT_EQ(folderEntries(folder).size(), 1u);
+}
+
+// Files that belong together (a .gltf with its .bin and image) go in place as one set: when a rename fails
+// after others were done (here the last file's temporary vanished first), the files already replaced are
+// put back, the one that did not exist before is removed, and no temporary or backup stays.
+TEST(CommitTogether, ARenameThatFailsHalfWayPutsBackEveryFileAlreadyReplaced) {
+    const fs::path folder = test::freshTestFolder();
+    const std::map<std::string, std::string> before = {{"set.bin", "old bin"}, {"set.gltf", "old gltf"}};
+    for (const auto& [name, bytes] : before) {
+        ASSERT_TRUE(base::writeFileAtomically((folder / name).string(), bytes).ok());
+    }
+    std::vector<base::AtomicFile> files;
+    for (const char* name : {"set.bin", "set_0.png", "set.gltf"}) {
+        base::Result<base::AtomicFile> file = base::AtomicFile::create((folder / name).string());
+        ASSERT_TRUE(file.ok()) << file.error();
+        ASSERT_TRUE(file->write(std::string("new ") + name).ok());
+        ASSERT_TRUE(file->finish().ok());
+        files.push_back(std::move(file).value());
+    }
+    ASSERT_EQ(::unlink(files.back().temporaryPath().c_str()), 0);
+
+    const base::Status status = base::commitTogether(files);
+    ASSERT_FALSE(status.ok());
+    EXPECT_TRUE(oneLine(status.error())) << status.error();
+    EXPECT_NE(status.error().find("set.gltf"), std::string::npos) << status.error();
+    EXPECT_NE(status.error().find("the previous files are unchanged"), std::string::npos) << status.error();
+    std::map<std::string, std::string> after;
+    for (const std::string& name : folderEntries(folder)) {
+        after[name] = fileBytes(folder / name);
+    }
+    EXPECT_EQ(after, before) << "the old set, whole, and nothing else";
+}
+
+TEST(CommitTogether, EveryFileOfTheSetIsReplaced) {
+    const fs::path folder = test::freshTestFolder();
+    ASSERT_TRUE(base::writeFileAtomically((folder / "set.gltf").string(), "old").ok());
+    std::vector<base::AtomicFile> files;
+    for (const char* name : {"set.bin", "set.gltf"}) {
+        base::Result<base::AtomicFile> file = base::AtomicFile::create((folder / name).string());
+        ASSERT_TRUE(file.ok()) << file.error();
+        ASSERT_TRUE(file->write(std::string("new ") + name).ok());
+        files.push_back(std::move(file).value());
+    }
+    ASSERT_TRUE(base::commitTogether(files).ok());
+    const std::vector<std::string> names = folderEntries(folder);
+    EXPECT_EQ(std::set<std::string>(names.begin(), names.end()),
+              (std::set<std::string>{"set.bin", "set.gltf"}));
+    EXPECT_EQ(fileBytes(folder / "set.gltf"), "new set.gltf");
 }
 
 // Half floats end at 65504: a tracer pixel of 1e6 used to become Inf in the EXR, a NaN stayed NaN.

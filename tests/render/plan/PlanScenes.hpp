@@ -2,9 +2,11 @@
 // Small scenes the planner tests share: mirrors facing a camera at the origin that looks down −Z; and what
 // they look up in a plan.
 #include "render/frame/FrameInput.hpp"
+#include "render/mesh/Primitives.hpp"
 #include "render/plan/FramePlan.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -18,6 +20,24 @@ inline Mirror wall(const std::string& name, double zPlane, bool facingPlusZ = tr
                           glm::radians(facingPlusZ ? 90.0 : -90.0), glm::dvec3(1, 0, 0));
     m.size = {size, size};
     return m;
+}
+
+// A sphere reflector of this roughness ("Ball") at the origin beside a box, seen from +Z.
+inline FrameInput roughBall(double roughness, GlossyFilter filter = GlossyFilter::Footprint) {
+    FrameInput input;
+    input.camera.position = {0.0, 0.0, 5.0};
+    input.camera.target = {0.0, 0.0, 0.0};
+    input.camera.far = 50.0;
+    static const auto box = std::make_shared<const MeshData>(makeBox());
+    static const auto sphere = std::make_shared<const MeshData>(makeSphere(16));
+    input.items.push_back({"Box", glm::translate(glm::dmat4(1.0), glm::dvec3(2, 0, 0)), box, {}, true});
+    input.settings.glossyFilter = filter;
+    Reflector r;
+    r.name = "Ball";
+    r.mesh = sphere;
+    r.roughness = roughness;
+    input.reflector = r;
+    return input;
 }
 
 inline FrameInput cameraAtOrigin() {

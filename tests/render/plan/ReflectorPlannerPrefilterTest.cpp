@@ -2,7 +2,7 @@
 // when a rough reflector reads the pre-filtered chain (GlossyFilter::Footprint), a skip with its reason
 // otherwise (roughness 0, the Mip filter), and no pass again while the map and the sample count stay the
 // same.
-#include "render/mesh/Primitives.hpp"
+#include "PlanScenes.hpp"
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
@@ -12,22 +12,7 @@
 namespace speculum::render {
 namespace {
 
-FrameInput roughBall(double roughness, GlossyFilter filter = GlossyFilter::Footprint) {
-    FrameInput input;
-    input.camera.position = {0.0, 0.0, 5.0};
-    input.camera.target = {0.0, 0.0, 0.0};
-    input.camera.far = 50.0;
-    static const auto box = std::make_shared<const MeshData>(makeBox());
-    static const auto sphere = std::make_shared<const MeshData>(makeSphere(16));
-    input.items.push_back({"Box", glm::translate(glm::dmat4(1.0), glm::dvec3(2, 0, 0)), box, {}, true});
-    input.settings.glossyFilter = filter;
-    Reflector r;
-    r.name = "Ball";
-    r.mesh = sphere;
-    r.roughness = roughness;
-    input.reflector = r;
-    return input;
-}
+using test::roughBall;
 
 const PlannedPass* passOf(const FramePlan& plan, PassKind kind) {
     const auto it = std::find_if(plan.passes.begin(), plan.passes.end(),

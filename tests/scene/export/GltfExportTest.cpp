@@ -8,6 +8,7 @@
 #include "editor/document/NodeFactory.hpp"
 #include "render/imageio/TextureLoader.hpp"
 #include "scene/evaluate/Snapshot.hpp"
+#include "scene/import/ModelImport.hpp"
 #include "scene/project/ProjectFile.hpp"
 #include "support/FillingDisk.hpp"
 #include "support/TestPaths.hpp"
@@ -21,6 +22,7 @@
 #include <QUndoStack>
 #include <QUrl>
 #include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <cstring>
 #include <filesystem>
@@ -705,6 +707,92 @@ TEST(GltfExport, ADiskFillingUpKeepsEveryPreviousFile) {
         }
         EXPECT_EQ(after, before);
     }
+}
+
+// A whole model file on a node without a material of its own is exported as the viewport draws it: each
+// part of the file with the file's own material (colours and textures), where the file places it, not as
+// one grey primitive.
+TEST(GltfExport, AWholeModelFileKeepsItsPartsAndTheirMaterials) {
+    const auto dir = folder();
+    const std::string toyset = speculum::testSourcePath("resources/models/toyset.glb");
+    std::vector<std::string> importWarnings;
+    const auto model = speculum::scene::importModelFile(toyset, importWarnings);
+    ASSERT_TRUE(model.ok()) << model.error();
+    ASSERT_GT(model->materials.size(), 1u) << "a file with materials of its own";
+
+    speculum::scene::SceneData data;
+    speculum::scene::NodeTree node = makeNode(NewNodeKind::Box);
+    node.data.name = "Toys";
+    node.data.mesh->builtin.reset();
+    node.data.mesh->file = toyset;
+    node.data.material.reset();
+    data.nodes.push_back(node);
+    speculum::scene::Scene scene;
+    scene.reset(data);
+    speculum::scene::MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const auto glb = dir / "toys.glb";
+    ASSERT_TRUE(
+        speculum::scene::exportGltf(scene, QString::fromStdString(glb.string()), meshes, warnings).ok());
+
+    Assimp::Importer importer;
+    const aiScene* back = importer.ReadFile(glb.string(), aiProcess_Triangulate);
+    ASSERT_NE(back, nullptr) << importer.GetErrorString();
+    std::set<std::string> colours;
+    for (unsigned i = 0; i < back->mNumMaterials; ++i) {
+        aiColor4D c;
+        if (back->mMaterials[i]->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS) {
+            colours.insert(std::to_string(int(c.r * 100)) + "," + std::to_string(int(c.g * 100)) + "," +
+                           std::to_string(int(c.b * 100)));
+        }
+    }
+    EXPECT_GE(back->mNumMeshes, model->materials.size() > 1 ? 2u : 1u) << "a mesh per part, not one";
+    EXPECT_GE(colours.size(), 2u) << "the file's materials, not one grey";
+}
+
+std::string readText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// A .gltf export writes <name>.bin and <name>_<n>.png beside it. It replaces those of an earlier export
+// to the same file without asking, but never an unrelated file of such a name: without leave it refuses
+// with one line naming the file and writes nothing; with leave (the editor asks) it replaces it.
+TEST(GltfExport, FilesBesideItThatNoEarlierExportWroteAreNeverReplacedUnasked) {
+    namespace fs = std::filesystem;
+    const auto dir = folder();
+    speculum::scene::Scene scene;
+    scene.reset(exportScene(dir));
+    speculum::scene::MeshLibrary meshes;
+    std::vector<std::string> warnings;
+    const QString target = QString::fromStdString((dir / "b.gltf").string());
+    std::ofstream(dir / "b.bin") << "someone else's buffer";
+    std::ofstream(dir / "b_0.png") << "someone else's picture";
+    std::vector<std::string> asked;
+    const auto refuse = [&](const std::vector<std::string>& paths) {
+        asked = paths;
+        return false;
+    };
+    const auto status = speculum::scene::exportGltf(scene, target, meshes, warnings, refuse);
+    ASSERT_FALSE(status.ok());
+    EXPECT_EQ(status.error().find('\n'), std::string::npos);
+    EXPECT_NE(status.error().find("b.bin exists and is not part of an earlier export to b.gltf"),
+              std::string::npos)
+        << status.error();
+    EXPECT_EQ(asked.size(), 2u) << "both files were named to the one asked";
+    EXPECT_EQ(readText(dir / "b.bin"), "someone else's buffer");
+    EXPECT_EQ(readText(dir / "b_0.png"), "someone else's picture");
+    EXPECT_FALSE(fs::exists(dir / "b.gltf")) << "nothing was written";
+    EXPECT_FALSE(speculum::scene::exportGltf(scene, target, meshes, warnings).ok())
+        << "no one to ask: refused";
+
+    // Given leave, the export replaces them; after that they are its own, and a new export asks nothing.
+    ASSERT_TRUE(
+        speculum::scene::exportGltf(scene, target, meshes, warnings, [](const auto&) { return true; }).ok());
+    EXPECT_NE(readText(dir / "b.bin"), "someone else's buffer");
+    asked.clear();
+    ASSERT_TRUE(speculum::scene::exportGltf(scene, target, meshes, warnings, refuse).ok());
+    EXPECT_TRUE(asked.empty());
 }
 
 } // namespace

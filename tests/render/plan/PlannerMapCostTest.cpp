@@ -1,0 +1,81 @@
+// What the reflector's map costs, said before the work: a map that would take minutes on a software
+// renderer (an 8192² cube pre-filtered with 1024 samples, redrawn every frame) is warned of with its
+// estimate; an interactive view (PlanOptions::maxMapSeconds) draws it smaller and with fewer samples, and
+// says so; the demo-sized maps cost neither a warning nor a cap.
+#include "PlanScenes.hpp"
+#include "render/plan/MapCost.hpp"
+#include "render/plan/Planner.hpp"
+
+#include <gtest/gtest.h>
+
+namespace speculum::render {
+namespace {
+
+// The ball's map at this resolution, pre-filtered with `samples`, redrawn every frame.
+FrameInput ballWithMap(int resolution, int samples, double roughness) {
+    FrameInput input = test::roughBall(roughness);
+    input.settings.prefilterSamples = samples;
+    input.reflector->resolution = resolution;
+    input.reflector->update = ReflectorUpdate::Always;
+    return input;
+}
+
+std::vector<std::string> costWarnings(const FramePlan& plan) {
+    std::vector<std::string> found;
+    for (const std::string& w : plan.warnings)
+        if (w.find("software renderer") != std::string::npos)
+            found.push_back(w);
+    return found;
+}
+
+TEST(MapCostPlanner, AMapThatWouldTakeMinutesIsWarnedOfWithItsEstimate) {
+    const FrameInput input = ballWithMap(8192, 1024, 0.5);
+    const MapCost cost = mapCost(*input.reflector, 8192, input.settings, 1024);
+    EXPECT_GT(cost.softwareSeconds(), 60.0) << "minutes, as measured";
+    const FramePlan plan = planFrame(input, {});
+    const std::vector<std::string> warnings = costWarnings(plan);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("reflector \"Ball\": its 8192² cube map pre-filtered with 1024 samples"),
+              std::string::npos)
+        << warnings[0];
+    EXPECT_NE(warnings[0].find("roughly"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("every frame"), std::string::npos) << warnings[0];
+    EXPECT_EQ(plan.reflectorResolution, 8192) << "a still draws it as asked";
+    EXPECT_EQ(plan.prefilterSamples, 0);
+}
+
+TEST(MapCostPlanner, AnInteractiveViewDrawsACostlyMapSmallerAndSaysSo) {
+    const FrameInput input = ballWithMap(8192, 1024, 0.5);
+    PlanOptions options;
+    options.maxMapSeconds = kInteractiveMapSeconds;
+    const FramePlan plan = planFrame(input, {}, {}, options);
+    EXPECT_LT(plan.reflectorResolution, 8192);
+    EXPECT_GE(plan.reflectorResolution, 64);
+    const int samples = plan.prefilterSamples > 0 ? plan.prefilterSamples : input.settings.prefilterSamples;
+    EXPECT_GE(samples, 8);
+    EXPECT_LE(mapCost(*input.reflector, plan.reflectorResolution, input.settings, samples).softwareSeconds(),
+              kInteractiveMapSeconds);
+    const std::vector<std::string> warnings = costWarnings(plan);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("while editing"), std::string::npos) << warnings[0];
+    // What the passes draw is the capped map (plannedInput), so what is allocated is what was planned.
+    const std::optional<FrameInput> drawn = plannedInput(input, plan);
+    ASSERT_TRUE(drawn.has_value());
+    EXPECT_EQ(drawn->reflector->resolution, plan.reflectorResolution);
+    EXPECT_EQ(drawn->settings.prefilterSamples, samples);
+}
+
+TEST(MapCostPlanner, DemoSizedMapsAreNeitherWarnedOfNorCapped) {
+    for (const int resolution : {256, 512, 1024}) {
+        const FrameInput input = ballWithMap(resolution, 64, 0.3);
+        PlanOptions options;
+        options.maxMapSeconds = kInteractiveMapSeconds;
+        const FramePlan plan = planFrame(input, {}, {}, options);
+        EXPECT_TRUE(costWarnings(plan).empty()) << resolution;
+        EXPECT_EQ(plan.reflectorResolution, resolution);
+        EXPECT_EQ(plan.prefilterSamples, 0) << resolution;
+    }
+}
+
+} // namespace
+} // namespace speculum::render
