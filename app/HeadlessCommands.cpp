@@ -51,22 +51,11 @@ std::string commandName(const CliOptions& options) {
     return commandWord(options.command);
 }
 
-// Skips that are the frame working as meant (nothing to do, reused, out of sight, the user's own depth
-// setting), and lights past kMaxLights, which lightDrops reports once. Every other skip drops something
-// the scene asks for and is a warning: a numeric failure, a capacity limit, and whatever code the planner
-// adds later (unknown codes warn).
+// Skips that drop something the scene asks for are warnings (render::dropsWhatTheSceneAsks); the frame
+// working as meant, or the scene's own settings, are not. Lights past kMaxLights are said once by
+// lightDrops.
 bool expectedSkip(render::PlanReason code) {
-    using render::PlanReason;
-    static const PlanReason kExpected[] = {
-        PlanReason::LightLimit,           PlanReason::ShadowsOff,       PlanReason::NoShadowCasters,
-        PlanReason::NoShadowReceivers,    PlanReason::ShadowMapReused,  PlanReason::EnvmapOutOfSight,
-        PlanReason::EnvmapReusedOnce,     PlanReason::EnvmapUnchanged,  PlanReason::MirrorOutsideView,
-        PlanReason::MirrorOutsideParent,  PlanReason::MirrorBehind,     PlanReason::MirrorEdgeOn,
-        PlanReason::MirrorBelowPixel,     PlanReason::MirrorDepthLimit, PlanReason::MirrorDepthZero,
-        PlanReason::MirrorOccluded, // hidden behind something nearer, this frame or this tile
-        PlanReason::MirrorOccludedInTile,
-    };
-    return std::find(std::begin(kExpected), std::end(kExpected), code) != std::end(kExpected);
+    return !render::dropsWhatTheSceneAsks(code) || code == render::PlanReason::LightLimit;
 }
 
 // What kind of node a plan's target names, for "mirror 'M': skipped: ...".

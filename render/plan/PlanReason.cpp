@@ -447,6 +447,75 @@ bool isPreview(PlanReason code) {
     return code >= PlanReason::PreviewScaled;
 }
 
+bool dropsWhatTheSceneAsks(PlanReason code) {
+    switch (code) {
+    case PlanReason::LightLimit:
+    case PlanReason::ShadowedLightLimit:
+    case PlanReason::ShadowMapDoesNotFit:
+    case PlanReason::ShadowMapNotAllocated:
+    case PlanReason::MirrorSizeInvalid:
+    case PlanReason::MirrorNoPlane:
+    case PlanReason::MirrorViewLimit:
+    case PlanReason::MirrorNoReflectionMatrix:
+    case PlanReason::MirrorNoObliqueProjection:
+    case PlanReason::MirrorStencilTooDeep:
+    case PlanReason::MirrorNoTexture:
+    case PlanReason::EnvmapDoesNotFit:
+    case PlanReason::EnvmapNotAllocated:
+    case PlanReason::PrefilterNoMap:
+        return true;
+    case PlanReason::ShadowsOff:
+    case PlanReason::NoShadowCasters:
+    case PlanReason::NoShadowReceivers:
+    case PlanReason::ShadowMapReused:
+    case PlanReason::ShadowFirstMap:
+    case PlanReason::ShadowChanged:
+    case PlanReason::MainHalfFloat:
+    case PlanReason::MainSrgb:
+    case PlanReason::MainIntoOutput:
+    case PlanReason::CompositeToFloat:
+    case PlanReason::CompositeCopiesSrgb:
+    case PlanReason::CompositeStencilBlend:
+    case PlanReason::CompositeFresnelBlend:
+    case PlanReason::CompositeNestedBlend:
+    case PlanReason::CompositeNotNeeded:
+    case PlanReason::GuidesOverView:
+    case PlanReason::MirrorMaskStencil:
+    case PlanReason::MirrorMaskCount:
+    case PlanReason::MirrorIntoTexture:
+    case PlanReason::MirrorInStencil:
+    case PlanReason::MirrorSurface:
+    case PlanReason::MirrorEdgeOn:
+    case PlanReason::MirrorBehind:
+    case PlanReason::MirrorOutsideView:
+    case PlanReason::MirrorOutsideParent:
+    case PlanReason::MirrorBelowPixel:
+    case PlanReason::MirrorDepthLimit:
+    case PlanReason::MirrorDepthZero:
+    case PlanReason::MapMirrorDepthZero:
+    case PlanReason::MirrorOccluded:
+    case PlanReason::MirrorOccludedInTile:
+    case PlanReason::EnvmapFirstMap:
+    case PlanReason::EnvmapAlways:
+    case PlanReason::EnvmapChanged:
+    case PlanReason::EnvmapOutOfSight:
+    case PlanReason::EnvmapReusedOnce:
+    case PlanReason::EnvmapUnchanged:
+    case PlanReason::PrefilterFirstChain:
+    case PlanReason::PrefilterMapRendered:
+    case PlanReason::PrefilterSettingsChanged:
+    case PlanReason::PrefilterSharp:
+    case PlanReason::PrefilterMipFilter:
+    case PlanReason::PrefilterReused:
+    case PlanReason::PreviewScaled:
+    case PlanReason::PreviewMirrorDepth:
+    case PlanReason::PreviewShadowMapSize:
+    case PlanReason::PreviewEnvmapHeld:
+        return false;
+    }
+    return false;
+}
+
 std::string_view toString(PlanReason code) {
     return entryOf(code).name;
 }

@@ -90,6 +90,12 @@ inline constexpr std::size_t kPlanReasonCount = static_cast<std::size_t>(PlanRea
 // Whether the code is one of a preview's skips (its name starts "preview-").
 bool isPreview(PlanReason code);
 
+// Whether a skip with this code drops something the scene asks for (a map that does not fit, a mirror
+// past the view limit, a transform that leaves no plane): what the commands warn of. Skips that are the
+// frame working as meant (nothing to draw, reused, out of sight, the scene's own settings such as a
+// sharp reflector needing no pre-filter) and the passes' own codes are not.
+bool dropsWhatTheSceneAsks(PlanReason code);
+
 // The code's stable kebab-case name ("mirror-outside-view"): explain's JSON "code".
 std::string_view toString(PlanReason code);
 

@@ -403,6 +403,19 @@ TEST_F(Cli, ExplainPreviewShowsWhatThePreviewGivesUp) {
 
 // `speculum export`: a self-contained .glb (the demo's marble PNG inside it, camera and light there), a
 // .gltf with its companions; bad input fails with one line and writes nothing.
+// A demo drawn as it asks prints no warning: the scene's own settings (a sharp reflector that needs no
+// pre-filter, mirrors out of view) are not something dropped.
+TEST_F(Cli, TheDemosRenderWithoutWarnings) {
+    for (const char* name : {"teapot", "mirrors", "chrome", "glossy", "models"}) {
+        const fs::path out = m_dir / (std::string(name) + ".png");
+        const CliRun run = speculum(
+            "render " + speculum::testSourcePath(std::string("resources/scenes/") + name + ".speculum.json") +
+            " -o " + out.string() + " --size 64x36 -q");
+        EXPECT_EQ(run.status, 0) << name << ": " << run.err;
+        EXPECT_EQ(run.err, "") << name;
+    }
+}
+
 TEST_F(Cli, ExportWritesASelfContainedGlb) {
     const fs::path out = m_dir / "teapot.glb";
     const CliRun run = speculum("export " + demo() + " -o " + out.string());

@@ -97,6 +97,22 @@ TEST(PlanReason, SentencesNameTheirDetails) {
 }
 
 // A preview's skips are told apart by their code, whose name says so.
+// What the commands warn of: a skip that drops what the scene asks for. The scene's own settings working
+// as meant (a sharp reflector needs no pre-filter, the Mip filter none either, a map of mirror depth 0
+// shows no mirror) are not, nor are reuse, occlusion and previews.
+TEST(PlanReason, OnlySkipsThatDropWhatTheSceneAsksAreDrops) {
+    for (const PlanReason ordinary :
+         {PlanReason::PrefilterSharp, PlanReason::PrefilterMipFilter, PlanReason::PrefilterReused,
+          PlanReason::MapMirrorDepthZero, PlanReason::CompositeNotNeeded, PlanReason::EnvmapUnchanged,
+          PlanReason::MirrorOccluded, PlanReason::ShadowsOff, PlanReason::PreviewScaled,
+          PlanReason::MainSrgb})
+        EXPECT_FALSE(dropsWhatTheSceneAsks(ordinary)) << ordinary;
+    for (const PlanReason drop :
+         {PlanReason::ShadowMapDoesNotFit, PlanReason::EnvmapDoesNotFit, PlanReason::MirrorViewLimit,
+          PlanReason::MirrorNoPlane, PlanReason::PrefilterNoMap, PlanReason::MirrorNoTexture})
+        EXPECT_TRUE(dropsWhatTheSceneAsks(drop)) << drop;
+}
+
 TEST(PlanReason, PreviewCodesAreNamedSo) {
     for (PlanReason code : everyCode())
         EXPECT_EQ(isPreview(code), toString(code).starts_with("preview-")) << code;
