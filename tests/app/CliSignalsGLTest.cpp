@@ -48,11 +48,32 @@ Spawned spawnSpeculum(const std::vector<std::string>& arguments, const fs::path&
     return run;
 }
 
-// Waits until stderr contains `sign` (empty: a fixed pause), sends `signal`, and returns how it ended:
-// its exit status, or -signal when the signal killed it.
+// Whether the process catches SIGINT and SIGTERM yet (the SigCgt mask of /proc/PID/status): before its
+// handlers are in place, a signal would end it the default way however correct the command. A build with
+// sanitizers takes seconds to get there.
+bool catchesStopSignals(pid_t pid) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    for (std::string line; std::getline(status, line);) {
+        if (line.rfind("SigCgt:", 0) == 0) {
+            const unsigned long long caught = std::stoull(line.substr(7), nullptr, 16);
+            const unsigned long long wanted = (1ull << (SIGINT - 1)) | (1ull << (SIGTERM - 1));
+            return (caught & wanted) == wanted;
+        }
+    }
+    return false;
+}
+
+// Waits until the process catches the stop signals and, where given, stderr contains `sign` (else a
+// pause into its work); sends `signal`, and returns how it ended: its exit status, or -signal when the
+// signal killed it.
 int interruptWhenUnderWay(const Spawned& run, const std::string& sign, int signal) {
+    const auto started = std::chrono::steady_clock::now();
+    while (!catchesStopSignals(run.pid) &&
+           std::chrono::steady_clock::now() - started < std::chrono::seconds(60))
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_TRUE(catchesStopSignals(run.pid)) << "no handlers after a minute: " << readFile(run.err);
     if (sign.empty()) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        std::this_thread::sleep_for(std::chrono::milliseconds(1000));
     } else {
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
         while (readFile(run.err).find(sign) == std::string::npos &&
