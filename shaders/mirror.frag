@@ -51,6 +51,14 @@ uniform mat4 uReflection;
 #else
 #define MIRROR_USES_CHAIN (uChainSigma > 0.0)
 #endif
+// The chain's two reads (chainReflection): a draw whose roughness takes only one compiles the other out.
+#ifdef MIRROR_CHAIN_GAUSSIANS
+#define MIRROR_CHAIN_READS_GAUSSIANS (MIRROR_CHAIN_GAUSSIANS != 0)
+#define MIRROR_CHAIN_READS_TAPS (MIRROR_CHAIN_TAPS != 0)
+#else
+#define MIRROR_CHAIN_READS_GAUSSIANS true
+#define MIRROR_CHAIN_READS_TAPS true
+#endif
 #ifdef MIRROR_FRESNEL
 #define MIRROR_USES_FRESNEL (MIRROR_FRESNEL != 0)
 #else
@@ -112,7 +120,8 @@ struct Footprint {
 };
 
 Footprint lobeFootprint(vec2 uv, vec3 normal, vec3 viewDir) {
-    vec4 sharp = textureLod(uReflectionTexture, uv, 0.0);
+    // The pixel's own texel (its centre is the pixel's): a fetch, without a filtered lookup's work.
+    vec4 sharp = texelFetch(uReflectionTexture, ivec2(gl_FragCoord.xy), 0);
     float eyeDistance = length(vWorld - uEye);
     float pathLength = max(sharp.a, eyeDistance);
     float beyond = pathLength - eyeDistance;
@@ -189,9 +198,9 @@ vec3 chainReflection(vec2 uv, vec3 normal, vec3 viewDir) {
     Footprint f = lobeFootprint(uv, normal, viewDir);
     float taps = clamp((uRoughness - uChainTapsAbove.x) / (uChainTapsAbove.y - uChainTapsAbove.x), 0.0, 1.0);
     vec3 sum = vec3(0.0);
-    if (taps < 1.0)
+    if (MIRROR_CHAIN_READS_GAUSSIANS && taps < 1.0)
         sum += (1.0 - taps) * chainGaussians(uv, f);
-    if (taps > 0.0)
+    if (MIRROR_CHAIN_READS_TAPS && taps > 0.0)
         sum += taps * lobeTaps(uv, f, uChainTaps);
     return sum;
 }

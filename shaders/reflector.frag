@@ -29,6 +29,15 @@ uniform float uRoughness;
 const int REFLECTOR_MIP_LEVELS = 1; // the map's own mip chain: level k is 2^k times coarser
 const int REFLECTOR_GGX_CHAIN = 2;  // the pre-filtered chain: level k is the lobe of roughness k / (levels − 1)
 
+// Each draw names its lookup (ReflectorPass::drawSurface), so a SIMD rasterizer such as llvmpipe, which
+// runs both sides of a branch on a uniform under a mask, does not pay for the rough lookups and the
+// albedo on a sharp reflector. Without the define (the general shader) the uniform decides.
+#ifdef REFLECTOR_ROUGH
+#define REFLECTOR_LOOKUP REFLECTOR_ROUGH
+#else
+#define REFLECTOR_LOOKUP uRough
+#endif
+
 out vec4 fragColor;
 
 // Parallax correction: the point where the reflected ray from the shaded point p leaves the proxy, seen
@@ -83,10 +92,10 @@ void main() {
     vec3 dx = dFdx(d);
     vec3 dy = dFdy(d);
     vec3 environment;
-    if (uRough == 0) {
+    if (REFLECTOR_LOOKUP == 0) {
         environment = uEnvType == ENVMAP_CUBE ? envmapLookupCube(uEnvCube, d, dx, dy).rgb
                                               : envmapLookup2D(uEnvArray, uEnvType, uEnvLayout, d, dx, dy).rgb;
-    } else if (uRough == REFLECTOR_GGX_CHAIN) {
+    } else if (REFLECTOR_LOOKUP == REFLECTOR_GGX_CHAIN) {
         // Not the mip-level lookups: they would take the pixel's footprint as a level of resolution, which
         // in this chain is a much wider lobe.
         float lod = chainLod(hit, dx, dy);
@@ -98,7 +107,7 @@ void main() {
                                                                   uRoughnessLod).rgb;
     }
     // The chain's levels are normalised blurs: the lobe's masking and shadowing come on top.
-    if (uRough != 0)
+    if (REFLECTOR_LOOKUP != 0)
         environment *= ggxAlbedo(dot(N, E), uRoughness);
     float r = uReflectivity;
     if (uFresnel != 0) {

@@ -194,6 +194,11 @@ std::string mirrorDefines(const MirrorView& view, const Mirror& mirror, bool fro
                           const glm::dvec3& viewWeight, bool encoded) {
     const bool footprint = fromTexture && usesFootprint(view, mirror);
     const bool chain = fromTexture && usesChain(view, mirror);
+    // Which of the chain's two reads its roughness takes (mirror.frag's chainReflection): the Gaussians up
+    // to kChainTapsAbove.y, the taps from kChainTapsAbove.x; both between.
+    const double roughness = std::clamp(mirror.roughness, 0.0, 1.0);
+    const bool chainGaussians = chain && roughness < kChainTapsAbove.y;
+    const bool chainTaps = chain && roughness > kChainTapsAbove.x;
     const bool sharp = fromTexture && !(mirror.roughness > 0.0);
     // Weight exactly 1 everywhere: the texel is the pixel.
     const bool copy = fromTexture && surfaceCopiesReflection(mirror, viewWeight);
@@ -201,7 +206,8 @@ std::string mirrorDefines(const MirrorView& view, const Mirror& mirror, bool fro
         return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
     };
     return define("MIRROR_FROM_TEXTURE", fromTexture) + define("MIRROR_GLOSSY_TAPS", footprint) +
-           define("MIRROR_CHAIN", chain) + define("MIRROR_FRESNEL", mirror.fresnel) +
+           define("MIRROR_CHAIN", chain) + define("MIRROR_CHAIN_GAUSSIANS", chainGaussians) +
+           define("MIRROR_CHAIN_TAPS", chainTaps) + define("MIRROR_FRESNEL", mirror.fresnel) +
            define("MIRROR_SHARP", sharp) + define("MIRROR_COPY", copy) +
            define("MIRROR_COPY_ENCODED", copy && encoded) +
            define("MIRROR_SURFACE", !(mirror.reflectivity >= 1.0));

@@ -208,7 +208,11 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     const Reflector& r = *input.reflector;
     const gl::Program& p = m_surface;
     beginLitView(input, view, p, context);
-    setMaterial(r.material, p, context);
+    const double roughness = std::clamp(r.roughness, 0.0, 1.0);
+    const bool chain = roughness > 0.0 && input.settings.glossyFilter != GlossyFilter::Mip && hasChain(r);
+    const int lookup = !(roughness > 0.0) ? 0 : chain ? 2 : 1; // reflector.frag's REFLECTOR_*
+    // The draw variant without the lookups it does not use (REFLECTOR_ROUGH).
+    setMaterial(r.material, p, context, "#define REFLECTOR_ROUGH " + std::to_string(lookup) + "\n");
     p.set("uReflectivity", float(std::clamp(r.reflectivity, 0.0, 1.0)));
     p.set("uFresnel", r.fresnel ? 1 : 0);
     const envmap::EnvironmentCapture& map = *m_capture;
@@ -228,12 +232,9 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     // pixel's footprint (reflector.frag's chainLod), or, for Mip (or without a chain), the map's own mip
     // chain at roughness × (its levels − 1), box-filtered levels standing in for the lobe. Roughness 0
     // takes the sharp lookup, as before roughness existed.
-    const double roughness = std::clamp(r.roughness, 0.0, 1.0);
     GLuint texture = map.texture();
     float lod = 0.0f;
-    bool chain = false;
     if (roughness > 0.0) {
-        chain = input.settings.glossyFilter != GlossyFilter::Mip && hasChain(r);
         const int levels =
             chain ? m_prefilter->levels()
                   : (map.settings().mipmaps ? envmap::mipLevelCount(map.layout().width, map.layout().height)
@@ -241,7 +242,7 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
         texture = chain ? m_prefilter->texture() : texture;
         lod = static_cast<float>(roughness * (levels - 1));
     }
-    p.set("uRough", !(roughness > 0.0) ? 0 : chain ? 2 : 1); // reflector.frag's REFLECTOR_*
+    p.set("uRough", lookup);
     p.set("uRoughnessLod", lod);
     p.set("uRoughness", float(roughness));
     p.set("uGgxAlbedo", kGgxAlbedoUnit);
