@@ -72,9 +72,10 @@ std::string familyIntro(Family family) {
         return "The scene's map without and with parallax correction (the scene's own proxy, or a box around "
                "everything the map sees), at each resolution.";
     case Family::MirrorTechnique:
-        return "Every planar mirror drawn with the stencil technique, then with the texture technique. The "
-               "reference is the scene's own, rough mirrors included (a rough mirror is drawn with the "
-               "texture technique either way).";
+        return "Every planar mirror drawn with the stencil technique, then with the texture technique, then "
+               "traced in the camera's image (screen space: what the image does not show reflects the "
+               "background). The reference is the scene's own, rough mirrors included (a rough mirror is "
+               "drawn with the texture technique unless it is traced in screen space).";
     case Family::MirrorDepth:
         return "settings.mirrorDepth from 1 up; the reference recurses 16 levels, so what a shallower depth "
                "cuts off counts as error.";

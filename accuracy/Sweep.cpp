@@ -258,7 +258,8 @@ void planMirrors(Configurations& out, const render::FrameInput& scene, const Sce
                  const SweepOptions& options) {
     if (traits.mirrors == 0)
         return;
-    for (MirrorTechnique t : {MirrorTechnique::Stencil, MirrorTechnique::Texture}) {
+    for (MirrorTechnique t :
+         {MirrorTechnique::Stencil, MirrorTechnique::Texture, MirrorTechnique::ScreenSpace}) {
         Variation v;
         v.set(Part::Mirrors, "technique", int(t));
         out.push_back(configuration(Family::MirrorTechnique, "mirror-technique-" + techniqueName(t),

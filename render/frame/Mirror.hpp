@@ -11,8 +11,10 @@
 
 namespace speculum::render {
 
-enum class MirrorTechnique { Stencil, Texture };
-static_assert(int(MirrorTechnique::Texture) + 1 == names::kMirrorTechniques.size(), "one name per value");
+// ScreenSpace: the reflection is traced through the camera's own image and depth, as game engines'
+// screen-space reflections are; what the image does not hold shows the background.
+enum class MirrorTechnique { Stencil, Texture, ScreenSpace };
+static_assert(int(MirrorTechnique::ScreenSpace) + 1 == names::kMirrorTechniques.size(), "one name per value");
 
 // A planar mirror as the scene holds it: a rectangle centred at its node's origin in the local XZ plane,
 // the reflective side towards local +Y.
@@ -54,15 +56,16 @@ void MirrorParams::fields(Visit&& visit) {
                  .min = 0,
                  .max = 1,
                  .slider = true}));
-    visit(
-        field(&MirrorParams::technique, {.name = "technique",
-                                         .label = "Technique",
-                                         .meaning = "How the reflection is drawn: through the stencil buffer "
-                                                    "or into a texture",
-                                         .type = FieldType::Choice,
-                                         .noun = "mirror technique",
-                                         .choices = names::kMirrorTechniques,
-                                         .drawnInMaps = false}));
+    visit(field(&MirrorParams::technique,
+                {.name = "technique",
+                 .label = "Technique",
+                 .meaning = "How the reflection is drawn: through the stencil buffer, "
+                            "into a texture, or traced in the camera's image "
+                            "(screen space)",
+                 .type = FieldType::Choice,
+                 .noun = "mirror technique",
+                 .choices = names::kMirrorTechniques,
+                 .drawnInMaps = false}));
     visit(field(
         &MirrorParams::tint,
         {.name = "tint", .label = "Tint", .meaning = "Multiplies the reflection", .type = FieldType::Color}));

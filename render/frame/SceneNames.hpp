@@ -32,9 +32,10 @@ inline constexpr std::array<Name, 3> kReflectorUpdates{{
     {"on-change", "When something it sees changes"},
     {"once", "Once"},
 }};
-inline constexpr std::array<Name, 2> kMirrorTechniques{{
+inline constexpr std::array<Name, 3> kMirrorTechniques{{
     {"stencil", "Stencil"},
     {"texture", "Texture"},
+    {"screen-space", "Screen space (traced in the image)"},
 }};
 inline constexpr std::array<Name, 3> kGlossyFilters{{
     {"mip", "Mip level (cheap)"},

@@ -32,6 +32,10 @@ struct Settings {
     GlossyFilter glossyFilter = GlossyFilter::Chain;
     int glossyTaps = 16;       // lobe samples per pixel of a rough planar mirror (Footprint)
     int prefilterSamples = 64; // lobe samples per texel of the reflector's pre-filtered chain (Footprint)
+    // Screen-space mirrors: the trace's steps through the camera's depth pyramid, and how far behind a
+    // surface the image shows (a share of its view depth) a ray still counts as meeting it.
+    int screenSteps = 64;
+    double screenThickness = 0.03;
 
     bool operator==(const Settings&) const = default;
 
@@ -96,6 +100,26 @@ void Settings::fields(Visit&& visit) {
                  .type = FieldType::Integer,
                  .min = kMinPrefilterSamples,
                  .max = kMaxPrefilterSamples,
+                 .write = FieldWrite::UnlessDefault,
+                 .drawnInMaps = false}));
+    visit(field(&Settings::screenSteps,
+                {.name = "screenSteps",
+                 .label = "Screen-space steps",
+                 .meaning = "Steps a screen-space mirror's ray takes through the camera's depth pyramid "
+                            "before it gives up and shows the background",
+                 .type = FieldType::Integer,
+                 .min = kMinScreenSteps,
+                 .max = kMaxScreenSteps,
+                 .write = FieldWrite::UnlessDefault,
+                 .drawnInMaps = false}));
+    visit(field(&Settings::screenThickness,
+                {.name = "screenThickness",
+                 .label = "Screen-space thickness",
+                 .meaning = "How far behind what the image shows a screen-space ray still meets it, as a "
+                            "share of its distance: thin, rays pass behind objects; thick, they stop at "
+                            "silhouettes they should pass",
+                 .min = kMinScreenThickness,
+                 .max = kMaxScreenThickness,
                  .write = FieldWrite::UnlessDefault,
                  .drawnInMaps = false}));
 }

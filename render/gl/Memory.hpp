@@ -15,6 +15,7 @@ constexpr std::size_t bytesPerTexel(GLenum internalFormat) {
     case GL_DEPTH_COMPONENT24:
     case GL_DEPTH24_STENCIL8:
     case GL_DEPTH_COMPONENT32F:
+    case GL_R32F:
         return 4;
     case GL_RGBA16F:
         return 8;

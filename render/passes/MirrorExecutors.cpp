@@ -29,6 +29,22 @@ bool keptEncoded(const MirrorView& view, int viewIndex, const ViewSpace& space, 
 
 } // namespace
 
+bool ensureReflectionTexture(const PlannedPass& pass, FrameExecution& frame, GLenum format) {
+    gl::RenderTexture& texture =
+        frame.resources.reflectionTextures.at(static_cast<std::size_t>(pass.writes.slot));
+    const base::Status made = texture.ensure(frame.target.width, frame.target.height, format, true);
+    if (made)
+        return true;
+    // No texture to draw the reflection into: the mirror's passes (and those of views inside it) are
+    // skipped and reported, with the reason.
+    frame.warnings.push_back("mirror " + base::quoted(pass.target) +
+                             ": no reflection, its reflection texture: " + made.error());
+    const SkippedEffect skip{pass.target, PlanReason::MirrorNoTexture, {.error = made.error()}};
+    frame.hidden[static_cast<std::size_t>(pass.view)] = skip;
+    frame.skipped.push_back(skip);
+    return false;
+}
+
 PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space) {
     const MirrorView& view = space.view(pass.view);
     bindWrites(pass.writes, frame, space);
@@ -61,25 +77,15 @@ PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame, const V
 }
 
 PassResult runMirror(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space) {
+    if (space.view(pass.view).screenSpace)
+        return runScreenTrace(pass, frame, space);
     PassResult result;
     if (pass.writes.target == PassTarget::Reflection) {
-        gl::RenderTexture& texture =
-            frame.resources.reflectionTextures.at(static_cast<std::size_t>(pass.writes.slot));
         const bool encoded = keptEncoded(space.view(pass.view), pass.view, space, frame);
         if (encoded)
             result.outcome = "8-bit sRGB reflection texture, which the mirror's surface copies as stored";
-        if (base::Status made = texture.ensure(frame.target.width, frame.target.height,
-                                               encoded ? GL_SRGB8_ALPHA8 : GL_RGBA16F, true);
-            !made) {
-            // No texture to draw the reflection into: the mirror's passes (and those of views inside it)
-            // are skipped and reported, with the reason.
-            frame.warnings.push_back("mirror " + base::quoted(pass.target) +
-                                     ": no reflection, its reflection texture: " + made.error());
-            const SkippedEffect skip{pass.target, PlanReason::MirrorNoTexture, {.error = made.error()}};
-            frame.hidden[static_cast<std::size_t>(pass.view)] = skip;
-            frame.skipped.push_back(skip);
+        if (!ensureReflectionTexture(pass, frame, encoded ? GL_SRGB8_ALPHA8 : GL_RGBA16F))
             return {false, {}};
-        }
     }
     bindWrites(pass.writes, frame, space);
     drawSpaceView(space, pass.view, pass.writes.clockwise);

@@ -118,6 +118,8 @@ PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpa
         return runGuides(pass, frame);
     case PassKind::Composite:
         return runComposite(pass, frame);
+    case PassKind::ScreenDepth:
+        return runScreenDepth(pass, frame);
     }
     assert(false && "runPass(): not a pass kind");
     return {false, {}};

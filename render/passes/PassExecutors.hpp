@@ -47,6 +47,12 @@ struct FrameResources {
     gl::Texture dummyShadow2D;
     gl::Texture dummyShadowCube;
     gl::Texture ggxAlbedo; // math::ggxAlbedoTable, which the glossy shaders read (kGgxAlbedoUnit)
+    // Screen-space mirrors: the camera's view depth with its pyramid of minima (R32F), the programs that
+    // draw and reduce it, and the trace.
+    gl::RenderTexture screenDepth;
+    gl::Program screenDepthProgram;
+    gl::Program depthMinProgram;
+    gl::Program screenTraceProgram;
     MeshHandle unitPlane;
 };
 
@@ -79,6 +85,8 @@ struct FrameExecution {
     // skip it reports; a view with one runs no more passes, nor do the views inside it.
     std::vector<std::optional<SkippedEffect>> hidden;
     std::vector<SkippedEffect> skipped; // effects execution found it could not draw, in pass order
+    bool screenDepthReady = false;      // the ScreenDepth pass drew the pyramid the traces read
+    bool countScreenSpace = false;      // RenderOptions::countScreenSpace
 };
 
 // What running one pass found.
@@ -112,6 +120,13 @@ PassResult runGuides(const PlannedPass& pass, FrameExecution& frame);
 PassResult runMirrorMask(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
 PassResult runMirror(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
 PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
+// The reflection texture (PassWrites::slot) a mirror's Mirror pass draws into, at the frame's size in
+// `format`; false when it does not fit, the view (and those inside it) then skipped with the reason.
+bool ensureReflectionTexture(const PlannedPass& pass, FrameExecution& frame, GLenum format);
+// Screen-space mirrors (ScreenSpaceExecutors.cpp): the depth pyramid, and a mirror's trace, which its
+// Mirror pass runs instead of drawing the scene reflected (MirrorView::screenSpace).
+PassResult runScreenDepth(const PlannedPass& pass, FrameExecution& frame);
+PassResult runScreenTrace(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
 
 // Runs the pass with the executor of its kind, in `space`: the camera's for the frame's passes, a map
 // face's for the mirror passes planned inside the environment map (EnvmapPlan::passes), the only kind a

@@ -19,7 +19,20 @@ namespace speculum::render {
 
 // Prefilter: the reflector's GGX pre-filtered chain, convolved from its environment map (runs after Envmap,
 // only when the map changed or the chain's sample count did).
-enum class PassKind { Shadow, MirrorMask, Mirror, MirrorSurface, Envmap, Prefilter, Main, Guides, Composite };
+// ScreenDepth: the camera's view depth and its pyramid of minima, which screen-space mirrors trace
+// against (runs once, before the first of their Mirror passes, only when one is seen).
+enum class PassKind {
+    Shadow,
+    MirrorMask,
+    Mirror,
+    MirrorSurface,
+    Envmap,
+    Prefilter,
+    Main,
+    Guides,
+    Composite,
+    ScreenDepth
+};
 
 std::string_view toString(PassKind kind);
 
@@ -110,6 +123,11 @@ struct MirrorView {
     // How its reflection is filtered when the mirror is rough: the settings' filter, or the convolved chain
     // where the planner trades the footprint's taps for it (MirrorPlanner's glossyFilterFor).
     GlossyFilter glossyFilter = GlossyFilter::Footprint;
+    // A screen-space mirror seen directly by the camera: its Mirror pass traces its reflection through the
+    // camera's image into its reflection texture instead of drawing the scene reflected. Its passes run
+    // after every other mirror's, so that the image holds them; it has no views inside it (what it
+    // reflects of other mirrors is what the image shows of them).
+    bool screenSpace = false;
 };
 
 // Where the reflector's environment map is captured from: the centre of the reflector's world bounds

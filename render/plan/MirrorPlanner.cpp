@@ -64,7 +64,8 @@ struct Planner {
     std::vector<PlannedPass>& passes;
     std::vector<SkippedEffect>& skipped;
     glm::dmat4 toRelative;
-    int spaceViews = 0; // views planned in this space
+    int spaceViews = 0;                // views planned in this space
+    std::vector<int> screenSpaceViews; // planned, their passes left for planScreenSpacePasses
 
     // `details` with where a mirror seen from `parentView` (-1: the space's own view) is seen, for its
     // reasons: the mirrors it is seen in, outermost first, and the map's face.
@@ -249,8 +250,12 @@ struct Planner {
         // A rough mirror needs its reflection as an image of its own to filter: the stencil technique
         // draws it straight into the parent's buffer, so a rough stencil mirror is drawn as a texture
         // one.
+        // A screen-space mirror traces the camera's own image, so only where the camera sees it directly;
+        // seen inside another mirror it is drawn as a texture one (the image holds nothing of that view).
+        view.screenSpace = mirror.technique == MirrorTechnique::ScreenSpace && space.mirrorTextures &&
+                           !parent.view && space.face < 0 && !space.warp;
         view.ownTarget =
-            space.mirrorTextures && (mirror.technique == MirrorTechnique::Texture || mirror.roughness > 0.0);
+            space.mirrorTextures && (mirror.technique != MirrorTechnique::Stencil || mirror.roughness > 0.0);
         // A texture view starts a fresh stencil space in a render texture of its own, one slot deeper
         // than the texture its parent draws into; a stencil view nests one level inside its parent's.
         const int parentLevel = parent.view ? parent.view->stencilLevel : 0;
@@ -287,6 +292,7 @@ struct Planner {
         addPass(PassKind::MirrorMask, view, index,
                 view.ownTarget ? PlanReason::MirrorMaskCount : PlanReason::MirrorMaskStencil, details);
         details.roughStencil = view.ownTarget && mirror.technique == MirrorTechnique::Stencil;
+        details.screenSpaceAsTexture = mirror.technique == MirrorTechnique::ScreenSpace && view.ownTarget;
         addPass(PassKind::Mirror, view, index,
                 view.ownTarget ? PlanReason::MirrorIntoTexture : PlanReason::MirrorInStencil, details);
     }
@@ -304,6 +310,28 @@ struct Planner {
         if (details.glossyChain && input.settings.glossyFilter != GlossyFilter::Chain)
             details.chainInstead = view.depth > 1 ? "seen inside another mirror" : "it covers few pixels";
         addPass(PassKind::MirrorSurface, view, index, PlanReason::MirrorSurface, details);
+    }
+
+    // The screen-space mirrors' passes, after every other mirror's, so that the image they trace holds
+    // those mirrors' reflections: once the depth pyramid, then each mirror's mask, trace and surface.
+    void planScreenSpacePasses() {
+        if (screenSpaceViews.empty())
+            return;
+        PlannedPass depth;
+        depth.kind = PassKind::ScreenDepth;
+        depth.code = PlanReason::ScreenDepthPyramid;
+        for (int index : screenSpaceViews)
+            depth.details.node += (depth.details.node.empty() ? "for " : ", ") +
+                                  label(input, views[static_cast<std::size_t>(index)].mirror);
+        passes.push_back(std::move(depth));
+        for (int index : screenSpaceViews) {
+            const MirrorView& view = views[static_cast<std::size_t>(index)];
+            ReasonDetails details = seenFrom(view.parent);
+            details.area = view.pixelArea;
+            addPass(PassKind::MirrorMask, view, index, PlanReason::MirrorMaskCount, details);
+            addPass(PassKind::Mirror, view, index, PlanReason::MirrorScreenTrace, details);
+            planSurfacePass(view, index);
+        }
     }
 
     // Plans every mirror seen from `parentView` (-1: the space's own view) and recurses. Each test that
@@ -325,6 +353,10 @@ struct Planner {
             const int index = static_cast<int>(views.size());
             views.push_back(*view);
             ++spaceViews;
+            if (view->screenSpace) {
+                screenSpaceViews.push_back(index);
+                continue;
+            }
             planReflectionPasses(*view, index);
             planChildren(index);
             planSurfacePass(*view, index);
@@ -352,6 +384,7 @@ void planMirrors(const FrameInput& input, const PlanViewport& viewport, FramePla
         return;
     }
     planner.planChildren(-1);
+    planner.planScreenSpacePasses();
 }
 
 void planEnvmapMirrors(const FrameInput& input, EnvmapPlan& map) {

@@ -29,6 +29,7 @@ PassWrites cameraWrites(const FrameInput& input, const FramePlan& plan, const Pl
     case PassKind::Shadow:
     case PassKind::Envmap:
     case PassKind::Prefilter:
+    case PassKind::ScreenDepth: // its own depth texture and pyramid
         writes.target = PassTarget::OwnMap;
         break;
     case PassKind::Main:
@@ -109,6 +110,7 @@ PassWrites envmapWrites(const EnvmapPlan& map, const PlannedPass& pass) {
     case PassKind::Main:
     case PassKind::Guides:
     case PassKind::Composite:
+    case PassKind::ScreenDepth:
         break;
     }
     return writes;

@@ -135,6 +135,10 @@ std::string compositeSentence(PlanReason code, const ReasonDetails& d) {
     case PlanReason::CompositeNotNeeded:
         return "composite pass not needed: the frame is drawn straight into the output, an 8-bit sRGB "
                "buffer, and no blend needs radiance above 1";
+    case PlanReason::CompositeScreenSpace:
+        return "resolves the half-float colour buffer into the 8-bit output with sRGB encoding: "
+               "screen-space mirror '" +
+               d.node + "' reads the frame's colour in linear light, above 1 included";
     default:
         break;
     }
@@ -190,6 +194,15 @@ std::string mirrorPassSentence(PlanReason code, const ReasonDetails& d) {
         return "blends the mirror's own surface over the reflection (reflectivity " +
                rounded(d.reflectivity * 100) + "%" + (inMap(d) ? ", in " + d.mapFace : std::string()) + ")" +
                glossyApproximation(d);
+    case PlanReason::MirrorScreenTrace:
+        return "traces the reflection through the camera's image against its depth pyramid, into the "
+               "mirror's reflection texture (" +
+               whereSeen(d) + areaCovered(d) +
+               "); where a ray leaves the image or passes behind what it shows, the background fades in";
+    case PlanReason::ScreenDepthPyramid:
+        return "draws the view depth of what the camera sees, and halves it level by level keeping the "
+               "nearest, for the screen-space mirrors to trace against (" +
+               d.node + ")";
     default:
         break;
     }
@@ -198,6 +211,9 @@ std::string mirrorPassSentence(PlanReason code, const ReasonDetails& d) {
                                                   : "inside its stencil mask") +
            (d.roughStencil ? " (rough: the stencil technique leaves no image of the reflection to filter)"
                            : "") +
+           (d.screenSpaceAsTexture ? " (screen space asked, but it is seen inside another mirror, whose "
+                                     "reflected view the camera's image does not hold)"
+                                   : "") +
            (d.area ? " with an oblique near plane on the mirror (" : " with a clip plane on the mirror (") +
            whereSeen(d) + areaCovered(d) + ")" + reflectedMeshes(d);
 }
@@ -385,12 +401,15 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::CompositeFresnelBlend, "composite-fresnel-blend", compositeSentence},
     {PlanReason::CompositeNestedBlend, "composite-nested-blend", compositeSentence},
     {PlanReason::CompositeNotNeeded, "composite-not-needed", compositeSentence},
+    {PlanReason::CompositeScreenSpace, "composite-screen-space", compositeSentence},
     {PlanReason::GuidesOverView, "guides-over-view", guidesSentence},
     {PlanReason::MirrorMaskStencil, "mirror-mask-stencil", mirrorPassSentence},
     {PlanReason::MirrorMaskCount, "mirror-mask-count", mirrorPassSentence},
     {PlanReason::MirrorIntoTexture, "mirror-into-texture", mirrorPassSentence},
     {PlanReason::MirrorInStencil, "mirror-in-stencil", mirrorPassSentence},
     {PlanReason::MirrorSurface, "mirror-surface", mirrorPassSentence},
+    {PlanReason::MirrorScreenTrace, "mirror-screen-trace", mirrorPassSentence},
+    {PlanReason::ScreenDepthPyramid, "screen-depth-pyramid", mirrorPassSentence},
     {PlanReason::MirrorSizeInvalid, "mirror-size-invalid", mirrorSkipSentence},
     {PlanReason::MirrorNoPlane, "mirror-no-plane", mirrorSkipSentence},
     {PlanReason::MirrorEdgeOn, "mirror-edge-on", mirrorSkipSentence},
@@ -479,12 +498,15 @@ bool dropsWhatTheSceneAsks(PlanReason code) {
     case PlanReason::CompositeFresnelBlend:
     case PlanReason::CompositeNestedBlend:
     case PlanReason::CompositeNotNeeded:
+    case PlanReason::CompositeScreenSpace:
     case PlanReason::GuidesOverView:
     case PlanReason::MirrorMaskStencil:
     case PlanReason::MirrorMaskCount:
     case PlanReason::MirrorIntoTexture:
     case PlanReason::MirrorInStencil:
     case PlanReason::MirrorSurface:
+    case PlanReason::MirrorScreenTrace:
+    case PlanReason::ScreenDepthPyramid:
     case PlanReason::MirrorEdgeOn:
     case PlanReason::MirrorBehind:
     case PlanReason::MirrorOutsideView:

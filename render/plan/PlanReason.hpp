@@ -35,6 +35,7 @@ enum class PlanReason {
     CompositeFresnelBlend, // … and its Fresnel weight keeps it from being pre-weighted
     CompositeNestedBlend,  // … and it blends inside another stencil mirror's reflection
     CompositeNotNeeded,    // skip: the frame is drawn straight into the output
+    CompositeScreenSpace,  // a screen-space mirror reads the frame's colour in linear light
     GuidesOverView,        // the editor's guide lines (details.lines), depth-tested against the view
     // A planar mirror's passes.
     MirrorMaskStencil, // marks its pixels in the stencil buffer
@@ -42,6 +43,8 @@ enum class PlanReason {
     MirrorIntoTexture,
     MirrorInStencil,
     MirrorSurface,
+    MirrorScreenTrace,  // a screen-space mirror's reflection, traced through the camera's image
+    ScreenDepthPyramid, // the camera's view depth and its pyramid of minima (details.node: who traces it)
     // A planar mirror that gets no view where it is seen (directly, in mirrors, in a face of the map).
     MirrorSizeInvalid,
     MirrorNoPlane, // its transform leaves no plane (details.error)
@@ -148,6 +151,9 @@ struct ReasonDetails {
     int glossyTaps = 0;     // a rough mirror's filter: taps a pixel over the GGX footprint; 0: one mip level
     bool glossyChain = false; // … or the convolved chain, four lookups a pixel
     std::string chainInstead; // why the planner chose the chain over the settings' taps; empty: they ask it
+    // A screen-space mirror seen inside another mirror, drawn with the texture technique: the camera's
+    // image holds nothing of that mirror's reflected view to trace.
+    bool screenSpaceAsTexture = false;
 
     // The environment map's pass.
     ReflectorMap map = ReflectorMap::Cube;

@@ -36,6 +36,8 @@ std::string_view toString(PassKind kind) {
         return "guides";
     case PassKind::Composite:
         return "composite";
+    case PassKind::ScreenDepth:
+        return "screen-depth";
     }
     return "unknown";
 }
@@ -75,6 +77,12 @@ struct BlendingMirror {
 // multiplies by one and changes nothing.
 std::optional<BlendingMirror> blendOntoRadiance(const FrameInput& input,
                                                 const std::vector<MirrorView>& views) {
+    // A screen-space mirror reads the camera's colour as its reflection: in linear light, with highlights
+    // above 1 kept, as a texture mirror's own view would hold them.
+    for (const MirrorView& view : views)
+        if (view.screenSpace)
+            return BlendingMirror{PlanReason::CompositeScreenSpace,
+                                  input.mirrors[static_cast<std::size_t>(view.mirror)].name};
     for (const MirrorView& view : views) {
         if (view.ownTarget || view.textureSlot >= 0)
             continue;
@@ -351,7 +359,7 @@ PlannedPass guidesPass(std::size_t lines) {
 // views and the main pass planned.
 void planCameraBuffer(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {
     std::optional<BlendingMirror> blend = blendOntoRadiance(input, plan.views);
-    if (viewport.eightBitOutput && blend) {
+    if (viewport.eightBitOutput && blend && blend->code != PlanReason::CompositeScreenSpace) {
         blend = preWeightStencilMirrors(input, plan);
         plan.preWeighted = !blend;
     }

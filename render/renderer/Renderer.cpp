@@ -106,6 +106,15 @@ base::Result<std::unique_ptr<Renderer>> Renderer::create() {
     s.flatProgram = std::move(*flat);
     s.compositeProgram = std::move(*composite);
     s.mipConvolveProgram = std::move(*convolve);
+    for (auto [program, vertex, fragment] :
+         {std::tuple{&s.screenDepthProgram, "screen_depth.vert", "screen_depth.frag"},
+          std::tuple{&s.depthMinProgram, "fullscreen.vert", "depth_min.frag"},
+          std::tuple{&s.screenTraceProgram, "screen_trace.vert", "screen_trace.frag"}}) {
+        auto built = gl::Program::build(vertex, fragment);
+        if (!built)
+            return base::Error{built.error()};
+        *program = std::move(*built);
+    }
     s.convolveFramebuffer = gl::makeFramebuffer();
     s.emptyVao = gl::makeVertexArray();
     s.dummyShadow2D = makeDummyDepth(GL_TEXTURE_2D);
@@ -440,6 +449,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     frame.envmapAllocated = planned.maps.envmapAllocated;
     frame.shadowsMissing = planned.maps.shadowsMissing;
     frame.hidden.resize(plan.views.size());
+    frame.countScreenSpace = options.countScreenSpace;
     gl::FramebufferBinding keepCallerBinding;
     runPasses(frame, plan.cameraBuffer == CameraBuffer::Srgb8, options, s.timer, report);
 

@@ -101,6 +101,7 @@ RenderOptions sampleOptions(const StillSettings& settings, const TileGrid& grid,
     options.boundShadowLookups = settings.boundShadowLookups;
     options.cullHiddenBackFaces = settings.cullHiddenBackFaces;
     options.preview = settings.preview;
+    options.countScreenSpace = true;
     return options;
 }
 

@@ -2,12 +2,13 @@
 speculum_add_test(RenderPassesTest TIER unit SOURCES WarpMeshesTest.cpp LIBS speculum_render_passes)
 # The pass executors on a headless context: shadow maps, mirrors and their occlusion, lighting variants,
 # the main pass's back faces and materials, reflected detail, the reflector, environment capture and its
-# fill, GGX pre-filtering, the convolved chain of a rough mirror, GPU allocations that do not fit. Gl tier.
+# fill, GGX pre-filtering, the convolved chain of a rough mirror, GPU allocations that do not fit,
+# screen-space mirrors. Gl tier.
 speculum_add_test(RenderPassesGLTest TIER gl
     SOURCES ShadowMapsGLTest.cpp MirrorPassesGLTest.cpp MirrorOcclusionGLTest.cpp LightingVariantGLTest.cpp
             MainPassBackFaceCullingGLTest.cpp MainPassMaterialsGLTest.cpp ReflectedDetailGLTest.cpp
             ReflectorPassGLTest.cpp EnvironmentCaptureGLTest.cpp EnvironmentCaptureFillGLTest.cpp
-            GgxPrefilterGLTest.cpp GpuAllocationGLTest.cpp MipConvolveGLTest.cpp
+            GgxPrefilterGLTest.cpp GpuAllocationGLTest.cpp MipConvolveGLTest.cpp ScreenSpaceGLTest.cpp
             ${SPECULUM_TEST_SUPPORT}/GlslRunner.cpp
     LIBS speculum_render_passes speculum_render_renderer speculum_render_metrics speculum_render_imageio
          PkgConfig::OIIO ZLIB::ZLIB)

@@ -315,3 +315,73 @@ TEST(MirrorPlanner, MirrorOnlyVisibleThroughAnotherIsCulledOutsideItsReflectedVi
 
 } // namespace
 } // namespace speculum::render
+
+namespace speculum::render {
+namespace {
+
+// A screen-space mirror seen directly traces the camera's image: its passes come after every other
+// mirror's, after one depth pyramid, with the buffer kept in half float; seen inside another mirror it is
+// drawn as a texture mirror, and says so. Without one, nothing of it is planned.
+TEST(MirrorPlanner, AScreenSpaceMirrorTracesAfterEveryOtherMirrorOnlyWhereTheCameraSeesIt) {
+    using test::passOf;
+    FrameInput input = cameraAtOrigin();
+    input.camera.position = {0.3, 0.2, -1.0};
+    input.camera.target = {0, 0, -3};
+    input.mirrors = {wall("Front", -3.0, true, 4.0), wall("Back", 1.0, false, 4.0)};
+    input.settings.mirrorDepth = 2;
+    PlanViewport eightBit = kViewport;
+    eightBit.eightBitOutput = true;
+    eightBit.outputTakesCameraBuffer = true;
+    EXPECT_EQ(passOf(planFrame(input, {}, eightBit), PassKind::ScreenDepth), nullptr);
+
+    input.mirrors[0].technique = MirrorTechnique::ScreenSpace;
+    const FramePlan plan = planFrame(input, {}, eightBit);
+    std::size_t depthPass = plan.passes.size(), lastOther = 0, trace = 0;
+    int pyramids = 0;
+    for (std::size_t i = 0; i < plan.passes.size(); ++i) {
+        const PlannedPass& pass = plan.passes[i];
+        if (pass.kind == PassKind::ScreenDepth) {
+            depthPass = std::min(depthPass, i);
+            ++pyramids;
+            EXPECT_NE(pass.reason().find("Front"), std::string::npos) << pass.reason();
+        }
+        if (pass.code == PlanReason::MirrorScreenTrace)
+            trace = i;
+        if (pass.view >= 0 && !plan.views[static_cast<std::size_t>(pass.view)].screenSpace)
+            lastOther = i;
+    }
+    EXPECT_EQ(pyramids, 1);
+    EXPECT_LT(lastOther, depthPass) << "every other mirror is in the image before the trace";
+    EXPECT_LT(depthPass, trace);
+    EXPECT_EQ(plan.cameraBuffer, CameraBuffer::HalfFloat) << "the trace reads linear radiance";
+    const PlannedPass* composite = passOf(plan, PassKind::Composite);
+    ASSERT_NE(composite, nullptr);
+    EXPECT_EQ(composite->code, PlanReason::CompositeScreenSpace);
+    int traced = 0;
+    for (std::size_t v = 0; v < plan.views.size(); ++v) {
+        if (!plan.views[v].screenSpace)
+            continue;
+        ++traced;
+        EXPECT_EQ(plan.views[v].depth, 1);
+        for (const MirrorView& inside : plan.views)
+            EXPECT_NE(inside.parent, int(v)) << "nothing is planned inside a traced mirror";
+    }
+    EXPECT_EQ(traced, 1);
+
+    // The back mirror, behind the camera, is seen only inside the front one: drawn as a texture mirror,
+    // which its pass says, and nothing is traced.
+    input.mirrors[0].technique = MirrorTechnique::Stencil;
+    input.mirrors[1].technique = MirrorTechnique::ScreenSpace;
+    const FramePlan nested = planFrame(input, {}, eightBit);
+    EXPECT_EQ(passOf(nested, PassKind::ScreenDepth), nullptr);
+    bool said = false;
+    for (const PlannedPass& pass : nested.passes)
+        if (pass.kind == PassKind::Mirror && pass.target == "Back") {
+            EXPECT_TRUE(nested.views[static_cast<std::size_t>(pass.view)].ownTarget);
+            said |= pass.reason().find("screen space asked") != std::string::npos;
+        }
+    EXPECT_TRUE(said);
+}
+
+} // namespace
+} // namespace speculum::render

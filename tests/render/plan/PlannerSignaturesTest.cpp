@@ -260,6 +260,10 @@ std::vector<Row> table() {
          "the camera's rough planar mirrors; the map's mirrors are sharp"},
         {"Settings.prefilterSamples", "", [](FrameInput& f) { f.settings.prefilterSamples = 8; }, false,
          false, "filters the captured map again; it is not captured again"},
+        {"Settings.screenSteps", "", [](FrameInput& f) { f.settings.screenSteps = 16; }, false, false,
+         "the camera's screen-space mirrors; the map's mirrors use the stencil technique"},
+        {"Settings.screenThickness", "", [](FrameInput& f) { f.settings.screenThickness = 0.2; }, false,
+         false, "the camera's screen-space mirrors; the map's mirrors use the stencil technique"},
         // Camera
         {"Camera.position", "",
          [](FrameInput& f) {

@@ -217,7 +217,8 @@ std::vector<BadCase> badCases() {
          {"nodes[2].mirror.reflectivity: must be in 0..1, got 1.5"}},
         {"mirror technique",
          thirdNode(R"({ "mirror": { "technique": "raytrace" } })"),
-         {"nodes[2].mirror.technique: unknown mirror technique \"raytrace\" (expected stencil or texture)"}},
+         {"nodes[2].mirror.technique: unknown mirror technique \"raytrace\" (expected stencil, texture or "
+          "screen-space)"}},
         {"reflector map",
          thirdNode(R"({ "mesh": { "builtin": "sphere" }, "reflector": { "map": "sphere" } })"),
          {"nodes[2].reflector.map: unknown reflector map \"sphere\" (expected cube, dual-paraboloid or "

@@ -1,0 +1,214 @@
+// Screen-space mirrors (MirrorTechnique::ScreenSpace): a floor mirror whose reflected scene is all in the
+// image agrees with the texture technique; what the image does not hold shows the background; a scene
+// without one runs none of their passes; and the hard views stay finite.
+#include "render/imageio/ImageWriter.hpp"
+#include "support/GlTest.hpp"
+#include "support/SceneBuilder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace speculum::test {
+namespace {
+
+using namespace render;
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 96;
+const glm::dvec3 kSky{0.2, 0.3, 0.5};
+
+// A floor mirror with two emissive boxes standing on it and an emissive back wall: flat colours, so that
+// the reflected eye sees what the camera sees of their sides, and the camera looking down at them so that
+// everything the mirror reflects is in the image (or is the sky above the camera, which both show).
+FrameInput floorScene(MirrorTechnique technique) {
+    FrameInput input;
+    input.settings.background = kSky;
+    input.settings.ambient = 0.0;
+    input.camera.position = {0.0, 2.2, 4.0};
+    input.camera.target = {0.0, 0.2, -1.0};
+    input.camera.fovY = 60.0;
+    input.camera.far = 100.0;
+    input.items.push_back(
+        item("Red", boxMesh(), placed({-1.0, 0.5, -1.0}, glm::dvec3(0.5)), emissive({0.9, 0.15, 0.1})));
+    input.items.push_back(
+        item("Green", boxMesh(), placed({1.2, 0.35, -0.4}, glm::dvec3(0.35)), emissive({0.1, 0.8, 0.2})));
+    input.items.push_back(
+        item("Wall", boxMesh(), placed({0.0, 1.0, -3.2}, {4.0, 1.0, 0.2}), emissive({0.8, 0.8, 0.75})));
+    Mirror floor = mirror({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {8.0, 8.0});
+    floor.name = "Floor";
+    floor.technique = technique;
+    input.mirrors.push_back(floor);
+    return input;
+}
+
+void dump(const Image& image, const std::string& name) {
+    if (const char* folder = std::getenv("SPECULUM_TEST_DUMP"))
+        (void)writeImage(std::string(folder) + "/" + name + ".png", image);
+}
+
+float difference(const glm::vec4& a, const glm::vec4& b) {
+    const glm::vec3 d = glm::abs(glm::vec3(a) - glm::vec3(b));
+    return std::max({d.x, d.y, d.z});
+}
+
+bool allFinite(const Image& image) {
+    return std::all_of(image.rgba.begin(), image.rgba.end(), [](float v) { return std::isfinite(v); });
+}
+
+class ScreenSpaceMirror : public GlTest {
+protected:
+    Image render(const FrameInput& input) { return renderImage(input, kWidth, kHeight); }
+
+    // The mirror's pixels: those a black mirror (tint 0) turns black, every other surface being bright.
+    std::vector<bool> mirrorPixels(FrameInput input) {
+        input.mirrors[0].tint = glm::dvec3(0.0);
+        const Image black = render(input);
+        std::vector<bool> mask(static_cast<std::size_t>(kWidth * kHeight), false);
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x)
+                mask[static_cast<std::size_t>(y * kWidth + x)] = glm::vec3(black.at(x, y)) == glm::vec3(0.0f);
+        return mask;
+    }
+};
+
+TEST_F(ScreenSpaceMirror, AFloorMirrorWhoseSceneIsInTheImageAgreesWithTheTextureTechnique) {
+    const Image planar = render(floorScene(MirrorTechnique::Texture));
+    const Image screen = render(floorScene(MirrorTechnique::ScreenSpace));
+    dump(planar, "screen-space-planar");
+    dump(screen, "screen-space-traced");
+    const std::vector<bool> mirror = mirrorPixels(floorScene(MirrorTechnique::Texture));
+    // Interior pixels: the mirror all around, and no edge of the reflection through them (where one pixel's
+    // rounding decides which side of an edge the ray meets).
+    int interior = 0, agree = 0, reflecting = 0, reflectingAgree = 0;
+    for (int y = 1; y < kHeight - 1; ++y)
+        for (int x = 1; x < kWidth - 1; ++x) {
+            bool inside = true;
+            float spread = 0.0f;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    inside = inside && mirror[static_cast<std::size_t>((y + dy) * kWidth + x + dx)];
+                    spread = std::max(spread, difference(planar.at(x + dx, y + dy), planar.at(x, y)));
+                }
+            if (!inside || spread > 0.05f)
+                continue;
+            const bool same = difference(planar.at(x, y), screen.at(x, y)) <= 0.02f;
+            ++interior;
+            agree += same ? 1 : 0;
+            // Those that show the boxes or the wall, not the sky both techniques agree on trivially.
+            if (difference(planar.at(x, y), glm::vec4(glm::vec3(kSky), 1.0f)) > 0.1f) {
+                ++reflecting;
+                reflectingAgree += same ? 1 : 0;
+            }
+        }
+    ASSERT_GT(interior, kWidth * kHeight / 5);
+    ASSERT_GT(reflecting, 500) << "the reflection shows the boxes and the wall";
+    EXPECT_GE(double(agree), 0.99 * interior)
+        << agree << " of " << interior << " interior mirror pixels agree";
+    EXPECT_GE(double(reflectingAgree), 0.99 * reflecting)
+        << reflectingAgree << " of " << reflecting << " interior pixels reflecting an object agree";
+    EXPECT_TRUE(allFinite(screen));
+}
+
+TEST_F(ScreenSpaceMirror, WhatTheImageDoesNotHoldShowsTheBackground) {
+    // A box above the camera's view: the texture technique reflects it, the image never shows it.
+    FrameInput planarInput = floorScene(MirrorTechnique::Texture);
+    FrameInput screenInput = floorScene(MirrorTechnique::ScreenSpace);
+    for (FrameInput* input : {&planarInput, &screenInput})
+        input->items.push_back(
+            item("Above", boxMesh(), placed({0.0, 4.0, -2.0}, {1.0, 0.3, 0.8}), emissive({0.9, 0.9, 0.1})));
+    const Image planar = render(planarInput);
+    const Image screen = render(screenInput);
+    dump(planar, "screen-space-above-planar");
+    dump(screen, "screen-space-above-traced");
+    int yellowInPlanar = 0, skyInScreen = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const glm::vec4 p = planar.at(x, y);
+            if (p.b < 0.3f && p.r > 0.5f && p.g > 0.5f) { // the yellow box, reflected
+                ++yellowInPlanar;
+                if (difference(screen.at(x, y), glm::vec4(glm::vec3(kSky), 1.0f)) < 0.02f)
+                    ++skyInScreen;
+            }
+        }
+    ASSERT_GT(yellowInPlanar, 50) << "the texture technique reflects the box above the view";
+    EXPECT_GE(double(skyInScreen), 0.95 * yellowInPlanar);
+}
+
+TEST_F(ScreenSpaceMirror, PassesRunOnlyForAScreenSpaceMirrorAndSayWhy) {
+    render(floorScene(MirrorTechnique::Texture));
+    EXPECT_EQ(lastReport().countRan(PassKind::ScreenDepth), 0u);
+    render(floorScene(MirrorTechnique::ScreenSpace));
+    const FrameReport& report = lastReport();
+    ASSERT_EQ(report.countRan(PassKind::ScreenDepth), 1u);
+    bool traced = false;
+    for (const PassRun& run : report.ran)
+        if (report.planned(run).code == PlanReason::MirrorScreenTrace) {
+            traced = true;
+            // A still counts where each pixel's reflection came from.
+            EXPECT_NE(report.reason(run).find("pixels meet what the image shows"), std::string::npos)
+                << report.reason(run);
+            EXPECT_NE(report.reason(run).find("show the background"), std::string::npos)
+                << report.reason(run);
+            EXPECT_EQ(run.outcome.find(" 0 pixels"), std::string::npos) << run.outcome;
+        }
+    EXPECT_TRUE(traced);
+    // The trace runs after the depth pyramid, which runs after the main pass.
+    std::vector<PassKind> order;
+    for (const PassRun& run : report.ran)
+        order.push_back(report.planned(run).kind);
+    const auto main = std::find(order.begin(), order.end(), PassKind::Main);
+    const auto depth = std::find(order.begin(), order.end(), PassKind::ScreenDepth);
+    EXPECT_LT(main - order.begin(), depth - order.begin());
+}
+
+TEST_F(ScreenSpaceMirror, HardViewsStayFinite) {
+    struct View {
+        const char* name;
+        glm::dvec3 position;
+        glm::dvec3 target;
+        glm::dvec3 up{0.0, 1.0, 0.0};
+        double near = 0.1;
+        double far = 100.0;
+    };
+    const View views[] = {
+        {"straight-down", {0.0, 3.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}},
+        {"grazing", {0.0, 0.02, 3.9}, {0.0, 0.0, -4.0}},
+        {"far-plane-1e6", {0.0, 2.2, 4.0}, {0.0, 0.2, -1.0}, {0.0, 1.0, 0.0}, 0.1, 1e6},
+        {"half-off-screen", {3.0, 1.0, 2.0}, {5.0, 0.3, -1.0}},
+    };
+    for (const View& v : views) {
+        FrameInput input = floorScene(MirrorTechnique::ScreenSpace);
+        input.camera.position = v.position;
+        input.camera.target = v.target;
+        input.camera.up = v.up;
+        input.camera.near = v.near;
+        input.camera.far = v.far;
+        input.mirrors[0].roughness = 0.3;
+        const Image image = render(input);
+        dump(image, std::string("screen-space-") + v.name);
+        EXPECT_TRUE(allFinite(image)) << v.name;
+        EXPECT_EQ(image.width, kWidth) << v.name;
+    }
+    // 1e5 from the origin: the scene moved, the camera with it.
+    FrameInput far = floorScene(MirrorTechnique::ScreenSpace);
+    const glm::dvec3 offset{1e5, 0.0, -1e5};
+    for (DrawItem& i : far.items)
+        i.world = glm::translate(glm::dmat4(1.0), offset) * i.world;
+    far.mirrors[0].world = glm::translate(glm::dmat4(1.0), offset) * far.mirrors[0].world;
+    far.camera.position += offset;
+    far.camera.target += offset;
+    const Image moved = render(far);
+    const Image home = render(floorScene(MirrorTechnique::ScreenSpace));
+    ASSERT_TRUE(allFinite(moved));
+    int close = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            close += difference(moved.at(x, y), home.at(x, y)) <= 0.02f ? 1 : 0;
+    EXPECT_GE(double(close), 0.98 * kWidth * kHeight) << "the same image 1e5 from the origin";
+}
+
+} // namespace
+} // namespace speculum::test
