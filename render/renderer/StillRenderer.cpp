@@ -129,6 +129,15 @@ void copyTileIntoImage(const std::vector<float>& tile, const TileGrid& grid, int
     }
 }
 
+// A screen-space mirror traces the image it is drawn in, and a tile holds only its own pixels: such a
+// still is drawn in one piece up to this side, in tiles (with a warning) only beyond it.
+constexpr int kScreenSpaceTileSize = 4096;
+
+bool tracesTheImage(const FrameInput& input) {
+    return std::any_of(input.mirrors.begin(), input.mirrors.end(),
+                       [](const Mirror& m) { return m.technique == MirrorTechnique::ScreenSpace; });
+}
+
 } // namespace
 
 int maxStillSize() {
@@ -146,7 +155,10 @@ base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& inpu
         return base::Error{size.error()};
     const int n = std::clamp(settings.ssaa, kMinSsaa, kMaxSsaa);
     const int limit = maxStillSize();
-    const int tileSize = std::min(settings.tileSize > 0 ? settings.tileSize : kDefaultTileSize, limit);
+    const int wanted = settings.tileSize > 0   ? settings.tileSize
+                       : tracesTheImage(input) ? std::max(kScreenSpaceTileSize, kDefaultTileSize)
+                                               : kDefaultTileSize;
+    const int tileSize = std::min(wanted, limit);
     if (tileSize < 1)
         return base::Error{"this OpenGL context cannot render any image (its size limit is " +
                            std::to_string(limit) + ")"};
@@ -196,6 +208,12 @@ base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& inpu
                 sample[i] = static_cast<float>(sum[i] / (n * n));
         copyTileIntoImage(sample, grid, x0, y0, result.image);
     }
+    if (grid.count() > 1 && tracesTheImage(input))
+        result.firstSample.warnings.push_back(
+            "screen-space mirrors are traced tile by tile (the still is drawn in " +
+            std::to_string(grid.count()) +
+            " tiles): near a tile's edge they show the background where the whole image holds what they "
+            "reflect");
     if (progress)
         progress(1.0, "done");
     result.totalMs =

@@ -210,5 +210,31 @@ TEST_F(ScreenSpaceMirror, HardViewsStayFinite) {
     EXPECT_GE(double(close), 0.98 * kWidth * kHeight) << "the same image 1e5 from the origin";
 }
 
+// A tile holds only its own pixels, so a still with a screen-space mirror is drawn in one piece where a
+// plain one would be tiled, and one that must be tiled says what that costs.
+TEST_F(ScreenSpaceMirror, AWideStillIsTracedInOnePieceAndATiledOneSaysSo) {
+    const FrameInput input = floorScene(MirrorTechnique::ScreenSpace);
+    StillSettings wide;
+    wide.width = 2200;
+    wide.height = 100;
+    const auto whole = renderStill(renderer(), input, wide);
+    ASSERT_TRUE(whole.ok()) << whole.error();
+    EXPECT_EQ(whole->tiles, 1);
+    const auto plain = renderStill(renderer(), floorScene(MirrorTechnique::Texture), wide);
+    ASSERT_TRUE(plain.ok()) << plain.error();
+    EXPECT_GT(plain->tiles, 1) << "a still without one is tiled as before";
+    auto said = [](const StillResult& still) {
+        return std::any_of(still.firstSample.warnings.begin(), still.firstSample.warnings.end(),
+                           [](const std::string& w) { return w.find("tile by tile") != std::string::npos; });
+    };
+    EXPECT_FALSE(said(*whole));
+    StillSettings tiled = wide;
+    tiled.tileSize = 1024;
+    const auto inTiles = renderStill(renderer(), input, tiled);
+    ASSERT_TRUE(inTiles.ok()) << inTiles.error();
+    EXPECT_GT(inTiles->tiles, 1);
+    EXPECT_TRUE(said(*inTiles));
+}
+
 } // namespace
 } // namespace speculum::test
