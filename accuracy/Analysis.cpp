@@ -12,6 +12,7 @@ Metric focusMetric(Family family) {
     case Family::Parallax:
         return Metric::PsnrReflector;
     case Family::MirrorTechnique:
+    case Family::ScreenSpace:
     case Family::MirrorDepth:
     case Family::ReflectedDetail: // whole-frame PSNR where no mirror shows (a reflector's map only)
         return Metric::PsnrMirrors;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace speculum::accuracy {
@@ -17,7 +18,8 @@ namespace {
 
 const std::vector<Family> kFamilies = {Family::Envmap,          Family::Parallax, Family::MirrorTechnique,
                                        Family::MirrorDepth,     Family::Shadows,  Family::Tessellation,
-                                       Family::ReflectedDetail, Family::Glossy,   Family::Setting};
+                                       Family::ReflectedDetail, Family::Glossy,   Family::ScreenSpace,
+                                       Family::Setting};
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -55,6 +57,8 @@ std::string familyTitle(Family family) {
         return "Big meshes in reflections: whole or simplified";
     case Family::Glossy:
         return "Rough reflections: which approximation at which roughness";
+    case Family::ScreenSpace:
+        return "Screen-space reflections against the planar techniques";
     case Family::Setting:
         return "Other settings";
     default:
@@ -96,6 +100,13 @@ std::string familyIntro(Family family) {
                "which grows with the distance beyond the mirror; the reflector reads its GGX pre-filtered "
                "map chain) at rising quality. Rows of one roughness compare with each other; the "
                "roughnesses are separate questions.";
+    case Family::ScreenSpace:
+        return "Every planar mirror traced in the camera's image (screen space), with each setting of the "
+               "trace varied from its default (steps through the depth pyramid, the thickness a surface is "
+               "taken to have, half resolution, and the background alone as the fallback where the scene "
+               "has a reflector), beside the same mirrors drawn with the stencil and the texture technique. "
+               "The error maps show where tracing fails: what leaves the image, what hides behind an "
+               "object, thin objects.";
     case Family::Setting:
         return "Each setting declared with values to sweep, one series per setting, each value against the "
                "scene's reference, everything else as saved.";
@@ -124,7 +135,11 @@ FamilyView analyse(Family family, const std::vector<Record>& records) {
     for (const Record& r : records)
         if (r.config.family == family)
             v.rows.push_back(&r);
-    v.metric = effectiveMetric(v.rows, focusMetric(family));
+    // The screen-space family of a scene without mirrors sweeps the reflector: judged on its pixels.
+    const bool mirrors = std::any_of(v.rows.begin(), v.rows.end(),
+                                     [](const Record* r) { return r->config.series == "planar"; });
+    v.metric = effectiveMetric(v.rows, family == Family::ScreenSpace && !mirrors ? Metric::PsnrReflector
+                                                                                 : focusMetric(family));
     v.gpu = allGpuTimed(v.rows);
     for (std::size_t i = 0; i < v.rows.size(); ++i) {
         const Record& r = *v.rows[i];
@@ -257,11 +272,50 @@ std::vector<std::string> glossyLines(const FamilyView& v) {
     return lines;
 }
 
+// Whether the best screen-space trace comes within 1 dB of the best planar technique, in words; for a
+// reflector, what tracing it first gains over its map alone.
+std::optional<std::string> screenSpaceAgainstPlanar(const FamilyView& v) {
+    std::optional<std::size_t> planar, traced, map;
+    for (std::size_t i = 0; i < v.rows.size(); ++i) {
+        const std::string& series = v.rows[i]->config.series;
+        std::optional<std::size_t>& best = series == "planar"          ? planar
+                                           : series == "reflector map" ? map
+                                                                       : traced;
+        if (!best || v.points[i].psnr > v.points[*best].psnr)
+            best = i;
+    }
+    if (map && traced) {
+        const double gain = v.points[*traced].psnr - v.points[*map].psnr;
+        return "Traced in screen space first, the reflector " +
+               (gain >= 0.0 ? "gains " + db(gain) : "loses " + db(-gain)) + " over its map alone (" +
+               displayName(v.rows[*traced]->config) + " " + db(v.points[*traced].psnr) + " at " +
+               ms(v.points[*traced].cost) + ", the map alone " + db(v.points[*map].psnr) + " at " +
+               ms(v.points[*map].cost) + "): what the image shows has no parallax error.";
+    }
+    if (!planar || !traced)
+        return std::nullopt;
+    const double gap = v.points[*planar].psnr - v.points[*traced].psnr;
+    const std::string both = displayName(v.rows[*traced]->config) + " scores " + db(v.points[*traced].psnr) +
+                             " at " + ms(v.points[*traced].cost) + ", " +
+                             displayName(v.rows[*planar]->config) + " " + db(v.points[*planar].psnr) +
+                             " at " + ms(v.points[*planar].cost);
+    if (gap <= 1.0)
+        return "Screen space is good enough here: at its best it comes within 1 dB of the planar technique "
+               "(" +
+               both + ").";
+    return "Screen space is not good enough here: at its best it stays " + db(gap) +
+           " below the planar technique (" + both +
+           "); its error map shows what the camera's image does not hold.";
+}
+
 // What a family's sweep found, one sentence (or a few) per line, in Markdown.
 std::vector<std::string> findingLines(const FamilyView& v, const std::string& note) {
     if (v.family == Family::Glossy)
         return glossyLines(v);
     std::vector<std::string> lines;
+    if (v.family == Family::ScreenSpace)
+        if (std::optional<std::string> line = screenSpaceAgainstPlanar(v))
+            lines.push_back(*line);
     lines.push_back("Best: " + describe(v, v.best) + ".");
     if (v.cheapest) {
         std::string line = "Cheapest within 1 dB of the best: " + describe(v, *v.cheapest);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <set>
+#include <utility>
 
 namespace speculum::accuracy {
 
@@ -117,6 +118,8 @@ std::string familyName(Family family) {
         return "reflected-detail";
     case Family::Glossy:
         return "glossy";
+    case Family::ScreenSpace:
+        return "screen-space";
     case Family::Setting:
         return "setting";
     }
@@ -124,9 +127,9 @@ std::string familyName(Family family) {
 }
 
 std::optional<Family> familyFromName(const std::string& name) {
-    for (Family f :
-         {Family::Scene, Family::Envmap, Family::Parallax, Family::MirrorTechnique, Family::MirrorDepth,
-          Family::Shadows, Family::Tessellation, Family::ReflectedDetail, Family::Glossy, Family::Setting})
+    for (Family f : {Family::Scene, Family::Envmap, Family::Parallax, Family::MirrorTechnique,
+                     Family::MirrorDepth, Family::Shadows, Family::Tessellation, Family::ReflectedDetail,
+                     Family::Glossy, Family::ScreenSpace, Family::Setting})
         if (familyName(f) == name)
             return f;
     return std::nullopt;
@@ -279,6 +282,70 @@ void planMirrors(Configurations& out, const render::FrameInput& scene, const Sce
     }
 }
 
+// A sharp reflector in a scene without mirrors: its map alone, then traced in screen space first at
+// rising steps (judged on its own pixels; with mirrors the family judges the mirrors' pixels, and the
+// reflector is left as the scene has it).
+void planReflectorScreenSpace(Configurations& out, const SceneTraits& traits, const SweepOptions& options) {
+    if (!traits.reflector || traits.roughReflector)
+        return;
+    Variation map;
+    map.set(Part::Reflector, "technique", int(render::ReflectorTechnique::Map));
+    out.push_back(configuration(Family::ScreenSpace, "screen-space-reflector-map", "reflector map alone",
+                                "reflector map", map));
+    for (int n : options.quick ? std::vector<int>{64} : std::vector<int>{16, 64, 256}) {
+        Variation v;
+        v.set(Part::Reflector, "technique", int(render::ReflectorTechnique::ScreenSpace))
+            .set(Part::Settings, "screenSteps", n);
+        out.push_back(configuration(Family::ScreenSpace, "screen-space-reflector-steps-" + std::to_string(n),
+                                    "reflector traced " + std::to_string(n) + " steps", "reflector traced",
+                                    v));
+    }
+}
+
+// Every mirror traced in screen space, each setting of the trace varied from the defaults, beside the two
+// planar techniques, so that one plot and one Pareto front hold them all: how many steps, how thick a
+// surface is taken to be, half resolution, and (with a reflector) the background alone as the fallback.
+void planScreenSpace(Configurations& out, const SceneTraits& traits, const SweepOptions& options) {
+    if (traits.mirrors == 0) {
+        planReflectorScreenSpace(out, traits, options);
+        return;
+    }
+    for (MirrorTechnique t : {MirrorTechnique::Stencil, MirrorTechnique::Texture}) {
+        Variation v;
+        v.set(Part::Mirrors, "technique", int(t));
+        out.push_back(configuration(Family::ScreenSpace, "screen-space-planar-" + techniqueName(t),
+                                    "planar " + techniqueName(t), "planar", v));
+    }
+    auto traced = [&](const std::string& id, const std::string& label, const std::string& series) {
+        Variation v;
+        v.set(Part::Mirrors, "technique", int(MirrorTechnique::ScreenSpace));
+        out.push_back(configuration(Family::ScreenSpace, "screen-space-" + id, label, series, v));
+        return &out.back().variation;
+    };
+    const std::vector<int> steps =
+        options.quick ? std::vector<int>{16, 64} : std::vector<int>{16, 32, 64, 128, 256};
+    for (int n : steps)
+        traced("steps-" + std::to_string(n), "traced " + std::to_string(n) + " steps", "steps")
+            ->set(Part::Settings, "screenSteps", n);
+    struct Thickness {
+        double value;
+        const char* text;
+        const char* id; // ids are kebab-case, without a decimal point
+    };
+    const Thickness thicknesses[] = {{0.01, "0.01", "0-01"}, {0.1, "0.1", "0-1"}, {0.3, "0.3", "0-3"}};
+    for (const Thickness& t : thicknesses)
+        traced(std::string("thickness-") + t.id, std::string("traced thickness ") + t.text, "thickness")
+            ->set(Part::Settings, "screenThickness", t.value);
+    for (int n : options.quick ? std::vector<int>{64} : std::vector<int>{16, 64})
+        traced("half-" + std::to_string(n), "traced at half resolution, " + std::to_string(n) + " steps",
+               "half resolution")
+            ->set(Part::Settings, "screenSteps", n)
+            .set(Part::Settings, "screenResolution", int(render::ScreenResolution::Half));
+    if (traits.reflector)
+        traced("fallback-background", "traced, the background as fallback", "fallback")
+            ->set(Part::Settings, "screenFallback", int(render::ScreenFallback::Background));
+}
+
 // PCF kernels against exact hard shadows; teapot tessellations against the finest.
 void planShadowsAndMeshes(Configurations& out, const render::FrameInput& scene, const SceneTraits& traits,
                           const SweepOptions& options) {
@@ -387,6 +454,7 @@ std::vector<Configuration> planSweep(const render::FrameInput& scene, const Scen
     planMirrors(out, scene, traits, options);
     planShadowsAndMeshes(out, scene, traits, options);
     planGlossy(out, traits, options);
+    planScreenSpace(out, traits, options);
     planDeclared(out, traits);
     return out;
 }

@@ -22,6 +22,8 @@ enum class Family {
     Tessellation,    // tessellation of the built-in teapots
     ReflectedDetail, // big meshes in reflections: drawn whole, then at their simplified level
     Glossy,          // rough surfaces at roughness 0.1, 0.3, 0.6: each raster approximation and quality
+    ScreenSpace,     // every planar mirror traced in screen space (steps, thickness, resolution, fallback)
+                     // beside the stencil and texture techniques
     Setting,         // a declared field with sweep values of its own (FieldSpec::sweep), one series each
 };
 

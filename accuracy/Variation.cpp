@@ -327,6 +327,13 @@ Settings effectiveSettings(const render::FrameInput& applied, const std::optiona
         add(Part::Mirrors, "technique");
         add(Part::Settings, "mirrorDepth");
     }
+    if (reflector)
+        add(Part::Reflector, "technique");
+    const bool screenSpace =
+        std::any_of(
+            applied.mirrors.begin(), applied.mirrors.end(),
+            [](const render::Mirror& m) { return m.technique == render::MirrorTechnique::ScreenSpace; }) ||
+        (reflector && applied.reflector->technique == render::ReflectorTechnique::ScreenSpace);
     if (auto pcf = kernelsText(applied))
         s.emplace_back("pcf", *pcf);
     if (teapotTessellation)
@@ -342,6 +349,13 @@ Settings effectiveSettings(const render::FrameInput& applied, const std::optiona
             roughness = std::max(roughness, m.roughness);
         s.emplace_back("roughness", roughnessText(roughness));
         s.emplace_back("glossy", glossyText(applied.settings, roughMirrors, roughReflector));
+    }
+    if (screenSpace) { // the trace's own settings, where a mirror is traced
+        add(Part::Settings, "screenSteps");
+        add(Part::Settings, "screenThickness");
+        add(Part::Settings, "screenResolution");
+        if (reflector)
+            add(Part::Settings, "screenFallback");
     }
     for (const auto& [part, spec] : declaredSweeps())
         if (auto text = partText(applied, part, *spec))

@@ -60,10 +60,24 @@ render::FrameInput applyVariation(const render::FrameInput& scene, const Variati
 // A bench results file's settings: (column, value) pairs as effectiveSettings writes them.
 using Settings = std::vector<std::pair<std::string, std::string>>;
 
-// The columns bench results always had, in their order; declared fields swept on their own follow.
-inline const std::vector<std::string> kSettingNames = {
-    "map",          "resolution",      "fill",      "parallax", "technique", "mirrorDepth", "pcf",
-    "tessellation", "reflectedDetail", "roughness", "glossy"};
+// The columns bench results have, in their order (the screen-space trace's last: only where a mirror is
+// traced); declared fields swept on their own follow.
+inline const std::vector<std::string> kSettingNames = {"map",
+                                                       "resolution",
+                                                       "fill",
+                                                       "parallax",
+                                                       "technique",
+                                                       "mirrorDepth",
+                                                       "pcf",
+                                                       "tessellation",
+                                                       "reflectedDetail",
+                                                       "roughness",
+                                                       "glossy",
+                                                       "screenSteps",
+                                                       "screenThickness",
+                                                       "screenResolution",
+                                                       "screenFallback",
+                                                       "reflectorTechnique"};
 
 // The effective value of every setting the scene has, whether a configuration swept it or not:
 // ("map", "cube"), ("resolution", "128"), ... in the order of kSettingNames, then the declared fields that

@@ -137,7 +137,7 @@ std::string usageText() {
            "  speculum [PROJECT]                          open the editor\n"
            "  speculum --recover FILE                     open the editor on an editor's recovery file\n"
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference [--samples N]] "
-           "[--keep-going]\n"
+           "[--screen-space-sources] [--keep-going]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--preview SCALE[,CUT] "
            "[--preview-drag]] [--json]\n"
            "  speculum bench PROJECT --out DIR [--quick] [--size WxH] [--keep-going]\n"
@@ -150,6 +150,8 @@ std::string usageText() {
            "--ssaa N averages NxN samples per pixel (1..16), --time evaluates animations at T seconds.\n"
            "--reference draws the still with the exact ray tracer; --samples N (1..65536, default 16) paths\n"
            "per sample average rough reflections, and the noise left is printed.\n"
+           "--screen-space-sources draws each screen-space mirror in the colour of where its reflection\n"
+           "comes from: green, met in the image; blue, the reflector's map; red, the background.\n"
            "explain renders a frame and lists the passes that ran and the effects skipped, with reasons;\n"
            "--frame N explains the Nth of N identical frames, showing what a static scene reuses.\n"
            "--preview SCALE[,CUT] explains the frame as the editor previews it while the view moves: drawn\n"
@@ -246,6 +248,8 @@ base::Status checkValues(const Typed& t, CliOptions& o) {
             return Error{"--samples: only with --reference (the tracer's paths per rough reflection)"};
         o.samples = *n;
     }
+    if (o.screenSpaceSources && o.reference)
+        return Error{"--screen-space-sources: not with --reference (the tracer has no screen-space trace)"};
     if (!t.time.empty()) {
         auto seconds = parseTime(t.time);
         if (!seconds)
@@ -351,6 +355,9 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
         app.add_option("--samples", typed.samples,
                        "With --reference: paths per sample through rough reflections (1..65536, default 16)")
             ->type_name("N");
+        app.add_flag("--screen-space-sources", o.screenSpaceSources,
+                     "Draw screen-space mirrors in the colour of where their reflection comes from (green: "
+                     "the image, blue: the reflector's map, red: the background)");
     }
     if (renders || command == Command::Time)
         app.add_option("--time", typed.time, "Evaluate animations at T seconds (default 0)")->type_name("T");

@@ -30,6 +30,8 @@ struct CliOptions {
     double time = 0.0;
     bool reference = false;
     int samples = 16; // render --reference: paths per sample through rough reflections (TraceSettings)
+    // render --screen-space-sources: screen-space mirrors in the colour of where their reflection comes from
+    bool screenSpaceSources = false;
     bool json = false;
     bool quick = false;
     int frame = 1; // explain: which of consecutive frames of the same scene to explain (reuse shows from 2)

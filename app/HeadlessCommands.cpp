@@ -183,6 +183,7 @@ scene::StillExportSettings stillSettings(const CliOptions& options) {
     settings.time = options.time;
     settings.reference = options.reference;
     settings.samples = options.samples;
+    settings.screenSpaceSources = options.screenSpaceSources;
     return settings;
 }
 

@@ -4,6 +4,7 @@
 #include "material.glsl"
 #include "envmap_lookup.glsl"
 #include "ggx_albedo.glsl"
+#include "parallax.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
@@ -17,10 +18,6 @@ uniform mat3 uEnvMapFromWorld;  // world axes → the map's frame
 uniform vec3 uEnvCentre;        // the capture point, camera-relative
 uniform float uReflectivity;
 uniform int uFresnel;
-uniform int uParallax;          // 0 off, 1 sphere, 2 box
-uniform float uParallaxRadius;
-uniform vec3 uParallaxMin;      // relative to the capture point
-uniform vec3 uParallaxMax;
 uniform int uRough;             // roughness > 0: one lookup at an explicit LOD in the bound texture,
                                 // REFLECTOR_MIP_LEVELS or REFLECTOR_GGX_CHAIN
 uniform float uRoughnessLod;    // roughness × (levels − 1) of that texture (ReflectorPass::drawSurface)
@@ -39,25 +36,6 @@ const int REFLECTOR_GGX_CHAIN = 2;  // the pre-filtered chain: level k is the lo
 #endif
 
 out vec4 fragColor;
-
-// Parallax correction: the point where the reflected ray from the shaded point p leaves the proxy, seen
-// from the capture point (xyz), and how far along the ray that is (w). A ray that never meets the proxy
-// (the point outside it) keeps its direction, and w is 0.
-vec4 parallaxHit(vec3 p, vec3 r) {
-    if (uParallax == 1) {
-        float b = dot(p, r);
-        float c = dot(p, p) - uParallaxRadius * uParallaxRadius;
-        float disc = b * b - c;
-        float t = -b + sqrt(max(disc, 0.0));
-        return (disc >= 0.0 && t > 0.0) ? vec4(p + t * r, t) : vec4(r, 0.0);
-    }
-    vec3 safe = mix(vec3(1e-20), r, greaterThan(abs(r), vec3(1e-20)));
-    vec3 t1 = (uParallaxMin - p) / safe;
-    vec3 t2 = (uParallaxMax - p) / safe;
-    vec3 tFar = max(t1, t2);
-    float t = min(tFar.x, min(tFar.y, tFar.z));
-    return t > 0.0 ? vec4(p + t * r, t) : vec4(r, 0.0);
-}
 
 // The LOD of a lookup in the GGX chain, whose levels are roughnesses (level k: k / (levels − 1)), not
 // resolutions: a lookup reads the roughness whose lobe covers both the surface's lobe and the pixel's

@@ -6,6 +6,7 @@
 #include "editor/ui/Viewport.hpp"
 #include "editor/view/AnimationClock.hpp"
 
+#include <QAction>
 #include <QApplication>
 #include <QBuffer>
 #include <QEventLoop>
@@ -30,6 +31,9 @@ ScreenshotRequest screenshotRequestFromEnvironment() {
     if (match.hasMatch()) {
         request.size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
     }
+    const QString actions = qEnvironmentVariable("SPECULUM_SCREENSHOT_ACTIONS");
+    if (!actions.isEmpty())
+        request.actions = actions.split(QLatin1Char(':'), Qt::SkipEmptyParts);
     const QString imports = qEnvironmentVariable("SPECULUM_SCREENSHOT_IMPORT");
     if (!imports.isEmpty()) {
         request.imports = imports.split(QLatin1Char(':'), Qt::SkipEmptyParts);
@@ -51,6 +55,14 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
     }
     if (!request.imports.isEmpty()) {
         window.viewport().frameSelected();
+    }
+    for (const QString& name : request.actions) {
+        auto* action = window.findChild<QAction*>(name);
+        if (!action) {
+            qCritical("speculum: screenshot: the window has no action named %s", qPrintable(name));
+            return 1;
+        }
+        action->trigger();
     }
     // The project's model files are read on workers: the picture shows them, not their stand-ins.
     window.viewport().waitForModels();

@@ -18,6 +18,9 @@ struct ScreenshotRequest {
     // SPECULUM_SCREENSHOT_IMPORT: model files (separated by ':') imported first, as File ▸ Import Model does
     // (worker thread, placement); the view then frames the last one.
     QStringList imports;
+    // SPECULUM_SCREENSHOT_ACTIONS: the object names of the window's actions (separated by ':') triggered
+    // first, as the menu would ("viewShowScreenSpaceSources" shows the screen-space debug view).
+    QStringList actions;
     int frames = 3;         // frames the viewport draws before the grab
     int timeoutMs = 120000; // give up (exit 1) if the viewport has not drawn by then
 };

@@ -79,6 +79,19 @@ void addViewPresetActions(QWidget& window, QMenu* menu, Viewport& viewport) {
     if (menu) {
         menu->addAction(guides);
     }
+
+    auto* sources = new QAction(QObject::tr("Show Screen-Space &Sources"), &window);
+    sources->setObjectName(QStringLiteral("viewShowScreenSpaceSources"));
+    sources->setCheckable(true);
+    sources->setChecked(viewport.screenSpaceSourcesVisible());
+    sources->setStatusTip(
+        QObject::tr("Colour each screen-space mirror's pixels by where their reflection comes "
+                    "from: green, the image; blue, the reflector's map; red, the background"));
+    QObject::connect(sources, &QAction::toggled, &viewport, &Viewport::setScreenSpaceSourcesVisible);
+    window.addAction(sources);
+    if (menu) {
+        menu->addAction(sources);
+    }
 }
 
 } // namespace speculum::ui

@@ -146,6 +146,13 @@ bool Viewport::guidesVisible() const {
     return m_overlay->guidesVisible();
 }
 
+void Viewport::setScreenSpaceSourcesVisible(bool visible) {
+    if (visible == m_screenSpaceSources)
+        return;
+    m_screenSpaceSources = visible;
+    update();
+}
+
 void Viewport::setAdaptiveResolution(bool on) {
     if (on == m_adaptive) {
         return;
@@ -274,6 +281,7 @@ void Viewport::paintGL() {
                        m_handles.press() == ViewportHandles::Press::Handle};
     if (m_overlay->guidesVisible())
         options.guides = guideLines();
+    options.showScreenSpaceSources = m_screenSpaceSources;
     // The view stays interactive whatever the reflector's settings: a map that would take longer is drawn
     // smaller while editing (a warning says so); Export Still draws it as the scene asks.
     options.maxMapSeconds = render::kInteractiveMapSeconds;

@@ -139,6 +139,11 @@ public:
     // painted over the frame (ViewportOverlay; remembered in QSettings there).
     void setGuidesVisible(bool visible);
     bool guidesVisible() const;
+    // View ▸ Show Screen-Space Sources: each screen-space mirror's pixels in the colour of where their
+    // reflection comes from (green, met in the image; blue, the reflector's map; red, the background),
+    // with a legend. Not remembered: a teaching view, off when the editor starts.
+    void setScreenSpaceSourcesVisible(bool visible);
+    bool screenSpaceSourcesVisible() const { return m_screenSpaceSources; }
 
     // Adaptive resolution: while the view is navigated (orbit, pan, zoom, the wheel) or a
     // handle is dragged, frames are drawn at a reduced resolution, scaled up, chosen from the measured
@@ -256,6 +261,7 @@ private:
 
     // Adaptive resolution.
     bool m_adaptive = true;
+    bool m_screenSpaceSources = false;
     bool m_interacting = false;
     QTimer m_rest; // single shot: kRestMs after the last navigation or handle move
     view::AdaptiveResolution m_resolution;

@@ -7,6 +7,8 @@
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QSettings>
+#include <algorithm>
+#include <utility>
 
 namespace speculum::ui {
 
@@ -62,6 +64,41 @@ void ViewportOverlay::paintEvent(QPaintEvent*) {
     if (m_viewport.renderer() != nullptr && m_viewport.lastFrameReduced()) {
         paintPreviewLabel(painter);
     }
+    if (m_viewport.renderer() != nullptr && m_viewport.screenSpaceSourcesVisible()) {
+        paintSourcesLegend(painter);
+    }
+}
+
+void ViewportOverlay::paintSourcesLegend(QPainter& painter) {
+    // Top left: what the screen-space debug view's colours mean (the trace's own colours, blended where
+    // its confidence fades one source into the next).
+    const std::pair<QColor, QString> entries[] = {
+        {QColor(0, 255, 0), tr("met in the image")},
+        {QColor(0, 0, 255), tr("the reflector's map")},
+        {QColor(255, 0, 0), tr("the background")},
+    };
+    QFont font = painter.font();
+    font.setPixelSize(12);
+    painter.save();
+    painter.setFont(font);
+    const QFontMetricsF metrics(font);
+    const double line = metrics.height() + 4.0;
+    double widest = metrics.horizontalAdvance(tr("Screen-space reflections:"));
+    for (const auto& entry : entries)
+        widest = std::max(widest, 18.0 + metrics.horizontalAdvance(entry.second));
+    const QRectF box(10.0, 10.0, widest + 16.0, line * 4 + 8.0);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0, 0, 0, 150));
+    painter.drawRoundedRect(box, 4.0, 4.0);
+    painter.setPen(QColor(255, 255, 255, 230));
+    painter.drawText(QPointF(box.left() + 8.0, box.top() + 4.0 + metrics.ascent()),
+                     tr("Screen-space reflections:"));
+    for (int i = 0; i < 3; ++i) {
+        const double top = box.top() + 4.0 + line * (i + 1);
+        painter.fillRect(QRectF(box.left() + 8.0, top + 2.0, 12.0, metrics.height() - 4.0), entries[i].first);
+        painter.drawText(QPointF(box.left() + 26.0, top + metrics.ascent()), entries[i].second);
+    }
+    painter.restore();
 }
 
 void ViewportOverlay::paintPreviewLabel(QPainter& painter) {

@@ -29,6 +29,7 @@ protected:
 private:
     void paintGuidesUnder(QPainter& painter);
     void paintPreviewLabel(QPainter& painter);
+    void paintSourcesLegend(QPainter& painter);
 
     Viewport& m_viewport;
     bool m_guides = true;

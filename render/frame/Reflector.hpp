@@ -19,10 +19,15 @@ enum class ReflectorFill { Direct, Resampled };
 // When the map is rendered again: every frame, when something it sees changed, or once.
 enum class ReflectorUpdate { Always, OnChange, Once };
 enum class ParallaxShape { Sphere, Box };
+// How the reflection is drawn: the map alone, or traced in the camera's image first (a sharp reflector
+// seen directly), the map where the trace finds nothing.
+enum class ReflectorTechnique { Map, ScreenSpace };
 static_assert(int(ReflectorMap::TennisBall) + 1 == names::kReflectorMaps.size(), "one name per value");
 static_assert(int(ReflectorFill::Resampled) + 1 == names::kReflectorFills.size(), "one name per value");
 static_assert(int(ReflectorUpdate::Once) + 1 == names::kReflectorUpdates.size(), "one name per value");
 static_assert(int(ParallaxShape::Box) + 1 == names::kParallaxShapes.size(), "one name per value");
+static_assert(int(ReflectorTechnique::ScreenSpace) + 1 == names::kReflectorTechniques.size(),
+              "one name per value");
 
 // Parallax correction: a proxy of the environment around the capture point (the reflector's centre), in
 // world axes and units relative to that point. Lookups intersect the reflected ray with it.
@@ -95,6 +100,7 @@ struct ReflectorParams {
     ReflectorUpdate update = ReflectorUpdate::OnChange;
     int mirrorDepth = 1;    // planar-mirror levels inside the environment map
     double roughness = 0.0; // 0..1, GGX roughness of the reflection as for a mirror's
+    ReflectorTechnique technique = ReflectorTechnique::Map;
 
     bool operator==(const ReflectorParams&) const = default;
 
@@ -184,6 +190,18 @@ void ReflectorParams::fields(Visit&& visit) {
                  .max = 1,
                  .slider = true,
                  .drawnInMaps = false}));
+    visit(field(&ReflectorParams::technique,
+                {.name = "technique",
+                 .label = "Technique",
+                 .meaning = "The environment map alone, or traced in the camera's image first (screen "
+                            "space: what the image shows has no parallax error), the map where the trace "
+                            "finds nothing. Sharp reflectors seen directly only",
+                 .type = FieldType::Choice,
+                 .noun = "reflector technique",
+                 .choices = names::kReflectorTechniques,
+                 .write = FieldWrite::UnlessDefault,
+                 .drawnInMaps = false,
+                 .sweepName = "reflectorTechnique"}));
 }
 
 // The reflector of the frame: its parameters, where it is, its surface and material.

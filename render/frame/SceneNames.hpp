@@ -32,6 +32,12 @@ inline constexpr std::array<Name, 3> kReflectorUpdates{{
     {"on-change", "When something it sees changes"},
     {"once", "Once"},
 }};
+// How the curved reflector's reflection is drawn: its environment map alone, or traced in the camera's
+// image first with the map where the trace finds nothing.
+inline constexpr std::array<Name, 2> kReflectorTechniques{{
+    {"map", "Environment map"},
+    {"screen-space", "Screen space, then the map"},
+}};
 inline constexpr std::array<Name, 3> kMirrorTechniques{{
     {"stencil", "Stencil"},
     {"texture", "Texture"},
@@ -41,6 +47,16 @@ inline constexpr std::array<Name, 3> kGlossyFilters{{
     {"mip", "Mip level (cheap)"},
     {"footprint", "Lobe footprint / pre-filtered map"},
     {"chain", "Convolved chain / pre-filtered map"},
+}};
+// Where a screen-space mirror's ray that finds nothing in the camera's image takes its reflection from.
+inline constexpr std::array<Name, 2> kScreenFallbacks{{
+    {"map", "The reflector's map, then the background"},
+    {"background", "The background"},
+}};
+// The resolution a screen-space mirror's reflection is traced at, against the camera's image.
+inline constexpr std::array<Name, 2> kScreenResolutions{{
+    {"full", "Full"},
+    {"half", "Half (a quarter of the rays, scaled up)"},
 }};
 // A true-or-false setting as bench results spell it: settings.simplifyReflections.
 inline constexpr std::array<Name, 2> kReflectedDetail{{

@@ -19,6 +19,15 @@ namespace speculum::render {
 enum class GlossyFilter { Mip, Footprint, Chain };
 static_assert(int(GlossyFilter::Chain) + 1 == names::kGlossyFilters.size(), "one name per value");
 
+// Where a screen-space mirror's ray that meets nothing in the camera's image takes its reflection from:
+// the curved reflector's environment map used as a probe (parallax-corrected when it has a proxy), and
+// the background where there is no map; or the background alone.
+enum class ScreenFallback { Map, Background };
+static_assert(int(ScreenFallback::Background) + 1 == names::kScreenFallbacks.size(), "one name per value");
+// The resolution a screen-space mirror is traced at: every pixel, or one ray for four pixels, scaled up.
+enum class ScreenResolution { Full, Half };
+static_assert(int(ScreenResolution::Half) + 1 == names::kScreenResolutions.size(), "one name per value");
+
 // The scene's own settings (the project file's "settings").
 struct Settings {
     glm::dvec3 background{0.1, 0.1, 0.12};
@@ -36,6 +45,8 @@ struct Settings {
     // surface the image shows (a share of its view depth) a ray still counts as meeting it.
     int screenSteps = 64;
     double screenThickness = 0.03;
+    ScreenFallback screenFallback = ScreenFallback::Map;
+    ScreenResolution screenResolution = ScreenResolution::Full;
 
     bool operator==(const Settings&) const = default;
 
@@ -120,6 +131,27 @@ void Settings::fields(Visit&& visit) {
                             "silhouettes they should pass",
                  .min = kMinScreenThickness,
                  .max = kMaxScreenThickness,
+                 .write = FieldWrite::UnlessDefault,
+                 .drawnInMaps = false}));
+    visit(field(&Settings::screenFallback,
+                {.name = "screenFallback",
+                 .label = "Screen-space fallback",
+                 .meaning = "Where a screen-space mirror's ray that meets nothing in the image takes its "
+                            "reflection from: the reflector's environment map (parallax-corrected when it "
+                            "has a proxy), or the background",
+                 .type = FieldType::Choice,
+                 .noun = "screen-space fallback",
+                 .choices = names::kScreenFallbacks,
+                 .write = FieldWrite::UnlessDefault,
+                 .drawnInMaps = false}));
+    visit(field(&Settings::screenResolution,
+                {.name = "screenResolution",
+                 .label = "Screen-space resolution",
+                 .meaning = "Trace every pixel of a screen-space mirror, or one ray for each two by two "
+                            "pixels scaled up (a quarter of the cost, softer edges)",
+                 .type = FieldType::Choice,
+                 .noun = "screen-space resolution",
+                 .choices = names::kScreenResolutions,
                  .write = FieldWrite::UnlessDefault,
                  .drawnInMaps = false}));
 }

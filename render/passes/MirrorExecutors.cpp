@@ -136,6 +136,8 @@ PassResult runMirrorSurface(const PlannedPass& pass, FrameExecution& frame, cons
     }
     if (encoded)
         glEnable(GL_FRAMEBUFFER_SRGB);
+    if (view.screenSpace && frame.showScreenSpaceSources)
+        drawScreenSpaceSources(pass, frame, space);
     // The last pass that draws in the view: what was made to draw it can go.
     space.leave(pass.view);
     return {};

@@ -120,6 +120,8 @@ PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpa
         return runComposite(pass, frame);
     case PassKind::ScreenDepth:
         return runScreenDepth(pass, frame);
+    case PassKind::ReflectorTrace:
+        return runReflectorTrace(pass, frame);
     }
     assert(false && "runPass(): not a pass kind");
     return {false, {}};

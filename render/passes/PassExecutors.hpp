@@ -50,9 +50,14 @@ struct FrameResources {
     // Screen-space mirrors: the camera's view depth with its pyramid of minima (R32F), the programs that
     // draw and reduce it, and the trace.
     gl::RenderTexture screenDepth;
+    gl::RenderTexture screenHalf; // the half-resolution trace, before it is scaled up (RGBA16F)
+    // The camera's colour copied for the reflector's trace, which draws into it (RGBA16F); then, for a
+    // still's counts, where the trace draws its sources.
+    gl::RenderTexture screenImage;
     gl::Program screenDepthProgram;
     gl::Program depthMinProgram;
     gl::Program screenTraceProgram;
+    gl::Program reflectorTraceProgram;
     MeshHandle unitPlane;
 };
 
@@ -84,9 +89,10 @@ struct FrameExecution {
     // Filled while running: why a view found no reflection (fully occluded, no texture), by view, as the
     // skip it reports; a view with one runs no more passes, nor do the views inside it.
     std::vector<std::optional<SkippedEffect>> hidden;
-    std::vector<SkippedEffect> skipped; // effects execution found it could not draw, in pass order
-    bool screenDepthReady = false;      // the ScreenDepth pass drew the pyramid the traces read
-    bool countScreenSpace = false;      // RenderOptions::countScreenSpace
+    std::vector<SkippedEffect> skipped;  // effects execution found it could not draw, in pass order
+    bool screenDepthReady = false;       // the ScreenDepth pass drew the pyramid the traces read
+    bool countScreenSpace = false;       // RenderOptions::countScreenSpace
+    bool showScreenSpaceSources = false; // RenderOptions::showScreenSpaceSources
 };
 
 // What running one pass found.
@@ -127,6 +133,13 @@ bool ensureReflectionTexture(const PlannedPass& pass, FrameExecution& frame, GLe
 // Mirror pass runs instead of drawing the scene reflected (MirrorView::screenSpace).
 PassResult runScreenDepth(const PlannedPass& pass, FrameExecution& frame);
 PassResult runScreenTrace(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
+// The curved reflector traced in screen space (ReflectorTechnique::ScreenSpace): over what the main pass
+// drew of it, the image replaces the map's lookup where the trace meets it.
+PassResult runReflectorTrace(const PlannedPass& pass, FrameExecution& frame);
+// The debug view (FrameExecution::showScreenSpaceSources): a screen-space mirror's pixels, over its surface
+// just drawn in the bound target, in the colour of where their reflection comes from, traced again at
+// full resolution.
+void drawScreenSpaceSources(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
 
 // Runs the pass with the executor of its kind, in `space`: the camera's for the frame's passes, a map
 // face's for the mirror passes planned inside the environment map (EnvmapPlan::passes), the only kind a

@@ -202,6 +202,33 @@ base::Status ReflectorPass::selectLighting(const std::string& variant, bool draw
     return base::Done{};
 }
 
+void ReflectorPass::setMapUniforms(const FrameInput& input, const gl::Program& p) const {
+    const Reflector& r = *input.reflector;
+    const envmap::EnvironmentCapture& map = *m_capture;
+    p.set("uEnvType", static_cast<int>(map.settings().type));
+    p.set("uEnvLayout", map.layout().packed());
+    p.set("uEnvCentre", glm::vec3(m_centre - input.camera.position));
+    const ParallaxParams proxy = r.parallax.value_or(ParallaxParams{});
+    p.set("uParallax", !r.parallax ? 0 : proxy.shape == ParallaxShape::Sphere ? 1 : 2);
+    p.set("uParallaxRadius", float(proxy.radius));
+    p.set("uParallaxMin", glm::vec3(proxy.min));
+    p.set("uParallaxMax", glm::vec3(proxy.max));
+    p.set("uEnvCube", kEnvCubeUnit);
+    p.set("uEnvArray", kEnvArrayUnit);
+}
+
+bool ReflectorPass::bindAsProbe(const FrameInput& input, const gl::Program& p) const {
+    if (!input.reflector || !hasMap(*input.reflector))
+        return false;
+    p.use();
+    setMapUniforms(input, p);
+    const envmap::EnvironmentCapture& map = *m_capture;
+    glActiveTexture(GL_TEXTURE0 + (map.target() == GL_TEXTURE_CUBE_MAP ? kEnvCubeUnit : kEnvArrayUnit));
+    glBindTexture(map.target(), map.texture());
+    glActiveTexture(GL_TEXTURE0);
+    return true;
+}
+
 bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context) {
     if (!input.reflector || !hasMap(*input.reflector))
         return false;
@@ -216,17 +243,8 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     p.set("uReflectivity", float(std::clamp(r.reflectivity, 0.0, 1.0)));
     p.set("uFresnel", r.fresnel ? 1 : 0);
     const envmap::EnvironmentCapture& map = *m_capture;
-    p.set("uEnvType", static_cast<int>(map.settings().type));
-    p.set("uEnvLayout", map.layout().packed());
+    setMapUniforms(input, p);
     p.set("uEnvMapFromWorld", glm::mat3(1.0f));
-    p.set("uEnvCentre", glm::vec3(m_centre - input.camera.position));
-    const ParallaxParams proxy = r.parallax.value_or(ParallaxParams{});
-    p.set("uParallax", !r.parallax ? 0 : proxy.shape == ParallaxShape::Sphere ? 1 : 2);
-    p.set("uParallaxRadius", float(proxy.radius));
-    p.set("uParallaxMin", glm::vec3(proxy.min));
-    p.set("uParallaxMax", glm::vec3(proxy.max));
-    p.set("uEnvCube", kEnvCubeUnit);
-    p.set("uEnvArray", kEnvArrayUnit);
     // A rough reflector reads one texture at an explicit LOD: the pre-filtered chain (same target and
     // layout as the map) at the roughness that covers the lobe, narrowed by the proxy's distance, and the
     // pixel's footprint (reflector.frag's chainLod), or, for Mip (or without a chain), the map's own mip

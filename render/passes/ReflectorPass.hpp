@@ -64,6 +64,11 @@ public:
     // Draws the reflector with its map in `view`; false (nothing changed) if there is no map for it.
     bool drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context);
 
+    // Binds the reflector's sharp map and sets `p`'s map uniforms (shaders/parallax.glsl and the map's
+    // type, layout and capture point), so that `p` can look it up as a probe from anywhere (the
+    // screen-space fallback); false (nothing bound) if there is no map.
+    bool bindAsProbe(const FrameInput& input, const gl::Program& p) const;
+
     // GPU memory of the reflector's map if one made with its current settings exists, else 0.
     std::size_t mapBytes(const Reflector& reflector) const {
         return hasMap(reflector) ? m_capture->bytes() + (m_prefilter ? m_prefilter->bytes() : 0) : 0;
@@ -78,6 +83,9 @@ public:
     }
 
 private:
+    // The uniforms every lookup of the map needs: its type, layout, capture point and parallax proxy.
+    void setMapUniforms(const FrameInput& input, const gl::Program& p) const;
+
     std::optional<envmap::EnvironmentCapture> m_capture;
     std::uint64_t m_settingsKey = 0; // of the map last rendered into m_capture; 0: not rendered yet
     std::uint64_t m_captures = 0;    // captures so far: the chain knows which one it filtered

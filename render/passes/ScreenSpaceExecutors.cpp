@@ -1,11 +1,16 @@
 // Screen-space mirrors (MirrorTechnique::ScreenSpace): the camera's view depth and its pyramid of minima
 // (ScreenDepth), and each mirror's reflection traced through the camera's image into its reflection
 // texture (its Mirror pass), which its surface pass then reads as a texture mirror's.
+#include "base/Printable.hpp"
 #include "render/math/Mirror.hpp"
 #include "render/math/Projection.hpp"
 #include "render/passes/PassExecutors.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,9 +23,10 @@ constexpr float kNothingDrawn = 3.0e38f;
 
 // What the image shows at a depth the trace can meet: every object, the reflector and the mirrors drawn
 // before the screen-space ones (their surfaces, which hold their reflections). The screen-space mirrors
-// themselves are left out: a ray leaving one passes through the others, whose reflections are not in the
-// image yet when it is traced.
-void drawViewDepth(const FrameExecution& frame, const ViewSpace& space, const gl::Program& program) {
+// themselves are left out unless `screenSpaceMirrors` (the reflector's pyramid, drawn after them): a ray
+// leaving one passes through the others, whose reflections are not in the image yet when it is traced.
+void drawViewDepth(const FrameExecution& frame, const ViewSpace& space, const gl::Program& program,
+                   bool screenSpaceMirrors) {
     const FrameInput& input = frame.input;
     const glm::dmat4 toView = space.rotation * math::cameraRelative(input.camera);
     const glm::dmat4 toClip = space.projection * toView;
@@ -37,7 +43,7 @@ void drawViewDepth(const FrameExecution& frame, const ViewSpace& space, const gl
         draw(input.reflector->mesh, input.reflector->world);
     std::vector<bool> screenSpace(input.mirrors.size(), false);
     for (const MirrorView& view : frame.plan.views)
-        if (view.screenSpace)
+        if (view.screenSpace && !screenSpaceMirrors)
             screenSpace[static_cast<std::size_t>(view.mirror)] = true;
     for (std::size_t m = 0; m < input.mirrors.size(); ++m)
         if (!screenSpace[m])
@@ -74,30 +80,132 @@ void reduceToMinima(gl::RenderTexture& pyramid, const FrameResources& r) {
     glBindVertexArray(0);
 }
 
-// How many of the traced pixels met what the image shows: the rest hold the background's path length
-// (shaders/screen_trace.frag), as every pixel the trace did not draw does. Reads the mirror's rectangle
-// of the reflection texture back.
-long long pixelsThatMetTheImage(const math::PixelRect& rect) {
+// Where the traced pixels' reflections came from: the image, the reflector's map, the background.
+struct SourceCounts {
+    long long pixels = 0;
+    long long image = 0;
+    long long map = 0;
+    long long background = 0;
+};
+
+// Counts a rectangle of the reflection texture the trace drew its sources into (uShowSources): a drawn
+// pixel's alpha is 0, the cleared ones' the background's path length; green is the image, blue the map,
+// red the background, blended by the trace's confidence (the larger share names the pixel).
+SourceCounts countSources(const math::PixelRect& rect) {
+    SourceCounts counts;
     if (rect.empty())
-        return 0;
+        return counts;
     std::vector<float> texels(static_cast<std::size_t>(rect.width()) *
                               static_cast<std::size_t>(rect.height()) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(rect.x0, rect.y0, rect.width(), rect.height(), GL_RGBA, GL_FLOAT, texels.data());
-    long long met = 0;
-    for (std::size_t i = 3; i < texels.size(); i += 4)
-        met += texels[i] < 0.5f * kFarPathLength ? 1 : 0;
-    return met;
+    for (std::size_t i = 0; i < texels.size(); i += 4) {
+        if (texels[i + 3] > 0.5f)
+            continue;
+        ++counts.pixels;
+        const float image = texels[i + 1], map = texels[i + 2], background = texels[i];
+        if (image >= std::max(map, background))
+            ++counts.image;
+        else if (map >= background)
+            ++counts.map;
+        else
+            ++counts.background;
+    }
+    return counts;
 }
 
 std::string percent(long long part, long long whole) {
     return std::to_string(whole > 0 ? (100 * part + whole / 2) / whole : 0) + "%";
 }
 
-// The trace's outcome: the share of its pixels that met the image and the share that show the background.
-std::string tracedOutcome(long long pixels, long long met) {
-    return "traced in the camera's image: " + percent(met, pixels) + " of its " + std::to_string(pixels) +
-           " pixels meet what the image shows, " + percent(pixels - met, pixels) + " show the background";
+// The trace's outcome: the share of its pixels that met the image and the shares that fell back.
+std::string tracedOutcome(const SourceCounts& c, bool half) {
+    std::string outcome = std::string("traced in the camera's image") + (half ? " at half resolution" : "") +
+                          ": " + percent(c.image, c.pixels) + " of its " + std::to_string(c.pixels) +
+                          " pixels meet what the image shows, ";
+    if (c.map > 0)
+        outcome += percent(c.map, c.pixels) + " fall back to the reflector's map, ";
+    return outcome + percent(c.background, c.pixels) + " show the background";
+}
+
+// The uniforms of shaders/screen_trace.glsl: the image, its depth pyramid, the trace's settings and the
+// fallback (the reflector's map, bound here, when the settings ask for it and there is one).
+void setImageUniforms(const gl::Program& p, const FrameExecution& frame, const ViewSpace& space,
+                      ScreenFallback fallback) {
+    const FrameInput& input = frame.input;
+    p.use();
+    p.set("uWorldFromView", glm::mat3(glm::transpose(glm::dmat3(space.rotation))));
+    p.set("uProjection", glm::mat4(space.projection));
+    p.set("uNear", float(input.camera.near));
+    p.set("uSize", glm::vec2(float(frame.target.width), float(frame.target.height)));
+    p.set("uLevels", frame.resources.screenDepth.levels());
+    p.set("uSteps", std::clamp(input.settings.screenSteps, kMinScreenSteps, kMaxScreenSteps));
+    p.set("uThickness",
+          float(std::clamp(input.settings.screenThickness, kMinScreenThickness, kMaxScreenThickness)));
+    p.set("uBackground", glm::vec3(input.settings.background));
+    p.set("uFarPath", kFarPathLength);
+    p.set("uDepthPyramid", 0);
+    p.set("uImage", 1);
+    // Units of their own whether or not a map is bound: two samplers of different types on one unit
+    // fail every draw.
+    p.set("uEnvCube", kEnvCubeUnit);
+    p.set("uEnvArray", kEnvArrayUnit);
+    p.set("uParallax", 0);
+    const bool probe = fallback == ScreenFallback::Map && frame.resources.reflector.bindAsProbe(input, p);
+    p.set("uFallback", probe ? 1 : 0);
+}
+
+// A screen-space mirror's trace: the image's uniforms, and the mirror's rectangle as the camera sees it.
+void setTraceUniforms(const gl::Program& p, const FrameExecution& frame, const ViewSpace& space,
+                      const Mirror& mirror, const glm::dvec3& normal) {
+    setImageUniforms(p, frame, space, frame.input.settings.screenFallback);
+    const glm::dmat4 toView = space.rotation * math::cameraRelative(frame.input.camera);
+    const glm::dmat4 toClip = space.projection * toView;
+    const glm::dmat4 rectangle = math::visibleMirrorRectangle(mirrorRectangle(mirror), toClip);
+    p.set("uModelClip", glm::mat4(toClip * rectangle));
+    p.set("uModelView", glm::mat4(toView * rectangle));
+    p.set("uNormal", glm::vec3(glm::normalize(glm::dmat3(space.rotation) * normal)));
+}
+
+// Draws the trace (its radiance, or its sources) into the mirror's reflection texture, bound with its
+// rectangle scissored. At half resolution it traces into the half-size texture and scales that up
+// (bilinear) into the rectangle.
+struct TraceDraw {
+    bool half = false;    // into the half-size texture, then scaled up
+    bool sources = false; // uShowSources
+};
+
+void drawTrace(FrameExecution& frame, gl::RenderTexture& reflection, const PlannedPass& pass, TraceDraw how) {
+    FrameResources& r = frame.resources;
+    r.screenTraceProgram.set("uShowSources", how.sources ? 1 : 0);
+    r.screenTraceProgram.use();
+    // One flat rectangle, drawn twice when its sources are counted: nothing for a depth test to decide.
+    glDisable(GL_DEPTH_TEST);
+    const bool half = how.half;
+    if (half) {
+        // The half texels that cover the rectangle, and one more each side for the bilinear scale-up.
+        const math::PixelRect& rect = *pass.writes.scissor;
+        const int x0 = std::max(rect.x0 / 2 - 1, 0), y0 = std::max(rect.y0 / 2 - 1, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, r.screenHalf.framebuffer());
+        glViewport(0, 0, r.screenHalf.width(), r.screenHalf.height());
+        glScissor(x0, y0, (rect.x1 + 1) / 2 + 1 - x0, (rect.y1 + 1) / 2 + 1 - y0);
+        const glm::dvec3& background = frame.input.settings.background;
+        glClearColor(float(background.r), float(background.g), float(background.b), kFarPathLength);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    frame.context.meshes.get(frame.context.unitPlane).draw();
+    if (!half)
+        return;
+    // Exactly twice the half texture: its texel centres land on the full image's, up to the half-pixel
+    // shift bilinear filtering then blends across.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.screenHalf.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, reflection.framebuffer());
+    const math::PixelRect& rect = *pass.writes.scissor;
+    glScissor(rect.x0, rect.y0, rect.width(), rect.height());
+    glBlitFramebuffer(0, 0, r.screenHalf.width(), r.screenHalf.height(), 0, 0, 2 * r.screenHalf.width(),
+                      2 * r.screenHalf.height(), GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, reflection.framebuffer());
+    glViewport(0, 0, reflection.width(), reflection.height());
 }
 
 } // namespace
@@ -122,7 +230,7 @@ PassResult runScreenDepth(const PlannedPass& pass, FrameExecution& frame) {
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     r.screenDepthProgram.use();
-    drawViewDepth(frame, cameraSpace(frame), r.screenDepthProgram);
+    drawViewDepth(frame, cameraSpace(frame), r.screenDepthProgram, pass.details.screenSpaceMirrorsInDepth);
     reduceToMinima(pyramid, r);
     resetPassState();
     frame.screenDepthReady = true;
@@ -140,51 +248,197 @@ PassResult runScreenTrace(const PlannedPass& pass, FrameExecution& frame, const 
         return {true, "no depth pyramid: the background"};
     const FrameInput& input = frame.input;
     const Mirror& mirror = input.mirrors.at(static_cast<std::size_t>(view.mirror));
-    const glm::dmat4 toView = space.rotation * math::cameraRelative(input.camera);
-    const glm::dmat4 toClip = space.projection * toView;
-    const glm::dmat4 rectangle = math::visibleMirrorRectangle(mirrorRectangle(mirror), toClip);
     const base::Result<math::Plane> plane = math::mirrorPlane(mirror.world);
     if (!plane)
         return {true, "no plane: the background"};
-    const gl::Program& p = r.screenTraceProgram;
-    p.use();
-    p.set("uModelClip", glm::mat4(toClip * rectangle));
-    p.set("uModelView", glm::mat4(toView * rectangle));
-    p.set("uNormal", glm::vec3(glm::normalize(glm::dmat3(space.rotation) * plane->normal)));
-    p.set("uProjection", glm::mat4(space.projection));
-    p.set("uNear", float(input.camera.near));
-    p.set("uSize", glm::vec2(float(frame.target.width), float(frame.target.height)));
-    p.set("uLevels", r.screenDepth.levels());
-    p.set("uSteps", std::clamp(input.settings.screenSteps, kMinScreenSteps, kMaxScreenSteps));
-    p.set("uThickness",
-          float(std::clamp(input.settings.screenThickness, kMinScreenThickness, kMaxScreenThickness)));
-    p.set("uBackground", glm::vec3(input.settings.background));
-    p.set("uFarPath", kFarPathLength);
-    p.set("uDepthPyramid", 0);
-    p.set("uImage", 1);
+    bool half = input.settings.screenResolution == ScreenResolution::Half && pass.writes.scissor;
+    if (half) {
+        const int width = (frame.target.width + 1) / 2, height = (frame.target.height + 1) / 2;
+        if (base::Status made = r.screenHalf.ensure(width, height, GL_RGBA16F, false); !made) {
+            frame.warnings.push_back("mirror " + base::quoted(pass.target) +
+                                     ": traced at full resolution, no half-size texture: " + made.error());
+            half = false;
+        }
+    }
+    setTraceUniforms(r.screenTraceProgram, frame, space, mirror, plane->normal);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, r.screenDepth.color());
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, r.linear.color());
     glDisable(GL_CULL_FACE);
-    gl::Query pixels;
+    std::optional<SourceCounts> counts;
     if (frame.countScreenSpace) {
-        pixels = gl::makeQuery();
-        glBeginQuery(GL_SAMPLES_PASSED, pixels.id());
+        drawTrace(frame, texture, pass, {.half = half, .sources = true});
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, texture.framebuffer());
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        counts = countSources(view.rect);
     }
-    frame.context.meshes.get(frame.context.unitPlane).draw();
+    drawTrace(frame, texture, pass, {.half = half, .sources = false});
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, 0);
-    if (!frame.countScreenSpace)
-        return {true, "traced in the camera's image"};
-    glEndQuery(GL_SAMPLES_PASSED);
-    GLuint drawn = 0;
-    glGetQueryObjectuiv(pixels.id(), GL_QUERY_RESULT, &drawn);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, texture.framebuffer());
+    if (!counts)
+        return {true, std::string("traced in the camera's image") + (half ? " at half resolution" : "")};
+    return {true, tracedOutcome(*counts, half)};
+}
+
+void drawScreenSpaceSources(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space) {
+    if (!frame.screenDepthReady)
+        return;
+    const MirrorView& view = space.view(pass.view);
+    const Mirror& mirror = frame.input.mirrors.at(static_cast<std::size_t>(view.mirror));
+    const base::Result<math::Plane> plane = math::mirrorPlane(mirror.world);
+    if (!plane)
+        return;
+    FrameResources& r = frame.resources;
+    setTraceUniforms(r.screenTraceProgram, frame, space, mirror, plane->normal);
+    r.screenTraceProgram.set("uShowSources", 1);
+    r.screenTraceProgram.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r.screenDepth.color());
+    // Not the image: it is the target drawn into, and the sources are colours that do not read it.
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, r.screenDepth.color());
+    // Over the surface just drawn, where it won the depth test: the same rectangle, pulled forward a
+    // little; the target's alpha is left as the surface wrote it.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-1.0f, -1.0f);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    frame.context.meshes.get(frame.context.unitPlane).draw();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDepthMask(GL_TRUE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+namespace {
+
+// The reflector's uniforms for its trace: where it is in the camera's view, how much of it reflects, and
+// how far off its surface a ray starts (two pixels' width at its distance).
+void setReflectorUniforms(const gl::Program& p, FrameExecution& frame, const ViewSpace& space,
+                          const Reflector& reflector) {
+    const FrameInput& input = frame.input;
+    const glm::dmat4 toView = space.rotation * math::cameraRelative(input.camera) * reflector.world;
+    p.set("uModelClip", glm::mat4(space.projection * toView));
+    p.set("uModelView", glm::mat4(toView));
+    p.set("uNormalView", glm::mat3(glm::transpose(glm::inverse(glm::dmat3(toView)))));
+    p.set("uReflectivity", float(std::clamp(reflector.reflectivity, 0.0, 1.0)));
+    p.set("uFresnel", reflector.fresnel ? 1 : 0);
+    const double pixelAngle =
+        2.0 * std::tan(glm::radians(input.camera.fovY) / 2.0) / std::max(frame.target.height, 1);
+    p.set("uOriginOffset", float(2.0 * pixelAngle));
+    p.set("uViewWeight", glm::vec3(viewSetup(space, -1, false).weight));
+}
+
+// Draws the reflector into the bound target over what the main pass drew of it: its depth, pulled forward
+// a little, decides. A closed mesh's back faces are culled: near its silhouette they pass that test too,
+// and the trace's difference would be added twice there. `alpha`: whether the target's alpha is written.
+void drawOverReflector(FrameExecution& frame, const Reflector& reflector, bool alpha) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-1.0f, -1.0f);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, alpha ? GL_TRUE : GL_FALSE);
+    if (frame.resources.meshFacts.get(reflector.mesh).closed) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(glm::determinant(glm::dmat3(reflector.world)) < 0.0 ? GL_CW : GL_CCW);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+    frame.context.meshes.get(reflector.mesh).draw();
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDepthMask(GL_TRUE);
+}
+
+// A still's counts: the trace's sources drawn into the copy of the image (no longer read), over the
+// camera's depth, and read back.
+SourceCounts countReflectorSources(FrameExecution& frame, const Reflector& reflector) {
+    FrameResources& r = frame.resources;
+    const int width = frame.target.width, height = frame.target.height;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.linear.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.screenImage.framebuffer());
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.screenImage.framebuffer());
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f); // alpha 1: not drawn (countSources)
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_BLEND);
+    r.reflectorTraceProgram.set("uShowSources", 1);
+    r.reflectorTraceProgram.use();
+    drawOverReflector(frame, reflector, true); // a drawn pixel's alpha 0 is what countSources counts
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.screenImage.framebuffer());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
-    const long long met = pixelsThatMetTheImage(view.rect);
-    return {true, tracedOutcome(drawn, std::min<long long>(met, drawn))};
+    return countSources({0, 0, width, height});
+}
+
+} // namespace
+
+PassResult runReflectorTrace(const PlannedPass& pass, FrameExecution& frame) {
+    FrameResources& r = frame.resources;
+    const FrameInput& input = frame.input;
+    if (!input.reflector || !input.reflector->mesh || !frame.screenDepthReady)
+        return {true, "no depth pyramid: the map alone"};
+    const Reflector& reflector = *input.reflector;
+    if (!r.reflector.hasMap(reflector))
+        return {true, "no map: the reflector is drawn without one, and nothing is traced over it"};
+    if (base::Status made = r.screenImage.ensure(frame.target.width, frame.target.height, GL_RGBA16F, false);
+        !made) {
+        frame.warnings.push_back("reflector " + base::quoted(pass.target) +
+                                 ": not traced in screen space, no copy of the image: " + made.error());
+        return {true, "no copy of the image: the map alone"};
+    }
+    // The image the rays read, copied: the trace draws into the camera's buffer.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.linear.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.screenImage.framebuffer());
+    glBlitFramebuffer(0, 0, frame.target.width, frame.target.height, 0, 0, frame.target.width,
+                      frame.target.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    const ViewSpace space = cameraSpace(frame);
+    bindWrites(pass.writes, frame, space);
+    const gl::Program& p = r.reflectorTraceProgram;
+    setImageUniforms(p, frame, space, ScreenFallback::Map);
+    setReflectorUniforms(p, frame, space, reflector);
+    p.set("uShowSources", 0);
+    p.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r.screenDepth.color());
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, r.screenImage.color());
+    // The difference to the map's reflection, added.
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    drawOverReflector(frame, reflector, false);
+    glDisable(GL_BLEND);
+    if (frame.showScreenSpaceSources) {
+        p.set("uShowSources", 1);
+        p.use();
+        drawOverReflector(frame, reflector, false);
+    }
+    std::optional<SourceCounts> counts;
+    if (frame.countScreenSpace) {
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, r.screenDepth.color()); // not the copy, which is drawn into now
+        counts = countReflectorSources(frame, reflector);
+    }
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    resetPassState();
+    if (!counts)
+        return {true, "traced in the camera's image"};
+    return {true, tracedOutcome(*counts, false)};
 }
 
 } // namespace speculum::render::passes

@@ -31,7 +31,8 @@ enum class PassKind {
     Main,
     Guides,
     Composite,
-    ScreenDepth
+    ScreenDepth,
+    ReflectorTrace
 };
 
 std::string_view toString(PassKind kind);

@@ -329,6 +329,10 @@ struct Planner {
             ReasonDetails details = seenFrom(view.parent);
             details.area = view.pixelArea;
             addPass(PassKind::MirrorMask, view, index, PlanReason::MirrorMaskCount, details);
+            details.screenFallsBackToMap = input.settings.screenFallback == ScreenFallback::Map &&
+                                           input.reflector && input.reflector->mesh;
+            if (details.screenFallsBackToMap)
+                details.node = input.reflector->name;
             addPass(PassKind::Mirror, view, index, PlanReason::MirrorScreenTrace, details);
             planSurfacePass(view, index);
         }

@@ -36,7 +36,8 @@ PassWrites cameraWrites(const FrameInput& input, const FramePlan& plan, const Pl
         writes.target = PassTarget::Linear;
         writes.clear = true;
         break;
-    case PassKind::Guides: // over the camera's view, in its buffer, against its depth
+    case PassKind::Guides:         // over the camera's view, in its buffer, against its depth
+    case PassKind::ReflectorTrace: // over the reflector the main pass drew, against its depth
         writes.target = PassTarget::Linear;
         break;
     case PassKind::Composite:
@@ -111,6 +112,7 @@ PassWrites envmapWrites(const EnvmapPlan& map, const PlannedPass& pass) {
     case PassKind::Guides:
     case PassKind::Composite:
     case PassKind::ScreenDepth:
+    case PassKind::ReflectorTrace:
         break;
     }
     return writes;

@@ -136,9 +136,8 @@ std::string compositeSentence(PlanReason code, const ReasonDetails& d) {
         return "composite pass not needed: the frame is drawn straight into the output, an 8-bit sRGB "
                "buffer, and no blend needs radiance above 1";
     case PlanReason::CompositeScreenSpace:
-        return "resolves the half-float colour buffer into the 8-bit output with sRGB encoding: "
-               "screen-space mirror '" +
-               d.node + "' reads the frame's colour in linear light, above 1 included";
+        return "resolves the half-float colour buffer into the 8-bit output with sRGB encoding: '" + d.node +
+               "' is traced in screen space and reads the frame's colour in linear light, above 1 included";
     default:
         break;
     }
@@ -198,11 +197,15 @@ std::string mirrorPassSentence(PlanReason code, const ReasonDetails& d) {
         return "traces the reflection through the camera's image against its depth pyramid, into the "
                "mirror's reflection texture (" +
                whereSeen(d) + areaCovered(d) +
-               "); where a ray leaves the image or passes behind what it shows, the background fades in";
+               "); where a ray leaves the image or passes behind what it shows, " +
+               (d.screenFallsBackToMap ? d.node + "'s environment map (settings.screenFallback)"
+                                       : std::string("the background")) +
+               " fades in";
     case PlanReason::ScreenDepthPyramid:
         return "draws the view depth of what the camera sees, and halves it level by level keeping the "
-               "nearest, for the screen-space mirrors to trace against (" +
-               d.node + ")";
+               "nearest, for the screen-space reflections to trace against (" +
+               d.node + (d.screenSpaceMirrorsInDepth ? "; the screen-space mirrors' surfaces included" : "") +
+               ")";
     default:
         break;
     }
@@ -311,12 +314,31 @@ std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
                       : "; planar mirrors reflect in it up to " + std::to_string(depth) +
                             (depth == 1 ? " level" : " levels") + " deep (the reflector's mirrorDepth)";
     }
-    const std::string where = d.seenIn.empty() ? "seen directly" : "seen in " + d.seenIn.front();
+    const std::string where = !d.screenSpaceFallbackOf.empty()
+                                  ? "not seen, but the screen-space mirrors " + d.screenSpaceFallbackOf +
+                                        " fall back to its map where their rays leave the image"
+                              : d.seenIn.empty() ? "seen directly"
+                                                 : "seen in " + d.seenIn.front();
     const char* why = code == PlanReason::EnvmapFirstMap ? "no map yet"
                       : code == PlanReason::EnvmapAlways ? "update: always"
                                                          : "something it sees changed (update on-change)";
     return "renders the scene around the reflector, lit and shadowed, from its centre into " + mapLayout(d) +
            mirrors + "; the reflector is " + where + "; " + why + reflectedMeshes(d);
+}
+
+std::string reflectorTraceSentence(PlanReason code, const ReasonDetails& d) {
+    switch (code) {
+    case PlanReason::ReflectorTraceRough:
+        return "screen-space trace not drawn: the reflector is rough (roughness " +
+               rounded(d.roughness * 100) + "%) and the trace follows one sharp ray; it reads its map alone";
+    case PlanReason::ReflectorTraceNotSeenDirectly:
+        return "screen-space trace not needed: the reflector is seen only in mirrors, whose reflected views "
+               "the camera's image does not hold; it reads its map there";
+    default:
+        return "traces the reflector's reflection through the camera's image against its depth pyramid, "
+               "over what the main pass drew of it: where a ray meets what the image shows, that replaces "
+               "the map's lookup and its parallax error; elsewhere the map stays";
+    }
 }
 
 std::string prefilterSentence(PlanReason code, const ReasonDetails& d) {
@@ -442,6 +464,9 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::PrefilterMipFilter, "prefilter-mip-filter", prefilterSentence},
     {PlanReason::PrefilterReused, "prefilter-reused", prefilterSentence},
     {PlanReason::PrefilterNoMap, "prefilter-no-map", prefilterSentence},
+    {PlanReason::ReflectorScreenTrace, "reflector-screen-trace", reflectorTraceSentence},
+    {PlanReason::ReflectorTraceRough, "reflector-trace-rough", reflectorTraceSentence},
+    {PlanReason::ReflectorTraceNotSeenDirectly, "reflector-trace-not-seen-directly", reflectorTraceSentence},
     {PlanReason::PreviewScaled, "preview-scaled", previewSentence},
     {PlanReason::PreviewMirrorDepth, "preview-mirror-depth", previewSentence},
     {PlanReason::PreviewShadowMapSize, "preview-shadow-map-size", previewSentence},
@@ -482,6 +507,7 @@ bool dropsWhatTheSceneAsks(PlanReason code) {
     case PlanReason::EnvmapDoesNotFit:
     case PlanReason::EnvmapNotAllocated:
     case PlanReason::PrefilterNoMap:
+    case PlanReason::ReflectorTraceRough:
         return true;
     case PlanReason::ShadowsOff:
     case PlanReason::NoShadowCasters:
@@ -529,6 +555,8 @@ bool dropsWhatTheSceneAsks(PlanReason code) {
     case PlanReason::PrefilterSharp:
     case PlanReason::PrefilterMipFilter:
     case PlanReason::PrefilterReused:
+    case PlanReason::ReflectorScreenTrace:
+    case PlanReason::ReflectorTraceNotSeenDirectly:
     case PlanReason::PreviewScaled:
     case PlanReason::PreviewMirrorDepth:
     case PlanReason::PreviewShadowMapSize:

@@ -81,6 +81,10 @@ enum class PlanReason {
     PrefilterMipFilter,       // skip: settings.glossyFilter is mip
     PrefilterReused,
     PrefilterNoMap, // skip while running: the map could not be allocated or drawn
+    // The reflector traced in screen space first (ReflectorTechnique::ScreenSpace).
+    ReflectorScreenTrace,          // pass
+    ReflectorTraceRough,           // skip: a rough reflector reads its map alone (no cone trace)
+    ReflectorTraceNotSeenDirectly, // skip: seen only in mirrors, whose views the image does not hold
     // What a preview (RenderOptions::preview) gives up, each a skip whose sentence starts "preview: ".
     PreviewScaled,        // details.scale of the output's width and height
     PreviewMirrorDepth,   // mirrors nest details.limit levels, not details.asked
@@ -154,8 +158,15 @@ struct ReasonDetails {
     // A screen-space mirror seen inside another mirror, drawn with the texture technique: the camera's
     // image holds nothing of that mirror's reflected view to trace.
     bool screenSpaceAsTexture = false;
+    // A screen-space mirror's trace falls back to the reflector's map (named in `node`), not the background.
+    bool screenFallsBackToMap = false;
+    // A depth pyramid drawn after the screen-space mirrors, for the reflector's trace: it holds their
+    // surfaces too, which the mirrors' own pyramid leaves out.
+    bool screenSpaceMirrorsInDepth = false;
 
     // The environment map's pass.
+    // Not seen, but the screen-space mirrors named here read it where their rays find nothing on screen.
+    std::string screenSpaceFallbackOf{};
     ReflectorMap map = ReflectorMap::Cube;
     ReflectorFill fill = ReflectorFill::Resampled;
     int resolution = 0;

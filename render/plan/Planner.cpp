@@ -38,6 +38,8 @@ std::string_view toString(PassKind kind) {
         return "composite";
     case PassKind::ScreenDepth:
         return "screen-depth";
+    case PassKind::ReflectorTrace:
+        return "reflector-trace";
     }
     return "unknown";
 }
@@ -359,6 +361,12 @@ PlannedPass guidesPass(std::size_t lines) {
 // views and the main pass planned.
 void planCameraBuffer(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {
     std::optional<BlendingMirror> blend = blendOntoRadiance(input, plan.views);
+    // The reflector's trace reads the camera's colour too, and adds to it a difference that may be
+    // negative.
+    const auto trace = std::find_if(plan.passes.begin(), plan.passes.end(),
+                                    [](const PlannedPass& p) { return p.kind == PassKind::ReflectorTrace; });
+    if (trace != plan.passes.end() && (!blend || blend->code != PlanReason::CompositeScreenSpace))
+        blend = BlendingMirror{PlanReason::CompositeScreenSpace, trace->target};
     if (viewport.eightBitOutput && blend && blend->code != PlanReason::CompositeScreenSpace) {
         blend = preWeightStencilMirrors(input, plan);
         plan.preWeighted = !blend;
@@ -520,6 +528,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     for (SkippedEffect& skip : mirrors.skipped)
         plan.skipped.push_back(std::move(skip));
 
+    planReflectorTrace(scene, viewport, plan);
     if (options.guideLines > 0)
         plan.passes.push_back(guidesPass(options.guideLines));
     planCameraBuffer(scene, viewport, plan);

@@ -121,6 +121,12 @@ bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, con
 void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
                    const FramePlan& mirrors, FramePlan& plan);
 
+// The reflector traced in screen space first (ReflectorTechnique::ScreenSpace), after every mirror's
+// passes: a sharp reflector seen directly gets the camera's depth pyramid (shared with the screen-space
+// mirrors') and its trace pass; a rough one, or one seen only in mirrors, a skip that says why. Needs the
+// mirror views in `plan` (plan.views) and its environment pass planned.
+void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan);
+
 // Tiled stills: makes `plan`, planned for the whole image `image`, draw only the pixels `tile` of it
 // (GL window coordinates, y up) into a target of the tile's size. Every view's projection becomes the
 // image's own restricted to the tile (math::tileProjection), its pixel rectangle (and every pass's

@@ -195,6 +195,18 @@ std::uint64_t prefilterKey(std::uint64_t envmapSignature, std::uint64_t envmapSe
 
 namespace {
 
+// The screen-space mirrors whose rays that find nothing in the image read the reflector's map
+// (settings.screenFallback), named for the plan ("A, B"); empty when none does.
+std::string screenSpaceFallbackOf(const FrameInput& input, const FramePlan& mirrors) {
+    if (input.settings.screenFallback != ScreenFallback::Map)
+        return {};
+    std::string names;
+    for (const MirrorView& view : mirrors.views)
+        if (view.screenSpace)
+            names += (names.empty() ? "" : ", ") + input.mirrors[static_cast<std::size_t>(view.mirror)].name;
+    return names;
+}
+
 // The GGX pre-filter of a visible reflector (planReflector). `captured`: the signature of the map the
 // Envmap pass renders this frame; empty when the map is reused. The chain is filtered only when the map
 // was rendered again, or the sample count changed, and only when the lookup reads it: a pass nothing on
@@ -247,9 +259,13 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
         return;
     const Reflector& reflector = *input.reflector;
     std::vector<std::string> seenIn;
+    std::string fallbackOf;
     if (!reflectorVisible(input, viewport, mirrors, &seenIn)) {
-        plan.skipped.push_back({reflector.name, PlanReason::EnvmapOutOfSight});
-        return;
+        fallbackOf = screenSpaceFallbackOf(input, mirrors);
+        if (fallbackOf.empty()) {
+            plan.skipped.push_back({reflector.name, PlanReason::EnvmapOutOfSight});
+            return;
+        }
     }
     if (plan.reflectorResolution == 0) {
         plan.skipped.push_back({reflector.name, PlanReason::EnvmapDoesNotFit});
@@ -279,6 +295,7 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     pass.target = reflector.name;
     pass.code = why;
     pass.details.seenIn = std::move(seenIn);
+    pass.details.screenSpaceFallbackOf = std::move(fallbackOf);
     pass.details.map = reflector.map;
     pass.details.fill = reflector.fill;
     pass.details.resolution = reflector.resolution;
@@ -297,6 +314,40 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     const std::uint64_t signature = map.signature;
     plan.envmap = std::move(map);
     planPrefilter(input, state, signature, plan);
+}
+
+void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {
+    if (!input.reflector || !input.reflector->mesh ||
+        input.reflector->technique != ReflectorTechnique::ScreenSpace || plan.reflectorResolution == 0)
+        return;
+    const Reflector& reflector = *input.reflector;
+    std::vector<std::string> seenIn;
+    if (!reflectorVisible(input, viewport, plan, &seenIn))
+        return; // its map is skipped as out of sight, and says so
+    if (!seenIn.empty()) {
+        plan.skipped.push_back({reflector.name, PlanReason::ReflectorTraceNotSeenDirectly});
+        return;
+    }
+    if (reflector.roughness > 0.0) {
+        plan.skipped.push_back(
+            {reflector.name, PlanReason::ReflectorTraceRough, {.roughness = reflector.roughness}});
+        return;
+    }
+    // The mirrors' pyramid leaves the screen-space mirrors out (none of their reflections is drawn when
+    // they trace); by now they are, and the reflector's rays meet them: a pyramid of its own then.
+    const bool screenSpaceMirrors =
+        std::any_of(plan.views.begin(), plan.views.end(), [](const MirrorView& v) { return v.screenSpace; });
+    PlannedPass pyramid;
+    pyramid.kind = PassKind::ScreenDepth;
+    pyramid.code = PlanReason::ScreenDepthPyramid;
+    pyramid.details.node = "for " + reflector.name;
+    pyramid.details.screenSpaceMirrorsInDepth = screenSpaceMirrors;
+    plan.passes.push_back(std::move(pyramid));
+    PlannedPass trace;
+    trace.kind = PassKind::ReflectorTrace;
+    trace.target = reflector.name;
+    trace.code = PlanReason::ReflectorScreenTrace;
+    plan.passes.push_back(std::move(trace));
 }
 
 } // namespace speculum::render

@@ -62,9 +62,14 @@ struct PreviewPolicy {
 struct RenderOptions {
     glm::dvec2 jitterPixels{0.0}; // sub-pixel image offset, for supersampling
     bool gpuTimings = true;       // timer queries per pass (waits for the GPU at the end of the frame)
-    // Each screen-space mirror's trace counts its pixels by where their reflection came from (the image or
-    // the background) and says so in its pass's outcome. Reads the trace back: stills and explain.
+    // Each screen-space mirror's trace counts its pixels by where their reflection came from (the image,
+    // the reflector's map or the background) and says so in its pass's outcome. Reads the trace back:
+    // stills and explain.
     bool countScreenSpace = false;
+    // Each screen-space mirror's pixels are drawn in the colour of where their reflection came from (the
+    // editor's debug view): green, met in the image; blue, the reflector's map; red, the background;
+    // blended as the trace's confidence blends them.
+    bool showScreenSpaceSources = false;
     // false: plan as if no shadow or environment map existed yet, so every one is rendered this frame.
     // Benchmarks use it to time what an animated scene costs per frame; the maps are reused as usual
     // from the next frame on.

@@ -109,7 +109,8 @@ base::Result<std::unique_ptr<Renderer>> Renderer::create() {
     for (auto [program, vertex, fragment] :
          {std::tuple{&s.screenDepthProgram, "screen_depth.vert", "screen_depth.frag"},
           std::tuple{&s.depthMinProgram, "fullscreen.vert", "depth_min.frag"},
-          std::tuple{&s.screenTraceProgram, "screen_trace.vert", "screen_trace.frag"}}) {
+          std::tuple{&s.screenTraceProgram, "screen_trace.vert", "screen_trace.frag"},
+          std::tuple{&s.reflectorTraceProgram, "reflector_trace.vert", "reflector_trace.frag"}}) {
         auto built = gl::Program::build(vertex, fragment);
         if (!built)
             return base::Error{built.error()};
@@ -450,6 +451,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     frame.shadowsMissing = planned.maps.shadowsMissing;
     frame.hidden.resize(plan.views.size());
     frame.countScreenSpace = options.countScreenSpace;
+    frame.showScreenSpaceSources = options.showScreenSpaceSources;
     gl::FramebufferBinding keepCallerBinding;
     runPasses(frame, plan.cameraBuffer == CameraBuffer::Srgb8, options, s.timer, report);
 

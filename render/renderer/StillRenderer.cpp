@@ -102,6 +102,7 @@ RenderOptions sampleOptions(const StillSettings& settings, const TileGrid& grid,
     options.cullHiddenBackFaces = settings.cullHiddenBackFaces;
     options.preview = settings.preview;
     options.countScreenSpace = true;
+    options.showScreenSpaceSources = settings.showScreenSpaceSources;
     return options;
 }
 
@@ -129,13 +130,14 @@ void copyTileIntoImage(const std::vector<float>& tile, const TileGrid& grid, int
     }
 }
 
-// A screen-space mirror traces the image it is drawn in, and a tile holds only its own pixels: such a
-// still is drawn in one piece up to this side, in tiles (with a warning) only beyond it.
+// A screen-space mirror or reflector traces the image it is drawn in, and a tile holds only its own
+// pixels: such a still is drawn in one piece up to this side, in tiles (with a warning) only beyond it.
 constexpr int kScreenSpaceTileSize = 4096;
 
 bool tracesTheImage(const FrameInput& input) {
     return std::any_of(input.mirrors.begin(), input.mirrors.end(),
-                       [](const Mirror& m) { return m.technique == MirrorTechnique::ScreenSpace; });
+                       [](const Mirror& m) { return m.technique == MirrorTechnique::ScreenSpace; }) ||
+           (input.reflector && input.reflector->technique == ReflectorTechnique::ScreenSpace);
 }
 
 } // namespace
@@ -210,9 +212,9 @@ base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& inpu
     }
     if (grid.count() > 1 && tracesTheImage(input))
         result.firstSample.warnings.push_back(
-            "screen-space mirrors are traced tile by tile (the still is drawn in " +
+            "screen-space reflections are traced tile by tile (the still is drawn in " +
             std::to_string(grid.count()) +
-            " tiles): near a tile's edge they show the background where the whole image holds what they "
+            " tiles): near a tile's edge they show their fallback where the whole image holds what they "
             "reflect");
     if (progress)
         progress(1.0, "done");

@@ -25,7 +25,8 @@ struct StillSettings {
     bool reuseMaps = true;          // RenderOptions::reuseMaps for the first sample (later ones always reuse)
     bool lightingVariants = true;   // RenderOptions::lightingVariants for every sample
     bool boundShadowLookups = true; // RenderOptions::boundShadowLookups for every sample
-    bool cullHiddenBackFaces = true; // RenderOptions::cullHiddenBackFaces for every sample
+    bool cullHiddenBackFaces = true;     // RenderOptions::cullHiddenBackFaces for every sample
+    bool showScreenSpaceSources = false; // RenderOptions::showScreenSpaceSources for every sample
     // RenderOptions::preview for every sample (`speculum explain --preview` shows what a preview gives up);
     // ignored where the still is drawn in tiles.
     PreviewPolicy preview;

@@ -53,7 +53,8 @@ base::Result<StillExportResult> traceStill(const render::FrameInput& input,
 base::Result<StillExportResult> rasterStill(render::Renderer& renderer, const render::FrameInput& input,
                                             const StillExportSettings& settings,
                                             const render::ProgressCallback& progress) {
-    const render::StillSettings still{settings.width, settings.height, settings.ssaa};
+    render::StillSettings still{settings.width, settings.height, settings.ssaa};
+    still.showScreenSpaceSources = settings.screenSpaceSources;
     auto rendered = render::renderStill(renderer, input, still, progress);
     if (!rendered)
         return base::Error{rendered.error()};
@@ -93,6 +94,8 @@ render::ImageMetadata stillMetadata(const std::string& projectPath, const StillE
     std::ostringstream text;
     text << "size " << settings.width << "x" << settings.height << ", ssaa " << settings.ssaa << ", time "
          << settings.time << " s";
+    if (settings.screenSpaceSources)
+        text << ", screen-space sources";
     if (result.trace)
         text << ", reference, " << plural(result.trace->paths, "path", "paths") << " per glossy sample";
     const std::string name = projectPath.empty() ? std::string("an untitled scene")

@@ -28,6 +28,9 @@ struct StillExportSettings {
     // is needed.
     bool reference = false;
     int samples = 16; // the reference's paths per sub-sample that meets a rough surface (--samples)
+    // Screen-space mirrors drawn in the colour of where their reflection comes from (render
+    // --screen-space-sources; render::StillSettings::showScreenSpaceSources). Raster stills only.
+    bool screenSpaceSources = false;
     // Render through this camera instead of the scene's (the editor's "current view" option).
     std::optional<render::Camera> camera;
 };

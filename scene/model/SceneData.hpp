@@ -34,7 +34,10 @@ using render::MirrorTechnique;
 using render::ParallaxShape;
 using render::ReflectorFill;
 using render::ReflectorMap;
+using render::ReflectorTechnique;
 using render::ReflectorUpdate;
+using render::ScreenFallback;
+using render::ScreenResolution;
 using render::TextureWrap;
 
 enum class BuiltinMesh { Teapot, Sphere, Box, Plane };

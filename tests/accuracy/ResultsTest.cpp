@@ -135,5 +135,34 @@ TEST(Results, FindingsAreTheReportsLines) {
             EXPECT_NE(md.find("- " + line + "\n"), std::string::npos) << line;
 }
 
+// The screen-space family says in words whether the trace at its best comes within 1 dB of the best planar
+// technique, judged on the mirrors' pixels.
+TEST(Results, TheScreenSpaceFamilySaysWhetherTracingIsGoodEnough) {
+    auto row = [](const std::string& id, const std::string& series, double ms, double psnrMirrors) {
+        Record r = record(Family::ScreenSpace, id, ms, 30.0);
+        r.config.series = series;
+        r.config.label = id;
+        r.psnrMirrors = psnrMirrors;
+        return r;
+    };
+    const auto said = [](const std::vector<Record>& records) {
+        const std::vector<FamilyFindings> found = findings(records);
+        EXPECT_EQ(found.size(), 1u);
+        EXPECT_EQ(found[0].judgedBy, "PSNR on mirror pixels");
+        return found[0].lines.at(0);
+    };
+    const std::string close =
+        said({row("planar stencil", "planar", 9.0, 40.0), row("traced 16 steps", "steps", 4.0, 38.0),
+              row("traced 64 steps", "steps", 6.0, 39.5)});
+    EXPECT_EQ(close.rfind("Screen space is good enough here", 0), 0u) << close;
+    EXPECT_NE(close.find("traced 64 steps scores 39.50 dB at 6.00 ms, planar stencil 40.00 dB"),
+              std::string::npos)
+        << close;
+    const std::string far =
+        said({row("planar texture", "planar", 9.0, 40.0), row("traced 64 steps", "steps", 6.0, 31.0)});
+    EXPECT_EQ(far.rfind("Screen space is not good enough here: at its best it stays 9.00 dB below", 0), 0u)
+        << far;
+}
+
 } // namespace
 } // namespace speculum::accuracy

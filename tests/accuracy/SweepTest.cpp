@@ -15,6 +15,7 @@ namespace speculum::accuracy {
 namespace {
 
 using render::FrameInput;
+using render::MirrorTechnique;
 
 render::MeshHandle sphere() {
     static const auto mesh = std::make_shared<const render::MeshData>(render::makeSphere(16));
@@ -82,13 +83,13 @@ TEST(BenchSweep, OnlyTheFamiliesTheSceneCallsFor) {
     const auto noMaps = planSweep(mirrors, sceneTraits(mirrors, 8), {true});
     EXPECT_EQ(familiesOf(noMaps),
               (std::set<Family>{Family::Scene, Family::MirrorTechnique, Family::MirrorDepth, Family::Shadows,
-                                Family::Tessellation}));
+                                Family::Tessellation, Family::ScreenSpace}));
 
     const FrameInput ball = withReflector(plainScene());
     const SceneTraits traits = sceneTraits(ball, std::nullopt);
     EXPECT_TRUE(traits.proxyMakesSense) << "the floor and the box enclose the ball";
     EXPECT_EQ(familiesOf(planSweep(ball, traits, {true})),
-              (std::set<Family>{Family::Scene, Family::Envmap, Family::Parallax}));
+              (std::set<Family>{Family::Scene, Family::Envmap, Family::Parallax, Family::ScreenSpace}));
 }
 
 TEST(BenchSweep, BigMeshesInReflectionsAreSweptWholeAndSimplified) {
@@ -181,13 +182,19 @@ TEST(BenchSweep, EachFamilyVariesOnlyItsOwnSettingsAndIncludesTheScenes) {
     const SceneTraits traits = sceneTraits(scene, 8);
     const Settings own = effectiveSettings(scene, 8, traits.simplifiableMeshes > 0);
     const std::map<std::string, std::string> ownMap(own.begin(), own.end());
-    const std::map<Family, std::set<std::string>> varies = {{Family::Envmap, {"map", "resolution", "fill"}},
-                                                            {Family::Parallax, {"parallax", "resolution"}},
-                                                            {Family::MirrorTechnique, {"technique"}},
-                                                            {Family::MirrorDepth, {"mirrorDepth"}},
-                                                            {Family::Shadows, {"pcf"}},
-                                                            {Family::Tessellation, {"tessellation"}},
-                                                            {Family::ReflectedDetail, {"reflectedDetail"}}};
+    const std::map<Family, std::set<std::string>> varies = {
+        {Family::Envmap, {"map", "resolution", "fill"}},
+        {Family::Parallax, {"parallax", "resolution"}},
+        // Traced, a mirror's trace settings show as columns.
+        {Family::MirrorTechnique,
+         {"technique", "screenSteps", "screenThickness", "screenResolution", "screenFallback"}},
+        {Family::MirrorDepth, {"mirrorDepth"}},
+        {Family::Shadows, {"pcf"}},
+        {Family::Tessellation, {"tessellation"}},
+        {Family::ReflectedDetail, {"reflectedDetail"}},
+        {Family::ScreenSpace,
+         {"technique", "screenSteps", "screenThickness", "screenResolution", "screenFallback",
+          "reflectorTechnique"}}};
     const TessellateTeapot keep = [](const render::MeshHandle& m, int) { return m; };
     std::map<Family, bool> sawOwn;
     std::set<std::string> ids;
@@ -218,6 +225,67 @@ TEST(BenchSweep, EachFamilyVariesOnlyItsOwnSettingsAndIncludesTheScenes) {
     }
     for (const auto& [family, saw] : sawOwn)
         EXPECT_TRUE(saw) << familyName(family) << " lacks the scene's own setting";
+}
+
+// Mirrors call for the screen-space family: the two planar techniques beside the trace with each of its
+// settings varied, so that one plot and one Pareto front hold them; the fallback is varied only where
+// there is a map to fall back to. Without mirrors, a sharp reflector's map alone beside it traced first. The
+// trace's settings are columns of the results where a mirror is traced, and read back into the same
+// variation.
+TEST(BenchSweep, MirrorsAreTracedInScreenSpaceBesideThePlanarTechniques) {
+    for (bool ball : {false, true}) {
+        const FrameInput scene =
+            ball ? withMirrorsAndShadows(withReflector(plainScene())) : withMirrorsAndShadows(plainScene());
+        const SceneTraits traits = sceneTraits(scene, 8);
+        std::set<std::string> series;
+        int traced = 0;
+        for (const Configuration& c : planSweep(scene, traits, {false})) {
+            if (c.family != Family::ScreenSpace)
+                continue;
+            series.insert(c.series);
+            const FrameInput applied = applyVariation(scene, c.variation, traits.proxy, {});
+            const bool screenSpace = applied.mirrors.front().technique == MirrorTechnique::ScreenSpace;
+            EXPECT_EQ(screenSpace, c.series != "planar") << c.id;
+            if (!screenSpace)
+                continue;
+            ++traced;
+            const Settings list = effectiveSettings(applied, std::nullopt, false);
+            const std::map<std::string, std::string> s(list.begin(), list.end());
+            EXPECT_EQ(s.at("technique"), "screen-space");
+            EXPECT_EQ(s.at("screenSteps"), std::to_string(applied.settings.screenSteps)) << c.id;
+            EXPECT_EQ(s.count("screenFallback"), ball ? 1u : 0u) << c.id;
+            for (const auto& [column, value] : list) {
+                const auto read = variationOf(column, value);
+                EXPECT_TRUE(read.ok()) << column << " = " << value;
+            }
+            if (c.id == "screen-space-half-64") {
+                EXPECT_EQ(s.at("screenResolution"), "half");
+            }
+        }
+        EXPECT_GE(traced, 10);
+        std::set<std::string> expected{"planar", "steps", "thickness", "half resolution"};
+        if (ball)
+            expected.insert("fallback");
+        EXPECT_EQ(series, expected);
+    }
+    // A sharp reflector without mirrors: its map alone, then traced first; a rough one is not traced.
+    FrameInput ball = withReflector(plainScene());
+    std::vector<std::string> ids;
+    for (const Configuration& c : planSweep(ball, sceneTraits(ball, std::nullopt), {false}))
+        if (c.family == Family::ScreenSpace) {
+            ids.push_back(c.id);
+            const FrameInput applied = applyVariation(ball, c.variation, std::nullopt, {});
+            EXPECT_EQ(applied.reflector->technique, c.series == "reflector map"
+                                                        ? render::ReflectorTechnique::Map
+                                                        : render::ReflectorTechnique::ScreenSpace);
+        }
+    EXPECT_EQ(ids, (std::vector<std::string>{"screen-space-reflector-map", "screen-space-reflector-steps-16",
+                                             "screen-space-reflector-steps-64",
+                                             "screen-space-reflector-steps-256"}));
+    ball.reflector->roughness = 0.3;
+    EXPECT_FALSE(
+        familiesOf(planSweep(ball, sceneTraits(ball, std::nullopt), {true})).count(Family::ScreenSpace))
+        << "a rough reflector reads its map alone";
 }
 
 TEST(BenchSweep, QuickSweepsFewerPoints) {

@@ -188,7 +188,7 @@ TEST_F(BenchCli, WritesResultsThatAgreePlotsAndAReport) {
             depthMirrors["d"][settings["mirrorDepth"].toInt()] = r["psnrMirrors"].toDouble();
     }
     EXPECT_EQ(families, (std::set<std::string>{"scene", "envmap", "parallax", "mirror-technique",
-                                               "mirror-depth", "shadows", "tessellation"}));
+                                               "mirror-depth", "shadows", "tessellation", "screen-space"}));
     // Reflections two mirrors deep are closer to the endless recursion than one.
     ASSERT_EQ(depthMirrors["d"].size(), 2u);
     EXPECT_GE(depthMirrors["d"][2], depthMirrors["d"][1] - 0.01);

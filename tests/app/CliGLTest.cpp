@@ -58,6 +58,32 @@ TEST_F(Cli, RenderWritesThePngAtTheRequestedSizeWithMetadata) {
     EXPECT_NE(run.out.find("teapot.png"), std::string::npos) << "prints the path it wrote";
 }
 
+// The screen-space debug view as a still: the floor of the screen-space demo in the sources' colours,
+// said in the metadata; the tracer has no such view.
+TEST_F(Cli, RenderDrawsTheScreenSpaceSources) {
+    const std::string project = speculum::testSourcePath("resources/scenes/screen-space.speculum.json");
+    const fs::path out = m_dir / "sources.png";
+    const CliRun run =
+        speculum("render " + project + " -o " + out.string() + " --size 160x90 --screen-space-sources");
+    ASSERT_EQ(run.status, 0) << run.err;
+    auto input = OIIO::ImageInput::open(out.string());
+    ASSERT_TRUE(input);
+    EXPECT_NE(input->spec().get_string_attribute("speculum:settings").find("screen-space sources"),
+              std::string::npos);
+    std::vector<unsigned char> pixels(160 * 90 * 4);
+    ASSERT_TRUE(input->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, pixels.data()));
+    int green = 0; // the floor's pixels that meet what the image shows
+    for (std::size_t i = 0; i < pixels.size(); i += 4)
+        green += pixels[i] < 40 && pixels[i + 1] > 200 && pixels[i + 2] < 40 ? 1 : 0;
+    EXPECT_GT(green, 160 * 90 / 20);
+    const CliRun refused = speculum("render " + project + " -o " + (m_dir / "no.png").string() +
+                                    " --size 64x36 --reference --screen-space-sources");
+    EXPECT_EQ(refused.status, 2);
+    EXPECT_NE(refused.err.find("--screen-space-sources: not with --reference"), std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(fs::exists(m_dir / "no.png"));
+}
+
 TEST_F(Cli, RenderWritesEveryFormatByExtension) {
     // The tuned ones, and some of what else OpenImageIO writes (8-bit WebP and Targa, float Radiance HDR).
     for (const char* ext : {"jpg", "tif", "exr", "webp", "tga", "hdr"}) {
@@ -75,7 +101,9 @@ TEST_F(Cli, RenderWritesEveryFormatByExtension) {
 // Each command has help of its own, on stdout with status 0, naming its own options.
 TEST_F(Cli, EachCommandHasItsOwnHelp) {
     const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
-        {"render", {"--output", "--size", "--ssaa", "--time", "--reference", "--samples", "--keep-going"}},
+        {"render",
+         {"--output", "--size", "--ssaa", "--time", "--reference", "--samples", "--screen-space-sources",
+          "--keep-going"}},
         {"explain", {"--size", "--time", "--frame", "--preview", "--preview-drag", "--json"}},
         {"bench", {"--out", "--size", "--quick", "--keep-going"}},
         {"time", {"--size", "--frames", "--animated", "--half-float", "--json"}},

@@ -42,7 +42,10 @@ protected:
     }
 
     render::Image renderImage(const render::FrameInput& input, int width, int height, int ssaa = 1) {
-        auto still = render::renderStill(*m_renderer, input, {width, height, ssaa});
+        return renderImage(input, render::StillSettings{width, height, ssaa});
+    }
+    render::Image renderImage(const render::FrameInput& input, const render::StillSettings& settings) {
+        auto still = render::renderStill(*m_renderer, input, settings);
         EXPECT_TRUE(still.ok()) << (still.ok() ? "" : still.error());
         if (!still.ok())
             return {};

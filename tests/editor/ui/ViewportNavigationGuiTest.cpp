@@ -136,6 +136,38 @@ protected:
     QPointF m_dragEnd;
 };
 
+// View ▸ Show Screen-Space Sources: the screen-space demo's floor, drawn in the colours of where its
+// reflection comes from (pure green where the trace meets the image), and a legend; off, none of them.
+TEST_F(AdaptiveResolution, ShowScreenSpaceSourcesColoursTheTracedFloor) {
+    open(QString::fromStdString(speculum::testSourcePath("resources/scenes/screen-space.speculum.json")));
+    QAction* sources = m_window->findChild<QAction*>(QStringLiteral("viewShowScreenSpaceSources"));
+    ASSERT_NE(sources, nullptr);
+    ASSERT_TRUE(sources->isCheckable());
+    EXPECT_FALSE(sources->isChecked()) << "off when the editor starts";
+    m_grab = true;
+    auto greenAfterAFrame = [&] {
+        const int target = viewport().framesRendered() + 1;
+        viewport().update();
+        EXPECT_TRUE(waitFor([&] { return viewport().framesRendered() >= target; }, 30000));
+        runFor(ui::Viewport::kRestMs + 200);
+        const QImage image = m_frames.back().image;
+        int green = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QRgb c = image.pixel(x, y);
+                green += qGreen(c) > 240 && qRed(c) < 20 && qBlue(c) < 20 ? 1 : 0;
+            }
+        return std::pair{green, image.width() * image.height()};
+    };
+    sources->setChecked(true);
+    EXPECT_TRUE(viewport().screenSpaceSourcesVisible());
+    const auto [on, pixels] = greenAfterAFrame();
+    EXPECT_GT(on, pixels / 20) << "the floor's pixels that meet the image";
+    sources->setChecked(false);
+    const auto [off, unused] = greenAfterAFrame();
+    EXPECT_EQ(off, 0);
+}
+
 TEST_F(AdaptiveResolution, ADragIsDrawnReducedAndTheViewAtRestInFullEqualToAFrameWithoutIt) {
     open(kChromeProject);
     ASSERT_TRUE(viewport().adaptiveResolution()) << "on by default";

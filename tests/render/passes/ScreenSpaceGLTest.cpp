@@ -1,7 +1,10 @@
 // Screen-space mirrors (MirrorTechnique::ScreenSpace): a floor mirror whose reflected scene is all in the
-// image agrees with the texture technique; what the image does not hold shows the background; a scene
-// without one runs none of their passes; and the hard views stay finite.
+// image agrees with the texture technique; what the image does not hold shows the fallback (the
+// reflector's map, or the background) and the still counts it; half resolution comes close to full; the
+// debug view colours each pixel by its source; a scene without one runs none of their passes; and the
+// hard views stay finite.
 #include "render/imageio/ImageWriter.hpp"
+#include "render/mesh/Primitives.hpp"
 #include "support/GlTest.hpp"
 #include "support/SceneBuilder.hpp"
 
@@ -42,6 +45,35 @@ FrameInput floorScene(MirrorTechnique technique) {
     floor.technique = technique;
     input.mirrors.push_back(floor);
     return input;
+}
+
+// The floor scene with a yellow box above the camera's view (the texture technique reflects it, the
+// image never shows it) and a chrome ball on the floor whose map, through a box proxy whose top is the
+// yellow box's underside, sees it where the floor's rays would meet it.
+FrameInput sceneWithMapAbove(MirrorTechnique technique, ScreenFallback fallback) {
+    FrameInput input = floorScene(technique);
+    input.settings.screenFallback = fallback;
+    input.items.push_back(
+        item("Above", boxMesh(), placed({0.0, 4.0, -2.0}, {1.0, 0.3, 0.8}), emissive({0.9, 0.9, 0.1})));
+    const glm::dvec3 centre{0.4, 0.3, 0.8};
+    Reflector ball;
+    ball.name = "Ball";
+    ball.mesh = std::make_shared<const MeshData>(makeSphere(48));
+    ball.world = glm::scale(glm::translate(glm::dmat4(1.0), centre), glm::dvec3(0.3));
+    ball.material = emissive({0.0, 0.0, 0.0});
+    ball.reflectivity = 1.0;
+    ball.resolution = 256;
+    ParallaxParams proxy;
+    proxy.shape = ParallaxShape::Box;
+    proxy.min = glm::dvec3(-4.3, 0.0, -3.0) - centre;
+    proxy.max = glm::dvec3(4.3, 3.7, 4.0) - centre;
+    ball.parallax = proxy;
+    input.reflector = ball;
+    return input;
+}
+
+bool yellow(const glm::vec4& c) {
+    return c.b < 0.3f && c.r > 0.5f && c.g > 0.5f;
 }
 
 void dump(const Image& image, const std::string& name) {
@@ -234,6 +266,212 @@ TEST_F(ScreenSpaceMirror, AWideStillIsTracedInOnePieceAndATiledOneSaysSo) {
     ASSERT_TRUE(inTiles.ok()) << inTiles.error();
     EXPECT_GT(inTiles->tiles, 1);
     EXPECT_TRUE(said(*inTiles));
+}
+
+TEST_F(ScreenSpaceMirror, WhatTheImageDoesNotHoldShowsTheReflectorsMapAndTheStillCountsIt) {
+    const Image planar = render(sceneWithMapAbove(MirrorTechnique::Texture, ScreenFallback::Map));
+    const Image map = render(sceneWithMapAbove(MirrorTechnique::ScreenSpace, ScreenFallback::Map));
+    std::string outcome;
+    for (const PassRun& run : lastReport().ran)
+        if (lastReport().planned(run).code == PlanReason::MirrorScreenTrace)
+            outcome = run.outcome;
+    const Image background =
+        render(sceneWithMapAbove(MirrorTechnique::ScreenSpace, ScreenFallback::Background));
+    dump(map, "screen-space-fallback-map");
+    dump(background, "screen-space-fallback-background");
+    int yellowInPlanar = 0, yellowInMap = 0, skyInBackground = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (yellow(planar.at(x, y))) {
+                ++yellowInPlanar;
+                yellowInMap += yellow(map.at(x, y)) ? 1 : 0;
+                skyInBackground +=
+                    difference(background.at(x, y), glm::vec4(glm::vec3(kSky), 1.0f)) < 0.02f ? 1 : 0;
+            }
+    ASSERT_GT(yellowInPlanar, 50);
+    // Through the proxy the map finds the box where the floor's rays meet it.
+    EXPECT_GE(double(yellowInMap), 0.85 * yellowInPlanar) << yellowInMap << " of " << yellowInPlanar;
+    EXPECT_GE(double(skyInBackground), 0.95 * yellowInPlanar) << skyInBackground << " of " << yellowInPlanar;
+    EXPECT_NE(outcome.find("fall back to the reflector's map"), std::string::npos) << outcome;
+    EXPECT_NE(outcome.find("pixels meet what the image shows"), std::string::npos) << outcome;
+    EXPECT_TRUE(allFinite(map));
+}
+
+TEST_F(ScreenSpaceMirror, TheMapRunsForTheFallbackWhenTheReflectorIsOutOfSight) {
+    FrameInput input = sceneWithMapAbove(MirrorTechnique::ScreenSpace, ScreenFallback::Map);
+    // Behind the camera, and below the floor, so no view sees the ball.
+    input.reflector->world = glm::scale(glm::translate(glm::dmat4(1.0), {0.0, -3.0, 8.0}), glm::dvec3(0.3));
+    const Image image = render(input);
+    ASSERT_EQ(lastReport().countRan(PassKind::Envmap), 1u);
+    for (const PassRun& run : lastReport().ran) {
+        if (lastReport().planned(run).kind == PassKind::Envmap) {
+            EXPECT_NE(lastReport().reason(run).find("screen-space mirrors Floor fall back to its map"),
+                      std::string::npos)
+                << lastReport().reason(run);
+        }
+    }
+    input.settings.screenFallback = ScreenFallback::Background;
+    render(input);
+    EXPECT_EQ(lastReport().countRan(PassKind::Envmap), 0u) << "nothing reads it";
+    EXPECT_TRUE(allFinite(image));
+}
+
+TEST_F(ScreenSpaceMirror, HalfResolutionComesCloseToFullAndSaysSo) {
+    FrameInput input = floorScene(MirrorTechnique::ScreenSpace);
+    const Image full = render(input);
+    input.settings.screenResolution = ScreenResolution::Half;
+    const Image half = render(input);
+    dump(half, "screen-space-half");
+    std::string outcome;
+    for (const PassRun& run : lastReport().ran)
+        if (lastReport().planned(run).code == PlanReason::MirrorScreenTrace)
+            outcome = run.outcome;
+    EXPECT_NE(outcome.find("at half resolution"), std::string::npos) << outcome;
+    const std::vector<bool> mirror = mirrorPixels(floorScene(MirrorTechnique::ScreenSpace));
+    int pixels = 0, close = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (mirror[static_cast<std::size_t>(y * kWidth + x)]) {
+                ++pixels;
+                close += difference(full.at(x, y), half.at(x, y)) <= 0.05f ? 1 : 0;
+            }
+    ASSERT_GT(pixels, kWidth * kHeight / 4);
+    // Edges of what it reflects move by up to a pixel and blur over two; flat regions agree.
+    EXPECT_GE(double(close), 0.85 * pixels) << close << " of " << pixels;
+    EXPECT_TRUE(allFinite(half));
+}
+
+TEST_F(ScreenSpaceMirror, TheDebugViewColoursEachPixelByItsSource) {
+    const Image planar = render(sceneWithMapAbove(MirrorTechnique::Texture, ScreenFallback::Map));
+    StillSettings debug{kWidth, kHeight, 1};
+    debug.showScreenSpaceSources = true;
+    const Image map =
+        renderImage(sceneWithMapAbove(MirrorTechnique::ScreenSpace, ScreenFallback::Map), debug);
+    const Image background =
+        renderImage(sceneWithMapAbove(MirrorTechnique::ScreenSpace, ScreenFallback::Background), debug);
+    dump(map, "screen-space-sources-map");
+    dump(background, "screen-space-sources-background");
+    const std::vector<bool> mirror = mirrorPixels(floorScene(MirrorTechnique::ScreenSpace));
+    const glm::vec4 wall(0.8f, 0.8f, 0.75f, 1.0f);
+    int yellowPixels = 0, blue = 0, red = 0, wallPixels = 0, green = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            if (!mirror[static_cast<std::size_t>(y * kWidth + x)])
+                continue;
+            const glm::vec4 p = planar.at(x, y);
+            if (yellow(p)) {
+                ++yellowPixels;
+                blue += map.at(x, y).b > 0.8f && map.at(x, y).g < 0.2f ? 1 : 0;
+                red += background.at(x, y).r > 0.8f && background.at(x, y).g < 0.2f ? 1 : 0;
+            } else if (difference(p, wall) < 0.05f) {
+                ++wallPixels;
+                green += map.at(x, y).g > 0.8f && map.at(x, y).r < 0.2f ? 1 : 0;
+            }
+        }
+    ASSERT_GT(yellowPixels, 50);
+    ASSERT_GT(wallPixels, 200);
+    EXPECT_GE(double(blue), 0.95 * yellowPixels) << "off screen, the map: " << blue << " of " << yellowPixels;
+    EXPECT_GE(double(red), 0.95 * yellowPixels) << "or the background: " << red << " of " << yellowPixels;
+    EXPECT_GE(double(green), 0.9 * wallPixels) << "on screen, the image: " << green << " of " << wallPixels;
+}
+
+// The reflector traced in screen space: planned only for a sharp reflector the camera sees, with the
+// depth pyramid it shares with the screen-space mirrors; a rough one says why it reads its map alone; a
+// still counts where its pixels' reflections came from; its sources show in the debug view.
+TEST_F(ScreenSpaceMirror, TheReflectorIsTracedWhereItIsSharpAndSeen) {
+    FrameInput input = sceneWithMapAbove(MirrorTechnique::Texture, ScreenFallback::Map);
+    input.reflector->technique = ReflectorTechnique::ScreenSpace;
+    const Image image = render(input);
+    EXPECT_TRUE(allFinite(image));
+    const FrameReport& report = lastReport();
+    ASSERT_EQ(report.countRan(PassKind::ScreenDepth), 1u);
+    ASSERT_EQ(report.countRan(PassKind::ReflectorTrace), 1u);
+    for (const PassRun& run : report.ran) {
+        if (report.planned(run).kind == PassKind::ReflectorTrace) {
+            EXPECT_NE(run.outcome.find("pixels meet what the image shows"), std::string::npos) << run.outcome;
+        }
+    }
+    // The ball on a screen-space floor: a second pyramid, after the floor's trace, which holds the floor.
+    input.mirrors[0].technique = MirrorTechnique::ScreenSpace;
+    render(input);
+    EXPECT_EQ(lastReport().countRan(PassKind::ScreenDepth), 2u);
+    EXPECT_EQ(lastReport().countRan(PassKind::ReflectorTrace), 1u);
+    input.reflector->roughness = 0.3;
+    render(input);
+    EXPECT_EQ(lastReport().countRan(PassKind::ReflectorTrace), 0u);
+    const auto& skipped = lastReport().plan.skipped;
+    EXPECT_TRUE(std::any_of(skipped.begin(), skipped.end(), [](const SkippedEffect& s) {
+        return s.code == PlanReason::ReflectorTraceRough;
+    }));
+    input.reflector->roughness = 0.0;
+    input.reflector->technique = ReflectorTechnique::Map;
+    input.mirrors[0].technique = MirrorTechnique::Texture;
+    render(input);
+    EXPECT_EQ(lastReport().countRan(PassKind::ScreenDepth), 0u) << "nothing traces: no pyramid";
+}
+
+TEST_F(ScreenSpaceMirror, TheReflectorsTraceReplacesTheMapWhereTheImageShowsWhatItReflects) {
+    // The ball, close to the wall and the boxes, reflects them with the map's parallax error; traced, the
+    // reflection of what the image shows comes from the image. Where the trace meets nothing (the sky
+    // above, the yellow box off-screen) the map stays, bit for bit.
+    FrameInput input = sceneWithMapAbove(MirrorTechnique::Texture, ScreenFallback::Map);
+    // A bigger ball, nearer the camera, and no proxy: what it reflects of the image shows from the map
+    // at the directions seen from its centre.
+    input.reflector->world = glm::scale(glm::translate(glm::dmat4(1.0), {0.0, 0.7, 0.8}), glm::dvec3(0.7));
+    input.reflector->parallax.reset();
+    const Image map = render(input);
+    input.reflector->technique = ReflectorTechnique::ScreenSpace;
+    const Image traced = render(input);
+    StillSettings debug{kWidth, kHeight, 1};
+    debug.showScreenSpaceSources = true;
+    const Image sources = renderImage(input, debug);
+    dump(traced, "screen-space-reflector-traced");
+    dump(map, "screen-space-reflector-map");
+    dump(sources, "screen-space-reflector-sources");
+    int green = 0, blue = 0, changed = 0, keptWhereBlue = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const glm::vec4 s = sources.at(x, y);
+            const bool isGreen = s.g > 0.9f && s.r < 0.1f && s.b < 0.1f;
+            const bool isBlue = s.b > 0.99f && s.r < 0.01f && s.g < 0.01f; // confidence below 0.01
+            green += isGreen ? 1 : 0;
+            blue += isBlue ? 1 : 0;
+            if (isGreen)
+                changed += difference(map.at(x, y), traced.at(x, y)) > 0.0f ? 1 : 0;
+            if (isBlue)
+                keptWhereBlue += difference(map.at(x, y), traced.at(x, y)) <= 0.01f ? 1 : 0;
+        }
+    EXPECT_GT(green, 100) << "the ball's pixels that reflect what the image shows";
+    EXPECT_GT(blue, 100) << "the ball's pixels that reflect the sky and the box above";
+    EXPECT_GE(double(keptWhereBlue), 0.99 * blue) << "where the trace meets nothing, the map stays";
+    EXPECT_GT(changed, green / 4) << "the image's reflection is not the map's";
+}
+
+// The rest of the hard cases: a thin pole on the floor, a mirror a pixel wide, the camera inside the
+// reflector's proxy with the floor and the ball both traced, and the image resized between frames.
+TEST_F(ScreenSpaceMirror, ThinTinyInsideAndResizedStayFinite) {
+    FrameInput thin = floorScene(MirrorTechnique::ScreenSpace);
+    thin.items.push_back(
+        item("Pole", boxMesh(), placed({0.3, 1.0, 0.5}, {0.01, 1.0, 0.01}), emissive({0.9, 0.9, 0.9})));
+    EXPECT_TRUE(allFinite(render(thin))) << "thin pole";
+
+    FrameInput tiny = floorScene(MirrorTechnique::ScreenSpace);
+    tiny.mirrors[0].world = glm::scale(glm::translate(glm::dmat4(1.0), {0.0, 0.0, -2.0}), glm::dvec3(0.004));
+    EXPECT_TRUE(allFinite(render(tiny))) << "a mirror about a pixel wide";
+
+    FrameInput inside = sceneWithMapAbove(MirrorTechnique::ScreenSpace, ScreenFallback::Map);
+    inside.reflector->technique = ReflectorTechnique::ScreenSpace;
+    inside.camera.position = {0.0, 1.5, 2.0}; // within the proxy box
+    const Image within = render(inside);
+    EXPECT_TRUE(allFinite(within)) << "camera inside the proxy";
+    EXPECT_EQ(lastReport().countRan(PassKind::ReflectorTrace), 1u);
+
+    for (const auto& [width, height] :
+         {std::pair{kWidth, kHeight}, std::pair{97, 61}, std::pair{kWidth, kHeight}}) {
+        const Image image = renderImage(inside, width, height);
+        EXPECT_EQ(image.width, width);
+        EXPECT_TRUE(allFinite(image)) << width << "x" << height;
+    }
 }
 
 } // namespace

@@ -264,6 +264,12 @@ std::vector<Row> table() {
          "the camera's screen-space mirrors; the map's mirrors use the stencil technique"},
         {"Settings.screenThickness", "", [](FrameInput& f) { f.settings.screenThickness = 0.2; }, false,
          false, "the camera's screen-space mirrors; the map's mirrors use the stencil technique"},
+        {"Settings.screenFallback", "",
+         [](FrameInput& f) { f.settings.screenFallback = ScreenFallback::Background; }, false, false,
+         "what the camera's screen-space mirrors read where their rays miss, not what the map holds"},
+        {"Settings.screenResolution", "",
+         [](FrameInput& f) { f.settings.screenResolution = ScreenResolution::Half; }, false, false,
+         "the camera's screen-space mirrors; the map's mirrors use the stencil technique"},
         // Camera
         {"Camera.position", "",
          [](FrameInput& f) {
@@ -375,6 +381,9 @@ std::vector<Row> table() {
          "how deep the map's mirrors nest; not drawn by the shadow"},
         {"Reflector.roughness", "", [](FrameInput& f) { f.reflector->roughness = 0.4; }, false, false,
          "chooses a level of the pre-filtered chain, which holds every roughness"},
+        {"Reflector.technique", "",
+         [](FrameInput& f) { f.reflector->technique = ReflectorTechnique::ScreenSpace; }, false, false,
+         "how the camera's view reads the reflection, not what the map holds"},
         // ParallaxParams, on a reflector that has a box proxy
         {"ParallaxParams.shape", "",
          [](FrameInput& f) { f.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Sphere}; }, false,
