@@ -58,7 +58,7 @@ std::string familyTitle(Family family) {
     case Family::Glossy:
         return "Rough reflections: which approximation at which roughness";
     case Family::ScreenSpace:
-        return "Screen-space reflections against the planar techniques";
+        return "Screen-space reflections against the planar techniques and the map";
     case Family::Setting:
         return "Other settings";
     default:
@@ -104,9 +104,10 @@ std::string familyIntro(Family family) {
         return "Every planar mirror traced in the camera's image (screen space), with each setting of the "
                "trace varied from its default (steps through the depth pyramid, the thickness a surface is "
                "taken to have, half resolution, and the background alone as the fallback where the scene "
-               "has a reflector), beside the same mirrors drawn with the stencil and the texture technique. "
-               "The error maps show where tracing fails: what leaves the image, what hides behind an "
-               "object, thin objects.";
+               "has a reflector), beside the same mirrors drawn with the stencil and the texture technique; "
+               "in a scene without mirrors, a sharp reflector's map alone beside it traced in the image "
+               "first, at rising steps. The error maps show where tracing fails: what leaves the image, "
+               "what hides behind an object, thin objects, mirrors seen in mirrors.";
     case Family::Setting:
         return "Each setting declared with values to sweep, one series per setting, each value against the "
                "scene's reference, everything else as saved.";
