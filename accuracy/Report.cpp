@@ -105,8 +105,9 @@ std::string familyIntro(Family family) {
                "trace varied from its default (steps through the depth pyramid, the thickness a surface is "
                "taken to have, half resolution, and the background alone as the fallback where the scene "
                "has a reflector), beside the same mirrors drawn with the stencil and the texture technique; "
-               "in a scene without mirrors, a sharp reflector's map alone beside it traced in the image "
-               "first, at rising steps. The error maps show where tracing fails: what leaves the image, "
+               "in a scene without mirrors, the reflector's map alone beside it traced in the image first "
+               "(a cone when it is rough), at rising steps. The error maps show where tracing fails: what "
+               "leaves the image, "
                "what hides behind an object, thin objects, mirrors seen in mirrors.";
     case Family::Setting:
         return "Each setting declared with values to sweep, one series per setting, each value against the "

@@ -282,11 +282,11 @@ void planMirrors(Configurations& out, const render::FrameInput& scene, const Sce
     }
 }
 
-// A sharp reflector in a scene without mirrors: its map alone, then traced in screen space first at
-// rising steps (judged on its own pixels; with mirrors the family judges the mirrors' pixels, and the
-// reflector is left as the scene has it).
+// The reflector in a scene without mirrors: its map alone, then traced in screen space first at rising
+// steps, a cone for a rough one (judged on its own pixels; with mirrors the family judges the mirrors'
+// pixels, and the reflector is left as the scene has it).
 void planReflectorScreenSpace(Configurations& out, const SceneTraits& traits, const SweepOptions& options) {
-    if (!traits.reflector || traits.roughReflector)
+    if (!traits.reflector)
         return;
     Variation map;
     map.set(Part::Reflector, "technique", int(render::ReflectorTechnique::Map));

@@ -2,6 +2,8 @@
 // is taken to show, so that a lookup from a point away from the capture point finds the texel that shows
 // what its ray meets. The reflector's surface (reflector.frag) and the screen-space fallback
 // (screen_trace.frag) read it.
+#ifndef PARALLAX_GLSL
+#define PARALLAX_GLSL
 
 uniform int uParallax;          // 0 off, 1 sphere, 2 box
 uniform float uParallaxRadius;
@@ -26,3 +28,5 @@ vec4 parallaxHit(vec3 p, vec3 r) {
     float t = min(tFar.x, min(tFar.y, tFar.z));
     return t > 0.0 ? vec4(p + t * r, t) : vec4(r, 0.0);
 }
+
+#endif

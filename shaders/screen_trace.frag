@@ -13,7 +13,9 @@ void main() {
     vec3 p = vView;
     float eyeDistance = length(p);
     vec3 r = reflect(p / max(eyeDistance, 1e-30), normalize(uNormal));
-    Reflection reflection = traceReflection(p, p, r, eyeDistance);
+    // Outside every branch: the map's lookup takes derivatives of its direction. One sharp ray: a rough
+    // mirror's surface pass blurs the texture by the path lengths written with it.
+    Reflection reflection = traceReflection(p, p, r, eyeDistance, fallback(p, r, eyeDistance), 0.0);
     if (uShowSources != 0) {
         fragColor = vec4(sourceColour(reflection.confidence), 0.0);
         return;

@@ -9,11 +9,12 @@
 // one) or the background. The fallback fades in by the trace's confidence, towards the image's edges and
 // as the ray turns towards the camera, so that no seam marks the change.
 #include "radiance.glsl"
-#include "envmap_lookup.glsl"
-#include "parallax.glsl"
+#include "reflector_lookup.glsl"
 
 uniform sampler2D uDepthPyramid; // view depth, each level the minimum of the one below (R32F)
-uniform sampler2D uImage;        // the camera's linear colour, as every other pass left it
+uniform sampler2D uImage;        // the camera's linear colour, as every other pass left it; for a cone
+                                 // trace, with its pyramid of blurred levels (uImageLevels of them)
+uniform int uImageLevels;
 uniform int uLevels;
 uniform vec2 uSize;       // the image's pixels
 uniform mat4 uProjection; // view → clip
@@ -24,11 +25,6 @@ uniform vec3 uBackground;
 uniform float uFarPath; // the path length of the background (material.glsl's alpha for nothing hit)
 // The fallback: 0 the background, 1 the reflector's map (ReflectorPass::bindAsProbe sets the rest).
 uniform int uFallback;
-uniform samplerCube uEnvCube;
-uniform sampler2DArray uEnvArray;
-uniform int uEnvType;
-uniform vec4 uEnvLayout;
-uniform vec3 uEnvCentre;     // the map's capture point, camera-relative world space
 uniform mat3 uWorldFromView; // view space → camera-relative world space (a rotation)
 // 0: the reflection's radiance and path length; 1: where it came from, in colour (the debug view, and
 // the counts a still reports): green, met in the image; blue, the map; red, the background.
@@ -115,9 +111,23 @@ struct Reflection {
     vec3 missed;      // the fallback alone
 };
 
+// What the image shows where a ray met it, at `at` (pixels): the pixel itself for a sharp ray; for a cone
+// `spread` wide per unit of path (radians), the level of the blurred pyramid whose texels are as wide as
+// the cone is where it meets the image, `along` from its start and `depth` from the eye — how the image's
+// pyramid stands in for the glossy lobe, as Godot's and HDRP's rough screen-space reflections do.
+vec3 imageSeen(vec2 at, float spread, float along, float depth) {
+    if (spread <= 0.0)
+        return texelFetch(uImage, ivec2(at), 0).rgb;
+    float pixelsPerUnit = uProjection[1][1] * 0.5 * uSize.y / max(depth, uNear);
+    float lod = log2(max(spread * along * pixelsPerUnit, 1.0));
+    return textureLod(uImage, at / uSize, clamp(lod, 0.0, float(uImageLevels - 1))).rgb;
+}
+
 // The ray r (unit, view space) from the point p, which the eye sees eyeDistance away; the trace starts at
 // `origin` (p, or a little off a surface the image itself shows, so that the ray does not meet it).
-Reflection traceReflection(vec3 p, vec3 origin, vec3 r, float eyeDistance) {
+// `missed`: what shows where the image holds nothing (fallback(), or what the reflector's surface drew),
+// and its path length; `spread`: the cone's width per unit of path, 0 for one sharp ray.
+Reflection traceReflection(vec3 p, vec3 origin, vec3 r, float eyeDistance, vec4 missed, float spread) {
     // Far enough to leave the view; coming back towards the camera, only to just before its near plane.
     float reach = 1e4 * max(eyeDistance, 1.0);
     if (r.z > 1e-6)
@@ -130,16 +140,14 @@ Reflection traceReflection(vec3 p, vec3 origin, vec3 r, float eyeDistance) {
     Trace trace = Trace(false, 0.0, s0.xy);
     if (reach > 0.0 && length(d) * tEnd >= 1.0 && s0.z > 0.0)
         trace = traceImage(s0, s1, tEnd);
-    // Outside every branch: the map's lookup takes derivatives of its direction.
-    vec4 missed = fallback(p, r, eyeDistance);
     Reflection result = Reflection(missed.rgb, missed.a, 0.0, missed.rgb);
     if (trace.hit) {
         vec2 edge = min(trace.at, uSize - trace.at) / (0.05 * uSize.y);
         result.confidence = clamp(min(edge.x, edge.y), 0.0, 1.0) * clamp(1.0 - r.z / 0.35, 0.0, 1.0);
-        vec3 seen = texelFetch(uImage, ivec2(trace.at), 0).rgb;
-        result.colour = mix(missed.rgb, seen, result.confidence);
         // The point met, on the ray: perspective-correct along the screen segment.
         vec3 met = mix(origin * s0.z, q * s1.z, trace.t) / mix(s0.z, s1.z, trace.t);
+        vec3 seen = imageSeen(trace.at, spread, length(met - origin), -met.z);
+        result.colour = mix(missed.rgb, seen, result.confidence);
         if (result.confidence > 0.0)
             result.pathLength = min(eyeDistance + length(met - p), uFarPath);
     }

@@ -19,8 +19,9 @@ enum class ReflectorFill { Direct, Resampled };
 // When the map is rendered again: every frame, when something it sees changed, or once.
 enum class ReflectorUpdate { Always, OnChange, Once };
 enum class ParallaxShape { Sphere, Box };
-// How the reflection is drawn: the map alone, or traced in the camera's image first (a sharp reflector
-// seen directly), the map where the trace finds nothing.
+// How the reflection is drawn: the map alone, or traced in the camera's image first (a reflector seen
+// directly; a rough one as a cone read from the image's blurred pyramid), the map where the trace finds
+// nothing.
 enum class ReflectorTechnique { Map, ScreenSpace };
 static_assert(int(ReflectorMap::TennisBall) + 1 == names::kReflectorMaps.size(), "one name per value");
 static_assert(int(ReflectorFill::Resampled) + 1 == names::kReflectorFills.size(), "one name per value");

@@ -122,6 +122,8 @@ PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpa
         return runScreenDepth(pass, frame);
     case PassKind::ReflectorTrace:
         return runReflectorTrace(pass, frame);
+    case PassKind::ScreenColour:
+        return runScreenColour(pass, frame);
     }
     assert(false && "runPass(): not a pass kind");
     return {false, {}};

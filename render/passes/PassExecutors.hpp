@@ -91,6 +91,7 @@ struct FrameExecution {
     std::vector<std::optional<SkippedEffect>> hidden;
     std::vector<SkippedEffect> skipped;  // effects execution found it could not draw, in pass order
     bool screenDepthReady = false;       // the ScreenDepth pass drew the pyramid the traces read
+    bool screenColourReady = false;      // the ScreenColour pass copied the image and blurred its pyramid
     bool countScreenSpace = false;       // RenderOptions::countScreenSpace
     bool showScreenSpaceSources = false; // RenderOptions::showScreenSpaceSources
 };
@@ -136,6 +137,9 @@ PassResult runScreenTrace(const PlannedPass& pass, FrameExecution& frame, const 
 // The curved reflector traced in screen space (ReflectorTechnique::ScreenSpace): over what the main pass
 // drew of it, the image replaces the map's lookup where the trace meets it.
 PassResult runReflectorTrace(const PlannedPass& pass, FrameExecution& frame);
+// A rough reflector's trace reads the image blurred: a copy of it (FrameResources::screenImage) with its
+// mip chain, each level the box-filtered half of the one below.
+PassResult runScreenColour(const PlannedPass& pass, FrameExecution& frame);
 // The debug view (FrameExecution::showScreenSpaceSources): a screen-space mirror's pixels, over its surface
 // just drawn in the bound target, in the colour of where their reflection comes from, traced again at
 // full resolution.

@@ -229,27 +229,28 @@ bool ReflectorPass::bindAsProbe(const FrameInput& input, const gl::Program& p) c
     return true;
 }
 
-bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context) {
+int ReflectorPass::lookupOf(const FrameInput& input) const {
+    const double roughness = std::clamp(input.reflector->roughness, 0.0, 1.0);
+    if (!(roughness > 0.0))
+        return 0;
+    return input.settings.glossyFilter != GlossyFilter::Mip && hasChain(*input.reflector) ? 2 : 1;
+}
+
+int ReflectorPass::bindLookup(const FrameInput& input, const gl::Program& p) const {
     if (!input.reflector || !hasMap(*input.reflector))
-        return false;
-    const Reflector& r = *input.reflector;
-    const gl::Program& p = m_surface;
-    beginLitView(input, view, p, context);
-    const double roughness = std::clamp(r.roughness, 0.0, 1.0);
-    const bool chain = roughness > 0.0 && input.settings.glossyFilter != GlossyFilter::Mip && hasChain(r);
-    const int lookup = !(roughness > 0.0) ? 0 : chain ? 2 : 1; // reflector.frag's REFLECTOR_*
-    // The draw variant without the lookups it does not use (REFLECTOR_ROUGH).
-    setMaterial(r.material, p, context, "#define REFLECTOR_ROUGH " + std::to_string(lookup) + "\n");
-    p.set("uReflectivity", float(std::clamp(r.reflectivity, 0.0, 1.0)));
-    p.set("uFresnel", r.fresnel ? 1 : 0);
-    const envmap::EnvironmentCapture& map = *m_capture;
+        return -1;
+    const double roughness = std::clamp(input.reflector->roughness, 0.0, 1.0);
+    const int lookup = lookupOf(input);
+    const bool chain = lookup == 2;
+    p.use();
     setMapUniforms(input, p);
     p.set("uEnvMapFromWorld", glm::mat3(1.0f));
     // A rough reflector reads one texture at an explicit LOD: the pre-filtered chain (same target and
     // layout as the map) at the roughness that covers the lobe, narrowed by the proxy's distance, and the
-    // pixel's footprint (reflector.frag's chainLod), or, for Mip (or without a chain), the map's own mip
-    // chain at roughness × (its levels − 1), box-filtered levels standing in for the lobe. Roughness 0
+    // pixel's footprint (reflector_lookup.glsl's chainLod), or, for Mip (or without a chain), the map's own
+    // mip chain at roughness × (its levels − 1), box-filtered levels standing in for the lobe. Roughness 0
     // takes the sharp lookup, as before roughness existed.
+    const envmap::EnvironmentCapture& map = *m_capture;
     GLuint texture = map.texture();
     float lod = 0.0f;
     if (roughness > 0.0) {
@@ -267,6 +268,20 @@ bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, 
     glActiveTexture(GL_TEXTURE0 + (map.target() == GL_TEXTURE_CUBE_MAP ? kEnvCubeUnit : kEnvArrayUnit));
     glBindTexture(map.target(), texture);
     glActiveTexture(GL_TEXTURE0);
+    return lookup;
+}
+
+bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context) {
+    if (!input.reflector || !hasMap(*input.reflector))
+        return false;
+    const Reflector& r = *input.reflector;
+    const gl::Program& p = m_surface;
+    beginLitView(input, view, p, context);
+    // The draw variant without the lookups it does not use (REFLECTOR_ROUGH).
+    setMaterial(r.material, p, context, "#define REFLECTOR_ROUGH " + std::to_string(lookupOf(input)) + "\n");
+    p.set("uReflectivity", float(std::clamp(r.reflectivity, 0.0, 1.0)));
+    p.set("uFresnel", r.fresnel ? 1 : 0);
+    bindLookup(input, p);
     drawLitMesh(r.mesh, r.world, input, p, context);
     return true;
 }

@@ -69,6 +69,12 @@ public:
     // screen-space fallback); false (nothing bound) if there is no map.
     bool bindAsProbe(const FrameInput& input, const gl::Program& p) const;
 
+    // Binds what the reflector's surface reads (the sharp map, its mip chain or the pre-filtered chain, by
+    // its roughness and the glossy filter) and sets `p`'s uniforms for it (shaders/reflector_lookup.glsl),
+    // so that `p` looks the map up exactly as the surface does; returns the lookup (REFLECTOR_ROUGH's
+    // values: 0 sharp, 1 the map's mip chain, 2 the pre-filtered chain), -1 (nothing bound) without a map.
+    int bindLookup(const FrameInput& input, const gl::Program& p) const;
+
     // GPU memory of the reflector's map if one made with its current settings exists, else 0.
     std::size_t mapBytes(const Reflector& reflector) const {
         return hasMap(reflector) ? m_capture->bytes() + (m_prefilter ? m_prefilter->bytes() : 0) : 0;
@@ -85,6 +91,8 @@ public:
 private:
     // The uniforms every lookup of the map needs: its type, layout, capture point and parallax proxy.
     void setMapUniforms(const FrameInput& input, const gl::Program& p) const;
+    // The lookup the reflector's surface takes (reflector_lookup.glsl's REFLECTOR_ROUGH values).
+    int lookupOf(const FrameInput& input) const;
 
     std::optional<envmap::EnvironmentCapture> m_capture;
     std::uint64_t m_settingsKey = 0; // of the map last rendered into m_capture; 0: not rendered yet

@@ -384,6 +384,37 @@ SourceCounts countReflectorSources(FrameExecution& frame, const Reflector& refle
 
 } // namespace
 
+// Copies the camera's image into FrameResources::screenImage, with its mip chain when `blurred`; the
+// error, if the copy could not be made.
+base::Status copyImage(FrameExecution& frame, bool blurred) {
+    FrameResources& r = frame.resources;
+    const int width = frame.target.width, height = frame.target.height;
+    if (base::Status made = r.screenImage.ensure(width, height, GL_RGBA16F, blurred); !made)
+        return made;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.linear.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.screenImage.framebuffer());
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (blurred) {
+        glBindTexture(GL_TEXTURE_2D, r.screenImage.color());
+        glGenerateMipmap(GL_TEXTURE_2D); // trilinear lookups (RenderTexture's filters when mipmapped)
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    return base::Done{};
+}
+
+PassResult runScreenColour(const PlannedPass& pass, FrameExecution& frame) {
+    if (base::Status copied = copyImage(frame, true); !copied) {
+        frame.warnings.push_back(
+            "reflector " + base::quoted(pass.details.node) +
+            ": no blurred copy of the image, its trace reads it sharp: " + copied.error());
+        return {true, "no copy of the image: " + copied.error()};
+    }
+    frame.screenColourReady = true;
+    const gl::RenderTexture& image = frame.resources.screenImage;
+    return {true, std::to_string(image.levels()) + " levels from " + std::to_string(image.width()) + "×" +
+                      std::to_string(image.height())};
+}
+
 PassResult runReflectorTrace(const PlannedPass& pass, FrameExecution& frame) {
     FrameResources& r = frame.resources;
     const FrameInput& input = frame.input;
@@ -392,22 +423,23 @@ PassResult runReflectorTrace(const PlannedPass& pass, FrameExecution& frame) {
     const Reflector& reflector = *input.reflector;
     if (!r.reflector.hasMap(reflector))
         return {true, "no map: the reflector is drawn without one, and nothing is traced over it"};
-    if (base::Status made = r.screenImage.ensure(frame.target.width, frame.target.height, GL_RGBA16F, false);
-        !made) {
-        frame.warnings.push_back("reflector " + base::quoted(pass.target) +
-                                 ": not traced in screen space, no copy of the image: " + made.error());
-        return {true, "no copy of the image: the map alone"};
+    // The image the rays read, copied (the trace draws into the camera's buffer), unless the ScreenColour
+    // pass has just copied and blurred it.
+    if (!frame.screenColourReady) {
+        if (base::Status copied = copyImage(frame, false); !copied) {
+            frame.warnings.push_back("reflector " + base::quoted(pass.target) +
+                                     ": not traced in screen space, no copy of the image: " + copied.error());
+            return {true, "no copy of the image: the map alone"};
+        }
     }
-    // The image the rays read, copied: the trace draws into the camera's buffer.
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.linear.framebuffer());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.screenImage.framebuffer());
-    glBlitFramebuffer(0, 0, frame.target.width, frame.target.height, 0, 0, frame.target.width,
-                      frame.target.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     const ViewSpace space = cameraSpace(frame);
     bindWrites(pass.writes, frame, space);
     const gl::Program& p = r.reflectorTraceProgram;
     setImageUniforms(p, frame, space, ScreenFallback::Map);
     setReflectorUniforms(p, frame, space, reflector);
+    // What the surface drew, looked up alike; a rough reflector without the blurred image traces sharp.
+    r.reflector.bindLookup(input, p);
+    p.set("uImageLevels", frame.screenColourReady ? r.screenImage.levels() : 1);
     p.set("uShowSources", 0);
     p.use();
     glActiveTexture(GL_TEXTURE0);

@@ -21,6 +21,8 @@ namespace speculum::render {
 // only when the map changed or the chain's sample count did).
 // ScreenDepth: the camera's view depth and its pyramid of minima, which screen-space mirrors trace
 // against (runs once, before the first of their Mirror passes, only when one is seen).
+// ScreenColour: a copy of the camera's image with its pyramid of blurred levels, which a rough reflector's
+// screen-space trace reads (runs just before that trace, only for a rough reflector traced in screen space).
 enum class PassKind {
     Shadow,
     MirrorMask,
@@ -32,7 +34,8 @@ enum class PassKind {
     Guides,
     Composite,
     ScreenDepth,
-    ReflectorTrace
+    ReflectorTrace,
+    ScreenColour
 };
 
 std::string_view toString(PassKind kind);

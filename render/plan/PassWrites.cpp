@@ -29,7 +29,8 @@ PassWrites cameraWrites(const FrameInput& input, const FramePlan& plan, const Pl
     case PassKind::Shadow:
     case PassKind::Envmap:
     case PassKind::Prefilter:
-    case PassKind::ScreenDepth: // its own depth texture and pyramid
+    case PassKind::ScreenDepth:  // its own depth texture and pyramid
+    case PassKind::ScreenColour: // its own copy of the image and pyramid
         writes.target = PassTarget::OwnMap;
         break;
     case PassKind::Main:
@@ -112,6 +113,7 @@ PassWrites envmapWrites(const EnvmapPlan& map, const PlannedPass& pass) {
     case PassKind::Guides:
     case PassKind::Composite:
     case PassKind::ScreenDepth:
+    case PassKind::ScreenColour:
     case PassKind::ReflectorTrace:
         break;
     }

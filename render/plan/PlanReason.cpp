@@ -328,16 +328,21 @@ std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
 
 std::string reflectorTraceSentence(PlanReason code, const ReasonDetails& d) {
     switch (code) {
-    case PlanReason::ReflectorTraceRough:
-        return "screen-space trace not drawn: the reflector is rough (roughness " +
-               rounded(d.roughness * 100) + "%) and the trace follows one sharp ray; it reads its map alone";
+    case PlanReason::ScreenColourPyramid:
+        return "copies the camera's image once every pass has drawn into it, and halves it level by level "
+               "(a box filter): the blurred pyramid that " +
+               d.node + "'s rough trace (roughness " + rounded(d.roughness * 100) +
+               "%) reads where a ray meets the image, at the level as wide as the lobe is there";
     case PlanReason::ReflectorTraceNotSeenDirectly:
         return "screen-space trace not needed: the reflector is seen only in mirrors, whose reflected views "
                "the camera's image does not hold; it reads its map there";
     default:
         return "traces the reflector's reflection through the camera's image against its depth pyramid, "
                "over what the main pass drew of it: where a ray meets what the image shows, that replaces "
-               "the map's lookup and its parallax error; elsewhere the map stays";
+               "the map's lookup and its parallax error; elsewhere the map stays" +
+               std::string(d.roughness > 0.0 ? " (rough: a cone, read from the image's blurred pyramid "
+                                               "against the map's rough lookup)"
+                                             : "");
     }
 }
 
@@ -465,7 +470,7 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::PrefilterReused, "prefilter-reused", prefilterSentence},
     {PlanReason::PrefilterNoMap, "prefilter-no-map", prefilterSentence},
     {PlanReason::ReflectorScreenTrace, "reflector-screen-trace", reflectorTraceSentence},
-    {PlanReason::ReflectorTraceRough, "reflector-trace-rough", reflectorTraceSentence},
+    {PlanReason::ScreenColourPyramid, "screen-colour-pyramid", reflectorTraceSentence},
     {PlanReason::ReflectorTraceNotSeenDirectly, "reflector-trace-not-seen-directly", reflectorTraceSentence},
     {PlanReason::PreviewScaled, "preview-scaled", previewSentence},
     {PlanReason::PreviewMirrorDepth, "preview-mirror-depth", previewSentence},
@@ -507,7 +512,6 @@ bool dropsWhatTheSceneAsks(PlanReason code) {
     case PlanReason::EnvmapDoesNotFit:
     case PlanReason::EnvmapNotAllocated:
     case PlanReason::PrefilterNoMap:
-    case PlanReason::ReflectorTraceRough:
         return true;
     case PlanReason::ShadowsOff:
     case PlanReason::NoShadowCasters:
@@ -556,6 +560,7 @@ bool dropsWhatTheSceneAsks(PlanReason code) {
     case PlanReason::PrefilterMipFilter:
     case PlanReason::PrefilterReused:
     case PlanReason::ReflectorScreenTrace:
+    case PlanReason::ScreenColourPyramid:
     case PlanReason::ReflectorTraceNotSeenDirectly:
     case PlanReason::PreviewScaled:
     case PlanReason::PreviewMirrorDepth:

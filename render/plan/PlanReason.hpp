@@ -82,8 +82,8 @@ enum class PlanReason {
     PrefilterReused,
     PrefilterNoMap, // skip while running: the map could not be allocated or drawn
     // The reflector traced in screen space first (ReflectorTechnique::ScreenSpace).
-    ReflectorScreenTrace,          // pass
-    ReflectorTraceRough,           // skip: a rough reflector reads its map alone (no cone trace)
+    ReflectorScreenTrace, // pass
+    ScreenColourPyramid,  // the camera's image and its blurred pyramid, for a rough reflector's trace
     ReflectorTraceNotSeenDirectly, // skip: seen only in mirrors, whose views the image does not hold
     // What a preview (RenderOptions::preview) gives up, each a skip whose sentence starts "preview: ".
     PreviewScaled,        // details.scale of the output's width and height

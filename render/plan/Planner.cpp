@@ -38,6 +38,8 @@ std::string_view toString(PassKind kind) {
         return "composite";
     case PassKind::ScreenDepth:
         return "screen-depth";
+    case PassKind::ScreenColour:
+        return "screen-colour";
     case PassKind::ReflectorTrace:
         return "reflector-trace";
     }

@@ -328,11 +328,6 @@ void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, F
         plan.skipped.push_back({reflector.name, PlanReason::ReflectorTraceNotSeenDirectly});
         return;
     }
-    if (reflector.roughness > 0.0) {
-        plan.skipped.push_back(
-            {reflector.name, PlanReason::ReflectorTraceRough, {.roughness = reflector.roughness}});
-        return;
-    }
     // The mirrors' pyramid leaves the screen-space mirrors out (none of their reflections is drawn when
     // they trace); by now they are, and the reflector's rays meet them: a pyramid of its own then.
     const bool screenSpaceMirrors =
@@ -343,10 +338,21 @@ void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, F
     pyramid.details.node = "for " + reflector.name;
     pyramid.details.screenSpaceMirrorsInDepth = screenSpaceMirrors;
     plan.passes.push_back(std::move(pyramid));
+    // A rough reflector's cone reads the image blurred: a pyramid of it, once everything is drawn.
+    const double roughness = std::clamp(reflector.roughness, 0.0, 1.0);
+    if (roughness > 0.0) {
+        PlannedPass colour;
+        colour.kind = PassKind::ScreenColour;
+        colour.code = PlanReason::ScreenColourPyramid;
+        colour.details.node = reflector.name;
+        colour.details.roughness = roughness;
+        plan.passes.push_back(std::move(colour));
+    }
     PlannedPass trace;
     trace.kind = PassKind::ReflectorTrace;
     trace.target = reflector.name;
     trace.code = PlanReason::ReflectorScreenTrace;
+    trace.details.roughness = roughness;
     plan.passes.push_back(std::move(trace));
 }
 

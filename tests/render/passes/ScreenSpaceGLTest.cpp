@@ -375,10 +375,10 @@ TEST_F(ScreenSpaceMirror, TheDebugViewColoursEachPixelByItsSource) {
     EXPECT_GE(double(green), 0.9 * wallPixels) << "on screen, the image: " << green << " of " << wallPixels;
 }
 
-// The reflector traced in screen space: planned only for a sharp reflector the camera sees, with the
-// depth pyramid it shares with the screen-space mirrors; a rough one says why it reads its map alone; a
-// still counts where its pixels' reflections came from; its sources show in the debug view.
-TEST_F(ScreenSpaceMirror, TheReflectorIsTracedWhereItIsSharpAndSeen) {
+// The reflector traced in screen space: planned only for a reflector the camera sees, with the depth
+// pyramid it shares with the screen-space mirrors; a rough one with the image's blurred pyramid just before
+// its trace; a still counts where its pixels' reflections came from; its sources show in the debug view.
+TEST_F(ScreenSpaceMirror, TheReflectorIsTracedWhereItIsSeenAndBlursTheImageWhenRough) {
     FrameInput input = sceneWithMapAbove(MirrorTechnique::Texture, ScreenFallback::Map);
     input.reflector->technique = ReflectorTechnique::ScreenSpace;
     const Image image = render(input);
@@ -396,13 +396,21 @@ TEST_F(ScreenSpaceMirror, TheReflectorIsTracedWhereItIsSharpAndSeen) {
     render(input);
     EXPECT_EQ(lastReport().countRan(PassKind::ScreenDepth), 2u);
     EXPECT_EQ(lastReport().countRan(PassKind::ReflectorTrace), 1u);
+    // Rough: the image's blurred pyramid runs too, after everything else that draws into it, just before
+    // the trace that reads it; a sharp reflector runs none.
+    EXPECT_EQ(lastReport().countRan(PassKind::ScreenColour), 0u);
     input.reflector->roughness = 0.3;
     render(input);
-    EXPECT_EQ(lastReport().countRan(PassKind::ReflectorTrace), 0u);
-    const auto& skipped = lastReport().plan.skipped;
-    EXPECT_TRUE(std::any_of(skipped.begin(), skipped.end(), [](const SkippedEffect& s) {
-        return s.code == PlanReason::ReflectorTraceRough;
-    }));
+    EXPECT_EQ(lastReport().countRan(PassKind::ReflectorTrace), 1u);
+    ASSERT_EQ(lastReport().countRan(PassKind::ScreenColour), 1u);
+    std::vector<PassKind> order;
+    for (const PassRun& run : lastReport().ran)
+        order.push_back(lastReport().planned(run).kind);
+    const auto colour = std::find(order.begin(), order.end(), PassKind::ScreenColour);
+    const auto mirrorPasses = std::find(order.begin(), order.end(), PassKind::MirrorSurface);
+    ASSERT_NE(colour, order.end());
+    EXPECT_EQ(*std::next(colour), PassKind::ReflectorTrace);
+    EXPECT_LT(mirrorPasses - order.begin(), colour - order.begin());
     input.reflector->roughness = 0.0;
     input.reflector->technique = ReflectorTechnique::Map;
     input.mirrors[0].technique = MirrorTechnique::Texture;
@@ -449,7 +457,7 @@ TEST_F(ScreenSpaceMirror, TheReflectorsTraceReplacesTheMapWhereTheImageShowsWhat
 
 // The rest of the hard cases: a thin pole on the floor, a mirror a pixel wide, the camera inside the
 // reflector's proxy with the floor and the ball both traced, and the image resized between frames.
-TEST_F(ScreenSpaceMirror, ThinTinyInsideAndResizedStayFinite) {
+TEST_F(ScreenSpaceMirror, ThinTinyInsideRoughAndResizedStayFinite) {
     FrameInput thin = floorScene(MirrorTechnique::ScreenSpace);
     thin.items.push_back(
         item("Pole", boxMesh(), placed({0.3, 1.0, 0.5}, {0.01, 1.0, 0.01}), emissive({0.9, 0.9, 0.9})));
@@ -466,6 +474,12 @@ TEST_F(ScreenSpaceMirror, ThinTinyInsideAndResizedStayFinite) {
     EXPECT_TRUE(allFinite(within)) << "camera inside the proxy";
     EXPECT_EQ(lastReport().countRan(PassKind::ReflectorTrace), 1u);
 
+    // Rough, the cone read from the blurred image, with the far plane at 1e6 (cones that reach far, levels
+    // clamped), and the pyramid remade at each size below.
+    inside.reflector->roughness = 0.4;
+    inside.camera.far = 1e6;
+    EXPECT_TRUE(allFinite(render(inside))) << "rough, far plane at 1e6";
+    EXPECT_EQ(lastReport().countRan(PassKind::ScreenColour), 1u);
     for (const auto& [width, height] :
          {std::pair{kWidth, kHeight}, std::pair{97, 61}, std::pair{kWidth, kHeight}}) {
         const Image image = renderImage(inside, width, height);

@@ -83,6 +83,29 @@ TEST(ReflectorPlanner, EnvmapRunsAfterShadowsAndBeforeTheMainPass) {
               "cube map (6 faces of 256×256); the reflector is seen directly; no map yet");
 }
 
+// Traced in screen space, a sharp reflector needs the depth pyramid and its trace after the main pass; a
+// rough one also needs the image's blurred pyramid, just before the trace, and each says why.
+TEST(ReflectorPlanner, ARoughReflectorTracedInScreenSpaceBlursTheImageFirst) {
+    FrameInput input = chromeScene();
+    input.reflector->technique = ReflectorTechnique::ScreenSpace;
+    EXPECT_EQ(kinds(planFrame(input, {})),
+              (std::vector{PassKind::Shadow, PassKind::Envmap, PassKind::Main, PassKind::ScreenDepth,
+                           PassKind::ReflectorTrace, PassKind::Composite}));
+    input.reflector->roughness = 0.3;
+    const FramePlan rough = planFrame(input, {});
+    EXPECT_EQ(kinds(rough), (std::vector{PassKind::Shadow, PassKind::Envmap, PassKind::Prefilter,
+                                         PassKind::Main, PassKind::ScreenDepth, PassKind::ScreenColour,
+                                         PassKind::ReflectorTrace, PassKind::Composite}));
+    EXPECT_TRUE(rough.skipped.empty());
+    const PlannedPass& colour = rough.passes[5];
+    EXPECT_EQ(colour.code, PlanReason::ScreenColourPyramid);
+    EXPECT_EQ(toString(colour.code), "screen-colour-pyramid");
+    EXPECT_NE(colour.reason().find("Ball's rough trace (roughness 30%)"), std::string::npos)
+        << colour.reason();
+    EXPECT_NE(rough.passes[6].reason().find("rough: a cone"), std::string::npos) << rough.passes[6].reason();
+    EXPECT_EQ(toString(PassKind::ScreenColour), "screen-colour");
+}
+
 TEST(ReflectorPlanner, NoEnvmapWhenTheReflectorIsOutsideTheView) {
     FrameInput input = chromeScene();
     input.camera.target = {0.0, 0.0, 10.0}; // looking away
