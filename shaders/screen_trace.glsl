@@ -6,8 +6,9 @@
 // the thickness. Where it leaves the image, comes back towards the camera, passes behind everything it
 // crosses or runs out of steps, the image holds nothing it sees: the fallback shows, the curved
 // reflector's environment map looked up as a probe from the point (through its parallax proxy when it has
-// one) or the background. The fallback fades in by the trace's confidence, towards the image's edges and
-// as the ray turns towards the camera, so that no seam marks the change.
+// one) or the background. The fallback fades in by the trace's confidence, towards the image's edges, as
+// the ray turns towards the camera and as it passes further behind what it met, so that no seam marks the
+// change.
 #include "radiance.glsl"
 #include "reflector_lookup.glsl"
 
@@ -49,14 +50,15 @@ float leaves(float a, float d, float size) {
 
 struct Trace {
     bool hit;
-    float t;  // along the screen segment
-    vec2 at;  // pixels
+    float t;      // along the screen segment
+    vec2 at;      // pixels
+    float behind; // how far behind the surface met the ray passes there, a share of the thickness (≤ 1)
 };
 
 Trace traceImage(vec3 s0, vec3 s1, float tEnd) {
     vec2 d = s1.xy - s0.xy;
     float perPixel = 1.0 / max(length(d), 1e-6);
-    Trace result = Trace(false, 0.0, s0.xy);
+    Trace result = Trace(false, 0.0, s0.xy, 0.0);
     float t = 0.5 * perPixel;
     int level = 0;
     for (int i = 0; i < uSteps && t < tEnd; ++i) {
@@ -79,7 +81,7 @@ Trace traceImage(vec3 s0, vec3 s1, float tEnd) {
         } else if (level > 0) {
             --level;
         } else if (min(depthIn, depthOut) <= surface * (1.0 + uThickness)) {
-            result = Trace(true, t, at);
+            result = Trace(true, t, at, (min(depthIn, depthOut) - surface) / (surface * uThickness));
             break;
         } else { // behind the surface by more than its thickness: the ray passes behind it
             t = tExit + 0.02 * perPixel;
@@ -137,13 +139,17 @@ Reflection traceReflection(vec3 p, vec3 origin, vec3 r, float eyeDistance, vec4 
     vec3 s1 = toScreen(q);
     vec2 d = s1.xy - s0.xy;
     float tEnd = min(1.0, min(leaves(s0.x, d.x, uSize.x), leaves(s0.y, d.y, uSize.y)));
-    Trace trace = Trace(false, 0.0, s0.xy);
+    Trace trace = Trace(false, 0.0, s0.xy, 0.0);
     if (reach > 0.0 && length(d) * tEnd >= 1.0 && s0.z > 0.0)
         trace = traceImage(s0, s1, tEnd);
     Reflection result = Reflection(missed.rgb, missed.a, 0.0, missed.rgb);
     if (trace.hit) {
         vec2 edge = min(trace.at, uSize - trace.at) / (0.05 * uSize.y);
-        result.confidence = clamp(min(edge.x, edge.y), 0.0, 1.0) * clamp(1.0 - r.z / 0.35, 0.0, 1.0);
+        // Less sure towards the image's edges, as the ray turns towards the camera (it meets the backs of
+        // things, which the image does not show), and where it passes behind what it met by more than half
+        // the thickness (it may be passing behind a thin object rather than meeting it).
+        result.confidence = clamp(min(edge.x, edge.y), 0.0, 1.0) * clamp(1.0 - r.z / 0.35, 0.0, 1.0) *
+                            clamp(2.0 - 2.0 * trace.behind, 0.0, 1.0);
         // The point met, on the ray: perspective-correct along the screen segment.
         vec3 met = mix(origin * s0.z, q * s1.z, trace.t) / mix(s0.z, s1.z, trace.t);
         vec3 seen = imageSeen(trace.at, spread, length(met - origin), -met.z);

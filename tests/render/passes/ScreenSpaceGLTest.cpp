@@ -375,6 +375,37 @@ TEST_F(ScreenSpaceMirror, TheDebugViewColoursEachPixelByItsSource) {
     EXPECT_GE(double(green), 0.9 * wallPixels) << "on screen, the image: " << green << " of " << wallPixels;
 }
 
+// A ray that meets the image only by passing behind what it crosses, by more than half the thickness, is
+// not sure it met it: its confidence fades towards the fallback (the background here) as it passes
+// deeper. A box floating over the floor: the rays from the floor seen under it and behind it pass behind
+// it; the thicker surfaces are taken to be, the more of them "meet" it, blended. With no fade there would
+// be no blend there at any thickness.
+TEST_F(ScreenSpaceMirror, AHitFarBehindWhatItCrossesFadesIntoTheFallback) {
+    auto blended = [&](double thickness) {
+        FrameInput input = floorScene(MirrorTechnique::ScreenSpace);
+        input.items.push_back(item("Floating", boxMesh(), placed({0.0, 1.0, -1.8}, {0.6, 0.3, 0.3}),
+                                   emissive({0.2, 0.4, 0.9})));
+        input.settings.screenThickness = thickness;
+        StillSettings debug{kWidth, kHeight, 1};
+        debug.showScreenSpaceSources = true;
+        const Image sources = renderImage(input, debug);
+        dump(sources, "screen-space-thickness-" + std::to_string(int(thickness * 100)));
+        const std::vector<bool> mirror = mirrorPixels(input);
+        int count = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                const glm::vec4 p = sources.at(x, y);
+                if (mirror[static_cast<std::size_t>(y * kWidth + x)] && p.g > 0.1f && p.g < 0.9f)
+                    ++count;
+                EXPECT_TRUE(std::isfinite(p.r) && std::isfinite(p.g));
+            }
+        return count;
+    };
+    const int thin = blended(0.01), thick = blended(0.3);
+    std::printf("[ measured ] blended sources: %d pixels at thickness 0.01, %d at 0.3\n", thin, thick);
+    EXPECT_GE(thick, thin + 20);
+}
+
 // The reflector traced in screen space: planned only for a reflector the camera sees, with the depth
 // pyramid it shares with the screen-space mirrors; a rough one with the image's blurred pyramid just before
 // its trace; a still counts where its pixels' reflections came from; its sources show in the debug view.
