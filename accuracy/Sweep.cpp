@@ -36,7 +36,8 @@ std::string techniqueName(MirrorTechnique t) {
     return std::string(render::names::fileName(render::names::kMirrorTechniques, t));
 }
 
-// The map methods the envmap family compares: the cube, and each non-linear map with each fill.
+// The map methods the envmap family compares: the cube, each warpable map with each fill, and the
+// octahedral map (always resampled).
 struct MapMethod {
     ReflectorMap map;
     ReflectorFill fill;
@@ -45,14 +46,15 @@ const std::vector<MapMethod> kMethods = {{ReflectorMap::Cube, ReflectorFill::Res
                                          {ReflectorMap::DualParaboloid, ReflectorFill::Direct},
                                          {ReflectorMap::DualParaboloid, ReflectorFill::Resampled},
                                          {ReflectorMap::TennisBall, ReflectorFill::Direct},
-                                         {ReflectorMap::TennisBall, ReflectorFill::Resampled}};
+                                         {ReflectorMap::TennisBall, ReflectorFill::Resampled},
+                                         {ReflectorMap::Octahedral, ReflectorFill::Resampled}};
 
 std::string methodName(const MapMethod& m) {
-    return m.map == ReflectorMap::Cube ? mapName(m.map) : mapName(m.map) + " " + fillName(m.fill);
+    return !render::warpable(m.map) ? mapName(m.map) : mapName(m.map) + " " + fillName(m.fill);
 }
 
 std::string methodId(const MapMethod& m) {
-    return m.map == ReflectorMap::Cube ? mapName(m.map) : mapName(m.map) + "-" + fillName(m.fill);
+    return !render::warpable(m.map) ? mapName(m.map) : mapName(m.map) + "-" + fillName(m.fill);
 }
 
 int firstShadowPcf(const render::FrameInput& scene) {

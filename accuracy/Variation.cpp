@@ -319,7 +319,7 @@ Settings effectiveSettings(const render::FrameInput& applied, const std::optiona
     if (reflector) {
         add(Part::Reflector, "map");
         add(Part::Reflector, "resolution");
-        if (applied.reflector->map != render::ReflectorMap::Cube) // the cube has no fill to choose
+        if (render::warpable(applied.reflector->map)) // the cube and the octahedron have no fill to choose
             add(Part::Reflector, "fill");
         s.emplace_back("parallax", applied.reflector->parallax ? "on" : "off");
     }

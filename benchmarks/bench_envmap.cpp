@@ -107,8 +107,9 @@ double median(std::vector<double> v) {
 std::string key(ReflectorMap map, ReflectorFill fill, int n) {
     const char* m = map == ReflectorMap::Cube             ? "cube"
                     : map == ReflectorMap::DualParaboloid ? "paraboloid"
-                                                          : "tennis";
-    const char* f = map == ReflectorMap::Cube ? "-" : fill == ReflectorFill::Direct ? "direct" : "resampled";
+                    : map == ReflectorMap::TennisBall     ? "tennis"
+                                                          : "octahedral";
+    const char* f = !warpable(map) ? "-" : fill == ReflectorFill::Direct ? "direct" : "resampled";
     return std::string(m) + "/" + f + "/" + std::to_string(n);
 }
 
@@ -173,6 +174,9 @@ void BM_TennisBallDirect(benchmark::State& s) {
 void BM_TennisBallResampled(benchmark::State& s) {
     update(s, ReflectorMap::TennisBall, ReflectorFill::Resampled);
 }
+void BM_Octahedral(benchmark::State& s) {
+    update(s, ReflectorMap::Octahedral, ReflectorFill::Resampled);
+}
 
 #define ENVMAP_BENCHMARK(fn)                                                                                 \
     BENCHMARK(fn)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->MinTime(1.0)->UseRealTime()
@@ -181,6 +185,7 @@ ENVMAP_BENCHMARK(BM_ParaboloidDirect);
 ENVMAP_BENCHMARK(BM_ParaboloidResampled);
 ENVMAP_BENCHMARK(BM_TennisBallDirect);
 ENVMAP_BENCHMARK(BM_TennisBallResampled);
+ENVMAP_BENCHMARK(BM_Octahedral);
 
 } // namespace
 
@@ -194,7 +199,8 @@ int main(int argc, char** argv) {
         {ReflectorMap::DualParaboloid, ReflectorFill::Direct},
         {ReflectorMap::DualParaboloid, ReflectorFill::Resampled},
         {ReflectorMap::TennisBall, ReflectorFill::Direct},
-        {ReflectorMap::TennisBall, ReflectorFill::Resampled}};
+        {ReflectorMap::TennisBall, ReflectorFill::Resampled},
+        {ReflectorMap::Octahedral, ReflectorFill::Resampled}};
     auto table = [&](const char* title, const std::map<std::string, double>& ms) {
         std::printf("\n%s\n", title);
         std::printf("  %-22s %10s %10s %10s\n", "map / fill", "n=128", "n=256", "n=512");
@@ -219,7 +225,8 @@ int main(int argc, char** argv) {
     table("Envmap pass, timer-query ms (wall time on llvmpipe: moves with the machine's load):", g_timerMs);
 
     std::printf("\nTexel solid angle, largest / smallest (used texels):\n");
-    for (auto type : {envmap::MapType::Cube, envmap::MapType::DualParaboloid, envmap::MapType::TennisBall})
+    for (auto type : {envmap::MapType::Cube, envmap::MapType::DualParaboloid, envmap::MapType::TennisBall,
+                      envmap::MapType::Octahedral})
         for (int n : {128, 256, 512})
             std::printf("  %s\n", envmap::describe(envmap::solidAngleStats(type, n)).c_str());
 

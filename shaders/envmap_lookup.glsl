@@ -3,7 +3,8 @@
 // (0 is the reference's "component 1"); uv are nominal, in [0,1]² inside a component.
 //
 // Binding: a cube map is a samplerCube (with GL_TEXTURE_CUBE_MAP_SEAMLESS on); the two components of a
-// dual-paraboloid or tennis-ball map are the two layers of one sampler2DArray, and `mapLayout` is
+// dual-paraboloid or tennis-ball map are the two layers of one sampler2DArray (an octahedral map its one
+// layer), and `mapLayout` is
 // MapLayout::packed() (mapLayout): (scale.xy, offset.xy) from nominal uv to texture coordinates, past a guard band.
 #ifndef ENVMAP_LOOKUP_GLSL
 #define ENVMAP_LOOKUP_GLSL
@@ -11,6 +12,7 @@
 #define ENVMAP_CUBE 0
 #define ENVMAP_DUAL_PARABOLOID 1
 #define ENVMAP_TENNIS_BALL 2
+#define ENVMAP_OCTAHEDRAL 3
 
 const float kEnvQuarterPi = 0.78539816339744831;
 const float kEnvThreeQuarterPi = 2.35619449019234492;
@@ -98,6 +100,34 @@ vec3 envmapTennisBallDirection(int component, vec2 uv) {
     return vec3(s, c * sin(longitude), -c * cos(longitude));
 }
 
+// --- octahedral: one component; the lower half (z < 0) folded out into the square's corners ---
+vec2 envmapFoldSign(vec2 v) {
+    return vec2(v.x < 0.0 ? -1.0 : 1.0, v.y < 0.0 ? -1.0 : 1.0);
+}
+
+vec2 envmapOctahedralUv(vec3 d) {
+    vec2 p = d.xy / (abs(d.x) + abs(d.y) + abs(d.z));
+    if (d.z < 0.0)
+        p = envmapFoldSign(p) * (1.0 - abs(p.yx));
+    return p * 0.5 + 0.5;
+}
+
+vec3 envmapOctahedralDirection(vec2 uv) {
+    vec2 p = uv * 2.0 - 1.0;
+    // Past a side the square continues folded over it: (1 + e, t) is (1 − e, −t) (the guard band).
+    for (int i = 0; i < 4 && (abs(p.x) > 1.0 || abs(p.y) > 1.0); ++i) {
+        if (abs(p.x) > 1.0)
+            p = vec2(envmapFoldSign(p).x * 2.0 - p.x, -p.y);
+        if (abs(p.y) > 1.0)
+            p = vec2(-p.x, envmapFoldSign(p).y * 2.0 - p.y);
+    }
+    p = clamp(p, -1.0, 1.0);
+    float z = 1.0 - abs(p.x) - abs(p.y);
+    if (z < 0.0)
+        p = envmapFoldSign(p) * (1.0 - abs(p.yx));
+    return normalize(vec3(p, z));
+}
+
 // --- any map (type: ENVMAP_*); d need not be unit length ---
 int envmapComponent(int type, vec3 d) {
     d = normalize(d);
@@ -105,6 +135,8 @@ int envmapComponent(int type, vec3 d) {
         return envmapCubeFace(d);
     if (type == ENVMAP_DUAL_PARABOLOID)
         return envmapParaboloidComponent(d);
+    if (type == ENVMAP_OCTAHEDRAL)
+        return 0;
     return envmapTennisBallComponent(d);
 }
 
@@ -114,6 +146,8 @@ vec2 envmapUv(int type, int component, vec3 d) {
         return envmapCubeUv(component, d);
     if (type == ENVMAP_DUAL_PARABOLOID)
         return envmapParaboloidUv(component, d);
+    if (type == ENVMAP_OCTAHEDRAL)
+        return envmapOctahedralUv(d);
     return envmapTennisBallUv(component, d);
 }
 
@@ -122,6 +156,8 @@ vec3 envmapDirection(int type, int component, vec2 uv) {
         return envmapCubeDirection(component, uv);
     if (type == ENVMAP_DUAL_PARABOLOID)
         return envmapParaboloidDirection(component, uv);
+    if (type == ENVMAP_OCTAHEDRAL)
+        return envmapOctahedralDirection(uv);
     return envmapTennisBallDirection(component, uv);
 }
 
@@ -133,6 +169,18 @@ mat3x2 envmapUvJacobian(int type, int component, vec3 d) {
         float denom = 1.0 - sign * d.z;
         du = 0.5 * vec3(1.0 / denom, 0.0, sign * d.x / (denom * denom));
         dv = 0.5 * vec3(0.0, 1.0 / denom, sign * d.y / (denom * denom));
+    } else if (type == ENVMAP_OCTAHEDRAL) {
+        float s = abs(d.x) + abs(d.y) + abs(d.z);
+        vec3 signs = vec3(envmapFoldSign(d.xy), d.z < 0.0 ? -1.0 : 1.0);
+        vec3 dpx = (vec3(1.0, 0.0, 0.0) - (d.x / s) * signs) / s;
+        vec3 dpy = (vec3(0.0, 1.0, 0.0) - (d.y / s) * signs) / s;
+        du = 0.5 * dpx;
+        dv = 0.5 * dpy;
+        if (d.z < 0.0) { // folded: u = ½ sign(p.x)(1 − |p.y|) + ½, v = ½ sign(p.y)(1 − |p.x|) + ½
+            float flip = -signs.x * signs.y;
+            du = 0.5 * flip * dpy;
+            dv = 0.5 * flip * dpx;
+        }
     } else if (component == 0) {
         float ring = max(d.x * d.x + d.z * d.z, 1e-12); // ≥ ½ where component 0 is looked up
         du = vec3(0.0, 0.5 / (sqrt(ring) * kEnvQuarterPi), 0.0);

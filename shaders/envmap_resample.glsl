@@ -4,7 +4,7 @@
 #include "envmap_lookup.glsl"
 
 uniform samplerCube uEnvCube;
-uniform int uEnvType;      // ENVMAP_DUAL_PARABOLOID or ENVMAP_TENNIS_BALL
+uniform int uEnvType;      // ENVMAP_DUAL_PARABOLOID, ENVMAP_TENNIS_BALL or ENVMAP_OCTAHEDRAL
 uniform int uEnvComponent;
 uniform vec4 uEnvLayout;   // MapLayout::packed()
 uniform vec2 uEnvSize;     // texels of one component

@@ -37,14 +37,21 @@ struct MapLayout {
     }
 };
 
-// The guard band this project uses: wide enough for bilinear filtering at mip level log2(g).
-int defaultGuard(int resolution);
+// The guard band this project uses: wide enough for bilinear filtering at mip level log2(g). The
+// octahedral map's is a power of two, so the square's sides stay on texel boundaries to level log2(g).
+int defaultGuard(MapType type, int resolution);
 
-// guard < 0 picks defaultGuard(n); the cube ignores it. n ≥ 8 and 4·guard < n, else an assertion.
+// guard < 0 picks defaultGuard(type, n); the cube ignores it. n ≥ 8 and 4·guard < n, else an assertion.
 MapLayout makeLayout(MapType type, int resolution, int guard = -1);
 
 // Levels of a full mip chain of a width × height component (down to 1×1).
 int mipLevelCount(int width, int height);
+
+// Levels of a map's own mip chain that lookups may read: the full chain, except for the octahedral map,
+// whose box-filtered levels are right only while its square's sides lie on texel boundaries: to level
+// log2(guard), 32×32 texels for n ≥ 128. Blurrier lookups of it take the GGX pre-filtered chain, whose
+// texels are each convolved from their own direction.
+int usableMipLevels(const MapLayout& layout);
 
 // The GGX pre-filtered chain of a rough reflector: a texture of the map's own layout and size whose mip
 // level k holds the map convolved with the GGX lobe of roughness r_k = k / (levels − 1), level 0 the sharp

@@ -62,12 +62,14 @@ std::string_view mapTypeName(MapType type) {
         return "dual-paraboloid";
     case MapType::TennisBall:
         return "tennis-ball";
+    case MapType::Octahedral:
+        return "octahedral";
     }
     return "?";
 }
 
 int componentCount(MapType type) {
-    return type == MapType::Cube ? 6 : 2;
+    return type == MapType::Cube ? 6 : type == MapType::Octahedral ? 1 : 2;
 }
 
 // --- cube ---
@@ -147,6 +149,47 @@ glm::dvec3 tennisBallDirection(int component, const glm::dvec2& uv) {
     return {s, c * std::sin(longitude), -c * std::cos(longitude)};
 }
 
+// --- octahedral ---
+
+namespace {
+
+// sign() that is +1 at 0: the fold sends the diamond's axes to the square's side midpoints either way.
+double foldSign(double v) {
+    return v < 0.0 ? -1.0 : 1.0;
+}
+
+// The point p of the square ([-1, 1]²) where d lies, before the lower half is folded out.
+glm::dvec2 octahedronPoint(const glm::dvec3& d) {
+    return glm::dvec2(d.x, d.y) / (std::abs(d.x) + std::abs(d.y) + std::abs(d.z));
+}
+
+} // namespace
+
+glm::dvec2 octahedralUv(const glm::dvec3& direction) {
+    const glm::dvec3 d = unit(direction);
+    glm::dvec2 p = octahedronPoint(d);
+    if (d.z < 0.0)
+        p = glm::dvec2(foldSign(p.x) * (1.0 - std::abs(p.y)), foldSign(p.y) * (1.0 - std::abs(p.x)));
+    return p * 0.5 + 0.5;
+}
+
+glm::dvec3 octahedralDirection(const glm::dvec2& uv) {
+    glm::dvec2 p = uv * 2.0 - 1.0;
+    // Past a side, the square continues folded over it: (1 + e, t) is (1 − e, −t). A few folds at most
+    // (the guard band is a fraction of the square).
+    for (int i = 0; i < 4 && (std::abs(p.x) > 1.0 || std::abs(p.y) > 1.0); ++i) {
+        if (std::abs(p.x) > 1.0)
+            p = glm::dvec2(foldSign(p.x) * 2.0 - p.x, -p.y);
+        if (std::abs(p.y) > 1.0)
+            p = glm::dvec2(-p.x, foldSign(p.y) * 2.0 - p.y);
+    }
+    p = glm::clamp(p, -1.0, 1.0);
+    const double z = 1.0 - std::abs(p.x) - std::abs(p.y);
+    if (z < 0.0)
+        p = glm::dvec2(foldSign(p.x) * (1.0 - std::abs(p.y)), foldSign(p.y) * (1.0 - std::abs(p.x)));
+    return glm::normalize(glm::dvec3(p, z));
+}
+
 // --- any map ---
 
 int mapComponent(MapType type, const glm::dvec3& direction) {
@@ -157,6 +200,8 @@ int mapComponent(MapType type, const glm::dvec3& direction) {
         return paraboloidComponent(direction);
     case MapType::TennisBall:
         return tennisBallComponent(direction);
+    case MapType::Octahedral:
+        return 0;
     }
     return 0;
 }
@@ -170,6 +215,8 @@ glm::dvec2 mapUv(MapType type, int component, const glm::dvec3& direction) {
         return paraboloidUv(component, direction);
     case MapType::TennisBall:
         return tennisBallUv(component, direction);
+    case MapType::Octahedral:
+        return octahedralUv(direction);
     }
     return {};
 }
@@ -188,6 +235,8 @@ glm::dvec3 fromMap(MapType type, int component, const glm::dvec2& uv) {
         return paraboloidDirection(component, uv);
     case MapType::TennisBall:
         return tennisBallDirection(component, uv);
+    case MapType::Octahedral:
+        return octahedralDirection(uv);
     }
     return {};
 }
@@ -223,6 +272,22 @@ glm::dmat3x2 uvJacobian(MapType type, int component, const glm::dvec3& direction
         }
         break;
     }
+    case MapType::Octahedral: {
+        // p = (x, y) / s with s = |x| + |y| + |z|: ∂p.x/∂d = (e_x − p.x · sign(d)) / s.
+        const double s = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+        const glm::dvec3 signs(foldSign(d.x), foldSign(d.y), foldSign(d.z));
+        const glm::dvec3 dpx = (glm::dvec3(1, 0, 0) - (d.x / s) * signs) / s;
+        const glm::dvec3 dpy = (glm::dvec3(0, 1, 0) - (d.y / s) * signs) / s;
+        if (d.z >= 0.0) {
+            du = 0.5 * dpx;
+            dv = 0.5 * dpy;
+        } else { // folded: u = ½ sign(p.x)(1 − |p.y|) + ½, v = ½ sign(p.y)(1 − |p.x|) + ½
+            const double sx = foldSign(d.x), sy = foldSign(d.y);
+            du = -0.5 * sx * sy * dpy;
+            dv = -0.5 * sy * sx * dpx;
+        }
+        break;
+    }
     }
     glm::dmat3x2 j;
     for (int c = 0; c < 3; ++c)
@@ -246,6 +311,14 @@ double solidAngleDensity(MapType type, const glm::dvec2& uv) {
     case MapType::TennisBall:
         // dΩ = cos(latitude) dlatitude dlongitude, latitude = p.x·π/4, longitude = p.y·3π/4.
         return std::cos(p.x * kQuarterPi) * (2.0 * kQuarterPi) * (2.0 * kThreeQuarterPi);
+    case MapType::Octahedral: {
+        // A face of the octahedron seen from its centre: dΩ = dA cos θ / r² with dA = √3 dp (the face over
+        // its projection), cos θ = (1/√3) / r: dΩ = dp / r³, r the distance to the face's point. The fold
+        // is an isometry, so a corner's density is that of the lower face's point it shows.
+        const glm::dvec3 d = octahedralDirection(uv);
+        const double r = 1.0 / (std::abs(d.x) + std::abs(d.y) + std::abs(d.z)); // |d| / s, d a unit vector
+        return 4.0 / (r * r * r);
+    }
     }
     return 0.0;
 }

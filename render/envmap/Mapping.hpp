@@ -30,12 +30,22 @@
 // vertex (a, b) → (x, y) on an n×3n target. The component rule is the reference's:
 // component 0 iff (z ≥ 0 and |y| ≤ √2/2) or (z ≤ 0 and |x| ≥ √2/2); the chosen component never
 // reaches its own atan branch cut (|b| ≤ 1 there) nor its own poles (|sin| ≤ √2/2).
+//
+// Octahedral (1 component, n×n): the sphere projected onto the octahedron |x| + |y| + |z| = 1, p = d /
+// (|x| + |y| + |z|); the upper half (z ≥ 0) keeps (p.x, p.y), the diamond |p.x| + |p.y| ≤ 1; the lower half
+// is folded out over the diamond's edges into the square's four corners, (p.x, p.y) ↦ (sign(p.x)·(1 − |p.y|),
+// sign(p.y)·(1 − |p.x|)); uv = p·½ + ½. One square texture and no component to choose; a texel's solid
+// angle goes with 1/r³, r the distance to its point on the octahedron, so from the vertices (r = 1) to the
+// faces' centres (r = 1/√3) it grows by 3√3, as a cube's does from a face's corner to its centre. Each side
+// of the square is folded onto itself (the points (1, t) and (1, −t) are one direction), so past the square
+// the mapping continues by that symmetry, (1 + e, t) ↦ (1 − e, −t), which is what fills the guard band.
 namespace speculum::render::envmap {
 
-enum class MapType { Cube = 0, DualParaboloid = 1, TennisBall = 2 };
+enum class MapType { Cube = 0, DualParaboloid = 1, TennisBall = 2, Octahedral = 3 };
 
-std::string_view mapTypeName(MapType type); // "cube", "dual-paraboloid", "tennis-ball" (scene file names)
-int componentCount(MapType type);           // 6, 2, 2
+// "cube", "dual-paraboloid", "tennis-ball", "octahedral" (scene file names)
+std::string_view mapTypeName(MapType type);
+int componentCount(MapType type); // 6, 2, 2, 1
 
 // A place in a map: which component (face) and the nominal uv in it.
 struct MapCoord {
@@ -57,6 +67,10 @@ glm::dvec3 paraboloidDirection(int component, const glm::dvec2& uv); // unit vec
 int tennisBallComponent(const glm::dvec3& direction);
 glm::dvec2 tennisBallUv(int component, const glm::dvec3& direction); // any direction (poles: b = 0)
 glm::dvec3 tennisBallDirection(int component, const glm::dvec2& uv); // unit vector; any uv
+
+// --- octahedral ---
+glm::dvec2 octahedralUv(const glm::dvec3& direction); // any direction
+glm::dvec3 octahedralDirection(const glm::dvec2& uv); // unit vector; any uv (folded back into the square)
 
 // --- any map ---
 // Directions need not be unit length (they are normalised); a zero vector is a programmer error.

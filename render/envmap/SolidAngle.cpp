@@ -37,7 +37,14 @@ bool texelUsed(const MapLayout& layout, int component, int x, int y) {
         for (int j = 0; j <= kSteps; ++j) {
             const glm::dvec2 t((x + double(i) / kSteps) / layout.width,
                                (y + double(j) / kSteps) / layout.height);
-            const glm::dvec3 d = fromMap(layout.type, component, layout.toNominal(t));
+            // A point of the guard band is not used: it repeats a direction the component holds elsewhere
+            // (an octahedral map's band its own square folded) or that another component holds.
+            const glm::dvec2 nominal = layout.toNominal(t);
+            const double rounding = 1e-12;
+            if (nominal.x < -rounding || nominal.y < -rounding || nominal.x > 1.0 + rounding ||
+                nominal.y > 1.0 + rounding)
+                continue;
+            const glm::dvec3 d = fromMap(layout.type, component, nominal);
             if (mapComponent(layout.type, d) == component)
                 return true;
         }

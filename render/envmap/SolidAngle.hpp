@@ -7,9 +7,10 @@
 
 namespace speculum::render::envmap {
 
-// How evenly a map spends its texels over the sphere. A texel is *used* when some direction that the
-// component rule sends to its component falls inside it (guard-band texels and the corners outside a
-// paraboloid's disc are not); its solid angle is that of its whole footprint, integrated numerically.
+// How evenly a map spends its texels over the sphere. A texel is *used* when some direction of the
+// component's nominal square that the component rule sends to that component falls inside it (guard-band
+// texels and the corners outside a paraboloid's disc are not); its solid angle is that of its whole
+// footprint, integrated numerically.
 struct SolidAngleStats {
     MapType type = MapType::Cube;
     int resolution = 0;

@@ -12,10 +12,16 @@
 
 namespace speculum::render {
 
-enum class ReflectorMap { Cube, DualParaboloid, TennisBall };
-// How the two non-linear maps are filled: warping the scene's vertices (the reference's method, needs fine
-// tessellation) or resampling a cube map rendered first (exact up to the cube's resolution).
+enum class ReflectorMap { Cube, DualParaboloid, TennisBall, Octahedral };
+// How the dual-paraboloid and tennis-ball maps are filled: warping the scene's vertices (the reference's
+// method, needs fine tessellation) or resampling a cube map rendered first (exact up to the cube's
+// resolution). The octahedral map is always resampled: a triangle cannot be warped across the
+// octahedron's folds.
 enum class ReflectorFill { Direct, Resampled };
+// Whether the map's fill applies: the dual-paraboloid and tennis-ball maps.
+constexpr bool warpable(ReflectorMap map) {
+    return map == ReflectorMap::DualParaboloid || map == ReflectorMap::TennisBall;
+}
 // When the map is rendered again: every frame, when something it sees changed, or once.
 enum class ReflectorUpdate { Always, OnChange, Once };
 enum class ParallaxShape { Sphere, Box };
@@ -23,7 +29,7 @@ enum class ParallaxShape { Sphere, Box };
 // directly; a rough one as a cone read from the image's blurred pyramid), the map where the trace finds
 // nothing.
 enum class ReflectorTechnique { Map, ScreenSpace };
-static_assert(int(ReflectorMap::TennisBall) + 1 == names::kReflectorMaps.size(), "one name per value");
+static_assert(int(ReflectorMap::Octahedral) + 1 == names::kReflectorMaps.size(), "one name per value");
 static_assert(int(ReflectorFill::Resampled) + 1 == names::kReflectorFills.size(), "one name per value");
 static_assert(int(ReflectorUpdate::Once) + 1 == names::kReflectorUpdates.size(), "one name per value");
 static_assert(int(ParallaxShape::Box) + 1 == names::kParallaxShapes.size(), "one name per value");
@@ -96,7 +102,7 @@ struct ReflectorParams {
     int resolution = 256;
     double reflectivity = 1.0; // at normal incidence when fresnel is on
     bool fresnel = false;
-    ReflectorFill fill = ReflectorFill::Resampled; // the non-linear maps only
+    ReflectorFill fill = ReflectorFill::Resampled; // the warpable maps only
     std::optional<ParallaxParams> parallax;        // none: lookups treat everything as infinitely far
     ReflectorUpdate update = ReflectorUpdate::OnChange;
     int mirrorDepth = 1;    // planar-mirror levels inside the environment map
@@ -111,26 +117,27 @@ struct ReflectorParams {
 
 template <typename Visit>
 void ReflectorParams::fields(Visit&& visit) {
-    constexpr auto nonLinear = [](const ReflectorParams& r) { return r.map != ReflectorMap::Cube; };
+    constexpr auto nonLinear = [](const ReflectorParams& r) { return warpable(r.map); };
     // What only the lookups read (not what the map draws) says .drawnInMaps = false.
     visit(field(&ReflectorParams::map,
                 {.name = "map",
                  .label = "Environment map",
-                 .meaning = "The map's layout: a cube, two paraboloids, or a tennis ball",
+                 .meaning = "The map's layout: a cube, two paraboloids, a tennis ball, or an octahedron",
                  .type = FieldType::Choice,
                  .noun = "reflector map",
                  .choices = names::kReflectorMaps}));
-    visit(field(
-        &ReflectorParams::resolution,
-        {.name = "resolution",
-         .label = "Resolution",
-         .meaning = "Texels per cube face side, per paraboloid side, or of the tennis ball's short side",
-         .type = FieldType::Integer,
-         .min = kMinEnvironmentMapSize,
-         .max = kMaxEnvironmentMapSize,
-         .unit = " px",
-         .decimals = 0,
-         .step = 32}));
+    visit(field(&ReflectorParams::resolution,
+                {.name = "resolution",
+                 .label = "Resolution",
+                 .meaning =
+                     "Texels per cube face side, per paraboloid side, of the tennis ball's short side, or of "
+                     "the octahedral square's side",
+                 .type = FieldType::Integer,
+                 .min = kMinEnvironmentMapSize,
+                 .max = kMaxEnvironmentMapSize,
+                 .unit = " px",
+                 .decimals = 0,
+                 .step = 32}));
     visit(field(&ReflectorParams::reflectivity,
                 {.name = "reflectivity",
                  .label = "Reflectivity",
@@ -146,15 +153,17 @@ void ReflectorParams::fields(Visit&& visit) {
                             "angles",
                  .type = FieldType::Bool,
                  .drawnInMaps = false}));
-    visit(field(&ReflectorParams::fill,
-                {.name = "fill",
-                 .label = "Fill",
-                 .meaning = "How dual-paraboloid and tennis-ball maps are filled; the cube map ignores it",
-                 .type = FieldType::Choice,
-                 .noun = "reflector fill",
-                 .choices = names::kReflectorFills,
-                 .write = FieldWrite::Everywhere},
-                nonLinear));
+    visit(
+        field(&ReflectorParams::fill,
+              {.name = "fill",
+               .label = "Fill",
+               .meaning = "How dual-paraboloid and tennis-ball maps are filled; the cube and octahedral maps "
+                          "ignore it",
+               .type = FieldType::Choice,
+               .noun = "reflector fill",
+               .choices = names::kReflectorFills,
+               .write = FieldWrite::Everywhere},
+              nonLinear));
     visit(
         field(&ReflectorParams::parallax,
               {.name = "parallax",

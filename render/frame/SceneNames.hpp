@@ -18,10 +18,11 @@ struct Name {
     std::string_view label;
 };
 
-inline constexpr std::array<Name, 3> kReflectorMaps{{
+inline constexpr std::array<Name, 4> kReflectorMaps{{
     {"cube", "Cube"},
     {"dual-paraboloid", "Dual paraboloid"},
     {"tennis-ball", "Tennis ball"},
+    {"octahedral", "Octahedral"},
 }};
 inline constexpr std::array<Name, 2> kReflectorFills{{
     {"direct", "Direct (vertex warp)"},

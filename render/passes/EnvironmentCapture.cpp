@@ -39,15 +39,14 @@ void allocateCube(GLuint texture, int size, GLenum format, bool mipmaps) {
     glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
 }
 
-void allocateArray(GLuint texture, int width, int height, GLenum format, bool mipmaps) {
+void allocateArray(GLuint texture, int width, int height, GLenum format, int levels) {
     glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
-    const int levels = mipmaps ? mipLevels(width, height) : 1;
     for (int level = 0; level < levels; ++level)
         glTexImage3D(GL_TEXTURE_2D_ARRAY, level, static_cast<GLint>(format), std::max(1, width >> level),
                      std::max(1, height >> level), 2, 0, GL_RGBA, GL_FLOAT, nullptr);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER,
-                    mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+                    levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     // Clamp: the guard band, not wrapping, supplies the texels past a component's nominal square.
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -163,6 +162,8 @@ base::Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSetting
         *sizeFailure = false;
     EnvironmentCapture capture;
     capture.m_settings = settings;
+    if (settings.type == MapType::Octahedral) // a triangle cannot be warped across the octahedron's folds
+        capture.m_settings.fill = FillMethod::Resampled;
     capture.m_layout = makeLayout(settings.type, settings.resolution);
     const MapLayout& layout = capture.m_layout;
     // The resampling shader first: a shader that does not build is no reason to try a smaller map.
@@ -190,7 +191,7 @@ base::Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSetting
     const std::size_t depthTexel = gl::bytesPerTexel(GL_DEPTH24_STENCIL8);
     // The intermediate cube first: the largest part (six faces), so a map that does not fit fails before
     // gigabytes of the rest were allocated (and cleared) for nothing.
-    if (settings.type != MapType::Cube && settings.fill == FillMethod::Resampled) {
+    if (settings.type != MapType::Cube && capture.m_settings.fill == FillMethod::Resampled) {
         const int size = settings.cubeResolution > 0 ? settings.cubeResolution : settings.resolution;
         const int cubeLevels = settings.mipmaps ? mipLevels(size, size) : 1;
         const std::string cube = "its " + sizeText(size, size) + " intermediate cube";
@@ -215,7 +216,7 @@ base::Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSetting
 
     const std::size_t faceTexels =
         static_cast<std::size_t>(layout.width) * static_cast<std::size_t>(layout.height);
-    const int levels = settings.mipmaps ? mipLevels(layout.width, layout.height) : 1;
+    const int levels = settings.mipmaps ? usableMipLevels(layout) : 1;
     capture.m_map = gl::makeTexture();
     if (base::Status s = checked(static_cast<std::size_t>(layout.components) *
                                      gl::mipChainTexels(layout.width, layout.height, levels) * colour,
@@ -227,7 +228,7 @@ base::Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSetting
                                                       settings.mipmaps);
                                      else
                                          allocateArray(capture.m_map.id(), layout.width, layout.height,
-                                                       settings.colorFormat, settings.mipmaps);
+                                                       settings.colorFormat, levels);
                                  });
         !s)
         return sizeError(s);
@@ -255,7 +256,7 @@ std::size_t EnvironmentCapture::bytes() const {
     const std::size_t colour = gl::bytesPerTexel(m_settings.colorFormat);
     const std::size_t depth = gl::bytesPerTexel(GL_DEPTH_COMPONENT24);
     const MapLayout& l = m_layout;
-    const int levels = m_settings.mipmaps ? mipLevels(l.width, l.height) : 1;
+    const int levels = m_settings.mipmaps ? usableMipLevels(l) : 1;
     // One depth buffer of a face's (or a layer's) size serves every face in turn.
     std::size_t total =
         static_cast<std::size_t>(l.components) * gl::mipChainTexels(l.width, l.height, levels) * colour +
@@ -350,7 +351,7 @@ void EnvironmentCapture::resample(GLuint cubeTexture, const glm::dmat3& cubeFrom
     m_resample.set("uEnvSize", glm::vec2(m_layout.width, m_layout.height));
     m_resample.set("uEnvWorldFromMap", glm::mat3(cubeFromMap));
     glBindVertexArray(m_emptyVao.id());
-    for (int component = 0; component < 2; ++component) {
+    for (int component = 0; component < m_layout.components; ++component) {
         glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m_map.id(), 0, component);
         m_resample.set("uEnvComponent", component);
         glDrawArrays(GL_TRIANGLES, 0, 3);

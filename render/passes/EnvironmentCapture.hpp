@@ -20,7 +20,7 @@ enum class FillMethod {
 struct CaptureSettings {
     MapType type = MapType::Cube;
     int resolution = 256;                    // n: see MapLayout
-    FillMethod fill = FillMethod::Resampled; // ignored by cube maps
+    FillMethod fill = FillMethod::Resampled; // ignored by cube maps; octahedral maps are always resampled
     int cubeResolution = 0;                  // resampled fill: the intermediate cube's n (0: same n)
     bool mipmaps = true;                     // trilinear lookups with explicit LOD in pass 2
     GLenum colorFormat = GL_RGBA16F;         // linear colour, as the main pass writes it

@@ -26,6 +26,8 @@ double texelSolidAngle(const MapLayout& l) {
         return 2.0 * kPi / (0.25 * kPi * w * h);
     case MapType::TennisBall: // a band of ±45° latitude and 270° longitude per component
         return 1.5 * kPi * 2.0 * std::sin(0.25 * kPi) / (w * h);
+    case MapType::Octahedral: // the whole sphere on the nominal square
+        return 4.0 * kPi / (w * h);
     }
     return 4.0 * kPi / (6.0 * w * h);
 }
@@ -142,7 +144,7 @@ base::Status GgxPrefilter::filter(const EnvironmentCapture& map, int samples) {
     p.set("uEnvLayout", l.packed());
     p.set("uSamples", samples);
     p.set("uSourceTexelSolidAngle", static_cast<float>(texelSolidAngle(l)));
-    const int sourceLevels = map.settings().mipmaps ? mipLevelCount(l.width, l.height) : 1;
+    const int sourceLevels = map.settings().mipmaps ? usableMipLevels(l) : 1;
     p.set("uSourceMaxLod", static_cast<float>(sourceLevels - 1));
     glBindVertexArray(m_emptyVao.id());
     glBindFramebuffer(GL_FRAMEBUFFER, m_draw.id());

@@ -2,6 +2,7 @@
 
 #include "base/Printable.hpp"
 #include "render/plan/GpuLimits.hpp"
+#include "render/plan/Planner.hpp"
 
 #include <algorithm>
 
@@ -11,11 +12,10 @@ namespace {
 
 envmap::CaptureSettings captureSettings(const Reflector& r) {
     envmap::CaptureSettings s;
-    s.type = r.map == ReflectorMap::Cube             ? envmap::MapType::Cube
-             : r.map == ReflectorMap::DualParaboloid ? envmap::MapType::DualParaboloid
-                                                     : envmap::MapType::TennisBall;
+    s.type = mapTypeOf(r.map);
     s.resolution = r.resolution;
-    s.fill = r.fill == ReflectorFill::Direct ? envmap::FillMethod::Direct : envmap::FillMethod::Resampled;
+    s.fill = warpable(r.map) && r.fill == ReflectorFill::Direct ? envmap::FillMethod::Direct
+                                                                : envmap::FillMethod::Resampled;
     return s;
 }
 
@@ -254,10 +254,8 @@ int ReflectorPass::bindLookup(const FrameInput& input, const gl::Program& p) con
     GLuint texture = map.texture();
     float lod = 0.0f;
     if (roughness > 0.0) {
-        const int levels =
-            chain ? m_prefilter->levels()
-                  : (map.settings().mipmaps ? envmap::mipLevelCount(map.layout().width, map.layout().height)
-                                            : 1);
+        const int levels = chain ? m_prefilter->levels()
+                                 : (map.settings().mipmaps ? envmap::usableMipLevels(map.layout()) : 1);
         texture = chain ? m_prefilter->texture() : texture;
         lod = static_cast<float>(roughness * (levels - 1));
     }

@@ -38,10 +38,11 @@ int maxEnvmapResolution(const Reflector& reflector, const GpuLimits& limits) {
     case ReflectorMap::Cube:
         return std::min(limits.maxCubeMapSize, target);
     case ReflectorMap::DualParaboloid:
-    case ReflectorMap::TennisBall: {
+    case ReflectorMap::TennisBall:
+    case ReflectorMap::Octahedral: {
         const int height = reflector.map == ReflectorMap::TennisBall ? 3 : 1;
         int n = std::min(limits.maxTextureSize, target) / height;
-        if (reflector.fill == ReflectorFill::Resampled)
+        if (reflector.fill == ReflectorFill::Resampled || !warpable(reflector.map))
             n = std::min({n, limits.maxCubeMapSize, target});
         return n;
     }
@@ -99,6 +100,8 @@ MapKind envmapKind(const Reflector& reflector) {
         return resampled ? MapKind::EnvmapParaboloidResampled : MapKind::EnvmapParaboloid;
     case ReflectorMap::TennisBall:
         return resampled ? MapKind::EnvmapTennisBallResampled : MapKind::EnvmapTennisBall;
+    case ReflectorMap::Octahedral:
+        return MapKind::EnvmapOctahedral;
     }
     return MapKind::EnvmapCube;
 }

@@ -42,6 +42,7 @@ enum class MapKind {
     EnvmapParaboloidResampled,
     EnvmapTennisBall,
     EnvmapTennisBallResampled,
+    EnvmapOctahedral, // always resampled
 };
 
 MapKind shadowMapKind(const Light& light);

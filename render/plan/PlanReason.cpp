@@ -278,6 +278,9 @@ std::string mapLayout(const ReasonDetails& d) {
     const std::string size = std::to_string(n) + "×" + std::to_string(n);
     if (d.map == ReflectorMap::Cube)
         return "a cube map (6 faces of " + size + ")";
+    if (d.map == ReflectorMap::Octahedral)
+        return "an octahedral map (one " + size + " square, resampled from a " + size +
+               " cube: 6 scene passes + 1 resampling pass)";
     return "a " + std::string(names::fileName(names::kReflectorMaps, d.map)) + " map (2 components of " +
            (d.map == ReflectorMap::TennisBall ? std::to_string(n) + "×" + std::to_string(3 * n) : size) +
            ", " +

@@ -15,9 +15,17 @@
 namespace speculum::render {
 
 envmap::MapType mapTypeOf(ReflectorMap map) {
-    return map == ReflectorMap::Cube             ? envmap::MapType::Cube
-           : map == ReflectorMap::DualParaboloid ? envmap::MapType::DualParaboloid
-                                                 : envmap::MapType::TennisBall;
+    switch (map) {
+    case ReflectorMap::Cube:
+        return envmap::MapType::Cube;
+    case ReflectorMap::DualParaboloid:
+        return envmap::MapType::DualParaboloid;
+    case ReflectorMap::TennisBall:
+        return envmap::MapType::TennisBall;
+    case ReflectorMap::Octahedral:
+        return envmap::MapType::Octahedral;
+    }
+    return envmap::MapType::Cube;
 }
 
 namespace {
@@ -70,8 +78,9 @@ EnvmapCapture envmapCapture(const FrameInput& input) {
 
 std::vector<EnvmapFace> envmapFaces(const Reflector& reflector, const EnvmapCapture& capture) {
     std::vector<EnvmapFace> faces;
-    if (reflector.map == ReflectorMap::Cube || reflector.fill == ReflectorFill::Resampled) {
-        // Cube maps and the resampled fill draw six faces of the reflector's resolution.
+    if (!warpable(reflector.map) || reflector.fill == ReflectorFill::Resampled) {
+        // Cube maps and the resampled fill (the octahedral map's only one) draw six faces of the
+        // reflector's resolution.
         static const char* const names[6] = {"+X face", "−X face", "+Y face",
                                              "−Y face", "+Z face", "−Z face"};
         for (int f = 0; f < 6; ++f) {
@@ -84,9 +93,7 @@ std::vector<EnvmapFace> envmapFaces(const Reflector& reflector, const EnvmapCapt
         }
         return faces;
     }
-    const envmap::MapType type = reflector.map == ReflectorMap::DualParaboloid
-                                     ? envmap::MapType::DualParaboloid
-                                     : envmap::MapType::TennisBall;
+    const envmap::MapType type = mapTypeOf(reflector.map);
     const envmap::MapLayout layout = envmap::makeLayout(type, reflector.resolution);
     for (int c = 0; c < 2; ++c) {
         EnvmapFace face;
@@ -107,7 +114,7 @@ std::uint64_t envmapSettingsKey(const Reflector& reflector) {
     Hasher h;
     h.add(reflector.map);
     h.add(reflector.resolution);
-    h.add(reflector.map == ReflectorMap::Cube ? ReflectorFill::Resampled : reflector.fill);
+    h.add(warpable(reflector.map) ? reflector.fill : ReflectorFill::Resampled);
     return h.value;
 }
 
@@ -221,7 +228,7 @@ void planPrefilter(const FrameInput& input, const PlannerState& state, std::opti
     }
     const envmap::MapLayout layout = envmap::makeLayout(mapTypeOf(reflector.map), reflector.resolution);
     if (input.settings.glossyFilter == GlossyFilter::Mip) {
-        const int levels = envmap::mipLevelCount(layout.width, layout.height);
+        const int levels = envmap::usableMipLevels(layout);
         plan.skipped.push_back({name, PlanReason::PrefilterMipFilter, {.levels = levels}});
         return;
     }

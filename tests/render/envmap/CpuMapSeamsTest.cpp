@@ -6,6 +6,7 @@
 #include "render/envmap/CpuMap.hpp"
 #include "support/Directions.hpp"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <memory>
 
@@ -39,6 +40,8 @@ double texelAngle(const MapLayout& layout) {
         return 4.0 / (layout.width - 2.0 * layout.guard);
     case MapType::TennisBall:
         return (kPi / 2.0) / (layout.width - 2.0 * layout.guard);
+    case MapType::Octahedral: // √6 rad per unit of p at the faces' centres, p = 2·uv
+        return 2.0 * std::sqrt(6.0) / (layout.width - 2.0 * layout.guard);
     }
     return 0.0;
 }
@@ -47,7 +50,8 @@ struct SeamReport {
     double worstExcess = -1.0; // max over pairs of |ΔL| − |ΔR|
     const char* worstSeam = "";
     double worstError = 0.0; // max |L − R| at the seam points
-    int straddling = 0;      // pairs whose two directions use different components
+    const char* worstErrorSeam = "";
+    int straddling = 0; // pairs whose two directions use different components
 };
 
 // Looks up each pair (seam point ∓ offset·across) in `map` and in the reference.
@@ -63,10 +67,16 @@ SeamReport measure(const CpuMap& map, const CpuMap& reference, const std::vector
             r.worstExcess = lookupStep - referenceStep;
             r.worstSeam = s.seam;
         }
-        r.worstError =
-            std::max(r.worstError, maxAbs(map.lookup(s.point, seamlessCube) - reference.lookup(s.point)));
-        const MapType type = map.layout().type;
-        r.straddling += mapComponent(type, d1) != mapComponent(type, d2);
+        const double error = maxAbs(map.lookup(s.point, seamlessCube) - reference.lookup(s.point));
+        if (error > r.worstError) {
+            r.worstError = error;
+            r.worstErrorSeam = s.seam;
+        }
+        // The pair crosses a seam of the texture: its two directions land in different components, or far
+        // apart in one (on either side of an octahedral square's folded side, or of its corner).
+        const MapCoord c1 = toMap(map.layout().type, d1), c2 = toMap(map.layout().type, d2);
+        r.straddling +=
+            c1.component != c2.component || glm::length(c1.uv - c2.uv) > 10.0 / map.layout().width;
     }
     return r;
 }
@@ -84,7 +94,9 @@ protected:
     // filtering of the same smooth function from two components differs by O(texel²).
     static double tolerance(const MapLayout& layout) { return 0.1 * kMaxGradient * texelAngle(layout); }
 
-    static void expectSeamless(const CpuMap& map, const std::vector<SeamPoint>& seams) {
+    // `errorBound`: the largest error of the map's lookups at the seam points themselves.
+    static void expectSeamless(const CpuMap& map, const std::vector<SeamPoint>& seams,
+                               double errorBound = 0.01) {
         const double texel = texelAngle(map.layout());
         for (double fraction : {0.02, 0.3, 1.0}) {
             const SeamReport r = measure(map, *s_reference, seams, fraction * texel);
@@ -93,11 +105,12 @@ protected:
                 << " texel";
             EXPECT_GT(r.straddling, int(seams.size()) / 2) << "the pairs must cross the seams";
             // And continuous around the right value: bilinear error of this environment is ≤ 0.01 here.
-            EXPECT_LT(r.worstError, 0.01) << mapTypeName(map.layout().type);
+            EXPECT_LT(r.worstError, errorBound)
+                << mapTypeName(map.layout().type) << " at " << r.worstErrorSeam;
             std::printf(
-                "%-16s offset %.2f texel: worst excess %.2e (tolerance %.2e) at %s, worst error %.2e\n",
+                "%-16s offset %.2f texel: worst excess %.2e (tolerance %.2e) at %s, worst error %.2e at %s\n",
                 std::string(mapTypeName(map.layout().type)).c_str(), fraction, r.worstExcess,
-                tolerance(map.layout()), r.worstSeam, r.worstError);
+                tolerance(map.layout()), r.worstSeam, r.worstError, r.worstErrorSeam);
         }
     }
 
@@ -118,6 +131,17 @@ TEST_F(EnvMapSeams, TennisBallIsContinuousAcrossItsSeamCutsAndPoles) {
     expectSeamless(CpuMap::fill(makeLayout(MapType::TennisBall, kResolution), environment), seams);
 }
 
+// At the resolution whose n² texels match the cube's 6n² at kResolution (n·√6): at kResolution itself its
+// texels are √6 times wider. The mapping bends along the octahedron's edges, which run inside the texture
+// and along its folded sides (the direction's z goes with |1 − u| across a side): bilinear filtering across
+// a bend errs to first order in the texel, not the second order of a smooth map's, so the error at those
+// points may reach about twice the smooth maps' 0.01 (measured: 0.013, at the sides). The seams themselves
+// are judged as for every map, by the excess over the reference's change across them.
+TEST_F(EnvMapSeams, OctahedralIsContinuousAcrossItsFoldsAndCorners) {
+    const int n = int(std::lround(kResolution * std::sqrt(6.0)));
+    expectSeamless(CpuMap::fill(makeLayout(MapType::Octahedral, n), environment), octahedralSeams(), 0.02);
+}
+
 TEST_F(EnvMapSeams, TheCheckCatchesRealSeams) {
     const double fraction = 0.02;
     // A cube filtered face by face (no GL_TEXTURE_CUBE_MAP_SEAMLESS).
@@ -136,8 +160,16 @@ TEST_F(EnvMapSeams, TheCheckCatchesRealSeams) {
     const SeamReport paraboloidReport =
         measure(paraboloid, *s_reference, paraboloidSeams(), fraction * texelAngle(paraboloid.layout()));
     EXPECT_GT(paraboloidReport.worstExcess, 3.0 * tolerance(paraboloid.layout()));
-    std::printf("counter-examples, worst excess: cube %.2e, tennis-ball %.2e, paraboloid %.2e\n",
-                cubeReport.worstExcess, tennisReport.worstExcess, paraboloidReport.worstExcess);
+    // An octahedral map without its folded band: clamping at the square's sides.
+    const CpuMap octahedral = CpuMap::fill(
+        makeLayout(MapType::Octahedral, int(std::lround(kResolution * std::sqrt(6.0))), 0), environment);
+    const SeamReport octahedralReport =
+        measure(octahedral, *s_reference, octahedralSeams(), fraction * texelAngle(octahedral.layout()));
+    EXPECT_GT(octahedralReport.worstExcess, 3.0 * tolerance(octahedral.layout()));
+    std::printf(
+        "counter-examples, worst excess: cube %.2e, tennis-ball %.2e, paraboloid %.2e, octahedral %.2e\n",
+        cubeReport.worstExcess, tennisReport.worstExcess, paraboloidReport.worstExcess,
+        octahedralReport.worstExcess);
 }
 
 } // namespace

@@ -15,7 +15,8 @@ namespace {
 
 using namespace render::envmap;
 
-constexpr MapType kTypes[] = {MapType::Cube, MapType::DualParaboloid, MapType::TennisBall};
+constexpr MapType kTypes[] = {MapType::Cube, MapType::DualParaboloid, MapType::TennisBall,
+                              MapType::Octahedral};
 
 class EnvMapGlsl : public GlTest {
 protected:
@@ -98,7 +99,7 @@ TEST_F(EnvMapGlsl, UvToDirectionMatchesCpp) {
 
 TEST_F(EnvMapGlsl, JacobianMatchesCpp) {
     const std::vector<glm::dvec3> dirs = randomDirections(4096, 78);
-    for (MapType type : {MapType::DualParaboloid, MapType::TennisBall}) {
+    for (MapType type : {MapType::DualParaboloid, MapType::TennisBall, MapType::Octahedral}) {
         std::vector<glm::vec4> inputs;
         for (const glm::dvec3& d : dirs)
             inputs.emplace_back(glm::vec3(d), float(mapComponent(type, d)));
@@ -217,22 +218,27 @@ TEST_F(EnvMapGlsl, LookupsMatchTheCpuModelAndAreSeamless) {
                              layout.height, 0, GL_RGBA, GL_FLOAT,
                              texels.data() + std::size_t(face) * layout.width * layout.height);
         } else {
-            glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, layout.width, layout.height, 2, 0, GL_RGBA,
-                         GL_FLOAT, texels.data());
+            glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, layout.width, layout.height, layout.components,
+                         0, GL_RGBA, GL_FLOAT, texels.data());
         }
         glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        // As the capture does: an octahedral map's chain stops where its sides leave texel boundaries.
+        glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, usableMipLevels(layout) - 1);
         glGenerateMipmap(target);
         glActiveTexture(GL_TEXTURE0);
 
         const std::vector<SeamPoint> seams = type == MapType::Cube             ? cubeSeams()
                                              : type == MapType::DualParaboloid ? paraboloidSeams()
-                                                                               : tennisBallSeams();
-        const double texel = type == MapType::Cube
-                                 ? 2.0 / 64
-                                 : (type == MapType::DualParaboloid ? 4.0 : 1.571) / (64 - 2 * layout.guard);
+                                             : type == MapType::TennisBall     ? tennisBallSeams()
+                                                                               : octahedralSeams();
+        // The largest arc a texel spans (√6 rad per unit of p for the octahedron, p = 2·uv).
+        const double span = type == MapType::DualParaboloid ? 4.0
+                            : type == MapType::TennisBall   ? 1.571
+                                                            : 4.899;
+        const double texel = type == MapType::Cube ? 2.0 / 64 : span / (64 - 2 * layout.guard);
         std::vector<glm::vec4> inputs;
         std::vector<glm::dvec3> dirs;
         for (const SeamPoint& s : seams)

@@ -1,4 +1,4 @@
-// Direction ↔ texture mappings of the three environment maps: round trips, the reference's conventions,
+// Direction ↔ texture mappings of the four environment maps: round trips, the reference's conventions,
 // the component rules and the Jacobians that pass 2 uses for explicit LOD.
 #include "render/envmap/Mapping.hpp"
 
@@ -12,7 +12,8 @@ namespace {
 
 using namespace render::envmap;
 
-constexpr MapType kTypes[] = {MapType::Cube, MapType::DualParaboloid, MapType::TennisBall};
+constexpr MapType kTypes[] = {MapType::Cube, MapType::DualParaboloid, MapType::TennisBall,
+                              MapType::Octahedral};
 constexpr double kPi = 3.14159265358979323846;
 
 std::vector<glm::dvec3> allTestDirections() {
@@ -77,6 +78,50 @@ TEST(EnvMapping, ForcedComponentIsContinuousIntoTheGuardBand) {
                     ASSERT_LT(glm::length(back - uv), 1e-12) << mapTypeName(type) << " " << x << "," << y;
                 }
     }
+}
+
+// The octahedral map's guard band is its own square folded over each side: a texel past a side shows the
+// direction of the texel mirrored across the side's midpoint, and the directions run on continuously from
+// the square into the band (neighbouring texels a texel's angle apart, not a jump across the sphere).
+TEST(EnvMapping, OctahedralGuardBandContinuesAcrossEachFold) {
+    const MapLayout layout = makeLayout(MapType::Octahedral, 64);
+    ASSERT_GT(layout.guard, 0);
+    const double texel = 1.0 / (layout.width - 2.0 * layout.guard); // nominal uv per texel
+    for (int y = 0; y < layout.height; ++y)
+        for (int x = 0; x < layout.width; ++x) {
+            const glm::dvec2 uv = layout.texelCentre(x, y);
+            const glm::dvec3 d = octahedralDirection(uv);
+            ASSERT_NEAR(glm::length(d), 1.0, 1e-12);
+            for (const glm::dvec2& step : {glm::dvec2(texel, 0.0), glm::dvec2(0.0, texel)}) {
+                if (x + 1 >= layout.width || y + 1 >= layout.height)
+                    continue;
+                // At most √6 rad per unit of p (at the faces' centres), p = 2·uv: 4.9 texels' worth.
+                EXPECT_LT(angleBetween(d, octahedralDirection(uv + step)), 6.0 * texel) << x << "," << y;
+            }
+            if (uv.x > 1.0 && uv.y >= 0.0 && uv.y <= 1.0) { // past the right side: (1 + e, t) is (1 − e, −t)
+                const glm::dvec2 mirrored(2.0 - uv.x, 1.0 - uv.y);
+                EXPECT_LT(angleBetween(d, octahedralDirection(mirrored)), 1e-12) << x << "," << y;
+            }
+        }
+}
+
+TEST(EnvMapping, OctahedralFollowsTheOctahedronAndItsFold) {
+    auto near = [](glm::dvec2 a, glm::dvec2 b) { return glm::length(a - b) < 1e-12; };
+    EXPECT_TRUE(near(octahedralUv({0, 0, 1}), {0.5, 0.5})); // +Z at the centre
+    EXPECT_TRUE(near(octahedralUv({1, 0, 0}), {1.0, 0.5})); // the equator on the diamond
+    EXPECT_TRUE(near(octahedralUv({-1, 0, 0}), {0.0, 0.5}));
+    EXPECT_TRUE(near(octahedralUv({0, 1, 0}), {0.5, 1.0}));
+    EXPECT_TRUE(near(octahedralUv({1, 1, 0}), {0.75, 0.75}));
+    const glm::dvec2 south = octahedralUv({0, 0, -1}); // −Z in a corner
+    EXPECT_TRUE(near(south, {1.0, 1.0})) << south.x << "," << south.y;
+    for (const glm::dvec2& corner : {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(0, 1), glm::dvec2(1, 1)})
+        EXPECT_LT(angleBetween(octahedralDirection(corner), {0, 0, -1}), 1e-12);
+    // The lower half folded: (1, 0, −1) lands on the right side, which is folded onto itself.
+    const glm::dvec2 side = octahedralUv({1, 0, -1});
+    EXPECT_TRUE(near(side, {1.0, 0.75})) << side.x << "," << side.y;
+    EXPECT_LT(angleBetween(octahedralDirection({1.0, 0.25}), glm::normalize(glm::dvec3(1, 0, -1))), 1e-12);
+    EXPECT_EQ(componentCount(MapType::Octahedral), 1);
+    EXPECT_EQ(mapTypeName(MapType::Octahedral), "octahedral");
 }
 
 TEST(EnvMapping, CubeFollowsGlFaceOrderAndAxes) {
@@ -203,8 +248,13 @@ TEST(EnvMapping, LayoutPlacesTheNominalSquareInsideTheGuardBand) {
     EXPECT_EQ(cube.guard, 0);
     EXPECT_EQ(cube.components, 6);
     EXPECT_EQ(makeLayout(MapType::DualParaboloid, 512).guard, 16);
+    const MapLayout octahedral = makeLayout(MapType::Octahedral, 128);
+    EXPECT_EQ(octahedral.width, 128);
+    EXPECT_EQ(octahedral.height, 128);
+    EXPECT_EQ(octahedral.components, 1);
+    EXPECT_EQ(octahedral.guard, 4);
     // The smallest resolution a project may ask for still leaves most of the map inside the bands.
-    for (const MapType type : {MapType::DualParaboloid, MapType::TennisBall}) {
+    for (const MapType type : {MapType::DualParaboloid, MapType::TennisBall, MapType::Octahedral}) {
         const MapLayout smallest = makeLayout(type, 8);
         EXPECT_GE(smallest.guard, 1);
         EXPECT_LT(4 * smallest.guard, smallest.resolution);

@@ -5,7 +5,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-// Points on every seam of the three maps, each with a tangent direction that crosses the seam there.
+// Points on every seam of the four maps, each with a tangent direction that crosses the seam there.
 namespace speculum::test {
 
 inline constexpr double kSeamPi = 3.14159265358979323846;
@@ -92,6 +92,27 @@ inline std::vector<SeamPoint> tennisBallSeams() {
             const glm::dvec3 v = glm::cross(pole, u);
             out.push_back({pole, std::cos(angle) * u + std::sin(angle) * v, "pole"});
         }
+    return out;
+}
+
+// The octahedral map's: the sides of its square (the lower half's meridians in the planes x = 0 and y = 0,
+// each folded onto itself), the −Z pole (the four corners), and the equator, where the diamond meets the
+// folded corners (a crease of the mapping, not an edge of the texture).
+inline std::vector<SeamPoint> octahedralSeams() {
+    std::vector<SeamPoint> out;
+    const int steps = 40;
+    for (int i = 1; i < steps; ++i) {
+        const double theta = (-0.5 + double(i) / steps) * kSeamPi; // −90°..90° from −Z
+        out.push_back({{0.0, std::sin(theta), -std::cos(theta)}, {1, 0, 0}, "side (x = 0)"});
+        out.push_back({{std::sin(theta), 0.0, -std::cos(theta)}, {0, 1, 0}, "side (y = 0)"});
+        const double phi = 2.0 * kSeamPi * i / steps;
+        out.push_back({{std::cos(phi), std::sin(phi), 0.0}, {0, 0, 1}, "equator"});
+    }
+    const glm::dvec3 pole(0, 0, -1);
+    for (int k = 0; k < 16; ++k) {
+        const double angle = 2.0 * kSeamPi * k / 16.0;
+        out.push_back({pole, {std::cos(angle), std::sin(angle), 0.0}, "−Z corner"});
+    }
     return out;
 }
 

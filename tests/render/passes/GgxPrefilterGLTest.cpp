@@ -17,7 +17,8 @@ namespace {
 using namespace render;
 
 constexpr int kSize = 96;
-const ReflectorMap kMaps[] = {ReflectorMap::Cube, ReflectorMap::DualParaboloid, ReflectorMap::TennisBall};
+const ReflectorMap kMaps[] = {ReflectorMap::Cube, ReflectorMap::DualParaboloid, ReflectorMap::TennisBall,
+                              ReflectorMap::Octahedral};
 
 Material emissive(glm::dvec3 color) {
     Material m;

@@ -267,7 +267,8 @@ TEST_F(GlTest, ReflectorMapOfEveryLayoutFallsBackUnderAnAllocationLimit) {
                           Case{ReflectorMap::DualParaboloid, ReflectorFill::Resampled, 8192},
                           Case{ReflectorMap::DualParaboloid, ReflectorFill::Direct, 8192},
                           Case{ReflectorMap::TennisBall, ReflectorFill::Direct, 4096},
-                          Case{ReflectorMap::TennisBall, ReflectorFill::Resampled, 4096}}) {
+                          Case{ReflectorMap::TennisBall, ReflectorFill::Resampled, 4096},
+                          Case{ReflectorMap::Octahedral, ReflectorFill::Resampled, 8192}}) {
         SCOPED_TRACE(std::string(names::fileName(names::kReflectorMaps, c.map)) +
                      (c.fill == ReflectorFill::Direct ? " direct" : ""));
         FrameInput input = scene(256, true);

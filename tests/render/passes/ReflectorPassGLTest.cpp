@@ -162,7 +162,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Variant{ReflectorMap::DualParaboloid, ReflectorFill::Direct, "paraboloidDirect"},
                       Variant{ReflectorMap::DualParaboloid, ReflectorFill::Resampled, "paraboloidResampled"},
                       Variant{ReflectorMap::TennisBall, ReflectorFill::Direct, "tennisBallDirect"},
-                      Variant{ReflectorMap::TennisBall, ReflectorFill::Resampled, "tennisBallResampled"}),
+                      Variant{ReflectorMap::TennisBall, ReflectorFill::Resampled, "tennisBallResampled"},
+                      Variant{ReflectorMap::Octahedral, ReflectorFill::Resampled, "octahedral"},
+                      Variant{ReflectorMap::Octahedral, ReflectorFill::Direct, "octahedralAskedDirect"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 class ReflectorFrames : public GlTest {};
@@ -311,7 +313,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Variant{ReflectorMap::DualParaboloid, ReflectorFill::Direct, "paraboloidDirect"},
                       Variant{ReflectorMap::DualParaboloid, ReflectorFill::Resampled, "paraboloidResampled"},
                       Variant{ReflectorMap::TennisBall, ReflectorFill::Direct, "tennisBallDirect"},
-                      Variant{ReflectorMap::TennisBall, ReflectorFill::Resampled, "tennisBallResampled"}),
+                      Variant{ReflectorMap::TennisBall, ReflectorFill::Resampled, "tennisBallResampled"},
+                      Variant{ReflectorMap::Octahedral, ReflectorFill::Resampled, "octahedral"},
+                      Variant{ReflectorMap::Octahedral, ReflectorFill::Direct, "octahedralAskedDirect"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(ReflectorFrames, ClosedMeshAroundTheCapturePointKeepsItsInsideFaces) {

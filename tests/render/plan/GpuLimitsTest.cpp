@@ -108,7 +108,8 @@ TEST(GpuLimits, ReflectorResolutionFitsEveryTextureItsMapNeeds) {
     for (const Case& c : {Case{ReflectorMap::Cube, ReflectorFill::Resampled, 2048},
                           Case{ReflectorMap::DualParaboloid, ReflectorFill::Direct, 4096},
                           Case{ReflectorMap::DualParaboloid, ReflectorFill::Resampled, 2048}, // its cube
-                          Case{ReflectorMap::TennisBall, ReflectorFill::Direct, 4096 / 3}}) {
+                          Case{ReflectorMap::TennisBall, ReflectorFill::Direct, 4096 / 3},
+                          Case{ReflectorMap::Octahedral, ReflectorFill::Direct, 2048}}) { // always resampled
         FrameInput input = scene({});
         input.reflector = reflector(c.map, c.fill, 100000);
         const FramePlan plan = planFrame(input, {}, {320, 180}, within(kLimits));

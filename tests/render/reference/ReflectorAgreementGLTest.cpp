@@ -2,6 +2,7 @@
 // environment map's resolution rises, for every map type and fill; on a reflector close to the walls,
 // parallax correction with a box proxy of the room lowers that error; and a rough reflector's blur follows
 // the distance to what it reflects.
+#include "render/envmap/SolidAngle.hpp"
 #include "render/imageio/ImageWriter.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
@@ -150,7 +151,8 @@ TEST_F(ReflectorError, FallsAsTheMapResolutionRisesForEveryMapType) {
         {ReflectorMap::DualParaboloid, ReflectorFill::Direct, "dual-paraboloid direct"},
         {ReflectorMap::DualParaboloid, ReflectorFill::Resampled, "dual-paraboloid resampled"},
         {ReflectorMap::TennisBall, ReflectorFill::Direct, "tennis-ball direct"},
-        {ReflectorMap::TennisBall, ReflectorFill::Resampled, "tennis-ball resampled"}};
+        {ReflectorMap::TennisBall, ReflectorFill::Resampled, "tennis-ball resampled"},
+        {ReflectorMap::Octahedral, ReflectorFill::Resampled, "octahedral"}};
     for (const Method& m : methods) {
         std::vector<double> psnr;
         for (int n : {32, 64, 128, 256}) {
@@ -167,6 +169,41 @@ TEST_F(ReflectorError, FallsAsTheMapResolutionRisesForEveryMapType) {
         for (std::size_t i = 2; i < psnr.size(); ++i)
             EXPECT_GT(psnr[i], psnr[i - 1] - 0.3) << m.name << ": a finer map must not be worse";
         EXPECT_GT(psnr.back(), psnr.front() + 2.0) << m.name;
+    }
+}
+
+// One octahedral square of n² texels holds the sphere a cube spreads over 6n²: by the two maps' mean texel
+// solid angles (envmap::solidAngleStats), an octahedral map of resolution n resolves what a cube of
+// about (n − 2·guard)/√6 does, between n/4 and n. Against the tracer, in the room of the test above, its
+// error lands there: no better than the cube at n, no worse than the cube at n/4.
+TEST_F(ReflectorError, OctahedralAgreesWithTheCubeAtTheResolutionItsTexelsPredict) {
+    constexpr double kHalf = 8.0;
+    FrameInput input = tiledRoom(kHalf);
+    input.camera.position = {0.0, 0.4, 2.6};
+    input.camera.target = {0.0, 0.0, 0.0};
+    input.camera.fovY = 50.0;
+    addBall(input, glm::dvec3(0.0), 1.0, ReflectorMap::Cube, ReflectorFill::Resampled, 32);
+    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflector->parallax->min = glm::dvec3(-kHalf);
+    input.reflector->parallax->max = glm::dvec3(kHalf);
+    trace(input);
+    auto psnrOf = [&](ReflectorMap map, int n) {
+        input.reflector->map = map;
+        input.reflector->resolution = n;
+        return reflectorPsnr(input);
+    };
+    for (int n : {128, 256}) {
+        const double octahedral = psnrOf(ReflectorMap::Octahedral, n);
+        const double cube = psnrOf(ReflectorMap::Cube, n);
+        const double quarter = psnrOf(ReflectorMap::Cube, n / 4);
+        const envmap::SolidAngleStats stats = envmap::solidAngleStats(envmap::MapType::Octahedral, n);
+        const double mean = stats.usedSolidAngle / double(stats.usedTexels);
+        const double cubeMean = 4.0 * 3.14159265358979323846 / (6.0 * n * n);
+        std::printf("[ measured ] n = %d: octahedral %.2f dB, cube %.2f dB, cube at n/4 %.2f dB; mean texel "
+                    "solid angle %.2f times the cube's (a cube of n/%.2f)\n",
+                    n, octahedral, cube, quarter, mean / cubeMean, std::sqrt(mean / cubeMean));
+        EXPECT_LE(octahedral, cube + 0.3) << n;
+        EXPECT_GE(octahedral, quarter - 0.3) << n;
     }
 }
 

@@ -221,8 +221,8 @@ std::vector<BadCase> badCases() {
           "screen-space)"}},
         {"reflector map",
          thirdNode(R"({ "mesh": { "builtin": "sphere" }, "reflector": { "map": "sphere" } })"),
-         {"nodes[2].reflector.map: unknown reflector map \"sphere\" (expected cube, dual-paraboloid or "
-          "tennis-ball)"}},
+         {"nodes[2].reflector.map: unknown reflector map \"sphere\" (expected cube, dual-paraboloid, "
+          "tennis-ball or octahedral)"}},
         {"reflector resolution",
          thirdNode(R"({ "mesh": { "builtin": "sphere" }, "reflector": { "resolution": 4 } })"),
          {"nodes[2].reflector.resolution: must be in 8..8192, got 4"}},
