@@ -286,8 +286,9 @@ void Viewport::paintGL() {
     // smaller while editing (a warning says so); Export Still draws it as the scene asks.
     options.maxMapSeconds = render::kInteractiveMapSeconds;
     m_lastReport = m_renderer->render(input, frameTarget(composedAsStored), options);
-    // A map did not fit at its planned size: the next frame draws it at one that does.
-    if (m_lastReport.drawAgain)
+    // A map did not fit at its planned size: the next frame draws it at one that does. A time-sliced map
+    // draws its next face.
+    if (m_lastReport.drawAgain || m_lastReport.mapSettling)
         QTimer::singleShot(0, this, qOverload<>(&Viewport::update));
     m_lastFrameMs = double(m_frameClock.nsecsElapsed()) * 1e-6;
     m_lastFrameTime = time;

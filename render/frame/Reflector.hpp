@@ -23,7 +23,7 @@ constexpr bool warpable(ReflectorMap map) {
     return map == ReflectorMap::DualParaboloid || map == ReflectorMap::TennisBall;
 }
 // When the map is rendered again: every frame, when something it sees changed, or once.
-enum class ReflectorUpdate { Always, OnChange, Once };
+enum class ReflectorUpdate { Always, OnChange, Once, TimeSliced };
 enum class ParallaxShape { Sphere, Box };
 // How the reflection is drawn: the map alone, or traced in the camera's image first (a reflector seen
 // directly; a rough one as a cone read from the image's blurred pyramid), the map where the trace finds
@@ -31,7 +31,7 @@ enum class ParallaxShape { Sphere, Box };
 enum class ReflectorTechnique { Map, ScreenSpace };
 static_assert(int(ReflectorMap::Octahedral) + 1 == names::kReflectorMaps.size(), "one name per value");
 static_assert(int(ReflectorFill::Resampled) + 1 == names::kReflectorFills.size(), "one name per value");
-static_assert(int(ReflectorUpdate::Once) + 1 == names::kReflectorUpdates.size(), "one name per value");
+static_assert(int(ReflectorUpdate::TimeSliced) + 1 == names::kReflectorUpdates.size(), "one name per value");
 static_assert(int(ParallaxShape::Box) + 1 == names::kParallaxShapes.size(), "one name per value");
 static_assert(int(ReflectorTechnique::ScreenSpace) + 1 == names::kReflectorTechniques.size(),
               "one name per value");
@@ -177,7 +177,8 @@ void ReflectorParams::fields(Visit&& visit) {
                 {.name = "update",
                  .label = "Update",
                  .meaning = "When the map is drawn again: every frame, when something "
-                            "it sees changes, or once",
+                            "it sees changes, once, or time-sliced: one face (one part of a "
+                            "direct fill) a frame, in turn, while any shows an older scene",
                  .type = FieldType::Choice,
                  .noun = "reflector update",
                  .choices = names::kReflectorUpdates,

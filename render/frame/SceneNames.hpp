@@ -28,10 +28,11 @@ inline constexpr std::array<Name, 2> kReflectorFills{{
     {"direct", "Direct (vertex warp)"},
     {"resampled", "Resampled cube"},
 }};
-inline constexpr std::array<Name, 3> kReflectorUpdates{{
+inline constexpr std::array<Name, 4> kReflectorUpdates{{
     {"always", "Always"},
     {"on-change", "When something it sees changes"},
     {"once", "Once"},
+    {"time-sliced", "One face a frame, while any is out of date"},
 }};
 // How the curved reflector's reflection is drawn: its environment map alone, or traced in the camera's
 // image first with the map where the trace finds nothing.

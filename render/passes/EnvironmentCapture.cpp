@@ -284,11 +284,15 @@ void EnvironmentCapture::renderCube(GLuint cube, int size, GLuint depth, const C
     glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth);
     for (int face = 0; face < 6; ++face) {
+        const bool draw = (view.faces & (1u << face)) != 0;
+        if (!draw && m_drawn)
+            continue;                                          // it keeps what an earlier update drew
         glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id()); // the callback may have bound another
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
                                cube, 0);
         prepareTarget(size, size, view.background);
-        drawFace(cubeFaceViewProjection(face, view.mapFromWorld, view.near, view.far), face);
+        if (draw)
+            drawFace(cubeFaceViewProjection(face, view.mapFromWorld, view.near, view.far), face);
     }
 }
 
@@ -297,10 +301,14 @@ void EnvironmentCapture::renderWarped(const CaptureView& view, const DrawWarped&
     glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, m_depth.id());
     for (int component = 0; component < 2; ++component) {
+        const bool draw = (view.faces & (1u << component)) != 0;
+        if (!draw && m_drawn)
+            continue;
         glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
         glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, m_map.id(), 0, component);
         prepareTarget(m_layout.width, m_layout.height, view.background);
-        drawWarped({warpParameters(m_layout, component, view.far), glm::dmat4(view.mapFromWorld)});
+        if (draw)
+            drawWarped({warpParameters(m_layout, component, view.far), glm::dmat4(view.mapFromWorld)});
     }
 }
 
@@ -329,6 +337,7 @@ void EnvironmentCapture::update(const CaptureView& view, const DrawCubeFace& dra
         renderWarped(view, drawWarped);
         finish(GL_TEXTURE_2D_ARRAY, m_map.id());
     }
+    m_drawn = true;
 }
 
 void EnvironmentCapture::resample(GLuint cubeTexture, const glm::dmat3& cubeFromMap) {

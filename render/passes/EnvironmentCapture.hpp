@@ -32,6 +32,10 @@ struct CaptureView {
     double near = 0.01;           // cube faces: nothing nearer than near·√3 is ever clipped
     double far = 100.0;           // the furthest distance the map must see
     glm::dvec3 background{0.0};   // the clear colour: what the map shows where nothing is drawn
+    // The cube faces (bit f: face f, GL order; the resampled fill's intermediate cube) or direct-fill
+    // components (bit c) drawn; the others keep what an earlier update drew (a time-sliced update).
+    unsigned faces = kAllFaces;
+    static constexpr unsigned kAllFaces = 0x3Fu;
 };
 
 // One direct-warp draw: the callback draws the scene (without the reflector) with its warp program
@@ -72,9 +76,12 @@ public:
     const CaptureSettings& settings() const { return m_settings; }
     const MapLayout& layout() const { return m_layout; }
 
-    // Renders the whole map. Cube maps and the resampled fill call drawFace for each of the six faces
-    // (into the map itself, or into the intermediate cube); the direct fill calls drawWarped for each
-    // component. The callback the fill does not use may be empty.
+    // Renders the map. Cube maps and the resampled fill call drawFace for each of the six faces in
+    // view.faces (into the map itself, or into the intermediate cube); the direct fill calls drawWarped
+    // for each component in it. The mip chain is made again, and a resampled map resampled whole from its
+    // cube. The callback the fill does not use may be empty. The first update after create() clears the
+    // faces it does not draw to the background: they would hold nothing yet (the planner draws a new map
+    // whole, so this is a guard, not a picture).
     void update(const CaptureView& view, const DrawCubeFace& drawFace, const DrawWarped& drawWarped);
 
     // The resampled fill alone: every texel of both components, guard band included, from a cube map
@@ -117,6 +124,7 @@ private:
     gl::Framebuffer m_framebuffer;
     gl::VertexArray m_emptyVao; // full-screen triangle without attributes
     gl::Program m_resample;
+    bool m_drawn = false; // every face has been drawn (or cleared) once
 };
 
 } // namespace speculum::render::envmap

@@ -51,8 +51,7 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
         frame.warnings.push_back(captured.error());
         return {};
     }
-    frame.commits.envmapSignature = map.signature;
-    frame.commits.envmapSettings = map.settingsKey;
+    recordEnvmap(map, frame.commits);
     return {};
 }
 

@@ -5,6 +5,7 @@
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
+#include <cassert>
 
 namespace speculum::render::passes {
 
@@ -112,6 +113,19 @@ void ReflectorPass::failedSizes(std::map<MapKind, FailedAllocation>& failed) con
             failed[kind] = fallback.failed();
 }
 
+namespace {
+
+// Where the plan lists the face (or direct-fill component) `index`: its mirror passes name that position.
+int positionInPlan(const EnvmapPlan& plan, int index) {
+    for (std::size_t i = 0; i < plan.faces.size(); ++i)
+        if (plan.faces[i].index == index)
+            return static_cast<int>(i);
+    assert(false && "ReflectorPass::capture(): a face the plan does not list was drawn");
+    return 0;
+}
+
+} // namespace
+
 base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
                                     const EnvironmentMirrorPrograms& mirrors,
                                     const RunFacePasses& runFacePasses) {
@@ -136,6 +150,9 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
     view.near = where.near;
     view.far = where.far;
     view.background = input.settings.background;
+    view.faces = 0; // the faces the plan lists: all of them, or a time-sliced update's one
+    for (const EnvmapFace& planned : plan.faces)
+        view.faces |= 1u << planned.index;
 
     MainPassContext faces = withProgram(context.program, context, context.unitPlane);
     // The map frame is the world's (CaptureView::mapFromWorld is the identity), so a face's view-projection
@@ -149,7 +166,7 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
     face.plan = &plan;
     auto drawFace = [&](const glm::dmat4&, int index) {
         face.faceView = envmap::cubeFaceView(index);
-        face.face = index; // the plan lists the six faces in GL's order
+        face.face = positionInPlan(plan, index);
         drawEnvironmentTarget(env, face, mirrors, faces, runFacePasses);
     };
 
@@ -168,7 +185,7 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
         component.warpAngle = warpEdgeAngle(m_capture->layout());
         component.meshFacts = &m_meshFacts;
         component.plan = &plan;
-        component.face = pass.warp.component;
+        component.face = positionInPlan(plan, pass.warp.component);
         drawEnvironmentTarget(env, component, {m_warpFlat, m_warpMirror}, warped, runFacePasses);
     };
     m_capture->update(view, drawFace, drawWarped);

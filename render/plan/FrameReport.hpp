@@ -45,6 +45,9 @@ struct FrameReport {
     // `skipped` and `warnings`), and the next frame, planned with the size found to work, draws it. A still
     // draws such a frame again; the editor's viewport draws another.
     bool drawAgain = false;
+    // A time-sliced map drew one face and others still show an older scene: the next frame draws another.
+    // The editor's viewport asks for it; a still does not (an exported frame shows the map as it stands).
+    bool mapSettling = false;
     TargetMemory memory;
     // The size the frame was drawn at: the target's, or less with RenderOptions::resolutionScale (then
     // scaled up to the target).

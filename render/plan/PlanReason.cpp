@@ -4,6 +4,7 @@
 
 #include "render/frame/SceneNames.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -290,6 +291,19 @@ std::string mapLayout(const ReasonDetails& d) {
            ")";
 }
 
+// A time-sliced update's clause: the face it redraws and how out of date the others are.
+std::string timeSlice(const ReasonDetails& d) {
+    const int others = std::max(d.mapFaces - 1, 0);
+    std::string clause = "update time-sliced: only its " + d.slicedFace + " this frame, one of " +
+                         std::to_string(d.mapFaces) + " a frame in turn while any shows an older scene; ";
+    if (d.staleFaces == 0)
+        return clause + (others == 1 ? "the other is" : "the other " + std::to_string(others) + " are") +
+               " up to date";
+    return clause + std::to_string(d.staleFaces) + " of the other " + std::to_string(others) +
+           " still show an older scene, the oldest drawn " + std::to_string(d.oldestSlice) +
+           (d.oldestSlice == 1 ? " map update" : " map updates") + " ago";
+}
+
 std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
     switch (code) {
     case PlanReason::EnvmapOutOfSight:
@@ -301,7 +315,8 @@ std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
     case PlanReason::EnvmapReusedOnce:
         return "environment map reused: update is \"once\" and the map was rendered";
     case PlanReason::EnvmapUnchanged:
-        return "environment map reused: nothing it sees changed since it was rendered (update on-change)";
+        return "environment map reused: nothing it sees changed since it was rendered (update " +
+               std::string(names::fileName(names::kReflectorUpdates, d.update)) + ")";
     case PlanReason::EnvmapNotAllocated:
         return "no environment map: none could be allocated (see the warnings)";
     default:
@@ -322,9 +337,11 @@ std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
                                         " fall back to its map where their rays leave the image"
                               : d.seenIn.empty() ? "seen directly"
                                                  : "seen in " + d.seenIn.front();
-    const char* why = code == PlanReason::EnvmapFirstMap ? "no map yet"
-                      : code == PlanReason::EnvmapAlways ? "update: always"
-                                                         : "something it sees changed (update on-change)";
+    const std::string why = code == PlanReason::EnvmapFirstMap ? "no map yet"
+                            : code == PlanReason::EnvmapAlways ? "update: always"
+                            : code == PlanReason::EnvmapChanged
+                                ? "something it sees changed (update on-change)"
+                                : timeSlice(d);
     return "renders the scene around the reflector, lit and shadowed, from its centre into " + mapLayout(d) +
            mirrors + "; the reflector is " + where + "; " + why + reflectedMeshes(d);
 }
@@ -460,6 +477,7 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::EnvmapFirstMap, "envmap-first-map", envmapSentence},
     {PlanReason::EnvmapAlways, "envmap-always", envmapSentence},
     {PlanReason::EnvmapChanged, "envmap-changed", envmapSentence},
+    {PlanReason::EnvmapTimeSliced, "envmap-time-sliced", envmapSentence},
     {PlanReason::EnvmapOutOfSight, "envmap-out-of-sight", envmapSentence},
     {PlanReason::EnvmapDoesNotFit, "envmap-does-not-fit", envmapSentence},
     {PlanReason::EnvmapReusedOnce, "envmap-reused-once", envmapSentence},
@@ -553,6 +571,7 @@ bool dropsWhatTheSceneAsks(PlanReason code) {
     case PlanReason::EnvmapFirstMap:
     case PlanReason::EnvmapAlways:
     case PlanReason::EnvmapChanged:
+    case PlanReason::EnvmapTimeSliced:
     case PlanReason::EnvmapOutOfSight:
     case PlanReason::EnvmapReusedOnce:
     case PlanReason::EnvmapUnchanged:

@@ -68,6 +68,7 @@ enum class PlanReason {
     EnvmapFirstMap,   // pass: no map yet
     EnvmapAlways,     // pass: update "always"
     EnvmapChanged,    // pass: something it sees changed
+    EnvmapTimeSliced, // pass: update "time-sliced", one face (details.slicedFace) of a map out of date
     EnvmapOutOfSight, // skip: the reflector is seen neither directly nor in a mirror
     EnvmapDoesNotFit, // skip: no map of its layout fits in GPU memory
     EnvmapReusedOnce,
@@ -171,6 +172,12 @@ struct ReasonDetails {
     ReflectorFill fill = ReflectorFill::Resampled;
     int resolution = 0;
     std::optional<int> mapMirrorDepth{}; // how deep planar mirrors reflect in the map; none: no mirrors
+    // A time-sliced update: the face (or direct-fill part) it redraws, how many faces the map has, how many
+    // others still show an older scene, and how many updates ago the oldest of those was drawn.
+    std::string slicedFace{};
+    int mapFaces = 0;
+    int staleFaces = 0;
+    int oldestSlice = 0;
 
     // The pre-filtered chain (and the map's mip chain, for the mip filter).
     int levels = 0;

@@ -455,9 +455,11 @@ void planMapCost(const FrameInput& input, double maxSeconds, FramePlan& plan) {
         std::string(names::fileName(names::kReflectorMaps, reflector.map)) + " map" +
         (full.prefilterSamples > 0.0 ? " pre-filtered with " + std::to_string(samples) + " samples a texel"
                                      : std::string());
-    const std::string often = reflector.update == ReflectorUpdate::Always
-                                  ? ", every frame (update: always)"
-                                  : ", whenever what it shows changes";
+    const std::string often =
+        reflector.update == ReflectorUpdate::Always ? ", every frame (update: always)"
+        : reflector.update == ReflectorUpdate::TimeSliced
+            ? ", spread a face a frame over the frames after a change (update: time-sliced)"
+            : ", whenever what it shows changes";
     if (maxSeconds > 0.0 && full.softwareSeconds() > maxSeconds) {
         int resolution = asked, fewer = samples;
         capMap(reflector, input.settings, maxSeconds, resolution, fewer);

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <optional>
 #include <unordered_map>
+#include <vector>
 
 namespace speculum::render {
 
@@ -20,6 +21,12 @@ struct PlannerState {
     // of the settings it was made with (envmapSettingsKey).
     std::optional<std::uint64_t> envmapSignature;
     std::optional<std::uint64_t> envmapSettings;
+    // Each face (or direct-fill component) of that map, by EnvmapFace::index: the signature of what it
+    // was last drawn with, and the update it was drawn in; envmapUpdates counts the map's updates. A
+    // time-sliced map redraws the faces whose signature is not the scene's.
+    std::vector<std::uint64_t> envmapFaceSignatures;
+    std::vector<std::uint64_t> envmapFaceUpdates;
+    std::uint64_t envmapUpdates = 0;
     // The reflector's GGX pre-filtered chain, once filtered: prefilterKey of the map and samples it holds.
     std::optional<std::uint64_t> prefilterKey;
 };
@@ -107,6 +114,11 @@ std::uint64_t envmapSignature(const FrameInput& input);
 // Hash of what the reflector's GGX pre-filtered chain holds: the map it was filtered from (its signature and
 // settings) and the samples a texel. Equal keys: the chain can be reused.
 std::uint64_t prefilterKey(std::uint64_t envmapSignature, std::uint64_t envmapSettings, int samples);
+
+// Records in `state` what the map holds once `map` is drawn: the scene's signature in each face drawn,
+// stamped with this update. A map drawn whole (its first, or after its settings changed) starts the
+// record afresh. The envmap pass's executor calls it; tests play frames with it.
+void recordEnvmap(const EnvmapPlan& map, PlannerState& state);
 
 // Whether the reflector's world bounds can be seen by the camera or in one of the mirror views planned
 // in `plan` (its reflected frustum, with the oblique near plane, narrowed to the mirror's pixels).

@@ -258,6 +258,62 @@ void planPrefilter(const FrameInput& input, const PlannerState& state, std::opti
     plan.passes.push_back(std::move(pass));
 }
 
+// The time-sliced update: the face drawn longest ago among those whose signature is not the scene's
+// (round robin while the scene keeps changing), alone in map.faces; EnvmapUnchanged if every face is
+// up to date. `slice` says which face, and how out of date the others are: their age counts map updates,
+// this one included (1: drawn by the update before it).
+PlanReason timeSlicedUpdate(const PlannerState& state, EnvmapPlan& map, ReasonDetails& slice) {
+    auto signatureOf = [&](int index) {
+        const auto i = static_cast<std::size_t>(index);
+        return i < state.envmapFaceSignatures.size() ? std::optional(state.envmapFaceSignatures[i])
+                                                     : std::nullopt;
+    };
+    auto updateOf = [&](int index) {
+        const auto i = static_cast<std::size_t>(index);
+        return i < state.envmapFaceUpdates.size() ? state.envmapFaceUpdates[i] : 0;
+    };
+    const EnvmapFace* chosen = nullptr;
+    for (const EnvmapFace& face : map.faces)
+        if (signatureOf(face.index) != map.signature &&
+            (!chosen || updateOf(face.index) < updateOf(chosen->index)))
+            chosen = &face;
+    if (!chosen)
+        return PlanReason::EnvmapUnchanged;
+    slice.slicedFace = chosen->label;
+    slice.mapFaces = static_cast<int>(map.faces.size());
+    for (const EnvmapFace& face : map.faces)
+        if (&face != chosen && signatureOf(face.index) != map.signature) {
+            ++slice.staleFaces;
+            slice.oldestSlice =
+                std::max(slice.oldestSlice, static_cast<int>(std::min<std::uint64_t>(
+                                                state.envmapUpdates + 1 - updateOf(face.index), 1u << 30)));
+        }
+    const EnvmapFace face = *chosen;
+    map.faces = {face};
+    return PlanReason::EnvmapTimeSliced;
+}
+
+// Why the map is drawn this frame (or reused): its update policy against what the planner state holds.
+// A time-sliced update leaves in map.faces only the face it draws.
+PlanReason mapUpdate(const Reflector& reflector, const PlannerState& state, bool preview, EnvmapPlan& map,
+                     ReasonDetails& slice) {
+    if (!state.envmapSignature || state.envmapSettings != map.settingsKey)
+        return PlanReason::EnvmapFirstMap; // drawn whole, whatever the policy
+    if (preview && reflector.update != ReflectorUpdate::Once)
+        return PlanReason::PreviewEnvmapHeld;
+    switch (reflector.update) {
+    case ReflectorUpdate::Always:
+        return PlanReason::EnvmapAlways;
+    case ReflectorUpdate::Once:
+        return PlanReason::EnvmapReusedOnce;
+    case ReflectorUpdate::TimeSliced:
+        return timeSlicedUpdate(state, map, slice);
+    case ReflectorUpdate::OnChange:
+        break;
+    }
+    return *state.envmapSignature == map.signature ? PlanReason::EnvmapUnchanged : PlanReason::EnvmapChanged;
+}
+
 } // namespace
 
 void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
@@ -278,19 +334,14 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
         plan.skipped.push_back({reflector.name, PlanReason::EnvmapDoesNotFit});
         return;
     }
-    const bool haveMap = state.envmapSignature && state.envmapSettings == envmapSettingsKey(reflector);
-    PlanReason why = PlanReason::EnvmapChanged;
-    if (!haveMap) {
-        why = PlanReason::EnvmapFirstMap;
-    } else if (plan.preview.active() && reflector.update != ReflectorUpdate::Once) {
-        why = PlanReason::PreviewEnvmapHeld;
-    } else if (reflector.update == ReflectorUpdate::Always) {
-        why = PlanReason::EnvmapAlways;
-    } else if (reflector.update == ReflectorUpdate::Once) {
-        why = PlanReason::EnvmapReusedOnce;
-    } else if (*state.envmapSignature == envmapSignature(input)) {
-        why = PlanReason::EnvmapUnchanged;
-    }
+    EnvmapPlan map;
+    map.target = reflector.name;
+    map.capture = envmapCapture(input);
+    map.signature = envmapSignature(input);
+    map.settingsKey = envmapSettingsKey(reflector);
+    map.faces = envmapFaces(reflector, map.capture);
+    ReasonDetails slice;
+    const PlanReason why = mapUpdate(reflector, state, plan.preview.active(), map, slice);
     if (why == PlanReason::EnvmapReusedOnce || why == PlanReason::EnvmapUnchanged ||
         why == PlanReason::PreviewEnvmapHeld) {
         plan.skipped.push_back({reflector.name, why, {.update = reflector.update}});
@@ -301,6 +352,7 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
     pass.kind = PassKind::Envmap;
     pass.target = reflector.name;
     pass.code = why;
+    pass.details = std::move(slice);
     pass.details.seenIn = std::move(seenIn);
     pass.details.screenSpaceFallbackOf = std::move(fallbackOf);
     pass.details.map = reflector.map;
@@ -311,16 +363,30 @@ void planReflector(const FrameInput& input, const PlannerState& state, const Pla
         pass.details.mapMirrorDepth = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
     plan.passes.push_back(std::move(pass));
 
-    EnvmapPlan map;
-    map.target = reflector.name;
-    map.capture = envmapCapture(input);
-    map.signature = envmapSignature(input);
-    map.settingsKey = envmapSettingsKey(reflector);
-    map.faces = envmapFaces(reflector, map.capture);
     planEnvmapMirrors(input, map);
     const std::uint64_t signature = map.signature;
     plan.envmap = std::move(map);
     planPrefilter(input, state, signature, plan);
+}
+
+void recordEnvmap(const EnvmapPlan& map, PlannerState& commits) {
+    const bool whole = commits.envmapSettings != map.settingsKey;
+    commits.envmapSignature = map.signature;
+    commits.envmapSettings = map.settingsKey;
+    if (whole) {
+        commits.envmapFaceSignatures.clear();
+        commits.envmapFaceUpdates.clear();
+    }
+    ++commits.envmapUpdates;
+    for (const EnvmapFace& face : map.faces) {
+        const auto i = static_cast<std::size_t>(face.index);
+        if (commits.envmapFaceSignatures.size() <= i) {
+            commits.envmapFaceSignatures.resize(i + 1, 0);
+            commits.envmapFaceUpdates.resize(i + 1, 0);
+        }
+        commits.envmapFaceSignatures[i] = map.signature;
+        commits.envmapFaceUpdates[i] = commits.envmapUpdates;
+    }
 }
 
 void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {

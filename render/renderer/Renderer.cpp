@@ -289,6 +289,9 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
     const FrameInput& input = frame.planned ? *frame.planned : requested;
     frame.maps = allocateMaps(input, plan, r, report.warnings);
     report.drawAgain = frame.maps.fellBack;
+    for (const PlannedPass& pass : plan.passes)
+        report.mapSettling =
+            report.mapSettling || (pass.code == PlanReason::EnvmapTimeSliced && pass.details.staleFaces > 0);
     frame.projection = cameraProjection(input, viewport);
     if (options.tile) {
         const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,

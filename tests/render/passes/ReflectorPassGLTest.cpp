@@ -5,9 +5,11 @@
 #include "render/plan/Planner.hpp"
 #include "support/GlTest.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
+#include <memory>
 #include <optional>
 
 namespace speculum::test {
@@ -189,6 +191,53 @@ TEST_F(ReflectorFrames, StaticSceneRendersItsEnvironmentOnce) {
     input.items[0].world[3].x += 1.0;
     renderImage(input, 64, 64);
     EXPECT_EQ(countEnvmap(lastReport()), 1);
+}
+
+// The largest difference of any channel between two images of one size.
+float largestDifference(const Image& a, const Image& b) {
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < a.rgba.size() && i < b.rgba.size(); ++i)
+        worst = std::max(worst, std::abs(a.rgba[i] - b.rgba[i]));
+    return a.rgba.size() == b.rgba.size() ? worst : 1e9f;
+}
+
+TEST_F(ReflectorFrames, TimeSlicedMapRedrawsOneFaceAFrameAndConvergesToTheFullMap) {
+    FrameInput input = ballInRoom(ReflectorMap::Cube, ReflectorFill::Resampled);
+    input.reflector->update = ReflectorUpdate::TimeSliced;
+    renderImage(input, 64, 64);
+    ASSERT_EQ(lastReport().countRan(PassKind::Envmap), 1u);
+    // Every wall takes its neighbour's colour: every face of the map is out of date.
+    for (int wall = 0; wall < 6; ++wall)
+        input.items[static_cast<std::size_t>(wall)].material = emissive(kWallColors[(wall + 1) % 6]);
+    // What a map drawn whole shows, from a renderer of its own.
+    auto created = Renderer::create();
+    ASSERT_TRUE(created.ok()) << created.error();
+    std::unique_ptr<Renderer> other = std::move(*created);
+    auto whole = renderStill(*other, input, StillSettings{64, 64, 1});
+    ASSERT_TRUE(whole.ok()) << whole.error();
+    other.reset();
+
+    std::vector<int> faces;
+    std::vector<float> differences;
+    for (int frame = 0; frame < 6; ++frame) {
+        const Image image = renderImage(input, 64, 64);
+        ASSERT_EQ(lastReport().countRan(PassKind::Envmap), 1u) << "frame " << frame;
+        ASSERT_TRUE(lastReport().plan.envmap.has_value());
+        for (const EnvmapFace& face : lastReport().plan.envmap->faces)
+            faces.push_back(face.index);
+        differences.push_back(largestDifference(image, whole->image));
+        // The editor draws another frame while faces are out of date.
+        EXPECT_EQ(lastReport().mapSettling, frame < 5) << "frame " << frame;
+    }
+    EXPECT_EQ(faces, (std::vector{0, 1, 2, 3, 4, 5})) << "one face a frame, in turn";
+    // Until the last face is drawn the ball still shows some old walls; then exactly the whole map.
+    for (int frame = 0; frame < 5; ++frame) {
+        EXPECT_GT(differences[static_cast<std::size_t>(frame)], 0.5f) << "frame " << frame;
+    }
+    EXPECT_LE(differences[5], 1e-6f);
+    // Converged: nothing more to draw while nothing changes.
+    renderImage(input, 64, 64);
+    EXPECT_EQ(lastReport().countRan(PassKind::Envmap), 0u);
 }
 
 TEST_F(ReflectorFrames, MirrorsInTheEnvironmentReflectToTheirDepthBudget) {

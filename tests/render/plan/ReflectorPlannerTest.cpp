@@ -225,6 +225,85 @@ TEST(ReflectorPlanner, OnceKeepsTheFirstMapAndAlwaysRendersEveryFrame) {
     EXPECT_EQ(plan.passes[1].code, PlanReason::EnvmapAlways);
 }
 
+// The envmap pass of a plan; none when the plan draws no map.
+const PlannedPass* envmapPass(const FramePlan& plan) {
+    for (const auto& p : plan.passes)
+        if (p.kind == PassKind::Envmap)
+            return &p;
+    return nullptr;
+}
+
+// Plans a frame and records what its map pass drew, as the renderer does; the faces it drew.
+std::vector<int> playFrame(const FrameInput& input, PlannerState& state, FramePlan* planned = nullptr) {
+    const FramePlan plan = planFrame(input, state);
+    std::vector<int> drawn;
+    if (plan.envmap) {
+        for (const EnvmapFace& face : plan.envmap->faces)
+            drawn.push_back(face.index);
+        recordEnvmap(*plan.envmap, state);
+    }
+    if (planned)
+        *planned = plan;
+    return drawn;
+}
+
+TEST(ReflectorPlanner, TimeSlicedRedrawsOneOutOfDateFaceAFrameInTurn) {
+    FrameInput input = chromeScene(ReflectorUpdate::TimeSliced);
+    PlannerState state;
+    // The first map is drawn whole, whatever the policy.
+    EXPECT_EQ(playFrame(input, state), (std::vector{0, 1, 2, 3, 4, 5}));
+    EXPECT_TRUE(playFrame(input, state).empty());
+
+    // The box moves once: one face a frame, in GL's order, until every face shows the new scene.
+    input.items[0].world[3].y += 0.5;
+    for (int frame = 0; frame < 6; ++frame) {
+        FramePlan plan;
+        EXPECT_EQ(playFrame(input, state, &plan), std::vector{frame}) << "frame " << frame;
+        const PlannedPass* pass = envmapPass(plan);
+        ASSERT_NE(pass, nullptr);
+        EXPECT_EQ(pass->code, PlanReason::EnvmapTimeSliced);
+        EXPECT_EQ(pass->details.mapFaces, 6);
+        EXPECT_EQ(pass->details.staleFaces, 5 - frame);
+        if (frame == 0) {
+            EXPECT_NE(pass->reason().find("only its +X face this frame"), std::string::npos)
+                << pass->reason();
+            EXPECT_NE(pass->reason().find("5 of the other 5 still show an older scene, the oldest drawn 1 "
+                                          "map update ago"),
+                      std::string::npos)
+                << pass->reason();
+        }
+        if (frame == 5) {
+            EXPECT_NE(pass->reason().find("the other 5 are up to date"), std::string::npos) << pass->reason();
+        }
+    }
+    FramePlan rest;
+    EXPECT_TRUE(playFrame(input, state, &rest).empty()) << "converged: nothing more to draw";
+    EXPECT_EQ(skipCode(rest, "Ball"), PlanReason::EnvmapUnchanged);
+    EXPECT_NE(rest.skipped.front().reason().find("(update time-sliced)"), std::string::npos);
+
+    // Moving every frame: the faces still come round in turn, the one drawn longest ago first.
+    std::vector<int> order;
+    for (int frame = 0; frame < 9; ++frame) {
+        input.items[0].world[3].x += 0.1;
+        for (int face : playFrame(input, state))
+            order.push_back(face);
+    }
+    EXPECT_EQ(order, (std::vector{0, 1, 2, 3, 4, 5, 0, 1, 2}));
+
+    // A direct-fill map slices by its two parts.
+    input.reflector->map = ReflectorMap::DualParaboloid;
+    input.reflector->fill = ReflectorFill::Direct;
+    EXPECT_EQ(playFrame(input, state), (std::vector{0, 1})) << "new settings: drawn whole";
+    input.items[0].world[3].x += 0.1;
+    FramePlan plan;
+    EXPECT_EQ(playFrame(input, state, &plan), std::vector{0});
+    ASSERT_NE(envmapPass(plan), nullptr);
+    EXPECT_NE(envmapPass(plan)->reason().find("only its −Z half this frame, one of 2"), std::string::npos)
+        << envmapPass(plan)->reason();
+    EXPECT_EQ(playFrame(input, state), std::vector{1});
+    EXPECT_TRUE(playFrame(input, state).empty());
+}
+
 TEST(ReflectorPlanner, CaptureLooksFromTheCentreOfTheReflectorsBounds) {
     FrameInput input = chromeScene();
     input.reflector->world =

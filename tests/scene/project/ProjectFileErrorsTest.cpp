@@ -237,8 +237,8 @@ std::vector<BadCase> badCases() {
          {"nodes[2].reflector.fill: unknown reflector fill \"warp\" (expected direct or resampled)"}},
         {"reflector update",
          thirdNode(R"({ "mesh": { "builtin": "sphere" }, "reflector": { "update": "never" } })"),
-         {"nodes[2].reflector.update: unknown reflector update \"never\" (expected always, on-change or "
-          "once)"}},
+         {"nodes[2].reflector.update: unknown reflector update \"never\" (expected always, on-change, "
+          "once or time-sliced)"}},
         {"reflector mirror depth",
          thirdNode(R"({ "mesh": { "builtin": "sphere" }, "reflector": { "mirrorDepth": 17 } })"),
          {"nodes[2].reflector.mirrorDepth: must be in 0..16, got 17"}},
