@@ -138,8 +138,8 @@ std::string usageText() {
            "  speculum --recover FILE                     open the editor on an editor's recovery file\n"
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference [--samples N]] "
            "[--screen-space-sources] [--keep-going]\n"
-           "  speculum explain PROJECT [--size WxH] [--time T] [--frame N] [--preview SCALE[,CUT] "
-           "[--preview-drag]] [--json]\n"
+           "  speculum explain PROJECT [--size WxH] [--time T] [--frame N [--animated]] "
+           "[--preview SCALE[,CUT] [--preview-drag]] [--json]\n"
            "  speculum bench PROJECT --out DIR [--quick] [--size WxH] [--keep-going]\n"
            "  speculum time PROJECT [--size WxH] [--frames N] [--animated] [--time T] [--half-float] "
            "[--json]\n"
@@ -153,7 +153,8 @@ std::string usageText() {
            "--screen-space-sources draws each screen-space mirror in the colour of where its reflection\n"
            "comes from: green, met in the image; blue, the reflector's map; red, the background.\n"
            "explain renders a frame and lists the passes that ran and the effects skipped, with reasons;\n"
-           "--frame N explains the Nth of N identical frames, showing what a static scene reuses.\n"
+           "--frame N explains the Nth of N identical frames, showing what a static scene reuses;\n"
+           "--animated plays them 1/60 s apart from --time, as the playing editor draws them.\n"
            "--preview SCALE[,CUT] explains the frame as the editor previews it while the view moves: drawn\n"
            "at SCALE (0.125..1) of the width and height, CUT levels of mirror nesting left out, the\n"
            "environment map held; --preview-drag as while a handle is dragged (shadow maps drawn smaller).\n"
@@ -318,6 +319,8 @@ base::Status checkGivenOnceWithAValue(const CLI::App& app, const std::vector<std
 // explain's own options: which frame, and which preview of it.
 void addExplainOptions(CLI::App& app, Typed& typed, CliOptions& o) {
     app.add_option("--frame", typed.frame, "Explain the Nth of N identical frames (1..100)")->type_name("N");
+    app.add_flag("--animated", o.animated,
+                 "With --frame: play the N frames 1/60 s apart from --time, as the playing editor does");
     app.add_option("--preview", typed.preview,
                    "Explain the editor's preview: SCALE (0.125..1) of the width and height, CUT mirror "
                    "levels left out, the environment map held")

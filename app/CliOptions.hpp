@@ -40,8 +40,9 @@ struct CliOptions {
     // render, bench, export: go on without a referenced model or texture that is missing or unreadable
     // (each is then a warning); without it such a file is an error and nothing is written.
     bool keepGoing = false;
-    int frames = 100;       // time: frames timed after the warm-up
-    bool animated = false;  // time: the scene's animation plays (1/60 s a frame), maps re-rendered as needed
+    int frames = 100; // time: frames timed after the warm-up
+    bool animated =
+        false; // time, explain --frame: the animation plays (1/60 s a frame), maps redrawn as needed
     bool halfFloat = false; // time: the camera's view always in half float with its composite (to compare)
     bool quiet = false;     // --quiet: no progress on stderr (warnings and errors still)
     std::string helpText;   // Help: what to print (the usage, or one command's own help)

@@ -13,6 +13,7 @@
 #include "render/reference/Tracer.hpp"
 #include "render/renderer/Renderer.hpp"
 #include "render/renderer/StillRenderer.hpp"
+#include "scene/evaluate/Snapshot.hpp"
 #include "scene/export/GltfExport.hpp"
 #include "scene/export/StillExport.hpp"
 
@@ -107,27 +108,38 @@ struct HeadlessFrame {
     std::unique_ptr<render::Renderer> renderer;
     render::FrameInput input;
     std::string glDescription;
+    // The project itself, for `explain --animated`, which evaluates it at each frame's time.
+    std::unique_ptr<ProjectFrame> project;
 };
 
 // Loads the project and evaluates it at options.time; no GL needed. A missing model or texture is an
 // error unless --keep-going (explain: reported by the frame). For a command that writes, the output is
 // then checked against every file the project reads, before any rendering.
-base::Result<render::FrameInput> loadFrameInput(const CliOptions& options) {
+base::Result<ProjectFrame> loadProject(const CliOptions& options) {
     auto frame = loadProjectFrame(options.project, options.time, policyOf(options));
     if (!frame)
         return base::Error{commandName(options) + ": " + frame.error()};
     if (!options.output.empty())
         if (base::Status distinct = checkNotAnInput(options.output, frame->inputs); !distinct)
             return base::Error{commandName(options) + ": " + distinct.error()};
-    return std::move(frame->input);
+    return frame;
+}
+
+base::Result<render::FrameInput> loadFrameInput(const CliOptions& options) {
+    auto project = loadProject(options);
+    if (!project)
+        return base::Error{project.error()};
+    return std::move(project->input);
 }
 
 base::Result<HeadlessFrame> prepare(const CliOptions& options) {
-    auto input = loadFrameInput(options);
-    if (!input)
-        return base::Error{input.error()};
+    auto project = loadProject(options);
+    if (!project)
+        return base::Error{project.error()};
     HeadlessFrame frame;
-    frame.input = std::move(*input);
+    frame.input = std::move(project->input);
+    if (options.animated)
+        frame.project = std::make_unique<ProjectFrame>(std::move(*project));
     auto context = render::gl::HeadlessContext::create();
     if (!context)
         return base::Error{"no OpenGL: " + context.error()};
@@ -189,18 +201,32 @@ scene::StillExportSettings stillSettings(const CliOptions& options) {
 
 // ---- explain: the frame, then its passes as JSON (--json) or as a table ----
 
+// The scene time of the explained frame: --time, or with --animated the Nth frame's, 1/60 s apart.
+double explainedTime(const CliOptions& options) {
+    return options.animated ? options.time + (options.frame - 1) * kAnimationFrameStep : options.time;
+}
+
 // Renders the frame `explain` describes, offscreen at the requested size. The frames before it (--frame N
-// explains the Nth) warm the renderer's caches exactly as a live viewport would.
+// explains the Nth) warm the renderer's caches exactly as a live viewport would; with --animated each is
+// the scene at its own time, as the playing editor draws it.
 base::Result<render::StillResult> renderExplainedFrame(HeadlessFrame& frame, const CliOptions& options) {
     // In one piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
     render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
     settings.preview = options.preview;
     const auto untilStopped = [](double, const std::string&) { return !StopOnSignal::requested(); };
-    for (int warmUp = 1; warmUp < options.frame; ++warmUp)
-        if (auto earlier = render::renderStill(*frame.renderer, frame.input, settings, untilStopped);
-            !earlier)
-            return base::Error{earlier.error()};
-    return render::renderStill(*frame.renderer, frame.input, settings, untilStopped);
+    for (int number = 1; number <= options.frame; ++number) {
+        if (frame.project && number > 1) {
+            std::vector<scene::Warning> repeated; // the first frame's warnings were reported already
+            frame.input =
+                scene::snapshot(*frame.project->scene, options.time + (number - 1) * kAnimationFrameStep,
+                                *frame.project->meshes, repeated);
+            useCheckedTextures(frame.input, frame.project->textures);
+        }
+        auto drawn = render::renderStill(*frame.renderer, frame.input, settings, untilStopped);
+        if (!drawn || number == options.frame)
+            return drawn;
+    }
+    return base::Error{"explain: no frame to explain"}; // --frame is at least 1
 }
 
 QString jsonText(std::string_view name) {
@@ -294,6 +320,8 @@ void printExplanationJson(const CliOptions& options, const HeadlessFrame& frame,
                      {"size", QString::fromStdString(sizeText(options.width, options.height))},
                      {"time", options.time},
                      {"frame", options.frame},
+                     {"animated", options.animated},
+                     {"frameTime", explainedTime(options)},
                      {"preview", preview},
                      {"tiles", still.tiles},
                      {"frameGpuMs", report.gpuMs},
@@ -323,7 +351,10 @@ void printExplanationText(const CliOptions& options, const HeadlessFrame& frame,
                           const render::StillResult& still, const render::EnvmapPlan* drawnEnvmap) {
     const render::FrameReport& report = still.firstSample;
     std::printf("Frame %s at t = %g s on %s\n\n", sizeText(options.width, options.height).c_str(),
-                options.time, frame.glDescription.c_str());
+                explainedTime(options), frame.glDescription.c_str());
+    if (options.animated && options.frame > 1)
+        std::printf("The last of %d frames played 1/60 s apart from t = %g s.\n\n", options.frame,
+                    options.time);
     if (still.tiles > 1)
         std::printf("Larger than this GPU renders in one piece: the passes of the first of %d tiles.\n\n",
                     still.tiles);

@@ -46,6 +46,10 @@ struct ProjectFiles {
 
 // A project loaded for a headless command: the frame at one time, and the mesh library its meshes came
 // from (kept, so that a command can ask for other tessellations of the same built-ins).
+// Scene time between frames where a command plays the animation (`time --animated`,
+// `explain --frame N --animated`), as the playing editor's 60 frames a second.
+inline constexpr double kAnimationFrameStep = 1.0 / 60.0;
+
 struct ProjectFrame {
     render::FrameInput input;
     std::unique_ptr<scene::MeshLibrary> meshes;

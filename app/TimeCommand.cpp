@@ -35,7 +35,6 @@ constexpr int kWarmUpFrames = 5;
 // Frames drawn again with a timer query per pass, for the shares: queries make llvmpipe flush between
 // passes, so the timed frames run without them.
 constexpr int kProfiledFrames = 20;
-constexpr double kFrameStep = 1.0 / 60.0; // --animated: seconds of scene time per frame
 
 struct KindTime {
     double gpuMs = 0.0;
@@ -117,8 +116,9 @@ public:
 private:
     const render::FrameInput& nextInput() {
         if (m_options.animated) {
-            m_project.input = scene::snapshot(*m_project.scene, m_options.time + m_frameNumber * kFrameStep,
-                                              *m_project.meshes, m_snapshotWarnings);
+            m_project.input =
+                scene::snapshot(*m_project.scene, m_options.time + m_frameNumber * kAnimationFrameStep,
+                                *m_project.meshes, m_snapshotWarnings);
             useCheckedTextures(m_project.input, m_project.textures);
             m_snapshotWarnings.clear();
         }

@@ -104,7 +104,7 @@ TEST_F(Cli, EachCommandHasItsOwnHelp) {
         {"render",
          {"--output", "--size", "--ssaa", "--time", "--reference", "--samples", "--screen-space-sources",
           "--keep-going"}},
-        {"explain", {"--size", "--time", "--frame", "--preview", "--preview-drag", "--json"}},
+        {"explain", {"--size", "--time", "--frame", "--animated", "--preview", "--preview-drag", "--json"}},
         {"bench", {"--out", "--size", "--quick", "--keep-going"}},
         {"time", {"--size", "--frames", "--animated", "--half-float", "--json"}},
         {"export", {"--output", "--keep-going"}},
@@ -371,6 +371,47 @@ TEST_F(Cli, ExplainOfASecondStaticFrameShowsTheReusedMaps) {
     EXPECT_NE(std::find(codes.begin(), codes.end(), "shadow-map-reused"), codes.end()) << second.out;
     EXPECT_NE(std::find(codes.begin(), codes.end(), "envmap-unchanged"), codes.end()) << second.out;
     EXPECT_NE(speculum("explain " + chrome + " --frame 0").status, 0);
+}
+
+// `explain --frame N --animated` plays the frames as the editor does, so a time-sliced map shows the face
+// each frame redraws while something moves; without --animated the frames are identical and it rests.
+TEST_F(Cli, ExplainOfAnAnimatedFrameShowsTheTimeSlicedFace) {
+    const fs::path project = m_dir / "sliced.speculum.json";
+    std::ofstream(project) << R"({"format": "speculum-scene", "version": 1,
+        "camera": {"position": [0, 1, 6], "target": [0, 0.5, 0]},
+        "nodes": [
+          {"name": "Floor", "transform": {"scale": [8, 1, 8]}, "mesh": {"builtin": "plane"}},
+          {"name": "Hopper", "transform": {"translate": [2, 0.5, 0]}, "mesh": {"builtin": "box"},
+           "animation": {"bounce": {"height": 1, "period": 2}}},
+          {"name": "Ball", "transform": {"translate": [0, 1, 0]}, "mesh": {"builtin": "sphere"},
+           "reflector": {"resolution": 32, "update": "time-sliced"}},
+          {"name": "Light", "transform": {"translate": [0, 4, 2]}, "light": {"type": "point"}}]})";
+    auto envmapPass = [](const CliRun& run) {
+        const QJsonObject root = QJsonDocument::fromJson(QByteArray::fromStdString(run.out)).object();
+        for (const auto& value : root["passes"].toArray())
+            if (value.toObject()["kind"].toString() == "envmap")
+                return value.toObject();
+        return QJsonObject{};
+    };
+    const CliRun played =
+        speculum("explain " + project.string() + " --size 64x36 --json --frame 3 --animated");
+    ASSERT_EQ(played.status, 0) << played.err;
+    const QJsonObject pass = envmapPass(played);
+    EXPECT_EQ(pass["code"].toString(), "envmap-time-sliced") << played.out;
+    // Frame 1 drew the map whole, frame 2 its +X face, frame 3 the −X face.
+    EXPECT_TRUE(pass["reason"].toString().contains("only its −X face this frame")) << played.out;
+    const QJsonObject root = QJsonDocument::fromJson(QByteArray::fromStdString(played.out)).object();
+    EXPECT_TRUE(root["animated"].toBool());
+    EXPECT_NEAR(root["frameTime"].toDouble(), 2.0 / 60.0, 1e-9);
+
+    const CliRun text = speculum("explain " + project.string() + " --size 64x36 --frame 3 --animated");
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_NE(text.out.find("The last of 3 frames played 1/60 s apart"), std::string::npos) << text.out;
+
+    const CliRun rested = speculum("explain " + project.string() + " --size 64x36 --json --frame 3");
+    ASSERT_EQ(rested.status, 0) << rested.err;
+    EXPECT_TRUE(envmapPass(rested).isEmpty()) << "identical frames: the map rests";
+    EXPECT_NE(rested.out.find("envmap-unchanged"), std::string::npos) << rested.out;
 }
 
 // `explain --preview SCALE[,CUT]` explains the frame as the editor's preview at that level draws it: every
