@@ -59,8 +59,11 @@ int usableMipLevels(const MapLayout& layout) {
     const int full = mipLevelCount(layout.width, layout.height);
     if (layout.type != MapType::Octahedral)
         return full;
+    // Level k keeps the sides on texel boundaries while 2^k divides the band and the size (GL rounds odd
+    // sizes down, which would move them).
     int levels = 1;
-    for (int band = layout.guard; band > 1; band /= 2)
+    for (int step = 2; layout.guard % step == 0 && layout.width % step == 0 && layout.height % step == 0;
+         step *= 2)
         ++levels;
     return std::min(levels, full);
 }

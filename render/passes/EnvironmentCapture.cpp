@@ -39,11 +39,11 @@ void allocateCube(GLuint texture, int size, GLenum format, bool mipmaps) {
     glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
 }
 
-void allocateArray(GLuint texture, int width, int height, GLenum format, int levels) {
+void allocateArray(GLuint texture, int width, int height, int layers, GLenum format, int levels) {
     glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
     for (int level = 0; level < levels; ++level)
         glTexImage3D(GL_TEXTURE_2D_ARRAY, level, static_cast<GLint>(format), std::max(1, width >> level),
-                     std::max(1, height >> level), 2, 0, GL_RGBA, GL_FLOAT, nullptr);
+                     std::max(1, height >> level), layers, 0, GL_RGBA, GL_FLOAT, nullptr);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER,
                     levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
@@ -228,7 +228,7 @@ base::Result<EnvironmentCapture> EnvironmentCapture::create(const CaptureSetting
                                                       settings.mipmaps);
                                      else
                                          allocateArray(capture.m_map.id(), layout.width, layout.height,
-                                                       settings.colorFormat, levels);
+                                                       layout.components, settings.colorFormat, levels);
                                  });
         !s)
         return sizeError(s);

@@ -42,8 +42,8 @@ void allocateLevels(GLenum target, GLuint texture, const MapLayout& l, int level
                 glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, level, static_cast<GLint>(format), w, h,
                              0, GL_RGBA, GL_FLOAT, nullptr);
         else
-            glTexImage3D(GL_TEXTURE_2D_ARRAY, level, static_cast<GLint>(format), w, h, 2, 0, GL_RGBA,
-                         GL_FLOAT, nullptr);
+            glTexImage3D(GL_TEXTURE_2D_ARRAY, level, static_cast<GLint>(format), w, h, l.components, 0,
+                         GL_RGBA, GL_FLOAT, nullptr);
     }
     glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, levels - 1);
@@ -107,7 +107,7 @@ base::Status GgxPrefilter::filter(const EnvironmentCapture& map, int samples) {
     samples = std::clamp(samples, 1, 4096);
     const MapLayout& l = m_layout;
     const bool cube = m_target == GL_TEXTURE_CUBE_MAP;
-    const int components = cube ? 6 : 2;
+    const int components = l.components; // 6 faces, or the layers of a 2D array (one, octahedral)
     gl::FramebufferBinding keepBinding;
     const gl::PlainDrawState plain;
 

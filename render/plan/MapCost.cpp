@@ -31,9 +31,14 @@ MapCost mapCost(const Reflector& reflector, int resolution, const Settings& sett
         return cost;
     }
     const envmap::MapLayout layout = envmap::makeLayout(mapTypeOf(reflector.map), resolution);
-    cost.texels = double(layout.components) * layout.width * layout.height;
+    const double mapTexels = double(layout.components) * layout.width * layout.height;
+    // A resampled map (the octahedral map's only fill) draws a cube of its resolution first, then
+    // resamples it into its own texels.
+    const bool resampled = reflector.map != ReflectorMap::Cube &&
+                           (!warpable(reflector.map) || reflector.fill == ReflectorFill::Resampled);
+    cost.texels = resampled ? 6.0 * resolution * resolution + mapTexels : mapTexels;
     if (reflector.roughness > 0.0 && settings.glossyFilter != GlossyFilter::Mip) {
-        cost.prefilterSamples = cost.texels / 3.0 * std::max(samples, 1);
+        cost.prefilterSamples = mapTexels / 3.0 * std::max(samples, 1);
     }
     return cost;
 }

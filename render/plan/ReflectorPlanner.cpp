@@ -293,24 +293,36 @@ PlanReason timeSlicedUpdate(const PlannerState& state, EnvmapPlan& map, ReasonDe
     return PlanReason::EnvmapTimeSliced;
 }
 
+// Whether every face of the map was last drawn with one signature: a whole map of one scene, not one a
+// time-sliced update left part done (before its policy changed). A state with no record of faces holds a
+// map drawn whole.
+bool facesAgree(const PlannerState& state, const EnvmapPlan& map) {
+    if (state.envmapFaceSignatures.empty())
+        return true;
+    for (const EnvmapFace& face : map.faces) {
+        const auto i = static_cast<std::size_t>(face.index);
+        if (i >= state.envmapFaceSignatures.size() || state.envmapFaceSignatures[i] != state.envmapSignature)
+            return false;
+    }
+    return true;
+}
+
 // Why the map is drawn this frame (or reused): its update policy against what the planner state holds.
-// A time-sliced update leaves in map.faces only the face it draws.
+// A time-sliced update leaves in map.faces only the face it draws; the other policies draw whole a map
+// that one left part done.
 PlanReason mapUpdate(const Reflector& reflector, const PlannerState& state, bool preview, EnvmapPlan& map,
                      ReasonDetails& slice) {
     if (!state.envmapSignature || state.envmapSettings != map.settingsKey)
         return PlanReason::EnvmapFirstMap; // drawn whole, whatever the policy
     if (preview && reflector.update != ReflectorUpdate::Once)
         return PlanReason::PreviewEnvmapHeld;
-    switch (reflector.update) {
-    case ReflectorUpdate::Always:
-        return PlanReason::EnvmapAlways;
-    case ReflectorUpdate::Once:
-        return PlanReason::EnvmapReusedOnce;
-    case ReflectorUpdate::TimeSliced:
+    if (reflector.update == ReflectorUpdate::TimeSliced)
         return timeSlicedUpdate(state, map, slice);
-    case ReflectorUpdate::OnChange:
-        break;
-    }
+    if (reflector.update == ReflectorUpdate::Always || !facesAgree(state, map))
+        return reflector.update == ReflectorUpdate::Always ? PlanReason::EnvmapAlways
+                                                           : PlanReason::EnvmapChanged;
+    if (reflector.update == ReflectorUpdate::Once)
+        return PlanReason::EnvmapReusedOnce;
     return *state.envmapSignature == map.signature ? PlanReason::EnvmapUnchanged : PlanReason::EnvmapChanged;
 }
 

@@ -289,9 +289,6 @@ DrawnFrame planDrawnFrame(const FrameInput& requested, const RenderTarget& targe
     const FrameInput& input = frame.planned ? *frame.planned : requested;
     frame.maps = allocateMaps(input, plan, r, report.warnings);
     report.drawAgain = frame.maps.fellBack;
-    for (const PlannedPass& pass : plan.passes)
-        report.mapSettling =
-            report.mapSettling || (pass.code == PlanReason::EnvmapTimeSliced && pass.details.staleFaces > 0);
     frame.projection = cameraProjection(input, viewport);
     if (options.tile) {
         const math::PixelRect tile{options.tile->x, options.tile->y, options.tile->x + target.width,
@@ -408,6 +405,22 @@ void finishReport(passes::FrameResources& r, passes::FrameExecution& frame, int 
     report.occlusionWaits = r.occlusion.waits();
 }
 
+// Forgets the reflector's map in the planner state: its signature, its faces and its GGX chain.
+void forgetEnvmap(PlannerState& state) {
+    state.envmapSignature.reset();
+    state.envmapSettings.reset();
+    state.envmapFaceSignatures.clear();
+    state.envmapFaceUpdates.clear();
+    state.prefilterKey.reset();
+}
+
+// Whether the frame's time-sliced map update (if any) left faces showing an older scene.
+bool timeSliceLeftFacesBehind(const FramePlan& plan) {
+    return std::any_of(plan.passes.begin(), plan.passes.end(), [](const PlannedPass& pass) {
+        return pass.code == PlanReason::EnvmapTimeSliced && pass.details.staleFaces > 0;
+    });
+}
+
 } // namespace
 
 FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& target,
@@ -429,6 +442,11 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
                                               s.coarseLevelRequest, s.planObserver, r, report);
     const FramePlan& plan = report.plan;
     const FrameInput& input = planned.planned ? *planned.planned : requested;
+    // The reflector's map could not be made at the planned size: whatever the planner state says it holds
+    // is gone, so the next frame draws a new map whole.
+    if (!planned.maps.envmapAllocated)
+        forgetEnvmap(s.plannerState);
+    const std::uint64_t mapUpdatesBefore = s.plannerState.envmapUpdates;
 
     selectLighting(r, input, plan, options, report.warnings);
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
@@ -457,6 +475,7 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     frame.showScreenSpaceSources = options.showScreenSpaceSources;
     gl::FramebufferBinding keepCallerBinding;
     runPasses(frame, plan.cameraBuffer == CameraBuffer::Srgb8, options, s.timer, report);
+    report.mapSettling = s.plannerState.envmapUpdates != mapUpdatesBefore && timeSliceLeftFacesBehind(plan);
 
     // The report: what ran, what it cost, and what execution found it could not draw.
     if (options.gpuTimings)

@@ -290,6 +290,19 @@ TEST(ReflectorPlanner, TimeSlicedRedrawsOneOutOfDateFaceAFrameInTurn) {
     }
     EXPECT_EQ(order, (std::vector{0, 1, 2, 3, 4, 5, 0, 1, 2}));
 
+    // Mid-slice (faces 3..5 older), the policy changes to on-change or once: the map is drawn whole, not
+    // reused part done.
+    for (ReflectorUpdate policy : {ReflectorUpdate::OnChange, ReflectorUpdate::Once}) {
+        FrameInput switched = input;
+        switched.reflector->update = policy;
+        FramePlan whole;
+        PlannerState midSlice = state;
+        EXPECT_EQ(playFrame(switched, midSlice, &whole), (std::vector{0, 1, 2, 3, 4, 5}))
+            << names::fileName(names::kReflectorUpdates, policy);
+        EXPECT_EQ(envmapPass(whole)->code, PlanReason::EnvmapChanged);
+        EXPECT_TRUE(playFrame(switched, midSlice).empty()) << "then reused";
+    }
+
     // A direct-fill map slices by its two parts.
     input.reflector->map = ReflectorMap::DualParaboloid;
     input.reflector->fill = ReflectorFill::Direct;
