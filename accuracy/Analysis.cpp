@@ -10,6 +10,7 @@ Metric focusMetric(Family family) {
     switch (family) {
     case Family::Envmap:
     case Family::Parallax:
+    case Family::Bounces:
         return Metric::PsnrReflector;
     case Family::MirrorTechnique:
     case Family::ScreenSpace:

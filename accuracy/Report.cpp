@@ -19,7 +19,7 @@ namespace {
 const std::vector<Family> kFamilies = {Family::Envmap,          Family::Parallax, Family::MirrorTechnique,
                                        Family::MirrorDepth,     Family::Shadows,  Family::Tessellation,
                                        Family::ReflectedDetail, Family::Glossy,   Family::ScreenSpace,
-                                       Family::Setting};
+                                       Family::Bounces,         Family::Setting};
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -61,6 +61,8 @@ std::string familyTitle(Family family) {
         return "Screen-space reflections against the planar techniques and the map";
     case Family::Setting:
         return "Other settings";
+    case Family::Bounces:
+        return "Reflectors seeing each other: bounces";
     default:
         return "The scene as saved";
     }
@@ -112,6 +114,11 @@ std::string familyIntro(Family family) {
     case Family::Setting:
         return "Each setting declared with values to sweep, one series per setting, each value against the "
                "scene's reference, everything else as saved.";
+    case Family::Bounces:
+        return "settings.reflectorBounces from 0 (each reflector's map shows the others with their plain "
+               "material) up: each bounce draws every map again with the others' maps of the bounce "
+               "before. The reference follows reflections between reflectors to depth 8, so what fewer "
+               "bounces leave out counts as error, on the reflectors' pixels.";
     default:
         return {};
     }

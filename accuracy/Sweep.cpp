@@ -124,6 +124,8 @@ std::string familyName(Family family) {
         return "screen-space";
     case Family::Setting:
         return "setting";
+    case Family::Bounces:
+        return "bounces";
     }
     return "scene";
 }
@@ -131,7 +133,7 @@ std::string familyName(Family family) {
 std::optional<Family> familyFromName(const std::string& name) {
     for (Family f : {Family::Scene, Family::Envmap, Family::Parallax, Family::MirrorTechnique,
                      Family::MirrorDepth, Family::Shadows, Family::Tessellation, Family::ReflectedDetail,
-                     Family::Glossy, Family::ScreenSpace, Family::Setting})
+                     Family::Glossy, Family::ScreenSpace, Family::Setting, Family::Bounces})
         if (familyName(f) == name)
             return f;
     return std::nullopt;
@@ -204,15 +206,21 @@ SceneTraits sceneTraits(const render::FrameInput& scene, const std::optional<int
     t.teapotTessellation = teapotTessellation;
     for (const render::Mirror& m : scene.mirrors)
         t.roughMirrors += m.roughness > 0.0 ? 1 : 0;
-    t.roughReflector = scene.reflector && scene.reflector->mesh && scene.reflector->roughness > 0.0;
-    if (!scene.mirrors.empty() || (scene.reflector && scene.reflector->mesh))
+    t.roughReflector = std::any_of(scene.reflectors.begin(), scene.reflectors.end(),
+                                   [](const render::Reflector& r) { return r.mesh && r.roughness > 0.0; });
+    const int first = render::probeReflector(scene); // the first reflector with a mesh
+    t.reflectors =
+        static_cast<std::size_t>(std::count_if(scene.reflectors.begin(), scene.reflectors.end(),
+                                               [](const render::Reflector& r) { return r.mesh != nullptr; }));
+    if (!scene.mirrors.empty() || first >= 0)
         for (const render::DrawItem& item : scene.items)
             t.simplifiableMeshes += item.mesh && render::wantsCoarseLevel(*item.mesh) ? 1 : 0;
-    if (!scene.reflector || !scene.reflector->mesh)
+    if (first < 0)
         return t;
+    const render::Reflector& reflector = scene.reflectors[static_cast<std::size_t>(first)];
     t.reflector = true;
-    t.ownProxy = scene.reflector->parallax.has_value();
-    t.proxy = t.ownProxy ? scene.reflector->parallax : sceneProxy(scene);
+    t.ownProxy = reflector.parallax.has_value();
+    t.proxy = t.ownProxy ? reflector.parallax : sceneProxy(scene, first);
     t.proxyMakesSense = t.proxy.has_value();
     return t;
 }
@@ -231,7 +239,7 @@ void planEnvmap(Configurations& out, const render::FrameInput& scene, const Scen
                 const SweepOptions& options) {
     if (!traits.reflector)
         return;
-    const int own = scene.reflector->resolution;
+    const int own = scene.reflectors[static_cast<std::size_t>(render::probeReflector(scene))].resolution;
     const std::vector<int> resolutions = withSceneValue(
         options.quick ? std::vector<int>{64, 128, 256} : std::vector<int>{64, 128, 256, 512}, own);
     for (const MapMethod& method : kMethods)
@@ -446,6 +454,19 @@ void planDeclared(Configurations& out, const SceneTraits& traits) {
     }
 }
 
+// Reflectors seeing each other: the maps drawn with the other reflectors plain, then bounce by bounce,
+// against the scene's reference (the tracer follows reflections between reflectors to its depth).
+void planBounces(Configurations& out, const SceneTraits& traits, const SweepOptions& options) {
+    if (traits.reflectors < 2)
+        return;
+    for (int b = 0; b <= (options.quick ? 2 : 3); ++b) {
+        Variation v;
+        v.set(Part::Settings, "reflectorBounces", b);
+        out.push_back(configuration(Family::Bounces, "bounces-" + std::to_string(b),
+                                    std::to_string(b) + (b == 1 ? " bounce" : " bounces"), "bounces", v));
+    }
+}
+
 } // namespace
 
 std::vector<Configuration> planSweep(const render::FrameInput& scene, const SceneTraits& traits,
@@ -458,6 +479,7 @@ std::vector<Configuration> planSweep(const render::FrameInput& scene, const Scen
     planGlossy(out, traits, options);
     planScreenSpace(out, traits, options);
     planDeclared(out, traits);
+    planBounces(out, traits, options);
     return out;
 }
 

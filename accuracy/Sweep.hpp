@@ -25,6 +25,7 @@ enum class Family {
     ScreenSpace,     // every planar mirror traced in screen space (steps, thickness, resolution, fallback)
                      // beside the stencil and texture techniques
     Setting,         // a declared field with sweep values of its own (FieldSpec::sweep), one series each
+    Bounces,         // settings.reflectorBounces 0 .. 3, where the scene has reflectors that see each other
 };
 
 // Stable names, used in file names, CSV and JSON: "envmap", "mirror-depth", ...
@@ -66,6 +67,7 @@ struct Configuration {
 // What the sweep knows about the scene, derived from its frame.
 struct SceneTraits {
     bool reflector = false;
+    std::size_t reflectors = 0;                  // reflectors with a mesh
     bool ownProxy = false;                       // the scene's reflector has a parallax proxy of its own
     std::optional<render::ParallaxParams> proxy; // what "parallax on" uses: its own, or sceneProxy()
     bool proxyMakesSense = false;                // own, or the scene's bounds enclose the reflector

@@ -47,8 +47,8 @@ void applyField(render::FrameInput& frame, const FieldAssignment& a) {
             (void)render::setField(static_cast<render::MirrorParams&>(mirror), a.field, a.value);
         break;
     case Part::Reflector:
-        if (frame.reflector)
-            (void)render::setField(static_cast<render::ReflectorParams&>(*frame.reflector), a.field, a.value);
+        for (render::Reflector& reflector : frame.reflectors)
+            (void)render::setField(static_cast<render::ReflectorParams&>(reflector), a.field, a.value);
         break;
     case Part::Shadows:
         for (render::Light& light : frame.lights)
@@ -145,8 +145,9 @@ std::optional<std::string> partText(const render::FrameInput& frame, Part part,
             add(static_cast<const render::MirrorParams&>(m));
         break;
     case Part::Reflector:
-        if (frame.reflector && frame.reflector->mesh)
-            add(static_cast<const render::ReflectorParams&>(*frame.reflector));
+        for (const render::Reflector& reflector : frame.reflectors)
+            if (reflector.mesh)
+                add(static_cast<const render::ReflectorParams&>(reflector));
         break;
     case Part::Shadows:
         for (const render::Light& light : frame.lights)
@@ -245,16 +246,20 @@ std::vector<std::pair<Part, const render::FieldSpec*>> declaredSweeps() {
     return out;
 }
 
-std::optional<render::ParallaxParams> sceneProxy(const render::FrameInput& scene) {
-    if (!scene.reflector || !scene.reflector->mesh)
+std::optional<render::ParallaxParams> sceneProxy(const render::FrameInput& scene, int index) {
+    if (index < 0)
+        index = render::probeReflector(scene);
+    if (index < 0 || static_cast<std::size_t>(index) >= scene.reflectors.size() ||
+        !scene.reflectors[static_cast<std::size_t>(index)].mesh)
         return std::nullopt;
+    const render::Reflector& reflector = scene.reflectors[static_cast<std::size_t>(index)];
     // A box around what the map sees, if that box encloses the reflector (a reflector outside the scene's
     // bounds has nothing around it for a box to stand for).
     render::FrameInput environment = scene;
-    environment.reflector.reset();
+    environment.reflectors.erase(environment.reflectors.begin() + index);
     const render::math::Box around = render::math::sceneBounds(environment);
     const render::math::Box own =
-        render::math::worldBounds(render::computeBounds(*scene.reflector->mesh), scene.reflector->world);
+        render::math::worldBounds(render::computeBounds(*reflector.mesh), reflector.world);
     if (around.empty() || own.empty())
         return std::nullopt;
     const double tolerance = 1e-6 * std::max(1.0, glm::length(around.max - around.min));
@@ -262,7 +267,7 @@ std::optional<render::ParallaxParams> sceneProxy(const render::FrameInput& scene
                           glm::all(glm::greaterThanEqual(around.max, own.max - tolerance));
     if (!encloses)
         return std::nullopt;
-    const glm::dvec3 centre = render::envmapCapture(scene).centre;
+    const glm::dvec3 centre = render::envmapCapture(scene, index).centre;
     render::ParallaxParams proxy;
     proxy.shape = render::ParallaxShape::Box;
     proxy.min = around.min - centre;
@@ -276,21 +281,26 @@ render::FrameInput applyVariation(const render::FrameInput& scene, const Variati
     render::FrameInput out = scene;
     for (const FieldAssignment& a : v.fields)
         applyField(out, a);
-    if (out.reflector && v.parallax)
-        out.reflector->parallax =
-            *v.parallax ? out.reflector->parallax ? out.reflector->parallax : proxy : std::nullopt;
+    const int probe = render::probeReflector(scene);
+    for (std::size_t i = 0; i < out.reflectors.size() && v.parallax; ++i) {
+        render::Reflector& r = out.reflectors[i];
+        // The first reflector's proxy is the one given; each other's is the box around it.
+        const auto own = static_cast<int>(i) == probe ? proxy : sceneProxy(scene, static_cast<int>(i));
+        r.parallax = *v.parallax ? r.parallax ? r.parallax : own : std::nullopt;
+    }
     if (v.roughness) {
         for (render::Mirror& m : out.mirrors)
             if (m.roughness > 0.0)
                 m.roughness = *v.roughness;
-        if (out.reflector && out.reflector->roughness > 0.0)
-            out.reflector->roughness = *v.roughness;
+        for (render::Reflector& r : out.reflectors)
+            if (r.roughness > 0.0)
+                r.roughness = *v.roughness;
     }
     if (v.tessellation && tessellate) {
         for (render::DrawItem& item : out.items)
             item.mesh = tessellate(item.mesh, *v.tessellation);
-        if (out.reflector)
-            out.reflector->mesh = tessellate(out.reflector->mesh, *v.tessellation);
+        for (render::Reflector& r : out.reflectors)
+            r.mesh = tessellate(r.mesh, *v.tessellation);
     }
     return out;
 }
@@ -315,13 +325,23 @@ Settings effectiveSettings(const render::FrameInput& applied, const std::optiona
         if (auto text = partText(applied, part, *partField(part, field)))
             s.emplace_back(columnOf(*partField(part, field)), *text);
     };
-    const bool reflector = applied.reflector && applied.reflector->mesh;
+    std::vector<const render::Reflector*> reflectors;
+    for (const render::Reflector& r : applied.reflectors)
+        if (r.mesh)
+            reflectors.push_back(&r);
+    const bool reflector = !reflectors.empty();
+    const auto anyReflector = [&](auto&& test) {
+        return std::any_of(reflectors.begin(), reflectors.end(), test);
+    };
     if (reflector) {
         add(Part::Reflector, "map");
         add(Part::Reflector, "resolution");
-        if (render::warpable(applied.reflector->map)) // the cube and the octahedron have no fill to choose
+        // The cube and the octahedron have no fill to choose.
+        if (anyReflector([](const render::Reflector* r) { return render::warpable(r->map); }))
             add(Part::Reflector, "fill");
-        s.emplace_back("parallax", applied.reflector->parallax ? "on" : "off");
+        s.emplace_back(
+            "parallax",
+            anyReflector([](const render::Reflector* r) { return r->parallax.has_value(); }) ? "on" : "off");
     }
     if (!applied.mirrors.empty()) {
         add(Part::Mirrors, "technique");
@@ -329,11 +349,13 @@ Settings effectiveSettings(const render::FrameInput& applied, const std::optiona
     }
     if (reflector)
         add(Part::Reflector, "technique");
-    const bool screenSpace =
-        std::any_of(
-            applied.mirrors.begin(), applied.mirrors.end(),
-            [](const render::Mirror& m) { return m.technique == render::MirrorTechnique::ScreenSpace; }) ||
-        (reflector && applied.reflector->technique == render::ReflectorTechnique::ScreenSpace);
+    const bool screenSpace = std::any_of(applied.mirrors.begin(), applied.mirrors.end(),
+                                         [](const render::Mirror& m) {
+                                             return m.technique == render::MirrorTechnique::ScreenSpace;
+                                         }) ||
+                             anyReflector([](const render::Reflector* r) {
+                                 return r->technique == render::ReflectorTechnique::ScreenSpace;
+                             });
     if (auto pcf = kernelsText(applied))
         s.emplace_back("pcf", *pcf);
     if (teapotTessellation)
@@ -342,9 +364,11 @@ Settings effectiveSettings(const render::FrameInput& applied, const std::optiona
         add(Part::Settings, "simplifyReflections");
     const bool roughMirrors = std::any_of(applied.mirrors.begin(), applied.mirrors.end(),
                                           [](const render::Mirror& m) { return m.roughness > 0.0; });
-    const bool roughReflector = reflector && applied.reflector->roughness > 0.0;
+    const bool roughReflector = anyReflector([](const render::Reflector* r) { return r->roughness > 0.0; });
     if (roughMirrors || roughReflector) {
-        double roughness = roughReflector ? applied.reflector->roughness : 0.0;
+        double roughness = 0.0;
+        for (const render::Reflector* r : reflectors)
+            roughness = std::max(roughness, r->roughness);
         for (const render::Mirror& m : applied.mirrors)
             roughness = std::max(roughness, m.roughness);
         s.emplace_back("roughness", roughnessText(roughness));

@@ -45,7 +45,7 @@ struct Variation {
 
 // The proxy "parallax on" gives a reflector without one of its own: a box around the rest of the scene,
 // when that box encloses the reflector; none otherwise.
-std::optional<render::ParallaxParams> sceneProxy(const render::FrameInput& scene);
+std::optional<render::ParallaxParams> sceneProxy(const render::FrameInput& scene, int index = -1);
 
 // Replaces a built-in teapot's mesh by the same teapot at another tessellation; returns other meshes as
 // they are.

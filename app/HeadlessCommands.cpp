@@ -67,8 +67,9 @@ std::string targetLabel(const render::FrameInput& input, const std::string& targ
     for (const render::Light& l : input.lights)
         if (l.name == target)
             return "light " + base::quoted(target);
-    if (input.reflector && input.reflector->name == target)
-        return "reflector " + base::quoted(target);
+    for (const render::Reflector& r : input.reflectors)
+        if (r.name == target)
+            return "reflector " + base::quoted(target);
     return base::quoted(target);
 }
 
@@ -251,6 +252,8 @@ QJsonArray passesJson(const render::FrameReport& report) {
         o["target"] = QString::fromStdString(p.target);
         o["reason"] = QString::fromStdString(report.reason(run));
         o["code"] = codeText(p.code);
+        if (p.kind == render::PassKind::Envmap)
+            o["bounce"] = p.details.bounce;
         o["gpuMs"] = run.gpuMs;
         o["cpuMs"] = run.cpuMs;
         passes.append(o);
@@ -291,21 +294,27 @@ QJsonObject envmapJson(const render::EnvmapPlan& map) {
                                       {"code", codeText(s.code)},
                                       {"face", faceLabel(s.face)}});
     return QJsonObject{{"target", QString::fromStdString(map.target)},
+                       {"bounce", map.bounce},
                        {"faces", faces},
                        {"passes", mapPasses},
                        {"skipped", mapSkipped}};
 }
 
-// `drawnEnvmap`: the environment map's plan when its pass ran this frame, else null (JSON null).
+// `drawnEnvmaps`: the plans of the environment maps whose passes ran this frame, in their order.
+// "envmapMirrors" holds the first (null when none ran), "envmaps" all of them.
 void printExplanationJson(const CliOptions& options, const HeadlessFrame& frame,
-                          const render::StillResult& still, const render::EnvmapPlan* drawnEnvmap) {
+                          const render::StillResult& still,
+                          const std::vector<const render::EnvmapPlan*>& drawnEnvmaps) {
     const render::FrameReport& report = still.firstSample;
     QJsonArray warnings;
     for (const std::string& w : report.warnings)
         warnings.append(QString::fromStdString(w));
-    QJsonValue envmap; // null when the map was not drawn this frame
-    if (drawnEnvmap)
-        envmap = envmapJson(*drawnEnvmap);
+    QJsonValue envmap; // null when no map was drawn this frame
+    QJsonArray envmaps;
+    for (const render::EnvmapPlan* map : drawnEnvmaps)
+        envmaps.append(envmapJson(*map));
+    if (!drawnEnvmaps.empty())
+        envmap = envmaps.first();
     QJsonValue preview; // null for a frame at rest
     if (options.preview.active())
         preview = QJsonObject{
@@ -315,6 +324,7 @@ void printExplanationJson(const CliOptions& options, const HeadlessFrame& frame,
             {"drawnSize", QString::fromStdString(sizeText(report.drawnWidth, report.drawnHeight))}};
     QJsonObject root{{"passes", passesJson(report)},
                      {"envmapMirrors", envmap},
+                     {"envmaps", envmaps},
                      {"skipped", skippedJson(report.skipped)},
                      {"warnings", warnings},
                      {"size", QString::fromStdString(sizeText(options.width, options.height))},
@@ -335,8 +345,9 @@ void printExplanationJson(const CliOptions& options, const HeadlessFrame& frame,
 void printEnvmapPasses(const render::EnvmapPlan& map) {
     if (map.passes.empty() && map.skipped.empty())
         return;
-    std::printf("\nInside the environment map of %s (drawn by its envmap pass):\n",
-                base::printable(map.target).c_str());
+    std::printf("\nInside the environment map of %s (drawn by its envmap pass%s):\n",
+                base::printable(map.target).c_str(),
+                map.bounce > 0 ? (", bounce " + std::to_string(map.bounce)).c_str() : "");
     for (const render::PlannedPass& p : map.passes) {
         const std::string kind(render::toString(p.kind));
         std::printf("  %-11s %-14s %s\n", kind.c_str(), base::printable(p.target).c_str(),
@@ -348,7 +359,8 @@ void printEnvmapPasses(const render::EnvmapPlan& map) {
 }
 
 void printExplanationText(const CliOptions& options, const HeadlessFrame& frame,
-                          const render::StillResult& still, const render::EnvmapPlan* drawnEnvmap) {
+                          const render::StillResult& still,
+                          const std::vector<const render::EnvmapPlan*>& drawnEnvmaps) {
     const render::FrameReport& report = still.firstSample;
     std::printf("Frame %s at t = %g s on %s\n\n", sizeText(options.width, options.height).c_str(),
                 explainedTime(options), frame.glDescription.c_str());
@@ -371,8 +383,8 @@ void printExplanationText(const CliOptions& options, const HeadlessFrame& frame,
                     p.target.empty() ? "-" : base::printable(p.target).c_str(), run.gpuMs, run.cpuMs,
                     oneLine(report.reason(run)).c_str());
     }
-    if (drawnEnvmap)
-        printEnvmapPasses(*drawnEnvmap);
+    for (const render::EnvmapPlan* map : drawnEnvmaps)
+        printEnvmapPasses(*map);
     std::printf("\nSkipped:\n");
     if (report.skipped.empty())
         std::printf("  (nothing)\n");
@@ -463,14 +475,19 @@ int runExplain(const CliOptions& options) {
         return 1;
     }
     const render::FrameReport& report = still->firstSample;
-    // The map's mirrors are those its envmap pass drew: none when the pass did not run (no map could be
+    // A map's mirrors are those its envmap pass drew: none when the pass did not run (no map could be
     // allocated), though the plan still holds them.
-    const render::EnvmapPlan* drawnEnvmap =
-        report.plan.envmap && report.countRan(render::PassKind::Envmap) > 0 ? &*report.plan.envmap : nullptr;
+    std::vector<const render::EnvmapPlan*> drawnEnvmaps;
+    for (const render::PassRun& run : report.ran) {
+        const render::PlannedPass& p = report.planned(run);
+        if (p.kind == render::PassKind::Envmap && p.envmap >= 0 &&
+            static_cast<std::size_t>(p.envmap) < report.plan.envmaps.size())
+            drawnEnvmaps.push_back(&report.plan.envmaps[static_cast<std::size_t>(p.envmap)]);
+    }
     if (options.json)
-        printExplanationJson(options, *frame, *still, drawnEnvmap);
+        printExplanationJson(options, *frame, *still, drawnEnvmaps);
     else
-        printExplanationText(options, *frame, *still, drawnEnvmap);
+        printExplanationText(options, *frame, *still, drawnEnvmaps);
     return 0;
 }
 

@@ -218,8 +218,8 @@ void useCheckedTextures(render::FrameInput& frame, const CheckedTextures& textur
         use(item.material);
     for (render::Mirror& mirror : frame.mirrors)
         use(mirror.material);
-    if (frame.reflector)
-        use(frame.reflector->material);
+    for (render::Reflector& reflector : frame.reflectors)
+        use(reflector.material);
 }
 
 base::Result<ProjectFrame> loadProjectFrame(const std::string& project, double time, MissingFiles policy) {

@@ -83,7 +83,7 @@ FrameInput chromeScene(ReflectorMap map, ReflectorFill fill, int n) {
     r.fill = fill;
     r.resolution = n;
     r.update = ReflectorUpdate::Always;
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 
@@ -124,7 +124,7 @@ void update(benchmark::State& state, ReflectorMap map, ReflectorFill fill) {
     const RenderTarget target{g->framebuffer.id(), kWidth, kHeight, true};
     // The same frame reusing the map: everything but the update.
     FrameInput reuse = input;
-    reuse.reflector->update = ReflectorUpdate::Once;
+    reuse.reflectors[0].update = ReflectorUpdate::Once;
     g->renderer->render(input, target); // warm-up: textures, shadow map, subdivided meshes
     g->renderer->render(reuse, target);
     // Other programs on the machine only ever add to a frame's CPU time (shared caches and cores), so the

@@ -141,9 +141,6 @@ double duplicateShift(const render::math::Box& box, const std::vector<render::ma
 } // namespace
 
 base::Result<scene::NodeId> addNodeTree(scene::Scene& scene, QUndoStack& undo, scene::NodeTree tree) {
-    if (auto ok = canAdd(scene, tree); !ok) {
-        return base::Error{ok.error()};
-    }
     tree.data.name = uniqueName(scene, tree.data.name);
     EditTransaction edit(undo);
     auto* command = new AddNodeCommand(scene, std::move(tree));
@@ -190,8 +187,7 @@ base::Result<Duplicates> duplicateNodes(scene::Scene& scene, QUndoStack& undo,
     });
     for (scene::NodeId id : nodes) {
         // One at a time: each copy's name is made unique against the copies made before it.
-        bool dropped = false;
-        scene::NodeTree copy = duplicateTree(scene, id, &dropped);
+        scene::NodeTree copy = duplicateTree(scene, id);
         const render::math::Box box = subtreeWorldBox(*scene.findNode(id), worlds, builtins, meshes);
         if (!box.empty()) {
             const double shift = duplicateShift(box, occupied);
@@ -206,7 +202,6 @@ base::Result<Duplicates> duplicateNodes(scene::Scene& scene, QUndoStack& undo,
                 occupied.push_back(placed);
             }
         }
-        result.droppedReflector = result.droppedReflector || dropped;
         auto* command = new AddNodeCommand(scene, std::move(copy), scene.parentOf(id), scene.indexOf(id) + 1);
         command->setText(QStringLiteral("Duplicate %1").arg(quoted(scene.findNode(id)->name())));
         edit.push(command);

@@ -39,7 +39,6 @@ base::Status showAllNodes(scene::Scene& scene, QUndoStack& undo);
 struct Duplicates {
     std::vector<scene::NodeId> copies;          // one per root, in the same order
     scene::NodeId currentCopy = scene::kNoNode; // the copy of `current`, or of the root it lies under
-    bool droppedReflector = false;              // a copy lost its reflector: a scene holds at most one
 };
 // Copies each root (with its subtree) right after itself under the same parent, each copy's name unique
 // against the copies made before it: "Duplicate “Box”", or "Duplicate 3 nodes". Each copy is moved along

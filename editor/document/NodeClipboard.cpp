@@ -49,11 +49,8 @@ base::Result<Pasted> pasteNodes(scene::Scene& scene, QUndoStack& undo, const QBy
         undo, data->nodes.size() > 1 ? QStringLiteral("Paste %1 nodes").arg(data->nodes.size()) : QString());
     Pasted pasted;
     for (scene::NodeTree& tree : data->nodes) {
-        // One at a time: each name is made unique, and the reflector checked, against what is pasted before.
+        // One at a time: each name is made unique against what is pasted before.
         tree.data.name = uniqueName(scene, tree.data.name);
-        if (!canAdd(scene, tree)) {
-            dropReflectors(tree, pasted.droppedReflector);
-        }
         const QString name = QString::fromStdString(tree.data.name);
         auto* command = new AddNodeCommand(scene, std::move(tree), parent);
         command->setText(QStringLiteral("Paste \u201c%1\u201d").arg(name));

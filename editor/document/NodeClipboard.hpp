@@ -21,7 +21,6 @@ QByteArray copyNodes(const scene::Scene& scene, const std::vector<scene::NodeId>
 
 struct Pasted {
     std::vector<scene::NodeId> nodes; // the pasted roots, in order
-    bool droppedReflector = false;    // the scene already had its curved reflector: the copy's was dropped
 };
 
 // Adds the nodes of `copied` (what copyNodes made, or any project file's text) under `parent` (kNoNode: the

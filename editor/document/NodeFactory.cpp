@@ -27,18 +27,6 @@ scene::NodeTree node(const std::string& name, const glm::dvec3& at) {
     return tree;
 }
 
-bool hasReflector(const scene::NodeTree& tree) {
-    if (tree.data.reflector) {
-        return true;
-    }
-    for (const scene::NodeTree& child : tree.children) {
-        if (hasReflector(child)) {
-            return true;
-        }
-    }
-    return false;
-}
-
 } // namespace
 
 QString displayName(NewNodeKind kind) {
@@ -237,50 +225,13 @@ std::string uniqueName(const scene::Scene& scene, const std::string& base) {
     }
 }
 
-scene::NodeId reflectorNode(const scene::Scene& scene) {
-    scene::NodeId found = scene::kNoNode;
-    scene.forEachNode([&](const scene::Node& n) {
-        if (found == scene::kNoNode && n.data().reflector) {
-            found = n.id();
-        }
-    });
-    return found;
-}
-
-base::Status canAdd(const scene::Scene& scene, const scene::NodeTree& tree) {
-    if (!hasReflector(tree)) {
-        return base::Done{};
-    }
-    if (const scene::NodeId existing = reflectorNode(scene); existing != scene::kNoNode) {
-        return base::Error{"A scene has at most one curved reflector, and \"" +
-                           scene.findNode(existing)->name() +
-                           "\" already is one. Remove its reflector first, or make this a mirror."};
-    }
-    return base::Done{};
-}
-
-void dropReflectors(scene::NodeTree& tree, bool& dropped) {
-    if (tree.data.reflector) {
-        tree.data.reflector.reset();
-        dropped = true;
-    }
-    for (scene::NodeTree& child : tree.children) {
-        dropReflectors(child, dropped);
-    }
-}
-
-scene::NodeTree duplicateTree(const scene::Scene& scene, scene::NodeId id, bool* droppedReflector) {
+scene::NodeTree duplicateTree(const scene::Scene& scene, scene::NodeId id) {
     const scene::Node* n = scene.findNode(id);
     if (!n) {
         return {};
     }
     scene::NodeTree tree = n->toTree();
     tree.data.name = uniqueName(scene, tree.data.name);
-    bool dropped = false;
-    dropReflectors(tree, dropped);
-    if (droppedReflector) {
-        *droppedReflector = dropped;
-    }
     return tree;
 }
 

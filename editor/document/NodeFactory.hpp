@@ -60,18 +60,8 @@ void scaleAboutParentOrigin(scene::NodeData& node, double factor);
 // `base` if no node of the scene has that name, else "base 2", "base 3", ...
 std::string uniqueName(const scene::Scene& scene, const std::string& base);
 
-// The node that carries the scene's curved reflector (at most one per scene), kNoNode if none.
-scene::NodeId reflectorNode(const scene::Scene& scene);
-
-// Whether `tree` may be added: a scene has at most one reflector. The message says which node has it.
-base::Status canAdd(const scene::Scene& scene, const scene::NodeTree& tree);
-
-// Removes every curved reflector from `tree` (its nodes stay, as plain nodes); sets `dropped` if there was
-// one.
-void dropReflectors(scene::NodeTree& tree, bool& dropped);
-
-// Copy of a node's subtree for "Duplicate": the copy's name is made unique, and a reflector in the copy is
-// dropped (with the returned flag set) since the scene may hold only one.
-scene::NodeTree duplicateTree(const scene::Scene& scene, scene::NodeId id, bool* droppedReflector = nullptr);
+// Copy of a node's subtree for "Duplicate": the copy's name is made unique; a reflector stays one (each
+// has a map of its own).
+scene::NodeTree duplicateTree(const scene::Scene& scene, scene::NodeId id);
 
 } // namespace speculum::document

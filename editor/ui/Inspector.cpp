@@ -283,14 +283,6 @@ void Inspector::changeComponent(const QString& key, bool add) {
     if (!node || !c) {
         return;
     }
-    if (add && key == QStringLiteral("reflector")) {
-        const scene::NodeId other = document::reflectorNode(m_scene);
-        if (other != scene::kNoNode && other != node->id()) {
-            showError(key, tr("A scene has at most one curved reflector, and %1 already is one.")
-                               .arg(quoted(m_scene.findNode(other)->name())));
-            return;
-        }
-    }
     NodeData data = node->data();
     const base::Status status = add ? c->add(data) : c->remove(data);
     if (!status) {

@@ -105,9 +105,6 @@ base::Status MainWindow::duplicateSelected() {
         return base::Error{duplicated.error()};
     }
     m_selection->setNodes(duplicated->copies, duplicated->currentCopy);
-    if (duplicated->droppedReflector) {
-        statusBar()->showMessage(tr("The copy is not a reflector: a scene has at most one."), 8000);
-    }
     return base::Done{};
 }
 
@@ -146,9 +143,6 @@ base::Status MainWindow::paste() {
         return base::Error{pasted.error()};
     }
     m_selection->setNodes(pasted->nodes, pasted->nodes.front());
-    if (pasted->droppedReflector) {
-        statusBar()->showMessage(tr("The pasted node is not a reflector: a scene has at most one."), 8000);
-    }
     return base::Done{};
 }
 

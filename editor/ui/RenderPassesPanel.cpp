@@ -19,6 +19,21 @@ QString ms(double value) {
     return value < 0.0 ? QStringLiteral("–") : QString::number(value, 'f', 2);
 }
 
+// Whether the frame's environment-map passes are grouped by bounce: there are maps of several reflectors,
+// or of more than one bounce. One reflector's one map stays a row of its own.
+bool groupsMaps(const render::FrameReport& report) {
+    std::string first;
+    for (const render::PassRun& run : report.ran) {
+        const render::PlannedPass& p = report.planned(run);
+        if (p.kind != render::PassKind::Envmap)
+            continue;
+        if (p.details.bounces > 0 || (!first.empty() && p.target != first))
+            return true;
+        first = p.target;
+    }
+    return false;
+}
+
 } // namespace
 
 RenderPassesPanel::RenderPassesPanel(QWidget* parent)
@@ -70,27 +85,50 @@ void RenderPassesPanel::showReportNow(const render::FrameReport& report) {
         layout += QString::fromStdString(s.target) + QLatin1Char('/') + QString::fromStdString(s.reason()) +
                   QLatin1Char('\n');
     }
-    if (layout == m_lastLayout && m_tree->topLevelItemCount() == 2) {
+    if (layout == m_lastLayout && m_tree->topLevelItemCount() == 2 &&
+        m_passItems.size() == report.ran.size()) {
         // Same passes: only the timings change.
-        QTreeWidgetItem* passes = m_tree->topLevelItem(0);
-        for (int i = 0; i < passes->childCount() && i < int(report.ran.size()); ++i) {
-            passes->child(i)->setText(2, ms(report.ran[std::size_t(i)].gpuMs));
-        }
-        passes->setText(2, ms(report.gpuMs));
+        showTimings(report);
         return;
     }
     m_lastLayout = layout;
     m_tree->clear();
+    m_passItems.clear();
+    m_groups.clear();
     auto* passes =
         new QTreeWidgetItem(m_tree, {tr("Passes (%1)").arg(report.ran.size()), QString(), ms(report.gpuMs)});
-    for (const render::PassRun& run : report.ran) {
-        const render::PlannedPass& p = report.planned(run);
-        const QString reason = QString::fromStdString(report.reason(run));
-        auto* item = new QTreeWidgetItem(passes, {text(render::toString(p.kind)),
-                                                  QString::fromStdString(p.target), ms(run.gpuMs), reason});
+    // With several reflectors or bounces, the maps of each bounce are a group: one row per reflector in it.
+    const bool grouped = groupsMaps(report);
+    Group* group = nullptr;
+    for (std::size_t i = 0; i < report.ran.size(); ++i) {
+        const render::PlannedPass& p = report.planned(report.ran[i]);
+        QTreeWidgetItem* parent = passes;
+        if (grouped && p.kind == render::PassKind::Envmap) {
+            if (!group || group->bounce != p.details.bounce) {
+                auto* row = new QTreeWidgetItem(passes, {tr("maps, bounce %1").arg(p.details.bounce)});
+                row->setToolTip(
+                    0, p.details.bounce == 0
+                           ? tr("Each reflector's map, the other reflectors drawn with their material")
+                           : tr("Each map again, the other reflectors drawn with their maps of "
+                                "bounce %1")
+                                 .arg(p.details.bounce - 1));
+                m_groups.push_back({row, p.details.bounce, {}});
+                group = &m_groups.back();
+            }
+            group->runs.push_back(i);
+            parent = group->row;
+        } else {
+            group = nullptr;
+        }
+        const QString reason = QString::fromStdString(report.reason(report.ran[i]));
+        auto* item =
+            new QTreeWidgetItem(parent, {text(render::toString(p.kind)), QString::fromStdString(p.target),
+                                         ms(report.ran[i].gpuMs), reason});
         item->setToolTip(3, reason);
         item->setTextAlignment(2, Qt::AlignRight | Qt::AlignVCenter);
+        m_passItems.push_back(item);
     }
+    showTimings(report);
     auto* skipped = new QTreeWidgetItem(m_tree, {tr("Skipped effects (%1)").arg(report.skipped.size())});
     for (const auto& s : report.skipped) {
         const QString reason = QString::fromStdString(s.reason());
@@ -100,6 +138,21 @@ void RenderPassesPanel::showReportNow(const render::FrameReport& report) {
         item->setForeground(0, QColor(150, 90, 20));
     }
     m_tree->expandAll();
+}
+
+void RenderPassesPanel::showTimings(const render::FrameReport& report) {
+    for (std::size_t i = 0; i < m_passItems.size() && i < report.ran.size(); ++i)
+        m_passItems[i]->setText(2, ms(report.ran[i].gpuMs));
+    for (const Group& group : m_groups) {
+        double sum = 0.0;
+        for (std::size_t i : group.runs)
+            sum = i < report.ran.size() && report.ran[i].gpuMs >= 0.0 && sum >= 0.0
+                      ? sum + report.ran[i].gpuMs
+                      : -1.0;
+        group.row->setText(2, ms(sum));
+        group.row->setTextAlignment(2, Qt::AlignRight | Qt::AlignVCenter);
+    }
+    m_tree->topLevelItem(0)->setText(2, ms(report.gpuMs));
 }
 
 } // namespace speculum::ui

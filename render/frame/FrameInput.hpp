@@ -16,7 +16,7 @@ namespace speculum::render {
 
 // A snapshot of everything one frame needs, in plain structs. Transforms are double precision world
 // matrices; the renderer makes them camera-relative before converting to float. The scene's settings,
-// materials, lights, mirrors and reflector are the structs the scene model holds (each declares its
+// materials, lights, mirrors and reflectors are the structs the scene model holds (each declares its
 // fields, Field.hpp), with where each is in the world.
 
 struct DrawItem {
@@ -33,7 +33,8 @@ struct FrameInput {
     std::vector<DrawItem> items;
     std::vector<Light> lights;
     std::vector<Mirror> mirrors;
-    std::optional<Reflector> reflector;
+    // The curved reflectors, each with its own environment map; no reflector is drawn into its own map.
+    std::vector<Reflector> reflectors;
     double time = 0.0; // seconds, the time animations were evaluated at
 };
 

@@ -27,6 +27,12 @@ inline constexpr int kMinPcfWidth = 1; // shadow filter width in texels; odd
 inline constexpr int kMaxPcfWidth = 15;
 // Reflections of reflections: the scene's, and the reflector's inside its map.
 inline constexpr int kMaxMirrorDepth = 16;
+// Curved reflectors seen in each other's maps, each bounce one more map pass per reflector.
+inline constexpr int kMaxReflectorBounces = 4;
+// Most reflectors given a map in one frame, and most Envmap passes (maps × bounces): past them the
+// planner keeps the nearest reflectors' maps and fewer bounces, and says what it left out.
+inline constexpr int kMaxReflectorMaps = 16;
+inline constexpr int kMaxEnvmapPasses = 48;
 inline constexpr int kMinTessellation = 1; // built-in meshes: subdivisions
 inline constexpr int kMaxTessellation = 64;
 inline constexpr int kMinSsaa = 1; // stills: samples per pixel along each axis

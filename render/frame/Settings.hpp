@@ -47,6 +47,9 @@ struct Settings {
     double screenThickness = 0.03;
     ScreenFallback screenFallback = ScreenFallback::Map;
     ScreenResolution screenResolution = ScreenResolution::Full;
+    // Curved reflectors seen in each other's maps: 0 draws the others with their plain material; bounce k
+    // draws them with their maps of bounce k − 1.
+    int reflectorBounces = 0;
 
     bool operator==(const Settings&) const = default;
 
@@ -154,6 +157,17 @@ void Settings::fields(Visit&& visit) {
                  .choices = names::kScreenResolutions,
                  .write = FieldWrite::UnlessDefault,
                  .drawnInMaps = false}));
+    visit(field(&Settings::reflectorBounces,
+                {.name = "reflectorBounces",
+                 .label = "Reflector bounces",
+                 .meaning = "How often curved reflectors see each other: 0 shows the others in a reflector's "
+                            "map with their plain material; each bounce draws them with the maps the bounce "
+                            "before made",
+                 .type = FieldType::Integer,
+                 .min = 0,
+                 .max = kMaxReflectorBounces,
+                 .write = FieldWrite::UnlessDefault,
+                 .sweepName = "bounces"}));
 }
 
 // The lobe samples a rough planar mirror takes per pixel, within the limits whatever the settings hold.

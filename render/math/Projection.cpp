@@ -81,8 +81,9 @@ Box sceneBounds(const FrameInput& input) {
                           {0.5f * float(mirror.size.x), 0.0f, 0.5f * float(mirror.size.y)}};
         box.add(worldBounds(rect, mirror.world));
     }
-    if (input.reflector && input.reflector->mesh)
-        box.add(worldBounds(computeBounds(*input.reflector->mesh), input.reflector->world));
+    for (const Reflector& reflector : input.reflectors)
+        if (reflector.mesh)
+            box.add(worldBounds(computeBounds(*reflector.mesh), reflector.world));
     return box;
 }
 

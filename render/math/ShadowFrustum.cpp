@@ -24,8 +24,10 @@ std::vector<Sphere> casterSpheres(const FrameInput& input) {
         const Box box = worldBounds(computeBounds(*item.mesh), item.world);
         spheres.push_back({box.center(), 0.5 * glm::length(box.max - box.min)});
     }
-    if (input.reflector && input.reflector->mesh) {
-        const Box box = worldBounds(computeBounds(*input.reflector->mesh), input.reflector->world);
+    for (const Reflector& reflector : input.reflectors) {
+        if (!reflector.mesh)
+            continue;
+        const Box box = worldBounds(computeBounds(*reflector.mesh), reflector.world);
         spheres.push_back({box.center(), 0.5 * glm::length(box.max - box.min)});
     }
     return spheres;

@@ -105,6 +105,10 @@ private:
             item.mesh = m_target.warpMeshes->get(item.mesh, item.world, tolerance,
                                                  coarse ? gl::Detail::Coarse : gl::Detail::Full);
         }
+        for (Reflector& reflector : scene.split->reflectors) // the other reflectors, drawn plain
+            if (reflector.mesh)
+                reflector.mesh =
+                    m_target.warpMeshes->get(reflector.mesh, reflector.world, tolerance, gl::Detail::Full);
         for (const Mirror& mirror : m_env.mirrors)
             scene.mirrorMeshes.push_back(
                 m_target.warpMeshes->get(m_context.unitPlane, mirrorRectangle(mirror), tolerance));

@@ -393,10 +393,13 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
             continue;
         drawMirrorWithoutReflection(input, i, view, ctx);
     }
-    if (input.reflector && input.reflector->mesh &&
-        !(ctx.drawReflector && ctx.drawReflector(input, view, ctx))) {
-        setMaterial(input.reflector->material, p, ctx);
-        drawLitMesh(input.reflector->mesh, input.reflector->world, input, p, ctx);
+    for (std::size_t i = 0; i < input.reflectors.size(); ++i) {
+        const Reflector& reflector = input.reflectors[i];
+        if (!reflector.mesh ||
+            (ctx.drawReflector && ctx.drawReflector(input, static_cast<int>(i), view, ctx)))
+            continue;
+        setMaterial(reflector.material, p, ctx);
+        drawLitMesh(reflector.mesh, reflector.world, input, p, ctx);
     }
 }
 

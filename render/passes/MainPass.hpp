@@ -27,9 +27,9 @@ inline constexpr int kGgxAlbedoUnit = 14; // math::ggxAlbedoTable, bound for the
 struct MainPassContext;
 struct ViewSetup;
 class MeshFacts;
-// Draws the curved reflector in a view instead of the main pass's plain material; returns false (having
-// changed nothing) when it cannot, and the main pass draws the material.
-using DrawReflector = std::function<bool(const FrameInput&, const ViewSetup&, MainPassContext&)>;
+// Draws curved reflector `index` (into FrameInput::reflectors) in a view instead of the main pass's plain
+// material; returns false (having changed nothing) when it cannot, and the main pass draws the material.
+using DrawReflector = std::function<bool(const FrameInput&, int index, const ViewSetup&, MainPassContext&)>;
 
 // Everything the main pass needs besides the scene: resources owned by the renderer.
 struct MainPassContext {
@@ -45,7 +45,7 @@ struct MainPassContext {
     MeshHandle unitPlane;           // the mirror rectangle: [-1,1]² in XZ
     bool mirroredView = false;      // set by beginLitView from ViewSetup::clockwise
     bool pathLengthInAlpha = false; // set by beginLitView from ViewSetup::pathLengthInAlpha
-    DrawReflector drawReflector;    // empty: the reflector is drawn with its material
+    DrawReflector drawReflector;    // empty: the reflectors are drawn with their material
     // Per mirror (by index), a mesh drawn instead of unitPlane where set: the environment's direct fill
     // splits each rectangle for the capture point it is seen from.
     std::vector<MeshHandle> mirrorMeshes;

@@ -24,10 +24,12 @@ PassResult runShadow(const PlannedPass& pass, FrameExecution& frame) {
 }
 
 PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
-    if (!frame.plan.envmap) // the planner plans every envmap pass's map
-        return {false, {}};
-    if (!frame.envmapAllocated) {
-        frame.skipped.push_back({frame.plan.envmap->target, PlanReason::EnvmapNotAllocated});
+    if (pass.envmap < 0 || static_cast<std::size_t>(pass.envmap) >= frame.plan.envmaps.size())
+        return {false, {}}; // the planner plans every envmap pass's map
+    const EnvmapPlan& map = frame.plan.envmaps[static_cast<std::size_t>(pass.envmap)];
+    const auto reflector = static_cast<std::size_t>(map.reflector);
+    if (reflector >= frame.envmapAllocated.size() || !frame.envmapAllocated[reflector]) {
+        frame.skipped.push_back({map.target, PlanReason::EnvmapNotAllocated});
         return {false, {}};
     }
     bindWrites(pass.writes, frame);
@@ -37,7 +39,6 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
         r.meshProgram,          r.meshes,   r.textures, r.shadows, frame.plan.shadows, r.dummyShadow2D.id(),
         r.dummyShadowCube.id(), r.unitPlane};
     context.coarseItems = frame.plan.coarseItems;
-    const EnvmapPlan& map = *frame.plan.envmap;
     // The mirror passes planned inside the map run in the face they were planned in, with the executors
     // of the camera's mirrors.
     auto runFacePasses = [&](const ViewSpace& face) {
@@ -56,19 +57,22 @@ PassResult runEnvmap(const PlannedPass& pass, FrameExecution& frame) {
 }
 
 PassResult runPrefilter(const PlannedPass& pass, FrameExecution& frame) {
-    const Reflector* reflector = frame.input.reflector ? &*frame.input.reflector : nullptr;
+    const auto index = static_cast<std::size_t>(pass.reflector);
+    const Reflector* reflector =
+        index < frame.input.reflectors.size() ? &frame.input.reflectors[index] : nullptr;
     FrameResources& r = frame.resources;
-    if (!reflector || !r.reflector.hasMap(*reflector)) { // the map could not be allocated or drawn
+    if (!reflector || !r.reflector.hasMap(pass.reflector, *reflector)) { // not allocated or not drawn
         frame.skipped.push_back({pass.target, PlanReason::PrefilterNoMap});
         return {false, {}};
     }
     bindWrites(pass.writes, frame);
-    if (base::Status filtered = r.reflector.prefilter(*reflector, frame.input.settings.prefilterSamples);
+    if (base::Status filtered =
+            r.reflector.prefilter(pass.reflector, *reflector, frame.input.settings.prefilterSamples);
         !filtered) {
         frame.warnings.push_back(filtered.error());
         return {};
     }
-    frame.commits.prefilterKey = pass.signature;
+    frame.commits.mapOf(pass.reflector).prefilterKey = pass.signature;
     return {};
 }
 

@@ -35,7 +35,7 @@ struct FrameResources {
     gl::MeshCache meshes;
     gl::TextureCache textures;
     ShadowMaps shadows;
-    ReflectorPass reflector; // the curved reflector's environment map and surface
+    ReflectorPass reflector; // the curved reflectors' environment maps and surfaces
     GuidesPass guides;       // the editor's guide lines over the camera's view
     // The linear (half-float) colour buffer every frame is drawn into before the composite pass, with
     // the depth-stencil buffer the mirror passes nest in.
@@ -74,8 +74,9 @@ struct FrameExecution {
     // What the next frame's planner learns once a map is drawn (the plan's signatures).
     PlannerState& commits;
     std::vector<std::string>& warnings;
-    // The reflector's map could be allocated for this frame's settings; false: its Envmap pass does not run.
-    bool envmapAllocated = true;
+    // Per reflector (by index), whether its map could be allocated for this frame's settings; false: its
+    // Envmap passes do not run.
+    std::vector<bool> envmapAllocated;
     // Lights whose planned shadow map could not be allocated this frame: their Shadow pass does not run, and
     // they light without shadows.
     std::vector<int> shadowsMissing;

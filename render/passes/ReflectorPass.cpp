@@ -28,10 +28,10 @@ bool sameSettings(const envmap::CaptureSettings& a, const envmap::CaptureSetting
 
 // Pass 1 sees the scene from the capture point: it is the origin of camera-relative space, so model
 // matrices are made relative to it in double by the main pass's own drawing, and the eye for specular
-// highlights is there too. The reflector is not part of its own environment.
-FrameInput environmentInput(const FrameInput& input, const glm::dvec3& centre) {
+// highlights is there too. The reflector is not part of its own environment; the others are.
+FrameInput environmentInput(const FrameInput& input, int index, const glm::dvec3& centre) {
     FrameInput env = input;
-    env.reflector.reset();
+    env.reflectors.erase(env.reflectors.begin() + index);
     env.camera.position = centre;
     env.camera.target = centre + glm::dvec3(0.0, 0.0, -1.0);
     env.camera.up = glm::dvec3(0.0, 1.0, 0.0);
@@ -67,22 +67,74 @@ base::Status ReflectorPass::init() {
     return base::Done{};
 }
 
-bool ReflectorPass::hasMap(const Reflector& reflector) const {
-    return m_capture && m_settingsKey == envmapSettingsKey(reflector);
+const ReflectorPass::Slot* ReflectorPass::slotOf(int index) const {
+    return index >= 0 && static_cast<std::size_t>(index) < m_maps.size()
+               ? &m_maps[static_cast<std::size_t>(index)]
+               : nullptr;
 }
 
-gl::PlannedAllocation ReflectorPass::allocate(const Reflector& reflector,
+ReflectorPass::Slot& ReflectorPass::slot(int index) {
+    const auto i = static_cast<std::size_t>(std::max(index, 0));
+    if (m_maps.size() <= i)
+        m_maps.resize(i + 1);
+    return m_maps[i];
+}
+
+void ReflectorPass::keepMaps(std::size_t count) {
+    if (m_maps.size() > count)
+        m_maps.resize(count);
+}
+
+void ReflectorPass::beginFrame() {
+    for (Slot& s : m_maps) {
+        s.bounceDrawn = -1;
+        s.bounced = false;
+    }
+}
+
+void ReflectorPass::endFrame() {
+    for (Slot& s : m_maps)
+        if (!s.bounced)
+            s.previous.reset();
+}
+
+bool ReflectorPass::hasMap(int index, const Reflector& reflector) const {
+    const Slot* s = slotOf(index);
+    return s && s->capture && s->settingsKey == envmapSettingsKey(reflector);
+}
+
+bool ReflectorPass::hasChain(int index, const Reflector& reflector) const {
+    const Slot* s = slotOf(index);
+    return hasMap(index, reflector) && s->chainOf != 0 && s->chainOf == s->captures;
+}
+
+std::size_t ReflectorPass::mapBytes(int index, const Reflector& reflector) const {
+    if (!hasMap(index, reflector))
+        return 0;
+    const Slot& s = *slotOf(index);
+    return s.capture->bytes() + (s.previous ? s.previous->bytes() : 0) +
+           (s.prefilter ? s.prefilter->bytes() : 0);
+}
+
+const envmap::EnvironmentCapture* ReflectorPass::map(int index) const {
+    const Slot* s = slotOf(index);
+    return s && s->capture ? &*s->capture : nullptr;
+}
+
+gl::PlannedAllocation ReflectorPass::allocate(int index, const Reflector& reflector,
                                               std::vector<std::string>& warnings) {
     const envmap::CaptureSettings wanted = captureSettings(reflector);
+    Slot& s = slot(index);
     std::string otherError;
     const gl::SizeFallback::Fitted fitted = m_fallbacks[envmapKind(reflector)].fit(
         reflector.resolution, kMinEnvmapResolution, [&](int n) -> base::Status {
             envmap::CaptureSettings settings = wanted;
             settings.resolution = n;
-            if (m_capture && sameSettings(m_capture->settings(), settings))
+            if (s.capture && sameSettings(s.capture->settings(), settings))
                 return base::Done{};
-            m_capture.reset(); // the old map's memory first: it may be what the new one needs
-            m_settingsKey = 0;
+            s.capture.reset(); // the old map's memory first: it may be what the new one needs
+            s.previous.reset();
+            s.settingsKey = 0;
             bool sizeFailure = false;
             auto created = envmap::EnvironmentCapture::create(settings, &sizeFailure);
             if (!created) {
@@ -92,11 +144,11 @@ gl::PlannedAllocation ReflectorPass::allocate(const Reflector& reflector,
                 }
                 return base::Error{created.error()};
             }
-            m_capture = std::move(*created);
+            s.capture = std::move(*created);
             return base::Done{};
         });
     if (!otherError.empty()) {
-        m_capture.reset();
+        s.capture.reset();
         warnings.push_back("reflector " + base::quoted(reflector.name) + ": " + otherError);
         return gl::PlannedAllocation::Failed;
     }
@@ -126,26 +178,58 @@ int positionInPlan(const EnvmapPlan& plan, int index) {
 
 } // namespace
 
+base::Status ReflectorPass::startBounce(Slot& s, const Reflector& reflector) {
+    std::swap(s.capture, s.previous);
+    if (!s.capture || !sameSettings(s.capture->settings(), s.previous->settings())) {
+        s.capture.reset();
+        auto created = envmap::EnvironmentCapture::create(s.previous->settings());
+        if (!created) {
+            std::swap(s.capture, s.previous); // the map drawn stays, and the bounce draws no more of it
+            return base::Error{"reflector " + base::quoted(reflector.name) + ": the map of a second bounce " +
+                               created.error() + "; its earlier bounce stays"};
+        }
+        s.capture = std::move(*created);
+    }
+    s.bounced = true;
+    return base::Done{};
+}
+
+const envmap::EnvironmentCapture* ReflectorPass::readable(int index, int bounce) const {
+    const Slot* s = slotOf(index);
+    if (!s)
+        return nullptr;
+    if (s->bounceDrawn == bounce && s->previous)
+        return &*s->previous;
+    return s->capture ? &*s->capture : nullptr;
+}
+
 base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& plan, MainPassContext& context,
                                     const EnvironmentMirrorPrograms& mirrors,
                                     const RunFacePasses& runFacePasses) {
     const EnvmapCapture& where = plan.capture;
-    const Reflector& reflector = *input.reflector;
+    const int index = plan.reflector;
+    const Reflector& reflector = input.reflectors.at(static_cast<std::size_t>(index));
+    Slot& s = slot(index);
     const std::uint64_t key = envmapSettingsKey(reflector);
     // allocate() normally made the map already, at a size that fits; a caller that did not gets it made
     // here, still checked.
-    if (!m_capture || !sameSettings(m_capture->settings(), captureSettings(reflector))) {
-        m_capture.reset();
-        m_settingsKey = 0;
+    if (!s.capture || !sameSettings(s.capture->settings(), captureSettings(reflector))) {
+        s.capture.reset();
+        s.previous.reset();
+        s.settingsKey = 0;
         auto created = envmap::EnvironmentCapture::create(captureSettings(reflector));
         if (!created)
             return base::Error{"reflector " + base::quoted(reflector.name) + ": the environment map " +
                                created.error()};
-        m_capture = std::move(*created);
+        s.capture = std::move(*created);
+    } else if (plan.bounce > 0 && s.bounceDrawn == plan.bounce - 1 && s.settingsKey == key) {
+        // The others of this bounce read this map's bounce before: it is kept, and drawn into the other.
+        if (base::Status started = startBounce(s, reflector); !started)
+            return started;
     }
-    m_settingsKey = 0; // rendered below
-    m_centre = where.centre;
-    const FrameInput env = environmentInput(input, where.centre);
+    s.settingsKey = 0; // rendered below
+    s.centre = where.centre;
+    const FrameInput env = environmentInput(input, index, where.centre);
     envmap::CaptureView view;
     view.near = where.near;
     view.far = where.far;
@@ -155,18 +239,27 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
         view.faces |= 1u << planned.index;
 
     MainPassContext faces = withProgram(context.program, context, context.unitPlane);
+    // From bounce 1 on, the other reflectors are drawn with their maps of the bounce before (env holds
+    // them without this one: its indices past `index` are one lower than the frame's).
+    // Only the cube faces' context draws them so: a direct fill's warp has no surface program, and draws
+    // them with their material.
+    if (plan.bounce > 0)
+        faces.drawReflector = [this, index, bounce = plan.bounce](const FrameInput& in, int other,
+                                                                  const ViewSetup& v, MainPassContext& c) {
+            return drawInMap(in, other, other < index ? other : other + 1, bounce, v, c);
+        };
     // The map frame is the world's (CaptureView::mapFromWorld is the identity), so a face's view-projection
     // is its projection times its view.
     EnvironmentTarget face;
     face.near = where.near;
     face.far = where.far;
-    face.framebuffer = m_capture->framebuffer();
-    face.size = m_capture->targetSize();
+    face.framebuffer = s.capture->framebuffer();
+    face.size = s.capture->targetSize();
     face.meshFacts = &m_meshFacts;
     face.plan = &plan;
-    auto drawFace = [&](const glm::dmat4&, int index) {
-        face.faceView = envmap::cubeFaceView(index);
-        face.face = positionInPlan(plan, index);
+    auto drawFace = [&](const glm::dmat4&, int faceIndex) {
+        face.faceView = envmap::cubeFaceView(faceIndex);
+        face.face = positionInPlan(plan, faceIndex);
         drawEnvironmentTarget(env, face, mirrors, faces, runFacePasses);
     };
 
@@ -178,37 +271,39 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
         EnvironmentTarget component;
         component.near = where.near;
         component.far = where.far;
-        component.framebuffer = m_capture->framebuffer();
-        component.size = m_capture->targetSize();
+        component.framebuffer = s.capture->framebuffer();
+        component.size = s.capture->targetSize();
         component.warp = &pass;
         component.warpMeshes = &m_warpMeshes;
-        component.warpAngle = warpEdgeAngle(m_capture->layout());
+        component.warpAngle = warpEdgeAngle(s.capture->layout());
         component.meshFacts = &m_meshFacts;
         component.plan = &plan;
         component.face = positionInPlan(plan, pass.warp.component);
         drawEnvironmentTarget(env, component, {m_warpFlat, m_warpMirror}, warped, runFacePasses);
     };
-    m_capture->update(view, drawFace, drawWarped);
-    m_settingsKey = key;
-    ++m_captures; // the chain, if any, holds an older map now
+    s.capture->update(view, drawFace, drawWarped);
+    s.settingsKey = key;
+    s.bounceDrawn = plan.bounce;
+    ++s.captures; // the chain, if any, holds an older map now
     return base::Done{};
 }
 
-base::Status ReflectorPass::prefilter(const Reflector& reflector, int samples) {
-    if (!hasMap(reflector))
+base::Status ReflectorPass::prefilter(int index, const Reflector& reflector, int samples) {
+    if (!hasMap(index, reflector))
         return base::Done{}; // nothing captured (the map could not be allocated: warned already)
-    m_chainOf = 0;
-    if (!m_prefilter) {
+    Slot& s = slot(index);
+    s.chainOf = 0;
+    if (!s.prefilter) {
         auto created = envmap::GgxPrefilter::create();
         if (!created)
             return base::Error{"reflector " + base::quoted(reflector.name) + ": the GGX pre-filter " +
                                created.error()};
-        m_prefilter = std::move(*created);
+        s.prefilter = std::move(*created);
     }
-    if (base::Status filtered = m_prefilter->filter(*m_capture, samples); !filtered)
+    if (base::Status filtered = s.prefilter->filter(*s.capture, samples); !filtered)
         return base::Error{"reflector " + base::quoted(reflector.name) + ": " + filtered.error() +
                            "; drawn with the map's mip chain instead"};
-    m_chainOf = m_captures;
+    s.chainOf = s.captures;
     return base::Done{};
 }
 
@@ -219,12 +314,11 @@ base::Status ReflectorPass::selectLighting(const std::string& variant, bool draw
     return base::Done{};
 }
 
-void ReflectorPass::setMapUniforms(const FrameInput& input, const gl::Program& p) const {
-    const Reflector& r = *input.reflector;
-    const envmap::EnvironmentCapture& map = *m_capture;
+void ReflectorPass::setMapUniforms(const Reflector& r, const glm::dvec3& eye, const Slot& s,
+                                   const envmap::EnvironmentCapture& map, const gl::Program& p) const {
     p.set("uEnvType", static_cast<int>(map.settings().type));
     p.set("uEnvLayout", map.layout().packed());
-    p.set("uEnvCentre", glm::vec3(m_centre - input.camera.position));
+    p.set("uEnvCentre", glm::vec3(s.centre - eye));
     const ParallaxParams proxy = r.parallax.value_or(ParallaxParams{});
     p.set("uParallax", !r.parallax ? 0 : proxy.shape == ParallaxShape::Sphere ? 1 : 2);
     p.set("uParallaxRadius", float(proxy.radius));
@@ -234,46 +328,47 @@ void ReflectorPass::setMapUniforms(const FrameInput& input, const gl::Program& p
     p.set("uEnvArray", kEnvArrayUnit);
 }
 
-bool ReflectorPass::bindAsProbe(const FrameInput& input, const gl::Program& p) const {
-    if (!input.reflector || !hasMap(*input.reflector))
+bool ReflectorPass::bindAsProbe(const FrameInput& input, int index, const gl::Program& p) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= input.reflectors.size() ||
+        !hasMap(index, input.reflectors[static_cast<std::size_t>(index)]))
         return false;
     p.use();
-    setMapUniforms(input, p);
-    const envmap::EnvironmentCapture& map = *m_capture;
+    const Slot& s = *slotOf(index);
+    const envmap::EnvironmentCapture& map = *s.capture;
+    setMapUniforms(input.reflectors[static_cast<std::size_t>(index)], input.camera.position, s, map, p);
     glActiveTexture(GL_TEXTURE0 + (map.target() == GL_TEXTURE_CUBE_MAP ? kEnvCubeUnit : kEnvArrayUnit));
     glBindTexture(map.target(), map.texture());
     glActiveTexture(GL_TEXTURE0);
     return true;
 }
 
-int ReflectorPass::lookupOf(const FrameInput& input) const {
-    const double roughness = std::clamp(input.reflector->roughness, 0.0, 1.0);
+int ReflectorPass::lookupOf(const FrameInput& input, int index) const {
+    const Reflector& r = input.reflectors.at(static_cast<std::size_t>(index));
+    const double roughness = std::clamp(r.roughness, 0.0, 1.0);
     if (!(roughness > 0.0))
         return 0;
-    return input.settings.glossyFilter != GlossyFilter::Mip && hasChain(*input.reflector) ? 2 : 1;
+    return input.settings.glossyFilter != GlossyFilter::Mip && hasChain(index, r) ? 2 : 1;
 }
 
-int ReflectorPass::bindLookup(const FrameInput& input, const gl::Program& p) const {
-    if (!input.reflector || !hasMap(*input.reflector))
-        return -1;
-    const double roughness = std::clamp(input.reflector->roughness, 0.0, 1.0);
-    const int lookup = lookupOf(input);
+void ReflectorPass::bindMapLookup(const Reflector& r, const glm::dvec3& eye, const Slot& s,
+                                  const envmap::EnvironmentCapture& map, int lookup,
+                                  const gl::Program& p) const {
+    const double roughness = std::clamp(r.roughness, 0.0, 1.0);
     const bool chain = lookup == 2;
     p.use();
-    setMapUniforms(input, p);
+    setMapUniforms(r, eye, s, map, p);
     p.set("uEnvMapFromWorld", glm::mat3(1.0f));
     // A rough reflector reads one texture at an explicit LOD: the pre-filtered chain (same target and
     // layout as the map) at the roughness that covers the lobe, narrowed by the proxy's distance, and the
     // pixel's footprint (reflector_lookup.glsl's chainLod), or, for Mip (or without a chain), the map's own
     // mip chain at roughness × (its levels − 1), box-filtered levels standing in for the lobe. Roughness 0
     // takes the sharp lookup, as before roughness existed.
-    const envmap::EnvironmentCapture& map = *m_capture;
     GLuint texture = map.texture();
     float lod = 0.0f;
     if (roughness > 0.0) {
-        const int levels = chain ? m_prefilter->levels()
+        const int levels = chain ? s.prefilter->levels()
                                  : (map.settings().mipmaps ? envmap::usableMipLevels(map.layout()) : 1);
-        texture = chain ? m_prefilter->texture() : texture;
+        texture = chain ? s.prefilter->texture() : texture;
         lod = static_cast<float>(roughness * (levels - 1));
     }
     p.set("uRough", lookup);
@@ -283,21 +378,54 @@ int ReflectorPass::bindLookup(const FrameInput& input, const gl::Program& p) con
     glActiveTexture(GL_TEXTURE0 + (map.target() == GL_TEXTURE_CUBE_MAP ? kEnvCubeUnit : kEnvArrayUnit));
     glBindTexture(map.target(), texture);
     glActiveTexture(GL_TEXTURE0);
+}
+
+int ReflectorPass::bindLookup(const FrameInput& input, int index, const gl::Program& p) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= input.reflectors.size() ||
+        !hasMap(index, input.reflectors[static_cast<std::size_t>(index)]))
+        return -1;
+    const int lookup = lookupOf(input, index);
+    const Slot& s = *slotOf(index);
+    bindMapLookup(input.reflectors[static_cast<std::size_t>(index)], input.camera.position, s, *s.capture,
+                  lookup, p);
     return lookup;
 }
 
-bool ReflectorPass::drawSurface(const FrameInput& input, const ViewSetup& view, MainPassContext& context) {
-    if (!input.reflector || !hasMap(*input.reflector))
+bool ReflectorPass::drawSurface(const FrameInput& input, int index, const ViewSetup& view,
+                                MainPassContext& context) {
+    if (index < 0 || static_cast<std::size_t>(index) >= input.reflectors.size() ||
+        !hasMap(index, input.reflectors[static_cast<std::size_t>(index)]))
         return false;
-    const Reflector& r = *input.reflector;
+    const Reflector& r = input.reflectors[static_cast<std::size_t>(index)];
     const gl::Program& p = m_surface;
     beginLitView(input, view, p, context);
     // The draw variant without the lookups it does not use (REFLECTOR_ROUGH).
-    setMaterial(r.material, p, context, "#define REFLECTOR_ROUGH " + std::to_string(lookupOf(input)) + "\n");
+    const int lookup = lookupOf(input, index);
+    setMaterial(r.material, p, context, "#define REFLECTOR_ROUGH " + std::to_string(lookup) + "\n");
     p.set("uReflectivity", float(std::clamp(r.reflectivity, 0.0, 1.0)));
     p.set("uFresnel", r.fresnel ? 1 : 0);
-    bindLookup(input, p);
+    const Slot& s = *slotOf(index);
+    bindMapLookup(r, input.camera.position, s, *s.capture, lookup, p);
     drawLitMesh(r.mesh, r.world, input, p, context);
+    return true;
+}
+
+bool ReflectorPass::drawInMap(const FrameInput& env, int envIndex, int index, int bounce,
+                              const ViewSetup& view, MainPassContext& context) {
+    const Reflector& r = env.reflectors.at(static_cast<std::size_t>(envIndex));
+    const envmap::EnvironmentCapture* map = readable(index, bounce);
+    if (!map || !hasMap(index, r))
+        return false;
+    // A rough one reads its map's mip chain: its pre-filtered chain holds its last bounce, not the one
+    // before this. The lookups are relative to the capture point, the env's camera.
+    const gl::Program& p = m_surface;
+    beginLitView(env, view, p, context);
+    const int lookup = std::clamp(r.roughness, 0.0, 1.0) > 0.0 ? 1 : 0;
+    setMaterial(r.material, p, context, "#define REFLECTOR_ROUGH " + std::to_string(lookup) + "\n");
+    p.set("uReflectivity", float(std::clamp(r.reflectivity, 0.0, 1.0)));
+    p.set("uFresnel", r.fresnel ? 1 : 0);
+    bindMapLookup(r, env.camera.position, *slotOf(index), *map, lookup, p);
+    drawLitMesh(r.mesh, r.world, env, p, context);
     return true;
 }
 

@@ -39,8 +39,8 @@ void drawViewDepth(const FrameExecution& frame, const ViewSpace& space, const gl
     };
     for (const DrawItem& item : input.items)
         draw(item.mesh, item.world);
-    if (input.reflector)
-        draw(input.reflector->mesh, input.reflector->world);
+    for (const Reflector& reflector : input.reflectors)
+        draw(reflector.mesh, reflector.world);
     std::vector<bool> screenSpace(input.mirrors.size(), false);
     for (const MirrorView& view : frame.plan.views)
         if (view.screenSpace && !screenSpaceMirrors)
@@ -129,9 +129,9 @@ std::string tracedOutcome(const SourceCounts& c, bool half) {
 }
 
 // The uniforms of shaders/screen_trace.glsl: the image, its depth pyramid, the trace's settings and the
-// fallback (the reflector's map, bound here, when the settings ask for it and there is one).
+// fallback (reflector `probe`'s map, bound here, when the settings ask for it and there is one).
 void setImageUniforms(const gl::Program& p, const FrameExecution& frame, const ViewSpace& space,
-                      ScreenFallback fallback) {
+                      ScreenFallback fallback, int probe) {
     const FrameInput& input = frame.input;
     p.use();
     p.set("uWorldFromView", glm::mat3(glm::transpose(glm::dmat3(space.rotation))));
@@ -151,14 +151,15 @@ void setImageUniforms(const gl::Program& p, const FrameExecution& frame, const V
     p.set("uEnvCube", kEnvCubeUnit);
     p.set("uEnvArray", kEnvArrayUnit);
     p.set("uParallax", 0);
-    const bool probe = fallback == ScreenFallback::Map && frame.resources.reflector.bindAsProbe(input, p);
-    p.set("uFallback", probe ? 1 : 0);
+    const bool bound =
+        fallback == ScreenFallback::Map && frame.resources.reflector.bindAsProbe(input, probe, p);
+    p.set("uFallback", bound ? 1 : 0);
 }
 
 // A screen-space mirror's trace: the image's uniforms, and the mirror's rectangle as the camera sees it.
 void setTraceUniforms(const gl::Program& p, const FrameExecution& frame, const ViewSpace& space,
                       const Mirror& mirror, const glm::dvec3& normal) {
-    setImageUniforms(p, frame, space, frame.input.settings.screenFallback);
+    setImageUniforms(p, frame, space, frame.input.settings.screenFallback, probeReflector(frame.input));
     const glm::dmat4 toView = space.rotation * math::cameraRelative(frame.input.camera);
     const glm::dmat4 toClip = space.projection * toView;
     const glm::dmat4 rectangle = math::visibleMirrorRectangle(mirrorRectangle(mirror), toClip);
@@ -418,10 +419,11 @@ PassResult runScreenColour(const PlannedPass& pass, FrameExecution& frame) {
 PassResult runReflectorTrace(const PlannedPass& pass, FrameExecution& frame) {
     FrameResources& r = frame.resources;
     const FrameInput& input = frame.input;
-    if (!input.reflector || !input.reflector->mesh || !frame.screenDepthReady)
+    const auto index = static_cast<std::size_t>(pass.reflector);
+    if (index >= input.reflectors.size() || !input.reflectors[index].mesh || !frame.screenDepthReady)
         return {true, "no depth pyramid: the map alone"};
-    const Reflector& reflector = *input.reflector;
-    if (!r.reflector.hasMap(reflector))
+    const Reflector& reflector = input.reflectors[index];
+    if (!r.reflector.hasMap(pass.reflector, reflector))
         return {true, "no map: the reflector is drawn without one, and nothing is traced over it"};
     // The image the rays read, copied (the trace draws into the camera's buffer), unless the ScreenColour
     // pass has just copied and blurred it.
@@ -435,10 +437,10 @@ PassResult runReflectorTrace(const PlannedPass& pass, FrameExecution& frame) {
     const ViewSpace space = cameraSpace(frame);
     bindWrites(pass.writes, frame, space);
     const gl::Program& p = r.reflectorTraceProgram;
-    setImageUniforms(p, frame, space, ScreenFallback::Map);
+    setImageUniforms(p, frame, space, ScreenFallback::Map, pass.reflector);
     setReflectorUniforms(p, frame, space, reflector);
     // What the surface drew, looked up alike; a rough reflector without the blurred image traces sharp.
-    r.reflector.bindLookup(input, p);
+    r.reflector.bindLookup(input, pass.reflector, p);
     p.set("uImageLevels", frame.screenColourReady ? r.screenImage.levels() : 1);
     p.set("uShowSources", 0);
     p.use();

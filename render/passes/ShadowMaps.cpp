@@ -124,14 +124,15 @@ void ShadowMaps::failedSizes(std::map<MapKind, FailedAllocation>& failed) const 
 
 namespace {
 
-// World bounds of what the shadow pass draws: the casters and the reflector.
+// World bounds of what the shadow pass draws: the casters and the reflectors.
 std::vector<math::Box> casterBoxes(const FrameInput& input) {
     std::vector<math::Box> boxes;
     for (const DrawItem& item : input.items)
         if (item.castsShadows && item.mesh)
             boxes.push_back(math::worldBounds(computeBounds(*item.mesh), item.world));
-    if (input.reflector && input.reflector->mesh)
-        boxes.push_back(math::worldBounds(computeBounds(*input.reflector->mesh), input.reflector->world));
+    for (const Reflector& reflector : input.reflectors)
+        if (reflector.mesh)
+            boxes.push_back(math::worldBounds(computeBounds(*reflector.mesh), reflector.world));
     return boxes;
 }
 
@@ -283,9 +284,11 @@ void ShadowMaps::render(const FrameInput& input, const ShadowPlan& shadow, gl::M
             if (masked)
                 program.useWith({}); // back to the plain depth variant
         }
-        if (input.reflector && input.reflector->mesh) {
-            program.set("uModelLightClip", glm::mat4(viewProjection * input.reflector->world));
-            meshes.get(input.reflector->mesh).draw();
+        for (const Reflector& reflector : input.reflectors) {
+            if (!reflector.mesh)
+                continue;
+            program.set("uModelLightClip", glm::mat4(viewProjection * reflector.world));
+            meshes.get(reflector.mesh).draw();
         }
     }
     glDisable(GL_POLYGON_OFFSET_FILL);

@@ -81,6 +81,10 @@ struct PlannedPass {
     ReasonDetails details{}; // what the sentence of `code` names
     int lightIndex = -1;     // shadow passes: index into FrameInput::lights
     int view = -1;           // mirror passes: index into FramePlan::views
+    // Envmap, Prefilter, ScreenColour and ReflectorTrace passes: index into FrameInput::reflectors; Envmap
+    // passes also name their map's plan (index into FramePlan::envmaps).
+    int reflector = -1;
+    int envmap = -1;
     // Shadow passes: the signature of what the map holds (shadowSignature), which the renderer records
     // once the map is drawn, so the next frame's planner can reuse it. Prefilter passes: the chain's
     // (prefilterKey), recorded the same way.
@@ -159,6 +163,10 @@ struct EnvmapFace {
 // views in each face with their passes (in execution order, face by face) and skips, with reasons.
 struct EnvmapPlan {
     std::string target; // the reflector's name
+    int reflector = -1; // index into FrameInput::reflectors
+    // Which bounce this drawing of the map is (Settings::reflectorBounces): 0 draws the other reflectors
+    // with their plain material; bounce k draws them with their maps of bounce k − 1.
+    int bounce = 0;
     EnvmapCapture capture;
     // What the renderer records once the map is drawn (envmapSignature, envmapSettingsKey).
     std::uint64_t signature = 0;
@@ -205,18 +213,19 @@ struct FramePlan {
     std::vector<int> shadowedLights;
     std::vector<ShadowPlan> shadows;
     std::vector<MirrorView> views;
-    // Set when the environment pass runs this frame.
-    std::optional<EnvmapPlan> envmap;
+    // The environment maps drawn this frame, in the order their Envmap passes run: bounce by bounce,
+    // reflector by reflector within a bounce.
+    std::vector<EnvmapPlan> envmaps;
     // Per item (by index into FrameInput::items): the mirrors' views and the environment map draw it at its
     // simplified level (MeshData::coarse). Empty when no reflected view draws a simplified mesh.
     std::vector<bool> coarseItems;
     // Big meshes a reflected view draws that have no simplified level yet: drawn whole this frame, and the
     // renderer has the level built (at once, or on the editor's worker thread). Each mesh once.
     std::vector<MeshHandle> coarseLevelsWanted;
-    // The reflector's map resolution: its own, within the GPU's limits and below every size of its layout
-    // that failed to allocate (fitEnvmapResolution); 0 without a reflector, or where no map of its layout
-    // fits. The map is allocated, drawn and looked up at this resolution (plannedInput).
-    int reflectorResolution = 0;
+    // Each reflector's map resolution (by index into FrameInput::reflectors): its own, within the GPU's
+    // limits and below every size of its layout that failed to allocate (fitEnvmapResolution); 0 where no
+    // map of its layout fits. The map is allocated, drawn and looked up at this resolution (plannedInput).
+    std::vector<int> reflectorResolutions;
     // The pre-filter's lobe samples a texel where the plan lowered the scene's (PlanOptions::maxMapSeconds);
     // 0: the scene's own.
     int prefilterSamples = 0;
@@ -231,6 +240,8 @@ struct FramePlan {
 
     // The shadow plan of a light, or nullptr if the main pass does not sample a map of it.
     const ShadowPlan* shadowOf(int lightIndex) const;
+    // The planned resolution of reflector `index`'s map (0: none fits, or no such reflector).
+    int reflectorResolution(int index) const;
 };
 
 } // namespace speculum::render

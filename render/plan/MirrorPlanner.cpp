@@ -329,10 +329,10 @@ struct Planner {
             ReasonDetails details = seenFrom(view.parent);
             details.area = view.pixelArea;
             addPass(PassKind::MirrorMask, view, index, PlanReason::MirrorMaskCount, details);
-            details.screenFallsBackToMap = input.settings.screenFallback == ScreenFallback::Map &&
-                                           input.reflector && input.reflector->mesh;
+            const int probe = probeReflector(input);
+            details.screenFallsBackToMap = input.settings.screenFallback == ScreenFallback::Map && probe >= 0;
             if (details.screenFallsBackToMap)
-                details.node = input.reflector->name;
+                details.node = input.reflectors[static_cast<std::size_t>(probe)].name;
             addPass(PassKind::Mirror, view, index, PlanReason::MirrorScreenTrace, details);
             planSurfacePass(view, index);
         }
@@ -392,9 +392,10 @@ void planMirrors(const FrameInput& input, const PlanViewport& viewport, FramePla
 }
 
 void planEnvmapMirrors(const FrameInput& input, EnvmapPlan& map) {
-    if (input.mirrors.empty() || !input.reflector)
+    if (input.mirrors.empty() || map.reflector < 0 ||
+        static_cast<std::size_t>(map.reflector) >= input.reflectors.size())
         return;
-    const Reflector& reflector = *input.reflector;
+    const Reflector& reflector = input.reflectors[static_cast<std::size_t>(map.reflector)];
     const std::string name = reflector.name.empty() ? std::string("the reflector") : reflector.name;
     const int maxDepth = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
     if (maxDepth == 0) {

@@ -125,10 +125,10 @@ PassWrites envmapWrites(const EnvmapPlan& map, const PlannedPass& pass) {
 void declareWrites(const FrameInput& input, FramePlan& plan) {
     for (PlannedPass& pass : plan.passes)
         pass.writes = cameraWrites(input, plan, pass);
-    if (plan.envmap)
-        for (PlannedPass& pass : plan.envmap->passes)
+    for (EnvmapPlan& map : plan.envmaps)
+        for (PlannedPass& pass : map.passes)
             if (pass.view >= 0)
-                pass.writes = envmapWrites(*plan.envmap, pass);
+                pass.writes = envmapWrites(map, pass);
 }
 
 } // namespace speculum::render

@@ -2,6 +2,7 @@
 // executors') says, worded here from its code and the details it names.
 #include "render/plan/PlanReason.hpp"
 
+#include "render/frame/SceneLimits.hpp"
 #include "render/frame/SceneNames.hpp"
 
 #include <algorithm>
@@ -304,6 +305,24 @@ std::string timeSlice(const ReasonDetails& d) {
            (d.oldestSlice == 1 ? " map update" : " map updates") + " ago";
 }
 
+// How the map draws the other reflectors: with their plain material, or with their maps of the bounce before.
+std::string bounceClause(const ReasonDetails& d) {
+    if (d.otherReflectors == 0)
+        return {};
+    const std::string others = d.otherReflectors == 1
+                                   ? "the other reflector"
+                                   : "the " + std::to_string(d.otherReflectors) + " other reflectors";
+    if (d.bounces == 0)
+        return "; " + others + " in it with " + (d.otherReflectors == 1 ? "its" : "their") +
+               " plain material (reflectorBounces 0)";
+    const std::string of = "bounce " + std::to_string(d.bounce) + " of " + std::to_string(d.bounces);
+    if (d.bounce == 0)
+        return "; " + of + ": " + others + " in it with " + (d.otherReflectors == 1 ? "its" : "their") +
+               " plain material";
+    return "; " + of + ": " + others + " in it with " + (d.otherReflectors == 1 ? "its map" : "their maps") +
+           " of bounce " + std::to_string(d.bounce - 1) + " where drawn this frame, else as kept";
+}
+
 std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
     switch (code) {
     case PlanReason::EnvmapOutOfSight:
@@ -319,6 +338,18 @@ std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
                std::string(names::fileName(names::kReflectorUpdates, d.update)) + ")";
     case PlanReason::EnvmapNotAllocated:
         return "no environment map: none could be allocated (see the warnings)";
+    case PlanReason::EnvmapOverCap:
+        return "environment pass skipped: more than " + std::to_string(d.limit) +
+               " reflectors need a map this frame, and the " + std::to_string(d.limit) +
+               " nearest the camera get one; this one keeps the map it has, or without one its plain "
+               "material";
+    case PlanReason::BouncesUnused:
+        return "no reflector bounces: reflectorBounces is " + std::to_string(d.asked) +
+               ", but a reflector never appears in its own map and there is no other";
+    case PlanReason::BouncesCapped:
+        return "reflector bounces cut to " + std::to_string(d.limit) + " of the " + std::to_string(d.asked) +
+               " asked: every bounce draws each map again, and a frame draws at most " +
+               std::to_string(kMaxEnvmapPasses) + " maps";
     default:
         break;
     }
@@ -335,15 +366,18 @@ std::string envmapSentence(PlanReason code, const ReasonDetails& d) {
     const std::string where = !d.screenSpaceFallbackOf.empty()
                                   ? "not seen, but the screen-space mirrors " + d.screenSpaceFallbackOf +
                                         " fall back to its map where their rays leave the image"
+                              : !d.seenInMapOf.empty()
+                                  ? "not seen, but in " + d.seenInMapOf + "'s map, which bounces draw it in"
                               : d.seenIn.empty() ? "seen directly"
                                                  : "seen in " + d.seenIn.front();
     const std::string why = code == PlanReason::EnvmapFirstMap ? "no map yet"
                             : code == PlanReason::EnvmapAlways ? "update: always"
+                            : code == PlanReason::EnvmapBounce ? "a bounce redraws every map it drew"
                             : code == PlanReason::EnvmapChanged
                                 ? "something it sees changed (update on-change)"
                                 : timeSlice(d);
     return "renders the scene around the reflector, lit and shadowed, from its centre into " + mapLayout(d) +
-           mirrors + "; the reflector is " + where + "; " + why + reflectedMeshes(d);
+           mirrors + bounceClause(d) + "; the reflector is " + where + "; " + why + reflectedMeshes(d);
 }
 
 std::string reflectorTraceSentence(PlanReason code, const ReasonDetails& d) {
@@ -483,6 +517,10 @@ constexpr std::array<CodeEntry, kPlanReasonCount> kCodes{{
     {PlanReason::EnvmapReusedOnce, "envmap-reused-once", envmapSentence},
     {PlanReason::EnvmapUnchanged, "envmap-unchanged", envmapSentence},
     {PlanReason::EnvmapNotAllocated, "envmap-not-allocated", envmapSentence},
+    {PlanReason::EnvmapBounce, "envmap-bounce", envmapSentence},
+    {PlanReason::EnvmapOverCap, "envmap-over-cap", envmapSentence},
+    {PlanReason::BouncesUnused, "bounces-unused", envmapSentence},
+    {PlanReason::BouncesCapped, "bounces-capped", envmapSentence},
     {PlanReason::PrefilterFirstChain, "prefilter-first-chain", prefilterSentence},
     {PlanReason::PrefilterMapRendered, "prefilter-map-rendered", prefilterSentence},
     {PlanReason::PrefilterSettingsChanged, "prefilter-settings-changed", prefilterSentence},
@@ -532,6 +570,8 @@ bool dropsWhatTheSceneAsks(PlanReason code) {
     case PlanReason::MirrorNoTexture:
     case PlanReason::EnvmapDoesNotFit:
     case PlanReason::EnvmapNotAllocated:
+    case PlanReason::EnvmapOverCap:
+    case PlanReason::BouncesCapped:
     case PlanReason::PrefilterNoMap:
         return true;
     case PlanReason::ShadowsOff:
@@ -575,6 +615,8 @@ bool dropsWhatTheSceneAsks(PlanReason code) {
     case PlanReason::EnvmapOutOfSight:
     case PlanReason::EnvmapReusedOnce:
     case PlanReason::EnvmapUnchanged:
+    case PlanReason::EnvmapBounce:
+    case PlanReason::BouncesUnused:
     case PlanReason::PrefilterFirstChain:
     case PlanReason::PrefilterMapRendered:
     case PlanReason::PrefilterSettingsChanged:

@@ -74,6 +74,10 @@ enum class PlanReason {
     EnvmapReusedOnce,
     EnvmapUnchanged,
     EnvmapNotAllocated, // skip while running
+    EnvmapBounce,       // pass: bounce details.bounce, the other reflectors drawn with their maps
+    EnvmapOverCap,      // skip: more reflectors need a map than kMaxReflectorMaps; this one is farther
+    BouncesUnused,      // skip: bounces asked with one reflector, which is never in its own map
+    BouncesCapped,      // skip: fewer bounces (details.limit) than asked (details.asked), kMaxEnvmapPasses
     // The reflector's GGX pre-filtered chain.
     PrefilterFirstChain,      // pass: no chain yet
     PrefilterMapRendered,     // pass: the map is rendered this frame
@@ -172,6 +176,13 @@ struct ReasonDetails {
     ReflectorFill fill = ReflectorFill::Resampled;
     int resolution = 0;
     std::optional<int> mapMirrorDepth{}; // how deep planar mirrors reflect in the map; none: no mirrors
+    // Not seen, but in the map of the reflector named here, which draws it with its map (bounces).
+    std::string seenInMapOf{};
+    // The bounce this drawing of the map is, of how many (Settings::reflectorBounces as planned), and the
+    // other reflectors it draws (0 with bounces: drawn with their plain material).
+    int bounce = 0;
+    int bounces = 0;
+    int otherReflectors = 0;
     // A time-sliced update: the face (or direct-fill part) it redraws, how many faces the map has, how many
     // others still show an older scene, and how many updates ago the oldest of those was drawn.
     std::string slicedFace{};

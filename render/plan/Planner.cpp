@@ -67,6 +67,26 @@ const ShadowPlan* FramePlan::shadowOf(int lightIndex) const {
     return nullptr;
 }
 
+int FramePlan::reflectorResolution(int index) const {
+    return index >= 0 && static_cast<std::size_t>(index) < reflectorResolutions.size()
+               ? reflectorResolutions[static_cast<std::size_t>(index)]
+               : 0;
+}
+
+const ReflectorMapState& PlannerState::mapOf(int index) const {
+    static const ReflectorMapState none;
+    return index >= 0 && static_cast<std::size_t>(index) < reflectorMaps.size()
+               ? reflectorMaps[static_cast<std::size_t>(index)]
+               : none;
+}
+
+ReflectorMapState& PlannerState::mapOf(int index) {
+    const auto i = static_cast<std::size_t>(std::max(index, 0));
+    if (reflectorMaps.size() <= i)
+        reflectorMaps.resize(i + 1);
+    return reflectorMaps[i];
+}
+
 namespace {
 
 // A stencil mirror whose blend keeps the camera's colour buffer in half float: the composite's reason.
@@ -212,9 +232,9 @@ std::uint64_t hashShadow(const FrameInput& input, int lightIndex, const math::Sh
         h.add(item.world);
         addShadowAlpha(h, item.material); // masked casters cut holes into their shadows
     }
-    if (input.reflector) {
-        h.add(input.reflector->mesh.get());
-        h.add(input.reflector->world);
+    for (const Reflector& reflector : input.reflectors) {
+        h.add(reflector.mesh.get());
+        h.add(reflector.world);
     }
     return h.value;
 }
@@ -234,14 +254,15 @@ std::uint64_t shadowSignature(const FrameInput& input, int lightIndex) {
 
 namespace {
 
-// What a shadow map draws: the items that cast shadows, and the reflector.
+// What a shadow map draws: the items that cast shadows, and the reflectors.
 std::size_t countShadowCasters(const FrameInput& input) {
     std::size_t casters = 0;
     for (const DrawItem& item : input.items)
         if (item.castsShadows && item.mesh)
             ++casters;
-    if (input.reflector && input.reflector->mesh)
-        ++casters;
+    for (const Reflector& reflector : input.reflectors)
+        if (reflector.mesh)
+            ++casters;
     return casters;
 }
 
@@ -342,7 +363,7 @@ PlannedPass mainPass(const FrameInput& input) {
     PlannedPass main;
     main.kind = PassKind::Main;
     main.code = PlanReason::MainHalfFloat; // until planCameraBuffer chooses the buffer
-    main.details.objects = input.items.size() + input.mirrors.size() + (input.reflector ? 1 : 0);
+    main.details.objects = input.items.size() + input.mirrors.size() + input.reflectors.size();
     main.details.lights = std::min<std::size_t>(input.lights.size(), kMaxLights);
     return main;
 }
@@ -441,12 +462,14 @@ void capMap(const Reflector& reflector, const Settings& settings, double seconds
         resolution = std::max(kLeastCappedResolution, resolution / 2);
 }
 
-// What drawing the reflector's map costs, said before the work: a map that would take minutes on a
-// software renderer is warned of, with the estimate; where the view must stay interactive (maxSeconds)
-// it is drawn smaller and with fewer pre-filter samples instead, and the warning says so.
-void planMapCost(const FrameInput& input, double maxSeconds, FramePlan& plan) {
-    const Reflector& reflector = *input.reflector;
-    const int asked = plan.reflectorResolution;
+// What drawing reflector `index`'s map costs, said before the work: a map that would take minutes on a
+// software renderer is warned of, with the estimate; where the view must stay interactive (maxSeconds,
+// this map's share of the frame's) it is drawn smaller and with fewer pre-filter samples instead, and the
+// warning says so.
+void planMapCost(const FrameInput& input, int index, double maxSeconds, FramePlan& plan) {
+    const Reflector& reflector = input.reflectors[static_cast<std::size_t>(index)];
+    int& planned = plan.reflectorResolutions[static_cast<std::size_t>(index)];
+    const int asked = planned;
     const int samples = input.settings.prefilterSamples;
     const MapCost full = mapCost(reflector, asked, input.settings, samples);
     const std::string name = "reflector \"" + reflector.name + "\"";
@@ -463,8 +486,10 @@ void planMapCost(const FrameInput& input, double maxSeconds, FramePlan& plan) {
     if (maxSeconds > 0.0 && full.softwareSeconds() > maxSeconds) {
         int resolution = asked, fewer = samples;
         capMap(reflector, input.settings, maxSeconds, resolution, fewer);
-        plan.reflectorResolution = resolution;
-        plan.prefilterSamples = fewer != samples ? fewer : 0;
+        planned = resolution;
+        if (fewer != samples)
+            plan.prefilterSamples =
+                plan.prefilterSamples > 0 ? std::min(plan.prefilterSamples, fewer) : fewer;
         plan.warnings.push_back(name + ": drawn at " + std::to_string(resolution) + "² with " +
                                 std::to_string(fewer) + " pre-filter samples while editing; " + what +
                                 " is " + costText(full) + often +
@@ -485,8 +510,11 @@ std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan&
         return light.shadows->mapSize != shadow.mapSize;
     };
     const bool shadows = std::any_of(plan.shadows.begin(), plan.shadows.end(), differs);
-    const bool reflector = input.reflector && plan.reflectorResolution > 0 &&
-                           input.reflector->resolution != plan.reflectorResolution;
+    bool reflector = false;
+    for (std::size_t i = 0; i < input.reflectors.size(); ++i) {
+        const int resolution = plan.reflectorResolution(static_cast<int>(i));
+        reflector = reflector || (resolution > 0 && input.reflectors[i].resolution != resolution);
+    }
     const bool mirrors = input.settings.mirrorDepth != plan.mirrorDepth;
     const bool samples =
         plan.prefilterSamples > 0 && plan.prefilterSamples != input.settings.prefilterSamples;
@@ -495,8 +523,9 @@ std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan&
     FrameInput planned = input;
     for (const ShadowPlan& shadow : plan.shadows)
         planned.lights[static_cast<std::size_t>(shadow.light)].shadows->mapSize = shadow.mapSize;
-    if (reflector)
-        planned.reflector->resolution = plan.reflectorResolution;
+    for (std::size_t i = 0; i < planned.reflectors.size(); ++i)
+        if (const int resolution = plan.reflectorResolution(static_cast<int>(i)); resolution > 0)
+            planned.reflectors[i].resolution = resolution;
     planned.settings.mirrorDepth = plan.mirrorDepth;
     if (samples)
         planned.settings.prefilterSamples = plan.prefilterSamples;
@@ -508,9 +537,13 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     FramePlan plan;
     plan.preview = options.preview;
     planShadows(input, state, options.maps, plan);
-    if (input.reflector) {
-        plan.reflectorResolution = fitEnvmapResolution(*input.reflector, options.maps, plan.warnings);
-        planMapCost(input, options.maxMapSeconds, plan);
+    // An interactive view's time for maps is shared among the reflectors.
+    const double mapSeconds =
+        input.reflectors.empty() ? 0.0 : options.maxMapSeconds / static_cast<double>(input.reflectors.size());
+    for (std::size_t i = 0; i < input.reflectors.size(); ++i) {
+        plan.reflectorResolutions.push_back(
+            fitEnvmapResolution(input.reflectors[i], options.maps, plan.warnings));
+        planMapCost(input, static_cast<int>(i), mapSeconds, plan);
     }
     plan.mirrorDepth = previewMirrorDepth(input.settings.mirrorDepth, plan.preview);
     // The rest is planned for the scene as it is drawn: its map sizes and mirror depth as just planned.
@@ -521,7 +554,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     // runs before the main pass, is needed only if the reflector is seen directly or in one of them.
     FramePlan mirrors;
     planMirrors(scene, viewport, mirrors);
-    planReflector(scene, state, viewport, mirrors, plan);
+    planReflectors(scene, state, viewport, mirrors, plan);
 
     plan.passes.push_back(mainPass(scene));
 
@@ -532,7 +565,7 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     for (SkippedEffect& skip : mirrors.skipped)
         plan.skipped.push_back(std::move(skip));
 
-    planReflectorTrace(scene, viewport, plan);
+    planReflectorTraces(scene, viewport, plan);
     if (options.guideLines > 0)
         plan.passes.push_back(guidesPass(options.guideLines));
     planCameraBuffer(scene, viewport, plan);

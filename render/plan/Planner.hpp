@@ -13,22 +13,32 @@
 
 namespace speculum::render {
 
+// What the renderer kept of one reflector's environment map, as far as planning is concerned.
+struct ReflectorMapState {
+    // The map, once rendered: the signature of what it saw (envmapSignature) and of the settings it was
+    // made with (envmapSettingsKey).
+    std::optional<std::uint64_t> signature;
+    std::optional<std::uint64_t> settings;
+    // Each face (or direct-fill component) of the map, by EnvmapFace::index: the signature of what it was
+    // last drawn with, and the update it was drawn in; `updates` counts the map's updates. A time-sliced
+    // map redraws the faces whose signature is not the scene's.
+    std::vector<std::uint64_t> faceSignatures;
+    std::vector<std::uint64_t> faceUpdates;
+    std::uint64_t updates = 0;
+    // The GGX pre-filtered chain, once filtered: prefilterKey of the map and samples it holds.
+    std::optional<std::uint64_t> prefilterKey;
+};
+
 // What the renderer kept from earlier frames, as far as planning is concerned.
 struct PlannerState {
     // Signature of the contents of each light's shadow map (by index into FrameInput::lights).
     std::unordered_map<int, std::uint64_t> shadowSignatures;
-    // The reflector's environment map, once rendered: the signature of what it saw (envmapSignature) and
-    // of the settings it was made with (envmapSettingsKey).
-    std::optional<std::uint64_t> envmapSignature;
-    std::optional<std::uint64_t> envmapSettings;
-    // Each face (or direct-fill component) of that map, by EnvmapFace::index: the signature of what it
-    // was last drawn with, and the update it was drawn in; envmapUpdates counts the map's updates. A
-    // time-sliced map redraws the faces whose signature is not the scene's.
-    std::vector<std::uint64_t> envmapFaceSignatures;
-    std::vector<std::uint64_t> envmapFaceUpdates;
-    std::uint64_t envmapUpdates = 0;
-    // The reflector's GGX pre-filtered chain, once filtered: prefilterKey of the map and samples it holds.
-    std::optional<std::uint64_t> prefilterKey;
+    // Each reflector's map, by index into FrameInput::reflectors (shorter: the rest have none).
+    std::vector<ReflectorMapState> reflectorMaps;
+
+    // The record of reflector `index` (an empty one where there is none).
+    const ReflectorMapState& mapOf(int index) const;
+    ReflectorMapState& mapOf(int index); // grows the list to hold it
 };
 
 inline constexpr int kMaxLights = 8;
@@ -86,8 +96,8 @@ envmap::MapType mapTypeOf(ReflectorMap map);
 FramePlan planFrame(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport = {},
                     const PlanOptions& options = {});
 
-// The scene as `plan` draws it: `input` with each planned shadow map's size (ShadowPlan::mapSize), the
-// reflector's resolution (FramePlan::reflectorResolution) and the mirror depth (FramePlan::mirrorDepth)
+// The scene as `plan` draws it: `input` with each planned shadow map's size (ShadowPlan::mapSize), each
+// reflector's resolution (FramePlan::reflectorResolutions) and the mirror depth (FramePlan::mirrorDepth)
 // the planner chose; nothing where they are the scene's own. The planner plans this scene, and the
 // renderer's executors draw it, so what they allocate and draw is what was planned.
 std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan& plan);
@@ -97,8 +107,8 @@ std::optional<FrameInput> plannedInput(const FrameInput& input, const FramePlan&
 // environment map's own passes get their stencil level and winding (they draw into the map's faces).
 void declareWrites(const FrameInput& input, FramePlan& plan);
 
-// Where the reflector's environment map is captured from (EnvmapCapture). Needs a reflector with a mesh.
-EnvmapCapture envmapCapture(const FrameInput& input);
+// Where reflector `index`'s environment map is captured from (EnvmapCapture). Needs a reflector with a mesh.
+EnvmapCapture envmapCapture(const FrameInput& input, int index);
 
 // The faces (or direct-fill components) pass 1 draws for the reflector's map settings.
 std::vector<EnvmapFace> envmapFaces(const Reflector& reflector, const EnvmapCapture& capture);
@@ -106,38 +116,43 @@ std::vector<EnvmapFace> envmapFaces(const Reflector& reflector, const EnvmapCapt
 // Hash of the map's settings (type, resolution, fill): a change needs new textures and a new map.
 std::uint64_t envmapSettingsKey(const Reflector& reflector);
 
-// Hash of everything the environment map sees, independent of the camera: the capture point, the map
-// settings, background and ambient, every light, every object's mesh, transform and material, every
-// mirror. Animations change transforms, so they change it too. Equal signatures: the map can be reused.
-std::uint64_t envmapSignature(const FrameInput& input);
+// Hash of everything reflector `index`'s environment map sees, independent of the camera: the capture
+// point, the map settings, background and ambient, every light, every object's mesh, transform and
+// material, every mirror, every other reflector (with its map's settings, which bounces read).
+// Animations change transforms, so they change it too. Equal signatures: the map can be reused.
+std::uint64_t envmapSignature(const FrameInput& input, int index);
 
 // Hash of what the reflector's GGX pre-filtered chain holds: the map it was filtered from (its signature and
 // settings) and the samples a texel. Equal keys: the chain can be reused.
 std::uint64_t prefilterKey(std::uint64_t envmapSignature, std::uint64_t envmapSettings, int samples);
 
-// Records in `state` what the map holds once `map` is drawn: the scene's signature in each face drawn,
-// stamped with this update. A map drawn whole (its first, or after its settings changed) starts the
+// Records in `state` what map.reflector's map holds once `map` is drawn: the scene's signature in each face
+// drawn, stamped with this update. A map drawn whole (its first, or after its settings changed) starts the
 // record afresh. The envmap pass's executor calls it; tests play frames with it.
 void recordEnvmap(const EnvmapPlan& map, PlannerState& state);
 
-// Whether the reflector's world bounds can be seen by the camera or in one of the mirror views planned
+// Whether reflector `index`'s world bounds can be seen by the camera or in one of the mirror views planned
 // in `plan` (its reflected frustum, with the oblique near plane, narrowed to the mirror's pixels).
 // `seenIn` gets the mirror it is seen in, or nothing when it is seen directly.
-bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, const FramePlan& plan,
+bool reflectorVisible(const FrameInput& input, int index, const PlanViewport& viewport, const FramePlan& plan,
                       std::vector<std::string>* seenIn = nullptr);
 
-// The environment-map part of planning: appends the envmap pass to `plan` (or a skip with its reason), then
-// the GGX pre-filter's pass (or a skip) for a rough reflector. `input` is the scene as planned (its
-// reflector at plan.reflectorResolution, see plannedInput); a preview (plan.preview) holds the map there is.
-// `mirrors` holds the frame's mirror views, used for visibility.
-void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
-                   const FramePlan& mirrors, FramePlan& plan);
+// The reflector whose map screen-space mirrors read where their rays find nothing in the image
+// (ScreenFallback::Map): the first with a mesh; -1 without one.
+int probeReflector(const FrameInput& input);
 
-// The reflector traced in screen space first (ReflectorTechnique::ScreenSpace), after every mirror's
+// The environment-map part of planning: appends every reflector's Envmap passes to `plan`, bounce by bounce
+// (or a skip with its reason), then the GGX pre-filter's pass (or a skip) of each rough one. `input` is the
+// scene as planned (its reflectors at plan.reflectorResolutions, see plannedInput); a preview
+// (plan.preview) holds the maps there are. `mirrors` holds the frame's mirror views, used for visibility.
+void planReflectors(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
+                    const FramePlan& mirrors, FramePlan& plan);
+
+// The reflectors traced in screen space first (ReflectorTechnique::ScreenSpace), after every mirror's
 // passes: a sharp reflector seen directly gets the camera's depth pyramid (shared with the screen-space
 // mirrors') and its trace pass; a rough one, or one seen only in mirrors, a skip that says why. Needs the
-// mirror views in `plan` (plan.views) and its environment pass planned.
-void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan);
+// mirror views in `plan` (plan.views) and the environment passes planned.
+void planReflectorTraces(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan);
 
 // Tiled stills: makes `plan`, planned for the whole image `image`, draw only the pixels `tile` of it
 // (GL window coordinates, y up) into a target of the tile's size. Every view's projection becomes the
@@ -157,7 +172,7 @@ void restrictToTile(FramePlan& plan, const math::PixelRect& tile, const PlanView
 // passes that draw them, appended to `plan` in execution order (depth first).
 void planMirrors(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan);
 
-// The same planner for the environment map: the mirror views (to the reflector's own mirrorDepth, all
+// The same planner for an environment map: the mirror views (to map.reflector's own mirrorDepth, all
 // with the stencil technique) seen from the capture point in each of map.faces, their passes and skips.
 // Every view of a face is planned within that face: kMaxMirrorViews per face.
 void planEnvmapMirrors(const FrameInput& input, EnvmapPlan& map);

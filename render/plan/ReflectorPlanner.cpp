@@ -1,7 +1,7 @@
-// Plans the curved reflector's environment pass: whether the reflector can be seen at all (directly or in
-// a planned mirror view), and whether its map must be rendered again under its update policy. The
-// signature of what the map sees is camera-independent, so a camera moving around a static scene reuses
-// the map.
+// Plans the curved reflectors' environment passes: whether each reflector can be seen at all (directly, in
+// a planned mirror view, or in another reflector's map when they bounce), whether its map must be
+// rendered again under its update policy, and the order of the maps bounce by bounce. The signature of
+// what a map sees is camera-independent, so a camera moving around a static scene reuses the maps.
 #include "render/envmap/Layout.hpp"
 #include "render/math/Projection.hpp"
 #include "render/plan/FrameHashing.hpp"
@@ -56,8 +56,8 @@ std::vector<glm::dvec4> clipPlanes(const math::PixelRect& rect, const PlanViewpo
 
 } // namespace
 
-EnvmapCapture envmapCapture(const FrameInput& input) {
-    const Reflector& reflector = *input.reflector;
+EnvmapCapture envmapCapture(const FrameInput& input, int index) {
+    const Reflector& reflector = input.reflectors.at(static_cast<std::size_t>(index));
     const math::Box own = math::worldBounds(computeBounds(*reflector.mesh), reflector.world);
     EnvmapCapture capture;
     capture.centre = own.center();
@@ -65,7 +65,8 @@ EnvmapCapture envmapCapture(const FrameInput& input) {
     const double inner = std::min({half.x, half.y, half.z});
     const double outer = std::max(glm::length(half), 1e-6);
     // A cube face clips points up to near·√3 from the centre: keep that inside the reflector, which is not
-    // drawn into its own map, so nothing around it is ever clipped.
+    // drawn into its own map, so nothing around it is ever clipped (but what lies inside it: another
+    // reflector touching or inside this one).
     capture.near = std::max(inner * 0.5 / std::sqrt(3.0), outer * 1e-3);
     double far = 0.0;
     const math::Box scene = math::sceneBounds(input);
@@ -120,13 +121,13 @@ std::uint64_t envmapSettingsKey(const Reflector& reflector) {
 
 // What the map draws: the declared fields of the scene's settings, lights, materials, mirrors and the
 // reflector itself that an environment map draws (FieldSpec::drawnInMaps: not the mirrors' technique and
-// roughness, which the map's stencil mirrors do not use, nor what only the reflector's lookups read), and
-// where everything is.
-std::uint64_t envmapSignature(const FrameInput& input) {
-    const Reflector& reflector = *input.reflector;
+// roughness, which the map's stencil mirrors do not use, nor what only the reflector's lookups read), the
+// other reflectors whole (a bounce draws them with their maps), and where everything is.
+std::uint64_t envmapSignature(const FrameInput& input, int index) {
+    const Reflector& reflector = input.reflectors.at(static_cast<std::size_t>(index));
     Hasher h;
     h.add(envmapSettingsKey(reflector));
-    const EnvmapCapture capture = envmapCapture(input);
+    const EnvmapCapture capture = envmapCapture(input, index);
     h.add(capture.centre);
     h.add(capture.near);
     h.add(capture.far);
@@ -156,12 +157,22 @@ std::uint64_t envmapSignature(const FrameInput& input) {
         h.add(mirror.hasMaterial);
         addMaterial(h, mirror.material);
     }
+    for (std::size_t j = 0; j < input.reflectors.size(); ++j) {
+        if (static_cast<int>(j) == index)
+            continue;
+        const Reflector& other = input.reflectors[j];
+        h.add(j);
+        h.add(other.world);
+        h.add(static_cast<const void*>(other.mesh.get()));
+        addFields(h, static_cast<const ReflectorParams&>(other), false);
+        addMaterial(h, other.material);
+    }
     return h.value;
 }
 
-bool reflectorVisible(const FrameInput& input, const PlanViewport& viewport, const FramePlan& plan,
+bool reflectorVisible(const FrameInput& input, int index, const PlanViewport& viewport, const FramePlan& plan,
                       std::vector<std::string>* seenIn) {
-    const Reflector& reflector = *input.reflector;
+    const Reflector& reflector = input.reflectors.at(static_cast<std::size_t>(index));
     const math::Box box = math::worldBounds(computeBounds(*reflector.mesh), reflector.world);
     const glm::dmat4 rotation = math::viewRotation(input.camera);
     const glm::dmat4 toCameraRelative = math::cameraRelative(input.camera);
@@ -200,9 +211,20 @@ std::uint64_t prefilterKey(std::uint64_t envmapSignature, std::uint64_t envmapSe
     return h.value;
 }
 
+int probeReflector(const FrameInput& input) {
+    for (std::size_t i = 0; i < input.reflectors.size(); ++i)
+        if (input.reflectors[i].mesh)
+            return static_cast<int>(i);
+    return -1;
+}
+
 namespace {
 
-// The screen-space mirrors whose rays that find nothing in the image read the reflector's map
+const Reflector& reflectorAt(const FrameInput& input, int index) {
+    return input.reflectors[static_cast<std::size_t>(index)];
+}
+
+// The screen-space mirrors whose rays that find nothing in the image read the probe reflector's map
 // (settings.screenFallback), named for the plan ("A, B"); empty when none does.
 std::string screenSpaceFallbackOf(const FrameInput& input, const FramePlan& mirrors) {
     if (input.settings.screenFallback != ScreenFallback::Map)
@@ -214,13 +236,13 @@ std::string screenSpaceFallbackOf(const FrameInput& input, const FramePlan& mirr
     return names;
 }
 
-// The GGX pre-filter of a visible reflector (planReflector). `captured`: the signature of the map the
-// Envmap pass renders this frame; empty when the map is reused. The chain is filtered only when the map
-// was rendered again, or the sample count changed, and only when the lookup reads it: a pass nothing on
+// The GGX pre-filter of reflector `index`, seen (planReflectors). `captured`: the signature of the map
+// its Envmap passes render this frame; empty when the map is reused. The chain is filtered only when the
+// map was rendered again, or the sample count changed, and only when the lookup reads it: a pass nothing on
 // screen needs never runs.
-void planPrefilter(const FrameInput& input, const PlannerState& state, std::optional<std::uint64_t> captured,
-                   FramePlan& plan) {
-    const Reflector& reflector = *input.reflector;
+void planPrefilter(const FrameInput& input, int index, const ReflectorMapState& state,
+                   std::optional<std::uint64_t> captured, FramePlan& plan) {
+    const Reflector& reflector = reflectorAt(input, index);
     const std::string name = reflector.name;
     if (!(reflector.roughness > 0.0)) {
         plan.skipped.push_back({name, PlanReason::PrefilterSharp});
@@ -239,7 +261,7 @@ void planPrefilter(const FrameInput& input, const PlannerState& state, std::opti
     if (captured) {
         key = prefilterKey(*captured, settings, samples);
     } else {
-        key = prefilterKey(state.envmapSignature.value_or(0), settings, samples);
+        key = prefilterKey(state.signature.value_or(0), settings, samples);
         if (state.prefilterKey && *state.prefilterKey == key) {
             plan.skipped.push_back({name, PlanReason::PrefilterReused});
             return;
@@ -249,6 +271,7 @@ void planPrefilter(const FrameInput& input, const PlannerState& state, std::opti
     PlannedPass pass;
     pass.kind = PassKind::Prefilter;
     pass.target = name;
+    pass.reflector = index;
     pass.code = why;
     pass.details.node = name;
     pass.details.roughness = std::min(reflector.roughness, 1.0);
@@ -262,15 +285,14 @@ void planPrefilter(const FrameInput& input, const PlannerState& state, std::opti
 // (round robin while the scene keeps changing), alone in map.faces; EnvmapUnchanged if every face is
 // up to date. `slice` says which face, and how out of date the others are: their age counts map updates,
 // this one included (1: drawn by the update before it).
-PlanReason timeSlicedUpdate(const PlannerState& state, EnvmapPlan& map, ReasonDetails& slice) {
+PlanReason timeSlicedUpdate(const ReflectorMapState& state, EnvmapPlan& map, ReasonDetails& slice) {
     auto signatureOf = [&](int index) {
         const auto i = static_cast<std::size_t>(index);
-        return i < state.envmapFaceSignatures.size() ? std::optional(state.envmapFaceSignatures[i])
-                                                     : std::nullopt;
+        return i < state.faceSignatures.size() ? std::optional(state.faceSignatures[i]) : std::nullopt;
     };
     auto updateOf = [&](int index) {
         const auto i = static_cast<std::size_t>(index);
-        return i < state.envmapFaceUpdates.size() ? state.envmapFaceUpdates[i] : 0;
+        return i < state.faceUpdates.size() ? state.faceUpdates[i] : 0;
     };
     const EnvmapFace* chosen = nullptr;
     for (const EnvmapFace& face : map.faces)
@@ -286,7 +308,7 @@ PlanReason timeSlicedUpdate(const PlannerState& state, EnvmapPlan& map, ReasonDe
             ++slice.staleFaces;
             slice.oldestSlice =
                 std::max(slice.oldestSlice, static_cast<int>(std::min<std::uint64_t>(
-                                                state.envmapUpdates + 1 - updateOf(face.index), 1u << 30)));
+                                                state.updates + 1 - updateOf(face.index), 1u << 30)));
         }
     const EnvmapFace face = *chosen;
     map.faces = {face};
@@ -296,12 +318,12 @@ PlanReason timeSlicedUpdate(const PlannerState& state, EnvmapPlan& map, ReasonDe
 // Whether every face of the map was last drawn with one signature: a whole map of one scene, not one a
 // time-sliced update left part done (before its policy changed). A state with no record of faces holds a
 // map drawn whole.
-bool facesAgree(const PlannerState& state, const EnvmapPlan& map) {
-    if (state.envmapFaceSignatures.empty())
+bool facesAgree(const ReflectorMapState& state, const EnvmapPlan& map) {
+    if (state.faceSignatures.empty())
         return true;
     for (const EnvmapFace& face : map.faces) {
         const auto i = static_cast<std::size_t>(face.index);
-        if (i >= state.envmapFaceSignatures.size() || state.envmapFaceSignatures[i] != state.envmapSignature)
+        if (i >= state.faceSignatures.size() || state.faceSignatures[i] != state.signature)
             return false;
     }
     return true;
@@ -310,9 +332,9 @@ bool facesAgree(const PlannerState& state, const EnvmapPlan& map) {
 // Why the map is drawn this frame (or reused): its update policy against what the planner state holds.
 // A time-sliced update leaves in map.faces only the face it draws; the other policies draw whole a map
 // that one left part done.
-PlanReason mapUpdate(const Reflector& reflector, const PlannerState& state, bool preview, EnvmapPlan& map,
-                     ReasonDetails& slice) {
-    if (!state.envmapSignature || state.envmapSettings != map.settingsKey)
+PlanReason mapUpdate(const Reflector& reflector, const ReflectorMapState& state, bool preview,
+                     EnvmapPlan& map, ReasonDetails& slice) {
+    if (!state.signature || state.settings != map.settingsKey)
         return PlanReason::EnvmapFirstMap; // drawn whole, whatever the policy
     if (preview && reflector.update != ReflectorUpdate::Once)
         return PlanReason::PreviewEnvmapHeld;
@@ -323,91 +345,216 @@ PlanReason mapUpdate(const Reflector& reflector, const PlannerState& state, bool
                                                            : PlanReason::EnvmapChanged;
     if (reflector.update == ReflectorUpdate::Once)
         return PlanReason::EnvmapReusedOnce;
-    return *state.envmapSignature == map.signature ? PlanReason::EnvmapUnchanged : PlanReason::EnvmapChanged;
+    return *state.signature == map.signature ? PlanReason::EnvmapUnchanged : PlanReason::EnvmapChanged;
 }
 
-} // namespace
+// A reflector that needs a map this frame, and where it is seen.
+struct Wanted {
+    int index = -1;
+    std::vector<std::string> seenIn;   // the mirror it is seen in; empty: seen directly
+    std::string screenSpaceFallbackOf; // not seen, but read by these screen-space mirrors
+    std::string seenInMapOf;           // not seen, but in this reflector's map, which bounces draw it in
+};
 
-void planReflector(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
-                   const FramePlan& mirrors, FramePlan& plan) {
-    if (!input.reflector || !input.reflector->mesh)
-        return;
-    const Reflector& reflector = *input.reflector;
-    std::vector<std::string> seenIn;
-    std::string fallbackOf;
-    if (!reflectorVisible(input, viewport, mirrors, &seenIn)) {
-        fallbackOf = screenSpaceFallbackOf(input, mirrors);
-        if (fallbackOf.empty()) {
-            plan.skipped.push_back({reflector.name, PlanReason::EnvmapOutOfSight});
-            return;
-        }
+// The reflectors whose maps something on screen needs: those seen directly or in a mirror, the probe where
+// screen-space mirrors fall back to it, and, when reflectors bounce, every other one (each is in the maps of
+// those seen). Skips say why the others get none.
+std::vector<Wanted> wantedReflectors(const FrameInput& input, const PlanViewport& viewport,
+                                     const FramePlan& mirrors, FramePlan& plan) {
+    std::vector<Wanted> wanted;
+    std::vector<int> unseen;
+    const int probe = probeReflector(input);
+    int withMeshes = 0;
+    for (std::size_t i = 0; i < input.reflectors.size(); ++i) {
+        if (!input.reflectors[i].mesh)
+            continue;
+        ++withMeshes;
+        Wanted w{static_cast<int>(i)};
+        if (reflectorVisible(input, w.index, viewport, mirrors, &w.seenIn))
+            wanted.push_back(std::move(w));
+        else if (w.index == probe &&
+                 !(w.screenSpaceFallbackOf = screenSpaceFallbackOf(input, mirrors)).empty())
+            wanted.push_back(std::move(w));
+        else
+            unseen.push_back(w.index);
     }
-    if (plan.reflectorResolution == 0) {
-        plan.skipped.push_back({reflector.name, PlanReason::EnvmapDoesNotFit});
-        return;
+    const bool bounces = input.settings.reflectorBounces > 0 && withMeshes > 1 && !wanted.empty();
+    for (const int i : unseen) {
+        if (bounces)
+            wanted.push_back({i, {}, {}, reflectorAt(input, wanted.front().index).name});
+        else
+            plan.skipped.push_back({reflectorAt(input, i).name, PlanReason::EnvmapOutOfSight});
     }
+    std::sort(wanted.begin(), wanted.end(),
+              [](const Wanted& a, const Wanted& b) { return a.index < b.index; });
+    return wanted;
+}
+
+// Keeps at most kMaxReflectorMaps of `wanted`, the nearest the camera, and those whose map fits; the others
+// get a skip that says why.
+void capWanted(const FrameInput& input, const FramePlan& plan, std::vector<Wanted>& wanted,
+               std::vector<SkippedEffect>& skipped) {
+    if (wanted.size() > static_cast<std::size_t>(kMaxReflectorMaps)) {
+        auto distance = [&](const Wanted& w) {
+            const Reflector& r = reflectorAt(input, w.index);
+            return glm::length(math::worldBounds(computeBounds(*r.mesh), r.world).center() -
+                               input.camera.position);
+        };
+        std::stable_sort(wanted.begin(), wanted.end(),
+                         [&](const Wanted& a, const Wanted& b) { return distance(a) < distance(b); });
+        for (std::size_t k = kMaxReflectorMaps; k < wanted.size(); ++k)
+            skipped.push_back({reflectorAt(input, wanted[k].index).name,
+                               PlanReason::EnvmapOverCap,
+                               {.limit = kMaxReflectorMaps}});
+        wanted.resize(kMaxReflectorMaps);
+        std::sort(wanted.begin(), wanted.end(),
+                  [](const Wanted& a, const Wanted& b) { return a.index < b.index; });
+    }
+    std::erase_if(wanted, [&](const Wanted& w) {
+        if (plan.reflectorResolution(w.index) > 0)
+            return false;
+        skipped.push_back({reflectorAt(input, w.index).name, PlanReason::EnvmapDoesNotFit});
+        return true;
+    });
+}
+
+// A map its update policy draws this frame: its plan and the pass that draws it (before bounces).
+struct DrawnMap {
+    EnvmapPlan map;
+    PlannedPass pass;
+};
+
+// The map of `w` if its update policy draws it this frame; else a skip that says why it is kept.
+std::optional<DrawnMap> drawnMap(const FrameInput& input, const PlannerState& state, const Wanted& w,
+                                 FramePlan& plan) {
+    const Reflector& reflector = reflectorAt(input, w.index);
     EnvmapPlan map;
     map.target = reflector.name;
-    map.capture = envmapCapture(input);
-    map.signature = envmapSignature(input);
+    map.reflector = w.index;
+    map.capture = envmapCapture(input, w.index);
+    map.signature = envmapSignature(input, w.index);
     map.settingsKey = envmapSettingsKey(reflector);
     map.faces = envmapFaces(reflector, map.capture);
     ReasonDetails slice;
-    const PlanReason why = mapUpdate(reflector, state, plan.preview.active(), map, slice);
+    const PlanReason why = mapUpdate(reflector, state.mapOf(w.index), plan.preview.active(), map, slice);
     if (why == PlanReason::EnvmapReusedOnce || why == PlanReason::EnvmapUnchanged ||
         why == PlanReason::PreviewEnvmapHeld) {
         plan.skipped.push_back({reflector.name, why, {.update = reflector.update}});
-        planPrefilter(input, state, {}, plan);
-        return;
+        return std::nullopt;
     }
     PlannedPass pass;
     pass.kind = PassKind::Envmap;
     pass.target = reflector.name;
+    pass.reflector = w.index;
     pass.code = why;
     pass.details = std::move(slice);
-    pass.details.seenIn = std::move(seenIn);
-    pass.details.screenSpaceFallbackOf = std::move(fallbackOf);
+    pass.details.seenIn = w.seenIn;
+    pass.details.screenSpaceFallbackOf = w.screenSpaceFallbackOf;
+    pass.details.seenInMapOf = w.seenInMapOf;
     pass.details.map = reflector.map;
     pass.details.fill = reflector.fill;
     pass.details.resolution = reflector.resolution;
+    pass.details.otherReflectors = 0;
+    for (std::size_t j = 0; j < input.reflectors.size(); ++j)
+        pass.details.otherReflectors += static_cast<int>(j) != w.index && input.reflectors[j].mesh ? 1 : 0;
     // Mirrors in the map cost a scene draw per mirror view in each face or component they show in.
     if (!input.mirrors.empty())
         pass.details.mapMirrorDepth = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
-    plan.passes.push_back(std::move(pass));
-
     planEnvmapMirrors(input, map);
-    const std::uint64_t signature = map.signature;
-    plan.envmap = std::move(map);
-    planPrefilter(input, state, signature, plan);
+    return DrawnMap{std::move(map), std::move(pass)};
+}
+
+// The bounces the frame draws: the scene's, where there is another reflector to see, and within
+// kMaxEnvmapPasses for `maps` maps drawn bounce by bounce; skips say where fewer are drawn than asked.
+int plannedBounces(const FrameInput& input, int maps, FramePlan& plan) {
+    const int asked = std::clamp(input.settings.reflectorBounces, 0, kMaxReflectorBounces);
+    if (asked == 0 || maps == 0)
+        return 0;
+    const auto withMeshes = std::count_if(input.reflectors.begin(), input.reflectors.end(),
+                                          [](const Reflector& r) { return r.mesh != nullptr; });
+    if (withMeshes < 2) {
+        plan.skipped.push_back({"", PlanReason::BouncesUnused, {.asked = asked}});
+        return 0;
+    }
+    const int most = std::max(kMaxEnvmapPasses / std::max(maps, 1) - 1, 0);
+    if (asked > most) {
+        plan.skipped.push_back({"", PlanReason::BouncesCapped, {.limit = most, .asked = asked}});
+        return most;
+    }
+    return asked;
+}
+
+// Appends the drawn maps' Envmap passes bounce by bounce. Maps drawn whole at every bounce read each
+// other's maps of the bounce before; where only one such map is drawn (or a time-sliced map's one face),
+// the others it reads do not change between bounces, so it is drawn once, at the last.
+void appendBounces(std::vector<DrawnMap>& drawn, int bounces, FramePlan& plan) {
+    const auto everyBounce = [&](const DrawnMap& d) { return d.pass.code != PlanReason::EnvmapTimeSliced; };
+    const bool jacobi = bounces > 0 && std::count_if(drawn.begin(), drawn.end(), everyBounce) > 1;
+    for (int b = 0; b <= bounces; ++b)
+        for (DrawnMap& d : drawn) {
+            if (b != bounces && !(jacobi && everyBounce(d)))
+                continue;
+            PlannedPass pass = d.pass;
+            pass.envmap = static_cast<int>(plan.envmaps.size());
+            pass.details.bounce = b;
+            pass.details.bounces = bounces;
+            if (b > 0 && jacobi && everyBounce(d))
+                pass.code = PlanReason::EnvmapBounce;
+            plan.passes.push_back(std::move(pass));
+            plan.envmaps.push_back(d.map);
+            plan.envmaps.back().bounce = b;
+        }
+}
+
+} // namespace
+
+void planReflectors(const FrameInput& input, const PlannerState& state, const PlanViewport& viewport,
+                    const FramePlan& mirrors, FramePlan& plan) {
+    std::vector<Wanted> wanted = wantedReflectors(input, viewport, mirrors, plan);
+    capWanted(input, plan, wanted, plan.skipped);
+    std::vector<DrawnMap> drawn;
+    for (const Wanted& w : wanted)
+        if (std::optional<DrawnMap> map = drawnMap(input, state, w, plan))
+            drawn.push_back(std::move(*map));
+    appendBounces(drawn, plannedBounces(input, static_cast<int>(drawn.size()), plan), plan);
+    for (const Wanted& w : wanted) {
+        const auto it = std::find_if(drawn.begin(), drawn.end(),
+                                     [&](const DrawnMap& d) { return d.map.reflector == w.index; });
+        planPrefilter(input, w.index, state.mapOf(w.index),
+                      it != drawn.end() ? std::optional(it->map.signature) : std::nullopt, plan);
+    }
 }
 
 void recordEnvmap(const EnvmapPlan& map, PlannerState& commits) {
-    const bool whole = commits.envmapSettings != map.settingsKey;
-    commits.envmapSignature = map.signature;
-    commits.envmapSettings = map.settingsKey;
+    ReflectorMapState& state = commits.mapOf(map.reflector);
+    const bool whole = state.settings != map.settingsKey;
+    state.signature = map.signature;
+    state.settings = map.settingsKey;
     if (whole) {
-        commits.envmapFaceSignatures.clear();
-        commits.envmapFaceUpdates.clear();
+        state.faceSignatures.clear();
+        state.faceUpdates.clear();
     }
-    ++commits.envmapUpdates;
+    ++state.updates;
     for (const EnvmapFace& face : map.faces) {
         const auto i = static_cast<std::size_t>(face.index);
-        if (commits.envmapFaceSignatures.size() <= i) {
-            commits.envmapFaceSignatures.resize(i + 1, 0);
-            commits.envmapFaceUpdates.resize(i + 1, 0);
+        if (state.faceSignatures.size() <= i) {
+            state.faceSignatures.resize(i + 1, 0);
+            state.faceUpdates.resize(i + 1, 0);
         }
-        commits.envmapFaceSignatures[i] = map.signature;
-        commits.envmapFaceUpdates[i] = commits.envmapUpdates;
+        state.faceSignatures[i] = map.signature;
+        state.faceUpdates[i] = state.updates;
     }
 }
 
-void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {
-    if (!input.reflector || !input.reflector->mesh ||
-        input.reflector->technique != ReflectorTechnique::ScreenSpace || plan.reflectorResolution == 0)
-        return;
-    const Reflector& reflector = *input.reflector;
+namespace {
+
+// Reflector `index`'s screen-space trace (planReflectorTraces), with the depth pyramid the traces share
+// unless an earlier one planned it (`pyramid`).
+void planReflectorTrace(const FrameInput& input, int index, const PlanViewport& viewport, bool& pyramid,
+                        FramePlan& plan) {
+    const Reflector& reflector = reflectorAt(input, index);
     std::vector<std::string> seenIn;
-    if (!reflectorVisible(input, viewport, plan, &seenIn))
+    if (!reflectorVisible(input, index, viewport, plan, &seenIn))
         return; // its map is skipped as out of sight, and says so
     if (!seenIn.empty()) {
         plan.skipped.push_back({reflector.name, PlanReason::ReflectorTraceNotSeenDirectly});
@@ -417,18 +564,22 @@ void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, F
     // they trace); by now they are, and the reflector's rays meet them: a pyramid of its own then.
     const bool screenSpaceMirrors =
         std::any_of(plan.views.begin(), plan.views.end(), [](const MirrorView& v) { return v.screenSpace; });
-    PlannedPass pyramid;
-    pyramid.kind = PassKind::ScreenDepth;
-    pyramid.code = PlanReason::ScreenDepthPyramid;
-    pyramid.details.node = "for " + reflector.name;
-    pyramid.details.screenSpaceMirrorsInDepth = screenSpaceMirrors;
-    plan.passes.push_back(std::move(pyramid));
+    if (!pyramid) {
+        PlannedPass depth;
+        depth.kind = PassKind::ScreenDepth;
+        depth.code = PlanReason::ScreenDepthPyramid;
+        depth.details.node = "for " + reflector.name;
+        depth.details.screenSpaceMirrorsInDepth = screenSpaceMirrors;
+        plan.passes.push_back(std::move(depth));
+        pyramid = true;
+    }
     // A rough reflector's cone reads the image blurred: a pyramid of it, once everything is drawn.
     const double roughness = std::clamp(reflector.roughness, 0.0, 1.0);
     if (roughness > 0.0) {
         PlannedPass colour;
         colour.kind = PassKind::ScreenColour;
         colour.code = PlanReason::ScreenColourPyramid;
+        colour.reflector = index;
         colour.details.node = reflector.name;
         colour.details.roughness = roughness;
         plan.passes.push_back(std::move(colour));
@@ -436,9 +587,22 @@ void planReflectorTrace(const FrameInput& input, const PlanViewport& viewport, F
     PlannedPass trace;
     trace.kind = PassKind::ReflectorTrace;
     trace.target = reflector.name;
+    trace.reflector = index;
     trace.code = PlanReason::ReflectorScreenTrace;
     trace.details.roughness = roughness;
     plan.passes.push_back(std::move(trace));
+}
+
+} // namespace
+
+void planReflectorTraces(const FrameInput& input, const PlanViewport& viewport, FramePlan& plan) {
+    bool pyramid = false;
+    for (std::size_t i = 0; i < input.reflectors.size(); ++i) {
+        const Reflector& reflector = input.reflectors[i];
+        if (reflector.mesh && reflector.technique == ReflectorTechnique::ScreenSpace &&
+            plan.reflectorResolution(static_cast<int>(i)) > 0)
+            planReflectorTrace(input, static_cast<int>(i), viewport, pyramid, plan);
+    }
 }
 
 } // namespace speculum::render

@@ -11,7 +11,7 @@ enum class HitKind : std::uint8_t {
     Object,     // FrameInput::items[index]
     Mirror,     // the reflective side of FrameInput::mirrors[index]
     MirrorBack, // the back of FrameInput::mirrors[index] (shows its material)
-    Reflector,  // the curved reflector (index 0)
+    Reflector,  // FrameInput::reflectors[index]
 };
 
 struct PixelId {

@@ -218,10 +218,13 @@ SceneGeometry::build(const FrameInput& input, const glm::dvec3& origin, std::vec
         geometry->m_surfaces.push_back(makeSurface(plane, toRelative * rectangle, SurfaceKind::Mirror,
                                                    static_cast<int>(i), false, dropped));
     }
-    if (input.reflector && input.reflector->mesh)
-        geometry->m_surfaces.push_back(makeSurface(*input.reflector->mesh,
-                                                   toRelative * input.reflector->world,
-                                                   SurfaceKind::Reflector, 0, true, dropped));
+    for (std::size_t i = 0; i < input.reflectors.size(); ++i) {
+        const Reflector& reflector = input.reflectors[i];
+        if (reflector.mesh)
+            geometry->m_surfaces.push_back(makeSurface(*reflector.mesh, toRelative * reflector.world,
+                                                       SurfaceKind::Reflector, static_cast<int>(i), true,
+                                                       dropped));
+    }
     if (dropped > 0)
         warnings.push_back("reference: " + std::to_string(dropped) +
                            " invalid triangles (indices out of range or non-finite positions) were left out");

@@ -98,7 +98,7 @@ struct Tracer::Impl {
     std::vector<MaterialTextures> itemTexture;   // textures per item
     std::vector<MaterialTextures> mirrorTexture; // per mirror: its material's textures
     std::vector<std::optional<math::Plane>> mirrorPlanes;
-    MaterialTextures reflectorTexture;
+    std::vector<MaterialTextures> reflectorTexture; // per reflector: its material's textures
     int maxMirrorDepth = 0;
     std::vector<std::string> warnings;
 
@@ -108,7 +108,8 @@ struct Tracer::Impl {
     struct Path {
         int mirrorLevel = 0; // planar reflections so far (since the last reflector bounce)
         int mirrorLimit = 0; // planar reflections allowed: the scene's depth, or the reflector's in its map
-        int reflectorLevel = 0;     // bounces off the reflector so far
+        int reflectorLevel = 0;     // bounces off reflectors so far
+        int lastReflector = -1;     // the reflector it last left (-1: none)
         double farLeft = kInfinity; // what is left of the camera's far plane (in units of the direction)
         // Rough reflections: the path's random numbers, the lobe samples taken so far (their counter), and
         // whether it took any (set through the pointer, so the caller learns whether the pixel is exact).
@@ -162,7 +163,7 @@ struct Tracer::Impl {
             return mirrorRadiance(shader, settings, direction, *hit, viewDir, path);
         case SurfaceKind::Reflector:
             if (id)
-                *id = {HitKind::Reflector, 0};
+                *id = {HitKind::Reflector, surface.index};
             return reflectorRadiance(shader, settings, direction, *hit, viewDir, path);
         }
         return input.settings.background;
@@ -212,14 +213,17 @@ struct Tracer::Impl {
         return result;
     }
 
-    // The curved reflector's colour where the ray met it: reflector.frag's surface·(1−R) + environment·R,
-    // Schlick's R with fresnel; its material alone beyond the reflector depth.
+    // A curved reflector's colour where the ray met it: reflector.frag's surface·(1−R) + environment·R,
+    // Schlick's R with fresnel; its material alone beyond the reflector depth, and where the ray left it
+    // last (TraceSettings::reflectorDepth).
     glm::dvec3 reflectorRadiance(const Shader& shader, const TraceSettings& settings,
                                  const glm::dvec3& direction, const Hit& hit, const glm::dvec3& viewDir,
                                  const Path& path) const {
-        const Reflector& reflector = *input.reflector;
-        if (path.reflectorLevel >= settings.reflectorDepth)
-            return shader.shade(reflector.material, reflectorTexture, hit, viewDir);
+        const auto index = static_cast<std::size_t>(hit.surface->index);
+        const Reflector& reflector = input.reflectors[index];
+        const MaterialTextures& texture = reflectorTexture[index];
+        if (path.reflectorLevel >= settings.reflectorDepth || path.lastReflector == hit.surface->index)
+            return shader.shade(reflector.material, texture, hit, viewDir);
         double r = std::clamp(reflector.reflectivity, 0.0, 1.0);
         if (reflector.fresnel) {
             const double c = std::clamp(glm::dot(hit.normal, viewDir), 0.0, 1.0);
@@ -227,12 +231,13 @@ struct Tracer::Impl {
         }
         glm::dvec3 result(0.0);
         if (r < 1.0)
-            result += shader.shade(reflector.material, reflectorTexture, hit, viewDir) * (1.0 - r);
+            result += shader.shade(reflector.material, texture, hit, viewDir) * (1.0 - r);
         // Reflected about the interpolated normal (what an environment-map lookup uses too); the new ray
         // leaves from the side the viewer is on. An environment map has no far plane, and shows planar
         // mirrors to the reflector's own mirror depth.
         Path next = path;
         next.reflectorLevel += 1;
+        next.lastReflector = hit.surface->index;
         next.farLeft = kInfinity;
         next.mirrorLevel = 0;
         next.mirrorLimit = std::clamp(reflector.mirrorDepth, 0, kStencilLevels);
@@ -380,8 +385,8 @@ base::Result<Tracer> Tracer::create(const FrameInput& input) {
         impl->itemTexture.push_back(MaterialTextures::add(impl->textures, item.material));
     for (const Mirror& mirror : impl->input.mirrors)
         impl->mirrorTexture.push_back(MaterialTextures::add(impl->textures, mirror.material));
-    if (impl->input.reflector)
-        impl->reflectorTexture = MaterialTextures::add(impl->textures, impl->input.reflector->material);
+    for (const Reflector& reflector : impl->input.reflectors)
+        impl->reflectorTexture.push_back(MaterialTextures::add(impl->textures, reflector.material));
     auto geometry =
         SceneGeometry::build(impl->input, origin, impl->warnings, &impl->textures, &impl->itemTexture);
     if (!geometry)

@@ -34,10 +34,13 @@ struct TraceSettings {
     int height = 720;
     int ssaa = 1; // N: N×N samples per pixel on the same ordered grid as renderStill
     ShadowMode shadows = ShadowMode::Hard;
-    // Bounces off the curved reflector along one path. 1 is what an environment map shows (the scene
-    // seen from the reflector); a reflected ray that meets the reflector again beyond this count sees
-    // its plain material, as a mirror beyond settings.mirrorDepth does.
-    int reflectorDepth = 1;
+    // Bounces off curved reflectors along one path: a reflected ray that meets a reflector beyond this
+    // count sees its plain material, as a mirror beyond settings.mirrorDepth does. One that meets the
+    // reflector it last left again (a concave one seeing itself, or itself through planar mirrors) sees
+    // its plain material too: a reflector is not in its own environment map, and that is not an error of
+    // the maps the comparison is about. Reflections between different reflectors are followed to the
+    // depth, beyond what any count of map bounces draws.
+    int reflectorDepth = 8;
     int threads = 0; // worker threads; 0: one per hardware thread
     // Paths per sub-sample (kMinTraceSamples..kMaxTraceSamples) where the first path meets a rough mirror
     // or reflector: the first path and samples − 1 more, averaged. Elsewhere a pixel is exact and traced

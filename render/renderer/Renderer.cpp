@@ -159,11 +159,11 @@ namespace {
 // What allocating the frame's maps found.
 struct AllocatedMaps {
     std::vector<int> shadowsMissing; // lights whose planned map could not be allocated: no shadow this frame
-    bool envmapAllocated = true;     // false: the reflector's Envmap pass does not run
-    bool fellBack = false;           // a planned size failed: the next frame plans the one that works
+    std::vector<bool> envmapAllocated; // per reflector; false: its Envmap passes do not run
+    bool fellBack = false;             // a planned size failed: the next frame plans the one that works
 };
 
-// Allocates the maps the plan sizes: each planned shadow map, and the reflector's map where the frame
+// Allocates the maps the plan sizes: each planned shadow map, and each reflector's map where the frame
 // captures it. The plan is below every size that failed before; a size that fails now (one never tried)
 // leaves its map out of this frame, with a warning, and is remembered, so the next frame is planned with a
 // size that works. The plan is never made again for this frame.
@@ -177,10 +177,17 @@ AllocatedMaps allocateMaps(const FrameInput& input, const FramePlan& plan, passe
     for (const ShadowPlan& shadow : plan.shadows)
         if (!note(r.shadows.allocate(input, shadow, warnings)))
             allocated.shadowsMissing.push_back(shadow.light);
-    const bool capturing = std::any_of(plan.passes.begin(), plan.passes.end(),
-                                       [](const PlannedPass& p) { return p.kind == PassKind::Envmap; });
-    if (capturing)
-        allocated.envmapAllocated = note(r.reflector.allocate(*input.reflector, warnings));
+    allocated.envmapAllocated.assign(input.reflectors.size(), true);
+    r.reflector.keepMaps(input.reflectors.size());
+    std::vector<bool> tried(input.reflectors.size(), false);
+    for (const EnvmapPlan& map : plan.envmaps) { // each reflector once, whatever its bounces
+        const auto i = static_cast<std::size_t>(map.reflector);
+        if (tried[i])
+            continue;
+        tried[i] = true;
+        allocated.envmapAllocated[i] =
+            note(r.reflector.allocate(map.reflector, input.reflectors[i], warnings));
+    }
     return allocated;
 }
 
@@ -202,7 +209,7 @@ void selectLighting(passes::FrameResources& r, const FrameInput& input, const Fr
     base::Status selected = r.meshProgram.select(lighting, variants);
     if (selected)
         selected = r.mirrorProgram.select(lighting, variants);
-    if (selected && input.reflector) // the reflector's programs build their variants only when needed
+    if (selected && !input.reflectors.empty()) // the reflector's programs build variants only when needed
         selected = r.reflector.selectLighting(lighting, variants);
     if (!selected) {
         warnings.push_back(
@@ -320,9 +327,11 @@ passes::MainPassContext mainPassContext(passes::FrameResources& r, const FramePl
     context.coarseItems = plan.coarseItems;
     r.meshFacts.purge();
     context.meshFacts = options.cullHiddenBackFaces ? &r.meshFacts : nullptr;
-    // Every view the main pass draws (the camera's and each mirror's) draws the reflector with its map.
-    context.drawReflector = [&r](const FrameInput& in, const passes::ViewSetup& view,
-                                 passes::MainPassContext& c) { return r.reflector.drawSurface(in, view, c); };
+    // Every view the main pass draws (the camera's and each mirror's) draws the reflectors with their maps.
+    context.drawReflector = [&r](const FrameInput& in, int index, const passes::ViewSetup& view,
+                                 passes::MainPassContext& c) {
+        return r.reflector.drawSurface(in, index, view, c);
+    };
     return context;
 }
 
@@ -394,8 +403,8 @@ void finishReport(passes::FrameResources& r, passes::FrameExecution& frame, int 
         report.memory.mirrors += r.reflectionTextures[static_cast<std::size_t>(slot)].bytes();
     for (int lightIndex : plan.shadowedLights)
         report.memory.shadows += r.shadows.bytes(lightIndex);
-    if (frame.input.reflector)
-        report.memory.envmap = r.reflector.mapBytes(*frame.input.reflector);
+    for (std::size_t i = 0; i < frame.input.reflectors.size(); ++i)
+        report.memory.envmap += r.reflector.mapBytes(static_cast<int>(i), frame.input.reflectors[i]);
     r.meshes.purge();
     r.reflector.purge();
     for (std::string& warning : r.meshes.takeWarnings())
@@ -405,13 +414,20 @@ void finishReport(passes::FrameResources& r, passes::FrameExecution& frame, int 
     report.occlusionWaits = r.occlusion.waits();
 }
 
-// Forgets the reflector's map in the planner state: its signature, its faces and its GGX chain.
-void forgetEnvmap(PlannerState& state) {
-    state.envmapSignature.reset();
-    state.envmapSettings.reset();
-    state.envmapFaceSignatures.clear();
-    state.envmapFaceUpdates.clear();
-    state.prefilterKey.reset();
+// Forgets in the planner state the maps that could not be made at the planned size: their signatures,
+// their faces and their GGX chains.
+void forgetEnvmaps(PlannerState& state, const std::vector<bool>& allocated) {
+    for (std::size_t i = 0; i < allocated.size(); ++i)
+        if (!allocated[i] && i < state.reflectorMaps.size())
+            state.reflectorMaps[i] = ReflectorMapState{};
+}
+
+// Map updates recorded so far, all reflectors together.
+std::uint64_t mapUpdates(const PlannerState& state) {
+    std::uint64_t updates = 0;
+    for (const ReflectorMapState& map : state.reflectorMaps)
+        updates += map.updates;
+    return updates;
 }
 
 // Whether the frame's time-sliced map update (if any) left faces showing an older scene.
@@ -442,11 +458,12 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
                                               s.coarseLevelRequest, s.planObserver, r, report);
     const FramePlan& plan = report.plan;
     const FrameInput& input = planned.planned ? *planned.planned : requested;
-    // The reflector's map could not be made at the planned size: whatever the planner state says it holds
-    // is gone, so the next frame draws a new map whole.
-    if (!planned.maps.envmapAllocated)
-        forgetEnvmap(s.plannerState);
-    const std::uint64_t mapUpdatesBefore = s.plannerState.envmapUpdates;
+    // A reflector's map could not be made at the planned size: whatever the planner state says it holds is
+    // gone, so the next frame draws a new map whole. The state keeps no reflector the scene has no more.
+    forgetEnvmaps(s.plannerState, planned.maps.envmapAllocated);
+    if (s.plannerState.reflectorMaps.size() > input.reflectors.size())
+        s.plannerState.reflectorMaps.resize(input.reflectors.size());
+    const std::uint64_t mapUpdatesBefore = mapUpdates(s.plannerState);
 
     selectLighting(r, input, plan, options, report.warnings);
     // A seamless cube map filters across face edges, so PCF near a face border reads the neighbouring
@@ -474,8 +491,10 @@ FrameReport Renderer::render(const FrameInput& requested, const RenderTarget& ta
     frame.countScreenSpace = options.countScreenSpace;
     frame.showScreenSpaceSources = options.showScreenSpaceSources;
     gl::FramebufferBinding keepCallerBinding;
+    r.reflector.beginFrame();
     runPasses(frame, plan.cameraBuffer == CameraBuffer::Srgb8, options, s.timer, report);
-    report.mapSettling = s.plannerState.envmapUpdates != mapUpdatesBefore && timeSliceLeftFacesBehind(plan);
+    r.reflector.endFrame();
+    report.mapSettling = mapUpdates(s.plannerState) != mapUpdatesBefore && timeSliceLeftFacesBehind(plan);
 
     // The report: what ran, what it cost, and what execution found it could not draw.
     if (options.gpuTimings)

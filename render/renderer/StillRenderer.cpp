@@ -137,7 +137,8 @@ constexpr int kScreenSpaceTileSize = 4096;
 bool tracesTheImage(const FrameInput& input) {
     return std::any_of(input.mirrors.begin(), input.mirrors.end(),
                        [](const Mirror& m) { return m.technique == MirrorTechnique::ScreenSpace; }) ||
-           (input.reflector && input.reflector->technique == ReflectorTechnique::ScreenSpace);
+           std::any_of(input.reflectors.begin(), input.reflectors.end(),
+                       [](const Reflector& r) { return r.technique == ReflectorTechnique::ScreenSpace; });
 }
 
 } // namespace

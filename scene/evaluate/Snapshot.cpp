@@ -118,10 +118,6 @@ private:
 
     void addReflector(const NodeData& d, const glm::dmat4& world, const render::MeshHandle& mesh,
                       const render::Material& material, render::FrameInput& frame) {
-        if (frame.reflector) {
-            m_warnings.push_back(reflectorSkipped(d.name, frame.reflector->name));
-            return;
-        }
         if (!mesh) {
             // With the node's model file: when that failed to load, the editor puts the file's reason
             // instead.
@@ -135,7 +131,7 @@ private:
         r.world = world;
         r.mesh = mesh;
         r.material = material;
-        frame.reflector = std::move(r);
+        frame.reflectors.push_back(std::move(r));
     }
 
     static render::Light light(const NodeData& d, const glm::dmat4& world) {

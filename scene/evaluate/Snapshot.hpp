@@ -16,9 +16,9 @@ namespace speculum::scene {
 //   mesh (and no reflector) → a DrawItem with the node's material, or the default material;
 //   light                   → a Light at the world origin of the node, pointing along its world −Y;
 //   mirror                  → a Mirror (world matrix, size, reflectivity, technique, material if any);
-//   reflector               → the Reflector, whose surface is the node's mesh (not also a DrawItem).
-// A mesh that cannot be loaded (MeshSkipped, with the node and the model file), a reflector without a mesh
-// (ReflectorWithoutMesh) or a second reflector (ReflectorSkipped) give a warning, and that part of the
+//   reflector               → a Reflector, whose surface is the node's mesh (not also a DrawItem).
+// A mesh that cannot be loaded (MeshSkipped, with the node and the model file) or a reflector without a
+// mesh (ReflectorWithoutMesh) give a warning, and that part of the
 // node is skipped; the reader's notes on a model file read for it come too (ModelFileNote). snapshot never
 // fails.
 render::FrameInput snapshot(const Scene& scene, double timeSeconds, MeshLibrary& meshes,

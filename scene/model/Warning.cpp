@@ -24,14 +24,6 @@ Warning meshLoading(const std::string& node, const std::string& file) {
             aboutNode(node, "mesh loading: " + base::quoted(name) + "...")};
 }
 
-Warning reflectorSkipped(const std::string& node, const std::string& firstReflector) {
-    return {WarningCode::ReflectorSkipped,
-            node,
-            {},
-            aboutNode(node,
-                      "reflector skipped: the scene already has one (" + base::quoted(firstReflector) + ")")};
-}
-
 Warning reflectorWithoutMesh(const std::string& node, const std::string& file) {
     return {WarningCode::ReflectorWithoutMesh, node, file,
             aboutNode(node, "reflector skipped: it needs a mesh on the same node")};

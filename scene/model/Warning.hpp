@@ -10,7 +10,6 @@ namespace speculum::scene {
 enum class WarningCode {
     MeshSkipped,          // a node's mesh is not drawn: its file is missing or unreadable, or lacks the part
     MeshLoading,          // a node's model file is still being read (the editor reads them on workers)
-    ReflectorSkipped,     // a second reflector: the scene draws its first one only
     ReflectorWithoutMesh, // a reflector whose node has no mesh that loads
     ModelFileNote,        // something a model file holds that speculum cannot show (a second uv set, ...)
 };
@@ -29,8 +28,6 @@ struct Warning {
 Warning meshSkipped(const std::string& node, const std::string& file, const std::string& reason);
 // "node 'Statue': mesh loading: 'statue.glb'..."
 Warning meshLoading(const std::string& node, const std::string& file);
-// "node 'Second': reflector skipped: the scene already has one ('First')"
-Warning reflectorSkipped(const std::string& node, const std::string& firstReflector);
 // "node 'Ball': reflector skipped: it needs a mesh on the same node"; `file` is the node's model file,
 // whose failure may be the reason (empty when the node names none).
 Warning reflectorWithoutMesh(const std::string& node, const std::string& file);

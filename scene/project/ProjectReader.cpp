@@ -92,8 +92,8 @@ std::string num(double v) {
     return render::shortestNumber(v);
 }
 
-// The scene's structure around the declared fields: the header, the node tree and its children, the one
-// reflector, and the limits a node's world transform must stay within.
+// The scene's structure around the declared fields: the header, the node tree and its children, each
+// reflector's mesh, and the limits a node's world transform must stay within.
 class ProjectReader {
 public:
     ProjectReader(const QDir& baseDir, std::vector<std::string>& warnings)
@@ -182,10 +182,6 @@ private:
             if (!d.mesh)
                 fail(o.at("reflector"),
                      "needs a mesh on the same node (the reflector's surface is its mesh)");
-            if (!m_firstReflector.empty())
-                fail(o.at("reflector"),
-                     "a scene has at most one reflector (the first is " + m_firstReflector + ")");
-            m_firstReflector = path;
         }
         if (const QJsonValue c = o.get("children"); !c.isUndefined())
             node.children = readNodeList(c, o.at("children"));
@@ -195,7 +191,6 @@ private:
 
     json::FieldReader m_fields;
     std::vector<std::string>& m_warnings;
-    std::string m_firstReflector; // path of the node holding the scene's reflector, once seen
 };
 
 std::string syntaxError(const QByteArray& json, const QJsonParseError& error) {

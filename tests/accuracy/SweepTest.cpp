@@ -43,7 +43,7 @@ FrameInput withReflector(FrameInput input) {
     r.world[3] = glm::dvec4(0.0, 0.5, 0.0, 1.0);
     r.map = render::ReflectorMap::DualParaboloid;
     r.resolution = 96; // not among the swept values: the sweep must add it
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 
@@ -129,7 +129,7 @@ TEST(BenchSweep, RoughSurfacesAreSweptAtThreeRoughnessesAgainstTheirOwnReference
     sharp.name = "Sharp";
     scene.mirrors.push_back(sharp);
     scene.mirrors.front().roughness = 0.2;
-    scene.reflector->roughness = 0.4;
+    scene.reflectors[0].roughness = 0.4;
     const SceneTraits traits = sceneTraits(scene, std::nullopt);
     EXPECT_EQ(traits.roughMirrors, 1u);
     EXPECT_TRUE(traits.roughReflector);
@@ -144,7 +144,7 @@ TEST(BenchSweep, RoughSurfacesAreSweptAtThreeRoughnessesAgainstTheirOwnReference
             const FrameInput applied = applyVariation(scene, c.variation, traits.proxy, {});
             EXPECT_EQ(applied.mirrors[0].roughness, *roughness) << c.id;
             EXPECT_EQ(applied.mirrors[1].roughness, 0.0) << c.id << ": the sharp mirror stays sharp";
-            EXPECT_EQ(applied.reflector->roughness, *roughness) << c.id;
+            EXPECT_EQ(applied.reflectors[0].roughness, *roughness) << c.id;
             const bool chain = c.label.starts_with("chain");
             EXPECT_EQ(applied.settings.glossyFilter, c.label == "mip" ? render::GlossyFilter::Mip
                                                      : chain          ? render::GlossyFilter::Chain
@@ -171,7 +171,7 @@ TEST(BenchSweep, RoughSurfacesAreSweptAtThreeRoughnessesAgainstTheirOwnReference
 
 TEST(BenchSweep, NoProxyForAReflectorOutsideTheScene) {
     FrameInput ball = withReflector(plainScene());
-    ball.reflector->world[3] = glm::dvec4(0.0, 10.0, 0.0, 1.0);
+    ball.reflectors[0].world[3] = glm::dvec4(0.0, 10.0, 0.0, 1.0);
     const SceneTraits traits = sceneTraits(ball, std::nullopt);
     EXPECT_FALSE(traits.proxyMakesSense);
     EXPECT_FALSE(familiesOf(planSweep(ball, traits, {false})).count(Family::Parallax));
@@ -275,14 +275,14 @@ TEST(BenchSweep, MirrorsAreTracedInScreenSpaceBesideThePlanarTechniques) {
         if (c.family == Family::ScreenSpace) {
             ids.push_back(c.id);
             const FrameInput applied = applyVariation(ball, c.variation, std::nullopt, {});
-            EXPECT_EQ(applied.reflector->technique, c.series == "reflector map"
-                                                        ? render::ReflectorTechnique::Map
-                                                        : render::ReflectorTechnique::ScreenSpace);
+            EXPECT_EQ(applied.reflectors[0].technique, c.series == "reflector map"
+                                                           ? render::ReflectorTechnique::Map
+                                                           : render::ReflectorTechnique::ScreenSpace);
         }
     EXPECT_EQ(ids, (std::vector<std::string>{"screen-space-reflector-map", "screen-space-reflector-steps-16",
                                              "screen-space-reflector-steps-64",
                                              "screen-space-reflector-steps-256"}));
-    ball.reflector->roughness = 0.3;
+    ball.reflectors[0].roughness = 0.3;
     std::vector<std::string> roughIds;
     for (const Configuration& c : planSweep(ball, sceneTraits(ball, std::nullopt), {true}))
         if (c.family == Family::ScreenSpace)

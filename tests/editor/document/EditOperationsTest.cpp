@@ -31,14 +31,15 @@ TEST_F(EditOperationsTest, AddNodeTreeAddsAtTheTopLevelWithAUniqueName) {
     expectOneStepThatUndoesExactly("Add \u201cA 2\u201d", original);
 }
 
-TEST_F(EditOperationsTest, AddNodeTreeRefusesASecondReflector) {
+TEST_F(EditOperationsTest, AddNodeTreeTakesASecondReflectorAsOneUndoableStep) {
     ASSERT_TRUE(addNodeTree(scene, undo, makeNode(NewNodeKind::ReflectorSphere)));
     const scene::SceneData withOne = scene.toData();
     undo.clear();
     auto second = addNodeTree(scene, undo, makeNode(NewNodeKind::ReflectorTeapot));
-    ASSERT_FALSE(second);
-    EXPECT_NE(second.error().find("reflector"), std::string::npos) << second.error();
-    EXPECT_EQ(undo.count(), 0);
+    ASSERT_TRUE(second) << second.error();
+    EXPECT_TRUE(scene.findNode(*second)->data().reflector.has_value());
+    EXPECT_EQ(undo.count(), 1);
+    undo.undo();
     EXPECT_EQ(scene.toData(), withOne);
 }
 
@@ -68,7 +69,6 @@ TEST_F(EditOperationsTest, DuplicatePutsEachCopyAfterItsOriginalWithAUniqueName)
     EXPECT_EQ(topLevelNames(), (Names{"A", "B", "B 2", "C"}));
     EXPECT_EQ(namesUnder(one->copies.front()).size(), 2u) << "with its subtree";
     EXPECT_EQ(one->currentCopy, one->copies.front()) << "the current node lies under it";
-    EXPECT_FALSE(one->droppedReflector);
     expectOneStepThatUndoesExactly("Duplicate \u201cB\u201d", original);
 
     undo.undo();
@@ -82,16 +82,15 @@ TEST_F(EditOperationsTest, DuplicatePutsEachCopyAfterItsOriginalWithAUniqueName)
     expectOneStepThatUndoesExactly("Duplicate 2 nodes", original);
 }
 
-TEST_F(EditOperationsTest, DuplicateOfTheReflectorDropsItFromTheCopy) {
+TEST_F(EditOperationsTest, DuplicateOfAReflectorIsASecondReflector) {
     auto reflector = addNodeTree(scene, undo, makeNode(NewNodeKind::ReflectorSphere));
     ASSERT_TRUE(reflector);
     const scene::SceneData before = scene.toData();
     undo.clear();
     auto copy = duplicateNodes(scene, undo, {*reflector});
     ASSERT_TRUE(copy);
-    EXPECT_TRUE(copy->droppedReflector);
-    EXPECT_FALSE(scene.findNode(copy->copies.front())->data().reflector.has_value());
-    EXPECT_EQ(reflectorNode(scene), *reflector);
+    EXPECT_TRUE(scene.findNode(copy->copies.front())->data().reflector.has_value());
+    EXPECT_TRUE(scene.findNode(*reflector)->data().reflector.has_value());
     expectOneStepThatUndoesExactly("Duplicate \u201c" + scene.findNode(*reflector)->name() + "\u201d",
                                    before);
 }

@@ -96,7 +96,7 @@ render::FrameInput mirrorSeenByAReflector() {
     render::Reflector ball;
     ball.name = "Ball";
     ball.mesh = std::make_shared<const render::MeshData>(render::makeSphere(8));
-    input.reflector = ball;
+    input.reflectors = {ball};
     return input;
 }
 
@@ -104,7 +104,7 @@ TEST(FieldDeclaration, TheEnvironmentMapsSignatureSeesIt) {
     const render::FrameInput base = mirrorSeenByAReflector();
     render::FrameInput changed = base;
     changed.mirrors[0].probe = 0.9;
-    EXPECT_NE(render::envmapSignature(changed), render::envmapSignature(base))
+    EXPECT_NE(render::envmapSignature(changed, 0), render::envmapSignature(base, 0))
         << "a mirror field drawn in maps changes what the reflector's map holds";
 }
 

@@ -73,7 +73,7 @@ TEST(SweepResults, TheParallaxProxyIsTheSweeps) {
     render::Reflector ball;
     ball.mesh = std::make_shared<const render::MeshData>(render::makeSphere(8));
     ball.world = glm::dmat4(glm::dmat3(0.5));
-    frame.reflector = ball;
+    frame.reflectors = {ball};
     const accuracy::SceneTraits traits = accuracy::sceneTraits(frame, std::nullopt);
     ASSERT_TRUE(traits.proxyMakesSense);
     const auto proxy = sweepParallaxProxy(frame);
@@ -83,7 +83,7 @@ TEST(SweepResults, TheParallaxProxyIsTheSweeps) {
     EXPECT_EQ(proxy->min, traits.proxy->min);
     EXPECT_EQ(proxy->max, traits.proxy->max);
     // Outside the room there is nothing around the ball for a box to stand for.
-    frame.reflector->world[3] = glm::dvec4(0.0, 40.0, 0.0, 1.0);
+    frame.reflectors[0].world[3] = glm::dvec4(0.0, 40.0, 0.0, 1.0);
     EXPECT_FALSE(sweepParallaxProxy(frame).has_value());
 }
 

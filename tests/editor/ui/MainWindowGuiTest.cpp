@@ -288,7 +288,7 @@ TEST_F(MainWindowTest, ACostlyMapIsDrawnSmallerWhileEditingAndSaysSo) {
     ASSERT_TRUE(waitForFrames(*m_window, 1));
     EXPECT_LT(clock.elapsed(), 30000) << "the first frame did not wait for the whole map";
     const speculum::render::FrameReport& report = m_window->viewport().lastReport();
-    EXPECT_LT(report.plan.reflectorResolution, 2048);
+    EXPECT_LT(report.plan.reflectorResolution(0), 2048);
     bool said = false;
     for (const std::string& w : report.warnings) {
         said =

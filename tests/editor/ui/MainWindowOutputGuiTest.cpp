@@ -26,6 +26,7 @@
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QWindow>
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <map>
 #include <optional>
@@ -39,6 +40,7 @@ using ui::MainWindow;
 
 const QString kScenes = QString::fromStdString(speculum::testSourcePath("resources/scenes"));
 const QString kTeapotProject = kScenes + QStringLiteral("/teapot.speculum.json");
+const QString kFacingBallsProject = kScenes + QStringLiteral("/facing-balls.speculum.json");
 
 class EditorOutput : public ::testing::Test {
 protected:
@@ -166,6 +168,40 @@ TEST_F(EditorOutput, RenderPassesPanelShowsTheLivePlan) {
     for (int i = 0; i < tree.topLevelItem(0)->childCount(); ++i) {
         EXPECT_NE(tree.topLevelItem(0)->child(i)->text(0), QStringLiteral("shadow"));
     }
+}
+
+// Several reflectors with bounces: the panel groups the maps of each bounce, one row per reflector in it.
+TEST_F(EditorOutput, RenderPassesPanelGroupsTheMapsPerBounce) {
+    std::vector<render::FrameReport> reports;
+    const auto connection =
+        QObject::connect(&m_window->viewport(), &ui::Viewport::frameRendered,
+                         [&](const render::FrameReport& r, double) { reports.push_back(r); });
+    open(kFacingBallsProject);
+    ASSERT_TRUE(waitForFrames(*m_window));
+    QObject::disconnect(connection);
+    const auto drawsMaps = [](const render::FrameReport& r) {
+        return r.countRan(render::PassKind::Envmap) > 0;
+    };
+    const auto withMaps = std::find_if(reports.begin(), reports.end(), drawsMaps);
+    ASSERT_NE(withMaps, reports.end()) << "the first frame draws the maps";
+    m_window->passesPanel().showReportNow(*withMaps);
+    QTreeWidget& tree = m_window->passesPanel().tree();
+    QTreeWidgetItem* passes = tree.topLevelItem(0);
+    std::vector<QString> groups;
+    for (int i = 0; i < passes->childCount(); ++i) {
+        QTreeWidgetItem* row = passes->child(i);
+        if (!row->text(0).startsWith(QStringLiteral("maps, bounce")))
+            continue;
+        groups.push_back(row->text(0));
+        ASSERT_EQ(row->childCount(), 3) << row->text(0).toStdString();
+        EXPECT_EQ(row->child(0)->text(1), QStringLiteral("Left ball"));
+        EXPECT_EQ(row->child(1)->text(1), QStringLiteral("Right ball"));
+        EXPECT_EQ(row->child(2)->text(1), QStringLiteral("Satin ball"));
+        EXPECT_EQ(row->child(0)->text(0), QStringLiteral("envmap"));
+    }
+    const std::vector<QString> expected = {QStringLiteral("maps, bounce 0"), QStringLiteral("maps, bounce 1"),
+                                           QStringLiteral("maps, bounce 2")};
+    EXPECT_EQ(groups, expected);
 }
 
 TEST_F(EditorOutput, ExportStillMatchesTheCommandLine) {

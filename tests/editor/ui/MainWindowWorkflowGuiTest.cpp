@@ -203,9 +203,6 @@ TEST_F(EditorWorkflow, BuildASceneThroughMenusAndInspectorUndoAllRedoAllSaveAndR
     EXPECT_EQ(undo.undoText().toStdString(), "Change Translate of \u201cPoint light\u201d");
     EXPECT_TRUE(m_window->action(QStringLiteral("actionUndo"))->text().contains(undo.undoText()));
 
-    // A second reflector is refused (the menu action stays harmless).
-    EXPECT_FALSE(m_window->addNode(document::NewNodeKind::ReflectorTeapot).ok());
-
     // Scene tree shows them all (camera row first), with the kinds' names.
     ui::SceneTreeModel& tree = m_window->sceneTreeModel();
     ASSERT_EQ(tree.rowCount(), 8);

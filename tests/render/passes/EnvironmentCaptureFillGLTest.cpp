@@ -68,7 +68,7 @@ FrameInput ballNearBigTriangles(ReflectorMap map, ReflectorFill fill) {
     r.map = map;
     r.fill = fill;
     r.resolution = 256;
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 

@@ -63,7 +63,7 @@ FrameInput ball(ReflectorMap map, double roughness, GlossyFilter filter, bool wa
     r.map = map;
     r.resolution = 64;
     r.roughness = roughness;
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 

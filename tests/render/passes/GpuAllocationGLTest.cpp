@@ -62,7 +62,7 @@ FrameInput scene(int shadowMapSize, bool withReflector = false) {
         ball.world = glm::translate(glm::dmat4(1.0), glm::dvec3(0.9, 0.6, 0.3)) *
                      glm::scale(glm::dmat4(1.0), glm::dvec3(0.6));
         ball.resolution = 64;
-        input.reflector = ball;
+        input.reflectors = {ball};
     }
     return input;
 }
@@ -229,9 +229,9 @@ TEST_F(GlTest, ReflectorWhoseMapDoesNotFitIsDrawnSmallerNotDropped) {
         FrameInput input = scene(256, true);
         input.items.clear(); // the map shows the background only: cheap to fill even at 4096
         input.lights[0].shadows.reset();
-        input.reflector->map = c.map;
-        input.reflector->fill = c.fill;
-        input.reflector->resolution = 8192;
+        input.reflectors[0].map = c.map;
+        input.reflectors[0].fill = c.fill;
+        input.reflectors[0].resolution = 8192;
         const auto start = std::chrono::steady_clock::now();
         renderImage(input, 64, 36);
         const double ms =
@@ -272,9 +272,9 @@ TEST_F(GlTest, ReflectorMapOfEveryLayoutFallsBackUnderAnAllocationLimit) {
         SCOPED_TRACE(std::string(names::fileName(names::kReflectorMaps, c.map)) +
                      (c.fill == ReflectorFill::Direct ? " direct" : ""));
         FrameInput input = scene(256, true);
-        input.reflector->map = c.map;
-        input.reflector->fill = c.fill;
-        input.reflector->resolution = c.resolution;
+        input.reflectors[0].map = c.map;
+        input.reflectors[0].fill = c.fill;
+        input.reflectors[0].resolution = c.resolution;
         const Image image = renderImage(input, 64, 36);
         const FrameReport report = lastReport();
         ASSERT_EQ(report.warnings.size(), 1u) << ::testing::PrintToString(report.warnings);
@@ -296,7 +296,7 @@ TEST_F(GlTest, ReflectorMapOfEveryLayoutFallsBackUnderAnAllocationLimit) {
         EXPECT_EQ(envmap->details.resolution, used) << envmap->reason();
         EXPECT_GT(report.memory.envmap, 0u);
         // The same as asking for the size used: the reflector is drawn with its map.
-        input.reflector->resolution = used;
+        input.reflectors[0].resolution = used;
         const Image direct = renderImage(input, 64, 36);
         EXPECT_TRUE(lastReport().warnings.empty()) << ::testing::PrintToString(lastReport().warnings);
         EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), direct.rgba.begin()));

@@ -95,7 +95,7 @@ FrameInput litScene(std::vector<Light> lights) {
     ball.reflectivity = 0.8;
     ball.map = ReflectorMap::DualParaboloid;
     ball.resolution = 128;
-    input.reflector = ball;
+    input.reflectors = {ball};
 
     input.lights = std::move(lights);
     return input;

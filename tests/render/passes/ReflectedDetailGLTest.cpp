@@ -111,7 +111,7 @@ TEST_P(ReflectedDetailInTheMap, TheBallReflectsTheSimplifiedLevel) {
         ball.map = ReflectorMap::DualParaboloid;
         ball.fill = GetParam();
         ball.resolution = 128;
-        input.reflector = ball;
+        input.reflectors = {ball};
         const auto [left, right] = litHalves(renderImage(input, kWidth, kHeight));
         if (simplify) {
             EXPECT_GT(left + right, 3) << "the kept box shows in the ball";

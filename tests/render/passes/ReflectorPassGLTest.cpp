@@ -67,7 +67,7 @@ FrameInput ballInRoom(ReflectorMap map, ReflectorFill fill) {
     r.map = map;
     r.fill = fill;
     r.resolution = 128;
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 
@@ -203,7 +203,7 @@ float largestDifference(const Image& a, const Image& b) {
 
 TEST_F(ReflectorFrames, TimeSlicedMapRedrawsOneFaceAFrameAndConvergesToTheFullMap) {
     FrameInput input = ballInRoom(ReflectorMap::Cube, ReflectorFill::Resampled);
-    input.reflector->update = ReflectorUpdate::TimeSliced;
+    input.reflectors[0].update = ReflectorUpdate::TimeSliced;
     renderImage(input, 64, 64);
     ASSERT_EQ(lastReport().countRan(PassKind::Envmap), 1u);
     // Every wall takes its neighbour's colour: every face of the map is out of date.
@@ -222,8 +222,8 @@ TEST_F(ReflectorFrames, TimeSlicedMapRedrawsOneFaceAFrameAndConvergesToTheFullMa
     for (int frame = 0; frame < 6; ++frame) {
         const Image image = renderImage(input, 64, 64);
         ASSERT_EQ(lastReport().countRan(PassKind::Envmap), 1u) << "frame " << frame;
-        ASSERT_TRUE(lastReport().plan.envmap.has_value());
-        for (const EnvmapFace& face : lastReport().plan.envmap->faces)
+        ASSERT_FALSE(lastReport().plan.envmaps.empty());
+        for (const EnvmapFace& face : lastReport().plan.envmaps[0].faces)
             faces.push_back(face.index);
         differences.push_back(largestDifference(image, whole->image));
         // The editor draws another frame while faces are out of date.
@@ -257,7 +257,7 @@ TEST_F(ReflectorFrames, MirrorsInTheEnvironmentReflectToTheirDepthBudget) {
     input.camera.position = {3.2, 0.0, 0.0}; // looking from +X at the ball: its centre reflects +X
     input.camera.up = {0.0, 1.0, 0.0};
     auto centre = [&](int depth) {
-        input.reflector->mirrorDepth = depth;
+        input.reflectors[0].mirrorDepth = depth;
         return glm::dvec3(renderImage(input, 64, 64).at(32, 32));
     };
     const glm::dvec3 reflected = centre(1);
@@ -272,7 +272,7 @@ TEST_F(ReflectorFrames, MirrorsInTheEnvironmentReflectToTheirDepthBudget) {
 // draws the map again instead of keeping the old reflection; an unchanged frame reuses it.
 TEST_F(ReflectorFrames, TogglingAMirrorsFresnelRedrawsAnOnChangeMap) {
     FrameInput input = ballInRoom(ReflectorMap::Cube, ReflectorFill::Resampled);
-    input.reflector->update = ReflectorUpdate::OnChange;
+    input.reflectors[0].update = ReflectorUpdate::OnChange;
     Mirror mirror;
     mirror.name = "Mirror";
     mirror.world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(10, 0, 0)), glm::radians(90.0),
@@ -340,7 +340,7 @@ TEST_P(ReflectorMirrorDepth, MirrorsInTheMapReflectToTheReflectorsBudget) {
     input.camera.target = {0.0, 0.0, 0.0};
     input.camera.up = {0.0, 1.0, 0.0};
     auto centre = [&](int depth) {
-        input.reflector->mirrorDepth = depth;
+        input.reflectors[0].mirrorDepth = depth;
         const glm::dvec3 c(renderImage(input, 64, 64).at(32, 32));
         EXPECT_EQ(lastReport().countRan(PassKind::Envmap), 1u)
             << "depth " << depth << ": a new mirror depth must render the map again";
@@ -375,7 +375,7 @@ TEST_F(ReflectorFrames, ClosedMeshAroundTheCapturePointKeepsItsInsideFaces) {
     input.items = {
         {"Room", glm::scale(glm::dmat4(1.0), glm::dvec3(10.0)), box, emissive({0.2, 0.6, 0.3}), false}};
     for (ReflectorMap map : {ReflectorMap::Cube, ReflectorMap::DualParaboloid}) {
-        input.reflector->map = map;
+        input.reflectors[0].map = map;
         const glm::dvec3 centre(renderImage(input, 64, 64).at(32, 32));
         EXPECT_LT(glm::length(centre - glm::dvec3(0.2, 0.6, 0.3)), 0.05)
             << centre.x << " " << centre.y << " " << centre.z;
@@ -397,8 +397,8 @@ TEST_F(ReflectorFrames, ParallaxCorrectionMovesNearbyReflectionsWhereTheyBelong)
     }
     input.camera.position = {0.0, 0.0, 2.9};
     input.camera.fovY = 32.0;
-    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0.8, 0.6, 0.0)) *
-                             glm::scale(glm::dmat4(1.0), glm::dvec3(0.7));
+    input.reflectors[0].world = glm::translate(glm::dmat4(1.0), glm::dvec3(0.8, 0.6, 0.0)) *
+                                glm::scale(glm::dmat4(1.0), glm::dvec3(0.7));
     input.camera.target = {0.8, 0.6, 0.0};
     auto score = [&](const Image& image) {
         // Fraction of ball pixels showing the wall that the exact reflected ray from the surface meets.
@@ -444,9 +444,9 @@ TEST_F(ReflectorFrames, ParallaxCorrectionMovesNearbyReflectionsWhereTheyBelong)
     };
     const Image plainImage = renderImage(input, kSize, kSize);
     const double plain = score(plainImage);
-    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
-    input.reflector->parallax->min = glm::dvec3(-kHalf) - glm::dvec3(0.8, 0.6, 0.0);
-    input.reflector->parallax->max = glm::dvec3(kHalf) - glm::dvec3(0.8, 0.6, 0.0);
+    input.reflectors[0].parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflectors[0].parallax->min = glm::dvec3(-kHalf) - glm::dvec3(0.8, 0.6, 0.0);
+    input.reflectors[0].parallax->max = glm::dvec3(kHalf) - glm::dvec3(0.8, 0.6, 0.0);
     const Image correctedImage = renderImage(input, kSize, kSize);
     const double corrected = score(correctedImage);
     // The misses left are pixels on a boundary between two walls, whose filtered colour is a blend.

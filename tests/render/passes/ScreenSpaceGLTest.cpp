@@ -68,7 +68,7 @@ FrameInput sceneWithMapAbove(MirrorTechnique technique, ScreenFallback fallback)
     proxy.min = glm::dvec3(-4.3, 0.0, -3.0) - centre;
     proxy.max = glm::dvec3(4.3, 3.7, 4.0) - centre;
     ball.parallax = proxy;
-    input.reflector = ball;
+    input.reflectors = {ball};
     return input;
 }
 
@@ -300,7 +300,8 @@ TEST_F(ScreenSpaceMirror, WhatTheImageDoesNotHoldShowsTheReflectorsMapAndTheStil
 TEST_F(ScreenSpaceMirror, TheMapRunsForTheFallbackWhenTheReflectorIsOutOfSight) {
     FrameInput input = sceneWithMapAbove(MirrorTechnique::ScreenSpace, ScreenFallback::Map);
     // Behind the camera, and below the floor, so no view sees the ball.
-    input.reflector->world = glm::scale(glm::translate(glm::dmat4(1.0), {0.0, -3.0, 8.0}), glm::dvec3(0.3));
+    input.reflectors[0].world =
+        glm::scale(glm::translate(glm::dmat4(1.0), {0.0, -3.0, 8.0}), glm::dvec3(0.3));
     const Image image = render(input);
     ASSERT_EQ(lastReport().countRan(PassKind::Envmap), 1u);
     for (const PassRun& run : lastReport().ran) {
@@ -411,7 +412,7 @@ TEST_F(ScreenSpaceMirror, AHitFarBehindWhatItCrossesFadesIntoTheFallback) {
 // its trace; a still counts where its pixels' reflections came from; its sources show in the debug view.
 TEST_F(ScreenSpaceMirror, TheReflectorIsTracedWhereItIsSeenAndBlursTheImageWhenRough) {
     FrameInput input = sceneWithMapAbove(MirrorTechnique::Texture, ScreenFallback::Map);
-    input.reflector->technique = ReflectorTechnique::ScreenSpace;
+    input.reflectors[0].technique = ReflectorTechnique::ScreenSpace;
     const Image image = render(input);
     EXPECT_TRUE(allFinite(image));
     const FrameReport& report = lastReport();
@@ -430,7 +431,7 @@ TEST_F(ScreenSpaceMirror, TheReflectorIsTracedWhereItIsSeenAndBlursTheImageWhenR
     // Rough: the image's blurred pyramid runs too, after everything else that draws into it, just before
     // the trace that reads it; a sharp reflector runs none.
     EXPECT_EQ(lastReport().countRan(PassKind::ScreenColour), 0u);
-    input.reflector->roughness = 0.3;
+    input.reflectors[0].roughness = 0.3;
     render(input);
     EXPECT_EQ(lastReport().countRan(PassKind::ReflectorTrace), 1u);
     ASSERT_EQ(lastReport().countRan(PassKind::ScreenColour), 1u);
@@ -442,8 +443,8 @@ TEST_F(ScreenSpaceMirror, TheReflectorIsTracedWhereItIsSeenAndBlursTheImageWhenR
     ASSERT_NE(colour, order.end());
     EXPECT_EQ(*std::next(colour), PassKind::ReflectorTrace);
     EXPECT_LT(mirrorPasses - order.begin(), colour - order.begin());
-    input.reflector->roughness = 0.0;
-    input.reflector->technique = ReflectorTechnique::Map;
+    input.reflectors[0].roughness = 0.0;
+    input.reflectors[0].technique = ReflectorTechnique::Map;
     input.mirrors[0].technique = MirrorTechnique::Texture;
     render(input);
     EXPECT_EQ(lastReport().countRan(PassKind::ScreenDepth), 0u) << "nothing traces: no pyramid";
@@ -456,10 +457,10 @@ TEST_F(ScreenSpaceMirror, TheReflectorsTraceReplacesTheMapWhereTheImageShowsWhat
     FrameInput input = sceneWithMapAbove(MirrorTechnique::Texture, ScreenFallback::Map);
     // A bigger ball, nearer the camera, and no proxy: what it reflects of the image shows from the map
     // at the directions seen from its centre.
-    input.reflector->world = glm::scale(glm::translate(glm::dmat4(1.0), {0.0, 0.7, 0.8}), glm::dvec3(0.7));
-    input.reflector->parallax.reset();
+    input.reflectors[0].world = glm::scale(glm::translate(glm::dmat4(1.0), {0.0, 0.7, 0.8}), glm::dvec3(0.7));
+    input.reflectors[0].parallax.reset();
     const Image map = render(input);
-    input.reflector->technique = ReflectorTechnique::ScreenSpace;
+    input.reflectors[0].technique = ReflectorTechnique::ScreenSpace;
     const Image traced = render(input);
     StillSettings debug{kWidth, kHeight, 1};
     debug.showScreenSpaceSources = true;
@@ -499,7 +500,7 @@ TEST_F(ScreenSpaceMirror, ThinTinyInsideRoughAndResizedStayFinite) {
     EXPECT_TRUE(allFinite(render(tiny))) << "a mirror about a pixel wide";
 
     FrameInput inside = sceneWithMapAbove(MirrorTechnique::ScreenSpace, ScreenFallback::Map);
-    inside.reflector->technique = ReflectorTechnique::ScreenSpace;
+    inside.reflectors[0].technique = ReflectorTechnique::ScreenSpace;
     inside.camera.position = {0.0, 1.5, 2.0}; // within the proxy box
     const Image within = render(inside);
     EXPECT_TRUE(allFinite(within)) << "camera inside the proxy";
@@ -507,7 +508,7 @@ TEST_F(ScreenSpaceMirror, ThinTinyInsideRoughAndResizedStayFinite) {
 
     // Rough, the cone read from the blurred image, with the far plane at 1e6 (cones that reach far, levels
     // clamped), and the pyramid remade at each size below.
-    inside.reflector->roughness = 0.4;
+    inside.reflectors[0].roughness = 0.4;
     inside.camera.far = 1e6;
     EXPECT_TRUE(allFinite(render(inside))) << "rough, far plane at 1e6";
     EXPECT_EQ(lastReport().countRan(PassKind::ScreenColour), 1u);

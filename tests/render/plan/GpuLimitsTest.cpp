@@ -62,12 +62,12 @@ PlanOptions within(const GpuLimits& gpu) {
 TEST(GpuLimits, SizesThatFitChangeNothing) {
     FrameInput input =
         scene({shadowed(LightType::Point, 2048, "Lamp"), shadowed(LightType::Spot, 4096, "Spot")});
-    input.reflector = reflector(ReflectorMap::TennisBall, ReflectorFill::Direct, 1365);
+    input.reflectors = {reflector(ReflectorMap::TennisBall, ReflectorFill::Direct, 1365)};
     const FramePlan plan = planFrame(input, {}, {320, 180}, within(kLimits));
     EXPECT_TRUE(plan.warnings.empty()) << ::testing::PrintToString(plan.warnings);
     EXPECT_EQ(plan.shadowOf(0)->mapSize, 2048);
     EXPECT_EQ(plan.shadowOf(1)->mapSize, 4096);
-    EXPECT_EQ(plan.reflectorResolution, 1365);
+    EXPECT_EQ(plan.reflectorResolution(0), 1365);
     EXPECT_FALSE(plannedInput(input, plan)) << "the scene is drawn as it is";
 }
 
@@ -111,9 +111,9 @@ TEST(GpuLimits, ReflectorResolutionFitsEveryTextureItsMapNeeds) {
                           Case{ReflectorMap::TennisBall, ReflectorFill::Direct, 4096 / 3},
                           Case{ReflectorMap::Octahedral, ReflectorFill::Direct, 2048}}) { // always resampled
         FrameInput input = scene({});
-        input.reflector = reflector(c.map, c.fill, 100000);
+        input.reflectors = {reflector(c.map, c.fill, 100000)};
         const FramePlan plan = planFrame(input, {}, {320, 180}, within(kLimits));
-        EXPECT_EQ(plan.reflectorResolution, c.expected);
+        EXPECT_EQ(plan.reflectorResolution(0), c.expected);
         ASSERT_EQ(plan.warnings.size(), 1u);
         EXPECT_NE(plan.warnings[0].find("reflector \"Ball\": resolution 100000"), std::string::npos)
             << plan.warnings[0];
@@ -121,12 +121,13 @@ TEST(GpuLimits, ReflectorResolutionFitsEveryTextureItsMapNeeds) {
         ASSERT_NE(passOf(plan, PassKind::Envmap), nullptr);
         EXPECT_EQ(passOf(plan, PassKind::Envmap)->details.resolution, c.expected)
             << passOf(plan, PassKind::Envmap)->reason();
-        ASSERT_TRUE(plan.envmap);
-        EXPECT_EQ(plan.envmap->settingsKey, envmapSettingsKey(plannedInput(input, plan)->reflector.value()));
+        ASSERT_FALSE(plan.envmaps.empty());
+        EXPECT_EQ(plan.envmaps[0].settingsKey,
+                  envmapSettingsKey(plannedInput(input, plan)->reflectors.at(0)));
     }
     FrameInput tiny = scene({});
-    tiny.reflector = reflector(ReflectorMap::Cube, ReflectorFill::Direct, 0);
-    EXPECT_EQ(planFrame(tiny, {}, {320, 180}, within(kLimits)).reflectorResolution, kMinEnvmapResolution);
+    tiny.reflectors = {reflector(ReflectorMap::Cube, ReflectorFill::Direct, 0)};
+    EXPECT_EQ(planFrame(tiny, {}, {320, 180}, within(kLimits)).reflectorResolution(0), kMinEnvmapResolution);
 }
 
 // What allocation learnt in earlier frames: a map of a kind that failed at a size is planned below it, by
@@ -135,14 +136,14 @@ TEST(GpuLimits, ReflectorResolutionFitsEveryTextureItsMapNeeds) {
 TEST(GpuLimits, SizesThatFailedToAllocateArePlannedBelow) {
     FrameInput input =
         scene({shadowed(LightType::Point, 8192, "Lamp"), shadowed(LightType::Spot, 8192, "Spot")});
-    input.reflector = reflector(ReflectorMap::Cube, ReflectorFill::Resampled, 4096);
+    input.reflectors = {reflector(ReflectorMap::Cube, ReflectorFill::Resampled, 4096)};
     PlanOptions options;
     options.maps.failed[MapKind::ShadowCube] = {1024, "did not fit in GPU memory"};
     options.maps.failed[MapKind::EnvmapCube] = {2048, "did not fit in GPU memory"};
     const FramePlan plan = planFrame(input, {}, {320, 180}, options);
     EXPECT_EQ(plan.shadowOf(0)->mapSize, 512);
     EXPECT_EQ(plan.shadowOf(1)->mapSize, 8192) << "2D maps are another kind";
-    EXPECT_EQ(plan.reflectorResolution, 1024);
+    EXPECT_EQ(plan.reflectorResolution(0), 1024);
     EXPECT_EQ(plan.warnings,
               (std::vector<std::string>{
                   "light 'Lamp': the 8192² cube shadow map did not fit in GPU memory; using 512²",
@@ -150,12 +151,12 @@ TEST(GpuLimits, SizesThatFailedToAllocateArePlannedBelow) {
                   "using 1024"}));
     EXPECT_EQ(passOf(plan, PassKind::Shadow)->details.mapSize, 512);
     EXPECT_NE(passOf(plan, PassKind::Envmap)->reason().find("1024×1024"), std::string::npos);
-    ASSERT_TRUE(plan.envmap);
-    EXPECT_EQ(plan.envmap->faces.front().width, 1024);
+    ASSERT_FALSE(plan.envmaps.empty());
+    EXPECT_EQ(plan.envmaps[0].faces.front().width, 1024);
     const auto drawn = plannedInput(input, plan);
     ASSERT_TRUE(drawn);
     EXPECT_EQ(drawn->lights[0].shadows->mapSize, 512);
-    EXPECT_EQ(drawn->reflector->resolution, 1024);
+    EXPECT_EQ(drawn->reflectors[0].resolution, 1024);
     // Its signature is the one of a map asked for at that size: the map is reused as such.
     FrameInput asked = input;
     asked.lights[0].shadows->mapSize = 512;
@@ -165,7 +166,7 @@ TEST(GpuLimits, SizesThatFailedToAllocateArePlannedBelow) {
 TEST(GpuLimits, AKindOfMapOfWhichNoneFitsIsLeftOutWithAWarning) {
     FrameInput input =
         scene({shadowed(LightType::Point, 1024, "Lamp"), shadowed(LightType::Spot, 1024, "Spot")});
-    input.reflector = reflector(ReflectorMap::DualParaboloid, ReflectorFill::Direct, 256);
+    input.reflectors = {reflector(ReflectorMap::DualParaboloid, ReflectorFill::Direct, 256)};
     PlanOptions options;
     options.maps.failed[MapKind::ShadowCube] = {kMinShadowMapSize, "did not fit in GPU memory"};
     options.maps.failed[MapKind::EnvmapParaboloid] = {kMinEnvmapResolution, "did not fit in GPU memory"};
@@ -173,7 +174,7 @@ TEST(GpuLimits, AKindOfMapOfWhichNoneFitsIsLeftOutWithAWarning) {
     EXPECT_EQ(plan.shadowOf(0), nullptr);
     EXPECT_EQ(plan.shadowedLights, std::vector<int>{1}) << "the spot light keeps its map";
     EXPECT_EQ(skipCode(plan, "Lamp"), PlanReason::ShadowMapDoesNotFit) << skipReason(plan, "Lamp");
-    EXPECT_EQ(plan.reflectorResolution, 0);
+    EXPECT_EQ(plan.reflectorResolution(0), 0);
     EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr);
     EXPECT_EQ(skipCode(plan, "Ball"), PlanReason::EnvmapDoesNotFit) << skipReason(plan, "Ball");
     ASSERT_EQ(plan.warnings.size(), 2u);

@@ -44,7 +44,7 @@ FrameInput scene(ReflectorMap map, ReflectorFill fill = ReflectorFill::Resampled
     r.fill = fill;
     r.resolution = 64;
     r.mirrorDepth = mirrorDepth;
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 
@@ -66,8 +66,8 @@ std::vector<const SkippedEffect*> skipsOf(const EnvmapPlan& map, const std::stri
 
 TEST(EnvmapMirrors, AMirrorTheReflectorSeesHasViewsInTheMapFacesItShowsIn) {
     const FramePlan plan = planFrame(scene(ReflectorMap::Cube), {}, {320, 240});
-    ASSERT_TRUE(plan.envmap);
-    const EnvmapPlan& map = *plan.envmap;
+    ASSERT_FALSE(plan.envmaps.empty());
+    const EnvmapPlan& map = plan.envmaps[0];
     EXPECT_EQ(map.target, "Ball");
     ASSERT_EQ(map.faces.size(), 6u);
     EXPECT_EQ(map.faces[1].label, "−X face");
@@ -108,8 +108,8 @@ TEST(EnvmapMirrors, AMirrorTheReflectorSeesHasViewsInTheMapFacesItShowsIn) {
 
 TEST(EnvmapMirrors, AMirrorBehindTheCapturePointIsSkippedWithAReason) {
     const FramePlan plan = planFrame(scene(ReflectorMap::Cube), {}, {320, 240});
-    ASSERT_TRUE(plan.envmap);
-    const EnvmapPlan& map = *plan.envmap;
+    ASSERT_FALSE(plan.envmaps.empty());
+    const EnvmapPlan& map = plan.envmaps[0];
     EXPECT_TRUE(passesOf(map, "Away", PassKind::Mirror).empty());
     // Once per face seen from the capture point itself (deeper, in the facing mirror, the depth limit).
     std::vector<const SkippedEffect*> behind;
@@ -129,12 +129,12 @@ TEST(EnvmapMirrors, MirrorsNestToTheReflectorsOwnDepth) {
     input.mirrors[1] = mirrorFacing("Away", {3, 0, 0}, {-1, 0, 0});
     input.settings.mirrorDepth = 1; // the camera's limit is not the map's
     const FramePlan plan = planFrame(input, {}, {320, 240});
-    ASSERT_TRUE(plan.envmap);
+    ASSERT_FALSE(plan.envmaps.empty());
     int deepest = 0;
-    for (const MirrorView& v : plan.envmap->views) {
+    for (const MirrorView& v : plan.envmaps[0].views) {
         deepest = std::max(deepest, v.depth);
         if (v.parent >= 0) {
-            const MirrorView& parent = plan.envmap->views[static_cast<std::size_t>(v.parent)];
+            const MirrorView& parent = plan.envmaps[0].views[static_cast<std::size_t>(v.parent)];
             EXPECT_EQ(parent.face, v.face) << "a view nests within its own face";
             EXPECT_EQ(v.depth, parent.depth + 1);
             EXPECT_EQ(v.stencilLevel, parent.stencilLevel + 1);
@@ -142,7 +142,7 @@ TEST(EnvmapMirrors, MirrorsNestToTheReflectorsOwnDepth) {
     }
     EXPECT_EQ(deepest, 3);
     bool limitNamed = false;
-    for (const SkippedEffect& s : plan.envmap->skipped)
+    for (const SkippedEffect& s : plan.envmaps[0].skipped)
         limitNamed |= s.code == PlanReason::MirrorDepthLimit && s.details.limit == 3;
     EXPECT_TRUE(limitNamed);
 }
@@ -150,8 +150,8 @@ TEST(EnvmapMirrors, MirrorsNestToTheReflectorsOwnDepth) {
 TEST(EnvmapMirrors, DirectFillPlansEachComponentWithAClipPlane) {
     const FramePlan plan =
         planFrame(scene(ReflectorMap::DualParaboloid, ReflectorFill::Direct), {}, {320, 240});
-    ASSERT_TRUE(plan.envmap);
-    const EnvmapPlan& map = *plan.envmap;
+    ASSERT_FALSE(plan.envmaps.empty());
+    const EnvmapPlan& map = plan.envmaps[0];
     ASSERT_EQ(map.faces.size(), 2u);
     EXPECT_TRUE(map.faces[0].warped);
     EXPECT_EQ(map.faces[0].label, "−Z half");
@@ -171,16 +171,16 @@ TEST(EnvmapMirrors, DirectFillPlansEachComponentWithAClipPlane) {
 TEST(EnvmapMirrors, NoMirrorViewsWhenTheMapIsReusedOrItsDepthIsZero) {
     FrameInput input = scene(ReflectorMap::Cube);
     PlannerState state;
-    state.envmapSignature = envmapSignature(input);
-    state.envmapSettings = envmapSettingsKey(*input.reflector);
-    EXPECT_FALSE(planFrame(input, state, {320, 240}).envmap) << "a reused map draws nothing";
+    state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
+    EXPECT_TRUE(planFrame(input, state, {320, 240}).envmaps.empty()) << "a reused map draws nothing";
 
-    input.reflector->mirrorDepth = 0;
+    input.reflectors[0].mirrorDepth = 0;
     const FramePlan plan = planFrame(input, {}, {320, 240});
-    ASSERT_TRUE(plan.envmap);
-    EXPECT_TRUE(plan.envmap->views.empty());
-    ASSERT_EQ(plan.envmap->skipped.size(), 2u);
-    EXPECT_EQ(plan.envmap->skipped[0].code, PlanReason::MapMirrorDepthZero);
+    ASSERT_FALSE(plan.envmaps.empty());
+    EXPECT_TRUE(plan.envmaps[0].views.empty());
+    ASSERT_EQ(plan.envmaps[0].skipped.size(), 2u);
+    EXPECT_EQ(plan.envmaps[0].skipped[0].code, PlanReason::MapMirrorDepthZero);
 }
 
 } // namespace

@@ -235,13 +235,13 @@ TEST(PassWrites, EnvironmentMapMirrorPassesDrawIntoTheMapThroughTheirStencilLeve
     ball.mesh = std::make_shared<const MeshData>(makeSphere(16));
     ball.resolution = 64;
     ball.mirrorDepth = 1;
-    input.reflector = ball;
+    input.reflectors = {ball};
     const FramePlan plan = planFrame(input, {}, kViewport);
-    ASSERT_TRUE(plan.envmap);
+    ASSERT_FALSE(plan.envmaps.empty());
     int mirrorPasses = 0;
-    for (const PlannedPass& pass : plan.envmap->passes) {
+    for (const PlannedPass& pass : plan.envmaps[0].passes) {
         SCOPED_TRACE(describe(pass));
-        const MirrorView& view = plan.envmap->views[static_cast<std::size_t>(pass.view)];
+        const MirrorView& view = plan.envmaps[0].views[static_cast<std::size_t>(pass.view)];
         EXPECT_EQ(pass.writes.target, PassTarget::OwnMap);
         EXPECT_FALSE(pass.writes.scissor.has_value());
         EXPECT_FALSE(pass.writes.clear);
@@ -274,10 +274,10 @@ TEST(PassWrites, EnvironmentMapNestedMirrorsNestTheirStencilLevelsAndWindingsFac
                  glm::scale(glm::dmat4(1.0), glm::dvec3(0.3));
     ball.resolution = 64;
     ball.mirrorDepth = 3;
-    input.reflector = ball;
+    input.reflectors = {ball};
     const FramePlan plan = planFrame(input, {}, kViewport);
-    ASSERT_TRUE(plan.envmap);
-    const EnvmapPlan& map = *plan.envmap;
+    ASSERT_FALSE(plan.envmaps.empty());
+    const EnvmapPlan& map = plan.envmaps[0];
     std::vector<int> open; // views whose surface is still to come, innermost last
     int face = -1;
     int deepest = 0;

@@ -36,7 +36,7 @@ inline FrameInput roughBall(double roughness, GlossyFilter filter = GlossyFilter
     r.name = "Ball";
     r.mesh = sphere;
     r.roughness = roughness;
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 

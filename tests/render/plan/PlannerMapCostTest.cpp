@@ -15,8 +15,8 @@ namespace {
 FrameInput ballWithMap(int resolution, int samples, double roughness) {
     FrameInput input = test::roughBall(roughness);
     input.settings.prefilterSamples = samples;
-    input.reflector->resolution = resolution;
-    input.reflector->update = ReflectorUpdate::Always;
+    input.reflectors[0].resolution = resolution;
+    input.reflectors[0].update = ReflectorUpdate::Always;
     return input;
 }
 
@@ -30,7 +30,7 @@ std::vector<std::string> costWarnings(const FramePlan& plan) {
 
 TEST(MapCostPlanner, AMapThatWouldTakeMinutesIsWarnedOfWithItsEstimate) {
     const FrameInput input = ballWithMap(8192, 1024, 0.5);
-    const MapCost cost = mapCost(*input.reflector, 8192, input.settings, 1024);
+    const MapCost cost = mapCost(input.reflectors[0], 8192, input.settings, 1024);
     EXPECT_GT(cost.softwareSeconds(), 60.0) << "minutes, as measured";
     const FramePlan plan = planFrame(input, {});
     const std::vector<std::string> warnings = costWarnings(plan);
@@ -40,7 +40,7 @@ TEST(MapCostPlanner, AMapThatWouldTakeMinutesIsWarnedOfWithItsEstimate) {
         << warnings[0];
     EXPECT_NE(warnings[0].find("roughly"), std::string::npos) << warnings[0];
     EXPECT_NE(warnings[0].find("every frame"), std::string::npos) << warnings[0];
-    EXPECT_EQ(plan.reflectorResolution, 8192) << "a still draws it as asked";
+    EXPECT_EQ(plan.reflectorResolution(0), 8192) << "a still draws it as asked";
     EXPECT_EQ(plan.prefilterSamples, 0);
 }
 
@@ -49,19 +49,20 @@ TEST(MapCostPlanner, AnInteractiveViewDrawsACostlyMapSmallerAndSaysSo) {
     PlanOptions options;
     options.maxMapSeconds = kInteractiveMapSeconds;
     const FramePlan plan = planFrame(input, {}, {}, options);
-    EXPECT_LT(plan.reflectorResolution, 8192);
-    EXPECT_GE(plan.reflectorResolution, 64);
+    EXPECT_LT(plan.reflectorResolution(0), 8192);
+    EXPECT_GE(plan.reflectorResolution(0), 64);
     const int samples = plan.prefilterSamples > 0 ? plan.prefilterSamples : input.settings.prefilterSamples;
     EXPECT_GE(samples, 8);
-    EXPECT_LE(mapCost(*input.reflector, plan.reflectorResolution, input.settings, samples).softwareSeconds(),
-              kInteractiveMapSeconds);
+    EXPECT_LE(
+        mapCost(input.reflectors[0], plan.reflectorResolution(0), input.settings, samples).softwareSeconds(),
+        kInteractiveMapSeconds);
     const std::vector<std::string> warnings = costWarnings(plan);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("while editing"), std::string::npos) << warnings[0];
     // What the passes draw is the capped map (plannedInput), so what is allocated is what was planned.
     const std::optional<FrameInput> drawn = plannedInput(input, plan);
     ASSERT_TRUE(drawn.has_value());
-    EXPECT_EQ(drawn->reflector->resolution, plan.reflectorResolution);
+    EXPECT_EQ(drawn->reflectors[0].resolution, plan.reflectorResolution(0));
     EXPECT_EQ(drawn->settings.prefilterSamples, samples);
 }
 
@@ -72,7 +73,7 @@ TEST(MapCostPlanner, DemoSizedMapsAreNeitherWarnedOfNorCapped) {
         options.maxMapSeconds = kInteractiveMapSeconds;
         const FramePlan plan = planFrame(input, {}, {}, options);
         EXPECT_TRUE(costWarnings(plan).empty()) << resolution;
-        EXPECT_EQ(plan.reflectorResolution, resolution);
+        EXPECT_EQ(plan.reflectorResolution(0), resolution);
         EXPECT_EQ(plan.prefilterSamples, 0) << resolution;
     }
 }

@@ -35,7 +35,7 @@ FrameInput mirrorsScene() {
     ball.mesh = sphere;
     ball.world = glm::translate(glm::dmat4(1.0), glm::dvec3(-0.6, 0.0, -1.8)) *
                  glm::scale(glm::dmat4(1.0), glm::dvec3(0.4));
-    input.reflector = ball;
+    input.reflectors = {ball};
     return input;
 }
 
@@ -50,8 +50,8 @@ PlannerState afterDrawing(const FrameInput& input, const FramePlan& plan) {
     PlannerState state;
     for (const ShadowPlan& shadow : plan.shadows)
         state.shadowSignatures[shadow.light] = shadow.signature;
-    state.envmapSignature = envmapSignature(input);
-    state.envmapSettings = envmapSettingsKey(*input.reflector);
+    state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
     return state;
 }
 
@@ -97,7 +97,7 @@ TEST(PlannerPreview, NavigatingNestsFewerMirrorsHoldsTheMapAndKeepsTheShadows) {
     // The very frame the scene edited that way plans (the editor's viewport edited it before).
     FrameInput edited = input;
     edited.settings.mirrorDepth = 2;
-    edited.reflector->update = ReflectorUpdate::Once;
+    edited.reflectors[0].update = ReflectorUpdate::Once;
     EXPECT_EQ(drawn(plan), drawn(planFrame(edited, state, kViewport)));
 }
 

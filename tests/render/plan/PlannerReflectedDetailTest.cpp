@@ -112,7 +112,7 @@ TEST(ReflectedDetail, TheEnvironmentMapDrawsThemSimplifiedToo) {
     ball.name = "Ball";
     ball.mesh = freezeMesh(makeSphere());
     ball.world = glm::translate(glm::dmat4(1.0), glm::dvec3(-1.5, 0, -4));
-    input.reflector = ball;
+    input.reflectors = {ball};
     const FramePlan plan = planFrame(input, {}, {320, 240});
     const PlannedPass* envmap = passOf(plan, PassKind::Envmap);
     ASSERT_NE(envmap, nullptr);

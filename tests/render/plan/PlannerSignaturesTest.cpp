@@ -71,7 +71,7 @@ std::vector<std::string> everyField() {
         declared<ParallaxParams>("ParallaxParams"),
         declared<ReflectorParams>("Reflector"),
         {"Reflector.name", "Reflector.world", "Reflector.mesh", "Reflector.material"},
-        SPECULUM_FIELDS(FrameInput, settings, camera, items, lights, mirrors, reflector, time),
+        SPECULUM_FIELDS(FrameInput, settings, camera, items, lights, mirrors, reflectors, time),
     };
     std::vector<std::string> all;
     for (auto& list : lists)
@@ -134,7 +134,7 @@ FrameInput baseScene() {
     ball.mirrorDepth = 1;
     ball.parallax =
         ParallaxParams{.shape = ParallaxShape::Box, .min = glm::dvec3(-4.0), .max = glm::dvec3(4.0)};
-    input.reflector = ball;
+    input.reflectors = {ball};
     return input;
 }
 
@@ -258,6 +258,8 @@ std::vector<Row> table() {
          false, false, "how rough surfaces read the map, not what the map holds"},
         {"Settings.glossyTaps", "", [](FrameInput& f) { f.settings.glossyTaps = 4; }, false, false,
          "the camera's rough planar mirrors; the map's mirrors are sharp"},
+        {"Settings.reflectorBounces", "", [](FrameInput& f) { f.settings.reflectorBounces = 2; }, true, false,
+         "the other reflectors in the map are drawn with their maps, not their material"},
         {"Settings.prefilterSamples", "", [](FrameInput& f) { f.settings.prefilterSamples = 8; }, false,
          false, "filters the captured map again; it is not captured again"},
         {"Settings.screenSteps", "", [](FrameInput& f) { f.settings.screenSteps = 16; }, false, false,
@@ -354,46 +356,47 @@ std::vector<Row> table() {
         {"Mirror.hasMaterial", "", [](FrameInput& f) { f.mirrors[0].hasMaterial = false; }, true, false,
          "its surface in the map; " + notCast},
         // Reflector
-        {"Reflector.name", "", [](FrameInput& f) { f.reflector->name = "Globe"; }, false, false, name},
-        {"Reflector.world", "", [](FrameInput& f) { f.reflector->world[3].x += 0.1; }, true, true,
+        {"Reflector.name", "", [](FrameInput& f) { f.reflectors[0].name = "Globe"; }, false, false, name},
+        {"Reflector.world", "", [](FrameInput& f) { f.reflectors[0].world[3].x += 0.1; }, true, true,
          "the capture point, and the shadow the reflector casts"},
-        {"Reflector.mesh", "", [](FrameInput& f) { f.reflector->mesh = boxMesh(); }, true, true,
+        {"Reflector.mesh", "", [](FrameInput& f) { f.reflectors[0].mesh = boxMesh(); }, true, true,
          "its bounds place the capture point, its shape casts a shadow"},
         {"Reflector.material", "",
          [](FrameInput& f) {
-             f.reflector->material.color = {1, 0, 0};
+             f.reflectors[0].material.color = {1, 0, 0};
          },
          false, false, surface},
-        {"Reflector.map", "", [](FrameInput& f) { f.reflector->map = ReflectorMap::TennisBall; }, true, false,
-         "a map of another layout; not drawn by the shadow"},
-        {"Reflector.resolution", "", [](FrameInput& f) { f.reflector->resolution = 128; }, true, false,
+        {"Reflector.map", "", [](FrameInput& f) { f.reflectors[0].map = ReflectorMap::TennisBall; }, true,
+         false, "a map of another layout; not drawn by the shadow"},
+        {"Reflector.resolution", "", [](FrameInput& f) { f.reflectors[0].resolution = 128; }, true, false,
          "the map's texels; not drawn by the shadow"},
-        {"Reflector.reflectivity", "", [](FrameInput& f) { f.reflector->reflectivity = 0.5; }, false, false,
+        {"Reflector.reflectivity", "", [](FrameInput& f) { f.reflectors[0].reflectivity = 0.5; }, false,
+         false, surface},
+        {"Reflector.fresnel", "", [](FrameInput& f) { f.reflectors[0].fresnel = true; }, false, false,
          surface},
-        {"Reflector.fresnel", "", [](FrameInput& f) { f.reflector->fresnel = true; }, false, false, surface},
-        {"Reflector.fill", "", [](FrameInput& f) { f.reflector->fill = ReflectorFill::Direct; }, true, false,
-         "how a non-linear map is filled; not drawn by the shadow"},
-        {"Reflector.parallax", "", [](FrameInput& f) { f.reflector->parallax = ParallaxParams{}; }, false,
+        {"Reflector.fill", "", [](FrameInput& f) { f.reflectors[0].fill = ReflectorFill::Direct; }, true,
+         false, "how a non-linear map is filled; not drawn by the shadow"},
+        {"Reflector.parallax", "", [](FrameInput& f) { f.reflectors[0].parallax = ParallaxParams{}; }, false,
          false, "the lookup's proxy in pass 2: " + surface},
-        {"Reflector.update", "", [](FrameInput& f) { f.reflector->update = ReflectorUpdate::Always; }, false,
-         false, "decides when the map is drawn, not what it holds"},
-        {"Reflector.mirrorDepth", "", [](FrameInput& f) { f.reflector->mirrorDepth = 2; }, true, false,
+        {"Reflector.update", "", [](FrameInput& f) { f.reflectors[0].update = ReflectorUpdate::Always; },
+         false, false, "decides when the map is drawn, not what it holds"},
+        {"Reflector.mirrorDepth", "", [](FrameInput& f) { f.reflectors[0].mirrorDepth = 2; }, true, false,
          "how deep the map's mirrors nest; not drawn by the shadow"},
-        {"Reflector.roughness", "", [](FrameInput& f) { f.reflector->roughness = 0.4; }, false, false,
+        {"Reflector.roughness", "", [](FrameInput& f) { f.reflectors[0].roughness = 0.4; }, false, false,
          "chooses a level of the pre-filtered chain, which holds every roughness"},
         {"Reflector.technique", "",
-         [](FrameInput& f) { f.reflector->technique = ReflectorTechnique::ScreenSpace; }, false, false,
+         [](FrameInput& f) { f.reflectors[0].technique = ReflectorTechnique::ScreenSpace; }, false, false,
          "how the camera's view reads the reflection, not what the map holds"},
         // ParallaxParams, on a reflector that has a box proxy
         {"ParallaxParams.shape", "",
-         [](FrameInput& f) { f.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Sphere}; }, false,
-         false, surface},
-        {"ParallaxParams.radius", "", [](FrameInput& f) { f.reflector->parallax->radius = 3.0; }, false,
-         false, surface},
-        {"ParallaxParams.min", "", [](FrameInput& f) { f.reflector->parallax->min = glm::dvec3(-2.0); },
+         [](FrameInput& f) { f.reflectors[0].parallax = ParallaxParams{.shape = ParallaxShape::Sphere}; },
          false, false, surface},
-        {"ParallaxParams.max", "", [](FrameInput& f) { f.reflector->parallax->max = glm::dvec3(2.0); }, false,
+        {"ParallaxParams.radius", "", [](FrameInput& f) { f.reflectors[0].parallax->radius = 3.0; }, false,
          false, surface},
+        {"ParallaxParams.min", "", [](FrameInput& f) { f.reflectors[0].parallax->min = glm::dvec3(-2.0); },
+         false, false, surface},
+        {"ParallaxParams.max", "", [](FrameInput& f) { f.reflectors[0].parallax->max = glm::dvec3(2.0); },
+         false, false, surface},
         // FrameInput
         {"FrameInput.settings", "", [](FrameInput& f) { f.settings = Settings{}; }, true, false,
          "a default background and ambient"},
@@ -413,13 +416,13 @@ std::vector<Row> table() {
              f.mirrors.push_back(far);
          },
          true, true, "one more mirror in the map; a receiver that widens the light's frustum"},
-        {"FrameInput.reflector", "",
+        {"FrameInput.reflectors", "",
          [](FrameInput& f) {
-             Reflector moved = *f.reflector;
-             moved.world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0.5, 0));
-             f.reflector = moved;
+             Reflector second = f.reflectors[0];
+             second.world = glm::translate(glm::dmat4(1.0), glm::dvec3(2.5, 0.5, 0));
+             f.reflectors.push_back(second);
          },
-         true, true, "another reflector: another capture point and another caster"},
+         true, true, "another reflector: in the first one's map, and another caster"},
         {"FrameInput.time", "", [](FrameInput& f) { f.time = 3.5; }, false, false,
          "animations are evaluated into the transforms before planning; the time itself draws nothing"},
     };
@@ -434,7 +437,7 @@ std::vector<Row> table() {
         "mirrors[0]", [](FrameInput& f) -> Material& { return f.mirrors[0].material; }, true, false,
         "the mirror's surface is drawn into the map; mirrors cast no shadow"));
     add(materialRows(
-        "reflector", [](FrameInput& f) -> Material& { return f.reflector->material; }, false, false,
+        "reflector", [](FrameInput& f) -> Material& { return f.reflectors[0].material; }, false, false,
         surface));
     return rows;
 }
@@ -453,14 +456,14 @@ TEST(Signatures, EveryFieldOfFrameInputHasARow) {
 
 TEST(Signatures, EachMapsSignatureChangesWithExactlyTheFieldsItDraws) {
     const FrameInput base = baseScene();
-    const std::uint64_t envmap = envmapSignature(base);
+    const std::uint64_t envmap = envmapSignature(base, 0);
     const std::uint64_t shadow = shadowSignature(base, 0);
     for (const Row& row : table()) {
         FrameInput changed = base;
         row.perturb(changed);
         const std::string where =
             row.field + (row.context.empty() ? "" : " in " + row.context) + ": " + row.why;
-        EXPECT_EQ(envmapSignature(changed) != envmap, row.envmap) << "envmap signature, " << where;
+        EXPECT_EQ(envmapSignature(changed, 0) != envmap, row.envmap) << "envmap signature, " << where;
         EXPECT_EQ(shadowSignature(changed, 0) != shadow, row.shadow) << "shadow signature, " << where;
     }
 }
@@ -495,10 +498,10 @@ bool hasEnvmap(const FramePlan& plan) {
 // update: on-change must draw the map again rather than keep the old reflection.
 TEST(Signatures, TogglingAMirrorsFresnelRedrawsAnOnChangeMap) {
     FrameInput input = baseScene();
-    ASSERT_EQ(input.reflector->update, ReflectorUpdate::OnChange);
+    ASSERT_EQ(input.reflectors[0].update, ReflectorUpdate::OnChange);
     PlannerState state; // what the renderer keeps after it rendered the map
-    state.envmapSignature = envmapSignature(input);
-    state.envmapSettings = envmapSettingsKey(*input.reflector);
+    state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
     ASSERT_FALSE(hasEnvmap(planFrame(input, state))) << "nothing changed: the map is reused";
 
     input.mirrors[0].fresnel = true;
@@ -510,7 +513,7 @@ TEST(Signatures, TogglingAMirrorsFresnelRedrawsAnOnChangeMap) {
         }
     }
 
-    state.envmapSignature = envmapSignature(input);
+    state.mapOf(0).signature = envmapSignature(input, 0);
     EXPECT_FALSE(hasEnvmap(planFrame(input, state))) << "redrawn once, then reused again";
 }
 

@@ -32,10 +32,10 @@ const SkippedEffect* prefilterSkip(const FramePlan& plan) {
 // What the renderer records once the map and the chain are drawn.
 PlannerState afterRendering(const FrameInput& input) {
     PlannerState state;
-    state.envmapSignature = envmapSignature(input);
-    state.envmapSettings = envmapSettingsKey(*input.reflector);
-    state.prefilterKey =
-        prefilterKey(*state.envmapSignature, *state.envmapSettings, input.settings.prefilterSamples);
+    state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
+    state.mapOf(0).prefilterKey =
+        prefilterKey(*state.mapOf(0).signature, *state.mapOf(0).settings, input.settings.prefilterSamples);
     return state;
 }
 
@@ -112,13 +112,13 @@ TEST(PrefilterPlanner, ReusedMapWithoutAChainFiltersOnce) {
     // Roughness raised from 0 while the map is reused: the chain is made from the map as it is.
     const FrameInput sharp = roughBall(0.0);
     PlannerState state = afterRendering(sharp);
-    state.prefilterKey.reset();
+    state.mapOf(0).prefilterKey.reset();
     const FramePlan plan = planFrame(roughBall(0.5), state);
     EXPECT_EQ(passOf(plan, PassKind::Envmap), nullptr);
     const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
     ASSERT_NE(prefilter, nullptr);
     EXPECT_EQ(prefilter->code, PlanReason::PrefilterFirstChain);
-    EXPECT_EQ(prefilter->signature, prefilterKey(*state.envmapSignature, *state.envmapSettings, 64));
+    EXPECT_EQ(prefilter->signature, prefilterKey(*state.mapOf(0).signature, *state.mapOf(0).settings, 64));
 }
 
 TEST(PrefilterPlanner, RecapturedMapIsFilteredAgain) {
@@ -131,7 +131,7 @@ TEST(PrefilterPlanner, RecapturedMapIsFilteredAgain) {
     ASSERT_NE(prefilter, nullptr);
     EXPECT_EQ(prefilter->code, PlanReason::PrefilterMapRendered);
     EXPECT_EQ(prefilter->signature,
-              prefilterKey(envmapSignature(after), envmapSettingsKey(*after.reflector), 64));
+              prefilterKey(envmapSignature(after, 0), envmapSettingsKey(after.reflectors[0]), 64));
 }
 
 TEST(PrefilterPlanner, InvisibleReflectorPlansNoPrefilter) {
@@ -144,7 +144,7 @@ TEST(PrefilterPlanner, InvisibleReflectorPlansNoPrefilter) {
 
 TEST(PrefilterPlanner, LevelsFollowTheMapSize) {
     FrameInput input = roughBall(1.0);
-    input.reflector->resolution = 8;             // 4 mip levels: r_k = k/3
+    input.reflectors[0].resolution = 8;          // 4 mip levels: r_k = k/3
     const FramePlan plan = planFrame(input, {}); // the pass below points into it
     const PlannedPass* prefilter = passOf(plan, PassKind::Prefilter);
     ASSERT_NE(prefilter, nullptr);

@@ -34,7 +34,7 @@ FrameInput chromeScene(ReflectorUpdate update = ReflectorUpdate::OnChange) {
     r.name = "Ball";
     r.mesh = sphere();
     r.update = update;
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 
@@ -63,8 +63,8 @@ bool hasEnvmap(const FramePlan& plan) {
 // What the renderer records after it ran the envmap pass.
 PlannerState afterRendering(const FrameInput& input) {
     PlannerState state;
-    state.envmapSignature = envmapSignature(input);
-    state.envmapSettings = envmapSettingsKey(*input.reflector);
+    state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
     return state;
 }
 
@@ -87,11 +87,11 @@ TEST(ReflectorPlanner, EnvmapRunsAfterShadowsAndBeforeTheMainPass) {
 // rough one also needs the image's blurred pyramid, just before the trace, and each says why.
 TEST(ReflectorPlanner, ARoughReflectorTracedInScreenSpaceBlursTheImageFirst) {
     FrameInput input = chromeScene();
-    input.reflector->technique = ReflectorTechnique::ScreenSpace;
+    input.reflectors[0].technique = ReflectorTechnique::ScreenSpace;
     EXPECT_EQ(kinds(planFrame(input, {})),
               (std::vector{PassKind::Shadow, PassKind::Envmap, PassKind::Main, PassKind::ScreenDepth,
                            PassKind::ReflectorTrace, PassKind::Composite}));
-    input.reflector->roughness = 0.3;
+    input.reflectors[0].roughness = 0.3;
     const FramePlan rough = planFrame(input, {});
     EXPECT_EQ(kinds(rough), (std::vector{PassKind::Shadow, PassKind::Envmap, PassKind::Prefilter,
                                          PassKind::Main, PassKind::ScreenDepth, PassKind::ScreenColour,
@@ -114,12 +114,13 @@ TEST(ReflectorPlanner, NoEnvmapWhenTheReflectorIsOutsideTheView) {
     EXPECT_EQ(skipCode(plan, "Ball"), PlanReason::EnvmapOutOfSight);
 
     input.camera.target = {0.0, 0.0, 0.0};
-    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 8)); // behind the camera
+    input.reflectors[0].world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 8)); // behind the camera
     EXPECT_FALSE(hasEnvmap(planFrame(input, {})));
-    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -60)); // beyond the far plane
+    input.reflectors[0].world =
+        glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -60)); // beyond the far plane
     EXPECT_FALSE(hasEnvmap(planFrame(input, {})));
     // Barely inside the frustum's edge: still planned (the test is conservative, never wrong).
-    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(3.4, 0, 0));
+    input.reflectors[0].world = glm::translate(glm::dmat4(1.0), glm::dvec3(3.4, 0, 0));
     EXPECT_TRUE(hasEnvmap(planFrame(input, {})));
 }
 
@@ -129,7 +130,7 @@ TEST(ReflectorPlanner, ReflectorSeenOnlyInAMirrorGetsItsEnvmap) {
     // shows it.
     input.camera.position = {0.0, 0.0, 2.0};
     input.camera.target = {0.0, 0.0, -4.0};
-    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 4));
+    input.reflectors[0].world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 4));
     Mirror mirror;
     mirror.name = "Mirror";
     mirror.world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -4)), glm::radians(90.0),
@@ -146,7 +147,7 @@ TEST(ReflectorPlanner, ReflectorSeenOnlyInAMirrorGetsItsEnvmap) {
 
     // The reason says how deep the mirrors reflect inside the map.
     for (int depth : {0, 1, 3}) {
-        input.reflector->mirrorDepth = depth;
+        input.reflectors[0].mirrorDepth = depth;
         for (const auto& p : planFrame(input, {}, {320, 240}).passes) {
             if (p.kind != PassKind::Envmap)
                 continue;
@@ -155,7 +156,7 @@ TEST(ReflectorPlanner, ReflectorSeenOnlyInAMirrorGetsItsEnvmap) {
     }
 
     // Turned away from the mirror's reflected view (the mirror now shows the scene to the left).
-    input.reflector->world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 40, 4));
+    input.reflectors[0].world = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 40, 4));
     plan = planFrame(input, {}, {320, 240});
     EXPECT_FALSE(hasEnvmap(plan));
     EXPECT_EQ(skipCode(plan, "Ball"), PlanReason::EnvmapOutOfSight);
@@ -183,9 +184,9 @@ TEST(ReflectorPlanner, OnChangeReusesTheMapUntilSomethingItSeesChanges) {
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].world[3].y += 0.1; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.lights[0].color = {1.0, 0.5, 0.5}; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.color = {1.0, 0.0, 0.0}; }));
-    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflector->world[3].x += 0.1; }));
-    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflector->map = ReflectorMap::TennisBall; }));
-    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflector->resolution = 128; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflectors[0].world[3].x += 0.1; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflectors[0].map = ReflectorMap::TennisBall; }));
+    EXPECT_TRUE(rerenders([](FrameInput& f) { f.reflectors[0].resolution = 128; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.settings.background = {1.0, 1.0, 1.0}; }));
     // Every material field a model file brings, the textures by identity (file or decoded image) and
     // their wrap modes.
@@ -203,8 +204,8 @@ TEST(ReflectorPlanner, OnChangeReusesTheMapUntilSomethingItSeesChanges) {
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.alphaMode = AlphaMode::Mask; }));
     EXPECT_TRUE(rerenders([](FrameInput& f) { f.items[0].material.alphaCutoff = 0.3; }));
     // The reflector's own material is not seen by its map.
-    EXPECT_FALSE(rerenders([](FrameInput& f) { f.reflector->material.color = {1.0, 0.0, 0.0}; }));
-    EXPECT_FALSE(rerenders([](FrameInput& f) { f.reflector->reflectivity = 0.5; }));
+    EXPECT_FALSE(rerenders([](FrameInput& f) { f.reflectors[0].material.color = {1.0, 0.0, 0.0}; }));
+    EXPECT_FALSE(rerenders([](FrameInput& f) { f.reflectors[0].reflectivity = 0.5; }));
 }
 
 TEST(ReflectorPlanner, OnceKeepsTheFirstMapAndAlwaysRendersEveryFrame) {
@@ -215,7 +216,7 @@ TEST(ReflectorPlanner, OnceKeepsTheFirstMapAndAlwaysRendersEveryFrame) {
     FramePlan plan = planFrame(once, state);
     EXPECT_FALSE(hasEnvmap(plan));
     EXPECT_EQ(skipCode(plan, "Ball"), PlanReason::EnvmapReusedOnce);
-    once.reflector->map = ReflectorMap::DualParaboloid; // new textures: rendered once more
+    once.reflectors[0].map = ReflectorMap::DualParaboloid; // new textures: rendered once more
     EXPECT_TRUE(hasEnvmap(planFrame(once, state)));
 
     FrameInput always = chromeScene(ReflectorUpdate::Always);
@@ -237,10 +238,10 @@ const PlannedPass* envmapPass(const FramePlan& plan) {
 std::vector<int> playFrame(const FrameInput& input, PlannerState& state, FramePlan* planned = nullptr) {
     const FramePlan plan = planFrame(input, state);
     std::vector<int> drawn;
-    if (plan.envmap) {
-        for (const EnvmapFace& face : plan.envmap->faces)
+    if (!plan.envmaps.empty()) {
+        for (const EnvmapFace& face : plan.envmaps[0].faces)
             drawn.push_back(face.index);
-        recordEnvmap(*plan.envmap, state);
+        recordEnvmap(plan.envmaps[0], state);
     }
     if (planned)
         *planned = plan;
@@ -294,7 +295,7 @@ TEST(ReflectorPlanner, TimeSlicedRedrawsOneOutOfDateFaceAFrameInTurn) {
     // reused part done.
     for (ReflectorUpdate policy : {ReflectorUpdate::OnChange, ReflectorUpdate::Once}) {
         FrameInput switched = input;
-        switched.reflector->update = policy;
+        switched.reflectors[0].update = policy;
         FramePlan whole;
         PlannerState midSlice = state;
         EXPECT_EQ(playFrame(switched, midSlice, &whole), (std::vector{0, 1, 2, 3, 4, 5}))
@@ -304,8 +305,8 @@ TEST(ReflectorPlanner, TimeSlicedRedrawsOneOutOfDateFaceAFrameInTurn) {
     }
 
     // A direct-fill map slices by its two parts.
-    input.reflector->map = ReflectorMap::DualParaboloid;
-    input.reflector->fill = ReflectorFill::Direct;
+    input.reflectors[0].map = ReflectorMap::DualParaboloid;
+    input.reflectors[0].fill = ReflectorFill::Direct;
     EXPECT_EQ(playFrame(input, state), (std::vector{0, 1})) << "new settings: drawn whole";
     input.items[0].world[3].x += 0.1;
     FramePlan plan;
@@ -319,9 +320,9 @@ TEST(ReflectorPlanner, TimeSlicedRedrawsOneOutOfDateFaceAFrameInTurn) {
 
 TEST(ReflectorPlanner, CaptureLooksFromTheCentreOfTheReflectorsBounds) {
     FrameInput input = chromeScene();
-    input.reflector->world =
+    input.reflectors[0].world =
         glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(1, 2, 3)), glm::dvec3(0.5));
-    const EnvmapCapture capture = envmapCapture(input);
+    const EnvmapCapture capture = envmapCapture(input, 0);
     EXPECT_NEAR(capture.centre.x, 1.0, 1e-6);
     EXPECT_NEAR(capture.centre.y, 2.0, 1e-6);
     EXPECT_NEAR(capture.centre.z, 3.0, 1e-6);

@@ -118,8 +118,8 @@ int classify(FrameInput& input) {
         mirror.hasMaterial = true; // shown from behind (beyond the depth limit a perfect mirror is black)
         mirror.material = flat(paletteColour(next++));
     }
-    if (input.reflector)
-        input.reflector->material = flat(paletteColour(next++));
+    if (!input.reflectors.empty())
+        input.reflectors[0].material = flat(paletteColour(next++));
     return next;
 }
 
@@ -147,7 +147,7 @@ class ReferenceAgreement : public GlTest {};
 TEST_F(ReferenceAgreement, PlanarMirrorsShowTheSameObjectInAtLeast99PercentOfPixels) {
     FrameInput input = loadDemo("mirrors.speculum.json");
     ASSERT_GE(input.mirrors.size(), 3u);
-    ASSERT_FALSE(input.reflector.has_value()) << "planar mirrors only";
+    ASSERT_TRUE(input.reflectors.empty()) << "planar mirrors only";
     const int count = classify(input);
     const int width = 480, height = 270;
     const render::Image raster = renderImage(input, width, height, 1);
@@ -205,10 +205,10 @@ TEST_F(ReferenceAgreement, TeapotDemoHasNoNaNAndMatchesTheRasterizer) {
 // metre below) and comes closer to the exact reflection on the ball's pixels than the map alone.
 TEST_F(ReferenceAgreement, ChromeBallTracedInScreenSpaceFirstBeatsItsMapAlone) {
     FrameInput input = loadDemo("chrome.speculum.json");
-    ASSERT_TRUE(input.reflector.has_value());
+    ASSERT_EQ(input.reflectors.size(), 1u);
     const int width = 480, height = 270;
     const render::Image map = renderImage(input, width, height);
-    input.reflector->technique = render::ReflectorTechnique::ScreenSpace;
+    input.reflectors[0].technique = render::ReflectorTechnique::ScreenSpace;
     const render::Image traced = renderImage(input, width, height);
     std::string outcome;
     for (const render::PassRun& run : lastReport().ran)
@@ -233,11 +233,11 @@ TEST_F(ReferenceAgreement, ChromeBallTracedInScreenSpaceFirstBeatsItsMapAlone) {
 // tracer's glossy paths (64 a pixel).
 TEST_F(ReferenceAgreement, RoughBallTracedAsAConeBeatsItsPrefilteredMapAlone) {
     FrameInput input = loadDemo("chrome.speculum.json");
-    ASSERT_TRUE(input.reflector.has_value());
-    input.reflector->roughness = 0.25;
+    ASSERT_EQ(input.reflectors.size(), 1u);
+    input.reflectors[0].roughness = 0.25;
     const int width = 480, height = 270;
     const render::Image map = renderImage(input, width, height);
-    input.reflector->technique = render::ReflectorTechnique::ScreenSpace;
+    input.reflectors[0].technique = render::ReflectorTechnique::ScreenSpace;
     const render::Image traced = renderImage(input, width, height);
     std::size_t pyramids = 0;
     for (const render::PassRun& run : lastReport().ran)

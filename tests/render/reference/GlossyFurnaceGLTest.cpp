@@ -65,7 +65,7 @@ FrameInput ballFurnace(double roughness) {
     ball.reflectivity = 1.0;
     ball.roughness = roughness;
     ball.resolution = 64;
-    input.reflector = ball;
+    input.reflectors = {ball};
     return input;
 }
 

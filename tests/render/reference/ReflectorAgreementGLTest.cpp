@@ -2,6 +2,7 @@
 // environment map's resolution rises, for every map type and fill; on a reflector close to the walls,
 // parallax correction with a box proxy of the room lowers that error; and a rough reflector's blur follows
 // the distance to what it reflects.
+#include "TiledRoom.hpp"
 #include "render/envmap/SolidAngle.hpp"
 #include "render/imageio/ImageWriter.hpp"
 #include "render/mesh/Primitives.hpp"
@@ -20,55 +21,9 @@ namespace {
 using namespace render;
 
 constexpr int kSize = 160;
-constexpr int kTiles = 3; // per wall side
 // Both images average 2×2 samples per pixel: the tracer's point samples would otherwise alias tile edges
 // that the map's filtered lookups blur, an error no resolution removes.
 constexpr int kSsaa = 2;
-
-Material flatColour(glm::dvec3 colour) {
-    Material m;
-    m.color = glm::dvec3(0.0);
-    m.ambient = 0.0;
-    m.diffuse = 0.0;
-    m.emission = colour;
-    return m;
-}
-
-// A room [−half, half]³ whose six walls are grids of flat-coloured tiles: sharp edges everywhere, which a
-// coarse map blurs, and no texture (whose minification the tracer, without mipmaps, would alias).
-FrameInput tiledRoom(double half) {
-    static const auto plane = std::make_shared<const MeshData>(makePlane(1));
-    static const glm::dvec3 palette[] = {{0.9, 0.1, 0.1},    {0.1, 0.8, 0.2},   {0.1, 0.2, 0.9},
-                                         {0.9, 0.9, 0.1},    {0.9, 0.2, 0.9},   {0.1, 0.9, 0.9},
-                                         {0.95, 0.95, 0.95}, {0.05, 0.05, 0.05}};
-    FrameInput input;
-    input.settings.background = {0.0, 0.0, 0.0};
-    input.settings.ambient = 0.0;
-    input.camera.far = 100.0;
-    const double tile = 2.0 * half / kTiles;
-    int colour = 0;
-    for (int wall = 0; wall < 6; ++wall) {
-        const int axis = wall / 2;
-        glm::dvec3 n(0.0);
-        n[axis] = wall % 2 == 0 ? 1.0 : -1.0;
-        // The unit plane lies in XZ facing +Y; turn +Y onto the wall's axis. Flat colours are two-sided.
-        glm::dmat4 turn(1.0);
-        if (axis == 0)
-            turn = glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(0, 0, 1));
-        else if (axis == 2)
-            turn = glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(1, 0, 0));
-        for (int i = 0; i < kTiles; ++i)
-            for (int j = 0; j < kTiles; ++j) {
-                const glm::dvec3 local(-half + (i + 0.5) * tile, 0.0, -half + (j + 0.5) * tile);
-                const glm::dmat4 world = glm::translate(glm::dmat4(1.0), n * half) * turn *
-                                         glm::translate(glm::dmat4(1.0), local) *
-                                         glm::scale(glm::dmat4(1.0), glm::dvec3(tile * 0.5, 1.0, tile * 0.5));
-                input.items.push_back({"tile", world, plane, flatColour(palette[colour++ % 8]), false});
-            }
-        ++colour; // neighbouring walls start on different colours
-    }
-    return input;
-}
 
 void addBall(FrameInput& input, glm::dvec3 centre, double radius, ReflectorMap map, ReflectorFill fill,
              int resolution) {
@@ -82,7 +37,7 @@ void addBall(FrameInput& input, glm::dvec3 centre, double radius, ReflectorMap m
     r.map = map;
     r.fill = fill;
     r.resolution = resolution;
-    input.reflector = r;
+    input.reflectors = {r};
 }
 
 class ReflectorError : public GlTest {
@@ -90,15 +45,8 @@ protected:
     // The exact image of `input` (the tracer ignores map type, resolution and parallax); `paths` per
     // sub-sample on a rough reflector.
     void trace(const FrameInput& input, int paths = 16) {
-        auto tracer = reference::Tracer::create(input);
-        ASSERT_TRUE(tracer.ok()) << (tracer.ok() ? "" : tracer.error());
-        reference::TraceSettings settings;
-        settings.width = kSize;
-        settings.height = kSize;
-        settings.ssaa = kSsaa;
-        settings.samples = paths;
-        auto traced = tracer->render(settings);
-        ASSERT_TRUE(traced.ok()) << (traced.ok() ? "" : traced.error());
+        auto traced = traceExact(input, kSize, kSsaa, paths);
+        ASSERT_TRUE(traced);
         m_exact = std::move(traced->image);
         m_mask = reference::reflectorMask(traced->ids);
     }
@@ -142,9 +90,9 @@ TEST_F(ReflectorError, FallsAsTheMapResolutionRisesForEveryMapType) {
     input.camera.target = {0.0, 0.0, 0.0};
     input.camera.fovY = 50.0;
     addBall(input, glm::dvec3(0.0), 1.0, ReflectorMap::Cube, ReflectorFill::Resampled, 32);
-    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
-    input.reflector->parallax->min = glm::dvec3(-kHalf);
-    input.reflector->parallax->max = glm::dvec3(kHalf);
+    input.reflectors[0].parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflectors[0].parallax->min = glm::dvec3(-kHalf);
+    input.reflectors[0].parallax->max = glm::dvec3(kHalf);
     trace(input);
     const Method methods[] = {
         {ReflectorMap::Cube, ReflectorFill::Resampled, "cube"},
@@ -156,9 +104,9 @@ TEST_F(ReflectorError, FallsAsTheMapResolutionRisesForEveryMapType) {
     for (const Method& m : methods) {
         std::vector<double> psnr;
         for (int n : {32, 64, 128, 256}) {
-            input.reflector->map = m.map;
-            input.reflector->fill = m.fill;
-            input.reflector->resolution = n;
+            input.reflectors[0].map = m.map;
+            input.reflectors[0].fill = m.fill;
+            input.reflectors[0].resolution = n;
             psnr.push_back(reflectorPsnr(input));
         }
         std::printf("[ measured ] %-26s reflector PSNR at n = 32, 64, 128, 256: %.2f %.2f %.2f %.2f dB\n",
@@ -183,13 +131,13 @@ TEST_F(ReflectorError, OctahedralAgreesWithTheCubeAtTheResolutionItsTexelsPredic
     input.camera.target = {0.0, 0.0, 0.0};
     input.camera.fovY = 50.0;
     addBall(input, glm::dvec3(0.0), 1.0, ReflectorMap::Cube, ReflectorFill::Resampled, 32);
-    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
-    input.reflector->parallax->min = glm::dvec3(-kHalf);
-    input.reflector->parallax->max = glm::dvec3(kHalf);
+    input.reflectors[0].parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflectors[0].parallax->min = glm::dvec3(-kHalf);
+    input.reflectors[0].parallax->max = glm::dvec3(kHalf);
     trace(input);
     auto psnrOf = [&](ReflectorMap map, int n) {
-        input.reflector->map = map;
-        input.reflector->resolution = n;
+        input.reflectors[0].map = map;
+        input.reflectors[0].resolution = n;
         return reflectorPsnr(input);
     };
     for (int n : {128, 256}) {
@@ -219,10 +167,10 @@ TEST_F(ReflectorError, ParallaxCorrectionLowersTheErrorNearTheWalls) {
     trace(input);
     const double plain = reflectorPsnr(input);
     // The proxy is the room itself, relative to the capture point (the ball's centre).
-    ASSERT_NEAR(glm::length(envmapCapture(input).centre - centre), 0.0, 1e-6);
-    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
-    input.reflector->parallax->min = glm::dvec3(-kHalf) - centre;
-    input.reflector->parallax->max = glm::dvec3(kHalf) - centre;
+    ASSERT_NEAR(glm::length(envmapCapture(input, 0).centre - centre), 0.0, 1e-6);
+    input.reflectors[0].parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflectors[0].parallax->min = glm::dvec3(-kHalf) - centre;
+    input.reflectors[0].parallax->max = glm::dvec3(kHalf) - centre;
     const double corrected = reflectorPsnr(input);
     std::printf("[ measured ] reflector PSNR without parallax correction %.2f dB, with a box proxy %.2f dB\n",
                 plain, corrected);
@@ -244,15 +192,15 @@ TEST_F(ReflectorError, ARoughBallReflectsNearWallsSharperThanFarOnes) {
     input.camera.target = centre;
     input.camera.fovY = 50.0;
     addBall(input, centre, 0.4, ReflectorMap::Cube, ReflectorFill::Resampled, 256);
-    input.reflector->parallax = ParallaxParams{.shape = ParallaxShape::Box};
-    input.reflector->parallax->min = glm::dvec3(-kHalf) - centre;
-    input.reflector->parallax->max = glm::dvec3(kHalf) - centre;
+    input.reflectors[0].parallax = ParallaxParams{.shape = ParallaxShape::Box};
+    input.reflectors[0].parallax->min = glm::dvec3(-kHalf) - centre;
+    input.reflectors[0].parallax->max = glm::dvec3(kHalf) - centre;
     const struct {
         double roughness;
         double atLeast; // dB
     } cases[] = {{0.2, 25.7}, {0.4, 28.0}};
     for (const auto& c : cases) {
-        input.reflector->roughness = c.roughness;
+        input.reflectors[0].roughness = c.roughness;
         trace(input, 64);
         const double psnr = reflectorPsnr(input);
         std::printf("[ measured ] rough ball %.1f near the walls, box proxy: reflector PSNR %.2f dB\n",

@@ -447,7 +447,7 @@ TEST_F(ExtremeValues, HostileValuesStillGiveFinitePixels) {
         reflector.world = placed({1.5, 0.0, 1.0}, glm::dvec3(0.7));
         reflector.resolution = 32;
         reflector.reflectivity = 0.6;
-        in.reflector = reflector;
+        in.reflectors = {reflector};
         cases.emplace_back("curved reflector lit by intensity 1e39", in);
     }
     for (const auto& [name, input] : cases) {

@@ -105,7 +105,7 @@ FrameInput sharpScene() {
                                  glm::dvec3(1, 1, 1));
     reflector.reflectivity = 0.8;
     reflector.fresnel = true;
-    input.reflector = reflector;
+    input.reflectors = {reflector};
     return input;
 }
 
@@ -166,7 +166,7 @@ TEST(GlossyTracer, RoughFlatReflectorUnderWhiteSkyShowsTheLobeAlbedo) {
         reflector.world = placed({0, 0, 0}, {1000, 1, 1000});
         reflector.reflectivity = 1.0;
         reflector.roughness = 0.7;
-        input.reflector = reflector;
+        input.reflectors = {reflector};
         const TraceResult r = trace(input, 1, 1, 65536);
         const double standardError = std::sqrt(double(r.noise.at(0, 0).r));
         EXPECT_NEAR(r.image.at(0, 0).r, ggx::albedo(glm::radians(view), 0.49), 4.0 * standardError + 2e-7)
@@ -236,7 +236,7 @@ TEST(GlossyTracer, NothingNonFiniteAtFullRoughnessAndGrazingViews) {
         reflector.world = placed({0.0, 0.5, -0.5}, {0.6, 0.6, 0.6});
         reflector.roughness = roughness;
         reflector.fresnel = true;
-        sphere.reflector = reflector;
+        sphere.reflectors = {reflector};
         const TraceResult r = trace(sphere, 48, 27, 8, 2);
         expectAllFinite(r, "reflector, roughness " + std::to_string(roughness));
         EXPECT_GT(r.glossyPixels, 0);

@@ -63,7 +63,7 @@ FrameInput brokenScene() {
     render::Reflector reflector;
     reflector.mesh = mesh;
     reflector.world = placed({0.5, 0, -0.5}, {1, 1, 0}); // flattened to zero depth
-    input.reflector = reflector;
+    input.reflectors = {reflector};
     return input;
 }
 

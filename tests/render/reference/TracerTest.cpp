@@ -300,7 +300,7 @@ TEST(ReferenceTracer, ReflectorReflectsAboutItsSurfaceNormal) {
     reflector.world = placed({0, -1, 0}, {10, 1, 10});
     reflector.reflectivity = 0.75;
     reflector.material = emissive({0.2, 0.0, 0.0});
-    input.reflector = reflector;
+    input.reflectors = {reflector};
     const TraceResult result = trace(input, 101, 101);
     const glm::ivec2 mirrored = pixelOf({0, -2, -3}, 101);
     expectColour(result.image.at(mirrored.x, mirrored.y),
@@ -324,17 +324,17 @@ TEST(ReferenceTracer, ReflectorShowsPlanarMirrorsToItsOwnMirrorDepth) {
     reflector.mesh = planeMesh();
     reflector.world = placed({0, -1, 0}, {10, 1, 10});
     reflector.material = emissive({0, 0, 0});
-    input.reflector = reflector;
+    input.reflectors = {reflector};
     const glm::ivec2 px = pixelOf({0, -1, -2}, 101);
     // At depth 0 the mirror shows its surface's share alone; at depth 1 the sky behind it too.
-    input.reflector->mirrorDepth = 0;
+    input.reflectors[0].mirrorDepth = 0;
     expectColour(trace(input, 101, 101).image.at(px.x, px.y), {0, 0.5, 0});
-    input.reflector->mirrorDepth = 1;
+    input.reflectors[0].mirrorDepth = 1;
     expectColour(trace(input, 101, 101).image.at(px.x, px.y), {0.1, 0.5, 0});
     // Fresnel: at this angle (cos ≈ 0.45) Schlick's R rises from 0.3 to 0.3 + 0.7·0.55^5.
-    input.reflector->mirrorDepth = 0;
-    input.reflector->reflectivity = 0.3;
-    input.reflector->fresnel = true;
+    input.reflectors[0].mirrorDepth = 0;
+    input.reflectors[0].reflectivity = 0.3;
+    input.reflectors[0].fresnel = true;
     const glm::dvec3 dir(2.0 * (px.x + 0.5) / 101 - 1.0, 1.0 - 2.0 * (px.y + 0.5) / 101, -1.0);
     const double c = -dir.y / glm::length(dir);
     const double r = 0.3 + 0.7 * std::pow(1.0 - c, 5.0);

@@ -8,6 +8,6 @@ speculum_add_test(RenderReferenceTest TIER unit
 speculum_add_test(RenderReferenceGLTest TIER gl
     SOURCES DemoScenesAgreementGLTest.cpp GlossyAgreementGLTest.cpp MaterialAgreementGLTest.cpp
             ReflectorAgreementGLTest.cpp SceneLimitsAgreementGLTest.cpp MirrorDepthLimitAgreementGLTest.cpp
-            GlossyFurnaceGLTest.cpp
+            GlossyFurnaceGLTest.cpp ReflectorBouncesAgreementGLTest.cpp
     LIBS speculum_render_reference speculum_render_renderer speculum_render_metrics speculum_render_imageio
          PkgConfig::OIIO speculum_scene_project speculum_scene_evaluate)

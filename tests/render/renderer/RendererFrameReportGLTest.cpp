@@ -42,7 +42,7 @@ FrameInput roomWithBall(int resolution) {
               glm::scale(glm::dmat4(1.0), glm::dvec3(0.6));
     r.map = ReflectorMap::Cube;
     r.resolution = resolution;
-    input.reflector = r;
+    input.reflectors = {r};
     return input;
 }
 

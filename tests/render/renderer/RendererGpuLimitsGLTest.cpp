@@ -27,7 +27,7 @@ FrameInput chromeScene() {
     scene::MeshLibrary meshes;
     std::vector<scene::Warning> snapshotWarnings;
     FrameInput input = scene::snapshot(scene, 0.0, meshes, snapshotWarnings);
-    EXPECT_TRUE(input.reflector.has_value());
+    EXPECT_EQ(input.reflectors.size(), 1u);
     Light spot;
     spot.name = "Spot";
     spot.type = LightType::Spot;
@@ -59,9 +59,9 @@ TEST_F(GlTest, MapsLargerThanTheGpuHoldsAreDrawnAtItsLimitWithAWarning) {
                           Case{ReflectorMap::TennisBall, ReflectorFill::Direct, 512 / 3}}) {
         SCOPED_TRACE(int(c.map));
         FrameInput asked = chromeScene();
-        asked.reflector->map = c.map;
-        asked.reflector->fill = c.fill;
-        asked.reflector->resolution = 100000;
+        asked.reflectors[0].map = c.map;
+        asked.reflectors[0].fill = c.fill;
+        asked.reflectors[0].resolution = 100000;
         for (Light& light : asked.lights)
             light.shadows->mapSize = 100000;
         const Image over = renderImage(asked, 160, 90);
@@ -74,7 +74,7 @@ TEST_F(GlTest, MapsLargerThanTheGpuHoldsAreDrawnAtItsLimitWithAWarning) {
         // frame.
         const FrameReport& report = lastReport();
         EXPECT_FALSE(report.drawAgain);
-        EXPECT_EQ(report.plan.reflectorResolution, c.expected);
+        EXPECT_EQ(report.plan.reflectorResolution(0), c.expected);
         ASSERT_EQ(report.plan.shadows.size(), 2u);
         EXPECT_EQ(report.plan.shadows[0].mapSize, 256);
         EXPECT_EQ(report.plan.shadows[1].mapSize, 512);
@@ -89,7 +89,7 @@ TEST_F(GlTest, MapsLargerThanTheGpuHoldsAreDrawnAtItsLimitWithAWarning) {
 
         // The same as asking for those sizes in the first place.
         FrameInput fitting = asked;
-        fitting.reflector->resolution = c.expected;
+        fitting.reflectors[0].resolution = c.expected;
         fitting.lights[0].shadows->mapSize = 256; // a point light's cube map
         fitting.lights[1].shadows->mapSize = 512;
         const Image at = renderImage(fitting, 160, 90);

@@ -52,8 +52,8 @@ void soak(render::Renderer& renderer, const Sweep& sweep, int frames) {
         render::FrameInput input = scene::snapshot(scene, i / 30.0, meshes, snapshotWarnings);
         input.camera.position = sweep.position(i, frames);
         input.camera.target = sweep.target;
-        if (sweep.cycleMaps && input.reflector)
-            input.reflector->map = static_cast<render::ReflectorMap>(std::min(2, i * 3 / frames));
+        if (sweep.cycleMaps && !input.reflectors.empty())
+            input.reflectors[0].map = static_cast<render::ReflectorMap>(std::min(2, i * 3 / frames));
         auto still = render::renderStill(renderer, input, {160, 90, 1});
         ASSERT_TRUE(still.ok()) << still.error();
         for (float v : still->image.rgba)

@@ -42,7 +42,7 @@ FrameInput mirrorsAndReflector() {
     reflector.map = ReflectorMap::DualParaboloid;
     reflector.resolution = 128;
     reflector.reflectivity = 0.8;
-    input.reflector = reflector;
+    input.reflectors = {reflector};
     input.items.erase(ball);
     return input;
 }

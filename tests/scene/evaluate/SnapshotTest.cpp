@@ -217,20 +217,20 @@ TEST(Snapshot, MirrorsAndTheReflector) {
     EXPECT_EQ(m.material.texture.path, "/abs/marble.png");
     EXPECT_FALSE(frame.mirrors[1].hasMaterial);
     EXPECT_EQ(frame.mirrors[1].technique, render::MirrorTechnique::Stencil);
-    ASSERT_TRUE(frame.reflector.has_value());
-    EXPECT_EQ(frame.reflector->name, "Ball");
-    EXPECT_EQ(frame.reflector->map, render::ReflectorMap::DualParaboloid);
-    EXPECT_EQ(frame.reflector->resolution, 128);
-    EXPECT_EQ(frame.reflector->reflectivity, 0.9);
-    EXPECT_EQ(frame.reflector->mesh, meshes.builtin(scene::BuiltinMesh::Sphere, 12));
-    EXPECT_TRUE(frame.reflector->fresnel);
-    EXPECT_EQ(frame.reflector->fill, render::ReflectorFill::Direct);
-    EXPECT_EQ(frame.reflector->update, render::ReflectorUpdate::Once);
-    EXPECT_EQ(frame.reflector->mirrorDepth, 2);
-    ASSERT_TRUE(frame.reflector->parallax);
-    EXPECT_EQ(frame.reflector->parallax->shape, render::ParallaxShape::Box);
-    EXPECT_EQ(frame.reflector->parallax->min, glm::dvec3(-1, -2, -3));
-    EXPECT_EQ(frame.reflector->parallax->max, glm::dvec3(4, 5, 6));
+    ASSERT_EQ(frame.reflectors.size(), 1u);
+    EXPECT_EQ(frame.reflectors[0].name, "Ball");
+    EXPECT_EQ(frame.reflectors[0].map, render::ReflectorMap::DualParaboloid);
+    EXPECT_EQ(frame.reflectors[0].resolution, 128);
+    EXPECT_EQ(frame.reflectors[0].reflectivity, 0.9);
+    EXPECT_EQ(frame.reflectors[0].mesh, meshes.builtin(scene::BuiltinMesh::Sphere, 12));
+    EXPECT_TRUE(frame.reflectors[0].fresnel);
+    EXPECT_EQ(frame.reflectors[0].fill, render::ReflectorFill::Direct);
+    EXPECT_EQ(frame.reflectors[0].update, render::ReflectorUpdate::Once);
+    EXPECT_EQ(frame.reflectors[0].mirrorDepth, 2);
+    ASSERT_TRUE(frame.reflectors[0].parallax);
+    EXPECT_EQ(frame.reflectors[0].parallax->shape, render::ParallaxShape::Box);
+    EXPECT_EQ(frame.reflectors[0].parallax->min, glm::dvec3(-1, -2, -3));
+    EXPECT_EQ(frame.reflectors[0].parallax->max, glm::dvec3(4, 5, 6));
 }
 
 TEST(Snapshot, ABrokenReflectorBecomesAWarning) {
@@ -248,16 +248,14 @@ TEST(Snapshot, ABrokenReflectorBecomesAWarning) {
     scene::MeshLibrary meshes;
     std::vector<scene::Warning> warnings;
     const render::FrameInput frame = snap(data, 0.0, meshes, warnings);
-    ASSERT_TRUE(frame.reflector.has_value());
-    EXPECT_EQ(frame.reflector->name, "First");
-    ASSERT_EQ(warnings.size(), 2u);
+    ASSERT_EQ(frame.reflectors.size(), 2u) << "every reflector with a mesh, in file order";
+    EXPECT_EQ(frame.reflectors[0].name, "First");
+    EXPECT_EQ(frame.reflectors[1].name, "Second");
+    ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(warnings[0].code, scene::WarningCode::ReflectorWithoutMesh);
     EXPECT_EQ(warnings[0].node, "Meshless");
     EXPECT_EQ(warnings[0].file, "");
     EXPECT_EQ(warnings[0].message, "node 'Meshless': reflector skipped: it needs a mesh on the same node");
-    EXPECT_EQ(warnings[1].code, scene::WarningCode::ReflectorSkipped);
-    EXPECT_EQ(warnings[1].node, "Second");
-    EXPECT_EQ(warnings[1].message, "node 'Second': reflector skipped: the scene already has one ('First')");
 }
 
 TEST(Snapshot, MaterialDefaultsAndAbsoluteTexturePaths) {

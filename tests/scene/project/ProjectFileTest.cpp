@@ -626,7 +626,7 @@ TEST(ProjectFile, BlurLoadsAsRoughnessAndGlossySettingsRoundTrip) {
     EXPECT_EQ(frame.settings.glossyFilter, render::GlossyFilter::Mip);
     EXPECT_EQ(frame.settings.glossyTaps, 5);
     EXPECT_EQ(frame.settings.prefilterSamples, 9);
-    EXPECT_DOUBLE_EQ(frame.reflector->roughness, 0.5);
+    EXPECT_DOUBLE_EQ(frame.reflectors[0].roughness, 0.5);
     auto again = load(scene::serializeProject(*settings, QDir("/tmp")).toStdString());
     ASSERT_TRUE(again) << again.error();
     EXPECT_EQ(again->settings, settings->settings);
