@@ -11,6 +11,7 @@ Metric focusMetric(Family family) {
     case Family::Envmap:
     case Family::Parallax:
     case Family::Bounces:
+    case Family::Update:
         return Metric::PsnrReflector;
     case Family::MirrorTechnique:
     case Family::ScreenSpace:

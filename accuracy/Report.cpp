@@ -19,7 +19,7 @@ namespace {
 const std::vector<Family> kFamilies = {Family::Envmap,          Family::Parallax, Family::MirrorTechnique,
                                        Family::MirrorDepth,     Family::Shadows,  Family::Tessellation,
                                        Family::ReflectedDetail, Family::Glossy,   Family::ScreenSpace,
-                                       Family::Bounces,         Family::Setting};
+                                       Family::Bounces,         Family::Update,   Family::Setting};
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -63,6 +63,8 @@ std::string familyTitle(Family family) {
         return "Other settings";
     case Family::Bounces:
         return "Reflectors seeing each other: bounces";
+    case Family::Update:
+        return "Maps while the scene moves: redrawn every frame or time-sliced";
     default:
         return "The scene as saved";
     }
@@ -119,6 +121,12 @@ std::string familyIntro(Family family) {
                "material) up: each bounce draws every map again with the others' maps of the bounce "
                "before. The reference follows reflections between reflectors to depth 8, so what fewer "
                "bounces leave out counts as error, on the reflectors' pixels.";
+    case Family::Update:
+        return "The scene played for " + std::to_string(kPlayedFrames) +
+               " frames 1/60 s apart, as the editor plays it, with every reflector's map redrawn every frame "
+               "and then time-sliced (one face a frame in turn), against the scene where the frames end: "
+               "the error a sliced map shows while something moves, and the time it saves. The time is a "
+               "played frame's, the maps kept as their policy keeps them.";
     default:
         return {};
     }
@@ -317,11 +325,40 @@ std::optional<std::string> screenSpaceAgainstPlanar(const FamilyView& v) {
            "); its error map shows what the camera's image does not hold.";
 }
 
+// Each bounce past the first row, in words: "a second bounce gains X dB on the reflectors for Y ms".
+std::vector<std::string> bounceLines(const FamilyView& v) {
+    static const char* const ordinal[] = {"first", "second", "third", "fourth", "fifth"};
+    std::vector<std::string> lines;
+    for (std::size_t i = 1; i < v.rows.size() && i <= 5; ++i) {
+        const double gain = v.points[i].psnr - v.points[i - 1].psnr;
+        lines.push_back(std::string("A ") + ordinal[i - 1] + " bounce " +
+                        (gain >= 0.0 ? "gains " + db(gain) : "loses " + db(-gain)) +
+                        " on the reflectors for " + ms(v.points[i].cost - v.points[i - 1].cost) + " (" +
+                        describe(v, i) + ").");
+    }
+    return lines;
+}
+
+// What time-slicing the maps costs in error and saves in time, in words.
+std::optional<std::string> updateLine(const FamilyView& v) {
+    if (v.rows.size() != 2)
+        return std::nullopt;
+    const double loss = v.points[0].psnr - v.points[1].psnr;
+    return "Time-sliced, the maps " + (loss >= 0.0 ? "lose " + db(loss) : "gain " + db(-loss)) +
+           " on the reflectors while the scene moves and save " + ms(v.points[0].cost - v.points[1].cost) +
+           " a frame (" + describe(v, 0) + "; " + describe(v, 1) + ").";
+}
+
 // What a family's sweep found, one sentence (or a few) per line, in Markdown.
 std::vector<std::string> findingLines(const FamilyView& v, const std::string& note) {
     if (v.family == Family::Glossy)
         return glossyLines(v);
     std::vector<std::string> lines;
+    if (v.family == Family::Bounces)
+        lines = bounceLines(v);
+    if (v.family == Family::Update)
+        if (std::optional<std::string> line = updateLine(v))
+            lines.push_back(*line);
     if (v.family == Family::ScreenSpace)
         if (std::optional<std::string> line = screenSpaceAgainstPlanar(v))
             lines.push_back(*line);

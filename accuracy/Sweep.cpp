@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <set>
+#include <tuple>
 #include <utility>
 
 namespace speculum::accuracy {
@@ -126,6 +127,8 @@ std::string familyName(Family family) {
         return "setting";
     case Family::Bounces:
         return "bounces";
+    case Family::Update:
+        return "update";
     }
     return "scene";
 }
@@ -133,7 +136,7 @@ std::string familyName(Family family) {
 std::optional<Family> familyFromName(const std::string& name) {
     for (Family f : {Family::Scene, Family::Envmap, Family::Parallax, Family::MirrorTechnique,
                      Family::MirrorDepth, Family::Shadows, Family::Tessellation, Family::ReflectedDetail,
-                     Family::Glossy, Family::ScreenSpace, Family::Setting, Family::Bounces})
+                     Family::Glossy, Family::ScreenSpace, Family::Setting, Family::Bounces, Family::Update})
         if (familyName(f) == name)
             return f;
     return std::nullopt;
@@ -142,7 +145,7 @@ std::optional<Family> familyFromName(const std::string& name) {
 std::optional<ReferenceKind> referenceFromName(const std::string& name) {
     for (ReferenceKind k : {ReferenceKind::Scene, ReferenceKind::HardShadows, ReferenceKind::DeepMirrors,
                             ReferenceKind::FineMesh, ReferenceKind::RoughLow, ReferenceKind::RoughMid,
-                            ReferenceKind::RoughHigh})
+                            ReferenceKind::RoughHigh, ReferenceKind::Played})
         if (referenceName(k) == name)
             return k;
     return std::nullopt;
@@ -162,6 +165,8 @@ std::string referenceName(ReferenceKind kind) {
     case ReferenceKind::RoughMid:
     case ReferenceKind::RoughHigh:
         return "rough-" + roughnessText(*referenceRoughness(kind));
+    case ReferenceKind::Played:
+        return "played";
     }
     return "scene";
 }
@@ -186,6 +191,9 @@ std::string referenceDescription(ReferenceKind kind) {
     case ReferenceKind::RoughHigh:
         return "the scene with every rough surface at roughness " + roughnessText(*referenceRoughness(kind)) +
                ", its glossy reflections integrated over the GGX lobe by the tracer's importance sampling";
+    case ReferenceKind::Played:
+        return "the scene " + std::to_string(kPlayedFrames - 1) +
+               "/60 s after its time, where the update family's played frames end, traced exactly";
     }
     return {};
 }
@@ -467,6 +475,21 @@ void planBounces(Configurations& out, const SceneTraits& traits, const SweepOpti
     }
 }
 
+// Maps while the scene moves: every reflector's map redrawn every frame, then one face a frame in turn,
+// each the last of kPlayedFrames frames played as the editor plays them (the maps kept between frames as
+// their policy keeps them), against the scene where the frames end.
+void planUpdate(Configurations& out, const SceneTraits& traits) {
+    if (!traits.reflector || !traits.moves)
+        return;
+    for (const auto& [update, id, label] :
+         {std::tuple{render::ReflectorUpdate::Always, "update-always", "every frame"},
+          std::tuple{render::ReflectorUpdate::TimeSliced, "update-time-sliced", "time-sliced"}}) {
+        Variation v;
+        v.set(Part::Reflector, "update", int(update));
+        out.push_back(configuration(Family::Update, id, label, "update", v, ReferenceKind::Played));
+    }
+}
+
 } // namespace
 
 std::vector<Configuration> planSweep(const render::FrameInput& scene, const SceneTraits& traits,
@@ -480,6 +503,7 @@ std::vector<Configuration> planSweep(const render::FrameInput& scene, const Scen
     planScreenSpace(out, traits, options);
     planDeclared(out, traits);
     planBounces(out, traits, options);
+    planUpdate(out, traits);
     return out;
 }
 

@@ -26,6 +26,7 @@ enum class Family {
                      // beside the stencil and texture techniques
     Setting,         // a declared field with sweep values of its own (FieldSpec::sweep), one series each
     Bounces,         // settings.reflectorBounces 0 .. 3, where the scene has reflectors that see each other
+    Update,          // every reflector's map redrawn every frame, then time-sliced, while the scene moves
 };
 
 // Stable names, used in file names, CSV and JSON: "envmap", "mirror-depth", ...
@@ -45,7 +46,13 @@ enum class ReferenceKind {
     RoughLow,
     RoughMid,
     RoughHigh,
+    // The scene as it stands after the update family's played frames (SweepInput::playedFrames).
+    Played,
 };
+
+// Frames the update family plays, 1/60 s apart (as the editor plays an animation), before the frame it
+// measures: enough for a time-sliced cube map to go round its six faces twice.
+inline constexpr int kPlayedFrames = 12;
 
 // The roughness each Rough* reference (and the glossy family's rows against it) gives the rough surfaces.
 inline constexpr double kGlossyRoughness[3] = {0.1, 0.3, 0.6};
@@ -68,6 +75,7 @@ struct Configuration {
 struct SceneTraits {
     bool reflector = false;
     std::size_t reflectors = 0;                  // reflectors with a mesh
+    bool moves = false;                          // the caller played frames in which the scene moves
     bool ownProxy = false;                       // the scene's reflector has a parallax proxy of its own
     std::optional<render::ParallaxParams> proxy; // what "parallax on" uses: its own, or sceneProxy()
     bool proxyMakesSense = false;                // own, or the scene's bounds enclose the reflector

@@ -347,6 +347,8 @@ Settings effectiveSettings(const render::FrameInput& applied, const std::optiona
         add(Part::Mirrors, "technique");
         add(Part::Settings, "mirrorDepth");
     }
+    if (reflectors.size() >= 2) // reflectors that see each other
+        add(Part::Settings, "reflectorBounces");
     if (reflector)
         add(Part::Reflector, "technique");
     const bool screenSpace = std::any_of(applied.mirrors.begin(), applied.mirrors.end(),

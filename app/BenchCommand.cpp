@@ -12,6 +12,7 @@
 #include "render/imageio/ImageWriter.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/renderer/Renderer.hpp"
+#include "scene/evaluate/Snapshot.hpp"
 
 #include <QGuiApplication>
 #include <chrono>
@@ -79,6 +80,21 @@ base::Status writeReportWithGui(const fs::path& staging, const accuracy::RunInfo
     return written;
 }
 
+// The scene played forward from its time for the update family: kPlayedFrames frames 1/60 s apart, as the
+// editor plays it (the sweep leaves the family out where nothing in them moves).
+std::vector<render::FrameInput> playedFrames(const ProjectFrame& project) {
+    std::vector<render::FrameInput> frames{project.input};
+    if (!project.scene || project.input.reflectors.empty())
+        return {};
+    for (int k = 1; k < accuracy::kPlayedFrames; ++k) {
+        std::vector<scene::Warning> repeated; // the first frame's warnings were reported already
+        frames.push_back(scene::snapshot(*project.scene, project.input.time + k * kAnimationFrameStep,
+                                         *project.meshes, repeated));
+        useCheckedTextures(frames.back(), project.textures);
+    }
+    return frames;
+}
+
 // The sweep's input: the project's frame and, for the tessellation family, a way to put other
 // tessellations of the built-in teapots in place. `project` must outlive it (its mesh library).
 accuracy::SweepInput sweepInput(const Options& options, const ProjectFrame& project) {
@@ -100,6 +116,7 @@ accuracy::SweepInput sweepInput(const Options& options, const ProjectFrame& proj
         return teapotMeshes.count(mesh.get()) ? meshes->builtin(scene::BuiltinMesh::Teapot, tessellation)
                                               : mesh;
     };
+    input.playedFrames = playedFrames(project);
     return input;
 }
 

@@ -67,6 +67,35 @@ base::Result<FrameCost> measureFrames(render::Renderer& renderer, const render::
     return cost;
 }
 
+base::Result<FrameCost> measurePlayed(render::Renderer& renderer,
+                                      const std::vector<render::FrameInput>& frames, int width, int height,
+                                      const std::function<bool()>& stop) {
+    render::StillSettings settings{width, height, 1};
+    std::vector<double> gpu, cpu;
+    FrameCost cost;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        if (stop && stop())
+            return base::Error{"stopped"};
+        settings.reuseMaps = i > 0;
+        auto still = render::renderStill(renderer, frames[i], settings);
+        if (!still)
+            return base::Error{still.error()};
+        if (i == 0) {
+            cost.warnings = still->firstSample.warnings;
+            continue;
+        }
+        gpu.push_back(still->firstSample.gpuMs);
+        cpu.push_back(still->firstSample.cpuMs);
+        cost.memory = still->firstSample.memory;
+        if (i + 1 == frames.size())
+            cost.image = std::move(still->image);
+    }
+    const bool timed = std::all_of(gpu.begin(), gpu.end(), [](double ms) { return ms >= 0.0; });
+    cost.gpuMs = timed ? median(gpu) : -1.0;
+    cost.cpuMs = median(cpu);
+    return cost;
+}
+
 base::Result<ErrorFigures> compareWithReference(const render::Image& image, const Reference& reference) {
     const render::Image& exact = reference.traced.image;
     ErrorFigures figures;

@@ -1,6 +1,7 @@
 #include "accuracy/run/SweepRun.hpp"
 
 #include "accuracy/Report.hpp"
+#include "render/plan/Planner.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -23,13 +24,23 @@ std::string referenceFile(ReferenceKind kind) {
     return kind == ReferenceKind::Scene ? "reference.png" : "reference-" + referenceName(kind) + ".png";
 }
 
+// The scene's traits, and whether what its reflectors' maps see moves in the frames the caller played.
+SceneTraits traitsOf(const SweepInput& input) {
+    SceneTraits traits = sceneTraits(input.scene, input.teapotTessellation);
+    const std::vector<render::FrameInput>& played = input.playedFrames;
+    for (std::size_t i = 0; played.size() >= 2 && i < played.front().reflectors.size(); ++i)
+        traits.moves = traits.moves || render::envmapSignature(played.front(), static_cast<int>(i)) !=
+                                           render::envmapSignature(played.back(), static_cast<int>(i));
+    return traits;
+}
+
 class Run {
 public:
     Run(render::Renderer& renderer, const SweepInput& input, const SweepObserver& observer)
         : m_renderer(renderer)
         , m_input(input)
         , m_observer(observer)
-        , m_traits(sceneTraits(input.scene, input.teapotTessellation)) {
+        , m_traits(traitsOf(input)) {
         const SweepSize size = defaultSweepSize(input.quick);
         m_width = input.width > 0 ? input.width : size.width;
         m_height = input.height > 0 ? input.height : size.height;
@@ -81,7 +92,25 @@ private:
     struct DistinctFrames {
         std::vector<std::string> keys;                      // per record
         std::map<std::string, render::FrameInput> distinct; // the frame of each distinct setting
+        std::map<std::string, Variation> played;            // the update family's: played, not drawn once
     };
+
+    // The played frames with a configuration's variation.
+    std::vector<render::FrameInput> playedWith(const Variation& variation) const {
+        std::vector<render::FrameInput> frames;
+        for (const render::FrameInput& frame : m_input.playedFrames)
+            frames.push_back(applyVariation(frame, variation, m_traits.proxy, m_input.tessellate));
+        return frames;
+    }
+
+    // A configuration's first frame: drawn once, or, in the update family, played.
+    base::Result<FrameCost> firstCost(const Configuration& config, const render::FrameInput& applied,
+                                      const SweepTiming& timing) {
+        if (config.family == Family::Update)
+            return measurePlayed(m_renderer, playedWith(config.variation), m_width, m_height,
+                                 m_observer.stop);
+        return measureFrames(m_renderer, applied, m_width, m_height, timing.warmUp, 1, m_observer.stop);
+    }
 
     // Images, memory and errors, one configuration at a time: a record per configuration, with the times
     // of its one frame (timeRounds replaces them).
@@ -107,18 +136,27 @@ private:
                                                 config.variation.tessellation ? config.variation.tessellation
                                                                               : m_input.teapotTessellation,
                                                 m_traits.simplifiableMeshes > 0);
-            const std::string k = key(record.settings);
+            const bool played = config.family == Family::Update;
+            if (played) // the maps' policy is what the family varies
+                if (const render::FieldValue* update = config.variation.find(Part::Reflector, "update"))
+                    record.settings.emplace_back(
+                        "update", render::fieldValueText(*partField(Part::Reflector, "update"), *update));
+            const std::string k = key(record.settings) + (played ? "played" : "");
             record.sceneSetting = k == sceneKey;
             if (!costs.count(k)) {
-                progress(step + ": rendering");
-                auto cost =
-                    measureFrames(m_renderer, applied, m_width, m_height, timing.warmUp, 1, m_observer.stop);
+                progress(step + (played
+                                     ? ": playing " + std::to_string(m_input.playedFrames.size()) + " frames"
+                                     : std::string(": rendering")));
+                auto cost = firstCost(config, applied, timing);
                 if (!cost)
                     return base::Error{cost.error() == kSweepStopped
                                            ? cost.error()
                                            : displayName(config) + ": " + cost.error()};
                 costs.emplace(k, std::move(*cost));
-                frames.distinct.emplace(k, std::move(applied));
+                if (played)
+                    frames.played.emplace(k, config.variation);
+                else
+                    frames.distinct.emplace(k, std::move(applied));
             }
             const FrameCost& cost = costs.at(k);
             auto errors = compareWithReference(cost.image, references.at(config.reference));
@@ -156,9 +194,18 @@ private:
         std::map<std::string, std::vector<double>> gpu, cpu;
         for (int round = 1; round <= timing.rounds; ++round) {
             progress("timing round " + std::to_string(round) + "/" + std::to_string(timing.rounds) + ": " +
-                     std::to_string(frames.distinct.size()) + " distinct configurations");
+                     std::to_string(frames.distinct.size() + frames.played.size()) +
+                     " distinct configurations");
             for (const auto& [k, frame] : frames.distinct) {
                 auto cost = measureFrames(m_renderer, frame, m_width, m_height, 1, 1, m_observer.stop);
+                if (!cost)
+                    return base::Error{cost.error()};
+                gpu[k].push_back(cost->gpuMs);
+                cpu[k].push_back(cost->cpuMs);
+            }
+            for (const auto& [k, variation] : frames.played) {
+                auto cost =
+                    measurePlayed(m_renderer, playedWith(variation), m_width, m_height, m_observer.stop);
                 if (!cost)
                     return base::Error{cost.error()};
                 gpu[k].push_back(cost->gpuMs);
@@ -189,8 +236,11 @@ private:
             const std::string name = referenceName(kind);
             progress("tracing the " + name + " reference on " + std::to_string(threads) + " threads");
             int lastQuarter = 0;
+            const render::FrameInput& base = kind == ReferenceKind::Played && !m_input.playedFrames.empty()
+                                                 ? m_input.playedFrames.back()
+                                                 : m_input.scene;
             auto traced = traceReference(
-                referenceInput(m_input.scene, kind, m_input.tessellate), kind, m_width, m_height,
+                referenceInput(base, kind, m_input.tessellate), kind, m_width, m_height,
                 [&](double f) {
                     const int quarter = static_cast<int>(f * 4.0);
                     if (quarter > lastQuarter && quarter < 4)

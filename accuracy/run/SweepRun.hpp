@@ -37,7 +37,10 @@ struct SweepInput {
     render::FrameInput scene;
     std::optional<int> teapotTessellation; // of the (first) built-in teapot; none: the scene has none
     TessellateTeapot tessellate;           // called on the sweep's thread
-    int width = 0;                         // 0: defaultSweepSize(quick)
+    // The scene at its time and kPlayedFrames − 1 frames 1/60 s after it (animations evaluated), for the
+    // update family; empty where nothing moves, or the caller plays none.
+    std::vector<render::FrameInput> playedFrames;
+    int width = 0; // 0: defaultSweepSize(quick)
     int height = 0;
     bool quick = false;
 };

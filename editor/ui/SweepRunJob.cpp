@@ -40,6 +40,15 @@ accuracy::SweepInput SweepRunJob::inputFor(const scene::Scene& scene, scene::Mes
     if (!tessellations.empty()) {
         input.teapotTessellation = *tessellations.begin();
     }
+    // The update family plays the scene forward as the editor plays it (the sweep leaves it out where
+    // nothing its reflectors' maps see moves).
+    if (!input.scene.reflectors.empty()) {
+        input.playedFrames.push_back(input.scene);
+        for (int k = 1; k < accuracy::kPlayedFrames; ++k) {
+            std::vector<scene::Warning> repeated; // the first frame's warnings are reported already
+            input.playedFrames.push_back(scene::snapshot(scene, k / 60.0, meshes, repeated));
+        }
+    }
     // The snapshot's teapots are the editor's library's meshes; the worker makes the other tessellations in
     // a library of its own (a MeshLibrary is not shared across threads) and swaps by identity, as the bench.
     std::set<const render::MeshData*> teapots;

@@ -177,7 +177,7 @@ void drawEnvironmentTarget(const FrameInput& env, const EnvironmentTarget& targe
                                                    : envmap::cubeFaceProjection(target.near, target.far),
                          .size = target.size,
                          .mapFramebuffer = target.framebuffer,
-                         .frustum = false,
+                         .frustum = !target.warp,
                          .flipsWinding = warpMirrored,
                          .ownViewCoarse = true,
                          .context = context,

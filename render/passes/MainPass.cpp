@@ -396,6 +396,7 @@ void drawMainPass(const FrameInput& input, const ViewSetup& view, MainPassContex
     for (std::size_t i = 0; i < input.reflectors.size(); ++i) {
         const Reflector& reflector = input.reflectors[i];
         if (!reflector.mesh ||
+            outsideView(ctx.meshes.get(reflector.mesh).bounds, reflector.world, input, view) ||
             (ctx.drawReflector && ctx.drawReflector(input, static_cast<int>(i), view, ctx)))
             continue;
         setMaterial(reflector.material, p, ctx);

@@ -47,8 +47,9 @@ struct ViewSpace {
     // A face: the framebuffer that passes drawing into their own map (PassTarget::OwnMap) draw into, the
     // face's. 0 in the camera's space, whose map passes bind maps of their own.
     GLuint mapFramebuffer = 0;
-    // Objects wholly outside a view's clip volume are not drawn (ViewSetup::cullOutside). Off in the
-    // map's faces: a direct-fill component's clip space is no frustum, and the cube faces draw alike.
+    // Objects wholly outside a view's clip volume are not drawn (ViewSetup::cullOutside). Off in a
+    // direct-fill component, whose clip space is no frustum; a cube face culls what lies outside its 90°
+    // (with several reflectors, each map would otherwise draw every other one six times).
     bool frustum = true;
     // The target's own projection mirrors the image (a direct-fill component whose warp does): every
     // winding the plan declares (PassWrites::clockwise) is flipped once more.

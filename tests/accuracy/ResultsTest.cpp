@@ -164,5 +164,36 @@ TEST(Results, TheScreenSpaceFamilySaysWhetherTracingIsGoodEnough) {
         << far;
 }
 
+// The bounces family says what each bounce gains on the reflectors and costs; the update family what
+// slicing the maps loses while the scene moves, and saves.
+TEST(Results, BouncesAndUpdatesAreSaidInWords) {
+    auto row = [](Family family, const std::string& label, double ms, double psnrReflector) {
+        Record r = record(family, label, ms, 30.0);
+        r.config.label = label;
+        r.config.series = family == Family::Bounces ? "bounces" : "update";
+        r.psnrReflector = psnrReflector;
+        return r;
+    };
+    const std::vector<FamilyFindings> bounces = findings({row(Family::Bounces, "0 bounces", 100.0, 15.0),
+                                                          row(Family::Bounces, "1 bounce", 180.0, 18.5),
+                                                          row(Family::Bounces, "2 bounces", 260.0, 18.75)});
+    ASSERT_EQ(bounces.size(), 1u);
+    EXPECT_EQ(bounces[0].judgedBy, "PSNR on reflector pixels");
+    EXPECT_EQ(bounces[0].lines.at(0).rfind("A first bounce gains 3.50 dB on the reflectors for 80.0 ms", 0),
+              0u)
+        << bounces[0].lines.at(0);
+    EXPECT_EQ(bounces[0].lines.at(1).rfind("A second bounce gains 0.25 dB on the reflectors for 80.0 ms", 0),
+              0u)
+        << bounces[0].lines.at(1);
+    const std::vector<FamilyFindings> update = findings(
+        {row(Family::Update, "every frame", 90.0, 24.0), row(Family::Update, "time-sliced", 30.0, 22.0)});
+    ASSERT_EQ(update.size(), 1u);
+    EXPECT_EQ(
+        update[0].lines.at(0).rfind(
+            "Time-sliced, the maps lose 2.00 dB on the reflectors while the scene moves and save 60.0 ms", 0),
+        0u)
+        << update[0].lines.at(0);
+}
+
 } // namespace
 } // namespace speculum::accuracy

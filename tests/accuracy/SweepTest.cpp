@@ -92,6 +92,39 @@ TEST(BenchSweep, OnlyTheFamiliesTheSceneCallsFor) {
               (std::set<Family>{Family::Scene, Family::Envmap, Family::Parallax, Family::ScreenSpace}));
 }
 
+// Reflectors that see each other get the bounces family (reflectorBounces 0..3, against the scene's
+// reference); a scene that moves gets the update family, played, against where the frames end.
+TEST(BenchSweep, SeveralReflectorsAreSweptByBouncesAndAMovingSceneByUpdate) {
+    FrameInput two = withReflector(plainScene());
+    two.reflectors.push_back(two.reflectors[0]);
+    two.reflectors[1].world[3] = glm::dvec4(1.5, 0.5, 0.0, 1.0);
+    SceneTraits traits = sceneTraits(two, std::nullopt);
+    EXPECT_EQ(traits.reflectors, 2u);
+    std::vector<int> bounces;
+    for (const Configuration& c : planSweep(two, traits, {false})) {
+        EXPECT_NE(c.family, Family::Update) << "nothing moves";
+        if (c.family != Family::Bounces)
+            continue;
+        EXPECT_EQ(c.reference, ReferenceKind::Scene);
+        bounces.push_back(std::get<int>(*c.variation.find(Part::Settings, "reflectorBounces")));
+    }
+    EXPECT_EQ(bounces, (std::vector<int>{0, 1, 2, 3}));
+    const FrameInput one = withReflector(plainScene());
+    EXPECT_EQ(familiesOf(planSweep(one, sceneTraits(one, std::nullopt), {true})).count(Family::Bounces), 0u)
+        << "one reflector has nothing to bounce off";
+
+    traits.moves = true;
+    std::vector<render::ReflectorUpdate> updates;
+    for (const Configuration& c : planSweep(two, traits, {true}))
+        if (c.family == Family::Update) {
+            EXPECT_EQ(c.reference, ReferenceKind::Played);
+            updates.push_back(static_cast<render::ReflectorUpdate>(
+                std::get<int>(*c.variation.find(Part::Reflector, "update"))));
+        }
+    EXPECT_EQ(updates, (std::vector<render::ReflectorUpdate>{render::ReflectorUpdate::Always,
+                                                             render::ReflectorUpdate::TimeSliced}));
+}
+
 TEST(BenchSweep, BigMeshesInReflectionsAreSweptWholeAndSimplified) {
     const FrameInput alone = withBigMesh(plainScene());
     EXPECT_EQ(sceneTraits(alone, std::nullopt).simplifiableMeshes, 0u) << "nothing reflects it";

@@ -237,6 +237,45 @@ TEST_F(BenchCli, ASceneWithoutAReflectorHasNoMapRows) {
         EXPECT_NE(row[1], "envmap");
 }
 
+// Two facing balls, one bouncing: the bounces family (0, 1, 2 bounces, each its own frame) and the update
+// family (every frame, then time-sliced, played), with their rows, columns and report lines.
+TEST_F(BenchCli, FacingBallsGetTheBouncesAndUpdateFamilies) {
+    const fs::path scene = writeScene("balls.speculum.json", R"({"format": "speculum-scene", "version": 1,
+  "camera": {"position": [0, 0.6, 4], "target": [0, 0.5, 0], "fovY": 50, "near": 0.1, "far": 30},
+  "nodes": [
+    {"name": "Floor", "transform": {"scale": [3, 1, 3]}, "mesh": {"builtin": "plane"},
+     "material": {"color": [0.8, 0.3, 0.2]}},
+    {"name": "Left", "transform": {"translate": [-0.6, 0.5, 0], "scale": [0.5, 0.5, 0.5]},
+     "mesh": {"builtin": "sphere", "tessellation": 16}, "reflector": {"resolution": 32, "reflectivity": 1}},
+    {"name": "Right", "transform": {"translate": [0.6, 0.5, 0], "scale": [0.5, 0.5, 0.5]},
+     "mesh": {"builtin": "sphere", "tessellation": 16}, "reflector": {"resolution": 32, "reflectivity": 1},
+     "animation": {"bounce": {"height": 1, "period": 1}}},
+    {"name": "Lamp", "transform": {"translate": [1, 3, 2]}, "light": {"type": "point"}}]})");
+    const fs::path out = m_dir / "out";
+    const CliRun run = bench(scene, out);
+    ASSERT_EQ(run.status, 0) << run.err;
+    std::map<std::string, double> bounces, update;
+    for (const QJsonValue& v : loadJson(out / "results.json")["results"].toArray()) {
+        const QJsonObject r = v.toObject();
+        const QJsonObject settings = r["settings"].toObject();
+        EXPECT_TRUE(settings.contains("bounces")) << "two reflectors: every row says its bounces";
+        if (r["family"].toString() == "bounces")
+            bounces[settings["bounces"].toVariant().toString().toStdString()] = r["psnrReflector"].toDouble();
+        if (r["family"].toString() == "update") {
+            EXPECT_EQ(r["reference"].toString(), "played");
+            update[settings["update"].toString().toStdString()] = r["psnrReflector"].toDouble();
+        }
+    }
+    ASSERT_EQ(bounces.size(), 3u) << "0, 1 and 2 bounces, each drawn, not one frame shared";
+    EXPECT_GT(bounces["1"], bounces["0"]) << "the first bounce shows each ball in the other";
+    ASSERT_EQ(update.size(), 2u);
+    EXPECT_TRUE(update.count("always") && update.count("time-sliced"));
+    const std::string report = readFile(out / "report.md");
+    EXPECT_NE(report.find("A first bounce gains"), std::string::npos) << report;
+    EXPECT_NE(report.find("Time-sliced, the maps"), std::string::npos) << report;
+    EXPECT_TRUE(fs::exists(out / "reference-played.png"));
+}
+
 TEST_F(BenchCli, BadInputFailsWithOneLineAndWritesNothing) {
     const fs::path good = writeScene("good.speculum.json", sceneJson(false));
     const fs::path broken =
