@@ -60,6 +60,10 @@ public:
         context.mirrorMeshes = scene.mirrorMeshes;
         context.cullBackFaces = scene.cullBackFaces;
         prepareWarp(program, scene.level);
+        if (m_target.warp)
+            context.prepareProgram = [this, level = scene.level](const gl::Program& p) {
+                prepareWarp(p, level);
+            };
         return scene.input();
     }
 

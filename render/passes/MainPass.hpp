@@ -49,6 +49,9 @@ struct MainPassContext {
     // Per mirror (by index), a mesh drawn instead of unitPlane where set: the environment's direct fill
     // splits each rectangle for the capture point it is seen from.
     std::vector<MeshHandle> mirrorMeshes;
+    // Sets on another program what the view being drawn gave its own (a direct-fill warp's uniforms and clip
+    // plane), so that a DrawReflector with a program of its own draws into the same view; empty: nothing.
+    std::function<void(const gl::Program&)> prepareProgram;
     // Per item (by index), true where the view can never see the item's back faces (a closed mesh seen from
     // outside): drawn with them culled. The environment pass sets it; empty draws every face.
     std::vector<bool> cullBackFaces;

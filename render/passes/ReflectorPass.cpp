@@ -60,6 +60,10 @@ base::Status ReflectorPass::init() {
     auto warpMirror = gl::Program::build("mesh.vert", "mirror.frag", "#define ENVMAP_WARP 1");
     if (!warpMirror)
         return base::Error{warpMirror.error()};
+    auto warpSurface = gl::Program::build("mesh.vert", "reflector.frag", "#define ENVMAP_WARP 1");
+    if (!warpSurface)
+        return base::Error{warpSurface.error()};
+    m_warpSurface = std::move(*warpSurface);
     m_warpFlat = std::move(*warpFlat);
     m_warpMirror = std::move(*warpMirror);
     m_warp = std::move(*warp);
@@ -241,13 +245,17 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
     MainPassContext faces = withProgram(context.program, context, context.unitPlane);
     // From bounce 1 on, the other reflectors are drawn with their maps of the bounce before (env holds
     // them without this one: its indices past `index` are one lower than the frame's).
-    // Only the cube faces' context draws them so: a direct fill's warp has no surface program, and draws
-    // them with their material.
-    if (plan.bounce > 0)
-        faces.drawReflector = [this, index, bounce = plan.bounce](const FrameInput& in, int other,
-                                                                  const ViewSetup& v, MainPassContext& c) {
-            return drawInMap(in, other, other < index ? other : other + 1, bounce, v, c);
+    MainPassContext warped = withProgram(m_warp, context, context.unitPlane);
+    if (plan.bounce > 0) {
+        auto drawWith = [this, index, bounce = plan.bounce](const gl::Program& program) {
+            return [this, index, bounce, &program](const FrameInput& in, int other, const ViewSetup& v,
+                                                   MainPassContext& c) {
+                return drawInMap(in, other, other < index ? other : other + 1, bounce, v, program, c);
+            };
         };
+        faces.drawReflector = drawWith(m_surface);
+        warped.drawReflector = drawWith(m_warpSurface);
+    }
     // The map frame is the world's (CaptureView::mapFromWorld is the identity), so a face's view-projection
     // is its projection times its view.
     EnvironmentTarget face;
@@ -265,7 +273,6 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
 
     // The direct fill draws copies of the meshes split until no edge spans more than a few degrees seen
     // from the (virtual) capture point: straight edges turn into curves.
-    MainPassContext warped = withProgram(m_warp, context, context.unitPlane);
     m_warpMeshes.begin();
     auto drawWarped = [&](const envmap::WarpPass& pass) {
         EnvironmentTarget component;
@@ -308,7 +315,7 @@ base::Status ReflectorPass::prefilter(int index, const Reflector& reflector, int
 }
 
 base::Status ReflectorPass::selectLighting(const std::string& variant, bool drawVariants) {
-    for (gl::Program* program : {&m_warp, &m_warpMirror, &m_surface})
+    for (gl::Program* program : {&m_warp, &m_warpMirror, &m_surface, &m_warpSurface})
         if (base::Status selected = program->select(variant, drawVariants); !selected)
             return selected;
     return base::Done{};
@@ -411,15 +418,17 @@ bool ReflectorPass::drawSurface(const FrameInput& input, int index, const ViewSe
 }
 
 bool ReflectorPass::drawInMap(const FrameInput& env, int envIndex, int index, int bounce,
-                              const ViewSetup& view, MainPassContext& context) {
+                              const ViewSetup& view, const gl::Program& program, MainPassContext& context) {
     const Reflector& r = env.reflectors.at(static_cast<std::size_t>(envIndex));
     const envmap::EnvironmentCapture* map = readable(index, bounce);
     if (!map || !hasMap(index, r))
         return false;
     // A rough one reads its map's mip chain: its pre-filtered chain holds its last bounce, not the one
     // before this. The lookups are relative to the capture point, the env's camera.
-    const gl::Program& p = m_surface;
+    const gl::Program& p = program;
     beginLitView(env, view, p, context);
+    if (context.prepareProgram) // a direct fill's warp: its uniforms and its clip at the view's mirror
+        context.prepareProgram(p);
     const int lookup = std::clamp(r.roughness, 0.0, 1.0) > 0.0 ? 1 : 0;
     setMaterial(r.material, p, context, "#define REFLECTOR_ROUGH " + std::to_string(lookup) + "\n");
     p.set("uReflectivity", float(std::clamp(r.reflectivity, 0.0, 1.0)));

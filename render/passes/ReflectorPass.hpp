@@ -25,8 +25,8 @@ namespace speculum::render::passes {
 // ENVMAP_WARP, meshes split by the angle their edges span) or the resampling of such a cube. Planar
 // mirrors reflect the scene in every fill, nested up to reflector.mirrorDepth levels: their passes run
 // in each face (drawEnvironmentTarget). The other reflectors are in it: with their plain material at
-// bounce 0, with their maps of the bounce before at a later bounce (cube faces; a direct fill's warp
-// draws them plain). The map frame is aligned with the world axes.
+// bounce 0, with their maps of the bounce before at a later bounce. The map frame is aligned with the
+// world axes.
 // Pass 2 (drawSurface): the reflector with shaders/reflector.frag, in any view the main pass draws
 // (the camera's or a mirror's, whose virtual eye it uses).
 class ReflectorPass {
@@ -126,16 +126,17 @@ private:
     void bindMapLookup(const Reflector& r, const glm::dvec3& eye, const Slot& s,
                        const envmap::EnvironmentCapture& map, int lookup, const gl::Program& p) const;
     // Draws reflector env.reflectors[envIndex] (the frame's `index`) into a map of bounce `bounce` with its
-    // map of the bounce before.
+    // map of the bounce before, with `program` (m_surface, or m_warpSurface in a direct fill's warp).
     bool drawInMap(const FrameInput& env, int envIndex, int index, int bounce, const ViewSetup& view,
-                   MainPassContext& context);
+                   const gl::Program& program, MainPassContext& context);
 
     std::vector<Slot> m_maps;
     std::map<MapKind, gl::SizeFallback> m_fallbacks; // by map layout and fill
     gl::Program m_warp;                              // mesh.vert with ENVMAP_WARP + mesh.frag
-    gl::Program m_warpFlat;   // shadow.vert with ENVMAP_WARP + flat.frag: mirror masks in the warp
-    gl::Program m_warpMirror; // mesh.vert with ENVMAP_WARP + mirror.frag: mirror surfaces in the warp
-    gl::Program m_surface;    // mesh.vert + reflector.frag
+    gl::Program m_warpFlat;    // shadow.vert with ENVMAP_WARP + flat.frag: mirror masks in the warp
+    gl::Program m_warpMirror;  // mesh.vert with ENVMAP_WARP + mirror.frag: mirror surfaces in the warp
+    gl::Program m_surface;     // mesh.vert + reflector.frag
+    gl::Program m_warpSurface; // mesh.vert with ENVMAP_WARP + reflector.frag: other reflectors in the warp
     WarpMeshes m_warpMeshes;
     MeshFacts m_meshFacts;
 };

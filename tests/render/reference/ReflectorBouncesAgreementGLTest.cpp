@@ -4,6 +4,7 @@
 // reflector is never drawn into its own map, and hard placements (touching, one inside the other, tiny,
 // far from the origin) draw no NaN.
 #include "TiledRoom.hpp"
+#include "render/frame/SceneNames.hpp"
 #include "render/mesh/Primitives.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
 #include "render/reference/Tracer.hpp"
@@ -106,6 +107,33 @@ TEST_F(ReflectorBounces, EachBounceLowersTheErrorOnFacingBalls) {
         }
     EXPECT_GT(otherBall, kSize * kSize / 200) << "the right ball covers part of the left one's reflection";
     EXPECT_GT(shownAtBounce1, otherBall * 9 / 10) << shownAtBounce1 << " of " << otherBall;
+}
+
+// Every map type and fill draws the other ball with its map from the first bounce on: the direct fill's
+// warp as well as the cube faces.
+TEST_F(ReflectorBounces, EveryMapTypeShowsTheOtherBallFromTheFirstBounce) {
+    FrameInput input = facingBalls();
+    trace(input);
+    const std::pair<ReflectorMap, ReflectorFill> methods[] = {
+        {ReflectorMap::DualParaboloid, ReflectorFill::Direct},
+        {ReflectorMap::TennisBall, ReflectorFill::Direct},
+        {ReflectorMap::Octahedral, ReflectorFill::Resampled}};
+    for (const auto& [map, fill] : methods) {
+        for (Reflector& r : input.reflectors) {
+            r.map = map;
+            r.fill = fill;
+        }
+        std::vector<double> psnr;
+        for (int bounces : {0, 1}) {
+            input.settings.reflectorBounces = bounces;
+            psnr.push_back(reflectorPsnr(renderImage(input, kSize, kSize, kSsaa)));
+        }
+        const std::string name = std::string(names::fileName(names::kReflectorMaps, map)) + " " +
+                                 std::string(names::fileName(names::kReflectorFills, fill));
+        std::printf("[ measured ] facing balls, %s: PSNR at bounces 0, 1: %.2f %.2f dB\n", name.c_str(),
+                    psnr[0], psnr[1]);
+        EXPECT_GT(psnr[1], psnr[0] + 1.0) << name;
+    }
 }
 
 TEST_F(ReflectorBounces, AReflectorIsNeverInItsOwnMap) {
