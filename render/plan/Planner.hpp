@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <optional>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -15,6 +16,9 @@ namespace speculum::render {
 
 // What the renderer kept of one reflector's environment map, as far as planning is concerned.
 struct ReflectorMapState {
+    // The reflector the map was drawn for (its name): a reflector deleted before it leaves its record to
+    // the next, which must not take the map for its own.
+    std::string reflector;
     // The map, once rendered: the signature of what it saw (envmapSignature) and of the settings it was
     // made with (envmapSettingsKey).
     std::optional<std::uint64_t> signature;

@@ -334,7 +334,7 @@ bool facesAgree(const ReflectorMapState& state, const EnvmapPlan& map) {
 // that one left part done.
 PlanReason mapUpdate(const Reflector& reflector, const ReflectorMapState& state, bool preview,
                      EnvmapPlan& map, ReasonDetails& slice) {
-    if (!state.signature || state.settings != map.settingsKey)
+    if (!state.signature || state.settings != map.settingsKey || state.reflector != map.target)
         return PlanReason::EnvmapFirstMap; // drawn whole, whatever the policy
     if (preview && reflector.update != ReflectorUpdate::Once)
         return PlanReason::PreviewEnvmapHeld;
@@ -527,7 +527,8 @@ void planReflectors(const FrameInput& input, const PlannerState& state, const Pl
 
 void recordEnvmap(const EnvmapPlan& map, PlannerState& commits) {
     ReflectorMapState& state = commits.mapOf(map.reflector);
-    const bool whole = state.settings != map.settingsKey;
+    const bool whole = state.settings != map.settingsKey || state.reflector != map.target;
+    state.reflector = map.target;
     state.signature = map.signature;
     state.settings = map.settingsKey;
     if (whole) {

@@ -172,6 +172,7 @@ TEST(EnvmapMirrors, NoMirrorViewsWhenTheMapIsReusedOrItsDepthIsZero) {
     FrameInput input = scene(ReflectorMap::Cube);
     PlannerState state;
     state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).reflector = input.reflectors[0].name;
     state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
     EXPECT_TRUE(planFrame(input, state, {320, 240}).envmaps.empty()) << "a reused map draws nothing";
 

@@ -51,6 +51,7 @@ PlannerState afterDrawing(const FrameInput& input, const FramePlan& plan) {
     for (const ShadowPlan& shadow : plan.shadows)
         state.shadowSignatures[shadow.light] = shadow.signature;
     state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).reflector = input.reflectors[0].name;
     state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
     return state;
 }

@@ -501,6 +501,7 @@ TEST(Signatures, TogglingAMirrorsFresnelRedrawsAnOnChangeMap) {
     ASSERT_EQ(input.reflectors[0].update, ReflectorUpdate::OnChange);
     PlannerState state; // what the renderer keeps after it rendered the map
     state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).reflector = input.reflectors[0].name;
     state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
     ASSERT_FALSE(hasEnvmap(planFrame(input, state))) << "nothing changed: the map is reused";
 
@@ -514,6 +515,7 @@ TEST(Signatures, TogglingAMirrorsFresnelRedrawsAnOnChangeMap) {
     }
 
     state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).reflector = input.reflectors[0].name;
     EXPECT_FALSE(hasEnvmap(planFrame(input, state))) << "redrawn once, then reused again";
 }
 

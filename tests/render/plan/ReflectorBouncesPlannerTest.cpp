@@ -157,6 +157,19 @@ TEST(ReflectorBouncesPlanner, ATimeSlicedMapDrawsItsFaceOnceAtTheLastBounce) {
     ASSERT_EQ(plan.envmaps.back().faces.size(), 1u) << "one face a frame";
 }
 
+// A reflector deleted before another leaves its record to the next one, whose map it is not: the next
+// gets a map of its own, whatever its policy.
+TEST(ReflectorBouncesPlanner, AReflectorNeverTakesTheMapOfOneDeletedBeforeIt) {
+    FrameInput input = balls(2);
+    for (Reflector& r : input.reflectors)
+        r.update = ReflectorUpdate::Once;
+    PlannerState state;
+    record(planFrame(input, state), state);
+    input.reflectors.erase(input.reflectors.begin());
+    const std::vector<EnvmapPass> expected = {{"Ball 1", 0, PlanReason::EnvmapFirstMap}};
+    EXPECT_EQ(envmapPasses(planFrame(input, state)), expected);
+}
+
 TEST(ReflectorBouncesPlanner, OneReflectorHasNothingToBounceOffAndSaysSo) {
     const FramePlan plan = planFrame(balls(1, 3), {});
     const std::vector<EnvmapPass> expected = {{"Ball 0", 0, PlanReason::EnvmapFirstMap}};

@@ -33,6 +33,7 @@ const SkippedEffect* prefilterSkip(const FramePlan& plan) {
 PlannerState afterRendering(const FrameInput& input) {
     PlannerState state;
     state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).reflector = input.reflectors[0].name;
     state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
     state.mapOf(0).prefilterKey =
         prefilterKey(*state.mapOf(0).signature, *state.mapOf(0).settings, input.settings.prefilterSamples);

@@ -64,6 +64,7 @@ bool hasEnvmap(const FramePlan& plan) {
 PlannerState afterRendering(const FrameInput& input) {
     PlannerState state;
     state.mapOf(0).signature = envmapSignature(input, 0);
+    state.mapOf(0).reflector = input.reflectors[0].name;
     state.mapOf(0).settings = envmapSettingsKey(input.reflectors[0]);
     return state;
 }
