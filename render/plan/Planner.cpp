@@ -537,9 +537,12 @@ FramePlan planFrame(const FrameInput& input, const PlannerState& state, const Pl
     FramePlan plan;
     plan.preview = options.preview;
     planShadows(input, state, options.maps, plan);
-    // An interactive view's time for maps is shared among the reflectors.
-    const double mapSeconds =
-        input.reflectors.empty() ? 0.0 : options.maxMapSeconds / static_cast<double>(input.reflectors.size());
+    // An interactive view's time for maps is shared among the reflectors and the bounces each is drawn at.
+    const int drawings = static_cast<int>(input.reflectors.size()) *
+                         (1 + (input.reflectors.size() > 1
+                                   ? std::clamp(input.settings.reflectorBounces, 0, kMaxReflectorBounces)
+                                   : 0));
+    const double mapSeconds = drawings == 0 ? 0.0 : options.maxMapSeconds / static_cast<double>(drawings);
     for (std::size_t i = 0; i < input.reflectors.size(); ++i) {
         plan.reflectorResolutions.push_back(
             fitEnvmapResolution(input.reflectors[i], options.maps, plan.warnings));

@@ -78,5 +78,28 @@ TEST(MapCostPlanner, DemoSizedMapsAreNeitherWarnedOfNorCapped) {
     }
 }
 
+// Several reflectors drawn at several bounces share the interactive view's time: together their maps stay
+// within it, each capped further than one alone.
+TEST(MapCostPlanner, ReflectorsAndBouncesShareTheInteractiveTime) {
+    FrameInput input = ballWithMap(2048, 64, 0.5);
+    input.reflectors.push_back(input.reflectors[0]);
+    input.reflectors[1].name = "Other ball";
+    input.reflectors[1].world = glm::translate(glm::dmat4(1.0), glm::dvec3(3.0, 0.0, 0.0));
+    input.settings.reflectorBounces = 2;
+    PlanOptions options;
+    options.maxMapSeconds = kInteractiveMapSeconds;
+    const FramePlan plan = planFrame(input, {}, {}, options);
+    const FramePlan alone = planFrame(ballWithMap(2048, 64, 0.5), {}, {}, options);
+    const int samples = plan.prefilterSamples > 0 ? plan.prefilterSamples : input.settings.prefilterSamples;
+    double seconds = 0.0;
+    for (int i = 0; i < 2; ++i) {
+        EXPECT_LE(plan.reflectorResolution(i), alone.reflectorResolution(0));
+        seconds += 3.0 * mapCost(input.reflectors[static_cast<std::size_t>(i)], plan.reflectorResolution(i),
+                                 input.settings, samples)
+                             .softwareSeconds();
+    }
+    EXPECT_LE(seconds, kInteractiveMapSeconds * 1.0001) << "two maps drawn at three bounces each";
+}
+
 } // namespace
 } // namespace speculum::render
