@@ -46,9 +46,6 @@ struct FrameCost {
     std::vector<std::string> warnings;
 };
 
-// Renders `warmUp` frames, then times `frames` more. Every frame renders all its shadow and environment
-// maps again (RenderOptions::reuseMaps off), so the time is what the settings cost an animated scene.
-// `stop`, asked before each frame, ends the measurement early with an error ("stopped").
 // Plays `frames` in order, as the editor plays an animation: the first draws every map, the others keep
 // what their update policies keep (RenderOptions::reuseMaps on). The image is the last frame's; the times
 // are the medians over the frames after the first, what a played frame costs.
@@ -56,6 +53,9 @@ base::Result<FrameCost> measurePlayed(render::Renderer& renderer,
                                       const std::vector<render::FrameInput>& frames, int width, int height,
                                       const std::function<bool()>& stop);
 
+// Renders `warmUp` frames, then times `frames` more. Every frame renders all its shadow and environment
+// maps again (RenderOptions::reuseMaps off), so the time is what the settings cost an animated scene.
+// `stop`, asked before each frame, ends the measurement early with an error ("stopped").
 base::Result<FrameCost> measureFrames(render::Renderer& renderer, const render::FrameInput& input, int width,
                                       int height, int warmUp, int frames,
                                       const std::function<bool()>& stop = {});

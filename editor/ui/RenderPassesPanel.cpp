@@ -109,8 +109,8 @@ void RenderPassesPanel::showReportNow(const render::FrameReport& report) {
                 row->setToolTip(
                     0, p.details.bounce == 0
                            ? tr("Each reflector's map, the other reflectors drawn with their material")
-                           : tr("Each map again, the other reflectors drawn with their maps of "
-                                "bounce %1")
+                           : tr("Each map again, the other reflectors drawn with their maps: of bounce %1 "
+                                "where drawn this frame, else as kept")
                                  .arg(p.details.bounce - 1));
                 m_groups.push_back({row, p.details.bounce, {}});
                 group = &m_groups.back();

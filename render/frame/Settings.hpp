@@ -20,8 +20,8 @@ enum class GlossyFilter { Mip, Footprint, Chain };
 static_assert(int(GlossyFilter::Chain) + 1 == names::kGlossyFilters.size(), "one name per value");
 
 // Where a screen-space mirror's ray that meets nothing in the camera's image takes its reflection from:
-// the curved reflector's environment map used as a probe (parallax-corrected when it has a proxy), and
-// the background where there is no map; or the background alone.
+// the environment map of the first curved reflector with a mesh used as a probe (parallax-corrected when it
+// has a proxy), and the background where there is no map; or the background alone.
 enum class ScreenFallback { Map, Background };
 static_assert(int(ScreenFallback::Background) + 1 == names::kScreenFallbacks.size(), "one name per value");
 // The resolution a screen-space mirror is traced at: every pixel, or one ray for four pixels, scaled up.

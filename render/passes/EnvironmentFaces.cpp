@@ -195,6 +195,7 @@ void drawEnvironmentTarget(const FrameInput& env, const EnvironmentTarget& targe
     glDisable(GL_CLIP_DISTANCE0);
     context.mirrorMeshes.clear();
     context.cullBackFaces.clear();
+    context.prepareProgram = nullptr; // it holds the face's scenes, which end here
 }
 
 } // namespace speculum::render::passes

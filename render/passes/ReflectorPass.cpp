@@ -104,7 +104,8 @@ void ReflectorPass::endFrame() {
 
 bool ReflectorPass::hasMap(int index, const Reflector& reflector) const {
     const Slot* s = slotOf(index);
-    return s && s->capture && s->settingsKey == envmapSettingsKey(reflector);
+    return s && s->capture && s->settingsKey == envmapSettingsKey(reflector) &&
+           s->reflector == reflector.name;
 }
 
 bool ReflectorPass::hasChain(int index, const Reflector& reflector) const {
@@ -202,7 +203,7 @@ const envmap::EnvironmentCapture* ReflectorPass::readable(int index, int bounce)
     const Slot* s = slotOf(index);
     if (!s)
         return nullptr;
-    if (s->bounceDrawn == bounce && s->previous)
+    if (s->bounceDrawn == bounce && s->bounced && s->previous) // drawn over at this bounce, this frame
         return &*s->previous;
     return s->capture ? &*s->capture : nullptr;
 }
@@ -290,6 +291,7 @@ base::Status ReflectorPass::capture(const FrameInput& input, const EnvmapPlan& p
     };
     s.capture->update(view, drawFace, drawWarped);
     s.settingsKey = key;
+    s.reflector = reflector.name;
     s.bounceDrawn = plan.bounce;
     ++s.captures; // the chain, if any, holds an older map now
     return base::Done{};

@@ -102,6 +102,7 @@ private:
         std::optional<envmap::EnvironmentCapture> capture;  // the map as last drawn
         std::optional<envmap::EnvironmentCapture> previous; // a bounce's: the map of the bounce before
         std::uint64_t settingsKey = 0; // of the map last rendered into `capture`; 0: not rendered yet
+        std::string reflector;         // the reflector it was rendered for (a deleted one's slot passes on)
         std::uint64_t captures = 0;    // captures so far: the chain knows which one it filtered
         std::uint64_t chainOf = 0;     // the capture the chain holds (0: none)
         std::optional<envmap::GgxPrefilter> prefilter; // built by its first Prefilter pass

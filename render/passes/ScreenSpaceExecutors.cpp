@@ -470,6 +470,7 @@ PassResult runReflectorTrace(const PlannedPass& pass, FrameExecution& frame) {
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, 0);
     resetPassState();
+    frame.screenColourReady = false; // the next reflector's trace copies the image it drew into
     if (!counts)
         return {true, "traced in the camera's image"};
     return {true, tracedOutcome(*counts, false)};

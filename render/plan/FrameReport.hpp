@@ -15,7 +15,7 @@ struct TargetMemory {
     std::size_t main = 0;    // the linear colour buffer and its depth-stencil buffer
     std::size_t mirrors = 0; // reflection textures of texture-technique mirrors (mip chains included)
     std::size_t shadows = 0; // depth maps of the lights the main pass samples
-    std::size_t envmap = 0;  // the reflector's environment map, its depth and its intermediate cube
+    std::size_t envmap = 0;  // the reflectors' maps, depths, intermediate cubes and bounce-before maps
     std::size_t total() const { return main + mirrors + shadows + envmap; }
 };
 

@@ -95,8 +95,8 @@ struct RenderOptions {
     // it up to the whole target in the composite pass (bilinear): an interactive preview costs about the
     // square of it. In [1/8, 1]; 1 (the default) draws every pixel of the target. Ignored for tiles.
     double resolutionScale = 1.0;
-    // An interactive view's bound on drawing the reflector's map (PlanOptions::maxMapSeconds); 0, the
-    // default: the map as the scene asks.
+    // An interactive view's bound on drawing the reflectors' maps, all bounces together
+    // (PlanOptions::maxMapSeconds); 0, the default: the maps as the scene asks.
     double maxMapSeconds = 0.0;
     // Draws the camera's view in half float and resolves it in the composite pass even where the plan
     // would draw it in 8-bit sRGB (FramePlan::cameraBuffer): the reference the tests and `speculum time
