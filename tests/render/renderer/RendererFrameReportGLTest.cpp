@@ -108,6 +108,30 @@ TEST_F(FrameReportTest, MemoryCountsEachRenderTargetFromItsSizeAndFormat) {
     EXPECT_GE(mirrored.memory.mirrors, std::size_t(kWidth) * kHeight * 12);
 }
 
+// Each reflector's map counts; drawn at more than one bounce, each keeps its map of the bounce before in a
+// second texture of the same size, which counts too. One reflector alone never bounces.
+TEST_F(FrameReportTest, MemoryCountsEveryReflectorsMapsAndTheBounceBefore) {
+    FrameInput one = roomWithBall(64);
+    one.settings.reflectorBounces = 2;
+    const std::size_t single = renderFrame(renderer(), one, false).memory.envmap;
+    FrameInput two = roomWithBall(64);
+    Reflector second = two.reflectors[0];
+    second.name = "Second ball";
+    second.world = glm::translate(glm::dmat4(1.0), glm::dvec3(-0.4, 0.6, 1.0)) *
+                   glm::scale(glm::dmat4(1.0), glm::dvec3(0.4));
+    two.reflectors.push_back(second);
+    // A map's capture keeps one face-sized depth buffer beside its faces; a bounce's second map its own.
+    const FrameReport plain = renderFrame(renderer(), two, false);
+    EXPECT_EQ(plain.memory.envmap, 2 * single);
+    two.settings.reflectorBounces = 1;
+    const FrameReport bounced = renderFrame(renderer(), two, false);
+    EXPECT_EQ(countPasses(bounced, PassKind::Envmap), 4);
+    EXPECT_EQ(bounced.memory.envmap, 4 * single) << "each map and its bounce-before map";
+    // Without bounces the second maps are freed again.
+    two.settings.reflectorBounces = 0;
+    EXPECT_EQ(renderFrame(renderer(), two, false).memory.envmap, 2 * single);
+}
+
 TEST_F(FrameReportTest, EveryPassThatRanHasAGpuTimeAndTheyAddUpToTheFrame) {
     FrameReport report;
     for (int frame = 0; frame < 2; ++frame) // the second frame reuses the timer's queries
