@@ -55,6 +55,12 @@ struct Settings {
 
     template <typename Visit>
     static void fields(Visit&& visit);
+
+private:
+    // The screen-space trace's and the reflectors' settings, in the order fields() visits them after the
+    // rest.
+    template <typename Visit>
+    static void traceAndReflectorFields(Visit& visit);
 };
 
 template <typename Visit>
@@ -116,6 +122,11 @@ void Settings::fields(Visit&& visit) {
                  .max = kMaxPrefilterSamples,
                  .write = FieldWrite::UnlessDefault,
                  .drawnInMaps = false}));
+    traceAndReflectorFields(visit);
+}
+
+template <typename Visit>
+void Settings::traceAndReflectorFields(Visit& visit) {
     visit(field(&Settings::screenSteps,
                 {.name = "screenSteps",
                  .label = "Screen-space steps",
