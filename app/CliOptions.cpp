@@ -139,7 +139,7 @@ std::string usageText() {
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference [--samples N]] "
            "[--screen-space-sources] [--keep-going]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N [--animated]] "
-           "[--preview SCALE[,CUT] [--preview-drag]] [--json]\n"
+           "[--preview SCALE[,CUT] [--preview-drag]] [--pixel X,Y] [--json]\n"
            "  speculum bench PROJECT --out DIR [--quick] [--size WxH] [--keep-going]\n"
            "  speculum time PROJECT [--size WxH] [--frames N] [--animated] [--time T] [--half-float] "
            "[--json]\n"
@@ -158,6 +158,9 @@ std::string usageText() {
            "--preview SCALE[,CUT] explains the frame as the editor previews it while the view moves: drawn\n"
            "at SCALE (0.125..1) of the width and height, CUT levels of mirror nesting left out, the\n"
            "environment map held; --preview-drag as while a handle is dragged (shadow maps drawn smaller).\n"
+           "--pixel X,Y explains one pixel (x from the left, y from the top): the path the exact tracer\n"
+           "follows to it, the passes that wrote it in the raster with the colour each left, and the error\n"
+           "between the two with the causes they name.\n"
            "bench sweeps the settings the scene uses (map type and resolution, parallax, mirror technique "
            "and\n"
            "depth, PCF, tessellation), times each and measures its error against the exact tracer; it "
@@ -209,8 +212,26 @@ const char* describe(Command command) {
 
 // The values of a command's options as typed: checked after parsing, with the same messages whatever
 // form they came in (--size 64x36, --size=64x36).
+// explain --pixel X,Y: a pixel inside the frame's size (--size, parsed before it).
+base::Status parsePixel(const std::string& text, CliOptions& o) {
+    static const std::regex pixel(R"((\d+),(\d+))");
+    std::smatch m;
+    if (!std::regex_match(text, m, pixel))
+        return Error{"--pixel: expected X,Y such as 640,360, got " + base::quoted(text)};
+    auto x = parseInt("--pixel x", m[1].str(), 0, std::numeric_limits<int>::max());
+    auto y = parseInt("--pixel y", m[2].str(), 0, std::numeric_limits<int>::max());
+    if (!x || !y || *x >= o.width || *y >= o.height)
+        return Error{"--pixel: " + base::quoted(text) + " is outside the " + std::to_string(o.width) + "x" +
+                     std::to_string(o.height) + " image (x 0.." + std::to_string(o.width - 1) + ", y 0.." +
+                     std::to_string(o.height - 1) + ")"};
+    if (o.preview.active())
+        return Error{"--pixel: not with --preview (a pixel is explained in the frame at rest)"};
+    o.pixel = glm::ivec2(*x, *y);
+    return base::Done{};
+}
+
 struct Typed {
-    std::string size, ssaa, time, frame, frames, samples, preview;
+    std::string size, ssaa, time, frame, frames, samples, preview, pixel;
 };
 
 base::Status checkValues(const Typed& t, CliOptions& o) {
@@ -268,6 +289,9 @@ base::Status checkValues(const Typed& t, CliOptions& o) {
             return preview;
     if (o.preview.redrawsShadows && t.preview.empty())
         return Error{"--preview-drag: only with --preview (a handle drag's preview)"};
+    if (!t.pixel.empty())
+        if (base::Status pixel = parsePixel(t.pixel, o); !pixel)
+            return pixel;
     if (!t.frames.empty()) {
         auto n = parseInt("--frames", t.frames, 1, 100000);
         if (!n)
@@ -325,6 +349,10 @@ void addExplainOptions(CLI::App& app, Typed& typed, CliOptions& o) {
                    "Explain the editor's preview: SCALE (0.125..1) of the width and height, CUT mirror "
                    "levels left out, the environment map held")
         ->type_name("SCALE[,CUT]");
+    app.add_option("--pixel", typed.pixel,
+                   "Explain one pixel (X from the left, Y from the top): its exact path beside the raster's "
+                   "recipe")
+        ->type_name("X,Y");
     app.add_flag("--preview-drag", o.preview.redrawsShadows,
                  "With --preview: as while a handle is dragged (shadow maps drawn smaller)");
 }

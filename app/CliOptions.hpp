@@ -37,6 +37,9 @@ struct CliOptions {
     int frame = 1; // explain: which of consecutive frames of the same scene to explain (reuse shows from 2)
     // explain --preview SCALE[,CUT] [--preview-drag]: the frame as the editor's preview of that level
     render::PreviewPolicy preview;
+    // explain --pixel X,Y: explain this pixel of the frame (x from the left, y from the top): its exact path
+    // beside the raster's recipe. Absent: explain the whole frame.
+    std::optional<glm::ivec2> pixel;
     // render, bench, export: go on without a referenced model or texture that is missing or unreadable
     // (each is then a warning); without it such a file is an error and nothing is written.
     bool keepGoing = false;

@@ -3,6 +3,7 @@
 #include "app/BenchCommand.hpp"
 #include "app/Interrupt.hpp"
 #include "app/OutputPaths.hpp"
+#include "app/PixelCommand.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
 #include "base/Printable.hpp"
@@ -214,6 +215,7 @@ base::Result<render::StillResult> renderExplainedFrame(HeadlessFrame& frame, con
     // In one piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
     render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
     settings.preview = options.preview;
+    settings.probePixel = options.pixel;
     const auto untilStopped = [](double, const std::string&) { return !StopOnSignal::requested(); };
     for (int number = 1; number <= options.frame; ++number) {
         if (frame.project && number > 1) {
@@ -474,6 +476,8 @@ int runExplain(const CliOptions& options) {
         fail("explain: " + still.error());
         return 1;
     }
+    if (options.pixel)
+        return printPixelExplanation(options, frame->input, *still, frame->glDescription);
     const render::FrameReport& report = still->firstSample;
     // A map's mirrors are those its envmap pass drew: none when the pass did not run (no map could be
     // allocated), though the plan still holds them.

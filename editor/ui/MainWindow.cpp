@@ -4,6 +4,7 @@
 #include "base/Printable.hpp"
 #include "editor/document/NewScene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
+#include "editor/ui/InspectPanel.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/RenderPassesPanel.hpp"
 #include "editor/ui/SceneTreeModel.hpp"
@@ -376,15 +377,57 @@ void MainWindow::createDocks() {
     QDockWidget* accuracyDock = createAccuracyDock(inspectorDock);
     QDockWidget* logDock = createLogDock();
     QDockWidget* historyDock = createHistoryDock(treeDock);
+    QDockWidget* inspectDock = createInspectDock(inspectorDock);
 
     resizeDocks({treeDock, inspectorDock}, {240, 320}, Qt::Horizontal);
     resizeDocks({treeDock, passesDock}, {300, 200}, Qt::Vertical);
 
     m_viewMenu->addSeparator();
-    for (QDockWidget* dock : {treeDock, inspectorDock, passesDock, accuracyDock, historyDock, logDock}) {
+    for (QDockWidget* dock :
+         {treeDock, inspectorDock, passesDock, accuracyDock, inspectDock, historyDock, logDock}) {
         m_viewMenu->addAction(dock->toggleViewAction());
     }
     logDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+}
+
+// Hidden at first, tabbed with the Properties: View ▸ Inspect Pixel turns the viewport's inspect tool on
+// and brings it up; a step that touched a node selects that node.
+QDockWidget* MainWindow::createInspectDock(QDockWidget* inspectorDock) {
+    auto* panel = new InspectPanel(this);
+    auto* dock = new QDockWidget(tr("Pixel Inspector"), this);
+    dock->setObjectName(QStringLiteral("inspectDock"));
+    dock->setWidget(panel);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    tabifyDockWidget(inspectorDock, dock);
+    dock->hide();
+    auto* tool = new QAction(tr("Inspect &Pixel"), this);
+    tool->setObjectName(QStringLiteral("inspectPixelAction"));
+    tool->setCheckable(true);
+    tool->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
+    tool->setStatusTip(tr("Click a pixel of the view: its exact path beside the raster's recipe"));
+    m_viewMenu->addAction(tool);
+    connect(tool, &QAction::toggled, this, [this, dock](bool on) {
+        m_viewport->setInspecting(on);
+        if (on) {
+            dock->show();
+            dock->raise();
+        }
+    });
+    connect(m_viewport, &Viewport::pixelInspected, panel, &InspectPanel::show);
+    connect(m_viewport, &Viewport::inspectionFailed, panel, [panel](const QString& message) {
+        panel->showMessage(tr("The pixel could not be explained: %1").arg(message));
+    });
+    connect(panel, &InspectPanel::nodeChosen, this, [this](const QString& name) {
+        const std::string wanted = name.toStdString();
+        scene::NodeId found = scene::kNoNode;
+        scene().forEachNode([&](const scene::Node& node) {
+            if (found == scene::kNoNode && node.data().name == wanted)
+                found = node.id();
+        });
+        if (found != scene::kNoNode)
+            m_selection->selectNode(found);
+    });
+    return dock;
 }
 
 QDockWidget* MainWindow::createSceneDock() {

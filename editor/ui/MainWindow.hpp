@@ -225,6 +225,7 @@ private:
     QDockWidget* createInspectorDock();
     QDockWidget* createPassesDock(QDockWidget* treeDock);
     QDockWidget* createAccuracyDock(QDockWidget* inspectorDock);
+    QDockWidget* createInspectDock(QDockWidget* inspectorDock);
     void placeAccuracyDock(QDockWidget* accuracyDock, QDockWidget* inspectorDock);
     QDockWidget* createLogDock();
     QDockWidget* createHistoryDock(QDockWidget* treeDock);

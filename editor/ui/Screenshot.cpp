@@ -11,6 +11,7 @@
 #include <QBuffer>
 #include <QEventLoop>
 #include <QFileInfo>
+#include <QMouseEvent>
 #include <QPixmap>
 #include <QRegularExpression>
 #include <QTimer>
@@ -34,12 +35,30 @@ ScreenshotRequest screenshotRequestFromEnvironment() {
     const QString actions = qEnvironmentVariable("SPECULUM_SCREENSHOT_ACTIONS");
     if (!actions.isEmpty())
         request.actions = actions.split(QLatin1Char(':'), Qt::SkipEmptyParts);
+    const QStringList click = qEnvironmentVariable("SPECULUM_SCREENSHOT_CLICK").split(QLatin1Char(','));
+    if (click.size() == 2)
+        request.click = QPoint(click[0].toInt(), click[1].toInt());
     const QString imports = qEnvironmentVariable("SPECULUM_SCREENSHOT_IMPORT");
     if (!imports.isEmpty()) {
         request.imports = imports.split(QLatin1Char(':'), Qt::SkipEmptyParts);
     }
     return request;
 }
+
+namespace {
+
+void clickViewport(QWidget& viewport, QPoint at) {
+    const QPointF local(at);
+    const QPointF global(viewport.mapToGlobal(at));
+    QMouseEvent press(QEvent::MouseButtonPress, local, global, Qt::LeftButton, Qt::LeftButton,
+                      Qt::NoModifier);
+    QCoreApplication::sendEvent(&viewport, &press);
+    QMouseEvent release(QEvent::MouseButtonRelease, local, global, Qt::LeftButton, Qt::NoButton,
+                        Qt::NoModifier);
+    QCoreApplication::sendEvent(&viewport, &release);
+}
+
+} // namespace
 
 int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
     window.clock().setPlaying(false);
@@ -67,7 +86,8 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
     // The project's model files are read on workers: the picture shows them, not their stand-ins.
     window.viewport().waitForModels();
     window.viewport().update(); // the frames it drew meanwhile showed stand-ins: draw again
-    const int targetFrames = window.viewport().framesRendered() + request.frames;
+    int targetFrames = window.viewport().framesRendered() + request.frames;
+    bool clickPending = request.click.has_value();
 
     QEventLoop loop;
     QString failure;
@@ -78,6 +98,15 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
     QObject::connect(&window.viewport(), &Viewport::rendererFailed, &loop,
                      [&](const QString& message) { finishWithFailure(message); });
     QObject::connect(&window.viewport(), &Viewport::frameRendered, &loop, [&] {
+        if (clickPending) { // once the viewport draws, it can be clicked; then the frames after it
+            clickPending = false;
+            QTimer::singleShot(0, &loop, [&] {
+                clickViewport(window.viewport(), *request.click);
+                targetFrames = window.viewport().framesRendered() + request.frames;
+                window.viewport().update();
+            });
+            return;
+        }
         if (window.viewport().framesRendered() < targetFrames) {
             // Paused, the viewport draws only on demand; ask for the next frame.
             window.viewport().update();

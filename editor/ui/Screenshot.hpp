@@ -1,8 +1,10 @@
 #pragma once
 
+#include <QPoint>
 #include <QSize>
 #include <QString>
 #include <QStringList>
+#include <optional>
 
 namespace speculum::ui {
 
@@ -21,6 +23,9 @@ struct ScreenshotRequest {
     // SPECULUM_SCREENSHOT_ACTIONS: the object names of the window's actions (separated by ':') triggered
     // first, as the menu would ("viewShowScreenSpaceSources" shows the screen-space debug view).
     QStringList actions;
+    // SPECULUM_SCREENSHOT_CLICK=X,Y: a left click at this point of the viewport (its own coordinates) once it
+    // has drawn, as a user's (with View ▸ Inspect Pixel on among the actions, it explains that pixel).
+    std::optional<QPoint> click;
     int frames = 3;         // frames the viewport draws before the grab
     int timeoutMs = 120000; // give up (exit 1) if the viewport has not drawn by then
 };

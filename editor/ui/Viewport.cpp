@@ -281,6 +281,7 @@ void Viewport::paintGL() {
                        m_handles.press() == ViewportHandles::Press::Handle};
     if (m_overlay->guidesVisible())
         options.guides = guideLines();
+    options.guides.insert(options.guides.end(), m_inspectionGuides.begin(), m_inspectionGuides.end());
     options.showScreenSpaceSources = m_screenSpaceSources;
     // The view stays interactive whatever the reflector's settings: a map that would take longer is drawn
     // smaller while editing (a warning says so); Export Still draws it as the scene asks.

@@ -5,6 +5,7 @@
 #include "editor/ui/ViewportHandles.hpp"
 #include "editor/ui/ViewportNavigation.hpp"
 #include "editor/view/AdaptiveResolution.hpp"
+#include "render/inspect/PixelExplanation.hpp"
 #include "render/renderer/Renderer.hpp"
 #include "scene/import/MeshLibrary.hpp"
 #include "scene/model/SceneData.hpp"
@@ -192,7 +193,20 @@ public slots:
     // Moves the view so the selected nodes fill it (all nodes when nothing is selected).
     void frameSelected();
 
+    // The inspect tool: while on, a left click explains the pixel under it (pixelInspected) instead of
+    // selecting; its path stays drawn in the view until cleared or the tool is turned off.
+    void setInspecting(bool on);
+    bool inspecting() const { return m_inspecting; }
+    void clearInspection();
+    // Explains the pixel at `position` (widget coordinates): renders the frame once with the pixel's
+    // recipe recorded and traces the pixel, then draws its path. Used by the click and by tests.
+    void inspectAt(QPointF position);
+
 signals:
+    // The inspect tool explained a pixel: both recipes and their difference, and the frame they are of.
+    void pixelInspected(const speculum::render::inspect::PixelExplanation& explanation,
+                        const speculum::render::FrameInput& input);
+    void inspectionFailed(const QString& message);
     // After every frame, with the renderer's report and the animation time it showed.
     void frameRendered(const speculum::render::FrameReport& report, double animationTime);
     // When the set of warnings (snapshot + renderer) differs from the previous frame's.
@@ -262,6 +276,8 @@ private:
     // Adaptive resolution.
     bool m_adaptive = true;
     bool m_screenSpaceSources = false;
+    bool m_inspecting = false;
+    std::vector<render::GuideLine> m_inspectionGuides; // the inspected pixel's path, drawn in every frame
     bool m_interacting = false;
     QTimer m_rest; // single shot: kRestMs after the last navigation or handle move
     view::AdaptiveResolution m_resolution;

@@ -89,6 +89,11 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     const bool left = event->button() == Qt::LeftButton;
     const bool pan =
         event->button() == Qt::MiddleButton || (left && (event->modifiers() & Qt::ShiftModifier));
+    if (left && m_inspecting && event->modifiers() == Qt::NoModifier) {
+        inspectAt(position);
+        event->accept();
+        return;
+    }
     m_navigation.beginGesture();
     // A press of the pan or the left button ends whatever gesture the last one started, finishing nothing.
     if (pan) {

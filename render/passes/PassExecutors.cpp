@@ -1,5 +1,7 @@
 #include "render/passes/PassExecutors.hpp"
 
+#include "render/gl/Objects.hpp"
+#include "render/image/ColorSpace.hpp"
 #include "render/math/Projection.hpp"
 
 #include <cassert>
@@ -131,6 +133,50 @@ PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpa
 
 PassResult runPass(const PlannedPass& pass, FrameExecution& frame) {
     return runPass(pass, frame, cameraSpace(frame));
+}
+
+namespace {
+
+bool hasAttachment(GLenum attachment) {
+    GLint type = GL_NONE;
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    return type != GL_NONE;
+}
+
+} // namespace
+
+PixelProbe probePixel(const PassWrites& writes, FrameExecution& frame, glm::ivec2 pixel) {
+    PixelProbe probe;
+    if (writes.target == PassTarget::OwnMap)
+        return probe;
+    const RenderTarget& size = writes.target == PassTarget::Output ? frame.outputTarget() : frame.target;
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= size.width || pixel.y >= size.height)
+        return probe;
+    gl::FramebufferBinding keep;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebufferOf(writes, frame));
+    const GLint x = pixel.x, y = size.height - 1 - pixel.y; // GL rows count from the bottom
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    float rgba[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glReadPixels(x, y, 1, 1, GL_RGBA, GL_FLOAT, rgba);
+    GLint encoding = GL_LINEAR;
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                          GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
+    for (int c = 0; c < 3; ++c)
+        probe.colour[c] = encoding == GL_SRGB ? srgbToLinear(rgba[c]) : rgba[c];
+    probe.colour.a = rgba[3];
+    if (hasAttachment(GL_STENCIL_ATTACHMENT)) {
+        GLubyte stencil = 0;
+        glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+        probe.stencil = stencil;
+    }
+    if (hasAttachment(GL_DEPTH_ATTACHMENT)) {
+        float depth = 0.0f;
+        glReadPixels(x, y, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+        probe.depth = depth;
+    }
+    probe.readable = glGetError() == GL_NO_ERROR;
+    return probe;
 }
 
 } // namespace speculum::render::passes

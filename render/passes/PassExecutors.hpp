@@ -13,6 +13,7 @@
 #include "render/passes/ReflectorPass.hpp"
 #include "render/passes/ShadowMaps.hpp"
 #include "render/plan/FramePlan.hpp"
+#include "render/plan/FrameReport.hpp"
 #include "render/plan/Planner.hpp"
 #include "render/plan/RenderOptions.hpp"
 
@@ -152,5 +153,9 @@ void drawScreenSpaceSources(const PlannedPass& pass, FrameExecution& frame, cons
 PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpace& space);
 // In the camera's space.
 PassResult runPass(const PlannedPass& pass, FrameExecution& frame);
+
+// What `writes` left at `pixel` of the camera-sized buffer it drew into (x from the left, y from the
+// top, in the drawn target's pixels): colour, stencil and depth, read back now (a GPU wait).
+PixelProbe probePixel(const PassWrites& writes, FrameExecution& frame, glm::ivec2 pixel);
 
 } // namespace speculum::render::passes

@@ -3,6 +3,7 @@
 #include "render/plan/FramePlan.hpp"
 
 #include <cstddef>
+#include <glm/vec4.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,17 @@ struct PassRun {
     std::string outcome; // what running it found ("waited for its occlusion test"); empty: nothing to add
     double gpuMs = -1.0; // < 0: no GPU timing was available
     double cpuMs = 0.0;
+};
+
+// What a pass left at the probed pixel (RenderOptions::probePixel), read back right after it ran.
+struct PixelProbe {
+    int run = -1; // index into FrameReport::ran
+    // The pass wrote a buffer the size of the camera's (its colour buffer, a reflection texture, the
+    // output), so the pixel has a value there; false for a map of its own (a shadow or environment map).
+    bool readable = false;
+    glm::vec4 colour{0.0f}; // linear: what the buffer holds there (an 8-bit sRGB buffer's value decoded)
+    int stencil = -1;       // the stencil value there (-1: the buffer has none)
+    float depth = -1.0f;    // window depth there, 0..1 (-1: the buffer has none)
 };
 
 // What a frame did: the plan as the planner made it (execution never edits it), the passes that ran in
@@ -56,6 +68,8 @@ struct FrameReport {
     // Mirror masks whose occlusion test the frame waited for before drawing on (passes/MirrorOcclusion):
     // those no earlier frame saw, or saw hidden.
     int occlusionWaits = 0;
+    // With RenderOptions::probePixel: one probe per pass that ran, in order. Empty otherwise.
+    std::vector<PixelProbe> probes;
 
     const PlannedPass& planned(const PassRun& run) const {
         return plan.passes[static_cast<std::size_t>(run.pass)];

@@ -107,6 +107,10 @@ struct RenderOptions {
     // Lines drawn over the camera's view after its mirrors, depth-tested against them (PassKind::Guides):
     // the editor's grid and camera wireframe. Ignored for tiles, which are parts of stills.
     std::vector<GuideLine> guides;
+    // Explaining a pixel: after each pass, the value it left at this pixel of the target (x from the
+    // left, y from the top, in the target's pixels) is read back into FrameReport::probes. Each read waits
+    // for the GPU: only for one frame on request, never in a frame that is only drawn.
+    std::optional<glm::ivec2> probePixel;
 };
 
 } // namespace speculum::render

@@ -66,7 +66,7 @@ std::vector<ShadingLight> shadingLights(const FrameInput& input, const glm::dvec
 }
 
 glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, const Hit& surfaceHit,
-                         const glm::dvec3& viewDir) const {
+                         const glm::dvec3& viewDir, ShadingTerms* terms) const {
     glm::dvec3 base = m.color * glm::dvec3(surfaceHit.color);
     if (textures.base >= 0)
         base *= glm::dvec3(m_textures[textures.base].sample(surfaceHit.uv, m.wrap[0], m.wrap[1]));
@@ -97,7 +97,8 @@ glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, co
     const glm::dvec3& n = hit.normal;
     const double shininess = std::max(m.shininess, 1e-3);
     glm::dvec3 diffuse(0.0), specular(0.0);
-    for (const ShadingLight& light : m_lights) {
+    for (std::size_t index = 0; index < m_lights.size(); ++index) {
+        const ShadingLight& light = m_lights[index];
         glm::dvec3 toLight;
         double distance = std::numeric_limits<double>::infinity();
         double cone = 1.0;
@@ -113,21 +114,43 @@ glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, co
                 cone = smoothstep(light.cosOuter, light.cosInner, glm::dot(-toLight, light.direction));
         }
         const double nDotL = glm::dot(n, toLight);
+        LightTerm* term = nullptr;
+        if (terms) {
+            terms->lights.push_back(
+                {.light = int(index), .nDotL = nDotL, .cone = cone, .shadowed = light.shadowed});
+            term = &terms->lights.back();
+        }
         if (nDotL <= 0.0 || cone <= 0.0)
             continue;
         double visible = cone;
         if (light.shadowed)
             visible *= visibility(light, hit, toLight, distance);
+        if (term)
+            term->visibility = cone > 0.0 ? visible / cone : 0.0;
         if (visible <= 0.0)
             continue;
         glm::dvec3 halfway = toLight + viewDir;
         const double halfLength = glm::length(halfway);
         halfway = halfLength > 1e-12 ? halfway / halfLength : n;
-        diffuse += light.radiance * nDotL * visible;
-        specular += light.radiance * std::pow(std::max(glm::dot(n, halfway), 0.0), shininess) * visible;
+        const glm::dvec3 lightDiffuse = light.radiance * nDotL * visible;
+        const glm::dvec3 lightSpecular =
+            light.radiance * std::pow(std::max(glm::dot(n, halfway), 0.0), shininess) * visible;
+        diffuse += lightDiffuse;
+        specular += lightSpecular;
+        if (term) {
+            term->diffuse = base * m.diffuse * lightDiffuse;
+            term->specular = m.specular * m.specularColor * lightSpecular;
+        }
     }
-    return emitted + base * (m.ambient * m_sceneAmbient + m.diffuse * diffuse) +
-           m.specular * m.specularColor * specular;
+    const glm::dvec3 total = emitted + base * (m.ambient * m_sceneAmbient + m.diffuse * diffuse) +
+                             m.specular * m.specularColor * specular;
+    if (terms) {
+        terms->base = base;
+        terms->emitted = emitted;
+        terms->ambient = base * (m.ambient * m_sceneAmbient);
+        terms->total = total;
+    }
+    return total;
 }
 
 double Shader::visibility(const ShadingLight& light, const Hit& hit, const glm::dvec3& toLight,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "render/frame/FrameInput.hpp"
+#include "render/reference/PathRecord.hpp"
 #include "render/reference/SceneGeometry.hpp"
 #include "render/reference/TextureSampler.hpp"
 #include "render/reference/Tracer.hpp"
@@ -46,9 +47,10 @@ public:
     // shadeMaterial() of material.glsl: emitted + base·(ambient·sceneAmbient + diffuse·Σ) +
     // specular·specularColor·Σ with base = color·texture·vertex colour, emitted = emission·emission
     // texture, and the normal bent by the normal map where the hit has a tangent. `viewDir` is the unit
-    // direction from the point towards the (virtual) eye; `textures` index the texture set.
+    // direction from the point towards the (virtual) eye; `textures` index the texture set. `terms`, when
+    // given, receives the result term by term (explaining a pixel); light indices are those of FrameInput.
     glm::dvec3 shade(const Material& material, const MaterialTextures& textures, const Hit& hit,
-                     const glm::dvec3& viewDir) const;
+                     const glm::dvec3& viewDir, ShadingTerms* terms = nullptr) const;
 
     // Fraction of the light that reaches `hit` (1 for an unshadowed light).
     double visibility(const ShadingLight& light, const Hit& hit, const glm::dvec3& toLight,

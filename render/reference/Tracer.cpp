@@ -101,6 +101,7 @@ struct Tracer::Impl {
     std::vector<MaterialTextures> reflectorTexture; // per reflector: its material's textures
     int maxMirrorDepth = 0;
     std::vector<std::string> warnings;
+    glm::dvec3 cameraPosition{0.0}; // the world point that is (0,0,0) in the tracer
 
     struct PixelTracer;
 
@@ -116,7 +117,64 @@ struct Tracer::Impl {
         PathSeed seed;
         int bounce = 0;
         bool* rough = nullptr;
+        // Explaining a pixel: every vertex the path meets is appended here. Null in renders.
+        TracedPath* record = nullptr;
     };
+
+    // Appends what the ray origin + t·direction met to the path's record (if it keeps one); returns the
+    // vertex's index, -1 without a record.
+    int record(const Path& path, PathEventKind kind, PixelId id, const glm::dvec3& origin,
+               const glm::dvec3& direction, const Hit* hit) const {
+        if (!path.record)
+            return -1;
+        PathVertex v;
+        v.kind = kind;
+        v.hit = id;
+        v.from = origin + cameraPosition;
+        v.incoming = glm::normalize(direction);
+        const double t = hit ? hit->t : 1e3 / glm::length(direction);
+        v.position = origin + direction * t + cameraPosition;
+        v.distance = glm::length(direction) * t;
+        if (hit)
+            v.normal = hit->normal;
+        v.mirrorLevel = path.mirrorLevel;
+        v.reflectorLevel = path.reflectorLevel;
+        path.record->vertices.push_back(v);
+        return int(path.record->vertices.size()) - 1;
+    }
+    static PathVertex* vertex(const Path& path, int v) {
+        return v >= 0 ? &path.record->vertices[std::size_t(v)] : nullptr;
+    }
+    // The shading terms of vertex v, for Shader::shade to fill (null without a record).
+    static ShadingTerms* termsOf(const Path& path, int v) {
+        PathVertex* p = vertex(path, v);
+        if (!p)
+            return nullptr;
+        p->shaded = true;
+        return &p->shading;
+    }
+    static glm::dvec3 recorded(const Path& path, int v, const glm::dvec3& colour) {
+        if (PathVertex* p = vertex(path, v))
+            p->colour = colour;
+        return colour;
+    }
+    // A reflecting vertex's reflection: R, tint, the lobe, and the direction followed.
+    static void recordReflection(const Path& path, int v, double r, bool fresnel, const glm::dvec3& tint,
+                                 double roughness, const glm::dvec3& mirrored, const glm::dvec3& followed,
+                                 double weight) {
+        PathVertex* p = vertex(path, v);
+        if (!p)
+            return;
+        p->reflectivity = r;
+        p->fresnel = fresnel;
+        p->tint = tint;
+        p->roughness = roughness;
+        p->mirrored = glm::normalize(mirrored);
+        p->outgoing = glm::normalize(followed);
+        p->lobeWeight = weight;
+        if (weight <= 0.0)
+            p->kind = PathEventKind::LostBelow;
+    }
 
     // The direction a reflection of `direction` about `normal` follows: the mirror direction for a
     // perfect mirror, a sample of the GGX lobe otherwise, with the sample's weight (0: nothing comes back).
@@ -145,7 +203,8 @@ struct Tracer::Impl {
         if (!hit) {
             if (id)
                 *id = {HitKind::Background, -1};
-            return input.settings.background;
+            const int v = record(path, PathEventKind::Background, {}, origin, direction, nullptr);
+            return recorded(path, v, input.settings.background);
         }
         const glm::dvec3 viewDir = -glm::normalize(direction);
         const Surface& surface = *hit->surface;
@@ -154,17 +213,26 @@ struct Tracer::Impl {
             if (id)
                 *id = {HitKind::Object, surface.index};
             const DrawItem& item = input.items[static_cast<std::size_t>(surface.index)];
-            return shader.shade(item.material, itemTexture[static_cast<std::size_t>(surface.index)], *hit,
-                                viewDir);
+            const int v = record(path, PathEventKind::Surface, {HitKind::Object, surface.index}, origin,
+                                 direction, &*hit);
+            return recorded(path, v,
+                            shader.shade(item.material, itemTexture[static_cast<std::size_t>(surface.index)],
+                                         *hit, viewDir, termsOf(path, v)));
         }
-        case SurfaceKind::Mirror:
+        case SurfaceKind::Mirror: {
+            const PixelId mirrorId{hit->frontFacing ? HitKind::Mirror : HitKind::MirrorBack, surface.index};
             if (id)
-                *id = {hit->frontFacing ? HitKind::Mirror : HitKind::MirrorBack, surface.index};
-            return mirrorRadiance(shader, settings, direction, *hit, viewDir, path);
-        case SurfaceKind::Reflector:
+                *id = mirrorId;
+            const int v = record(path, PathEventKind::Mirror, mirrorId, origin, direction, &*hit);
+            return recorded(path, v, mirrorRadiance(shader, settings, direction, *hit, viewDir, path, v));
+        }
+        case SurfaceKind::Reflector: {
             if (id)
                 *id = {HitKind::Reflector, surface.index};
-            return reflectorRadiance(shader, settings, direction, *hit, viewDir, path);
+            const int v = record(path, PathEventKind::Reflector, {HitKind::Reflector, surface.index}, origin,
+                                 direction, &*hit);
+            return recorded(path, v, reflectorRadiance(shader, settings, direction, *hit, viewDir, path, v));
+        }
         }
         return input.settings.background;
     }
@@ -173,12 +241,15 @@ struct Tracer::Impl {
     // in front, mirror.frag's surface·(1−R) + reflection·R·tint, Schlick's R with fresnel.
     glm::dvec3 mirrorRadiance(const Shader& shader, const TraceSettings& settings,
                               const glm::dvec3& direction, const Hit& hit, const glm::dvec3& viewDir,
-                              const Path& path) const {
+                              const Path& path, int v) const {
         const std::size_t m = static_cast<std::size_t>(hit.surface->index);
         const Mirror& mirror = input.mirrors[m];
         const MaterialTextures& texture = mirrorTexture[m];
-        if (!hit.frontFacing || !mirrorPlanes[m])
-            return shader.shade(mirror.material, texture, hit, viewDir);
+        if (!hit.frontFacing || !mirrorPlanes[m]) {
+            if (PathVertex* p = vertex(path, v))
+                p->kind = PathEventKind::Surface;
+            return shader.shade(mirror.material, texture, hit, viewDir, termsOf(path, v));
+        }
         const glm::dvec3 normal = mirrorPlanes[m]->normal;
         double r = std::clamp(mirror.reflectivity, 0.0, 1.0);
         if (mirror.fresnel) {
@@ -190,19 +261,27 @@ struct Tracer::Impl {
             Hit surfaceHit = hit;
             surfaceHit.normal = normal;
             result += shader.shade(mirror.hasMaterial ? mirror.material : Material{},
-                                   mirror.hasMaterial ? texture : MaterialTextures{}, surfaceHit, viewDir) *
+                                   mirror.hasMaterial ? texture : MaterialTextures{}, surfaceHit, viewDir,
+                                   termsOf(path, v)) *
                       (1.0 - r);
         }
+        recordReflection(path, v, r, mirror.fresnel, mirror.tint, mirror.roughness, glm::dvec3(0.0),
+                         glm::dvec3(0.0), 1.0);
         // Beyond the depth limit the reflection is not followed and adds nothing (as a path tracer's
         // bounce limit ends a path): the last mirror of a corridor is dark, not lit like a wall.
-        if (path.mirrorLevel + 1 > path.mirrorLimit)
+        if (path.mirrorLevel + 1 > path.mirrorLimit) {
+            if (PathVertex* p = vertex(path, v))
+                p->kind = PathEventKind::DepthLimit;
             return result;
+        }
         Path next = path;
         next.mirrorLevel += 1;
         next.farLeft = path.farLeft - hit.t;
         double weight = 1.0;
         const glm::dvec3 reflected =
             reflectedDirection(direction, normal, viewDir, mirror.roughness, path, next, weight);
+        recordReflection(path, v, r, mirror.fresnel, mirror.tint, mirror.roughness,
+                         direction - 2.0 * glm::dot(direction, normal) * normal, reflected, weight);
         if (weight <= 0.0) // a lobe sample lost below the mirror
             return result;
         const double eps = SceneGeometry::offset(hit.position);
@@ -218,12 +297,15 @@ struct Tracer::Impl {
     // last (TraceSettings::reflectorDepth).
     glm::dvec3 reflectorRadiance(const Shader& shader, const TraceSettings& settings,
                                  const glm::dvec3& direction, const Hit& hit, const glm::dvec3& viewDir,
-                                 const Path& path) const {
+                                 const Path& path, int v) const {
         const auto index = static_cast<std::size_t>(hit.surface->index);
         const Reflector& reflector = input.reflectors[index];
         const MaterialTextures& texture = reflectorTexture[index];
-        if (path.reflectorLevel >= settings.reflectorDepth || path.lastReflector == hit.surface->index)
-            return shader.shade(reflector.material, texture, hit, viewDir);
+        if (path.reflectorLevel >= settings.reflectorDepth || path.lastReflector == hit.surface->index) {
+            if (PathVertex* p = vertex(path, v))
+                p->kind = PathEventKind::Surface;
+            return shader.shade(reflector.material, texture, hit, viewDir, termsOf(path, v));
+        }
         double r = std::clamp(reflector.reflectivity, 0.0, 1.0);
         if (reflector.fresnel) {
             const double c = std::clamp(glm::dot(hit.normal, viewDir), 0.0, 1.0);
@@ -231,7 +313,7 @@ struct Tracer::Impl {
         }
         glm::dvec3 result(0.0);
         if (r < 1.0)
-            result += shader.shade(reflector.material, texture, hit, viewDir) * (1.0 - r);
+            result += shader.shade(reflector.material, texture, hit, viewDir, termsOf(path, v)) * (1.0 - r);
         // Reflected about the interpolated normal (what an environment-map lookup uses too); the new ray
         // leaves from the side the viewer is on. An environment map has no far plane, and shows planar
         // mirrors to the reflector's own mirror depth.
@@ -245,6 +327,8 @@ struct Tracer::Impl {
         double weight = 1.0;
         const glm::dvec3 reflected =
             reflectedDirection(d, hit.normal, viewDir, reflector.roughness, path, next, weight);
+        recordReflection(path, v, r, reflector.fresnel, glm::dvec3(1.0), reflector.roughness,
+                         d - 2.0 * glm::dot(d, hit.normal) * hit.normal, reflected, weight);
         if (weight <= 0.0) // a lobe sample lost below the (interpolated) surface
             return result;
         const glm::dvec3 side =
@@ -341,6 +425,21 @@ struct Tracer::Impl::PixelTracer {
         return s;
     }
 
+    // Path k through pixel (x, y)'s centre, recorded vertex by vertex: path 0 is the pixel's first path
+    // (without SSAA, exactly the one the still traced first), k > 0 the k-th further lobe sample.
+    TracedPath recordPath(int x, int y, int k) const {
+        TracedPath traced;
+        bool rough = false;
+        Path path = primary;
+        path.seed = {static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y),
+                     std::uint32_t(k) * static_cast<std::uint32_t>(n * n)};
+        path.rough = &rough;
+        path.record = &traced;
+        traced.colour = storableRadiance(impl.radiance(
+            shader, settings, glm::dvec3(0.0), rayThrough(x + 0.5, y + 0.5), camera.near, path, nullptr));
+        return traced;
+    }
+
     Pixel tracePixel(int x, int y) const {
         glm::dvec3 sum(0.0), error2(0.0);
         Pixel pixel;
@@ -379,6 +478,7 @@ base::Result<Tracer> Tracer::create(const FrameInput& input) {
     auto impl = std::make_unique<Impl>();
     impl->input = input;
     const glm::dvec3 origin = input.camera.position;
+    impl->cameraPosition = origin;
     // Every texture first: masked materials' alpha decides which hits count while the rays are traced,
     // and the geometry keeps pointers into the (then complete) set.
     for (const DrawItem& item : impl->input.items)
@@ -404,6 +504,73 @@ base::Result<Tracer> Tracer::create(const FrameInput& input) {
     impl->warnings.insert(impl->warnings.end(), impl->textures.warnings().begin(),
                           impl->textures.warnings().end());
     return Tracer(std::move(impl));
+}
+
+base::Result<PixelPaths> Tracer::explainPixel(const TraceSettings& settings, int x, int y, int windowRadius,
+                                              int samplePaths) const {
+    if (base::Status size = checkStillSize(settings.width, settings.height); !size)
+        return base::Error{size.error()};
+    if (x < 0 || y < 0 || x >= settings.width || y >= settings.height)
+        return base::Error{"pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
+                           std::to_string(settings.width) + "x" + std::to_string(settings.height) + " image"};
+    const Impl::PixelTracer tracer(*m_impl, settings);
+    PixelPaths out;
+    out.x = x;
+    out.y = y;
+    const Impl::PixelTracer::Pixel pixel = tracer.tracePixel(x, y);
+    // As render() stores them: floats.
+    out.colour = glm::dvec3(glm::vec3(pixel.colour));
+    out.noise = glm::dvec3(glm::vec3(pixel.variance));
+    out.glossy = pixel.glossy;
+    out.id = pixel.id;
+    out.centre = tracer.recordPath(x, y, 0);
+    const bool rough = std::any_of(out.centre.vertices.begin(), out.centre.vertices.end(),
+                                   [](const PathVertex& v) { return v.roughness > 0.0; });
+    const int more = rough ? std::clamp(std::min(samplePaths, tracer.paths) - 1, 0, kMaxTraceSamples) : 0;
+    for (int k = 1; k <= more; ++k)
+        out.samples.push_back(tracer.recordPath(x, y, k));
+    const int r = std::max(windowRadius, 0);
+    out.windowX = std::max(x - r, 0);
+    out.windowY = std::max(y - r, 0);
+    out.windowWidth = std::min(x + r, settings.width - 1) - out.windowX + 1;
+    out.windowHeight = std::min(y + r, settings.height - 1) - out.windowY + 1;
+    for (int j = 0; j < out.windowHeight; ++j)
+        for (int i = 0; i < out.windowWidth; ++i)
+            out.window.push_back(
+                glm::dvec3(glm::vec3(tracer.tracePixel(out.windowX + i, out.windowY + j).colour)));
+    return out;
+}
+
+RayHit Tracer::firstHit(const glm::dvec3& origin, const glm::dvec3& direction, int ignoreReflector) const {
+    RayHit out;
+    out.distance = kInfinity;
+    const double length = glm::length(direction);
+    if (!(length > 0.0) || !std::isfinite(length))
+        return out;
+    const glm::dvec3 d = direction / length;
+    const glm::dvec3 start = origin - m_impl->cameraPosition;
+    std::optional<Hit> hit;
+    double t = 0.0;
+    // Through the ignored reflector's own surface (in and out of it) and on; a few crossings at most.
+    for (int crossing = 0; crossing < 16; ++crossing) {
+        hit = m_impl->geometry->intersect(start, d, t, kInfinity);
+        if (!hit || hit->surface->kind != SurfaceKind::Reflector || hit->surface->index != ignoreReflector)
+            break;
+        t = hit->t + SceneGeometry::offset(hit->position);
+        hit.reset();
+    }
+    if (!hit)
+        return out;
+    const Surface& s = *hit->surface;
+    HitKind kind = HitKind::Reflector;
+    if (s.kind == SurfaceKind::Object)
+        kind = HitKind::Object;
+    else if (s.kind == SurfaceKind::Mirror)
+        kind = hit->frontFacing ? HitKind::Mirror : HitKind::MirrorBack;
+    out.id = {kind, s.index};
+    out.distance = hit->t;
+    out.position = hit->position + m_impl->cameraPosition;
+    return out;
 }
 
 base::Result<TraceResult> Tracer::render(const TraceSettings& settings, const TraceProgress& progress) const {

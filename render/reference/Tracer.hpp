@@ -4,6 +4,7 @@
 #include "render/frame/FrameInput.hpp"
 #include "render/image/Image.hpp"
 #include "render/reference/IdBuffer.hpp"
+#include "render/reference/PathRecord.hpp"
 
 #include <functional>
 #include <memory>
@@ -68,6 +69,34 @@ struct TraceResult {
     int glossyPixels = 0; // pixels with a sub-sample that needed several paths
 };
 
+// One pixel explained: its colour exactly as the traced still has it, and the paths that made it.
+struct PixelPaths {
+    int x = 0;
+    int y = 0;
+    glm::dvec3 colour{0.0}; // the still's pixel (TraceResult::image) for the same settings
+    glm::dvec3 noise{0.0};  // its squared standard error (TraceResult::noise)
+    bool glossy = false;    // a sub-sample met a rough surface: the colour is an average of paths
+    PixelId id;             // what the pixel's centre shows
+    // The ray through the pixel's centre and the path it starts, recorded vertex by vertex.
+    TracedPath centre;
+    // Where the centre's path met a rough surface: further samples of the lobe through the same centre
+    // (the paths the still averaged, without SSAA), each recorded the same way.
+    std::vector<TracedPath> samples;
+    // The traced colours of the window around the pixel (clipped to the image), row by row from the top.
+    int windowX = 0;
+    int windowY = 0;
+    int windowWidth = 0;
+    int windowHeight = 0;
+    std::vector<glm::dvec3> window;
+};
+
+// What a ray from a world point meets first (Tracer::firstHit).
+struct RayHit {
+    PixelId id;               // Background: nothing
+    double distance = 0.0;    // world units; infinite for nothing
+    glm::dvec3 position{0.0}; // world
+};
+
 // The exact reference: renders a FrameInput by ray tracing (Embree 3) with the rasterizer's shading
 // model (shaders/material.glsl, lighting.glsl, mirror.frag), so that every difference between the two
 // images is an approximation of the rasterizer's, not a difference of models.
@@ -115,6 +144,16 @@ public:
 
     // Renders width × height. Errors: a size that is not positive, or the caller cancelled.
     base::Result<TraceResult> render(const TraceSettings& settings, const TraceProgress& progress = {}) const;
+
+    // Explains pixel (x, y) of the image `settings` describes: the traced paths through its centre, up to
+    // `samplePaths` of them where it is glossy, its colour as render() gives it, and the colours of the
+    // pixels up to `windowRadius` away. Errors: a pixel outside the image, a size that is not positive.
+    base::Result<PixelPaths> explainPixel(const TraceSettings& settings, int x, int y, int windowRadius = 2,
+                                          int samplePaths = 8) const;
+
+    // The first surface a ray from `origin` (world) along `direction` meets, mirrors and reflectors
+    // included but for reflector `ignoreReflector` (what its own map, captured from inside it, leaves out).
+    RayHit firstHit(const glm::dvec3& origin, const glm::dvec3& direction, int ignoreReflector = -1) const;
 
     // Warnings from building the scene: textures that failed to load, triangles dropped as invalid.
     const std::vector<std::string>& warnings() const;

@@ -103,6 +103,9 @@ RenderOptions sampleOptions(const StillSettings& settings, const TileGrid& grid,
     options.preview = settings.preview;
     options.countScreenSpace = true;
     options.showScreenSpaceSources = settings.showScreenSpaceSources;
+    // The first sample is the one StillResult::firstSample reports; a tiled still probes nothing.
+    if (step == 0 && grid.count() == 1)
+        options.probePixel = settings.probePixel;
     return options;
 }
 

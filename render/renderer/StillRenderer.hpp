@@ -7,6 +7,7 @@
 #include "render/renderer/Renderer.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace speculum::render {
@@ -30,6 +31,9 @@ struct StillSettings {
     // RenderOptions::preview for every sample (`speculum explain --preview` shows what a preview gives up);
     // ignored where the still is drawn in tiles.
     PreviewPolicy preview;
+    // RenderOptions::probePixel for the first sample, whose report is StillResult::firstSample (pixel
+    // (x, y) of the image, y from the top); ignored where the still is drawn in tiles.
+    std::optional<glm::ivec2> probePixel;
 };
 
 // Reports progress in 0..1 with a short stage name; returning false cancels the render.

@@ -4,6 +4,7 @@
 speculum_add_test(AppGLTest TIER gl USES_CLI
     SOURCES CliGLTest.cpp CliReferenceGLTest.cpp CliWriteFailuresGLTest.cpp CliTexturesGLTest.cpp
             CliSignalsGLTest.cpp BenchCommandGLTest.cpp TimeCommandGLTest.cpp CliReflectorsGLTest.cpp
+            CliPixelGLTest.cpp
     LIBS Qt6::Core PkgConfig::OIIO ZLIB::ZLIB speculum_render_renderer)
 # `speculum bench` on the chrome and mirrors demos at the quick size: tens of seconds each, so slow.
 speculum_add_test(AppSlowGLTest TIER gl USES_CLI LABELS slow

@@ -173,5 +173,36 @@ TEST_F(FrameReportTest, GpuTimerTakesOneTimestampPerPassBoundary) {
     }
 }
 
+// Explaining a pixel reads back what each pass left there; a frame that is only drawn records nothing.
+TEST_F(FrameReportTest, APixelIsProbedOnlyWhenAskedAndItsLastProbeIsTheStillsPixel) {
+    const FrameInput input = roomWithBall(64);
+    const FrameReport plain = renderFrame(renderer(), input, false);
+    EXPECT_TRUE(plain.probes.empty());
+    StillSettings settings{kWidth, kHeight, 1};
+    settings.reuseMaps = false;
+    const glm::ivec2 pixel(60, 30); // on the ball
+    settings.probePixel = pixel;
+    auto still = renderStill(renderer(), input, settings);
+    ASSERT_TRUE(still.ok()) << still.error();
+    const FrameReport& report = still->firstSample;
+    ASSERT_EQ(report.probes.size(), report.ran.size()) << "one probe per pass that ran";
+    // The maps' passes draw into maps of their own: nothing of the camera's size to read.
+    for (const PixelProbe& probe : report.probes) {
+        const PassKind kind = report.planned(report.ran[std::size_t(probe.run)]).kind;
+        if (kind == PassKind::Shadow || kind == PassKind::Envmap) {
+            EXPECT_FALSE(probe.readable);
+        }
+    }
+    const PixelProbe& last = report.probes.back();
+    ASSERT_TRUE(last.readable);
+    const std::size_t p = (std::size_t(pixel.y) * kWidth + std::size_t(pixel.x)) * 4;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_FLOAT_EQ(last.colour[c], still->image.rgba[p + std::size_t(c)]) << "channel " << c;
+    // The pixels the still draws are the same with and without the probe.
+    const auto unprobed = renderStill(renderer(), input, StillSettings{kWidth, kHeight, 1});
+    ASSERT_TRUE(unprobed.ok());
+    EXPECT_EQ(unprobed->image.rgba, still->image.rgba);
+}
+
 } // namespace
 } // namespace speculum::test
