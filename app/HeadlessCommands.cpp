@@ -476,8 +476,15 @@ int runExplain(const CliOptions& options) {
         fail("explain: " + still.error());
         return 1;
     }
-    if (options.pixel)
-        return printPixelExplanation(options, frame->input, *still, frame->glDescription);
+    if (options.pixel) {
+        const render::StillSettings size{options.width, options.height, 1, render::maxStillSize()};
+        const auto source = render::screenSpaceSourceAt(*frame->renderer, frame->input, size, *options.pixel);
+        if (!source) {
+            fail("explain: " + source.error());
+            return 1;
+        }
+        return printPixelExplanation(options, frame->input, *still, *source, frame->glDescription);
+    }
     const render::FrameReport& report = still->firstSample;
     // A map's mirrors are those its envmap pass drew: none when the pass did not run (no map could be
     // allocated), though the plan still holds them.

@@ -170,16 +170,21 @@ void printJson(const CliOptions& options, const render::FrameInput& input, const
                                  {"windowRadius", e.windowRadius},
                                  {"windowRmse", e.windowRmse},
                                  {"windowPsnr", e.windowPsnr}};
-    const QJsonObject root{{"pixel", QJsonArray{e.x, e.y}},
-                           {"size", text(std::to_string(e.width) + "x" + std::to_string(e.height))},
-                           {"time", options.time},
-                           {"raster", QJsonObject{{"colour", vec(e.rasterColour)}, {"steps", recipeJson(e)}}},
-                           {"exact", exact},
-                           {"lookup", lookupJson(e)},
-                           {"difference", difference},
-                           {"causes", causes},
-                           {"notes", notes},
-                           {"renderer", text(renderer)}};
+    const QJsonObject root{
+        {"pixel", QJsonArray{e.x, e.y}},
+        {"size", text(std::to_string(e.width) + "x" + std::to_string(e.height))},
+        {"time", options.time},
+        {"raster", QJsonObject{{"colour", vec(e.rasterColour)}, {"steps", recipeJson(e)}}},
+        {"exact", exact},
+        {"lookup", lookupJson(e)},
+        {"difference", difference},
+        {"screenSpace",
+         e.screenSpaceHit < 0.0
+             ? QJsonValue()
+             : QJsonValue(QJsonObject{{"hit", e.screenSpaceHit}, {"fallback", text(e.screenSpaceFallback)}})},
+        {"causes", causes},
+        {"notes", notes},
+        {"renderer", text(renderer)}};
     std::cout << QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString();
 }
 
@@ -283,7 +288,8 @@ void printText(const CliOptions& options, const render::FrameInput& input, const
 } // namespace
 
 int printPixelExplanation(const CliOptions& options, const render::FrameInput& input,
-                          const render::StillResult& still, const std::string& renderer) {
+                          const render::StillResult& still,
+                          const std::optional<glm::dvec3>& screenSpaceSource, const std::string& renderer) {
     auto tracer = render::reference::Tracer::create(input);
     if (!tracer) {
         printError("explain: " + tracer.error());
@@ -297,7 +303,8 @@ int printPixelExplanation(const CliOptions& options, const render::FrameInput& i
         printError("explain: " + paths.error());
         return 1;
     }
-    auto explained = render::inspect::explainPixel(input, still.firstSample, still.image, *paths, *tracer);
+    auto explained = render::inspect::explainPixel(input, still.firstSample, still.image, *paths, *tracer,
+                                                   screenSpaceSource);
     if (!explained) {
         printError("explain: " + explained.error());
         return 1;

@@ -129,7 +129,9 @@ void InspectPanel::show(const render::inspect::PixelExplanation& e, const render
     for (const render::inspect::RecipeStep& s : e.recipe) {
         auto* item = new QTreeWidgetItem(
             raster, {QString::fromStdString(s.pass + (s.target.empty() ? "" : " " + s.target)),
-                     s.readable ? colour(s.colour) : QString(), QString::fromStdString(s.what)});
+                     s.readable ? colour(s.colour) : QString(),
+                     QString::fromStdString(
+                         s.what + (s.stencil >= 0 ? "; stencil " + std::to_string(s.stencil) : ""))});
         item->setToolTip(2, QString::fromStdString(s.why));
         item->setData(0, kNodeRole, QString::fromStdString(s.target));
     }

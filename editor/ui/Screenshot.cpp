@@ -38,6 +38,9 @@ ScreenshotRequest screenshotRequestFromEnvironment() {
     const QStringList click = qEnvironmentVariable("SPECULUM_SCREENSHOT_CLICK").split(QLatin1Char(','));
     if (click.size() == 2)
         request.click = QPoint(click[0].toInt(), click[1].toInt());
+    const QString then = qEnvironmentVariable("SPECULUM_SCREENSHOT_THEN");
+    if (!then.isEmpty())
+        request.actionsAfterClick = then.split(QLatin1Char(':'), Qt::SkipEmptyParts);
     const QString imports = qEnvironmentVariable("SPECULUM_SCREENSHOT_IMPORT");
     if (!imports.isEmpty()) {
         request.imports = imports.split(QLatin1Char(':'), Qt::SkipEmptyParts);
@@ -102,6 +105,9 @@ int takeScreenshot(MainWindow& window, const ScreenshotRequest& request) {
             clickPending = false;
             QTimer::singleShot(0, &loop, [&] {
                 clickViewport(window.viewport(), *request.click);
+                for (const QString& name : request.actionsAfterClick)
+                    if (auto* action = window.findChild<QAction*>(name))
+                        action->trigger();
                 targetFrames = window.viewport().framesRendered() + request.frames;
                 window.viewport().update();
             });

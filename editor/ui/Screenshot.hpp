@@ -26,6 +26,9 @@ struct ScreenshotRequest {
     // SPECULUM_SCREENSHOT_CLICK=X,Y: a left click at this point of the viewport (its own coordinates) once it
     // has drawn, as a user's (with View ▸ Inspect Pixel on among the actions, it explains that pixel).
     std::optional<QPoint> click;
+    // SPECULUM_SCREENSHOT_THEN: actions triggered after the click, as SPECULUM_SCREENSHOT_ACTIONS before it
+    // (a view preset, to see the inspected path from the side).
+    QStringList actionsAfterClick;
     int frames = 3;         // frames the viewport draws before the grab
     int timeoutMs = 120000; // give up (exit 1) if the viewport has not drawn by then
 };

@@ -198,6 +198,8 @@ public slots:
     void setInspecting(bool on);
     bool inspecting() const { return m_inspecting; }
     void clearInspection();
+    // The inspected pixel's path as the view draws it (world-space lines; empty: none).
+    const std::vector<render::GuideLine>& inspectedPath() const { return m_inspectionGuides; }
     // Explains the pixel at `position` (widget coordinates): renders the frame once with the pixel's
     // recipe recorded and traces the pixel, then draws its path. Used by the click and by tests.
     void inspectAt(QPointF position);

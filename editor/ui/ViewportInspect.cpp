@@ -46,6 +46,8 @@ void Viewport::inspectAt(QPointF position) {
     settings.probePixel = pixel;
     settings.reuseMaps = false; // the recipe then holds every map the pixel reads, drawn in this frame
     auto still = render::renderStill(*m_renderer, input, settings);
+    auto source = still ? render::screenSpaceSourceAt(*m_renderer, input, settings, pixel)
+                        : base::Result<std::optional<glm::dvec3>>(std::optional<glm::dvec3>());
     doneCurrent();
     auto fail = [&](const std::string& message) {
         QGuiApplication::restoreOverrideCursor();
@@ -53,6 +55,8 @@ void Viewport::inspectAt(QPointF position) {
     };
     if (!still)
         return fail("the frame could not be drawn: " + still.error());
+    if (!source)
+        return fail("the screen-space sources could not be drawn: " + source.error());
     auto tracer = render::reference::Tracer::create(input);
     if (!tracer)
         return fail(tracer.error());
@@ -62,7 +66,8 @@ void Viewport::inspectAt(QPointF position) {
     auto paths = tracer->explainPixel(trace, pixel.x, pixel.y);
     if (!paths)
         return fail(paths.error());
-    auto explained = render::inspect::explainPixel(input, still->firstSample, still->image, *paths, *tracer);
+    auto explained =
+        render::inspect::explainPixel(input, still->firstSample, still->image, *paths, *tracer, *source);
     if (!explained)
         return fail(explained.error());
     QGuiApplication::restoreOverrideCursor();

@@ -59,7 +59,12 @@ std::string glossyText(const Mirror& mirror, const MirrorView& view, const Reaso
     if (!(mirror.roughness > 0.0))
         return "";
     const std::string filter(names::kGlossyFilters[std::size_t(view.glossyFilter)].file);
-    std::string text = "; rough " + number(mirror.roughness) + ": " + filter + " filter";
+    const double alpha = mirror.roughness * mirror.roughness;
+    // The GGX lobe is about 2.6 α wide at half its peak (the half-vector's density halves at tan θ = 0.64 α,
+    // and the reflection turns by twice the half-vector's angle).
+    std::string text = "; rough " + number(mirror.roughness) + " (a lobe about " +
+                       number(2.6 * alpha * 180.0 / M_PI, 1) + "° wide at half its peak): " + filter +
+                       " filter";
     if (details.glossyTaps > 0)
         text += ", " + std::to_string(details.glossyTaps) + " taps a pixel over the lobe's footprint";
     return text;
@@ -228,6 +233,16 @@ glm::ivec3 texelOf(const envmap::MapLayout& layout, const glm::dvec3& d) {
     return {x, y, coord.component};
 }
 
+// Texels from the lookup's nominal uv to its component's edge (the rim, for a paraboloid).
+double seamDistance(const envmap::MapLayout& layout, const glm::dvec3& d) {
+    const envmap::MapCoord coord = envmap::toMap(layout.type, d);
+    const glm::dvec2 texels(layout.width * layout.scale.x, layout.height * layout.scale.y); // nominal square
+    if (layout.type == envmap::MapType::DualParaboloid)
+        return (1.0 - glm::length(coord.uv * 2.0 - 1.0)) * 0.5 * texels.x;
+    const glm::dvec2 edge = glm::min(coord.uv, 1.0 - coord.uv) * texels;
+    return std::min(edge.x, edge.y);
+}
+
 void lookupFilter(const FrameInput& input, const Reflector& r, const envmap::MapLayout& layout,
                   MapLookup& out) {
     const double roughness = std::clamp(r.roughness, 0.0, 1.0);
@@ -279,6 +294,8 @@ std::optional<MapLookup> mapLookup(const FrameInput& input, const FramePlan& pla
     const envmap::MapLayout cube = envmap::makeLayout(envmap::MapType::Cube, out.resolution);
     const glm::ivec3 cubeTexel = texelOf(cube, out.lookup);
     out.cubeTexelSolidAngle = envmap::texelSolidAngle(cube, cubeTexel.x, cubeTexel.y);
+    out.seamTexels = seamDistance(layout, out.lookup);
+    out.guard = layout.guard;
     lookupFilter(input, r, layout, out);
     return out;
 }
@@ -352,6 +369,41 @@ Cause texelCause(const MapLookup& lookup) {
                               "° across)"};
 }
 
+std::optional<Cause> seamCause(const MapLookup& lookup) {
+    if (!(lookup.seamTexels < 2.0))
+        return std::nullopt;
+    const std::string where = number(std::max(lookup.seamTexels, 0.0)) + " texels from the edge of the " +
+                              lookup.componentLabel + " of the " + lookup.layout + " map: ";
+    if (lookup.layout == "cube")
+        return Cause{"seam", where + "GL's seamless cube filtering blends it with the neighbouring face"};
+    return Cause{"seam",
+                 where + "the " + std::to_string(lookup.guard) +
+                     "-texel guard band holds the mapping's continuation there, so filtering reads the "
+                     "environment, not a clamped edge"};
+}
+
+// Whether the pixel's neighbours show something else than it does (an edge or a silhouette).
+std::optional<Cause> edgeCause(const FrameInput& input, const reference::PixelPaths& exact) {
+    std::vector<PixelId> others;
+    for (int j = 0; j < exact.windowHeight; ++j)
+        for (int i = 0; i < exact.windowWidth; ++i) {
+            const int dx = exact.windowX + i - exact.x, dy = exact.windowY + j - exact.y;
+            const PixelId& id = exact.windowIds[std::size_t(j * exact.windowWidth + i)];
+            if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && !(id == exact.id) &&
+                std::find(others.begin(), others.end(), id) == others.end())
+                others.push_back(id);
+        }
+    if (others.empty())
+        return std::nullopt;
+    std::string names;
+    for (const PixelId& id : others)
+        names += (names.empty() ? "" : ", ") + nameOf(input, id);
+    return Cause{"edge",
+                 "this pixel is on an edge: " + nameOf(input, exact.id) + " here, " + names +
+                     " beside it; a rasterizer covers a pixel by its centre and the two renderers place "
+                     "an edge a fraction of a pixel apart, so edge pixels dominate the window's error"};
+}
+
 void pathCauses(const FrameInput& input, const PixelExplanation& e, std::vector<Cause>& causes) {
     const TracedPath& path = e.exact.centre;
     int reflectorBounces = 0;
@@ -384,7 +436,7 @@ void pathCauses(const FrameInput& input, const PixelExplanation& e, std::vector<
 }
 
 void shadowCauses(const FrameInput& input, const FramePlan& plan, const TracedPath& path,
-                  std::vector<Cause>& causes) {
+                  const reference::Tracer& tracer, std::vector<Cause>& causes) {
     const auto last = std::find_if(path.vertices.rbegin(), path.vertices.rend(),
                                    [](const PathVertex& v) { return v.shaded; });
     if (last == path.vertices.rend())
@@ -393,16 +445,51 @@ void shadowCauses(const FrameInput& input, const FramePlan& plan, const TracedPa
         if (!t.shadowed || t.nDotL <= 0.0 || t.cone <= 0.0)
             continue;
         const ShadowPlan* shadow = plan.shadowOf(t.light);
+        const double filtered = tracer.footprintVisibility(t.light, last->position, last->normal);
         const std::string answer = t.visibility >= 1.0   ? "reaches the light"
                                    : t.visibility <= 0.0 ? "is blocked"
                                                          : "is partly blocked";
+        std::string text = "light " + quoted(input.lights[std::size_t(t.light)].name) + " at " +
+                           nameOf(input, last->hit) + ": the exact shadow ray " + answer;
+        if (shadow)
+            text += "; the raster filters its " + std::to_string(shadow->mapSize) + "² shadow map " +
+                    std::to_string(shadow->pcf) + "×" + std::to_string(shadow->pcf) +
+                    ", whose footprint here is " + number(filtered * 100.0, 0) + " % lit";
+        const bool edge = shadow && std::abs(filtered - t.visibility) > 0.05;
+        if (edge)
+            text += ": a shadow's edge, where the filtered map and the exact ray disagree";
+        causes.push_back({edge ? "shadow-edge" : "shadow", text});
+    }
+}
+
+const Material* materialOf(const FrameInput& input, const PixelId& id) {
+    switch (id.kind) {
+    case HitKind::Object:
+        return &input.items[std::size_t(id.index)].material;
+    case HitKind::Mirror:
+    case HitKind::MirrorBack:
+        return &input.mirrors[std::size_t(id.index)].material;
+    case HitKind::Reflector:
+        return &input.reflectors[std::size_t(id.index)].material;
+    case HitKind::Background:
+        return nullptr;
+    }
+    return nullptr;
+}
+
+// A textured surface: the two renderers filter its texture differently.
+void textureCause(const FrameInput& input, const TracedPath& path, std::vector<Cause>& causes) {
+    for (const PathVertex& v : path.vertices) {
+        const Material* m = v.shaded ? materialOf(input, v.hit) : nullptr;
+        if (!m || (m->texture.empty() && m->normalTexture.empty() && m->emissionTexture.empty()))
+            continue;
         causes.push_back(
-            {"shadow",
-             "light " + quoted(input.lights[std::size_t(t.light)].name) + " at " + nameOf(input, last->hit) +
-                 ": the exact shadow ray " + answer +
-                 (shadow ? "; the raster filters its " + std::to_string(shadow->mapSize) + "² shadow map " +
-                               std::to_string(shadow->pcf) + "×" + std::to_string(shadow->pcf)
-                         : std::string())});
+            {"texture-filter", nameOf(input, v.hit) +
+                                   " is textured: the raster filters the mip level of the pixel's "
+                                   "footprint, the tracer samples the full-resolution image at the "
+                                   "pixel's centre (no mip maps), so a texture seen from afar differs "
+                                   "pixel by pixel; supersample both to compare"});
+        return;
     }
 }
 
@@ -426,12 +513,17 @@ double meanSpreadDegrees(const reference::PixelPaths& exact) {
 void glossyCause(const PixelExplanation& e, std::vector<Cause>& causes) {
     if (!e.exact.glossy)
         return;
-    causes.push_back(
-        {"glossy-noise", "the exact colour averages sampled paths of a rough lobe (mean " +
-                             number(meanSpreadDegrees(e.exact), 1) +
-                             "° from the mirror direction over the paths listed): its standard error is " +
-                             number(e.exactStandardError, 4) +
-                             " (linear), so a difference below that is noise, not the raster's error"});
+    const glm::dvec3 gap = glm::abs(e.rasterColour - e.exactColour);
+    const double difference = (gap.r + gap.g + gap.b) / 3.0;
+    const double errors = e.exactStandardError > 0.0 ? difference / e.exactStandardError : 0.0;
+    std::string text = "the exact colour averages sampled paths of a rough lobe (mean " +
+                       number(meanSpreadDegrees(e.exact), 1) +
+                       "° from the mirror direction over the paths listed); its standard error is " +
+                       number(e.exactStandardError, 4) + " (linear) and the raster differs by " +
+                       number(difference, 4) + ", " + number(errors, 1) + " standard errors: ";
+    text += errors < 2.0 ? "within the reference's noise, not measurable at this sample count"
+                         : "more than its noise explains, so the raster's filter is off here";
+    causes.push_back({"glossy-noise", text});
 }
 
 glm::dvec3 encoded(const glm::dvec3& c) {
@@ -468,6 +560,57 @@ void windowError(const Image& raster, PixelExplanation& e) {
     }
 }
 
+// Whether the pixel's first surface draws its reflection by a screen-space trace.
+bool tracedInTheImage(const FrameInput& input, const reference::PixelPaths& exact) {
+    if (exact.id.kind == HitKind::Mirror)
+        return input.mirrors[std::size_t(exact.id.index)].technique == MirrorTechnique::ScreenSpace;
+    if (exact.id.kind == HitKind::Reflector)
+        return input.reflectors[std::size_t(exact.id.index)].technique == ReflectorTechnique::ScreenSpace;
+    return false;
+}
+
+// The sources view's colour is mix(fallback, green, confidence), the fallback blue (the map) or red (the
+// background).
+void screenSpaceCause(const glm::dvec3& source, PixelExplanation& e) {
+    const double fallback = std::max(source.r, source.b);
+    const double total = source.g + fallback;
+    if (!(total > 1e-6))
+        return;
+    e.screenSpaceHit = source.g / total;
+    e.screenSpaceFallback = source.b >= source.r ? "the reflector's map" : "the background";
+    const int percent = int(std::lround(e.screenSpaceHit * 100.0));
+    e.causes.push_back(
+        {"screen-space", "the screen-space trace met this pixel's reflection in the camera's image for " +
+                             std::to_string(percent) + " % of it, the rest from " + e.screenSpaceFallback +
+                             (percent < 100 ? ": what the image does not hold (off screen, hidden, "
+                                              "behind the mirror) is not where the exact ray finds it"
+                                            : "")});
+}
+
+// A reflection texture is shared by the views of one nesting level, one after the other: of the writes to
+// its pixel, only the last before a mirror surface reads it reaches the image.
+std::vector<RecipeStep> readReflectionWrites(const FrameReport& report, std::vector<RecipeStep> steps) {
+    std::vector<bool> keep(steps.size(), true);
+    std::map<int, std::size_t> pending; // slot → the step that last wrote it, not yet read
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const PassWrites& writes = report.planned(report.ran[std::size_t(steps[i].run)]).writes;
+        if (writes.target == PassTarget::Reflection && steps[i].wrote) {
+            if (const auto before = pending.find(writes.slot); before != pending.end())
+                keep[before->second] = false;
+            pending[writes.slot] = i;
+        }
+        if (writes.readSlot >= 0)
+            pending.erase(writes.readSlot);
+    }
+    for (const auto& [slot, unread] : pending)
+        keep[unread] = false;
+    std::vector<RecipeStep> out;
+    for (std::size_t i = 0; i < steps.size(); ++i)
+        if (keep[i])
+            out.push_back(std::move(steps[i]));
+    return out;
+}
+
 // Which recipe steps matter to the pixel: those that wrote it, and the maps its path reads.
 void keepStepsOfThePixel(const FrameInput& input, const FrameReport& report, PixelExplanation& e) {
     std::vector<bool> reflectorSeen(input.reflectors.size(), false), lightShaded(input.lights.size(), false);
@@ -493,14 +636,15 @@ void keepStepsOfThePixel(const FrameInput& input, const FrameReport& report, Pix
         if (step.wrote || step.feeds)
             kept.push_back(std::move(step));
     }
-    e.recipe = std::move(kept);
+    e.recipe = readReflectionWrites(report, std::move(kept));
 }
 
 } // namespace
 
 base::Result<PixelExplanation> explainPixel(const FrameInput& input, const FrameReport& report,
                                             const Image& raster, const reference::PixelPaths& exact,
-                                            const reference::Tracer& tracer) {
+                                            const reference::Tracer& tracer,
+                                            const std::optional<glm::dvec3>& screenSpaceSource) {
     if (exact.x < 0 || exact.y < 0 || exact.x >= raster.width || exact.y >= raster.height)
         return base::Error{"pixel " + std::to_string(exact.x) + "," + std::to_string(exact.y) +
                            " is outside the " + std::to_string(raster.width) + "x" +
@@ -528,9 +672,16 @@ base::Result<PixelExplanation> explainPixel(const FrameInput& input, const Frame
         if (auto cause = captureCause(input, *e.lookup, exact.centre, tracer))
             e.causes.push_back(*cause);
         e.causes.push_back(texelCause(*e.lookup));
+        if (auto seam = seamCause(*e.lookup))
+            e.causes.push_back(*seam);
     }
+    if (auto edge = edgeCause(input, exact))
+        e.causes.push_back(*edge);
+    if (screenSpaceSource && tracedInTheImage(input, exact))
+        screenSpaceCause(*screenSpaceSource, e);
     pathCauses(input, e, e.causes);
-    shadowCauses(input, report.plan, exact.centre, e.causes);
+    shadowCauses(input, report.plan, exact.centre, tracer, e.causes);
+    textureCause(input, exact.centre, e.causes);
     glossyCause(e, e.causes);
     return e;
 }

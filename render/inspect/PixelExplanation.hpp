@@ -52,6 +52,10 @@ struct MapLookup {
     bool parallax = false;
     double texelSolidAngle = 0.0;     // steradians of the texel read
     double cubeTexelSolidAngle = 0.0; // of a cube map's texel at the same resolution and direction
+    // How far the lookup lies from its component's edge (a cube face's side, a paraboloid's rim, the tennis
+    // ball's or the octahedral square's side), in texels: a seam where it is below 2.
+    double seamTexels = 0.0;
+    int guard = 0; // the layout's guard band, texels
 };
 
 // A named cause of a difference between the two, where the recipe knows one.
@@ -79,6 +83,10 @@ struct PixelExplanation {
     std::vector<RecipeStep> recipe;
     std::optional<MapLookup> lookup;
     std::vector<Cause> causes;
+    // A screen-space mirror or reflector pixel: the share of its reflection the trace met in the camera's
+    // image (0..1), and where the rest came from ("the reflector's map", "the background"). -1: not one.
+    double screenSpaceHit = -1.0;
+    std::string screenSpaceFallback;
     std::vector<std::string> notes; // what the recipe could not record (a tiled still, a preview)
 };
 
@@ -93,9 +101,12 @@ std::optional<MapLookup> mapLookup(const FrameInput& input, const FramePlan& pla
 // Puts the two side by side: the colours, their error at the pixel and over the window, the recipe, the
 // lookup, and the causes the two name. `raster` is the rasterized still (the report's frame), `exact` the
 // tracer's explanation of the same pixel at the same size, `tracer` the tracer that made it (for what the
-// map sees from its capture point).
+// map sees from its capture point). `screenSpaceSource`, where the scene has screen-space reflections: the
+// pixel's colour in the sources view (render::screenSpaceSourceAt), which says where its trace took the
+// reflection from.
 base::Result<PixelExplanation> explainPixel(const FrameInput& input, const FrameReport& report,
                                             const Image& raster, const reference::PixelPaths& exact,
-                                            const reference::Tracer& tracer);
+                                            const reference::Tracer& tracer,
+                                            const std::optional<glm::dvec3>& screenSpaceSource = {});
 
 } // namespace speculum::render::inspect

@@ -535,9 +535,11 @@ base::Result<PixelPaths> Tracer::explainPixel(const TraceSettings& settings, int
     out.windowWidth = std::min(x + r, settings.width - 1) - out.windowX + 1;
     out.windowHeight = std::min(y + r, settings.height - 1) - out.windowY + 1;
     for (int j = 0; j < out.windowHeight; ++j)
-        for (int i = 0; i < out.windowWidth; ++i)
-            out.window.push_back(
-                glm::dvec3(glm::vec3(tracer.tracePixel(out.windowX + i, out.windowY + j).colour)));
+        for (int i = 0; i < out.windowWidth; ++i) {
+            const Impl::PixelTracer::Pixel near = tracer.tracePixel(out.windowX + i, out.windowY + j);
+            out.window.push_back(glm::dvec3(glm::vec3(near.colour)));
+            out.windowIds.push_back(near.id);
+        }
     return out;
 }
 
@@ -571,6 +573,30 @@ RayHit Tracer::firstHit(const glm::dvec3& origin, const glm::dvec3& direction, i
     out.distance = hit->t;
     out.position = hit->position + m_impl->cameraPosition;
     return out;
+}
+
+double Tracer::footprintVisibility(int light, const glm::dvec3& position, const glm::dvec3& normal) const {
+    const Impl& impl = *m_impl;
+    if (light < 0 || std::size_t(light) >= impl.lights.size() || !impl.lights[std::size_t(light)].shadowed)
+        return 1.0;
+    const ShadingLight& l = impl.lights[std::size_t(light)];
+    Hit hit;
+    hit.position = position - impl.cameraPosition;
+    hit.normal = hit.geometricNormal = hit.outwardNormal = normal;
+    glm::dvec3 toLight = -l.direction;
+    double distance = kInfinity;
+    if (l.type != LightType::Directional) {
+        const glm::dvec3 d = l.position - hit.position;
+        distance = glm::length(d);
+        if (!(distance > 0.0))
+            return 1.0;
+        toLight = d / distance;
+    }
+    if (glm::dot(normal, toLight) <= 0.0)
+        return 1.0;
+    const Shader shader(impl.lights, *impl.geometry, impl.textures, impl.input.settings.ambient,
+                        ShadowMode::PcfFootprint);
+    return shader.visibility(l, hit, toLight, distance);
 }
 
 base::Result<TraceResult> Tracer::render(const TraceSettings& settings, const TraceProgress& progress) const {

@@ -88,6 +88,7 @@ struct PixelPaths {
     int windowWidth = 0;
     int windowHeight = 0;
     std::vector<glm::dvec3> window;
+    std::vector<PixelId> windowIds; // what each window pixel's centre shows, in the same order
 };
 
 // What a ray from a world point meets first (Tracer::firstHit).
@@ -154,6 +155,12 @@ public:
     // The first surface a ray from `origin` (world) along `direction` meets, mirrors and reflectors
     // included but for reflector `ignoreReflector` (what its own map, captured from inside it, leaves out).
     RayHit firstHit(const glm::dvec3& origin, const glm::dvec3& direction, int ignoreReflector = -1) const;
+
+    // The fraction of light `light` (index into FrameInput::lights) the shadow map's PCF footprint lets
+    // reach the world point `position` with unit normal `normal` (ShadowMode::PcfFootprint): what the
+    // rasterizer's filtered lookup gives there, up to the map's quantisation. 1 for a light without a
+    // shadow map, or one behind the surface.
+    double footprintVisibility(int light, const glm::dvec3& position, const glm::dvec3& normal) const;
 
     // Warnings from building the scene: textures that failed to load, triangles dropped as invalid.
     const std::vector<std::string>& warnings() const;

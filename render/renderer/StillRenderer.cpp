@@ -227,4 +227,20 @@ base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& inpu
     return result;
 }
 
+base::Result<std::optional<glm::dvec3>> screenSpaceSourceAt(Renderer& renderer, const FrameInput& input,
+                                                            StillSettings settings, glm::ivec2 pixel) {
+    if (!tracesTheImage(input))
+        return std::optional<glm::dvec3>();
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= settings.width || pixel.y >= settings.height)
+        return base::Error{"the pixel is outside the image"};
+    settings.showScreenSpaceSources = true;
+    settings.probePixel.reset();
+    auto still = renderStill(renderer, input, settings);
+    if (!still)
+        return base::Error{still.error()};
+    const std::size_t p = (std::size_t(pixel.y) * std::size_t(settings.width) + std::size_t(pixel.x)) * 4;
+    return std::optional<glm::dvec3>(
+        glm::dvec3(still->image.rgba[p], still->image.rgba[p + 1], still->image.rgba[p + 2]));
+}
+
 } // namespace speculum::render

@@ -62,4 +62,11 @@ int maxStillSize();
 base::Result<StillResult> renderStill(Renderer& renderer, const FrameInput& input,
                                       const StillSettings& settings, const ProgressCallback& progress = {});
 
+// Explaining a pixel of a scene with screen-space reflections: the colour pixel (x, y from the top) shows in
+// a still drawn with StillSettings::showScreenSpaceSources (green, met in the image; blue, the reflector's
+// map; red, the background; blended by the trace's confidence). None where the scene traces nothing in
+// the image.
+base::Result<std::optional<glm::dvec3>> screenSpaceSourceAt(Renderer& renderer, const FrameInput& input,
+                                                            StillSettings settings, glm::ivec2 pixel);
+
 } // namespace speculum::render

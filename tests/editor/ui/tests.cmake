@@ -63,3 +63,6 @@ speculum_add_test(InspectorGuiTest TIER gui
 # the vertical orbit's direction, a saved view placed after a reset.
 speculum_add_test(ViewportNavigationGuiTest TIER gui
     SOURCES ViewportNavigationGuiTest.cpp ${gui_main} LIBS speculum_editor_ui Qt6::Test)
+# View ▸ Inspect Pixel: a click explains the pixel in the Pixel Inspector and draws its path in the view.
+speculum_add_test(PixelInspectorGuiTest TIER gui
+    SOURCES PixelInspectorGuiTest.cpp ${gui_main} LIBS speculum_editor_ui Qt6::Test)
