@@ -215,7 +215,6 @@ base::Result<render::StillResult> renderExplainedFrame(HeadlessFrame& frame, con
     // In one piece whenever the GPU can: a tile's plan holds only the passes that draw in that tile.
     render::StillSettings settings{options.width, options.height, 1, render::maxStillSize()};
     settings.preview = options.preview;
-    settings.probePixel = options.pixel;
     const auto untilStopped = [](double, const std::string&) { return !StopOnSignal::requested(); };
     for (int number = 1; number <= options.frame; ++number) {
         if (frame.project && number > 1) {
@@ -225,6 +224,8 @@ base::Result<render::StillResult> renderExplainedFrame(HeadlessFrame& frame, con
                                 *frame.project->meshes, repeated);
             useCheckedTextures(frame.input, frame.project->textures);
         }
+        // Only the explained frame reads its pixel back after each pass.
+        settings.probePixel = number == options.frame ? options.pixel : std::nullopt;
         auto drawn = render::renderStill(*frame.renderer, frame.input, settings, untilStopped);
         if (!drawn || number == options.frame)
             return drawn;

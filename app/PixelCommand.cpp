@@ -91,7 +91,8 @@ QJsonArray pathJson(const render::FrameInput& input, const TracedPath& path) {
                       {"distance", v.distance},
                       {"mirrorLevel", v.mirrorLevel},
                       {"reflectorLevel", v.reflectorLevel},
-                      {"colour", vec(v.colour)}};
+                      {"colour", vec(v.colour)},
+                      {"weight", vec(v.weight)}};
         if (v.kind == render::reference::PathEventKind::Mirror ||
             v.kind == render::reference::PathEventKind::Reflector ||
             v.kind == render::reference::PathEventKind::LostBelow ||
@@ -161,15 +162,18 @@ void printJson(const CliOptions& options, const render::FrameInput& input, const
     const QJsonObject exact{{"colour", vec(e.exactColour)},
                             {"standardError", e.exactStandardError},
                             {"glossy", e.exact.glossy},
+                            {"lobeSpreadDegrees", e.lobeSpreadDegrees},
                             {"hit", hitKindText(e.exact.id.kind).c_str()},
                             {"target", text(hitName(input, e.exact.id))},
                             {"path", pathJson(input, e.exact.centre)},
                             {"samples", samples}};
-    const QJsonObject difference{{"error", vec(e.error)},
-                                 {"errorRms", e.errorRms},
-                                 {"windowRadius", e.windowRadius},
-                                 {"windowRmse", e.windowRmse},
-                                 {"windowPsnr", e.windowPsnr}};
+    const QJsonObject difference{
+        {"error", vec(e.error)},
+        {"errorRms", e.errorRms},
+        {"windowRadius", e.windowRadius},
+        {"window", QJsonArray{e.exact.windowX, e.exact.windowY, e.exact.windowWidth, e.exact.windowHeight}},
+        {"windowRmse", e.windowRmse},
+        {"windowPsnr", e.windowPsnr}};
     const QJsonObject root{
         {"pixel", QJsonArray{e.x, e.y}},
         {"size", text(std::to_string(e.width) + "x" + std::to_string(e.height))},
@@ -219,7 +223,10 @@ void printVertex(const render::FrameInput& input, int n, const PathVertex& v) {
     std::printf("  %d. %-11s %s", n, std::string(toString(v.kind)).c_str(), name.c_str());
     if (v.hit.kind != HitKind::Background)
         std::printf(" at %s, %.3f m", triple(v.position).c_str(), v.distance);
-    std::printf(" -> colour %s\n", triple(v.colour).c_str());
+    std::printf(" -> colour %s", triple(v.colour).c_str());
+    if (n > 1)
+        std::printf(", weighted by %s", triple(v.weight).c_str());
+    std::printf("\n");
     if (v.kind == render::reference::PathEventKind::Mirror ||
         v.kind == render::reference::PathEventKind::Reflector ||
         v.kind == render::reference::PathEventKind::LostBelow)
@@ -263,7 +270,7 @@ void printText(const CliOptions& options, const render::FrameInput& input, const
     if (e.exact.glossy)
         std::printf(" ± %.4f (standard error)", e.exactStandardError);
     std::printf("\n  error  %s in sRGB (RMS %.4f); %dx%d window: RMSE %.4f, PSNR %.2f dB\n",
-                triple(e.error, 4).c_str(), e.errorRms, 2 * e.windowRadius + 1, 2 * e.windowRadius + 1,
+                triple(e.error, 4).c_str(), e.errorRms, e.exact.windowWidth, e.exact.windowHeight,
                 e.windowRmse, e.windowPsnr);
     std::printf("\nExact path (the ray through the pixel's centre):\n");
     int n = 0;

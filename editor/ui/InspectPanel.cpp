@@ -14,6 +14,7 @@ using render::reference::PathEventKind;
 using render::reference::PathVertex;
 
 constexpr int kNodeRole = Qt::UserRole + 1;
+constexpr int kVertexRole = Qt::UserRole + 2;
 
 QString name(const render::FrameInput& input, const render::reference::PixelId& id) {
     switch (id.kind) {
@@ -68,7 +69,7 @@ void addShadowRays(const PathVertex& v, const render::FrameInput& input,
 } // namespace
 
 std::vector<render::GuideLine> pathGuides(const render::inspect::PixelExplanation& e,
-                                          const render::FrameInput& input) {
+                                          const render::FrameInput& input, int highlighted) {
     std::vector<render::GuideLine> lines;
     const auto& vertices = e.exact.centre.vertices;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
@@ -76,7 +77,8 @@ std::vector<render::GuideLine> pathGuides(const render::inspect::PixelExplanatio
         // The segment arriving at v: white from the camera, then the colour of the bounce it left.
         const glm::vec4 c = i == 0 ? glm::vec4(1.0f) : kindColour(vertices[i - 1]);
         const glm::dvec3 end = v.kind == PathEventKind::Background ? v.from + v.incoming * 3.0 : v.position;
-        lines.push_back({v.from, end, c, 2.5f, 0.35f});
+        const bool wide = int(i) == highlighted;
+        lines.push_back({v.from, end, c, wide ? 6.0f : 2.5f, wide ? 0.8f : 0.35f});
         if (v.shaded)
             addShadowRays(v, input, lines);
     }
@@ -98,6 +100,8 @@ InspectPanel::InspectPanel(QWidget* parent)
     layout->addWidget(m_summary);
     layout->addWidget(m_tree, 1);
     connect(m_tree, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+        const QVariant vertex = item ? item->data(0, kVertexRole) : QVariant();
+        emit pathStepChosen(vertex.isValid() ? vertex.toInt() : -1);
         if (item && !item->data(0, kNodeRole).toString().isEmpty())
             emit nodeChosen(item->data(0, kNodeRole).toString());
     });
@@ -110,20 +114,22 @@ void InspectPanel::showMessage(const QString& message) {
 
 void InspectPanel::show(const render::inspect::PixelExplanation& e, const render::FrameInput& input) {
     m_tree->clear();
-    m_summary->setText(tr("Pixel %1,%2 — raster %3, exact %4; error (sRGB) RMS %5; %6×%6 window PSNR %7 dB")
+    m_summary->setText(tr("Pixel %1,%2 — raster %3, exact %4; error (sRGB) RMS %5; %6 window PSNR %7 dB")
                            .arg(e.x)
                            .arg(e.y)
                            .arg(colour(e.rasterColour), colour(e.exactColour))
                            .arg(e.errorRms, 0, 'f', 4)
-                           .arg(2 * e.windowRadius + 1)
+                           .arg(QStringLiteral("%1×%2").arg(e.exact.windowWidth).arg(e.exact.windowHeight))
                            .arg(e.windowPsnr, 0, 'f', 2));
     auto* exact = new QTreeWidgetItem(m_tree, {tr("Exact path"), colour(e.exactColour)});
+    int index = 0;
     for (const PathVertex& v : e.exact.centre.vertices) {
         const QString node = name(input, v.hit);
         auto* item = new QTreeWidgetItem(
             exact, {QString::fromUtf8(toString(v.kind).data()) + (node.isEmpty() ? QString() : " " + node),
                     colour(v.colour), tr("%1 m from the last point").arg(v.distance, 0, 'f', 3)});
         item->setData(0, kNodeRole, node);
+        item->setData(0, kVertexRole, index++);
     }
     auto* raster = new QTreeWidgetItem(m_tree, {tr("Raster recipe"), colour(e.rasterColour)});
     for (const render::inspect::RecipeStep& s : e.recipe) {

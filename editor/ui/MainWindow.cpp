@@ -398,7 +398,6 @@ QDockWidget* MainWindow::createInspectDock(QDockWidget* inspectorDock) {
     dock->setObjectName(QStringLiteral("inspectDock"));
     dock->setWidget(panel);
     addDockWidget(Qt::RightDockWidgetArea, dock);
-    tabifyDockWidget(inspectorDock, dock);
     dock->hide();
     auto* tool = new QAction(tr("Inspect &Pixel"), this);
     tool->setObjectName(QStringLiteral("inspectPixelAction"));
@@ -406,14 +405,19 @@ QDockWidget* MainWindow::createInspectDock(QDockWidget* inspectorDock) {
     tool->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
     tool->setStatusTip(tr("Click a pixel of the view: its exact path beside the raster's recipe"));
     m_viewMenu->addAction(tool);
-    connect(tool, &QAction::toggled, this, [this, dock](bool on) {
+    connect(tool, &QAction::toggled, this, [this, dock, inspectorDock](bool on) {
         m_viewport->setInspecting(on);
-        if (on) {
-            dock->show();
-            dock->raise();
-        }
+        if (!on)
+            return;
+        // Tabbed with the Properties the first time it shows (hidden, it is tabbed with nothing, so that
+        // the Accuracy panel's placement beside the Properties is unchanged).
+        if (!dock->isVisible() && !dock->isFloating() && !tabifiedDockWidgets(inspectorDock).contains(dock))
+            tabifyDockWidget(inspectorDock, dock);
+        dock->show();
+        dock->raise();
     });
     connect(m_viewport, &Viewport::pixelInspected, panel, &InspectPanel::show);
+    connect(panel, &InspectPanel::pathStepChosen, m_viewport, &Viewport::highlightInspectedStep);
     connect(m_viewport, &Viewport::inspectionFailed, panel, [panel](const QString& message) {
         panel->showMessage(tr("The pixel could not be explained: %1").arg(message));
     });
@@ -515,12 +519,12 @@ void MainWindow::placeAccuracyDock(QDockWidget* accuracyDock, QDockWidget* inspe
                                 kMinViewportWidth;
         if (besideNeeds > room) {
             tabifyDockWidget(inspectorDock, accuracyDock);
-        } else if (!tabifiedDockWidgets(inspectorDock).isEmpty()) {
+        } else if (tabifiedDockWidgets(inspectorDock).contains(accuracyDock)) {
             splitDockWidget(inspectorDock, accuracyDock, Qt::Horizontal);
         }
     }
     accuracyDock->raise();
-    if (!together || !tabifiedDockWidgets(inspectorDock).isEmpty())
+    if (!together || tabifiedDockWidgets(inspectorDock).contains(accuracyDock))
         return;
     // Room for both: the Properties keep their width, the images get theirs, taken from the viewport.
     // After the dock is laid out (a resize before that is undone by its first layout).

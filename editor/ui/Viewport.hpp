@@ -16,6 +16,7 @@
 #include <QStringList>
 #include <QTimer>
 #include <memory>
+#include <optional>
 #include <utility>
 
 class QPainter;
@@ -203,6 +204,8 @@ public slots:
     // Explains the pixel at `position` (widget coordinates): renders the frame once with the pixel's
     // recipe recorded and traces the pixel, then draws its path. Used by the click and by tests.
     void inspectAt(QPointF position);
+    // Draws the segment arriving at this vertex of the inspected path wider (-1: none).
+    void highlightInspectedStep(int vertex);
 
 signals:
     // The inspect tool explained a pixel: both recipes and their difference, and the frame they are of.
@@ -280,6 +283,8 @@ private:
     bool m_screenSpaceSources = false;
     bool m_inspecting = false;
     std::vector<render::GuideLine> m_inspectionGuides; // the inspected pixel's path, drawn in every frame
+    // What the path was drawn from, to redraw it with a step highlighted.
+    std::optional<std::pair<render::inspect::PixelExplanation, render::FrameInput>> m_inspected;
     bool m_interacting = false;
     QTimer m_rest; // single shot: kRestMs after the last navigation or handle move
     view::AdaptiveResolution m_resolution;

@@ -23,9 +23,17 @@ void Viewport::setInspecting(bool on) {
 }
 
 void Viewport::clearInspection() {
+    m_inspected.reset();
     if (m_inspectionGuides.empty())
         return;
     m_inspectionGuides.clear();
+    update();
+}
+
+void Viewport::highlightInspectedStep(int vertex) {
+    if (!m_inspected)
+        return;
+    m_inspectionGuides = pathGuides(m_inspected->first, m_inspected->second, vertex);
     update();
 }
 
@@ -42,7 +50,8 @@ void Viewport::inspectAt(QPointF position) {
     input.camera = m_navigation.camera();
     QGuiApplication::setOverrideCursor(Qt::WaitCursor);
     makeCurrent();
-    render::StillSettings settings{w, h, 1};
+    // In one piece whatever the view's size, so that the pixel's recipe is recorded.
+    render::StillSettings settings{w, h, 1, render::maxStillSize()};
     settings.probePixel = pixel;
     settings.reuseMaps = false; // the recipe then holds every map the pixel reads, drawn in this frame
     auto still = render::renderStill(*m_renderer, input, settings);
@@ -72,6 +81,7 @@ void Viewport::inspectAt(QPointF position) {
         return fail(explained.error());
     QGuiApplication::restoreOverrideCursor();
     m_inspectionGuides = pathGuides(*explained, input);
+    m_inspected.emplace(*explained, input);
     emit pixelInspected(*explained, input);
     update();
 }

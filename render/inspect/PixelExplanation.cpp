@@ -192,21 +192,22 @@ std::vector<RecipeStep> rasterRecipe(const FrameInput& input, const FrameReport&
 namespace {
 
 // shaders/parallax.glsl's parallaxHit: where the ray from p (relative to the capture point) along unit r
-// leaves the proxy, relative to the capture point; r itself where it never meets it.
-glm::dvec3 parallaxHit(const ParallaxParams& proxy, const glm::dvec3& p, const glm::dvec3& r) {
+// leaves the proxy, relative to the capture point (xyz), and how far along the ray that is (w); r itself
+// and 0 where it never meets it.
+glm::dvec4 parallaxHit(const ParallaxParams& proxy, const glm::dvec3& p, const glm::dvec3& r) {
     if (proxy.shape == ParallaxShape::Sphere) {
         const double b = glm::dot(p, r);
         const double c = glm::dot(p, p) - proxy.radius * proxy.radius;
         const double disc = b * b - c;
         const double t = -b + std::sqrt(std::max(disc, 0.0));
-        return disc >= 0.0 && t > 0.0 ? p + t * r : r;
+        return disc >= 0.0 && t > 0.0 ? glm::dvec4(p + t * r, t) : glm::dvec4(r, 0.0);
     }
     double t = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k) {
         const double safe = std::abs(r[k]) > 1e-20 ? r[k] : 1e-20;
         t = std::min(t, std::max((proxy.min[k] - p[k]) / safe, (proxy.max[k] - p[k]) / safe));
     }
-    return t > 0.0 ? p + t * r : r;
+    return t > 0.0 ? glm::dvec4(p + t * r, t) : glm::dvec4(r, 0.0);
 }
 
 std::string componentLabel(envmap::MapType type, int component) {
@@ -243,8 +244,12 @@ double seamDistance(const envmap::MapLayout& layout, const glm::dvec3& d) {
     return std::min(edge.x, edge.y);
 }
 
+// The level reflector_lookup.glsl reads for the lobe alone: the GGX chain at the roughness whose lobe
+// covers it (narrowed by the proxy's distance: `narrowing`, hit.w / |hit.xyz|), or the mip chain at
+// roughness × (levels − 1). The pixel's footprint can only raise it. (Where the chain could not be made,
+// the frame warns and reads the mip chain.)
 void lookupFilter(const FrameInput& input, const Reflector& r, const envmap::MapLayout& layout,
-                  MapLookup& out) {
+                  double narrowing, MapLookup& out) {
     const double roughness = std::clamp(r.roughness, 0.0, 1.0);
     if (!(roughness > 0.0)) {
         out.filter = "sharp";
@@ -253,7 +258,8 @@ void lookupFilter(const FrameInput& input, const Reflector& r, const envmap::Map
     const bool chain = input.settings.glossyFilter != GlossyFilter::Mip;
     out.filter = chain ? "GGX chain" : "mip chain";
     const int levels = chain ? envmap::prefilterLevels(layout) : envmap::usableMipLevels(layout);
-    out.mipLevel = roughness * (levels - 1);
+    const double alpha = roughness * roughness * std::clamp(narrowing, 0.0, 1.0);
+    out.mipLevel = (chain ? std::sqrt(alpha) : roughness) * (levels - 1);
 }
 
 } // namespace
@@ -280,9 +286,10 @@ std::optional<MapLookup> mapLookup(const FrameInput& input, const FramePlan& pla
     const glm::dvec3 e = -at->incoming;
     out.reflected = glm::normalize(2.0 * std::max(glm::dot(out.normal, e), 0.0) * out.normal - e);
     out.parallax = r.parallax.has_value();
-    out.lookup = out.parallax
-                     ? glm::normalize(parallaxHit(*r.parallax, out.position - out.centre, out.reflected))
-                     : out.reflected;
+    const glm::dvec4 hit = out.parallax ? parallaxHit(*r.parallax, out.position - out.centre, out.reflected)
+                                        : glm::dvec4(out.reflected, 0.0);
+    out.lookup = glm::normalize(glm::dvec3(hit));
+    const double narrowing = hit.w > 0.0 ? hit.w / std::max(glm::length(glm::dvec3(hit)), 1e-6) : 1.0;
     const envmap::MapLayout layout = envmap::makeLayout(type, out.resolution);
     const glm::ivec3 texel = texelOf(layout, out.lookup);
     out.texelX = texel.x;
@@ -296,7 +303,7 @@ std::optional<MapLookup> mapLookup(const FrameInput& input, const FramePlan& pla
     out.cubeTexelSolidAngle = envmap::texelSolidAngle(cube, cubeTexel.x, cubeTexel.y);
     out.seamTexels = seamDistance(layout, out.lookup);
     out.guard = layout.guard;
-    lookupFilter(input, r, layout, out);
+    lookupFilter(input, r, layout, narrowing, out);
     return out;
 }
 
@@ -328,26 +335,28 @@ std::optional<Cause> captureCause(const FrameInput& input, const MapLookup& look
     const auto at = std::find_if(path.vertices.begin(), path.vertices.end(), [&](const PathVertex& v) {
         return v.kind == PathEventKind::Reflector && v.hit.index == lookup.reflectorIndex;
     });
-    if (at == path.vertices.end() || at + 1 == path.vertices.end())
+    if (at == path.vertices.end())
         return std::nullopt;
-    const PathVertex& seen = *(at + 1);
+    // What the mirror direction from the point meets (on a rough reflector, the lobe's axis, which is what
+    // the map is looked up along), against what the map shows along the lookup from its capture point.
+    const reference::RayHit seen = tracer.firstHit(at->position, lookup.reflected, lookup.reflectorIndex);
     const reference::RayHit mapped = tracer.firstHit(lookup.centre, lookup.lookup, lookup.reflectorIndex);
     const double offset = glm::length(lookup.position - lookup.centre);
-    const std::string exactName = nameOf(input, seen.hit);
-    const double exactDistance = seen.hit.kind == HitKind::Background ? INFINITY : seen.distance;
+    const std::string exactName = nameOf(input, seen.id);
+    const double exactDistance = seen.id.kind == HitKind::Background ? INFINITY : seen.distance;
     const double mapDistance = glm::length(mapped.position - lookup.centre);
     std::string text = "the map is captured from the centre of " + quoted(lookup.reflector) + ", " +
                        metres(offset) + " from this point";
     if (lookup.parallax)
         text += " (with a parallax proxy)";
-    if (!(mapped.id == seen.hit)) {
+    if (!(mapped.id == seen.id)) {
         text += ": the reflected ray meets " + exactName +
                 (std::isfinite(exactDistance) ? " " + metres(exactDistance) + " away" : "") +
                 ", but along the lookup direction the map shows " + nameOf(input, mapped.id) +
                 (mapped.id.kind == HitKind::Background ? "" : " " + metres(mapDistance) + " from the centre");
         return Cause{"capture-point", text};
     }
-    if (seen.hit.kind == HitKind::Background)
+    if (seen.id.kind == HitKind::Background)
         return Cause{"capture-point",
                      text + ": both see the background, which is infinitely far: no parallax error"};
     const double gap = mapDistance - exactDistance;
@@ -445,7 +454,7 @@ void shadowCauses(const FrameInput& input, const FramePlan& plan, const TracedPa
         if (!t.shadowed || t.nDotL <= 0.0 || t.cone <= 0.0)
             continue;
         const ShadowPlan* shadow = plan.shadowOf(t.light);
-        const double filtered = tracer.footprintVisibility(t.light, last->position, last->normal);
+        const double filtered = tracer.footprintVisibility(t.light, last->position, last->shading.normal);
         const std::string answer = t.visibility >= 1.0   ? "reaches the light"
                                    : t.visibility <= 0.0 ? "is blocked"
                                                          : "is partly blocked";
@@ -517,7 +526,7 @@ void glossyCause(const PixelExplanation& e, std::vector<Cause>& causes) {
     const double difference = (gap.r + gap.g + gap.b) / 3.0;
     const double errors = e.exactStandardError > 0.0 ? difference / e.exactStandardError : 0.0;
     std::string text = "the exact colour averages sampled paths of a rough lobe (mean " +
-                       number(meanSpreadDegrees(e.exact), 1) +
+                       number(e.lobeSpreadDegrees, 1) +
                        "° from the mirror direction over the paths listed); its standard error is " +
                        number(e.exactStandardError, 4) + " (linear) and the raster differs by " +
                        number(difference, 4) + ", " + number(errors, 1) + " standard errors: ";
@@ -663,6 +672,7 @@ base::Result<PixelExplanation> explainPixel(const FrameInput& input, const Frame
     windowError(raster, e);
     const glm::dvec3 noise = glm::max(exact.noise, glm::dvec3(0.0));
     e.exactStandardError = (std::sqrt(noise.r) + std::sqrt(noise.g) + std::sqrt(noise.b)) / 3.0;
+    e.lobeSpreadDegrees = meanSpreadDegrees(exact);
     e.recipe = rasterRecipe(input, report);
     if (report.probes.empty())
         e.notes.push_back("the raster recipe was not recorded: the still was drawn in tiles");

@@ -79,6 +79,8 @@ struct PixelExplanation {
     double windowRmse = 0.0;
     double windowPsnr = 0.0;
     double exactStandardError = 0.0; // √(the exact pixel's noise), mean over RGB: 0 for an exact pixel
+    // A rough first lobe: the mean angle of its sampled directions from the mirror direction (0: none).
+    double lobeSpreadDegrees = 0.0;
     reference::PixelPaths exact;
     std::vector<RecipeStep> recipe;
     std::optional<MapLookup> lookup;

@@ -154,8 +154,9 @@ PassResult runPass(const PlannedPass& pass, FrameExecution& frame, const ViewSpa
 // In the camera's space.
 PassResult runPass(const PlannedPass& pass, FrameExecution& frame);
 
-// What `writes` left at `pixel` of the camera-sized buffer it drew into (x from the left, y from the
-// top, in the drawn target's pixels): colour, stencil and depth, read back now (a GPU wait).
-PixelProbe probePixel(const PassWrites& writes, FrameExecution& frame, glm::ivec2 pixel);
+// What `writes` left at the pixel of the buffer it drew into that shows `outputPixel` of the output (x from
+// the left, y from the top; scaled to the drawn size for the frame's own buffers in a preview): colour,
+// stencil and depth, read back now (a GPU wait). Not readable for a pass into a map of its own.
+PixelProbe probePixel(const PassWrites& writes, FrameExecution& frame, glm::ivec2 outputPixel);
 
 } // namespace speculum::render::passes

@@ -20,4 +20,13 @@ std::string_view toString(PathEventKind kind) {
     return "surface";
 }
 
+void weighPath(TracedPath& path) {
+    glm::dvec3 weight(1.0);
+    for (PathVertex& v : path.vertices) {
+        v.weight = weight;
+        if (v.kind == PathEventKind::Mirror || v.kind == PathEventKind::Reflector)
+            weight *= v.reflectivity * v.tint * v.lobeWeight;
+    }
+}
+
 } // namespace speculum::render::reference

@@ -23,7 +23,8 @@ struct LightTerm {
 
 // material.glsl's shadeMaterial() term by term: total = emitted + ambient + Σ diffuse + Σ specular.
 struct ShadingTerms {
-    glm::dvec3 base{0.0}; // colour × texture × vertex colour
+    glm::dvec3 normal{0.0}; // the normal lighting used: the interpolated one, bent by the normal map if any
+    glm::dvec3 base{0.0};   // colour × texture × vertex colour
     glm::dvec3 emitted{0.0};
     glm::dvec3 ambient{0.0};
     std::vector<LightTerm> lights;
@@ -47,7 +48,7 @@ struct PathVertex {
     PixelId hit;              // what the ray met (Background: nothing)
     glm::dvec3 from{0.0};     // world: where the ray started
     glm::dvec3 position{0.0}; // world: where it met the surface (from + a long way for the background)
-    glm::dvec3 normal{0.0};   // unit shading normal at the hit, on the viewer's side
+    glm::dvec3 normal{0.0};   // unit interpolated normal at the hit, on the viewer's side (no normal map)
     glm::dvec3 incoming{0.0}; // unit direction of the ray that arrived
     glm::dvec3 outgoing{0.0}; // Mirror, Reflector: unit direction of the reflected ray followed
     glm::dvec3 mirrored{0.0}; // Mirror, Reflector: the perfect mirror direction (= outgoing when sharp)
@@ -65,6 +66,9 @@ struct PathVertex {
     ShadingTerms shading;
     bool shaded = false;
     glm::dvec3 colour{0.0}; // the radiance this vertex sent back along `incoming`
+    // How much of this vertex's colour reaches the camera: the product of R · tint · lobe weight of the
+    // reflections before it (1 at the first vertex). weight · colour is its share of the path's colour.
+    glm::dvec3 weight{1.0};
 };
 
 // One path, camera first. `colour` is what it brought to the camera.
@@ -72,5 +76,8 @@ struct TracedPath {
     std::vector<PathVertex> vertices;
     glm::dvec3 colour{0.0};
 };
+
+// Fills each vertex's `weight` from the reflections before it.
+void weighPath(TracedPath& path);
 
 } // namespace speculum::render::reference

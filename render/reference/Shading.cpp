@@ -145,6 +145,7 @@ glm::dvec3 Shader::shade(const Material& m, const MaterialTextures& textures, co
     const glm::dvec3 total = emitted + base * (m.ambient * m_sceneAmbient + m.diffuse * diffuse) +
                              m.specular * m.specularColor * specular;
     if (terms) {
+        terms->normal = n;
         terms->base = base;
         terms->emitted = emitted;
         terms->ambient = base * (m.ambient * m_sceneAmbient);

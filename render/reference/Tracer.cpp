@@ -158,18 +158,23 @@ struct Tracer::Impl {
             p->colour = colour;
         return colour;
     }
-    // A reflecting vertex's reflection: R, tint, the lobe, and the direction followed.
-    static void recordReflection(const Path& path, int v, double r, bool fresnel, const glm::dvec3& tint,
-                                 double roughness, const glm::dvec3& mirrored, const glm::dvec3& followed,
-                                 double weight) {
+    // A reflecting vertex's weights: R (Schlick's with fresnel) and tint.
+    static void recordWeights(const Path& path, int v, double r, bool fresnel, const glm::dvec3& tint) {
+        if (PathVertex* p = vertex(path, v)) {
+            p->reflectivity = r;
+            p->fresnel = fresnel;
+            p->tint = tint;
+        }
+    }
+    // The reflection it followed: the mirror direction of `direction` about `normal`, the direction taken
+    // (a lobe sample where rough) and the sample's weight.
+    static void recordReflection(const Path& path, int v, double roughness, const glm::dvec3& direction,
+                                 const glm::dvec3& normal, const glm::dvec3& followed, double weight) {
         PathVertex* p = vertex(path, v);
         if (!p)
             return;
-        p->reflectivity = r;
-        p->fresnel = fresnel;
-        p->tint = tint;
-        p->roughness = roughness;
-        p->mirrored = glm::normalize(mirrored);
+        p->roughness = roughness > 0.0 ? roughness : 0.0;
+        p->mirrored = glm::normalize(direction - 2.0 * glm::dot(direction, normal) * normal);
         p->outgoing = glm::normalize(followed);
         p->lobeWeight = weight;
         if (weight <= 0.0)
@@ -265,8 +270,7 @@ struct Tracer::Impl {
                                    termsOf(path, v)) *
                       (1.0 - r);
         }
-        recordReflection(path, v, r, mirror.fresnel, mirror.tint, mirror.roughness, glm::dvec3(0.0),
-                         glm::dvec3(0.0), 1.0);
+        recordWeights(path, v, r, mirror.fresnel, mirror.tint);
         // Beyond the depth limit the reflection is not followed and adds nothing (as a path tracer's
         // bounce limit ends a path): the last mirror of a corridor is dark, not lit like a wall.
         if (path.mirrorLevel + 1 > path.mirrorLimit) {
@@ -280,8 +284,7 @@ struct Tracer::Impl {
         double weight = 1.0;
         const glm::dvec3 reflected =
             reflectedDirection(direction, normal, viewDir, mirror.roughness, path, next, weight);
-        recordReflection(path, v, r, mirror.fresnel, mirror.tint, mirror.roughness,
-                         direction - 2.0 * glm::dot(direction, normal) * normal, reflected, weight);
+        recordReflection(path, v, mirror.roughness, direction, normal, reflected, weight);
         if (weight <= 0.0) // a lobe sample lost below the mirror
             return result;
         const double eps = SceneGeometry::offset(hit.position);
@@ -327,8 +330,8 @@ struct Tracer::Impl {
         double weight = 1.0;
         const glm::dvec3 reflected =
             reflectedDirection(d, hit.normal, viewDir, reflector.roughness, path, next, weight);
-        recordReflection(path, v, r, reflector.fresnel, glm::dvec3(1.0), reflector.roughness,
-                         d - 2.0 * glm::dot(d, hit.normal) * hit.normal, reflected, weight);
+        recordWeights(path, v, r, reflector.fresnel, glm::dvec3(1.0));
+        recordReflection(path, v, reflector.roughness, d, hit.normal, reflected, weight);
         if (weight <= 0.0) // a lobe sample lost below the (interpolated) surface
             return result;
         const glm::dvec3 side =

@@ -345,15 +345,6 @@ int ensureReflectionTextures(passes::FrameResources& r, const FramePlan& plan) {
     return deepestSlot;
 }
 
-// The probed pixel of the output in the drawn target's pixels (a preview draws fewer).
-glm::ivec2 probedPixel(const passes::FrameExecution& frame, glm::ivec2 pixel) {
-    const RenderTarget& output = frame.outputTarget();
-    if (output.width == frame.target.width && output.height == frame.target.height)
-        return pixel;
-    return glm::ivec2(int(pixel.x * double(frame.target.width) / output.width),
-                      int(pixel.y * double(frame.target.height) / output.height));
-}
-
 // Execution: the plan as it is, pass by pass, each one that ran reported with its CPU time (and timed on
 // the GPU when asked); then the GL state is left as the caller expects it.
 void runPasses(passes::FrameExecution& frame, bool srgbBuffer, const RenderOptions& options,
@@ -383,8 +374,7 @@ void runPasses(passes::FrameExecution& frame, bool srgbBuffer, const RenderOptio
             continue;
         report.ran.push_back({static_cast<int>(i), std::move(result.outcome), -1.0, msSince(passStart)});
         if (options.probePixel) {
-            report.probes.push_back(
-                passes::probePixel(pass.writes, frame, probedPixel(frame, *options.probePixel)));
+            report.probes.push_back(passes::probePixel(pass.writes, frame, *options.probePixel));
             report.probes.back().run = int(report.ran.size()) - 1;
         }
     }

@@ -67,8 +67,9 @@ TEST(PixelInspector, AClickOnTheBallExplainsItsPixelAndDrawsItsPath) {
     ASSERT_TRUE(waitForFrames(window));
     EXPECT_EQ(viewport.inspectedPath().size(), lines.size());
     EXPECT_EQ(viewport.inspectedPath()[0].to, lines[0].to);
-    // A step selects the node it touched.
+    // A step selects the node it touched, and its segment of the path is drawn wider.
     tree->setCurrentItem(path->child(0));
+    EXPECT_GT(viewport.inspectedPath()[0].width, lines[0].width);
     const scene::Node* selected = window.selection().selectedNode();
     ASSERT_NE(selected, nullptr);
     EXPECT_EQ(selected->name(), "Chrome ball");

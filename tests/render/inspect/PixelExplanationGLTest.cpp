@@ -105,6 +105,12 @@ TEST_F(PixelExplanationTest, AtTheDepthLimitThePathEndsThereAndTheRecipeHasEvery
     EXPECT_EQ(path[1], PathEventKind::Mirror);
     EXPECT_EQ(path[2], PathEventKind::DepthLimit);
     EXPECT_EQ(e.exact.centre.vertices[2].mirrorLevel, 2);
+    // The limit follows nothing: no lobe, no direction, and nothing sampled again.
+    const PathVertex& limit = e.exact.centre.vertices[2];
+    EXPECT_EQ(limit.roughness, 0.0);
+    EXPECT_TRUE(finite(limit.outgoing) && finite(limit.mirrored));
+    EXPECT_TRUE(e.exact.samples.empty());
+    EXPECT_EQ(limit.weight, glm::dvec3(1.0)) << "two perfect mirrors before it";
     EXPECT_TRUE(std::any_of(e.causes.begin(), e.causes.end(),
                             [](const inspect::Cause& c) { return c.code == "depth-limit"; }));
     // The raster marked the two levels with stencil values 1 and 2; only level 2's scene covers the pixel

@@ -204,5 +204,25 @@ TEST_F(FrameReportTest, APixelIsProbedOnlyWhenAskedAndItsLastProbeIsTheStillsPix
     EXPECT_EQ(unprobed->image.rgba, still->image.rgba);
 }
 
+// A preview draws fewer pixels and scales them up in the composite: the frame's own buffers are read at the
+// drawn pixel under the probed one, the output at the probed pixel itself.
+TEST_F(FrameReportTest, APreviewIsProbedAtTheDrawnPixelAndTheOutputAtItsOwn) {
+    StillSettings settings{kWidth, kHeight, 1};
+    settings.reuseMaps = false;
+    settings.preview.scale = 0.5;
+    const glm::ivec2 pixel(61, 31);
+    settings.probePixel = pixel;
+    auto still = renderStill(renderer(), roomWithBall(64), settings);
+    ASSERT_TRUE(still.ok()) << still.error();
+    const FrameReport& report = still->firstSample;
+    ASSERT_FALSE(report.probes.empty());
+    const PixelProbe& last = report.probes.back();
+    ASSERT_EQ(report.planned(report.ran[std::size_t(last.run)]).kind, PassKind::Composite);
+    ASSERT_TRUE(last.readable);
+    const std::size_t p = (std::size_t(pixel.y) * kWidth + std::size_t(pixel.x)) * 4;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_FLOAT_EQ(last.colour[c], still->image.rgba[p + std::size_t(c)]) << "channel " << c;
+}
+
 } // namespace
 } // namespace speculum::test
