@@ -179,8 +179,17 @@ std::vector<RecipeStep> rasterRecipe(const FrameInput& input, const FrameReport&
         if (pass.view >= 0 && std::size_t(pass.view) < report.plan.views.size())
             step.mirrorLevel = report.plan.views[std::size_t(pass.view)].depth;
         if (probe.readable) {
+            // A pass that clears its rectangle and draws there wrote the pixel even where it drew the
+            // value that was there before.
+            const auto& rect = pass.writes.scissor;
+            step.cleared =
+                pass.writes.clear &&
+                (pass.writes.clearWhole || !rect ||
+                 (probe.x >= rect->x0 && probe.x < rect->x1 && probe.y >= rect->y0 && probe.y < rect->y1));
             const auto before = last.find(step.buffer);
-            step.wrote = before == last.end() || differs(before->second.colour, step.colour) ||
+            // Depth is not compared: mirror passes reset it where they draw, a change no one sees.
+            step.wrote = step.cleared || before == last.end() ||
+                         differs(before->second.colour, step.colour) ||
                          before->second.stencil != step.stencil;
             last[step.buffer] = {step.colour, step.stencil};
         }
@@ -535,6 +544,44 @@ void glossyCause(const PixelExplanation& e, std::vector<Cause>& causes) {
     causes.push_back({"glossy-noise", text});
 }
 
+// The mirrors the raster drew the pixel through (the views that hold it, by level) against
+// those the exact path meets before any reflector: where they differ, the two show different things.
+void mirrorChainCause(const FrameInput& input, const PixelExplanation& e, std::vector<Cause>& causes) {
+    std::vector<std::string> raster;
+    // A stencil view holds the pixel where its mask marked it; a texture view where its pass cleared it.
+    for (const RecipeStep& s : e.recipe) {
+        const bool holds = (s.pass == "mirror-mask" && s.wrote) || (s.pass == "mirror" && s.cleared);
+        if (!holds || s.mirrorLevel < 1)
+            continue;
+        raster.resize(std::max(raster.size(), std::size_t(s.mirrorLevel)));
+        raster[std::size_t(s.mirrorLevel - 1)] = s.target;
+    }
+    std::vector<std::string> exact;
+    std::string after = "the background";
+    for (const PathVertex& v : e.exact.centre.vertices) {
+        if (v.kind != PathEventKind::Mirror) {
+            after = nameOf(input, v.hit);
+            break;
+        }
+        if (v.roughness > 0.0)
+            return; // the path listed is one lobe sample, not the mirror direction the raster's view follows
+        exact.push_back(v.hit.kind == HitKind::Mirror ? input.mirrors[std::size_t(v.hit.index)].name : "");
+    }
+    if (raster.empty() || raster == exact)
+        return;
+    auto chain = [](const std::vector<std::string>& names) {
+        std::string text;
+        for (const std::string& n : names)
+            text += (text.empty() ? "" : " → ") + quoted(n);
+        return text.empty() ? std::string("no mirror") : text;
+    };
+    causes.push_back(
+        {"mirror-chain", "the raster draws this pixel through " + chain(raster) +
+                             ", the exact path goes through " + chain(exact) + " to " + after +
+                             ": near an edge of what a reflection shows, or a rough mirror's filter "
+                             "reading past it, the two see different things"});
+}
+
 glm::dvec3 encoded(const glm::dvec3& c) {
     glm::dvec3 out;
     for (int k = 0; k < 3; ++k)
@@ -597,22 +644,29 @@ void screenSpaceCause(const glm::dvec3& source, PixelExplanation& e) {
 }
 
 // A reflection texture is shared by the views of one nesting level, one after the other: of the writes to
-// its pixel, only the last before a mirror surface reads it reaches the image.
+// its pixel, those since the last clear before a mirror surface reads it reach the image (a mirror pass
+// clears and draws its view; the surfaces of mirrors inside it blend over that), and the others do not.
 std::vector<RecipeStep> readReflectionWrites(const FrameReport& report, std::vector<RecipeStep> steps) {
     std::vector<bool> keep(steps.size(), true);
-    std::map<int, std::size_t> pending; // slot → the step that last wrote it, not yet read
+    std::map<int, std::vector<std::size_t>> pending; // slot → the writes since its last clear, not yet read
+    auto drop = [&](std::vector<std::size_t>& writes) {
+        for (std::size_t i : writes)
+            keep[i] = false;
+        writes.clear();
+    };
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const PassWrites& writes = report.planned(report.ran[std::size_t(steps[i].run)]).writes;
-        if (writes.target == PassTarget::Reflection && steps[i].wrote) {
-            if (const auto before = pending.find(writes.slot); before != pending.end())
-                keep[before->second] = false;
-            pending[writes.slot] = i;
-        }
         if (writes.readSlot >= 0)
-            pending.erase(writes.readSlot);
+            pending.erase(writes.readSlot); // read: they reach the image
+        if (writes.target != PassTarget::Reflection || !steps[i].wrote)
+            continue;
+        std::vector<std::size_t>& slot = pending[writes.slot];
+        if (steps[i].cleared)
+            drop(slot); // cleared here: what was written before never reaches the image
+        slot.push_back(i);
     }
-    for (const auto& [slot, unread] : pending)
-        keep[unread] = false;
+    for (auto& [slot, unread] : pending)
+        drop(unread);
     std::vector<RecipeStep> out;
     for (std::size_t i = 0; i < steps.size(); ++i)
         if (keep[i])
@@ -690,6 +744,7 @@ base::Result<PixelExplanation> explainPixel(const FrameInput& input, const Frame
     if (screenSpaceSource && tracedInTheImage(input, exact))
         screenSpaceCause(*screenSpaceSource, e);
     pathCauses(input, e, e.causes);
+    mirrorChainCause(input, e, e.causes);
     shadowCauses(input, report.plan, exact.centre, tracer, e.causes);
     textureCause(input, exact.centre, e.causes);
     glossyCause(e, e.causes);

@@ -21,7 +21,8 @@ struct RecipeStep {
     std::string target;     // the node it draws for (a mirror, a reflector, a light); empty: the frame
     std::string what;       // what it did at this pixel, in words
     std::string why;        // the plan's reason for running it
-    bool wrote = false;     // it changed the pixel of the buffer it drew into
+    bool wrote = false;     // it changed the pixel of the buffer it drew into (or cleared it and drew there)
+    bool cleared = false;   // it cleared the pixel before drawing: what the buffer held there before is gone
     bool feeds = false;     // it drew a map (shadow, environment, GGX chain) a later step reads here
     bool readable = false;  // `colour` and `stencil` were read back from its buffer
     glm::dvec3 colour{0.0}; // what its buffer held at the pixel after it (linear)

@@ -164,6 +164,8 @@ PixelProbe probePixel(const PassWrites& writes, FrameExecution& frame, glm::ivec
     if (glCheckFramebufferStatus(GL_READ_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         return probe;
     const GLint x = pixel.x, y = size.height - 1 - pixel.y; // GL rows count from the bottom
+    probe.x = x;
+    probe.y = y;
     float rgba[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glReadPixels(x, y, 1, 1, GL_RGBA, GL_FLOAT, rgba);
     GLint encoding = GL_LINEAR;

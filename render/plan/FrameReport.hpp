@@ -37,6 +37,8 @@ struct PixelProbe {
     glm::vec4 colour{0.0f}; // linear: what the buffer holds there (an 8-bit sRGB buffer's value decoded)
     int stencil = -1;       // the stencil value there (-1: the buffer has none)
     float depth = -1.0f;    // window depth there, 0..1 (-1: the buffer has none)
+    int x = -1;             // the pixel read, in the buffer's GL window coordinates (rows from the bottom)
+    int y = -1;
 };
 
 // What a frame did: the plan as the planner made it (execution never edits it), the passes that ran in
