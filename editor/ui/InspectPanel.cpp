@@ -127,7 +127,10 @@ void InspectPanel::show(const render::inspect::PixelExplanation& e, const render
         const QString node = name(input, v.hit);
         auto* item = new QTreeWidgetItem(
             exact, {QString::fromUtf8(toString(v.kind).data()) + (node.isEmpty() ? QString() : " " + node),
-                    colour(v.colour), tr("%1 m from the last point").arg(v.distance, 0, 'f', 3)});
+                    colour(v.colour),
+                    v.kind == PathEventKind::Background
+                        ? tr("nothing met: the background")
+                        : tr("%1 m from the last point").arg(v.distance, 0, 'f', 3)});
         item->setData(0, kNodeRole, node);
         item->setData(0, kVertexRole, index++);
     }
