@@ -253,12 +253,12 @@ void printRecipe(const PixelExplanation& e) {
                         s.stencil >= 0 ? (", stencil " + std::to_string(s.stencil)).c_str() : "");
     }
     if (const auto& l = e.lookup)
-        std::printf("  map lookup: %s's %s map %d², %s, texel (%d, %d), %s%s; reflected %s, looked up %s\n",
-                    base::quoted(l->reflector).c_str(), l->layout.c_str(), l->resolution,
-                    l->componentLabel.c_str(), l->texelX, l->texelY, l->filter.c_str(),
-                    l->filter == "sharp" ? ""
-                                         : (", level " + std::to_string(l->mipLevel).substr(0, 4)).c_str(),
-                    triple(l->reflected).c_str(), triple(l->lookup).c_str());
+        std::printf(
+            "  map lookup: the %s map of %s, %d², %s, texel (%d, %d), %s%s; reflected %s, looked up %s\n",
+            l->layout.c_str(), base::quoted(l->reflector).c_str(), l->resolution, l->componentLabel.c_str(),
+            l->texelX, l->texelY, l->filter.c_str(),
+            l->filter == "sharp" ? "" : (", level " + std::to_string(l->mipLevel).substr(0, 4)).c_str(),
+            triple(l->reflected).c_str(), triple(l->lookup).c_str());
 }
 
 void printText(const CliOptions& options, const render::FrameInput& input, const PixelExplanation& e,
