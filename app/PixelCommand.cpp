@@ -22,35 +22,13 @@ using render::reference::PathVertex;
 using render::reference::PixelId;
 using render::reference::TracedPath;
 
-std::string hitKindText(HitKind kind) {
-    switch (kind) {
-    case HitKind::Background:
-        return "background";
-    case HitKind::Object:
-        return "object";
-    case HitKind::Mirror:
-        return "mirror";
-    case HitKind::MirrorBack:
-        return "mirror-back";
-    case HitKind::Reflector:
-        return "reflector";
-    }
-    return "background";
+QString hitKindText(HitKind kind) {
+    const std::string_view text = render::reference::toString(kind);
+    return QString::fromUtf8(text.data(), qsizetype(text.size()));
 }
 
 std::string hitName(const render::FrameInput& input, const PixelId& id) {
-    switch (id.kind) {
-    case HitKind::Background:
-        return "";
-    case HitKind::Object:
-        return input.items[std::size_t(id.index)].name;
-    case HitKind::Mirror:
-    case HitKind::MirrorBack:
-        return input.mirrors[std::size_t(id.index)].name;
-    case HitKind::Reflector:
-        return input.reflectors[std::size_t(id.index)].name;
-    }
-    return "";
+    return render::inspect::nodeName(input, id);
 }
 
 QJsonArray vec(const glm::dvec3& v) {
@@ -82,7 +60,7 @@ QJsonArray pathJson(const render::FrameInput& input, const TracedPath& path) {
     QJsonArray vertices;
     for (const PathVertex& v : path.vertices) {
         QJsonObject o{{"event", text(std::string(toString(v.kind)))},
-                      {"hit", hitKindText(v.hit.kind).c_str()},
+                      {"hit", hitKindText(v.hit.kind)},
                       {"target", text(hitName(input, v.hit))},
                       {"from", vec(v.from)},
                       {"position", vec(v.position)},
@@ -163,7 +141,7 @@ void printJson(const CliOptions& options, const render::FrameInput& input, const
                             {"standardError", e.exactStandardError},
                             {"glossy", e.exact.glossy},
                             {"lobeSpreadDegrees", e.lobeSpreadDegrees},
-                            {"hit", hitKindText(e.exact.id.kind).c_str()},
+                            {"hit", hitKindText(e.exact.id.kind)},
                             {"target", text(hitName(input, e.exact.id))},
                             {"path", pathJson(input, e.exact.centre)},
                             {"samples", samples}};

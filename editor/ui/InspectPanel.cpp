@@ -17,18 +17,7 @@ constexpr int kNodeRole = Qt::UserRole + 1;
 constexpr int kVertexRole = Qt::UserRole + 2;
 
 QString name(const render::FrameInput& input, const render::reference::PixelId& id) {
-    switch (id.kind) {
-    case HitKind::Background:
-        return {};
-    case HitKind::Object:
-        return QString::fromStdString(input.items[std::size_t(id.index)].name);
-    case HitKind::Mirror:
-    case HitKind::MirrorBack:
-        return QString::fromStdString(input.mirrors[std::size_t(id.index)].name);
-    case HitKind::Reflector:
-        return QString::fromStdString(input.reflectors[std::size_t(id.index)].name);
-    }
-    return {};
+    return QString::fromStdString(render::inspect::nodeName(input, id));
 }
 
 QString colour(const glm::dvec3& c) {

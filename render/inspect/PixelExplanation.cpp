@@ -154,6 +154,21 @@ bool differs(const glm::dvec3& a, const glm::dvec3& b) {
 
 } // namespace
 
+std::string nodeName(const FrameInput& input, const PixelId& id) {
+    switch (id.kind) {
+    case HitKind::Background:
+        return {};
+    case HitKind::Object:
+        return input.items[std::size_t(id.index)].name;
+    case HitKind::Mirror:
+    case HitKind::MirrorBack:
+        return input.mirrors[std::size_t(id.index)].name;
+    case HitKind::Reflector:
+        return input.reflectors[std::size_t(id.index)].name;
+    }
+    return {};
+}
+
 std::vector<RecipeStep> rasterRecipe(const FrameInput& input, const FrameReport& report) {
     std::vector<RecipeStep> steps;
     struct Last {
@@ -319,18 +334,7 @@ std::optional<MapLookup> mapLookup(const FrameInput& input, const FramePlan& pla
 namespace {
 
 std::string nameOf(const FrameInput& input, const PixelId& id) {
-    switch (id.kind) {
-    case HitKind::Background:
-        return "the background";
-    case HitKind::Object:
-        return quoted(input.items[std::size_t(id.index)].name);
-    case HitKind::Mirror:
-    case HitKind::MirrorBack:
-        return quoted(input.mirrors[std::size_t(id.index)].name);
-    case HitKind::Reflector:
-        return quoted(input.reflectors[std::size_t(id.index)].name);
-    }
-    return "";
+    return id.kind == HitKind::Background ? std::string("the background") : quoted(nodeName(input, id));
 }
 
 std::string metres(double d) {

@@ -93,6 +93,9 @@ struct PixelExplanation {
     std::vector<std::string> notes; // what the recipe could not record (a tiled still, a preview)
 };
 
+// The name of the node a ray met (an item, a mirror, a reflector); empty for the background.
+std::string nodeName(const FrameInput& input, const reference::PixelId& id);
+
 // The raster recipe of pixel (x, y) from a frame's report and its probes (RenderOptions::probePixel).
 std::vector<RecipeStep> rasterRecipe(const FrameInput& input, const FrameReport& report);
 

@@ -9,4 +9,20 @@ std::vector<std::uint8_t> maskOf(const IdBuffer& ids, HitKind kind) {
     return mask;
 }
 
+std::string_view toString(HitKind kind) {
+    switch (kind) {
+    case HitKind::Background:
+        return "background";
+    case HitKind::Object:
+        return "object";
+    case HitKind::Mirror:
+        return "mirror";
+    case HitKind::MirrorBack:
+        return "mirror-back";
+    case HitKind::Reflector:
+        return "reflector";
+    }
+    return "background";
+}
+
 } // namespace speculum::render::reference

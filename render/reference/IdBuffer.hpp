@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 namespace speculum::render::reference {
@@ -13,6 +14,9 @@ enum class HitKind : std::uint8_t {
     MirrorBack, // the back of FrameInput::mirrors[index] (shows its material)
     Reflector,  // FrameInput::reflectors[index]
 };
+
+// "background", "object", "mirror", "mirror-back", "reflector" (explain --pixel's JSON).
+std::string_view toString(HitKind kind);
 
 struct PixelId {
     HitKind kind = HitKind::Background;
