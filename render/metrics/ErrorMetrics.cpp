@@ -17,7 +17,22 @@ std::string sizeText(const Image& image) {
     return std::to_string(image.width) + "x" + std::to_string(image.height);
 }
 
-base::Status checkSizes(const Image& test, const Image& reference) {
+double encode(float value, Encoding encoding) {
+    if (!std::isfinite(value))
+        return 0.0;
+    if (encoding == Encoding::Linear)
+        return value;
+    return linearToSrgb(std::clamp(value, 0.0f, 1.0f));
+}
+
+double relativeSquaredError(float test, float reference) {
+    const double t = std::isfinite(test) ? test : 0.0, r = std::isfinite(reference) ? reference : 0.0;
+    return (t - r) * (t - r) / (r * r + kRelativeMseEpsilon);
+}
+
+} // namespace
+
+base::Status checkComparable(const Image& test, const Image& reference) {
     if (test.width != reference.width || test.height != reference.height)
         return base::Error{"cannot compare a " + sizeText(test) + " image with a " + sizeText(reference) +
                            " reference"};
@@ -27,34 +42,26 @@ base::Status checkSizes(const Image& test, const Image& reference) {
     return base::Done{};
 }
 
-double encode(float value, Encoding encoding) {
-    if (!std::isfinite(value))
-        return 0.0;
-    if (encoding == Encoding::Linear)
-        return value;
-    return linearToSrgb(std::clamp(value, 0.0f, 1.0f));
-}
-
-} // namespace
-
 base::Result<ErrorStats> compare(const Image& test, const Image& reference,
                                  const std::vector<std::uint8_t>* mask, Encoding encoding) {
-    if (base::Status sizes = checkSizes(test, reference); !sizes)
+    if (base::Status sizes = checkComparable(test, reference); !sizes)
         return base::Error{sizes.error()};
     const std::size_t pixels = static_cast<std::size_t>(test.width) * test.height;
     if (mask && mask->size() != pixels)
         return base::Error{"the mask has " + std::to_string(mask->size()) + " entries for " +
                            std::to_string(pixels) + " pixels"};
     ErrorStats stats;
-    double sum = 0.0;
+    double sum = 0.0, absolute = 0.0, relative = 0.0;
     for (std::size_t p = 0; p < pixels; ++p) {
         if (mask && (*mask)[p] == 0)
             continue;
         double pixel = 0.0;
         for (int c = 0; c < 3; ++c) {
-            const double d =
-                encode(test.rgba[p * 4 + c], encoding) - encode(reference.rgba[p * 4 + c], encoding);
+            const float t = test.rgba[p * 4 + c], r = reference.rgba[p * 4 + c];
+            const double d = encode(t, encoding) - encode(r, encoding);
             pixel += d * d;
+            absolute += std::abs(d);
+            relative += relativeSquaredError(t, r);
         }
         sum += pixel;
         stats.maxError = std::max(stats.maxError, std::sqrt(pixel / 3.0));
@@ -62,13 +69,16 @@ base::Result<ErrorStats> compare(const Image& test, const Image& reference,
     }
     if (stats.pixels == 0)
         return stats;
-    stats.rmse = std::sqrt(sum / (3.0 * double(stats.pixels)));
+    const double values = 3.0 * double(stats.pixels);
+    stats.rmse = std::sqrt(sum / values);
+    stats.mae = absolute / values;
+    stats.relativeMse = relative / values;
     stats.psnr = stats.rmse > 0.0 ? std::min(kMaxPsnr, -20.0 * std::log10(stats.rmse)) : kMaxPsnr;
     return stats;
 }
 
 base::Result<Image> absoluteDifference(const Image& test, const Image& reference, Encoding encoding) {
-    if (base::Status sizes = checkSizes(test, reference); !sizes)
+    if (base::Status sizes = checkComparable(test, reference); !sizes)
         return base::Error{sizes.error()};
     Image diff;
     diff.width = test.width;

@@ -23,8 +23,19 @@ struct ErrorStats {
     double rmse = 0.0;      // root mean square over the R, G, B values of the pixels compared
     double psnr = kMaxPsnr; // 20·log10(1 / rmse) in dB (peak 1), at most kMaxPsnr
     double maxError = 0.0;  // largest per-pixel error (RMS over the pixel's three channels)
+    double mae = 0.0;       // mean absolute error over the R, G, B values (in the chosen encoding)
+    // Relative MSE, as pbrt's imgtool reports it: the mean over the R, G, B values of
+    // (test − reference)² / (reference² + kRelativeMseEpsilon), always on the linear values (unclamped),
+    // so an error in a dark pixel counts as much as a proportional one in a bright pixel.
+    double relativeMse = 0.0;
     std::size_t pixels = 0; // pixels compared (those in the mask)
 };
+
+// Keeps the relative MSE finite where the reference is black.
+inline constexpr double kRelativeMseEpsilon = 0.01;
+
+// Whether two images can be compared: the same size, and data that matches it. The error names both sizes.
+base::Status checkComparable(const Image& test, const Image& reference);
 
 // RMSE and PSNR of `test` against `reference` over all pixels, or over those whose mask byte is non-zero
 // (mask: one byte per pixel, row 0 at the top, e.g. reference::mirrorMask). Errors: sizes differ, or the
