@@ -1,5 +1,7 @@
 #include "accuracy/Analysis.hpp"
 
+#include "render/metrics/Flip.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -51,6 +53,31 @@ double focusValue(const Record& record, Metric metric) {
     if (metric == Metric::PsnrReflector && record.psnrReflector)
         return *record.psnrReflector;
     return record.psnr;
+}
+
+std::optional<double> focusFlip(const Record& record, Metric metric) {
+    if (!record.perceptual)
+        return std::nullopt;
+    if (metric == Metric::PsnrMirrors && record.flipMirrors)
+        return record.flipMirrors;
+    if (metric == Metric::PsnrReflector && record.flipReflector)
+        return record.flipReflector;
+    return record.flip;
+}
+
+std::string flipAxisLabel(Metric metric) {
+    switch (metric) {
+    case Metric::PsnrMirrors:
+        return "mean FLIP on mirror pixels (lower is better)";
+    case Metric::PsnrReflector:
+        return "mean FLIP on reflector pixels (lower is better)";
+    default:
+        return "mean FLIP of the whole frame (lower is better)";
+    }
+}
+
+double flipJnd() {
+    return render::metrics::flipJnd();
 }
 
 Metric effectiveMetric(const std::vector<const Record*>& records, Metric wanted) {

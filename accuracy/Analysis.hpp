@@ -20,14 +20,28 @@ std::string metricAxisLabel(Metric metric);
 double focusValue(const Record& record, Metric metric);
 Metric effectiveMetric(const std::vector<const Record*>& records, Metric wanted);
 
+// FLIP's counterpart of focusValue: the mean LDR-FLIP on the family's pixels (falling back to the whole
+// frame's as focusValue does); none for a record without perceptual figures.
+std::optional<double> focusFlip(const Record& record, Metric metric);
+std::string flipAxisLabel(Metric metric);
+
+// One just-noticeable difference in mean FLIP (render::metrics::flipJnd: a ΔE*ab of 2.3).
+double flipJnd();
+
 // The cost compared: GPU time when every record has it, else CPU time.
 bool allGpuTimed(const std::vector<const Record*>& records);
 double costOf(const Record& record, bool gpu);
 
 struct Point {
     double cost = 0.0; // ms, lower is better
-    double psnr = 0.0; // dB, higher is better
+    double psnr = 0.0; // dB, higher is better; for FLIP's points (flipPoint) minus the FLIP
 };
+
+// A point judged by FLIP: its value negated, so that higher is better as for PSNR and the front and
+// cheapestWithin apply unchanged.
+inline Point flipPoint(double cost, double flip) {
+    return {cost, -flip};
+}
 
 // Indices of the points no other point beats in both cost and PSNR (ties in cost keep the better PSNR),
 // ordered by cost.

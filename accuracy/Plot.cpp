@@ -94,11 +94,14 @@ struct PlotArea {
     QRect rect;
     Range x;
     Range y;
+    bool yDown = false;
 
     QPointF toScreen(double px, double py) const {
+        const double up = (py - y.lo) / (y.hi - y.lo) * rect.height();
         return QPointF(rect.left() + (px - x.lo) / (x.hi - x.lo) * rect.width(),
-                       rect.bottom() - (py - y.lo) / (y.hi - y.lo) * rect.height());
+                       yDown ? rect.top() + up : rect.bottom() - up);
     }
+    double worstY() const { return yDown ? y.hi : y.lo; } // the bottom edge's value
 };
 
 // Room on the left and below for the ticks and axis titles, on the right for the legend; the ranges hold
@@ -120,6 +123,7 @@ PlotArea plotArea(const PlotSpec& spec, int width, int height) {
     if (xMin >= 0.0 && xMin < 0.5 * xMax)
         area.x.lo = 0.0;
     area.y = paddedRange(yMin, yMax, 0.08);
+    area.yDown = spec.yDown;
     return area;
 }
 
@@ -184,7 +188,7 @@ void drawFront(QPainter& p, const PlotSpec& spec, const PlotArea& plot, std::vec
         return;
     QPainterPath stairs;
     const PlotPoint& first = spec.points[spec.front.front()];
-    stairs.moveTo(plot.toScreen(first.x, plot.y.lo));
+    stairs.moveTo(plot.toScreen(first.x, plot.worstY()));
     stairs.lineTo(plot.toScreen(first.x, first.y));
     for (std::size_t k = 1; k < spec.front.size(); ++k) {
         const PlotPoint& a = spec.points[spec.front[k - 1]];

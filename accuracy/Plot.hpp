@@ -22,6 +22,9 @@ struct PlotSpec {
     std::string subtitle;
     std::string xLabel;
     std::string yLabel;
+    // Lower y is better (FLIP): the axis runs downward, so better is still up and the front's staircase
+    // still bounds what is attainable from below.
+    bool yDown = false;
     std::vector<std::string> series; // names, for the legend
     std::vector<PlotPoint> points;
     std::vector<std::size_t> front; // indices into points, ordered by x

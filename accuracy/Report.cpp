@@ -2,6 +2,7 @@
 
 #include "accuracy/Analysis.hpp"
 #include "accuracy/Plot.hpp"
+#include "accuracy/ReportFlip.hpp"
 #include "base/AtomicFile.hpp"
 
 #include <algorithm>
@@ -144,6 +145,7 @@ struct FamilyView {
     std::optional<std::size_t> cheapest;
     std::optional<std::size_t> own;
     std::vector<std::string> series; // in order of first appearance
+    std::optional<FlipView> flip;    // none for records without perceptual figures
 };
 
 FamilyView analyse(Family family, const std::vector<Record>& records) {
@@ -172,6 +174,7 @@ FamilyView analyse(Family family, const std::vector<Record>& records) {
     }
     v.front = paretoFront(v.points);
     v.cheapest = cheapestWithin(v.points, 1.0);
+    v.flip = analyseFlip(v.rows, v.points, v.metric);
     return v;
 }
 
@@ -362,7 +365,7 @@ std::vector<std::string> findingLines(const FamilyView& v, const std::string& no
     if (v.family == Family::ScreenSpace)
         if (std::optional<std::string> line = screenSpaceAgainstPlanar(v))
             lines.push_back(*line);
-    lines.push_back("Best: " + describe(v, v.best) + ".");
+    lines.push_back("Best: " + describe(v, v.best) + tiedNote(*v.rows[v.best], v.rows) + ".");
     if (v.cheapest) {
         std::string line = "Cheapest within 1 dB of the best: " + describe(v, *v.cheapest);
         if (*v.cheapest != v.best) {
@@ -389,6 +392,9 @@ std::vector<std::string> findingLines(const FamilyView& v, const std::string& no
     }
     const auto [low, high] = std::minmax_element(
         v.points.begin(), v.points.end(), [](const Point& a, const Point& b) { return a.psnr < b.psnr; });
+    if (v.flip)
+        for (std::string& line : flipLines(v.rows, *v.flip, {v.front, v.best, v.cheapest, costName(v.gpu)}))
+            lines.push_back(std::move(line));
     if (v.rows.size() >= 2 && high->psnr - low->psnr < 1.0)
         lines.push_back(
             "Across this family the error changes by only " + db(high->psnr - low->psnr) +
@@ -422,21 +428,33 @@ void familySection(std::ostringstream& md, const FamilyView& v, const std::strin
        << referenceList(v) << ".\n\n";
     if (v.rows.size() >= 2)
         md << "![" << familyTitle(v.family) << "](" << plot << ")\n\n";
+    if (v.rows.size() >= 2 && v.flip)
+        md << "![" << familyTitle(v.family) << " by FLIP](plot-" << familyName(v.family) << "-flip.png)\n\n";
     for (const std::string& line : findingLines(v, note))
         md << "- " << line << "\n";
     md << "\n";
     if (v.family == Family::Envmap && v.series.size() >= 2)
         equalError(md, v);
     md << "| setting | " << costName(v.gpu)
-       << " ms | CPU ms | memory | PSNR | PSNR mirrors | PSNR reflector |"
-       << " error map |\n|---|---|---|---|---|---|---|---|\n";
+       << " ms | CPU ms | memory | PSNR | PSNR 95 % | PSNR mirrors | PSNR reflector | MAE | rel. MSE | SSIM |"
+       << " FLIP | FLIP (judged) | HDR-FLIP | error map | FLIP map |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record* r : v.rows) {
+        auto perceptual = [&](const char* pattern, double value) {
+            return r->perceptual ? format(pattern, value) : std::string("–");
+        };
+        const std::optional<double> judged = focusFlip(*r, v.metric);
         md << "| " << displayName(r->config) << (r->sceneSetting ? " (scene)" : "") << " | "
            << format("%.2f", costOf(*r, v.gpu)) << " | " << format("%.2f", r->cpuMs) << " | "
            << mib(r->memory.total()) << " | " << format("%.2f", r->psnr) << " | "
+           << (r->perceptual ? format("%.2f", r->psnrLow) + "–" + format("%.2f", r->psnrHigh) : "–") << " | "
            << (r->psnrMirrors ? format("%.2f", *r->psnrMirrors) : "–") << " | "
-           << (r->psnrReflector ? format("%.2f", *r->psnrReflector) : "–") << " | [map](" << r->errorMap
-           << ") |\n";
+           << (r->psnrReflector ? format("%.2f", *r->psnrReflector) : "–") << " | "
+           << perceptual("%.4f", r->mae) << " | " << perceptual("%.4f", r->relativeMse) << " | "
+           << perceptual("%.4f", r->ssim) << " | " << perceptual("%.4f", r->flip) << " | "
+           << (judged ? format("%.4f", *judged) : "–") << " | " << perceptual("%.4f", r->hdrFlip)
+           << " | [map](" << r->errorMap << ") | "
+           << (r->perceptual ? "[FLIP](" + r->flipMap + ")" : std::string("–")) << " |\n";
     }
     md << "\n";
 }
@@ -508,8 +526,13 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
     for (const FamilyView& v : views)
         if (v.rows.size() >= 2) {
             const std::string plot = (folder / ("plot-" + familyName(v.family) + ".png")).string();
-            if (base::Status s = writePlot(plot, plotOf(v, run)); !s)
+            const PlotSpec spec = plotOf(v, run);
+            if (base::Status s = writePlot(plot, spec); !s)
                 return s;
+            const std::string flip = (folder / ("plot-" + familyName(v.family) + "-flip.png")).string();
+            if (v.flip)
+                if (base::Status s = writePlot(flip, flipPlot(spec, *v.flip, v.metric)); !s)
+                    return s;
         }
 
     std::ostringstream md;
@@ -525,7 +548,18 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
           "frame. "
           "Memory counts the render targets the frame uses (colour and depth buffers, reflection textures, "
           "shadow maps, the environment map with its mip chain), from their sizes and formats. Errors are "
-          "measured on sRGB values, as a viewer sees them; PSNR has a peak of 1.\n\n";
+          "measured on sRGB values, as a viewer sees them; PSNR has a peak of 1. Beside PSNR: MAE (mean "
+          "absolute "
+          "error of the sRGB values), relative MSE (on linear values, (test − exact)² / (exact² + 0.01)), "
+          "SSIM "
+          "(1 for identical images), and FLIP (0 to 1: what a viewer flipping between the two images would "
+          "notice, LDR-FLIP on the displayed values and HDR-FLIP on the linear ones, seen at 67 pixels per "
+          "degree). One just-noticeable difference (JND) is a FLIP of "
+       << format("%.3f", flipJnd())
+       << ", what a uniform colour difference of ΔE*ab 2.3 scores. The exact images of rough surfaces are "
+          "averages of random paths, so they carry noise: PSNR 95 % is the interval that noise leaves on the "
+          "PSNR, and two settings whose difference is smaller than the noise can tell apart are called tied, "
+          "not ranked.\n\n";
 
     const Record* scene = nullptr;
     for (const Record& r : records)
@@ -561,8 +595,8 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
         }
 
     md << "## Summary\n\n| family | judged by | scene's own setting | best | cheapest within 1 dB of the "
-          "best |\n"
-          "|---|---|---|---|---|\n";
+          "best | cheapest within one JND (FLIP) |\n"
+          "|---|---|---|---|---|---|\n";
     for (const FamilyView& v : views) {
         auto cell = [&](std::optional<std::size_t> i) {
             if (!i)
@@ -570,11 +604,16 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
             return displayName(v.rows[*i]->config) + ": " + db(v.points[*i].psnr) + ", " +
                    ms(v.points[*i].cost);
         };
+        std::string jnd = "–";
+        if (v.flip && v.flip->cheapest)
+            jnd = displayName(v.rows[*v.flip->cheapest]->config) + ": FLIP " +
+                  format("%.4f", -v.flip->points[*v.flip->cheapest].psnr) + ", " +
+                  ms(v.flip->points[*v.flip->cheapest].cost);
         md << "| " << familyName(v.family) << " | " << metricField(v.metric) << " | " << cell(v.own) << " | "
-           << cell(v.best) << " | " << cell(v.cheapest) << " |\n";
+           << cell(v.best) << " | " << cell(v.cheapest) << " | " << jnd << " |\n";
     }
     if (views.empty())
-        md << "| – | | | | |\n\nThe scene has nothing to sweep: no curved reflector, no planar mirror, no "
+        md << "| – | | | | | |\n\nThe scene has nothing to sweep: no curved reflector, no planar mirror, no "
               "shadowed light and no built-in teapot.\n";
     md << "\n";
     for (const FamilyView& v : views)
@@ -583,7 +622,9 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
     md << "## Files\n\n`results.csv` and `results.json` hold one record per configuration (the same fields); "
           "`render.png` is the frame with the scene's own settings; `reference*.png` the exact images; "
           "`errors/<id>.png` the error map of each configuration (per-pixel error on a fixed scale: black "
-          "none, pale yellow a quarter of the sRGB range or more).\n";
+          "none, pale yellow a quarter of the sRGB range or more); `flip/<id>.png` its FLIP map (magma: "
+          "black "
+          "none, pale yellow 1); `plot-<family>-flip.png` each family's FLIP against frame time.\n";
 
     const std::filesystem::path path = folder / "report.md";
     // Staged and checked (base::AtomicFile): a full disk is an error, never a truncated report.

@@ -78,6 +78,65 @@ Settings settingsOf(const QJsonObject& object) {
     return settings;
 }
 
+std::string optionalNumber(const std::optional<double>& value) {
+    return value ? number(*value) : std::string();
+}
+
+// The perceptual figures, present from the version that measures them on.
+void readPerceptual(const QJsonObject& r, Record& record) {
+    const auto flip = finite(r.value("flip"));
+    if (!flip)
+        return;
+    record.perceptual = true;
+    record.flip = *flip;
+    record.mae = finite(r.value("mae")).value_or(0.0);
+    record.relativeMse = finite(r.value("relativeMse")).value_or(0.0);
+    record.ssim = finite(r.value("ssim")).value_or(1.0);
+    record.hdrFlip = finite(r.value("hdrFlip")).value_or(0.0);
+    record.flipMirrors = finite(r.value("flipMirrors"));
+    record.flipReflector = finite(r.value("flipReflector"));
+    record.referenceNoise = finite(r.value("referenceNoise")).value_or(0.0);
+    const QJsonArray interval = r.value("psnrInterval").toArray();
+    record.psnrLow = finite(interval.at(0)).value_or(record.psnr);
+    record.psnrHigh = finite(interval.at(1)).value_or(record.psnr);
+    for (const QJsonValue& id : r.value("tiedWith").toArray())
+        record.tiedWith.push_back(id.toString().toStdString());
+    record.flipMap = r.value("flipMap").toString().toStdString();
+}
+
+void addPerceptual(QJsonObject& object, const Record& r) {
+    if (!r.perceptual)
+        return;
+    QJsonArray tied;
+    for (const std::string& id : r.tiedWith)
+        tied.append(q(id));
+    object.insert("mae", r.mae);
+    object.insert("relativeMse", r.relativeMse);
+    object.insert("ssim", r.ssim);
+    object.insert("flip", r.flip);
+    object.insert("hdrFlip", r.hdrFlip);
+    object.insert("flipMirrors", orNull(r.flipMirrors));
+    object.insert("flipReflector", orNull(r.flipReflector));
+    object.insert("referenceNoise", r.referenceNoise);
+    object.insert("psnrInterval", QJsonArray{r.psnrLow, r.psnrHigh});
+    object.insert("tiedWith", tied);
+    object.insert("flipMap", q(r.flipMap));
+}
+
+void writePerceptualCsv(std::ostream& csv, const Record& r) {
+    if (!r.perceptual) {
+        csv << std::string(12, ',');
+        return;
+    }
+    std::string tied;
+    for (const std::string& id : r.tiedWith)
+        tied += (tied.empty() ? "" : " ") + id;
+    csv << "," << number(r.mae) << "," << number(r.relativeMse) << "," << number(r.ssim) << ","
+        << number(r.flip) << "," << number(r.hdrFlip) << "," << optionalNumber(r.flipMirrors) << ","
+        << optionalNumber(r.flipReflector) << "," << number(r.referenceNoise) << "," << number(r.psnrLow)
+        << "," << number(r.psnrHigh) << "," << csvField(tied) << "," << csvField(r.flipMap);
+}
+
 } // namespace
 
 double frameMs(const Record& record) {
@@ -164,6 +223,7 @@ base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& n
         record.psnrMirrors = finite(r.value("psnrMirrors"));
         record.psnrReflector = finite(r.value("psnrReflector"));
         record.errorMap = r.value("errorMap").toString().toStdString();
+        readPerceptual(r, record);
         out.records.push_back(std::move(record));
     }
     if (out.records.empty())
@@ -177,7 +237,8 @@ base::Status writeCsv(const std::string& path, const std::vector<Record>& record
     csv << "id,family,label,series,reference,sceneSetting";
     for (const std::string& name : kSettingNames)
         csv << "," << name;
-    csv << ",gpuMs,cpuMs,memoryBytes,rmse,psnr,psnrMirrors,psnrReflector,errorMap\n";
+    csv << ",gpuMs,cpuMs,memoryBytes,rmse,psnr,psnrMirrors,psnrReflector,errorMap,mae,relativeMse,ssim,flip,"
+           "hdrFlip,flipMirrors,flipReflector,referenceNoise,psnrLow,psnrHigh,tiedWith,flipMap\n";
     for (const Record& r : records) {
         csv << csvField(r.config.id) << "," << familyName(r.config.family) << "," << csvField(r.config.label)
             << "," << csvField(r.config.series) << "," << referenceName(r.config.reference) << ","
@@ -187,7 +248,9 @@ base::Status writeCsv(const std::string& path, const std::vector<Record>& record
         csv << "," << (r.gpuMs >= 0.0 ? number(r.gpuMs) : "") << "," << number(r.cpuMs) << ","
             << r.memory.total() << "," << number(r.rmse) << "," << number(r.psnr) << ","
             << (r.psnrMirrors ? number(*r.psnrMirrors) : "") << ","
-            << (r.psnrReflector ? number(*r.psnrReflector) : "") << "," << csvField(r.errorMap) << "\n";
+            << (r.psnrReflector ? number(*r.psnrReflector) : "") << "," << csvField(r.errorMap);
+        writePerceptualCsv(csv, r);
+        csv << "\n";
     }
     return writeText(path, csv.str());
 }
@@ -208,7 +271,7 @@ base::Status writeJson(const std::string& path, const RunInfo& run, const std::v
             const int n = QString::fromStdString(value).toInt(&isNumber);
             settings[q(key)] = isNumber ? QJsonValue(n) : QJsonValue(q(value));
         }
-        results.append(QJsonObject{
+        QJsonObject object{
             {"id", q(r.config.id)},
             {"family", q(familyName(r.config.family))},
             {"label", q(r.config.label)},
@@ -228,7 +291,9 @@ base::Status writeJson(const std::string& path, const RunInfo& run, const std::v
             {"psnrMirrors", orNull(r.psnrMirrors)},
             {"psnrReflector", orNull(r.psnrReflector)},
             {"errorMap", q(r.errorMap)},
-        });
+        };
+        addPerceptual(object, r);
+        results.append(object);
     }
     const QJsonObject root{
         {"format", "speculum-bench"},

@@ -24,6 +24,25 @@ struct Record {
     std::optional<double> psnrMirrors;   // dB on the pixels showing a planar mirror; none if no such pixel
     std::optional<double> psnrReflector; // dB on the pixels showing the curved reflector
     std::string errorMap;                // path of its error map, relative to the output folder
+    // The figures beside PSNR (render::metrics), all on the whole frame unless named otherwise. False in
+    // a results.json written before they existed: the figures below are then unknown, not zero.
+    bool perceptual = false;
+    double mae = 0.0;                    // mean absolute error of the sRGB values
+    double relativeMse = 0.0;            // on linear values (pbrt's relative MSE)
+    double ssim = 1.0;                   // mean SSIM, 1 for identical images
+    double flip = 0.0;                   // mean LDR-FLIP, 0 (identical) to 1
+    double hdrFlip = 0.0;                // mean HDR-FLIP on the linear images
+    std::optional<double> flipMirrors;   // mean LDR-FLIP on the mirrors' pixels
+    std::optional<double> flipReflector; // on the reflector's pixels
+    // The reference's own noise: its sRGB RMS over the frame, and the 95 % interval it leaves on the PSNR
+    // (both equal to psnr for an exact reference).
+    double referenceNoise = 0.0;
+    double psnrLow = 0.0;
+    double psnrHigh = 0.0;
+    // The same family's records whose error differs from this one's by less than the reference's noise
+    // can tell apart (on the pixels the family is judged by): ties, not a ranking.
+    std::vector<std::string> tiedWith;
+    std::string flipMap; // path of its FLIP map (magma), relative to the output folder
 };
 
 // The time a chart plots for a record: the GPU's where measured (what the settings cost the frame), else
@@ -66,13 +85,17 @@ base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& n
 
 // Columns: id, family, label, series, reference, sceneSetting, the settings (kSettingNames; empty where
 // the scene has no such setting), gpuMs, cpuMs, memoryBytes, rmse, psnr, psnrMirrors, psnrReflector
-// (empty where there are no such pixels), errorMap.
+// (empty where there are no such pixels), errorMap, then mae, relativeMse, ssim, flip, hdrFlip,
+// flipMirrors, flipReflector, referenceNoise, psnrLow, psnrHigh, tiedWith (ids separated by spaces),
+// flipMap (all empty for a record without perceptual figures).
 base::Status writeCsv(const std::string& path, const std::vector<Record>& records);
 
 // {"format": "speculum-bench", "version": 1, "scene", "size", "quick", ..., "references": [...],
 //  "results": [{"id", "family", "label", "series", "reference", "sceneSetting", "settings": {...},
 //               "gpuMs", "cpuMs", "memoryBytes", "memory": {"main", "mirrors", "shadows", "envmap"},
-//               "rmse", "psnr", "psnrMirrors", "psnrReflector", "errorMap"}]}
+//               "rmse", "psnr", "psnrMirrors", "psnrReflector", "errorMap", "mae", "relativeMse",
+//               "ssim", "flip", "hdrFlip", "flipMirrors", "flipReflector", "referenceNoise",
+//               "psnrInterval": [low, high], "tiedWith": [ids], "flipMap"}]}
 // Missing values (no GPU timer, no mirror pixels) are null.
 base::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records);
 

@@ -11,6 +11,7 @@
 #include "render/gl/HeadlessContext.hpp"
 #include "render/imageio/ImageWriter.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
+#include "render/metrics/Flip.hpp"
 #include "render/renderer/Renderer.hpp"
 #include "scene/evaluate/Snapshot.hpp"
 
@@ -143,6 +144,9 @@ accuracy::SweepObserver sweepObserver(const fs::path& staging, std::set<std::str
                 render::metrics::writeErrorMap((staging / record.errorMap).string(), errors.difference);
             !s)
             return s;
+        if (base::Status s = render::metrics::writeFlipMap((staging / record.flipMap).string(), errors.flip);
+            !s)
+            return s;
         if (record.config.family == accuracy::Family::Scene)
             return render::writeImage((staging / "render.png").string(), cost.image);
         return base::Done{};
@@ -191,9 +195,11 @@ int run(const Options& options) {
         return fail(output.error());
     const fs::path staging = output->staging();
     std::error_code ec;
-    fs::create_directory(staging / "errors", ec);
-    if (ec)
-        return fail((staging / "errors").string() + ": " + ec.message());
+    for (const char* maps : {"errors", "flip"}) {
+        fs::create_directory(staging / maps, ec);
+        if (ec)
+            return fail((staging / maps).string() + ": " + ec.message());
+    }
     auto context = render::gl::HeadlessContext::create();
     if (!context)
         return fail("no OpenGL: " + context.error());

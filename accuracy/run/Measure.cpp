@@ -1,5 +1,6 @@
 #include "accuracy/run/Measure.hpp"
 
+#include "render/metrics/Ssim.hpp"
 #include "render/renderer/StillRenderer.hpp"
 
 #include <algorithm>
@@ -96,6 +97,44 @@ base::Result<FrameCost> measurePlayed(render::Renderer& renderer,
     return cost;
 }
 
+namespace {
+
+base::Status addPerceptualFigures(ErrorFigures& figures, const render::Image& image,
+                                  const Reference& reference) {
+    const render::Image& exact = reference.traced.image;
+    auto ssim = render::metrics::ssim(image, exact);
+    auto flip = render::metrics::ldrFlip(image, exact);
+    auto hdr = render::metrics::hdrFlip(image, exact);
+    if (!ssim || !flip || !hdr)
+        return base::Error{!ssim ? ssim.error() : !flip ? flip.error() : hdr.error()};
+    figures.ssim = ssim->mean;
+    figures.flip = std::move(*flip);
+    figures.flipMirrors = figures.flip.meanOver(reference.mirrorMask);
+    figures.flipReflector = figures.flip.meanOver(reference.reflectorMask);
+    figures.hdrFlip = hdr->mean;
+    // A reference traced without noise (no rough surface) has no noise image: an exact point.
+    const render::Image& noise = reference.traced.noise;
+    const bool noisy = noise.width == exact.width && noise.height == exact.height;
+    auto interval = render::metrics::noiseInterval(image, exact, noisy ? noise : blankLike(exact));
+    if (!interval)
+        return base::Error{interval.error()};
+    figures.interval = *interval;
+    // The interval brackets the PSNR reported (its own sums differ from compare's by rounding only).
+    figures.interval.psnrLow = std::min(figures.interval.psnrLow, figures.overall.psnr);
+    figures.interval.psnrHigh = std::max(figures.interval.psnrHigh, figures.overall.psnr);
+    return base::Done{};
+}
+
+} // namespace
+
+render::Image blankLike(const render::Image& image) {
+    render::Image blank;
+    blank.width = image.width;
+    blank.height = image.height;
+    blank.rgba.assign(image.rgba.size(), 0.0f);
+    return blank;
+}
+
 base::Result<ErrorFigures> compareWithReference(const render::Image& image, const Reference& reference) {
     const render::Image& exact = reference.traced.image;
     ErrorFigures figures;
@@ -115,7 +154,26 @@ base::Result<ErrorFigures> compareWithReference(const render::Image& image, cons
     if (!difference)
         return base::Error{difference.error()};
     figures.difference = std::move(*difference);
+    if (base::Status perceptual = addPerceptualFigures(figures, image, reference); !perceptual)
+        return base::Error{perceptual.error()};
     return figures;
+}
+
+base::Result<bool> comparedWithinNoise(const render::Image& a, const render::Image& b,
+                                       const Reference& reference, Metric metric) {
+    const render::Image& exact = reference.traced.image;
+    const render::Image& noise = reference.traced.noise;
+    if (noise.width != exact.width || noise.height != exact.height)
+        return false; // an exact reference tells every difference apart
+    const std::vector<std::uint8_t>* mask = metric == Metric::PsnrMirrors     ? &reference.mirrorMask
+                                            : metric == Metric::PsnrReflector ? &reference.reflectorMask
+                                                                              : nullptr;
+    if (mask && std::none_of(mask->begin(), mask->end(), [](std::uint8_t m) { return m != 0; }))
+        mask = nullptr; // as focusValue: no such pixel, the whole frame
+    auto comparison = render::metrics::compareWithinNoise(a, b, exact, noise, mask);
+    if (!comparison)
+        return base::Error{comparison.error()};
+    return comparison->tie && comparison->mseDifference != 0.0;
 }
 
 } // namespace speculum::accuracy

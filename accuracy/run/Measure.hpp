@@ -1,10 +1,13 @@
 #pragma once
 
+#include "accuracy/Analysis.hpp"
 #include "accuracy/Sweep.hpp"
 #include "base/Result.hpp"
 #include "render/frame/FrameInput.hpp"
 #include "render/image/Image.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
+#include "render/metrics/Flip.hpp"
+#include "render/metrics/ReferenceNoise.hpp"
 #include "render/reference/Tracer.hpp"
 #include "render/renderer/Renderer.hpp"
 
@@ -65,11 +68,27 @@ struct ErrorFigures {
     std::optional<render::metrics::ErrorStats> mirrors;   // none when no pixel shows a mirror
     std::optional<render::metrics::ErrorStats> reflector; // none when no pixel shows the reflector
     render::Image difference;                             // for the error map
+    double ssim = 1.0;
+    render::metrics::FlipResult flip; // LDR-FLIP, with its per-pixel map
+    std::optional<double> flipMirrors;
+    std::optional<double> flipReflector;
+    double hdrFlip = 0.0;
+    render::metrics::NoiseInterval interval; // what the reference's noise leaves uncertain
 };
 
-// Errors of `image` against the reference, in sRGB as a viewer sees them (render::metrics).
+// Errors of `image` against the reference, in sRGB as a viewer sees them (render::metrics): RMSE, PSNR,
+// MAE, relative MSE (linear), SSIM, LDR- and HDR-FLIP, and the interval the reference's noise leaves.
 base::Result<ErrorFigures> compareWithReference(const render::Image& image, const Reference& reference);
 
+// Whether two images' errors against `reference` differ by less than its noise can tell apart, on the
+// pixels `metric` judges (the mirrors', the reflector's, or the whole frame where there are none):
+// render::metrics::compareWithinNoise.
+base::Result<bool> comparedWithinNoise(const render::Image& a, const render::Image& b,
+                                       const Reference& reference, Metric metric);
+
 double median(std::vector<double> values);
+
+// An image of the same size, all zero (a noiseless reference's noise).
+render::Image blankLike(const render::Image& image);
 
 } // namespace speculum::accuracy

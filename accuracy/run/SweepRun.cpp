@@ -1,5 +1,6 @@
 #include "accuracy/run/SweepRun.hpp"
 
+#include "accuracy/Analysis.hpp"
 #include "accuracy/Report.hpp"
 #include "render/plan/Planner.hpp"
 
@@ -170,7 +171,7 @@ private:
             records.push_back(std::move(record));
             frames.keys.push_back(k);
         }
-        return base::Done{};
+        return findTies(records, frames.keys, costs, references);
     }
 
     // The record's figures from its frame and its comparison with the reference.
@@ -185,6 +186,41 @@ private:
         if (errors.reflector)
             record.psnrReflector = errors.reflector->psnr;
         record.errorMap = "errors/" + record.config.id + ".png";
+        record.perceptual = true;
+        record.mae = errors.overall.mae;
+        record.relativeMse = errors.overall.relativeMse;
+        record.ssim = errors.ssim;
+        record.flip = errors.flip.mean;
+        record.hdrFlip = errors.hdrFlip;
+        record.flipMirrors = errors.flipMirrors;
+        record.flipReflector = errors.flipReflector;
+        record.referenceNoise = errors.interval.noiseRms;
+        record.psnrLow = errors.interval.psnrLow;
+        record.psnrHigh = errors.interval.psnrHigh;
+        record.flipMap = "flip/" + record.config.id + ".png";
+    }
+
+    // Which records of each family the reference's noise cannot tell apart, on the pixels the family is
+    // judged by: every pair of the family, their images against their shared reference.
+    static base::Status findTies(std::vector<Record>& records, const std::vector<std::string>& keys,
+                                 const std::map<std::string, FrameCost>& costs,
+                                 const std::map<ReferenceKind, Reference>& references) {
+        for (std::size_t a = 0; a < records.size(); ++a)
+            for (std::size_t b = a + 1; b < records.size(); ++b) {
+                const Record &ra = records[a], &rb = records[b];
+                if (ra.config.family != rb.config.family || ra.config.reference != rb.config.reference)
+                    continue;
+                const Reference& reference = references.at(ra.config.reference);
+                auto tie = comparedWithinNoise(costs.at(keys[a]).image, costs.at(keys[b]).image, reference,
+                                               focusMetric(ra.config.family));
+                if (!tie)
+                    return base::Error{tie.error()};
+                if (*tie) {
+                    records[a].tiedWith.push_back(rb.config.id);
+                    records[b].tiedWith.push_back(ra.config.id);
+                }
+            }
+        return base::Done{};
     }
 
     // Each round times every distinct configuration once; after each, every record's times are the

@@ -189,6 +189,14 @@ float displayClamped(float v) {
 
 } // namespace
 
+double flipOfColourDifference(double hyab) {
+    return redistribute(std::pow(std::max(hyab, 0.0), kColourExponent));
+}
+
+double flipJnd() {
+    return flipOfColourDifference(kJndColourDifference);
+}
+
 std::optional<double> FlipResult::meanOver(const std::vector<std::uint8_t>& mask) const {
     if (mask.size() != errors.size())
         return std::nullopt;

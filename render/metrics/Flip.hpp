@@ -21,6 +21,13 @@ namespace speculum::render::metrics {
 // i.e. about 67 pixels per degree of visual angle.
 inline constexpr double kFlipPixelsPerDegree = 3840.0 / 0.7 * 0.7 * M_PI / 180.0;
 
+// The classic just-noticeable colour difference, ΔE*ab ≈ 2.3, and the FLIP value a uniform difference
+// of that size scores (colour alone, no edges: about 0.103). Used as "one JND" when settings are
+// compared by their mean FLIP.
+inline constexpr double kJndColourDifference = 2.3;
+double flipOfColourDifference(double hyab);
+double flipJnd(); // flipOfColourDifference(kJndColourDifference)
+
 struct FlipResult {
     int width = 0;
     int height = 0;

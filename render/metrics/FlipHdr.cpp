@@ -1,13 +1,16 @@
 // HDR-FLIP's exposure range and tone mapping, and the FLIP colour map.
 #include "render/image/ColorSpace.hpp"
 #include "render/imageio/ImageWriter.hpp"
+#include "render/metrics/ErrorMetrics.hpp"
 #include "render/metrics/Flip.hpp"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
+#include <thread>
 
 namespace speculum::render::metrics {
 
@@ -74,25 +77,46 @@ Image toneMappedImage(const Image& image, double exposure) {
     return out;
 }
 
+// LDR-FLIP at each exposure, the exposures shared out over the machine's cores (each is independent);
+// at most one exposure per core is in memory at a time.
+std::vector<base::Result<FlipResult>> flipPerExposure(const Image& test, const Image& reference,
+                                                      const ExposureRange& range, double pixelsPerDegree) {
+    std::vector<base::Result<FlipResult>> results(static_cast<std::size_t>(range.count),
+                                                  base::Error{"not computed"});
+    const double step = (range.stop - range.start) / double(range.count - 1);
+    std::atomic<int> next{0};
+    auto work = [&] {
+        for (int i = next++; i < range.count; i = next++) {
+            const double exposure = range.start + step * i;
+            results[static_cast<std::size_t>(i)] = ldrFlip(
+                toneMappedImage(test, exposure), toneMappedImage(reference, exposure), pixelsPerDegree);
+        }
+    };
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::thread> helpers;
+    for (unsigned t = 1; t < std::min(cores, static_cast<unsigned>(range.count)); ++t)
+        helpers.emplace_back(work);
+    work();
+    for (std::thread& helper : helpers)
+        helper.join();
+    return results;
+}
+
 } // namespace
 
 base::Result<FlipResult> hdrFlip(const Image& test, const Image& reference, double pixelsPerDegree) {
+    if (base::Status sizes = checkComparable(test, reference); !sizes)
+        return base::Error{sizes.error()};
     const ExposureRange range = exposureRange(reference);
-    FlipResult result;
-    const double step = (range.stop - range.start) / double(range.count - 1);
-    for (int i = 0; i < range.count; ++i) {
-        const double exposure = range.start + step * i;
-        auto ldr =
-            ldrFlip(toneMappedImage(test, exposure), toneMappedImage(reference, exposure), pixelsPerDegree);
+    std::vector<base::Result<FlipResult>> exposures =
+        flipPerExposure(test, reference, range, pixelsPerDegree);
+    for (const auto& ldr : exposures)
         if (!ldr)
             return base::Error{ldr.error()};
-        if (i == 0) {
-            result = std::move(*ldr);
-            continue;
-        }
+    FlipResult result = std::move(*exposures.front());
+    for (std::size_t i = 1; i < exposures.size(); ++i)
         for (std::size_t p = 0; p < result.errors.size(); ++p)
-            result.errors[p] = std::max(result.errors[p], ldr->errors[p]);
-    }
+            result.errors[p] = std::max(result.errors[p], exposures[i]->errors[p]);
     double sum = 0.0;
     for (float e : result.errors)
         sum += e;

@@ -7,23 +7,48 @@ namespace speculum::render::metrics {
 
 namespace {
 
-// One pass along rows (horizontal) or columns, clamping the index at the edges.
-Plane convolveAlong(const Plane& plane, const Kernel& kernel, bool horizontal) {
+// dst[i] += w · src[i] for n values. Written in blocks of eight so that the compiler's block vectoriser
+// turns each block into vector instructions at -O2 (the loop vectoriser's cheap model would not).
+void addScaled(float* __restrict dst, const float* __restrict src, float w, int n) {
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        float block[8];
+        for (int j = 0; j < 8; ++j)
+            block[j] = dst[i + j] + w * src[i + j];
+        for (int j = 0; j < 8; ++j)
+            dst[i + j] = block[j];
+    }
+    for (; i < n; ++i)
+        dst[i] += w * src[i];
+}
+
+// Along rows, clamping the index at the edges; tap by tap over the whole row, so that the work runs along
+// contiguous memory with no reduction.
+Plane convolveRows(const Plane& plane, const Kernel& kernel) {
     Plane out(plane.width, plane.height);
     const int radius = static_cast<int>(kernel.size() / 2);
-    const int length = horizontal ? plane.width : plane.height;
-    const int lines = horizontal ? plane.height : plane.width;
-    std::vector<float> line(static_cast<std::size_t>(length + 2 * radius));
-    for (int l = 0; l < lines; ++l) {
-        for (int i = -radius; i < length + radius; ++i) {
-            const int c = std::clamp(i, 0, length - 1);
-            line[static_cast<std::size_t>(i + radius)] = horizontal ? plane.at(c, l) : plane.at(l, c);
-        }
-        for (int i = 0; i < length; ++i) {
-            double sum = 0.0;
-            for (std::size_t k = 0; k < kernel.size(); ++k)
-                sum += double(kernel[k]) * line[static_cast<std::size_t>(i) + k];
-            (horizontal ? out.at(i, l) : out.at(l, i)) = static_cast<float>(sum);
+    std::vector<float> line(static_cast<std::size_t>(plane.width + 2 * radius));
+    for (int y = 0; y < plane.height; ++y) {
+        for (int i = -radius; i < plane.width + radius; ++i)
+            line[static_cast<std::size_t>(i + radius)] = plane.at(std::clamp(i, 0, plane.width - 1), y);
+        float* row = &out.at(0, y);
+        for (std::size_t k = 0; k < kernel.size(); ++k)
+            addScaled(row, line.data() + k, kernel[k], plane.width);
+    }
+    return out;
+}
+
+// Along columns: each output row is the weighted sum of whole input rows (clamped at the top and
+// bottom), so memory is read a row at a time.
+Plane convolveColumns(const Plane& plane, const Kernel& kernel) {
+    Plane out(plane.width, plane.height);
+    const int radius = static_cast<int>(kernel.size() / 2);
+    for (int y = 0; y < plane.height; ++y) {
+        float* row = &out.at(0, y);
+        for (std::size_t k = 0; k < kernel.size(); ++k) {
+            const int from = std::clamp(y + static_cast<int>(k) - radius, 0, plane.height - 1);
+            addScaled(row, plane.values.data() + static_cast<std::size_t>(from) * plane.width, kernel[k],
+                      plane.width);
         }
     }
     return out;
@@ -34,7 +59,7 @@ Plane convolveAlong(const Plane& plane, const Kernel& kernel, bool horizontal) {
 Plane convolveSeparable(const Plane& plane, const Kernel& horizontal, const Kernel& vertical) {
     if (plane.width == 0 || plane.height == 0)
         return plane;
-    return convolveAlong(convolveAlong(plane, horizontal, true), vertical, false);
+    return convolveColumns(convolveRows(plane, horizontal), vertical);
 }
 
 Kernel gaussianKernel(double sigma, int radius) {

@@ -5,6 +5,7 @@
 #include "accuracy/Report.hpp"
 
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
@@ -90,6 +91,100 @@ TEST(Results, JsonRoundTripGivesTheSameRecords) {
         EXPECT_EQ(b.errorMap, a.errorMap);
         EXPECT_DOUBLE_EQ(frameMs(b), a.gpuMs >= 0.0 ? a.gpuMs : a.cpuMs);
     }
+}
+
+Record withPerceptual(Record r, double flip, double ssim) {
+    r.perceptual = true;
+    r.mae = 0.0125;
+    r.relativeMse = 0.03125;
+    r.ssim = ssim;
+    r.flip = flip;
+    r.hdrFlip = flip * 0.75;
+    r.flipReflector = flip * 2.0;
+    r.referenceNoise = 0.004;
+    r.psnrLow = r.psnr - 0.25;
+    r.psnrHigh = r.psnr + 0.25;
+    r.flipMap = "flip/" + r.config.id + ".png";
+    return r;
+}
+
+TEST(Results, PerceptualFiguresAndTiesRoundTripAndOlderFilesLackThem) {
+    QTemporaryDir dir;
+    const std::string json = dir.filePath("results.json").toStdString();
+    const std::string csv = dir.filePath("results.csv").toStdString();
+    RunInfo run;
+    run.width = 64;
+    run.height = 32;
+    std::vector<Record> records = {withPerceptual(record(Family::Shadows, "pcf-1", 2.0, 27.0), 0.0625, 0.875),
+                                   withPerceptual(record(Family::Shadows, "pcf-3", 3.0, 27.1), 0.05, 0.9),
+                                   record(Family::Shadows, "pcf-5", 4.0, 27.2)};
+    records[0].tiedWith = {"pcf-3"};
+    records[1].tiedWith = {"pcf-1"};
+    ASSERT_TRUE(writeJson(json, run, records).ok());
+    ASSERT_TRUE(writeCsv(csv, records).ok());
+    auto read = readJson(readBack(json), "results.json");
+    ASSERT_TRUE(read.ok()) << read.error();
+    ASSERT_EQ(read->records.size(), 3u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const Record &a = records[i], &b = read->records[i];
+        EXPECT_TRUE(b.perceptual);
+        EXPECT_DOUBLE_EQ(b.mae, a.mae);
+        EXPECT_DOUBLE_EQ(b.relativeMse, a.relativeMse);
+        EXPECT_DOUBLE_EQ(b.ssim, a.ssim);
+        EXPECT_DOUBLE_EQ(b.flip, a.flip);
+        EXPECT_DOUBLE_EQ(b.hdrFlip, a.hdrFlip);
+        EXPECT_EQ(b.flipReflector, a.flipReflector);
+        EXPECT_EQ(b.flipMirrors, a.flipMirrors);
+        EXPECT_DOUBLE_EQ(b.referenceNoise, a.referenceNoise);
+        EXPECT_DOUBLE_EQ(b.psnrLow, a.psnrLow);
+        EXPECT_DOUBLE_EQ(b.psnrHigh, a.psnrHigh);
+        EXPECT_EQ(b.tiedWith, a.tiedWith);
+        EXPECT_EQ(b.flipMap, a.flipMap);
+    }
+    EXPECT_FALSE(read->records[2].perceptual) << "a record without the figures does not read as FLIP 0";
+    EXPECT_FALSE(readBack(json).value("results").toArray().at(2).toObject().contains("flip"));
+
+    QFile file(QString::fromStdString(csv));
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+    ASSERT_EQ(lines.size(), 4);
+    const QStringList header = lines[0].split(',');
+    EXPECT_TRUE(lines[0].endsWith("errorMap,mae,relativeMse,ssim,flip,hdrFlip,flipMirrors,flipReflector,"
+                                  "referenceNoise,psnrLow,psnrHigh,tiedWith,flipMap"))
+        << lines[0].toStdString();
+    for (int i = 1; i < 4; ++i)
+        EXPECT_EQ(lines[i].split(',').size(), header.size()) << lines[i].toStdString();
+    EXPECT_TRUE(lines[1].endsWith(",pcf-3,flip/pcf-1.png")) << lines[1].toStdString();
+}
+
+// FLIP judges beside PSNR: its best, its cheap pick within one JND, and where the two disagree; a best
+// whose difference from another lies within the reference's noise is called a tie, not a ranking.
+TEST(Results, FlipFindingsAndTiesAreSaidInWords) {
+    std::vector<Record> records = {withPerceptual(record(Family::Shadows, "pcf-1", 2.0, 27.0), 0.30, 0.8),
+                                   withPerceptual(record(Family::Shadows, "pcf-3", 3.0, 30.0), 0.10, 0.9),
+                                   withPerceptual(record(Family::Shadows, "pcf-5", 6.0, 30.5), 0.12, 0.9)};
+    records[2].tiedWith = {"pcf-3"};
+    records[1].tiedWith = {"pcf-5"};
+    const std::vector<FamilyFindings> found = findings(records);
+    ASSERT_EQ(found.size(), 1u);
+    auto line = [&](const std::string& start) {
+        for (const std::string& l : found[0].lines)
+            if (l.rfind(start, 0) == 0)
+                return l;
+        return std::string();
+    };
+    EXPECT_NE(line("Best: **pcf 5**").find("tied within the reference's noise with **pcf 3**"),
+              std::string::npos)
+        << line("Best:");
+    EXPECT_EQ(line("Best by FLIP:").rfind("Best by FLIP: **pcf 3**: FLIP 0.1000 at 3.00 ms GPU", 0), 0u)
+        << line("Best by FLIP:");
+    EXPECT_NE(line("Best by FLIP:").find("tied within the reference's noise with **pcf 5**"),
+              std::string::npos);
+    // pcf 5 is 0.02 worse: within one JND (0.103) of the best, but dearer; pcf 1 is 0.2 worse, outside.
+    EXPECT_FALSE(
+        line("Cheapest within one just-noticeable difference (FLIP 0.1031) of the best: **pcf 3**").empty());
+    EXPECT_FALSE(
+        line("FLIP and PSNR disagree on the best: PSNR ranks **pcf 5** first, FLIP **pcf 3**").empty());
 }
 
 TEST(Results, UnknownFamiliesAreLeftOutAndCounted) {

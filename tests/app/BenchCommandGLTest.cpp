@@ -144,8 +144,32 @@ TEST_F(BenchCli, WritesResultsThatAgreePlotsAndAReport) {
     std::map<std::string, std::size_t> column;
     for (std::size_t i = 0; i < csv[0].size(); ++i)
         column[csv[0][i]] = i;
-    for (const char* name : {"id", "family", "gpuMs", "cpuMs", "memoryBytes", "rmse", "psnr", "psnrMirrors",
-                             "psnrReflector", "map", "resolution", "pcf", "tessellation", "mirrorDepth"})
+    for (const char* name : {"id",
+                             "family",
+                             "gpuMs",
+                             "cpuMs",
+                             "memoryBytes",
+                             "rmse",
+                             "psnr",
+                             "psnrMirrors",
+                             "psnrReflector",
+                             "map",
+                             "resolution",
+                             "pcf",
+                             "tessellation",
+                             "mirrorDepth",
+                             "mae",
+                             "relativeMse",
+                             "ssim",
+                             "flip",
+                             "hdrFlip",
+                             "flipMirrors",
+                             "flipReflector",
+                             "referenceNoise",
+                             "psnrLow",
+                             "psnrHigh",
+                             "tiedWith",
+                             "flipMap"})
         ASSERT_TRUE(column.count(name)) << "CSV column " << name;
 
     std::set<std::string> families;
@@ -159,7 +183,8 @@ TEST_F(BenchCli, WritesResultsThatAgreePlotsAndAReport) {
         EXPECT_EQ(row[column["family"]], r["family"].toString().toStdString());
         families.insert(row[column["family"]]);
         for (const char* field :
-             {"gpuMs", "cpuMs", "memoryBytes", "rmse", "psnr", "psnrMirrors", "psnrReflector"}) {
+             {"gpuMs", "cpuMs", "memoryBytes", "rmse", "psnr", "psnrMirrors", "psnrReflector", "mae",
+              "relativeMse", "ssim", "flip", "hdrFlip", "flipMirrors", "flipReflector", "referenceNoise"}) {
             const QJsonValue v = r[field];
             const std::string cell = row[column[field]];
             if (v.isNull()) {
@@ -184,6 +209,18 @@ TEST_F(BenchCli, WritesResultsThatAgreePlotsAndAReport) {
         EXPECT_EQ(settings["map"].toString().toStdString(), row[column["map"]]) << id;
         EXPECT_EQ(settings["tessellation"].toInt(), std::stoi(row[column["tessellation"]])) << id;
         EXPECT_TRUE(fs::is_regular_file(out / r["errorMap"].toString().toStdString())) << id;
+        // The perceptual figures: in range, not identical to the exact image, the map written.
+        EXPECT_GT(r["flip"].toDouble(), 0.0) << id;
+        EXPECT_LT(r["flip"].toDouble(), 1.0) << id;
+        EXPECT_GT(r["hdrFlip"].toDouble(), 0.0) << id;
+        EXPECT_GT(r["ssim"].toDouble(), 0.0) << id;
+        EXPECT_LT(r["ssim"].toDouble(), 1.0) << id;
+        EXPECT_GT(r["mae"].toDouble(), 0.0) << id;
+        const QJsonArray interval = r["psnrInterval"].toArray();
+        ASSERT_EQ(interval.size(), 2) << id;
+        EXPECT_LE(interval[0].toDouble(), r["psnr"].toDouble()) << id;
+        EXPECT_GE(interval[1].toDouble(), r["psnr"].toDouble()) << id;
+        EXPECT_TRUE(fs::is_regular_file(out / r["flipMap"].toString().toStdString())) << id;
         if (r["family"].toString() == "mirror-depth")
             depthMirrors["d"][settings["mirrorDepth"].toInt()] = r["psnrMirrors"].toDouble();
     }
@@ -211,11 +248,17 @@ TEST_F(BenchCli, WritesResultsThatAgreePlotsAndAReport) {
         EXPECT_GT(colours.size(), 20u) << plot << ": axes, text and coloured points, not a blank image";
         EXPECT_NE(readFile(out / "report.md").find("](plot-" + family + ".png)"), std::string::npos)
             << "the report embeds " << plot;
+        EXPECT_TRUE(fs::is_regular_file(out / ("plot-" + family + "-flip.png"))) << family;
+        EXPECT_NE(readFile(out / "report.md").find("](plot-" + family + "-flip.png)"), std::string::npos)
+            << "the report embeds FLIP's plot of " << family;
     }
     const std::string report = readFile(out / "report.md");
     EXPECT_NE(report.find("within 1 dB"), std::string::npos);
     EXPECT_NE(report.find("equal error"), std::string::npos);
     EXPECT_NE(report.find("tracer's time"), std::string::npos);
+    EXPECT_NE(report.find("Best by FLIP"), std::string::npos);
+    EXPECT_NE(report.find("cheapest within one JND (FLIP)"), std::string::npos);
+    EXPECT_NE(report.find("| PSNR 95 % |"), std::string::npos);
 }
 
 TEST_F(BenchCli, ASceneWithoutAReflectorHasNoMapRows) {
