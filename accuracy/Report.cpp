@@ -2,6 +2,7 @@
 
 #include "accuracy/Analysis.hpp"
 #include "accuracy/Plot.hpp"
+#include "accuracy/ReportEnergy.hpp"
 #include "accuracy/ReportFlip.hpp"
 #include "base/AtomicFile.hpp"
 
@@ -144,8 +145,9 @@ struct FamilyView {
     std::size_t best = 0;
     std::optional<std::size_t> cheapest;
     std::optional<std::size_t> own;
-    std::vector<std::string> series; // in order of first appearance
-    std::optional<FlipView> flip;    // none for records without perceptual figures
+    std::vector<std::string> series;                  // in order of first appearance
+    std::optional<FlipView> flip;                     // none for records without perceptual figures
+    const std::vector<FurnaceRow>* furnace = nullptr; // the run's white furnace, for the glossy family
 };
 
 FamilyView analyse(Family family, const std::vector<Record>& records) {
@@ -287,6 +289,10 @@ std::vector<std::string> glossyLines(const FamilyView& v) {
         if (pick != *best)
             line += "; the best, " + displayName(v.rows[*best]->config) + ", gains only " +
                     db(v.points[*best].psnr - v.points[pick].psnr) + " more";
+        if (v.furnace)
+            if (std::optional<std::string> energy =
+                    energyNote(*v.rows[pick], std::stod(key.substr(2)), *v.furnace))
+                line += "; " + *energy;
         lines.push_back(line + ".");
     }
     return lines;
@@ -486,18 +492,22 @@ std::string parallaxNote(const std::vector<FamilyView>& views) {
            "dominates, so more texels buy little until it is corrected.";
 }
 
-std::vector<FamilyView> analyseAll(const std::vector<Record>& records) {
+std::vector<FamilyView> analyseAll(const std::vector<Record>& records,
+                                   const std::vector<FurnaceRow>& furnace) {
     std::vector<FamilyView> views;
     for (Family f : kFamilies)
-        if (FamilyView v = analyse(f, records); !v.rows.empty())
+        if (FamilyView v = analyse(f, records); !v.rows.empty()) {
+            v.furnace = furnace.empty() ? nullptr : &furnace;
             views.push_back(std::move(v));
+        }
     return views;
 }
 
 } // namespace
 
-std::vector<FamilyFindings> findings(const std::vector<Record>& records) {
-    const std::vector<FamilyView> views = analyseAll(records);
+std::vector<FamilyFindings> findings(const std::vector<Record>& records,
+                                     const std::vector<FurnaceRow>& furnace) {
+    const std::vector<FamilyView> views = analyseAll(records, furnace);
     std::vector<FamilyFindings> out;
     for (const FamilyView& v : views)
         out.push_back({v.family, familyTitle(v.family),
@@ -522,7 +532,7 @@ std::string displayName(const Configuration& c) {
 
 base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run,
                          const std::vector<Record>& records) {
-    const std::vector<FamilyView> views = analyseAll(records);
+    const std::vector<FamilyView> views = analyseAll(records, run.furnace);
     for (const FamilyView& v : views)
         if (v.rows.size() >= 2) {
             const std::string plot = (folder / ("plot-" + familyName(v.family) + ".png")).string();
@@ -619,6 +629,7 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
     for (const FamilyView& v : views)
         familySection(md, v, v.family == Family::Envmap ? parallaxNote(views) : std::string());
 
+    furnaceSection(md, run.furnace);
     md << "## Files\n\n`results.csv` and `results.json` hold one record per configuration (the same fields); "
           "`render.png` is the frame with the scene's own settings; `reference*.png` the exact images; "
           "`errors/<id>.png` the error map of each configuration (per-pixel error on a fixed scale: black "

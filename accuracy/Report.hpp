@@ -23,7 +23,9 @@ struct FamilyFindings {
 };
 
 // The findings of every swept family, in the report's order (families the records lack are left out).
-std::vector<FamilyFindings> findings(const std::vector<Record>& records);
+// `furnace`: the run's white-furnace rows, which the glossy family's lines cite.
+std::vector<FamilyFindings> findings(const std::vector<Record>& records,
+                                     const std::vector<FurnaceRow>& furnace = {});
 
 // Writes one plot per swept family (plot-<family>.png: error against frame time, Pareto front marked,
 // points labelled) into `folder`, then report.md: what each step of accuracy costs, in plain words,

@@ -139,6 +139,39 @@ void writePerceptualCsv(std::ostream& csv, const Record& r) {
 
 } // namespace
 
+QJsonArray furnaceJson(const std::vector<FurnaceRow>& rows) {
+    QJsonArray array;
+    for (const FurnaceRow& row : rows)
+        array.append(QJsonObject{{"surface", q(row.surface)},
+                                 {"path", q(row.path)},
+                                 {"roughness", row.roughness},
+                                 {"viewDegrees", row.viewDegrees},
+                                 {"albedo", row.albedo},
+                                 {"traced", row.traced},
+                                 {"tracedError", row.tracedError},
+                                 {"raster", row.raster},
+                                 {"energy", row.energy()}});
+    return array;
+}
+
+std::vector<FurnaceRow> furnaceFromJson(const QJsonArray& array) {
+    std::vector<FurnaceRow> rows;
+    for (const QJsonValue& value : array) {
+        const QJsonObject o = value.toObject();
+        FurnaceRow row;
+        row.surface = o.value("surface").toString().toStdString();
+        row.path = o.value("path").toString().toStdString();
+        row.roughness = finite(o.value("roughness")).value_or(0.0);
+        row.viewDegrees = finite(o.value("viewDegrees")).value_or(0.0);
+        row.albedo = finite(o.value("albedo")).value_or(1.0);
+        row.traced = finite(o.value("traced")).value_or(1.0);
+        row.tracedError = finite(o.value("tracedError")).value_or(0.0);
+        row.raster = finite(o.value("raster")).value_or(1.0);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
 double frameMs(const Record& record) {
     return record.gpuMs >= 0.0 ? record.gpuMs : record.cpuMs;
 }
@@ -174,6 +207,7 @@ base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& n
     run.warmUpFrames = root.value("warmUpFrames").toInt();
     run.timedFrames = root.value("timedFrames").toInt();
     run.renderer = root.value("renderer").toString().toStdString();
+    run.furnace = furnaceFromJson(root.value("furnace").toArray());
     for (const QJsonValue& value : root.value("references").toArray()) {
         const QJsonObject ref = value.toObject();
         const auto kind = referenceFromName(ref.value("name").toString().toStdString());
@@ -295,7 +329,7 @@ base::Status writeJson(const std::string& path, const RunInfo& run, const std::v
         addPerceptual(object, r);
         results.append(object);
     }
-    const QJsonObject root{
+    QJsonObject root{
         {"format", "speculum-bench"},
         {"version", 1},
         {"scene", q(run.scene)},
@@ -307,6 +341,8 @@ base::Status writeJson(const std::string& path, const RunInfo& run, const std::v
         {"references", references},
         {"results", results},
     };
+    if (!run.furnace.empty())
+        root.insert("furnace", furnaceJson(run.furnace));
     return writeText(path, QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString());
 }
 

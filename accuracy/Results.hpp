@@ -4,6 +4,7 @@
 #include "base/Result.hpp"
 #include "render/plan/FrameReport.hpp"
 
+#include <QJsonArray>
 #include <QJsonObject>
 #include <optional>
 #include <string>
@@ -49,6 +50,27 @@ struct Record {
 // the CPU's.
 double frameMs(const Record& record);
 
+// One row of the white-furnace test (run/Furnace.hpp): a raster glossy path's value under a uniform white
+// sky against the energy the GGX lobe keeps.
+struct FurnaceRow {
+    std::string surface; // "planar mirror" or "reflector"
+    std::string path;    // the raster glossy filter: "mip", "footprint", "chain"
+    double roughness = 0.0;
+    double viewDegrees = 0.0;
+    double albedo = 1.0;      // E(μ_v, α) by quadrature of the lobe's formulas
+    double traced = 1.0;      // the tracer's value (it integrates the lobe by sampling)
+    double tracedError = 0.0; // its standard error
+    double raster = 1.0;      // the raster path's value
+
+    // The share of the lobe's energy the raster path keeps: raster / E. E is the exact value of the integral
+    // the tracer estimates by sampling (its value agrees within its noise), so the ratio carries no noise.
+    double energy() const { return albedo > 0.0 ? raster / albedo : 1.0; }
+};
+
+// The furnace rows' object in results.json ("furnace": [...]) and back.
+QJsonArray furnaceJson(const std::vector<FurnaceRow>& rows);
+std::vector<FurnaceRow> furnaceFromJson(const QJsonArray& array);
+
 struct ReferenceInfo {
     ReferenceKind kind = ReferenceKind::Scene;
     double traceMs = 0.0;
@@ -67,6 +89,7 @@ struct RunInfo {
     int timedFrames = 0;
     std::string renderer; // the GL renderer's description
     std::vector<ReferenceInfo> references;
+    std::vector<FurnaceRow> furnace; // the white-furnace test, where the scene has rough surfaces
 };
 
 // A results.json read back.

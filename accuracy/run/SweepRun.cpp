@@ -2,6 +2,7 @@
 
 #include "accuracy/Analysis.hpp"
 #include "accuracy/Report.hpp"
+#include "accuracy/run/Furnace.hpp"
 #include "render/plan/Planner.hpp"
 
 #include <algorithm>
@@ -78,6 +79,15 @@ public:
             return base::Error{measured.error()};
         if (base::Status timed = timeRounds(timing, frames, out.records); !timed)
             return base::Error{timed.error()};
+        if (std::any_of(configs.begin(), configs.end(),
+                        [](const Configuration& c) { return c.family == Family::Glossy; })) {
+            progress("white furnace: the raster glossy paths' energy against the GGX lobe's");
+            auto furnace = runFurnace(m_renderer, m_observer.stop);
+            if (!furnace)
+                return base::Error{furnace.error() == "stopped" ? std::string(kSweepStopped)
+                                                                : furnace.error()};
+            out.run.furnace = std::move(*furnace);
+        }
         return out;
     }
 

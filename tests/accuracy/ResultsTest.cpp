@@ -142,6 +142,7 @@ TEST(Results, PerceptualFiguresAndTiesRoundTripAndOlderFilesLackThem) {
         EXPECT_EQ(b.flipMap, a.flipMap);
     }
     EXPECT_FALSE(read->records[2].perceptual) << "a record without the figures does not read as FLIP 0";
+    EXPECT_TRUE(read->run.furnace.empty()) << "no rough surface, no furnace";
     EXPECT_FALSE(readBack(json).value("results").toArray().at(2).toObject().contains("flip"));
 
     QFile file(QString::fromStdString(csv));
@@ -185,6 +186,40 @@ TEST(Results, FlipFindingsAndTiesAreSaidInWords) {
         line("Cheapest within one just-noticeable difference (FLIP 0.1031) of the best: **pcf 3**").empty());
     EXPECT_FALSE(
         line("FLIP and PSNR disagree on the best: PSNR ranks **pcf 5** first, FLIP **pcf 3**").empty());
+}
+
+// The glossy family cites the white furnace: the energy its pick's path keeps, and whether that energy
+// error is what dominates the pick's error.
+TEST(Results, GlossyLinesNameTheFurnacesEnergyError) {
+    auto row = [](const std::string& id, const std::string& series, const std::string& label, double ms,
+                  double psnr) {
+        Record r = withPerceptual(record(Family::Glossy, id, ms, psnr), 0.05, 0.95);
+        r.config.series = series;
+        r.config.label = label;
+        r.relativeMse = 0.0016; // a typical relative error of 4 %
+        return r;
+    };
+    const std::vector<Record> records = {
+        row("glossy-r0.3-mip", "r 0.3 mip", "mip", 1.0, 30.0),
+        row("glossy-r0.3-footprint", "r 0.3 footprint", "4 taps", 2.0, 30.5)};
+    FurnaceRow lossy;
+    lossy.surface = "planar mirror";
+    lossy.path = "mip";
+    lossy.roughness = 0.3;
+    lossy.albedo = 0.99;
+    lossy.traced = 0.99;
+    lossy.raster = 0.891; // keeps 90 %
+    FurnaceRow fine = lossy;
+    fine.path = "footprint";
+    fine.raster = 0.99;
+    const std::vector<FamilyFindings> found = findings(records, {lossy, fine});
+    ASSERT_EQ(found.size(), 1u);
+    const std::string& line = found[0].lines.at(0);
+    EXPECT_EQ(line.rfind("At roughness 0.3: pick **r 0.3 mip**", 0), 0u) << line;
+    EXPECT_NE(line.find("its mip path keeps 90.0 % of the lobe's energy"), std::string::npos) << line;
+    EXPECT_NE(line.find("energy, not the blur's shape, dominates it"), std::string::npos) << line;
+    // Without the furnace's rows the line says nothing about energy.
+    EXPECT_EQ(findings(records)[0].lines.at(0).find("energy"), std::string::npos);
 }
 
 TEST(Results, UnknownFamiliesAreLeftOutAndCounted) {

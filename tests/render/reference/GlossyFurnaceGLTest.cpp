@@ -4,16 +4,15 @@
 // footprint and mip filters, the curved reflector's pre-filtered chain and mip chain) must show E within
 // the tracer's noise, at roughness 0.1–1 and views 0–85°; and the table the shaders read agrees with the
 // quadrature of the lobe's formulas.
+#include "accuracy/run/Furnace.hpp"
 #include "render/math/Ggx.hpp"
 #include "render/math/GgxAlbedoTable.hpp"
-#include "render/mesh/Primitives.hpp"
 #include "render/reference/Tracer.hpp"
 #include "support/GlTest.hpp"
-#include "support/SceneBuilder.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 #include <string>
 
 namespace speculum::test {
@@ -27,46 +26,13 @@ namespace math = render::math;
 constexpr int kSize = 9; // a small image: the centre pixel is what is measured
 constexpr int kCentre = kSize / 2;
 
-// A floor mirror under a white sky, the camera looking down at the floor's centre `viewDegrees` from the
-// normal, with a narrow field of view so that the whole image sees about that angle.
+// The scenes are the bench's own white furnace (accuracy/run/Furnace.hpp).
 FrameInput floorFurnace(double roughness, double viewDegrees) {
-    FrameInput input;
-    input.settings.background = {1.0, 1.0, 1.0};
-    input.settings.ambient = 0.0;
-    const double theta = glm::radians(viewDegrees);
-    input.camera.position = glm::dvec3(0.0, std::cos(theta), std::sin(theta)) * 3.0;
-    input.camera.target = {0.0, 0.0, 0.0};
-    input.camera.up = viewDegrees < 1.0 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
-    input.camera.fovY = 2.0;
-    input.camera.near = 0.1;
-    input.camera.far = 1000.0;
-    render::Mirror floor = mirror({0, 0, 0}, {0, 1, 0}, {400.0, 400.0});
-    floor.roughness = roughness;
-    floor.technique = render::MirrorTechnique::Texture;
-    input.mirrors.push_back(floor);
-    return input;
+    return accuracy::planarFurnace(roughness, viewDegrees);
 }
 
-// A rough chrome ball under a white sky, seen from +Z: its centre pixel faces the camera (μ_v = 1), and a
-// pixel `fromCentre` towards the rim sees it at a slant.
 FrameInput ballFurnace(double roughness) {
-    FrameInput input;
-    input.settings.background = {1.0, 1.0, 1.0};
-    input.settings.ambient = 0.0;
-    input.camera.position = {0.0, 0.0, 4.0};
-    input.camera.target = {0.0, 0.0, 0.0};
-    input.camera.fovY = 32.0;
-    static const auto sphere = std::make_shared<const render::MeshData>(render::makeSphere(128));
-    render::Reflector ball;
-    ball.name = "Ball";
-    ball.mesh = sphere;
-    ball.world = glm::dmat4(1.0);
-    ball.material = emissive(glm::dvec3(0.0));
-    ball.reflectivity = 1.0;
-    ball.roughness = roughness;
-    ball.resolution = 64;
-    input.reflectors = {ball};
-    return input;
+    return accuracy::reflectorFurnace(roughness);
 }
 
 struct Traced {

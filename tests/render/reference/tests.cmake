@@ -10,4 +10,4 @@ speculum_add_test(RenderReferenceGLTest TIER gl
             ReflectorAgreementGLTest.cpp SceneLimitsAgreementGLTest.cpp MirrorDepthLimitAgreementGLTest.cpp
             GlossyFurnaceGLTest.cpp ReflectorBouncesAgreementGLTest.cpp
     LIBS speculum_render_reference speculum_render_renderer speculum_render_metrics speculum_render_imageio
-         PkgConfig::OIIO speculum_scene_project speculum_scene_evaluate)
+         PkgConfig::OIIO speculum_scene_project speculum_scene_evaluate speculum_accuracy_run)
