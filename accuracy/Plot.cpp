@@ -95,24 +95,43 @@ struct PlotArea {
     Range x;
     Range y;
     bool yDown = false;
+    bool logX = false; // the ranges are then of log10 of the values
+    bool logY = false;
 
-    QPointF toScreen(double px, double py) const {
-        const double up = (py - y.lo) / (y.hi - y.lo) * rect.height();
-        return QPointF(rect.left() + (px - x.lo) / (x.hi - x.lo) * rect.width(),
+    double axisX(double value) const { return logX ? std::log10(value) : value; }
+    double axisY(double value) const { return logY ? std::log10(value) : value; }
+    // A point in axis units (the ranges' units) on the screen.
+    QPointF onAxes(double u, double v) const {
+        const double up = (v - y.lo) / (y.hi - y.lo) * rect.height();
+        return QPointF(rect.left() + (u - x.lo) / (x.hi - x.lo) * rect.width(),
                        yDown ? rect.top() + up : rect.bottom() - up);
     }
-    double worstY() const { return yDown ? y.hi : y.lo; } // the bottom edge's value
+    QPointF toScreen(double px, double py) const { return onAxes(axisX(px), axisY(py)); }
+    double worstY() const { return yDown ? y.hi : y.lo; } // the bottom edge's value, axis units
 };
+
+// Ticks on a log10 range: 1, 2 and 5 times each power of ten inside it (values, not logs).
+std::vector<double> logTicks(double lo, double hi) {
+    std::vector<double> ticks;
+    for (int k = static_cast<int>(std::floor(lo)); k <= static_cast<int>(std::ceil(hi)); ++k)
+        for (double m : {1.0, 2.0, 5.0}) {
+            const double v = m * std::pow(10.0, k);
+            if (std::log10(v) >= lo && std::log10(v) <= hi)
+                ticks.push_back(v);
+        }
+    return ticks;
+}
 
 // Room on the left and below for the ticks and axis titles, on the right for the legend; the ranges hold
 // every point with a margin.
 PlotArea plotArea(const PlotSpec& spec, int width, int height) {
     double xMin = 1e300, xMax = -1e300, yMin = 1e300, yMax = -1e300;
     for (const PlotPoint& pt : spec.points) {
-        xMin = std::min(xMin, pt.x);
-        xMax = std::max(xMax, pt.x);
-        yMin = std::min(yMin, pt.y);
-        yMax = std::max(yMax, pt.y);
+        const double px = spec.logX ? std::log10(pt.x) : pt.x, py = spec.logY ? std::log10(pt.y) : pt.y;
+        xMin = std::min(xMin, px);
+        xMax = std::max(xMax, px);
+        yMin = std::min(yMin, py);
+        yMax = std::max(yMax, py);
     }
     if (spec.points.empty())
         xMin = xMax = yMin = yMax = 0.0;
@@ -120,10 +139,12 @@ PlotArea plotArea(const PlotSpec& spec, int width, int height) {
     area.rect = QRect(100, 90, width - 100 - kLegendWidth - 30, height - 90 - 90);
     // Time starts at zero when that costs little room, so bar-like ratios read true.
     area.x = paddedRange(xMin, xMax, 0.12); // labels sit beside points
-    if (xMin >= 0.0 && xMin < 0.5 * xMax)
+    if (!spec.logX && xMin >= 0.0 && xMin < 0.5 * xMax)
         area.x.lo = 0.0;
     area.y = paddedRange(yMin, yMax, 0.08);
     area.yDown = spec.yDown;
+    area.logX = spec.logX;
+    area.logY = spec.logY;
     return area;
 }
 
@@ -142,12 +163,15 @@ void drawTitles(QPainter& p, const PlotSpec& spec, const PlotFonts& fonts, int w
 void drawGrid(QPainter& p, const PlotArea& plot, const PlotFonts& fonts) {
     const QRect& area = plot.rect;
     p.setFont(fonts.small);
-    const std::vector<double> xTicks = niceTicks(plot.x.lo, plot.x.hi, 8);
-    const std::vector<double> yTicks = niceTicks(plot.y.lo, plot.y.hi, 8);
-    const double xStep = xTicks.size() > 1 ? xTicks[1] - xTicks[0] : 1.0;
-    const double yStep = yTicks.size() > 1 ? yTicks[1] - yTicks[0] : 1.0;
+    const std::vector<double> xTicks =
+        plot.logX ? logTicks(plot.x.lo, plot.x.hi) : niceTicks(plot.x.lo, plot.x.hi, 8);
+    const std::vector<double> yTicks =
+        plot.logY ? logTicks(plot.y.lo, plot.y.hi) : niceTicks(plot.y.lo, plot.y.hi, 8);
+    // Log ticks are labelled with as many digits as the smallest needs.
+    const double xStep = plot.logX ? xTicks.front() : xTicks.size() > 1 ? xTicks[1] - xTicks[0] : 1.0;
+    const double yStep = plot.logY ? yTicks.front() : yTicks.size() > 1 ? yTicks[1] - yTicks[0] : 1.0;
     for (double x : xTicks) {
-        const double sx = plot.toScreen(x, plot.y.lo).x();
+        const double sx = plot.onAxes(plot.axisX(x), plot.y.lo).x();
         p.setPen(QPen(QColor(225, 225, 225), 1));
         p.drawLine(QPointF(sx, area.top()), QPointF(sx, area.bottom()));
         p.setPen(QColor(60, 60, 60));
@@ -155,7 +179,7 @@ void drawGrid(QPainter& p, const PlotArea& plot, const PlotFonts& fonts) {
                    tickText(x, xStep));
     }
     for (double y : yTicks) {
-        const double sy = plot.toScreen(plot.x.lo, y).y();
+        const double sy = plot.onAxes(plot.x.lo, plot.axisY(y)).y();
         p.setPen(QPen(QColor(225, 225, 225), 1));
         p.drawLine(QPointF(area.left(), sy), QPointF(area.right(), sy));
         p.setPen(QColor(60, 60, 60));
@@ -188,7 +212,7 @@ void drawFront(QPainter& p, const PlotSpec& spec, const PlotArea& plot, std::vec
         return;
     QPainterPath stairs;
     const PlotPoint& first = spec.points[spec.front.front()];
-    stairs.moveTo(plot.toScreen(first.x, plot.worstY()));
+    stairs.moveTo(plot.onAxes(plot.axisX(first.x), plot.worstY()));
     stairs.lineTo(plot.toScreen(first.x, first.y));
     for (std::size_t k = 1; k < spec.front.size(); ++k) {
         const PlotPoint& a = spec.points[spec.front[k - 1]];
@@ -197,7 +221,7 @@ void drawFront(QPainter& p, const PlotSpec& spec, const PlotArea& plot, std::vec
         stairs.lineTo(plot.toScreen(b.x, b.y));
     }
     const PlotPoint& last = spec.points[spec.front.back()];
-    stairs.lineTo(plot.toScreen(plot.x.hi, last.y));
+    stairs.lineTo(plot.onAxes(plot.x.hi, plot.axisY(last.y)));
     p.setPen(QPen(QColor(30, 30, 30, 170), 2.0, Qt::DashLine));
     p.setBrush(Qt::NoBrush);
     p.drawPath(stairs);

@@ -25,6 +25,10 @@ struct PlotSpec {
     // Lower y is better (FLIP): the axis runs downward, so better is still up and the front's staircase
     // still bounds what is attainable from below.
     bool yDown = false;
+    // Logarithmic axes (all values positive): ticks at 1, 2 and 5 times the powers of ten. A log-log plot
+    // shows a power law as a straight line.
+    bool logX = false;
+    bool logY = false;
     std::vector<std::string> series; // names, for the legend
     std::vector<PlotPoint> points;
     std::vector<std::size_t> front; // indices into points, ordered by x

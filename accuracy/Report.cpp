@@ -2,6 +2,7 @@
 
 #include "accuracy/Analysis.hpp"
 #include "accuracy/Plot.hpp"
+#include "accuracy/ReportConvergence.hpp"
 #include "accuracy/ReportEnergy.hpp"
 #include "accuracy/ReportFlip.hpp"
 #include "base/AtomicFile.hpp"
@@ -545,6 +546,12 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
                     return s;
         }
 
+    if (run.convergence && !run.convergence->points.empty())
+        if (base::Status s =
+                writePlot((folder / "plot-convergence.png").string(), convergencePlot(*run.convergence, run));
+            !s)
+            return s;
+
     std::ostringstream md;
     md << "# speculum bench: " << run.sceneName << "\n\n";
     md << "Frame " << run.width << "x" << run.height << " of `" << run.scene << "` on " << run.renderer
@@ -630,6 +637,8 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
         familySection(md, v, v.family == Family::Envmap ? parallaxNote(views) : std::string());
 
     furnaceSection(md, run.furnace);
+    if (run.convergence)
+        convergenceSection(md, *run.convergence);
     md << "## Files\n\n`results.csv` and `results.json` hold one record per configuration (the same fields); "
           "`render.png` is the frame with the scene's own settings; `reference*.png` the exact images; "
           "`errors/<id>.png` the error map of each configuration (per-pixel error on a fixed scale: black "

@@ -172,6 +172,36 @@ std::vector<FurnaceRow> furnaceFromJson(const QJsonArray& array) {
     return rows;
 }
 
+QJsonObject convergenceJson(const ConvergenceStudy& study) {
+    QJsonArray points;
+    for (const ConvergencePoint& p : study.points)
+        points.append(QJsonObject{
+            {"samples", p.samples}, {"traceMs", p.traceMs}, {"noise", p.noise}, {"rmse", p.rmse}});
+    return QJsonObject{{"exact", study.exact},
+                       {"smallestError", study.smallestError},
+                       {"slope", study.slope},
+                       {"enough", study.enough ? QJsonValue(*study.enough) : QJsonValue(QJsonValue::Null)},
+                       {"extrapolated", study.extrapolated},
+                       {"points", points}};
+}
+
+ConvergenceStudy convergenceFromJson(const QJsonObject& object) {
+    ConvergenceStudy study;
+    study.exact = object.value("exact").toBool();
+    study.smallestError = finite(object.value("smallestError")).value_or(0.0);
+    study.slope = finite(object.value("slope")).value_or(0.0);
+    if (const auto enough = finite(object.value("enough")))
+        study.enough = static_cast<int>(*enough);
+    study.extrapolated = object.value("extrapolated").toInt();
+    for (const QJsonValue& value : object.value("points").toArray()) {
+        const QJsonObject p = value.toObject();
+        study.points.push_back({p.value("samples").toInt(), finite(p.value("traceMs")).value_or(0.0),
+                                finite(p.value("noise")).value_or(0.0),
+                                finite(p.value("rmse")).value_or(0.0)});
+    }
+    return study;
+}
+
 double frameMs(const Record& record) {
     return record.gpuMs >= 0.0 ? record.gpuMs : record.cpuMs;
 }
@@ -208,6 +238,8 @@ base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& n
     run.timedFrames = root.value("timedFrames").toInt();
     run.renderer = root.value("renderer").toString().toStdString();
     run.furnace = furnaceFromJson(root.value("furnace").toArray());
+    if (root.value("convergence").isObject())
+        run.convergence = convergenceFromJson(root.value("convergence").toObject());
     for (const QJsonValue& value : root.value("references").toArray()) {
         const QJsonObject ref = value.toObject();
         const auto kind = referenceFromName(ref.value("name").toString().toStdString());
@@ -343,6 +375,8 @@ base::Status writeJson(const std::string& path, const RunInfo& run, const std::v
     };
     if (!run.furnace.empty())
         root.insert("furnace", furnaceJson(run.furnace));
+    if (run.convergence)
+        root.insert("convergence", convergenceJson(*run.convergence));
     return writeText(path, QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString());
 }
 

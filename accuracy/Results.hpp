@@ -71,6 +71,24 @@ struct FurnaceRow {
 QJsonArray furnaceJson(const std::vector<FurnaceRow>& rows);
 std::vector<FurnaceRow> furnaceFromJson(const QJsonArray& array);
 
+// The reference's own convergence (bench --convergence): the scene's exact image traced with rising
+// paths per rough pixel, its noise and its error against the image with the most paths.
+struct ConvergencePoint {
+    int samples = 0; // paths per pixel through rough surfaces
+    double traceMs = 0.0;
+    double noise = 0.0; // the tracer's own noise estimate in sRGB, RMS over the frame
+    double rmse = 0.0;  // sRGB, against the image with the most paths (0 for that one)
+};
+
+struct ConvergenceStudy {
+    std::vector<ConvergencePoint> points;
+    bool exact = false;         // no rough pixel: one path is exact, nothing to converge
+    double smallestError = 0.0; // the smallest whole-frame RMSE the run's configurations scored
+    double slope = 0.0;         // of log noise against log samples (−½ expected)
+    std::optional<int> enough;  // the fewest samples traced whose noise is below a tenth of it
+    int extrapolated = 0;       // otherwise: the samples the slope says it needs
+};
+
 struct ReferenceInfo {
     ReferenceKind kind = ReferenceKind::Scene;
     double traceMs = 0.0;
@@ -89,8 +107,13 @@ struct RunInfo {
     int timedFrames = 0;
     std::string renderer; // the GL renderer's description
     std::vector<ReferenceInfo> references;
-    std::vector<FurnaceRow> furnace; // the white-furnace test, where the scene has rough surfaces
+    std::vector<FurnaceRow> furnace;             // the white-furnace test, where the scene has rough surfaces
+    std::optional<ConvergenceStudy> convergence; // bench --convergence
 };
+
+// The convergence study's object in results.json ("convergence": {...}) and back.
+QJsonObject convergenceJson(const ConvergenceStudy& study);
+ConvergenceStudy convergenceFromJson(const QJsonObject& object);
 
 // A results.json read back.
 struct ResultsFile {

@@ -3,6 +3,7 @@
 #include "accuracy/Report.hpp"
 #include "accuracy/Results.hpp"
 #include "accuracy/StagedOutput.hpp"
+#include "accuracy/run/Convergence.hpp"
 #include "accuracy/run/SweepRun.hpp"
 #include "app/Interrupt.hpp"
 #include "app/OutputPaths.hpp"
@@ -168,6 +169,16 @@ base::Status writeResults(const StagedOutput& output, const accuracy::RunInfo& r
     return base::Done{};
 }
 
+// The smallest error the run's configurations scored (whole-frame RMSE, sRGB): what the reference's noise
+// must stay well below to judge.
+double smallestError(const std::vector<accuracy::Record>& records) {
+    double smallest = 0.0;
+    for (const accuracy::Record& r : records)
+        if (r.rmse > 0.0 && (smallest == 0.0 || r.rmse < smallest))
+            smallest = r.rmse;
+    return smallest;
+}
+
 // Plots and references of an earlier run in the same folder would mix two runs: the commit removes them.
 bool isEarlierOutput(const std::string& name) {
     const bool png = name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0;
@@ -215,6 +226,16 @@ int run(const Options& options) {
         return interrupted();
     if (!swept)
         return fail(outputMessage(swept.error(), *output));
+    if (options.convergence) {
+        auto study = accuracy::studyConvergence(input, swept->run.width, swept->run.height,
+                                                smallestError(swept->records), progress,
+                                                [] { return StopOnSignal::requested(); });
+        if (stop.requested())
+            return interrupted();
+        if (!study)
+            return fail(outputMessage(study.error(), *output));
+        swept->run.convergence = std::move(*study);
+    }
     // The GL work is done: free it before the plots.
     renderer->reset();
     accuracy::RunInfo run = std::move(swept->run);

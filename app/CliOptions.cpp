@@ -140,7 +140,7 @@ std::string usageText() {
            "[--screen-space-sources] [--keep-going]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N [--animated]] "
            "[--preview SCALE[,CUT] [--preview-drag]] [--pixel X,Y] [--json]\n"
-           "  speculum bench PROJECT --out DIR [--quick] [--size WxH] [--keep-going]\n"
+           "  speculum bench PROJECT --out DIR [--quick] [--convergence] [--size WxH] [--keep-going]\n"
            "  speculum time PROJECT [--size WxH] [--frames N] [--animated] [--time T] [--half-float] "
            "[--json]\n"
            "  speculum export PROJECT -o OUT.glb|OUT.gltf [--keep-going]\n"
@@ -166,6 +166,8 @@ std::string usageText() {
            "depth, PCF, tessellation), times each and measures its error against the exact tracer; it "
            "writes\n"
            "results.csv, results.json, plots and report.md into DIR. --quick: fewer points at 480x270.\n"
+           "--convergence also traces the reference at 4, 16, 64, 256 (and 1024) paths per rough pixel and\n"
+           "picks the count whose noise is below a tenth of the smallest error the run measured.\n"
            "time draws N frames (default 100, after 5 warm-up frames) into an 8-bit target like a window's\n"
            "and prints the median, minimum and maximum wall-clock frame time, each frame timed until its\n"
            "pixels can be read, and each pass kind's share; a static scene reuses its shadow and\n"
@@ -402,8 +404,11 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
         app.add_flag("--animated", o.animated, "Play the animation at 60 frames a second");
         app.add_flag("--half-float", o.halfFloat, "Draw through the half-float buffer, to compare");
     }
-    if (command == Command::Bench)
+    if (command == Command::Bench) {
         app.add_flag("--quick", o.quick, "Fewer points at 480x270");
+        app.add_flag("--convergence", o.convergence,
+                     "Also trace the reference at rising paths per rough pixel and pick the count it needs");
+    }
     if (command != Command::Explain)
         app.add_flag("--keep-going", o.keepGoing, "A missing or unreadable model or texture is a warning");
     app.add_flag("-q,--quiet", o.quiet, "No progress on stderr (warnings and errors still)");

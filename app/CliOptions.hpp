@@ -34,6 +34,7 @@ struct CliOptions {
     bool screenSpaceSources = false;
     bool json = false;
     bool quick = false;
+    bool convergence = false; // bench --convergence: also study the reference's convergence
     int frame = 1; // explain: which of consecutive frames of the same scene to explain (reuse shows from 2)
     // explain --preview SCALE[,CUT] [--preview-drag]: the frame as the editor's preview of that level
     render::PreviewPolicy preview;

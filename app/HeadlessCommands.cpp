@@ -563,6 +563,7 @@ int runBench(const CliOptions& options) {
     b.project = options.project;
     b.outDir = options.outDir;
     b.quick = options.quick;
+    b.convergence = options.convergence;
     b.keepGoing = options.keepGoing;
     if (options.sizeGiven) {
         b.width = options.width;

@@ -264,9 +264,15 @@ TEST_F(BenchCli, WritesResultsThatAgreePlotsAndAReport) {
 TEST_F(BenchCli, ASceneWithoutAReflectorHasNoMapRows) {
     const fs::path scene = writeScene("mirrors.speculum.json", sceneJson(false));
     const fs::path out = m_dir / "out";
-    const CliRun run = bench(scene, out);
+    // --convergence on a scene without rough surfaces: the reference is exact, and the report says so.
+    const CliRun run = bench(scene, out, "--quick --size 64x40 --convergence");
     ASSERT_EQ(run.status, 0) << run.err;
-    const QJsonArray results = loadJson(out / "results.json")["results"].toArray();
+    const QJsonObject root = loadJson(out / "results.json");
+    EXPECT_TRUE(root["convergence"].toObject()["exact"].toBool());
+    EXPECT_FALSE(root.contains("furnace")) << "no rough surface, no furnace";
+    EXPECT_NE(readFile(out / "report.md").find("## Convergence of the reference"), std::string::npos);
+    EXPECT_NE(readFile(out / "report.md").find("exact with one path"), std::string::npos);
+    const QJsonArray results = root["results"].toArray();
     ASSERT_FALSE(results.isEmpty());
     for (const QJsonValue& v : results) {
         const QJsonObject r = v.toObject();
