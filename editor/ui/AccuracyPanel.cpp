@@ -5,6 +5,7 @@
 #include "base/Printable.hpp"
 #include "editor/document/Commands.hpp"
 #include "editor/document/SweepResults.hpp"
+#include "editor/ui/CompareView.hpp"
 #include "editor/ui/SweepChart.hpp"
 #include "editor/ui/SweepRunJob.hpp"
 #include "editor/ui/Viewport.hpp"
@@ -47,8 +48,10 @@ public:
         setGeometry(viewport.rect());
         hide();
     }
-    void setImage(const QImage& image) {
+    // `caption` says what the image is (the error map's by default).
+    void setImage(const QImage& image, const QString& caption = {}) {
         m_image = image;
+        m_caption = caption;
         update();
     }
     const QImage& image() const { return m_image; }
@@ -70,7 +73,10 @@ protected:
             painter.drawImage(QRectF((width() - w) / 2.0, 0.0, w, height()), m_image);
         }
         painter.setOpacity(1.0);
-        const QString caption = tr("Error map of the compared view (brighter = worse; 64/255 or more = top)");
+        const QString caption =
+            m_caption.isEmpty()
+                ? tr("Error map of the compared view (brighter = worse; 64/255 or more = top)")
+                : m_caption;
         const QRect box = painter.fontMetrics().boundingRect(caption).adjusted(-6, -3, 6, 3);
         const QRect at = box.translated(8 - box.left(), height() - box.height() - 8 - box.top());
         painter.fillRect(at, QColor(0, 0, 0, 170));
@@ -80,6 +86,7 @@ protected:
 
 private:
     QImage m_image;
+    QString m_caption;
 };
 
 // An image scaled to fit the space it has, keeping its aspect (at most twice its own size); the pixmap
@@ -216,10 +223,20 @@ QGroupBox* AccuracyPanel::buildCompareBox() {
 
     QFormLayout* numbers = buildNumbers(compareBox);
     buildImages(compareBox);
-    m_overlay = new QCheckBox(tr("Show the error map over the viewport"), compareBox);
+    m_overlay = new QCheckBox(tr("Show over the viewport:"), compareBox);
     m_overlay->setObjectName(QStringLiteral("accuracyOverlay"));
     m_overlay->setEnabled(false);
+    m_overlayMap = new QComboBox(compareBox);
+    m_overlayMap->setObjectName(QStringLiteral("accuracyOverlayMap"));
+    m_overlayMap->addItem(tr("the error map"));
+    m_overlayMap->addItem(tr("the FLIP map"));
+    m_overlayMap->setToolTip(tr("The error map: each pixel's sRGB difference on a fixed scale. The FLIP map: "
+                                "what a viewer flipping between the images would notice (0 black, 1 pale "
+                                "yellow)."));
     m_overlayWidget = new ErrorMapOverlay(m_viewport);
+    auto* overlayRow = new QHBoxLayout;
+    overlayRow->addWidget(m_overlay);
+    overlayRow->addWidget(m_overlayMap, 1);
 
     auto* compareLayout = new QVBoxLayout(compareBox);
     compareLayout->addLayout(buttons);
@@ -228,7 +245,7 @@ QGroupBox* AccuracyPanel::buildCompareBox() {
     compareLayout->addLayout(numbers);
     compareLayout->addWidget(m_explanation);
     compareLayout->addWidget(m_images, 1);
-    compareLayout->addWidget(m_overlay);
+    compareLayout->addLayout(overlayRow);
     return compareBox;
 }
 
@@ -284,6 +301,12 @@ QFormLayout* AccuracyPanel::buildNumbers(QGroupBox* compareBox) {
     m_psnr = label("accuracyPsnr");
     m_psnrMirrors = label("accuracyPsnrMirrors");
     m_psnrReflector = label("accuracyPsnrReflector");
+    m_psnrInterval = label("accuracyPsnrInterval");
+    m_psnrInterval->setToolTip(tr("Where the PSNR could lie (95 %) given the exact image's own noise: a "
+                                  "difference between two settings inside it is not measured"));
+    m_mae = label("accuracyMae");
+    m_ssim = label("accuracySsim");
+    m_flip = label("accuracyFlip");
     m_rasterMs = label("accuracyRasterMs");
     m_traceMs = label("accuracyTraceMs");
     m_noise = label("accuracyNoise");
@@ -294,6 +317,10 @@ QFormLayout* AccuracyPanel::buildNumbers(QGroupBox* compareBox) {
     numbers->addRow(tr("PSNR"), m_psnr);
     numbers->addRow(tr("PSNR mirrors"), m_psnrMirrors);
     numbers->addRow(tr("PSNR reflector"), m_psnrReflector);
+    numbers->addRow(tr("PSNR 95 %"), m_psnrInterval);
+    numbers->addRow(tr("MAE (sRGB)"), m_mae);
+    numbers->addRow(tr("SSIM"), m_ssim);
+    numbers->addRow(tr("FLIP (LDR · HDR)"), m_flip);
     numbers->addRow(tr("Raster frame"), m_rasterMs);
     numbers->addRow(tr("Exact tracer"), m_traceMs);
     numbers->addRow(tr("Tracer noise"), m_noise);
@@ -302,7 +329,9 @@ QFormLayout* AccuracyPanel::buildNumbers(QGroupBox* compareBox) {
         tr("<b>RMSE</b> is the typical difference of a pixel's colour between the two images (sRGB, 0 = "
            "identical, 1 = black against white); <b>PSNR</b> says the same in decibels, 20·log10(1 / RMSE), "
            "so higher is better: above 40 dB the differences are invisible, 30–40 dB they show on a close "
-           "look, below 30 dB they are obvious."),
+           "look, below 30 dB they are obvious. <b>SSIM</b> compares local structure (1 = identical). "
+           "<b>FLIP</b> is what a viewer flipping between the two images would notice, 0 to 1 (about 0.1 is "
+           "one just-noticeable colour difference); its map shows where."),
         compareBox);
     m_explanation->setObjectName(QStringLiteral("accuracyExplanation"));
     m_explanation->setWordWrap(true);
@@ -318,8 +347,11 @@ void AccuracyPanel::buildImages(QGroupBox* compareBox) {
     m_imageMode->setObjectName(QStringLiteral("accuracyImageMode"));
     m_imageMode->addItem(tr("Side by side"));
     m_imageMode->addItem(tr("Flip exact / raster"));
-    m_imageMode->setToolTip(tr("Show the three images next to each other, or one image that alternates "
-                               "between the exact and the raster one"));
+    m_imageMode->addItem(tr("Swipe exact / raster (zoom)"));
+    m_imageMode->addItem(tr("Exact beside raster (zoom)"));
+    m_imageMode->setToolTip(tr("Show the four images next to each other, one image that alternates "
+                               "between the exact and the raster one, or a zoomable view that swipes "
+                               "between them or shows them side by side"));
     m_flipButton = new QPushButton(tr("Flip"), compareBox);
     m_flipButton->setObjectName(QStringLiteral("accuracyFlipButton"));
     m_flipButton->setToolTip(tr("Alternate the view between the exact and the raster image (or click "
@@ -336,8 +368,13 @@ void AccuracyPanel::buildImages(QGroupBox* compareBox) {
     imagesLayout->addLayout(modeRow);
     buildSideBySide();
     buildFlipPage();
+    m_compareView = new CompareView(m_images);
+    m_compareView->setObjectName(QStringLiteral("accuracyCompareView"));
+    m_compareView->setMinimumHeight(240);
+    m_compareView->hide();
     imagesLayout->addWidget(m_sideBySide);
     imagesLayout->addWidget(m_flipPage);
+    imagesLayout->addWidget(m_compareView, 1);
     m_images->hide();
 }
 
@@ -366,6 +403,9 @@ void AccuracyPanel::buildSideBySide() {
                     tr("The rasterizer's image with the scene's settings"));
     m_errorMap = tile("accuracyErrorMap", tr("Error map"),
                       tr("Brighter = larger difference; 64/255 or more is the top of the ramp"));
+    m_flipMap = tile("accuracyFlipMap", tr("FLIP map"),
+                     tr("What a viewer flipping between the images would notice, in magma: black none, pale "
+                        "yellow 1"));
 }
 
 // One larger image that flips between the exact and the raster image, with a caption saying which.
@@ -428,11 +468,8 @@ void AccuracyPanel::connectComparison() {
     connect(m_comparison, &ExactComparison::finished, this, &AccuracyPanel::showResult);
     connect(m_comparison, &ExactComparison::failed, this, &AccuracyPanel::comparisonFailed);
     connect(m_overlay, &QCheckBox::toggled, m_overlayWidget, &QWidget::setVisible);
-    connect(m_imageMode, &QComboBox::currentIndexChanged, this, [this](int mode) {
-        m_sideBySide->setVisible(mode == 0);
-        m_flipPage->setVisible(mode == 1);
-        m_flipButton->setVisible(mode == 1);
-    });
+    connect(m_overlayMap, &QComboBox::currentIndexChanged, this, &AccuracyPanel::showOverlayImage);
+    connect(m_imageMode, &QComboBox::currentIndexChanged, this, &AccuracyPanel::showImageMode);
     connect(m_flipButton, &QPushButton::clicked, this, &AccuracyPanel::flip);
     connect(m_flipView, &ImageTile::clicked, this, &AccuracyPanel::flip);
 }
@@ -447,12 +484,14 @@ void AccuracyPanel::clear() {
         cancelSweep();
     }
     m_last.reset();
-    for (QLabel* l : {m_rmse, m_psnr, m_psnrMirrors, m_psnrReflector, m_rasterMs, m_traceMs, m_noise}) {
+    for (QLabel* l : {m_rmse, m_psnr, m_psnrMirrors, m_psnrReflector, m_psnrInterval, m_mae, m_ssim, m_flip,
+                      m_rasterMs, m_traceMs, m_noise}) {
         l->setText(QStringLiteral("—"));
     }
-    for (ImageTile* tile : {m_reference, m_raster, m_errorMap, m_flipView}) {
+    for (ImageTile* tile : {m_reference, m_raster, m_errorMap, m_flipMap, m_flipView}) {
         tile->setImage({});
     }
+    m_compareView->setImages({}, {});
     m_flipCaption->clear();
     m_flipShowsReference = true;
     m_images->hide();
@@ -474,7 +513,37 @@ bool AccuracyPanel::flipShowsReference() const {
 }
 
 void AccuracyPanel::setImageMode(ImageMode mode) {
-    m_imageMode->setCurrentIndex(mode == ImageMode::Flip ? 1 : 0);
+    m_imageMode->setCurrentIndex(static_cast<int>(mode));
+}
+
+void AccuracyPanel::showImageMode(int mode) {
+    m_sideBySide->setVisible(mode == static_cast<int>(ImageMode::SideBySide));
+    m_flipPage->setVisible(mode == static_cast<int>(ImageMode::Flip));
+    m_flipButton->setVisible(mode == static_cast<int>(ImageMode::Flip));
+    const bool zoomable =
+        mode == static_cast<int>(ImageMode::Swipe) || mode == static_cast<int>(ImageMode::ZoomSideBySide);
+    m_compareView->setLayoutMode(mode == static_cast<int>(ImageMode::Swipe)
+                                     ? CompareView::Layout::Swipe
+                                     : CompareView::Layout::SideBySide);
+    m_compareView->setVisible(zoomable);
+}
+
+void AccuracyPanel::setOverlayMap(OverlayMap map) {
+    m_overlayMap->setCurrentIndex(map == OverlayMap::Flip ? 1 : 0);
+}
+
+void AccuracyPanel::showOverlayImage() {
+    if (!m_last) {
+        m_overlayWidget->setImage({});
+        return;
+    }
+    if (m_overlayMap->currentIndex() == 1) {
+        m_overlayWidget->setImage(m_last->flipMap,
+                                  tr("FLIP map of the compared view (what a viewer would notice: black none, "
+                                     "pale yellow 1)"));
+    } else {
+        m_overlayWidget->setImage(m_last->errorMap);
+    }
 }
 
 void AccuracyPanel::flip() {
@@ -532,6 +601,12 @@ void AccuracyPanel::showResult(const ComparisonResult& result) {
     m_psnr->setText(decibels(result.psnr));
     m_psnrMirrors->setText(decibels(result.psnrMirrors));
     m_psnrReflector->setText(decibels(result.psnrReflector));
+    m_psnrInterval->setText(result.psnrHigh - result.psnrLow < 0.005
+                                ? tr("exact: the reference has no noise here")
+                                : tr("%1 – %2").arg(decibels(result.psnrLow), decibels(result.psnrHigh)));
+    m_mae->setText(QString::number(result.mae, 'f', 4));
+    m_ssim->setText(QString::number(result.ssim, 'f', 4));
+    m_flip->setText(tr("%1 · %2").arg(result.flip, 0, 'f', 4).arg(result.hdrFlip, 0, 'f', 4));
     m_rasterMs->setText(result.rasterGpuMs >= 0.0 ? tr("%1 ms GPU · %2 ms CPU")
                                                         .arg(result.rasterGpuMs, 0, 'f', 2)
                                                         .arg(result.rasterCpuMs, 0, 'f', 2)
@@ -548,9 +623,11 @@ void AccuracyPanel::showResult(const ComparisonResult& result) {
     m_reference->setImage(result.reference);
     m_raster->setImage(result.raster);
     m_errorMap->setImage(result.errorMap);
+    m_flipMap->setImage(result.flipMap);
+    m_compareView->setImages(result.reference, result.raster);
     showFlipImage();
     m_images->show();
-    m_overlayWidget->setImage(result.errorMap);
+    showOverlayImage();
     m_overlay->setEnabled(true);
     if (!result.final) {
         return; // the messages once, for the result that stands

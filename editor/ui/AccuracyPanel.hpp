@@ -32,6 +32,7 @@ class AnimationClock;
 
 namespace speculum::ui {
 
+class CompareView;
 class ErrorMapOverlay;
 class SweepChart;
 class SweepRunJob;
@@ -98,11 +99,16 @@ public:
     // The sentence under the numbers that says what RMSE and PSNR measure and what a good value is.
     QString explanationText() const;
 
-    // How the compared images show: the three side by side, or one view that flips exact / raster.
-    enum class ImageMode { SideBySide, Flip };
+    // How the compared images show: the four side by side (exact, raster, error map, FLIP map), one view
+    // that flips exact / raster, or a zoomable view that swipes between them or shows them side by side.
+    enum class ImageMode { SideBySide, Flip, Swipe, ZoomSideBySide };
     void setImageMode(ImageMode mode);
     // Whether the flip view shows the exact image (else the raster one).
     bool flipShowsReference() const;
+    CompareView& compareView() { return *m_compareView; }
+    // What the viewport overlay shows: the error map or the FLIP map.
+    enum class OverlayMap { Error, Flip };
+    void setOverlayMap(OverlayMap map);
 
 public slots:
     // Forgets the comparison and the sweep of the previous document (New, Open, Restore): numbers, images,
@@ -139,6 +145,8 @@ private:
 
     void showResult(const ComparisonResult& result);
     void showFlipImage();
+    void showImageMode(int mode);
+    void showOverlayImage();
     void comparisonFailed(const QString& text, bool cancelled);
     void setBusy(bool busy);
     void loadSweepDialog();
@@ -164,6 +172,10 @@ private:
     QLabel* m_psnr = nullptr;
     QLabel* m_psnrMirrors = nullptr;
     QLabel* m_psnrReflector = nullptr;
+    QLabel* m_psnrInterval = nullptr;
+    QLabel* m_mae = nullptr;
+    QLabel* m_ssim = nullptr;
+    QLabel* m_flip = nullptr;
     QLabel* m_rasterMs = nullptr;
     QLabel* m_traceMs = nullptr;
     QLabel* m_noise = nullptr;
@@ -174,12 +186,15 @@ private:
     ImageTile* m_reference = nullptr;
     ImageTile* m_raster = nullptr;
     ImageTile* m_errorMap = nullptr;
+    ImageTile* m_flipMap = nullptr;
+    CompareView* m_compareView = nullptr;
     QWidget* m_flipPage = nullptr;
     ImageTile* m_flipView = nullptr;
     QLabel* m_flipCaption = nullptr;
     QPushButton* m_flipButton = nullptr;
     bool m_flipShowsReference = true;
     QCheckBox* m_overlay = nullptr;
+    QComboBox* m_overlayMap = nullptr;
     ErrorMapOverlay* m_overlayWidget = nullptr;
     SweepChart* m_chart = nullptr;
     QLabel* m_sweepMessage = nullptr;

@@ -280,7 +280,7 @@ void AccuracyPanel::sweepFinished(const accuracy::ResultsFile& results) {
     setSweeping(false);
     m_chartBefore.reset();
     m_chart->setResults(results);
-    const QString findings = findingsMarkdown(accuracy::findings(results.records));
+    const QString findings = findingsMarkdown(accuracy::findings(results.records, results.run.furnace));
     m_findings->setText(findings.isEmpty() ? tr("The scene has nothing to sweep: no curved reflector, no "
                                                 "planar mirror, no shadowed light and no built-in teapot.")
                                            : findings);

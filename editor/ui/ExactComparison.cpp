@@ -4,6 +4,7 @@
 #include "editor/ui/Viewport.hpp"
 #include "render/image/ColorSpace.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
+#include "render/metrics/Flip.hpp"
 #include "scene/evaluate/Snapshot.hpp"
 
 #include <QTimer>
@@ -40,6 +41,13 @@ base::Result<std::unique_ptr<ComparisonResult>> measureLevel(const ComparisonRes
     result->psnrMirrors = psnrOf(errors->mirrors);
     result->psnrReflector = psnrOf(errors->reflector);
     result->errorMap = toQImage(render::metrics::errorColorMap(errors->difference));
+    result->flipMap = toQImage(render::metrics::flipColorMap(errors->flip));
+    result->psnrLow = errors->interval.psnrLow;
+    result->psnrHigh = errors->interval.psnrHigh;
+    result->mae = errors->overall.mae;
+    result->ssim = errors->ssim;
+    result->flip = errors->flip.mean;
+    result->hdrFlip = errors->hdrFlip;
     result->reference = toQImage(reference.traced.image);
     result->raster = toQImage(raster);
     return result;

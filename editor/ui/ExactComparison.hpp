@@ -31,6 +31,12 @@ struct ComparisonResult {
     double psnr = 0.0;                   // dB
     std::optional<double> psnrMirrors;   // none when no pixel shows a planar mirror
     std::optional<double> psnrReflector; // none when no pixel shows the curved reflector
+    double psnrLow = 0.0;                // the 95 % interval the exact image's own noise leaves on the PSNR
+    double psnrHigh = 0.0;
+    double mae = 0.0;     // mean absolute error of the sRGB values
+    double ssim = 1.0;    // mean SSIM, 1 for identical images
+    double flip = 0.0;    // mean LDR-FLIP, 0 … 1
+    double hdrFlip = 0.0; // mean HDR-FLIP on the linear images
     double rasterCpuMs = 0.0;
     double rasterGpuMs = -1.0; // -1: no GPU timer on this context
     double traceMs = 0.0;      // of the level shown (the levels before it not counted)
@@ -41,6 +47,7 @@ struct ComparisonResult {
     int roughPixels = 0;
     bool final = true; // false: a level the refinement goes on from
     QImage errorMap;   // the error ramp (render::metrics), sRGB, width × height
+    QImage flipMap;    // the FLIP map in magma, sRGB, width × height
     QImage reference;  // the exact tracer's image, sRGB, width × height
     QImage raster;     // the rasterizer's image that was measured, sRGB, width × height
     QStringList warnings;

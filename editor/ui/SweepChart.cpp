@@ -194,13 +194,18 @@ QString SweepChart::pointLabel(int index) const {
     for (const auto& [key, value] : r.settings) {
         settings << QString::fromStdString(key + " " + value);
     }
-    return tr("%1 %2\n%3 ms %4 · PSNR %5 dB\n%6")
+    const QString perceptual = r.perceptual ? tr(" · FLIP %1 · SSIM %2%3")
+                                                  .arg(r.flip, 0, 'f', 4)
+                                                  .arg(r.ssim, 0, 'f', 4)
+                                                  .arg(r.tiedWith.empty() ? QString() : tr(" · tied (noise)"))
+                                            : QString();
+    return tr("%1 %2\n%3 ms %4 · PSNR %5 dB%6\n%7")
         .arg(QString::fromStdString(accuracy::familyName(r.config.family)),
              QString::fromStdString(r.config.label))
         .arg(accuracy::frameMs(r), 0, 'f', 2)
         .arg(r.gpuMs >= 0.0 ? tr("GPU") : tr("CPU"))
         .arg(r.psnr, 0, 'f', 2)
-        .arg(settings.join(QStringLiteral(", ")));
+        .arg(perceptual, settings.join(QStringLiteral(", ")));
 }
 
 void SweepChart::hoverRecord(int index) {

@@ -7,6 +7,7 @@
 // The compared images show side by side and in a flip view; chart points label themselves on hover; clear()
 // (New, Open) forgets it all.
 #include "editor/ui/AccuracyPanel.hpp"
+#include "editor/ui/CompareView.hpp"
 #include "editor/ui/ExactComparison.hpp"
 #include "editor/ui/SweepChart.hpp"
 #include "scene/model/Scene.hpp"
@@ -29,6 +30,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
+#include <QWheelEvent>
 #include <gtest/gtest.h>
 #include <map>
 #include <set>
@@ -549,6 +551,98 @@ TEST_F(AccuracyPanelTest, TheImagesShowSideBySideAndTheFlipViewAlternates) {
     panel().setImageMode(AccuracyPanel::ImageMode::SideBySide);
     EXPECT_TRUE(reference->isVisible());
     EXPECT_FALSE(flip->isVisible());
+}
+
+// Beside RMSE and PSNR the comparison shows the PSNR's interval, MAE, SSIM and FLIP, and the FLIP map; the
+// zoomable view swipes between exact and raster (the wheel zooms about the pointer, the line drags, the
+// image pans, a double-click fits) or shows them side by side; the overlay shows either map.
+TEST_F(AccuracyPanelTest, PerceptualFiguresTheFlipMapAndTheZoomableSwipeView) {
+    panel().setPreviewWidth(120);
+    panel().compareWithExact();
+    ASSERT_TRUE(waitFor([&] { return !panel().comparing(); }, 180000));
+    ASSERT_TRUE(panel().lastComparison().has_value()) << text("accuracyStatus").toStdString();
+    const ComparisonResult& r = *panel().lastComparison();
+    EXPECT_GT(r.flip, 0.0);
+    EXPECT_LT(r.flip, 1.0);
+    EXPECT_GT(r.hdrFlip, 0.0);
+    EXPECT_GT(r.ssim, 0.0);
+    EXPECT_LT(r.ssim, 1.0);
+    EXPECT_GT(r.mae, 0.0);
+    EXPECT_EQ(text("accuracyFlip"),
+              QStringLiteral("%1 · %2").arg(r.flip, 0, 'f', 4).arg(r.hdrFlip, 0, 'f', 4));
+    EXPECT_EQ(text("accuracySsim"), QString::number(r.ssim, 'f', 4));
+    EXPECT_EQ(text("accuracyMae"), QString::number(r.mae, 'f', 4));
+    EXPECT_TRUE(text("accuracyPsnrInterval").startsWith(QStringLiteral("exact")))
+        << "the chrome demo has nothing rough: " << text("accuracyPsnrInterval").toStdString();
+    EXPECT_TRUE(panel().explanationText().contains(QStringLiteral("FLIP")));
+    ASSERT_EQ(r.flipMap.size(), QSize(r.width, r.height));
+    auto* flipMap = panel().findChild<ImageTile*>(QStringLiteral("accuracyFlipMap"));
+    ASSERT_NE(flipMap, nullptr);
+    EXPECT_EQ(flipMap->image(), r.flipMap);
+    EXPECT_TRUE(flipMap->isVisible());
+
+    // The overlay: the error map, or the FLIP map.
+    auto* overlay = m_window->findChild<QWidget*>(QStringLiteral("errorMapOverlay"));
+    ASSERT_NE(overlay, nullptr);
+    auto overlayImage = [&] { return overlay->grab().toImage(); };
+    panel().findChild<QCheckBox*>(QStringLiteral("accuracyOverlay"))->setChecked(true);
+    QApplication::processEvents();
+    const QImage withErrorMap = overlayImage();
+    panel().setOverlayMap(AccuracyPanel::OverlayMap::Flip);
+    QApplication::processEvents();
+    EXPECT_NE(overlayImage(), withErrorMap) << "the FLIP map is drawn instead";
+
+    // The swipe view: both images, split at the middle.
+    panel().setImageMode(AccuracyPanel::ImageMode::Swipe);
+    QApplication::processEvents();
+    CompareView& view = panel().compareView();
+    ASSERT_TRUE(view.isVisible());
+    EXPECT_FALSE(flipMap->isVisible());
+    EXPECT_EQ(view.layoutMode(), CompareView::Layout::Swipe);
+    EXPECT_EQ(view.zoom(), 1.0);
+    EXPECT_DOUBLE_EQ(view.divider(), 0.5);
+    // Drag the swipe line (at the middle while the image fits) to the right: more of the exact image shows.
+    const QPoint onLine(view.rect().center().x(), view.height() / 2);
+    QTest::mousePress(&view, Qt::LeftButton, {}, onLine);
+    QTest::mouseMove(&view, onLine + QPoint(30, 0));
+    QTest::mouseRelease(&view, Qt::LeftButton, {}, onLine + QPoint(30, 0));
+    EXPECT_GT(view.divider(), 0.5) << "the line follows the drag";
+    const QImage fitted = view.grab().toImage();
+    // Zoom about a point left of the centre: the image point under it stays under it.
+    const QPoint anchor = view.rect().center() - QPoint(view.width() / 6, 0);
+    const QPointF before = view.imagePointAt(anchor);
+    QWheelEvent wheel(anchor, view.mapToGlobal(anchor), QPoint(), QPoint(0, 240), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(&view, &wheel);
+    EXPECT_NEAR(view.zoom(), 1.5625, 1e-9) << "two steps of 1.25";
+    EXPECT_NEAR(view.imagePointAt(anchor).x(), before.x(), 1e-6);
+    EXPECT_NEAR(view.imagePointAt(anchor).y(), before.y(), 1e-6);
+    EXPECT_NE(view.grab().toImage(), fitted) << "the zoom shows";
+    // Drag elsewhere pans: the point under the pointer moves with it.
+    const QPoint from(view.width() / 5, view.height() / 3);
+    const QPointF under = view.imagePointAt(from);
+    QTest::mousePress(&view, Qt::LeftButton, {}, from);
+    QTest::mouseMove(&view, from + QPoint(20, 10));
+    QTest::mouseRelease(&view, Qt::LeftButton, {}, from + QPoint(20, 10));
+    EXPECT_NEAR(view.imagePointAt(from + QPoint(20, 10)).x(), under.x(), 0.5);
+    QTest::mouseDClick(&view, Qt::LeftButton, {}, from);
+    EXPECT_EQ(view.zoom(), 1.0) << "a double-click fits the image again";
+    const QString shots = qEnvironmentVariable("SPECULUM_SHOTS_DIR");
+    if (!shots.isEmpty()) {
+        view.setZoom(4.0, view.rect().center());
+        QApplication::processEvents();
+        EXPECT_TRUE(m_dock->grab().save(shots + QStringLiteral("/accuracy-swipe.png")));
+    }
+    // Exact beside raster, zoomable: two panes.
+    panel().setImageMode(AccuracyPanel::ImageMode::ZoomSideBySide);
+    QApplication::processEvents();
+    EXPECT_EQ(view.layoutMode(), CompareView::Layout::SideBySide);
+    EXPECT_TRUE(view.isVisible());
+    if (!shots.isEmpty()) {
+        QApplication::processEvents();
+        EXPECT_TRUE(m_dock->grab().save(shots + QStringLiteral("/accuracy-zoom-side-by-side.png")));
+    }
+    EXPECT_EQ(m_window->undoStack().count(), 0) << "looking changes nothing in the document";
 }
 
 // clear() (what New and Open do) empties the images, the numbers and the chart.
