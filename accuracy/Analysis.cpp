@@ -55,6 +55,13 @@ double focusValue(const Record& record, Metric metric) {
     return record.psnr;
 }
 
+Metric judgedMetric(Family family, const std::vector<const Record*>& rows) {
+    const bool mirrors =
+        std::any_of(rows.begin(), rows.end(), [](const Record* r) { return r->config.series == "planar"; });
+    return effectiveMetric(rows, family == Family::ScreenSpace && !mirrors ? Metric::PsnrReflector
+                                                                           : focusMetric(family));
+}
+
 std::optional<double> focusFlip(const Record& record, Metric metric) {
     if (!record.perceptual)
         return std::nullopt;

@@ -20,6 +20,10 @@ std::string metricAxisLabel(Metric metric);
 double focusValue(const Record& record, Metric metric);
 Metric effectiveMetric(const std::vector<const Record*>& records, Metric wanted);
 
+// The metric a family's rows are judged by: focusMetric, falling back as effectiveMetric does; the
+// screen-space family of a scene without mirrors sweeps the reflector, so it is judged on its pixels.
+Metric judgedMetric(Family family, const std::vector<const Record*>& rows);
+
 // FLIP's counterpart of focusValue: the mean LDR-FLIP on the family's pixels (falling back to the whole
 // frame's as focusValue does); none for a record without perceptual figures.
 std::optional<double> focusFlip(const Record& record, Metric metric);

@@ -119,6 +119,8 @@ std::vector<double> logTicks(double lo, double hi) {
             if (std::log10(v) >= lo && std::log10(v) <= hi)
                 ticks.push_back(v);
         }
+    if (ticks.empty()) // a range too narrow to hold a 1, 2 or 5: its ends
+        ticks = {std::pow(10.0, lo), std::pow(10.0, hi)};
     return ticks;
 }
 

@@ -157,11 +157,7 @@ FamilyView analyse(Family family, const std::vector<Record>& records) {
     for (const Record& r : records)
         if (r.config.family == family)
             v.rows.push_back(&r);
-    // The screen-space family of a scene without mirrors sweeps the reflector: judged on its pixels.
-    const bool mirrors = std::any_of(v.rows.begin(), v.rows.end(),
-                                     [](const Record* r) { return r->config.series == "planar"; });
-    v.metric = effectiveMetric(v.rows, family == Family::ScreenSpace && !mirrors ? Metric::PsnrReflector
-                                                                                 : focusMetric(family));
+    v.metric = judgedMetric(family, v.rows);
     v.gpu = allGpuTimed(v.rows);
     for (std::size_t i = 0; i < v.rows.size(); ++i) {
         const Record& r = *v.rows[i];

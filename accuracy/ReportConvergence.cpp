@@ -63,8 +63,13 @@ void convergenceSection(std::ostringstream& md, const ConvergenceStudy& study) {
     md << "The smallest error this run must judge is " << number("%.5f", study.smallestError)
        << " (sRGB RMSE); a reference good enough to judge it has noise below a tenth of that, "
        << number("%.5f", target) << ": ";
-    if (study.enough)
+    if (!(target > 0.0))
+        md << "no configuration differs from the reference at all, so there is no error to judge.\n\n";
+    else if (study.enough)
         md << "**" << *study.enough << " paths per rough pixel** get there.\n\n";
+    else if (study.extrapolated >= kMaxExtrapolated)
+        md << "none of the counts traced gets there, and along the fitted slope no practical count "
+              "would.\n\n";
     else
         md << "none of the counts traced gets there; along the fitted slope it takes about **"
            << study.extrapolated << " paths per rough pixel**.\n\n";

@@ -15,8 +15,9 @@ namespace speculum::accuracy {
 std::string glossyPath(const Record& record);
 
 // The furnace's word on a glossy configuration at `roughness`: the share of the lobe's energy its path
-// keeps (the worst over the surfaces measured), and whether that energy error dominates the
-// configuration's own error (it is at least the configuration's typical relative error, √relative MSE).
+// keeps (the worst over the surfaces its frame shows), and whether that energy error dominates the
+// configuration's own error (it is at least the configuration's typical relative error on the pixels that
+// see a rough surface, √Record::relativeMseRough).
 // None without furnace rows for that path and roughness.
 std::optional<std::string> energyNote(const Record& record, double roughness,
                                       const std::vector<FurnaceRow>& furnace);

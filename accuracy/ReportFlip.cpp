@@ -57,7 +57,10 @@ std::optional<FlipView> analyseFlip(const std::vector<const Record*>& rows,
             view.best = i;
     }
     view.front = paretoFront(view.points);
-    view.cheapest = cheapestWithin(view.points, flipJnd());
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        if (rows[i]->flipToBest && *rows[i]->flipToBest <= flipJnd() &&
+            (!view.cheapest || view.points[i].cost < view.points[*view.cheapest].cost))
+            view.cheapest = i;
     return view;
 }
 
@@ -67,8 +70,10 @@ std::vector<std::string> flipLines(const std::vector<const Record*>& rows, const
     lines.push_back("Best by FLIP: " + describeFlip(rows, flip, flip.best, psnr.costName) +
                     tiedNote(*rows[flip.best], rows) + ".");
     if (flip.cheapest)
-        lines.push_back("Cheapest within one just-noticeable difference (FLIP " + flipText(flipJnd()) +
-                        ") of the best: " + describeFlip(rows, flip, *flip.cheapest, psnr.costName) + ".");
+        lines.push_back("Cheapest that looks the same as the best by FLIP (on 99 % of the judged pixels less "
+                        "than one just-noticeable difference, FLIP " +
+                        flipText(flipJnd()) + ", from the best's image): " +
+                        describeFlip(rows, flip, *flip.cheapest, psnr.costName) + ".");
     if (flip.front.size() >= 2) {
         std::string line = "Each step along FLIP's Pareto front (cheapest first): ";
         for (std::size_t k = 1; k < flip.front.size(); ++k) {
@@ -88,7 +93,7 @@ std::vector<std::string> flipLines(const std::vector<const Record*>& rows, const
             "the images would notice: edges, and colour after the eye's blur).");
     if (flip.cheapest && psnr.cheapest && *flip.cheapest != *psnr.cheapest)
         lines.push_back("The cheap pick differs: within 1 dB PSNR it is " + bold(*rows[*psnr.cheapest]) +
-                        ", within one JND of FLIP " + bold(*rows[*flip.cheapest]) + ".");
+                        ", within one JND of the best's image by FLIP " + bold(*rows[*flip.cheapest]) + ".");
     const std::string psnrOnly = onlyIn(rows, psnr.front, flip.front),
                       flipOnly = onlyIn(rows, flip.front, psnr.front);
     if (!psnrOnly.empty() || !flipOnly.empty())

@@ -16,7 +16,8 @@ struct FlipView {
     std::vector<Point> points; // flipPoint(cost, mean FLIP on the family's pixels), per row
     std::vector<std::size_t> front;
     std::size_t best = 0;
-    std::optional<std::size_t> cheapest; // the cheapest within one JND (flipJnd) of the best
+    // The cheapest a viewer cannot tell from the best: Record::flipToBest within one JND (flipJnd).
+    std::optional<std::size_t> cheapest;
 };
 
 // None when a row lacks perceptual figures (a results.json from before they were measured).
@@ -31,9 +32,9 @@ struct PsnrRanking {
     std::string costName;                // "GPU" or "CPU"
 };
 
-// The FLIP findings, Markdown: the best and the cheapest within one JND, the steps of FLIP's Pareto front,
-// and each place where FLIP and PSNR disagree (a different best, a different cheapest pick, settings on one
-// front but not the other).
+// The FLIP findings, Markdown: the best and the cheapest that looks the same as the best, the steps of FLIP's
+// Pareto front, and each place where FLIP and PSNR disagree (a different best, a different cheapest pick,
+// settings on one front but not the other).
 std::vector<std::string> flipLines(const std::vector<const Record*>& rows, const FlipView& flip,
                                    const PsnrRanking& psnr);
 

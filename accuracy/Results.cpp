@@ -102,6 +102,8 @@ void readPerceptual(const QJsonObject& r, Record& record) {
     for (const QJsonValue& id : r.value("tiedWith").toArray())
         record.tiedWith.push_back(id.toString().toStdString());
     record.flipMap = r.value("flipMap").toString().toStdString();
+    record.flipToBest = finite(r.value("flipToBest"));
+    record.relativeMseRough = finite(r.value("relativeMseRough"));
 }
 
 void addPerceptual(QJsonObject& object, const Record& r) {
@@ -121,11 +123,13 @@ void addPerceptual(QJsonObject& object, const Record& r) {
     object.insert("psnrInterval", QJsonArray{r.psnrLow, r.psnrHigh});
     object.insert("tiedWith", tied);
     object.insert("flipMap", q(r.flipMap));
+    object.insert("flipToBest", orNull(r.flipToBest));
+    object.insert("relativeMseRough", orNull(r.relativeMseRough));
 }
 
 void writePerceptualCsv(std::ostream& csv, const Record& r) {
     if (!r.perceptual) {
-        csv << std::string(12, ',');
+        csv << std::string(14, ',');
         return;
     }
     std::string tied;
@@ -134,7 +138,8 @@ void writePerceptualCsv(std::ostream& csv, const Record& r) {
     csv << "," << number(r.mae) << "," << number(r.relativeMse) << "," << number(r.ssim) << ","
         << number(r.flip) << "," << number(r.hdrFlip) << "," << optionalNumber(r.flipMirrors) << ","
         << optionalNumber(r.flipReflector) << "," << number(r.referenceNoise) << "," << number(r.psnrLow)
-        << "," << number(r.psnrHigh) << "," << csvField(tied) << "," << csvField(r.flipMap);
+        << "," << number(r.psnrHigh) << "," << csvField(tied) << "," << csvField(r.flipMap) << ","
+        << optionalNumber(r.flipToBest) << "," << optionalNumber(r.relativeMseRough);
 }
 
 } // namespace
@@ -304,7 +309,8 @@ base::Status writeCsv(const std::string& path, const std::vector<Record>& record
     for (const std::string& name : kSettingNames)
         csv << "," << name;
     csv << ",gpuMs,cpuMs,memoryBytes,rmse,psnr,psnrMirrors,psnrReflector,errorMap,mae,relativeMse,ssim,flip,"
-           "hdrFlip,flipMirrors,flipReflector,referenceNoise,psnrLow,psnrHigh,tiedWith,flipMap\n";
+           "hdrFlip,flipMirrors,flipReflector,referenceNoise,psnrLow,psnrHigh,tiedWith,flipMap,flipToBest,"
+           "relativeMseRough\n";
     for (const Record& r : records) {
         csv << csvField(r.config.id) << "," << familyName(r.config.family) << "," << csvField(r.config.label)
             << "," << csvField(r.config.series) << "," << referenceName(r.config.reference) << ","

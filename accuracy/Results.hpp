@@ -44,6 +44,14 @@ struct Record {
     // can tell apart (on the pixels the family is judged by): ties, not a ranking.
     std::vector<std::string> tiedWith;
     std::string flipMap; // path of its FLIP map (magma), relative to the output folder
+    // How far a viewer could tell this configuration's image from its family's best one (by mean FLIP on
+    // the family's pixels): the 99th percentile over those pixels of the FLIP between the two images, 0 for
+    // the best itself. Below one JND (render::metrics::flipJnd) the two look the same. None for the glossy
+    // family (a best per roughness, its lines say) and in older files.
+    std::optional<double> flipToBest;
+    // The relative MSE on the pixels that see a rough surface (where the reference has noise); none where
+    // there are none.
+    std::optional<double> relativeMseRough;
 };
 
 // The time a chart plots for a record: the GPU's where measured (what the settings cost the frame), else
@@ -80,13 +88,15 @@ struct ConvergencePoint {
     double rmse = 0.0;  // sRGB, against the image with the most paths (0 for that one)
 };
 
+inline constexpr int kMaxExtrapolated = 1 << 30;
+
 struct ConvergenceStudy {
     std::vector<ConvergencePoint> points;
     bool exact = false;         // no rough pixel: one path is exact, nothing to converge
     double smallestError = 0.0; // the smallest whole-frame RMSE the run's configurations scored
     double slope = 0.0;         // of log noise against log samples (−½ expected)
     std::optional<int> enough;  // the fewest samples traced whose noise is below a tenth of it
-    int extrapolated = 0;       // otherwise: the samples the slope says it needs
+    int extrapolated = 0;       // otherwise: the samples the slope says it needs (at most kMaxExtrapolated)
 };
 
 struct ReferenceInfo {
@@ -133,7 +143,7 @@ base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& n
 // the scene has no such setting), gpuMs, cpuMs, memoryBytes, rmse, psnr, psnrMirrors, psnrReflector
 // (empty where there are no such pixels), errorMap, then mae, relativeMse, ssim, flip, hdrFlip,
 // flipMirrors, flipReflector, referenceNoise, psnrLow, psnrHigh, tiedWith (ids separated by spaces),
-// flipMap (all empty for a record without perceptual figures).
+// flipMap, flipToBest, relativeMseRough (all empty for a record without perceptual figures).
 base::Status writeCsv(const std::string& path, const std::vector<Record>& records);
 
 // {"format": "speculum-bench", "version": 1, "scene", "size", "quick", ..., "references": [...],
@@ -141,7 +151,8 @@ base::Status writeCsv(const std::string& path, const std::vector<Record>& record
 //               "gpuMs", "cpuMs", "memoryBytes", "memory": {"main", "mirrors", "shadows", "envmap"},
 //               "rmse", "psnr", "psnrMirrors", "psnrReflector", "errorMap", "mae", "relativeMse",
 //               "ssim", "flip", "hdrFlip", "flipMirrors", "flipReflector", "referenceNoise",
-//               "psnrInterval": [low, high], "tiedWith": [ids], "flipMap"}]}
+//               "psnrInterval": [low, high], "tiedWith": [ids], "flipMap", "flipToBest",
+//               "relativeMseRough"}]}
 // Missing values (no GPU timer, no mirror pixels) are null.
 base::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records);
 

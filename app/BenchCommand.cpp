@@ -169,12 +169,13 @@ base::Status writeResults(const StagedOutput& output, const accuracy::RunInfo& r
     return base::Done{};
 }
 
-// The smallest error the run's configurations scored (whole-frame RMSE, sRGB): what the reference's noise
-// must stay well below to judge.
+// The smallest error the run's configurations scored against the scene's reference (whole-frame RMSE,
+// sRGB), the one the convergence study traces: what its noise must stay well below to judge.
 double smallestError(const std::vector<accuracy::Record>& records) {
     double smallest = 0.0;
     for (const accuracy::Record& r : records)
-        if (r.rmse > 0.0 && (smallest == 0.0 || r.rmse < smallest))
+        if (r.config.reference == accuracy::ReferenceKind::Scene && r.rmse > 0.0 &&
+            (smallest == 0.0 || r.rmse < smallest))
             smallest = r.rmse;
     return smallest;
 }

@@ -30,16 +30,21 @@ double fittedSlope(const std::vector<ConvergencePoint>& points) {
 
 void pick(ConvergenceStudy& study) {
     const double target = 0.1 * study.smallestError;
+    if (!(target > 0.0))
+        return; // no error to judge: nothing is needed
     for (const ConvergencePoint& p : study.points)
         if (p.noise <= target) {
             study.enough = p.samples;
             return;
         }
     const ConvergencePoint& last = study.points.back();
-    const double slope = study.slope < -0.05 ? study.slope : -0.5; // a flat fit would never get there
-    if (target > 0.0 && last.noise > 0.0)
-        study.extrapolated =
-            static_cast<int>(std::ceil(double(last.samples) * std::pow(target / last.noise, 1.0 / slope)));
+    if (!(last.noise > 0.0))
+        return;
+    // The fitted slope where it is plausible for Monte Carlo noise; a shallow fit (a few points, bad luck)
+    // would ask for absurd counts, so −½ stands in for it.
+    const double slope = study.slope <= -0.25 && study.slope >= -1.0 ? study.slope : -0.5;
+    const double needed = std::ceil(double(last.samples) * std::pow(target / last.noise, 1.0 / slope));
+    study.extrapolated = static_cast<int>(std::min(needed, double(kMaxExtrapolated))); // an int holds it
 }
 
 } // namespace

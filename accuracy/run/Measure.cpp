@@ -119,9 +119,18 @@ base::Status addPerceptualFigures(ErrorFigures& figures, const render::Image& im
     if (!interval)
         return base::Error{interval.error()};
     figures.interval = *interval;
-    // The interval brackets the PSNR reported (its own sums differ from compare's by rounding only).
-    figures.interval.psnrLow = std::min(figures.interval.psnrLow, figures.overall.psnr);
-    figures.interval.psnrHigh = std::max(figures.interval.psnrHigh, figures.overall.psnr);
+    if (!noisy) { // exact: the interval is the PSNR itself (its sums differ from compare's by rounding only)
+        figures.interval.psnrLow = figures.interval.psnrHigh = figures.overall.psnr;
+        return base::Done{};
+    }
+    // The relative error on the pixels that see a rough surface (those with noise): what the white
+    // furnace's energy error is compared with.
+    std::vector<std::uint8_t> rough(noise.rgba.size() / 4, 0);
+    for (std::size_t p = 0; p < rough.size(); ++p)
+        rough[p] = noise.rgba[p * 4] > 0.0f || noise.rgba[p * 4 + 1] > 0.0f || noise.rgba[p * 4 + 2] > 0.0f;
+    auto onRough = render::metrics::compare(image, exact, &rough);
+    if (onRough && onRough->pixels > 0)
+        figures.roughRelativeMse = onRough->relativeMse;
     return base::Done{};
 }
 
@@ -159,17 +168,45 @@ base::Result<ErrorFigures> compareWithReference(const render::Image& image, cons
     return figures;
 }
 
+namespace {
+
+// The pixels `metric` judges: the mirrors', the reflector's, or (none: no such pixel, as focusValue) the
+// whole frame.
+const std::vector<std::uint8_t>* judgedMask(const Reference& reference, Metric metric) {
+    const std::vector<std::uint8_t>* mask = metric == Metric::PsnrMirrors     ? &reference.mirrorMask
+                                            : metric == Metric::PsnrReflector ? &reference.reflectorMask
+                                                                              : nullptr;
+    if (mask && std::none_of(mask->begin(), mask->end(), [](std::uint8_t m) { return m != 0; }))
+        return nullptr;
+    return mask;
+}
+
+} // namespace
+
+base::Result<double> flipBetween(const render::Image& image, const render::Image& best,
+                                 const Reference& reference, Metric metric) {
+    auto flip = render::metrics::ldrFlip(image, best);
+    if (!flip)
+        return base::Error{flip.error()};
+    const std::vector<std::uint8_t>* mask = judgedMask(reference, metric);
+    std::vector<float> values;
+    for (std::size_t p = 0; p < flip->errors.size(); ++p)
+        if (!mask || (*mask)[p] != 0)
+            values.push_back(flip->errors[p]);
+    if (values.empty())
+        return 0.0;
+    auto at = values.begin() + std::ptrdiff_t(std::min(values.size() - 1, values.size() * 99 / 100));
+    std::nth_element(values.begin(), at, values.end());
+    return double(*at);
+}
+
 base::Result<bool> comparedWithinNoise(const render::Image& a, const render::Image& b,
                                        const Reference& reference, Metric metric) {
     const render::Image& exact = reference.traced.image;
     const render::Image& noise = reference.traced.noise;
     if (noise.width != exact.width || noise.height != exact.height)
         return false; // an exact reference tells every difference apart
-    const std::vector<std::uint8_t>* mask = metric == Metric::PsnrMirrors     ? &reference.mirrorMask
-                                            : metric == Metric::PsnrReflector ? &reference.reflectorMask
-                                                                              : nullptr;
-    if (mask && std::none_of(mask->begin(), mask->end(), [](std::uint8_t m) { return m != 0; }))
-        mask = nullptr; // as focusValue: no such pixel, the whole frame
+    const std::vector<std::uint8_t>* mask = judgedMask(reference, metric);
     auto comparison = render::metrics::compareWithinNoise(a, b, exact, noise, mask);
     if (!comparison)
         return base::Error{comparison.error()};

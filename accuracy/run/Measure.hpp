@@ -74,6 +74,7 @@ struct ErrorFigures {
     std::optional<double> flipReflector;
     double hdrFlip = 0.0;
     render::metrics::NoiseInterval interval; // what the reference's noise leaves uncertain
+    std::optional<double> roughRelativeMse;  // on the pixels that see a rough surface; none without
 };
 
 // Errors of `image` against the reference, in sRGB as a viewer sees them (render::metrics): RMSE, PSNR,
@@ -85,6 +86,11 @@ base::Result<ErrorFigures> compareWithReference(const render::Image& image, cons
 // render::metrics::compareWithinNoise.
 base::Result<bool> comparedWithinNoise(const render::Image& a, const render::Image& b,
                                        const Reference& reference, Metric metric);
+
+// How far a viewer could tell `image` from `best`: the 99th percentile, over the pixels `metric` judges
+// (the whole frame where there are none), of the LDR-FLIP between the two (0: identical).
+base::Result<double> flipBetween(const render::Image& image, const render::Image& best,
+                                 const Reference& reference, Metric metric);
 
 double median(std::vector<double> values);
 

@@ -181,7 +181,9 @@ private:
             records.push_back(std::move(record));
             frames.keys.push_back(k);
         }
-        return findTies(records, frames.keys, costs, references);
+        if (base::Status tied = findTies(records, frames.keys, costs, references); !tied)
+            return tied;
+        return compareWithBest(records, frames.keys, costs, references);
     }
 
     // The record's figures from its frame and its comparison with the reference.
@@ -208,6 +210,14 @@ private:
         record.psnrLow = errors.interval.psnrLow;
         record.psnrHigh = errors.interval.psnrHigh;
         record.flipMap = "flip/" + record.config.id + ".png";
+        record.relativeMseRough = errors.roughRelativeMse;
+    }
+
+    static std::map<Family, std::vector<const Record*>> rowsByFamily(const std::vector<Record>& records) {
+        std::map<Family, std::vector<const Record*>> rows;
+        for (const Record& r : records)
+            rows[r.config.family].push_back(&r);
+        return rows;
     }
 
     // Which records of each family the reference's noise cannot tell apart, on the pixels the family is
@@ -215,6 +225,9 @@ private:
     static base::Status findTies(std::vector<Record>& records, const std::vector<std::string>& keys,
                                  const std::map<std::string, FrameCost>& costs,
                                  const std::map<ReferenceKind, Reference>& references) {
+        std::map<Family, Metric> judged; // by the same pixels as the report ranks them
+        for (const auto& [family, rows] : rowsByFamily(records))
+            judged[family] = judgedMetric(family, rows);
         for (std::size_t a = 0; a < records.size(); ++a)
             for (std::size_t b = a + 1; b < records.size(); ++b) {
                 const Record &ra = records[a], &rb = records[b];
@@ -222,7 +235,7 @@ private:
                     continue;
                 const Reference& reference = references.at(ra.config.reference);
                 auto tie = comparedWithinNoise(costs.at(keys[a]).image, costs.at(keys[b]).image, reference,
-                                               focusMetric(ra.config.family));
+                                               judged.at(ra.config.family));
                 if (!tie)
                     return base::Error{tie.error()};
                 if (*tie) {
@@ -230,6 +243,35 @@ private:
                     records[b].tiedWith.push_back(ra.config.id);
                 }
             }
+        return base::Done{};
+    }
+
+    // How far each record's image is from its family's best one (by mean FLIP on the family's pixels), as
+    // a viewer would see it: Record::flipToBest. The glossy family has a best per roughness: left out.
+    static base::Status compareWithBest(std::vector<Record>& records, const std::vector<std::string>& keys,
+                                        const std::map<std::string, FrameCost>& costs,
+                                        const std::map<ReferenceKind, Reference>& references) {
+        std::map<Family, std::vector<std::size_t>> families;
+        for (std::size_t i = 0; i < records.size(); ++i)
+            if (records[i].config.family != Family::Glossy && records[i].config.family != Family::Scene)
+                families[records[i].config.family].push_back(i);
+        for (const auto& [family, members] : families) {
+            std::vector<const Record*> rows;
+            for (std::size_t i : members)
+                rows.push_back(&records[i]);
+            const Metric metric = judgedMetric(family, rows);
+            std::size_t best = members.front();
+            for (std::size_t i : members)
+                if (*focusFlip(records[i], metric) < *focusFlip(records[best], metric))
+                    best = i;
+            for (std::size_t i : members) {
+                auto apart = flipBetween(costs.at(keys[i]).image, costs.at(keys[best]).image,
+                                         references.at(records[i].config.reference), metric);
+                if (!apart)
+                    return base::Error{apart.error()};
+                records[i].flipToBest = *apart;
+            }
+        }
         return base::Done{};
     }
 

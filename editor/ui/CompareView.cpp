@@ -92,9 +92,14 @@ double CompareView::dividerX() const {
 void CompareView::setZoom(double zoom, const QPointF& anchor) {
     const QPointF before = imagePointAt(anchor);
     m_zoom = std::clamp(zoom, 1.0, kMaxZoom);
+    if (m_zoom == 1.0) { // fitted: the whole image, centred
+        resetView();
+        return;
+    }
     // Keep `before` under the anchor: the centre moves by what the anchor's offset now spans.
     const QRectF p = paneAt(anchor);
     m_centre = before - (anchor - p.center()) / scale(p);
+    keepInView();
     update();
 }
 
@@ -172,9 +177,15 @@ void CompareView::mouseMoveEvent(QMouseEvent* event) {
     } else if (m_drag == Drag::Pan) {
         const QPointF moved = event->position() - m_lastMouse;
         m_centre -= moved / scale(paneAt(event->position()));
+        keepInView();
         update();
     }
     m_lastMouse = event->position();
+}
+
+void CompareView::keepInView() {
+    m_centre.setX(std::clamp(m_centre.x(), 0.0, double(m_exact.width())));
+    m_centre.setY(std::clamp(m_centre.y(), 0.0, double(m_exact.height())));
 }
 
 void CompareView::mouseReleaseEvent(QMouseEvent*) {

@@ -50,6 +50,7 @@ private:
     void paintPane(class QPainter& painter, const QRectF& pane, const QImage& image, double fromX,
                    double toX) const;
     double dividerX() const; // in widget pixels (swipe)
+    void keepInView();       // the centre stays on the image, so it can never be dragged out of sight
 
     QImage m_exact;
     QImage m_raster;

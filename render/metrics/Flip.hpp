@@ -50,8 +50,8 @@ base::Result<FlipResult> ldrFlip(const Image& test, const Image& reference,
 
 // HDR-FLIP of two linear (unclamped) images: LDR-FLIP at each of a range of exposures through the ACES
 // filmic curve, the range chosen from the reference (from the exposure that brings its brightest pixel to
-// 0.85 to the one that brings its median there, at least two exposures, one stop apart or closer), and the
-// largest per pixel. Errors: sizes differ.
+// 0.85 to the one that brings its median there; as many exposures as the range has stops, rounded up, at
+// least two, spread evenly over it), and the largest per pixel. Errors: sizes differ.
 base::Result<FlipResult> hdrFlip(const Image& test, const Image& reference,
                                  double pixelsPerDegree = kFlipPixelsPerDegree);
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
+#include <string>
 #include <thread>
 
 namespace speculum::render::metrics {
@@ -77,29 +78,48 @@ Image toneMappedImage(const Image& image, double exposure) {
     return out;
 }
 
-// LDR-FLIP at each exposure, the exposures shared out over the machine's cores (each is independent);
-// at most one exposure per core is in memory at a time.
-std::vector<base::Result<FlipResult>> flipPerExposure(const Image& test, const Image& reference,
+// The per-pixel largest LDR-FLIP over the exposures, the exposures shared out over the machine's cores
+// (each is independent). Each worker keeps one running maximum, so memory does not grow with the number of
+// exposures.
+base::Result<std::vector<float>> largestOverExposures(const Image& test, const Image& reference,
                                                       const ExposureRange& range, double pixelsPerDegree) {
-    std::vector<base::Result<FlipResult>> results(static_cast<std::size_t>(range.count),
-                                                  base::Error{"not computed"});
     const double step = (range.stop - range.start) / double(range.count - 1);
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    const unsigned workers = std::min(cores, static_cast<unsigned>(range.count));
+    std::vector<std::vector<float>> largest(workers);
+    std::vector<std::string> failures(workers);
     std::atomic<int> next{0};
-    auto work = [&] {
+    auto work = [&](unsigned w) {
         for (int i = next++; i < range.count; i = next++) {
             const double exposure = range.start + step * i;
-            results[static_cast<std::size_t>(i)] = ldrFlip(
-                toneMappedImage(test, exposure), toneMappedImage(reference, exposure), pixelsPerDegree);
+            auto ldr = ldrFlip(toneMappedImage(test, exposure), toneMappedImage(reference, exposure),
+                               pixelsPerDegree);
+            if (!ldr) {
+                failures[w] = ldr.error();
+                return;
+            }
+            if (largest[w].empty()) {
+                largest[w] = std::move(ldr->errors);
+                continue;
+            }
+            for (std::size_t p = 0; p < largest[w].size(); ++p)
+                largest[w][p] = std::max(largest[w][p], ldr->errors[p]);
         }
     };
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     std::vector<std::thread> helpers;
-    for (unsigned t = 1; t < std::min(cores, static_cast<unsigned>(range.count)); ++t)
-        helpers.emplace_back(work);
-    work();
+    for (unsigned w = 1; w < workers; ++w)
+        helpers.emplace_back(work, w);
+    work(0);
     for (std::thread& helper : helpers)
         helper.join();
-    return results;
+    for (const std::string& failure : failures)
+        if (!failure.empty())
+            return base::Error{failure};
+    std::vector<float> errors = std::move(largest[0]);
+    for (unsigned w = 1; w < workers; ++w)
+        for (std::size_t p = 0; p < errors.size() && p < largest[w].size(); ++p)
+            errors[p] = std::max(errors[p], largest[w][p]);
+    return errors;
 }
 
 } // namespace
@@ -108,15 +128,13 @@ base::Result<FlipResult> hdrFlip(const Image& test, const Image& reference, doub
     if (base::Status sizes = checkComparable(test, reference); !sizes)
         return base::Error{sizes.error()};
     const ExposureRange range = exposureRange(reference);
-    std::vector<base::Result<FlipResult>> exposures =
-        flipPerExposure(test, reference, range, pixelsPerDegree);
-    for (const auto& ldr : exposures)
-        if (!ldr)
-            return base::Error{ldr.error()};
-    FlipResult result = std::move(*exposures.front());
-    for (std::size_t i = 1; i < exposures.size(); ++i)
-        for (std::size_t p = 0; p < result.errors.size(); ++p)
-            result.errors[p] = std::max(result.errors[p], exposures[i]->errors[p]);
+    auto errors = largestOverExposures(test, reference, range, pixelsPerDegree);
+    if (!errors)
+        return base::Error{errors.error()};
+    FlipResult result;
+    result.width = test.width;
+    result.height = test.height;
+    result.errors = std::move(*errors);
     double sum = 0.0;
     for (float e : result.errors)
         sum += e;

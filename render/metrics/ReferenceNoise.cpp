@@ -61,7 +61,9 @@ base::Result<NoiseInterval> noiseInterval(const Image& test, const Image& refere
             const double s2 = srgbVariance(reference, noise, i);
             squares += d * d;
             varianceSum += s2;
-            mseVariance += 4.0 * d * d * s2 + 2.0 * s2 * s2;
+            // The measured d² overstates the true one by s² on average: 4 d² s² − 2 s⁴ is the plug-in
+            // estimate of 4 d_true² s² + 2 s⁴.
+            mseVariance += 4.0 * d * d * s2 - 2.0 * s2 * s2;
             ++values;
         }
     }
@@ -69,10 +71,13 @@ base::Result<NoiseInterval> noiseInterval(const Image& test, const Image& refere
     if (values == 0)
         return interval;
     const double m = double(values), mse = squares / m;
-    const double mseError = std::sqrt(mseVariance) / m;
+    // The noise adds its own variance to the measured MSE on average: the error against the noiseless
+    // image is estimated by taking it off.
+    const double trueMse = std::max(0.0, mse - varianceSum / m);
+    const double mseError = std::sqrt(std::max(0.0, mseVariance)) / m;
     interval.rmse = std::sqrt(mse);
-    interval.rmseLow = std::sqrt(std::max(0.0, mse - kConfidenceZ * mseError));
-    interval.rmseHigh = std::sqrt(mse + kConfidenceZ * mseError);
+    interval.rmseLow = std::sqrt(std::max(0.0, trueMse - kConfidenceZ * mseError));
+    interval.rmseHigh = std::sqrt(trueMse + kConfidenceZ * mseError);
     interval.psnrLow = psnrOf(interval.rmseHigh);
     interval.psnrHigh = psnrOf(interval.rmseLow);
     interval.noiseRms = std::sqrt(varianceSum / m);

@@ -13,17 +13,19 @@ namespace speculum::render::metrics {
 // error, linear RGB). Errors are measured on the sRGB encoding, so the noise is carried into it by the
 // encoding's slope at the reference's value (0 where the reference is above 1 and clamped).
 //
-// The figures are first-order (the delta method): the measured MSE against a noisy reference r̂ = r + ε
-// has variance Σ 4 d² s² / M² + Σ 2 s⁴ / M² over the M values, d the measured difference and s the
-// noise's standard deviation in sRGB; a 95 % interval is ±1.96 standard errors. Quadrupling the
-// reference's samples halves s and so halves the interval while the error dominates.
+// The figures are first-order (the delta method). Against a noisy reference r̂ = r + ε the measured MSE m
+// is on average the true one plus the mean of s² (s the noise's standard deviation in sRGB), with variance
+// Σ (4 d² s² + 2 s⁴) / M² over the M values, d the true difference. The interval is for the error against
+// the noiseless image: m less the mean s², ± 1.96 standard errors (d² estimated by the measured d² − s²),
+// so it can lie below the measured error. Quadrupling the reference's samples halves s and so halves the
+// interval while the error dominates.
 
 // The z of a two-sided 95 % interval.
 inline constexpr double kConfidenceZ = 1.96;
 
 struct NoiseInterval {
     double rmse = 0.0;    // the measured RMSE (sRGB)
-    double rmseLow = 0.0; // its 95 % interval given the reference's noise
+    double rmseLow = 0.0; // the 95 % interval of the RMSE against the noiseless image
     double rmseHigh = 0.0;
     double psnrLow = 0.0; // the PSNR interval (dB, from rmseHigh and rmseLow)
     double psnrHigh = 0.0;

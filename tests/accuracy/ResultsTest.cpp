@@ -120,6 +120,7 @@ TEST(Results, PerceptualFiguresAndTiesRoundTripAndOlderFilesLackThem) {
                                    record(Family::Shadows, "pcf-5", 4.0, 27.2)};
     records[0].tiedWith = {"pcf-3"};
     records[1].tiedWith = {"pcf-1"};
+    records[0].flipToBest = 0.125;
     ASSERT_TRUE(writeJson(json, run, records).ok());
     ASSERT_TRUE(writeCsv(csv, records).ok());
     auto read = readJson(readBack(json), "results.json");
@@ -140,6 +141,7 @@ TEST(Results, PerceptualFiguresAndTiesRoundTripAndOlderFilesLackThem) {
         EXPECT_DOUBLE_EQ(b.psnrHigh, a.psnrHigh);
         EXPECT_EQ(b.tiedWith, a.tiedWith);
         EXPECT_EQ(b.flipMap, a.flipMap);
+        EXPECT_EQ(b.flipToBest, a.flipToBest);
     }
     EXPECT_FALSE(read->records[2].perceptual) << "a record without the figures does not read as FLIP 0";
     EXPECT_TRUE(read->run.furnace.empty()) << "no rough surface, no furnace";
@@ -150,12 +152,13 @@ TEST(Results, PerceptualFiguresAndTiesRoundTripAndOlderFilesLackThem) {
     const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 4);
     const QStringList header = lines[0].split(',');
-    EXPECT_TRUE(lines[0].endsWith("errorMap,mae,relativeMse,ssim,flip,hdrFlip,flipMirrors,flipReflector,"
-                                  "referenceNoise,psnrLow,psnrHigh,tiedWith,flipMap"))
+    EXPECT_TRUE(
+        lines[0].endsWith("errorMap,mae,relativeMse,ssim,flip,hdrFlip,flipMirrors,flipReflector,"
+                          "referenceNoise,psnrLow,psnrHigh,tiedWith,flipMap,flipToBest,relativeMseRough"))
         << lines[0].toStdString();
     for (int i = 1; i < 4; ++i)
         EXPECT_EQ(lines[i].split(',').size(), header.size()) << lines[i].toStdString();
-    EXPECT_TRUE(lines[1].endsWith(",pcf-3,flip/pcf-1.png")) << lines[1].toStdString();
+    EXPECT_TRUE(lines[1].endsWith(",pcf-3,flip/pcf-1.png,0.125,")) << lines[1].toStdString();
 }
 
 // FLIP judges beside PSNR: its best, its cheap pick within one JND, and where the two disagree; a best
@@ -166,6 +169,9 @@ TEST(Results, FlipFindingsAndTiesAreSaidInWords) {
                                    withPerceptual(record(Family::Shadows, "pcf-5", 6.0, 30.5), 0.12, 0.9)};
     records[2].tiedWith = {"pcf-3"};
     records[1].tiedWith = {"pcf-5"};
+    records[0].flipToBest = 0.2;  // a viewer tells it from the best's image
+    records[1].flipToBest = 0.0;  // the best by FLIP
+    records[2].flipToBest = 0.05; // within one JND of it, but dearer
     const std::vector<FamilyFindings> found = findings(records);
     ASSERT_EQ(found.size(), 1u);
     auto line = [&](const std::string& start) {
@@ -181,9 +187,11 @@ TEST(Results, FlipFindingsAndTiesAreSaidInWords) {
         << line("Best by FLIP:");
     EXPECT_NE(line("Best by FLIP:").find("tied within the reference's noise with **pcf 5**"),
               std::string::npos);
-    // pcf 5 is 0.02 worse: within one JND (0.103) of the best, but dearer; pcf 1 is 0.2 worse, outside.
+    // pcf 5 looks the same as the best but costs more; pcf 1 does not look the same.
     EXPECT_FALSE(
-        line("Cheapest within one just-noticeable difference (FLIP 0.1031) of the best: **pcf 3**").empty());
+        line("Cheapest that looks the same as the best by FLIP (on 99 % of the judged pixels less than "
+             "one just-noticeable difference, FLIP 0.1031, from the best's image): **pcf 3**")
+            .empty());
     EXPECT_FALSE(
         line("FLIP and PSNR disagree on the best: PSNR ranks **pcf 5** first, FLIP **pcf 3**").empty());
 }
@@ -196,7 +204,9 @@ TEST(Results, GlossyLinesNameTheFurnacesEnergyError) {
         Record r = withPerceptual(record(Family::Glossy, id, ms, psnr), 0.05, 0.95);
         r.config.series = series;
         r.config.label = label;
-        r.relativeMse = 0.0016; // a typical relative error of 4 %
+        r.relativeMseRough = 0.0016; // a typical relative error of 4 % on the rough pixels
+        r.psnrMirrors = psnr;        // the frame shows a mirror, and no reflector
+        r.psnrReflector.reset();
         return r;
     };
     const std::vector<Record> records = {
@@ -212,7 +222,10 @@ TEST(Results, GlossyLinesNameTheFurnacesEnergyError) {
     FurnaceRow fine = lossy;
     fine.path = "footprint";
     fine.raster = 0.99;
-    const std::vector<FamilyFindings> found = findings(records, {lossy, fine});
+    FurnaceRow unseen = lossy; // the reflector is not in these frames: its rows are not theirs
+    unseen.surface = "reflector";
+    unseen.raster = 0.5;
+    const std::vector<FamilyFindings> found = findings(records, {lossy, fine, unseen});
     ASSERT_EQ(found.size(), 1u);
     const std::string& line = found[0].lines.at(0);
     EXPECT_EQ(line.rfind("At roughness 0.3: pick **r 0.3 mip**", 0), 0u) << line;

@@ -24,9 +24,11 @@
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScatterSeries>
+#include <QScrollArea>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -625,7 +627,10 @@ TEST_F(AccuracyPanelTest, PerceptualFiguresTheFlipMapAndTheZoomableSwipeView) {
     QTest::mouseMove(&view, from + QPoint(20, 10));
     QTest::mouseRelease(&view, Qt::LeftButton, {}, from + QPoint(20, 10));
     EXPECT_NEAR(view.imagePointAt(from + QPoint(20, 10)).x(), under.x(), 0.5);
-    QTest::mouseDClick(&view, Qt::LeftButton, {}, from);
+    // (Sent as an event: QTest's own double-click leaves its click timing to the next test's moves.)
+    QMouseEvent doubleClick(QEvent::MouseButtonDblClick, QPointF(from), view.mapToGlobal(QPointF(from)),
+                            Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(&view, &doubleClick);
     EXPECT_EQ(view.zoom(), 1.0) << "a double-click fits the image again";
     const QString shots = qEnvironmentVariable("SPECULUM_SHOTS_DIR");
     if (!shots.isEmpty()) {
@@ -736,6 +741,10 @@ TEST_F(AccuracyPanelTest, AChartPointShowsItsSettingsTimeAndPsnrOnHover) {
         }
     }
     ASSERT_NE(envmap, nullptr);
+    // The chart sits under the comparison's figures: scrolled to, as a user would.
+    auto* scroll = panel().findChild<QScrollArea*>(QStringLiteral("accuracyScroll"));
+    ASSERT_NE(scroll, nullptr);
+    scroll->ensureWidgetVisible(&chart);
     ASSERT_TRUE(waitForFrames(*m_window, 1));
     QApplication::processEvents();
     EXPECT_TRUE(chart.hoverText().isEmpty());

@@ -108,7 +108,7 @@ TEST(Flip, HdrSeesWhatClampingHides) {
 
 TEST(Flip, HdrExposureRangeSpansTheBrightestToTheMedian) {
     // A third of the pixels at 16, the rest at 1/16: from the brightest to the median is 8 stops, so eight
-    // exposures one stop apart.
+    // exposures spread evenly over them.
     render::Image reference = filled(3, 30, 1.0f / 16.0f, 1.0f / 16.0f, 1.0f / 16.0f);
     for (int y = 0; y < 30; ++y)
         for (int c = 0; c < 3; ++c)
@@ -210,6 +210,32 @@ TEST(ReferenceNoise, TheIntervalHalvesWhenTheNoiseDoes) {
     EXPECT_LE(wide->psnrLow, wide->psnrHigh);
     auto exact = noiseInterval(test, reference, filled(32, 32, 0, 0, 0));
     EXPECT_EQ(exact->rmseHigh - exact->rmseLow, 0.0) << "a noiseless reference gives a point";
+}
+
+TEST(ReferenceNoise, TheIntervalIsForTheErrorAgainstTheNoiselessImage) {
+    // A noisy reference: the truth plus ±σ, alternating, with the tracer's estimate of σ² beside it.
+    const render::Image truth = filled(32, 32, 0.2f, 0.2f, 0.2f);
+    render::Image noisy = truth;
+    const float sigma = 0.01f;
+    for (std::size_t i = 0; i < noisy.rgba.size(); ++i)
+        if (i % 4 != 3)
+            noisy.rgba[i] += (i / 4 + i % 4) % 2 == 0 ? sigma : -sigma;
+    const render::Image variance = filled(32, 32, sigma * sigma, sigma * sigma, sigma * sigma);
+    // A perfect raster image: measured against the noisy reference it seems off by σ, the interval says 0.
+    auto perfect = noiseInterval(truth, noisy, variance);
+    ASSERT_TRUE(perfect.ok());
+    EXPECT_GT(perfect->rmse, 0.0) << "the measured error is the noise's";
+    EXPECT_EQ(perfect->rmseLow, 0.0);
+    EXPECT_LT(perfect->rmseHigh, 0.5 * perfect->rmse);
+    EXPECT_EQ(perfect->psnrHigh, kMaxPsnr);
+    // An image 0.03 too bright (linear): its true error lies inside the interval, the measured one above.
+    const render::Image brighter = filled(32, 32, 0.23f, 0.23f, 0.23f);
+    auto offset = noiseInterval(brighter, noisy, variance);
+    auto trueError = compare(brighter, truth);
+    ASSERT_TRUE(offset.ok() && trueError.ok());
+    EXPECT_LE(offset->rmseLow, trueError->rmse);
+    EXPECT_GE(offset->rmseHigh, trueError->rmse);
+    EXPECT_GT(offset->rmse, trueError->rmse) << "the noise makes the measured error pessimistic";
 }
 
 TEST(ReferenceNoise, DifferencesWithinTheNoiseAreTies) {
