@@ -28,7 +28,10 @@ struct Traced {
     double value = 0.0, error = 0.0;
 };
 
-base::Result<Traced> traceCentre(const render::FrameInput& input, int size) {
+// The traced value averaged over the `window` × `window` pixels at the image's centre, which all see about
+// the same angle, and its standard error. Averaging matters: a pixel's paths use the same random numbers
+// at every roughness and view, so one pixel's chance deviation would repeat across the whole table.
+base::Result<Traced> traceCentre(const render::FrameInput& input, int size, int window) {
     auto tracer = render::reference::Tracer::create(input);
     if (!tracer)
         return base::Error{tracer.error()};
@@ -38,8 +41,15 @@ base::Result<Traced> traceCentre(const render::FrameInput& input, int size) {
     auto traced = tracer->render(settings);
     if (!traced)
         return base::Error{traced.error()};
-    return Traced{traced->image.at(size / 2, size / 2).g,
-                  std::sqrt(double(traced->noise.at(size / 2, size / 2).g))};
+    double sum = 0.0, variance = 0.0;
+    const int from = size / 2 - window / 2;
+    for (int y = from; y < from + window; ++y)
+        for (int x = from; x < from + window; ++x) {
+            sum += traced->image.at(x, y).g;
+            variance += traced->noise.at(x, y).g;
+        }
+    const double count = double(window * window);
+    return Traced{sum / count, std::sqrt(variance) / count};
 }
 
 base::Result<double> rasterCentre(render::Renderer& renderer, render::FrameInput input,
@@ -70,7 +80,8 @@ const char* pathName(render::GlossyFilter filter) {
 // One surface at one roughness: the trace once, then each raster path.
 base::Status measure(render::Renderer& renderer, const render::FrameInput& input, int size, FurnaceRow row,
                      std::vector<FurnaceRow>& rows) {
-    auto traced = traceCentre(input, size);
+    // The planar furnace's narrow camera sees the same angle everywhere; the ball's centre only nearby.
+    auto traced = traceCentre(input, size, size == kPlanarSize ? kPlanarSize : 3);
     if (!traced)
         return base::Error{"furnace: " + traced.error()};
     row.traced = traced->value;
