@@ -71,6 +71,37 @@ TEST(ReferenceConvergence, TheIntervalOnAnErrorHalvesAsPathsQuadruple) {
     EXPECT_NEAR(ratio, 0.5, 0.1);
 }
 
+// Two raster-like images against one traced reference: where they differ by less than the reference's noise
+// can tell apart they are tied, where by more they are ranked; against an exact reference nothing is tied.
+// (The noise is shared, so a small difference repeated over many pixels is still told apart: the test
+// changes one 4x4 patch.)
+TEST(ReferenceConvergence, RasterImagesThatDifferWithinTheReferencesNoiseAreTied) {
+    auto patched = [](const render::Image& image, float factor) {
+        render::Image out = image;
+        for (int y = 6; y < 10; ++y)
+            for (int x = 6; x < 10; ++x)
+                for (int c = 0; c < 3; ++c)
+                    out.rgba[(std::size_t(y) * 16 + std::size_t(x)) * 4 + std::size_t(c)] *= factor;
+        return out;
+    };
+    auto tiedAgainst = [&](const accuracy::Reference& reference, float factor) {
+        const render::Image& image = reference.traced.image;
+        auto tie =
+            accuracy::comparedWithinNoise(image, patched(image, factor), reference, accuracy::Metric::Psnr);
+        EXPECT_TRUE(tie.ok());
+        return tie.ok() && *tie;
+    };
+    auto noisy = accuracy::traceReference(accuracy::planarFurnace(0.6, 40.0), accuracy::ReferenceKind::Scene,
+                                          16, 16, {}, 16);
+    ASSERT_TRUE(noisy.ok());
+    EXPECT_TRUE(tiedAgainst(*noisy, 0.99f)) << "1 % on 16 pixels, against ±4 % noise";
+    EXPECT_FALSE(tiedAgainst(*noisy, 0.7f)) << "30 % on the same pixels";
+    auto exact = accuracy::traceReference(accuracy::planarFurnace(0.0, 40.0), accuracy::ReferenceKind::Scene,
+                                          16, 16, {}, 16);
+    ASSERT_TRUE(exact.ok());
+    EXPECT_FALSE(tiedAgainst(*exact, 0.99f)) << "an exact reference tells even 1 % apart";
+}
+
 TEST(ReferenceConvergence, ASceneWithoutRoughSurfacesIsExact) {
     accuracy::SweepInput input = roughFloor();
     input.scene = accuracy::planarFurnace(0.0, 40.0);
