@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
@@ -80,7 +79,7 @@ Image toneMappedImage(const Image& image, double exposure) {
 
 // The per-pixel largest LDR-FLIP over the exposures, the exposures shared out over the machine's cores
 // (each is independent). Each worker keeps one running maximum, so memory does not grow with the number of
-// exposures.
+// exposures; the shares are fixed, so the result never depends on timing.
 base::Result<std::vector<float>> largestOverExposures(const Image& test, const Image& reference,
                                                       const ExposureRange& range, double pixelsPerDegree) {
     const double step = (range.stop - range.start) / double(range.count - 1);
@@ -88,9 +87,10 @@ base::Result<std::vector<float>> largestOverExposures(const Image& test, const I
     const unsigned workers = std::min(cores, static_cast<unsigned>(range.count));
     std::vector<std::vector<float>> largest(workers);
     std::vector<std::string> failures(workers);
-    std::atomic<int> next{0};
+    // Worker w takes exposures w, w + workers, …: a fixed share, so which worker does what never depends
+    // on timing.
     auto work = [&](unsigned w) {
-        for (int i = next++; i < range.count; i = next++) {
+        for (int i = static_cast<int>(w); i < range.count; i += static_cast<int>(workers)) {
             const double exposure = range.start + step * i;
             auto ldr = ldrFlip(toneMappedImage(test, exposure), toneMappedImage(reference, exposure),
                                pixelsPerDegree);
@@ -115,10 +115,11 @@ base::Result<std::vector<float>> largestOverExposures(const Image& test, const I
     for (const std::string& failure : failures)
         if (!failure.empty())
             return base::Error{failure};
-    std::vector<float> errors = std::move(largest[0]);
-    for (unsigned w = 1; w < workers; ++w)
-        for (std::size_t p = 0; p < errors.size() && p < largest[w].size(); ++p)
-            errors[p] = std::max(errors[p], largest[w][p]);
+    // From zero, which no FLIP value is below, so that the result does not rest on any one worker's.
+    std::vector<float> errors(static_cast<std::size_t>(test.width) * test.height, 0.0f);
+    for (const std::vector<float>& worker : largest)
+        for (std::size_t p = 0; p < worker.size() && p < errors.size(); ++p)
+            errors[p] = std::max(errors[p], worker[p]);
     return errors;
 }
 

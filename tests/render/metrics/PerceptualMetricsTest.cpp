@@ -124,6 +124,20 @@ TEST(Flip, HdrExposureRangeSpansTheBrightestToTheMedian) {
     EXPECT_EQ(black->exposures, 2);
 }
 
+TEST(Flip, HdrIsTheSameEveryTimeWhateverTheThreadsDo) {
+    // Two exposures shared by the cores: whichever thread takes which, every exposure counts.
+    const render::Image reference = filled(16, 16, 0.0f, 0.0f, 0.0f), test = filled(16, 16, 0.5f, 0.5f, 0.5f);
+    auto first = hdrFlip(test, reference);
+    ASSERT_TRUE(first.ok());
+    EXPECT_EQ(first->exposures, 2);
+    EXPECT_GT(first->mean, 0.1);
+    for (int i = 0; i < 50; ++i) {
+        auto again = hdrFlip(test, reference);
+        ASSERT_TRUE(again.ok());
+        ASSERT_EQ(again->mean, first->mean) << "run " << i;
+    }
+}
+
 TEST(Flip, MasksAndSizes) {
     auto flip = ldrFlip(filled(4, 1, 0, 1, 0), filled(4, 1, 0, 0, 1));
     ASSERT_TRUE(flip.ok());
