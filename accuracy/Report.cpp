@@ -527,9 +527,11 @@ std::string displayName(const Configuration& c) {
     }
 }
 
-base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run,
-                         const std::vector<Record>& records) {
-    const std::vector<FamilyView> views = analyseAll(records, run.furnace);
+namespace {
+
+// One plot per family with two points or more (PSNR, and FLIP where measured), and the convergence plot.
+base::Status writePlots(const std::filesystem::path& folder, const RunInfo& run,
+                        const std::vector<FamilyView>& views) {
     for (const FamilyView& v : views)
         if (v.rows.size() >= 2) {
             const std::string plot = (folder / ("plot-" + familyName(v.family) + ".png")).string();
@@ -548,7 +550,11 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
             !s)
             return s;
 
-    std::ostringstream md;
+    return base::Done{};
+}
+
+// The heading and what the figures are.
+void introduction(std::ostringstream& md, const RunInfo& run) {
     md << "# speculum bench: " << run.sceneName << "\n\n";
     md << "Frame " << run.width << "x" << run.height << " of `" << run.scene << "` on " << run.renderer
        << ". " << (run.quick ? "Quick sweep. " : "") << "Times are medians over " << run.timedFrames
@@ -573,7 +579,10 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
           "averages of random paths, so they carry noise: PSNR 95 % is the interval that noise leaves on the "
           "PSNR, and two settings whose difference is smaller than the noise can tell apart are called tied, "
           "not ranked.\n\n";
+}
 
+// The references and the tracer's time against the rasterizer's.
+void referencesSection(std::ostringstream& md, const RunInfo& run, const std::vector<Record>& records) {
     const Record* scene = nullptr;
     for (const Record& r : records)
         if (r.config.family == Family::Scene)
@@ -606,7 +615,10 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
                 md << " (" << db(*scene->psnrMirrors) << " on the mirrors)";
             md << ".\n\n";
         }
+}
 
+// One row per family: its judge, the scene's setting, the best and the cheap picks.
+void summarySection(std::ostringstream& md, const std::vector<FamilyView>& views) {
     md << "## Summary\n\n| family | judged by | scene's own setting | best | cheapest within 1 dB of the "
           "best | cheapest within one JND (FLIP) |\n"
           "|---|---|---|---|---|---|\n";
@@ -629,6 +641,20 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
         md << "| – | | | | | |\n\nThe scene has nothing to sweep: no curved reflector, no planar mirror, no "
               "shadowed light and no built-in teapot.\n";
     md << "\n";
+}
+
+} // namespace
+
+base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run,
+                         const std::vector<Record>& records) {
+    const std::vector<FamilyView> views = analyseAll(records, run.furnace);
+    if (base::Status plotted = writePlots(folder, run, views); !plotted)
+        return plotted;
+
+    std::ostringstream md;
+    introduction(md, run);
+    referencesSection(md, run, records);
+    summarySection(md, views);
     for (const FamilyView& v : views)
         familySection(md, v, v.family == Family::Envmap ? parallaxNote(views) : std::string());
 

@@ -32,24 +32,26 @@ double relativeSquaredError(float test, float reference) {
 
 } // namespace
 
-base::Status checkComparable(const Image& test, const Image& reference) {
+base::Status checkComparable(const Image& test, const Image& reference,
+                             const std::vector<std::uint8_t>* mask) {
     if (test.width != reference.width || test.height != reference.height)
         return base::Error{"cannot compare a " + sizeText(test) + " image with a " + sizeText(reference) +
                            " reference"};
     const std::size_t values = static_cast<std::size_t>(test.width) * test.height * 4;
     if (test.rgba.size() != values || reference.rgba.size() != values)
         return base::Error{"image data does not match its size"};
+    const std::size_t pixels = static_cast<std::size_t>(test.width) * test.height;
+    if (mask && mask->size() != pixels)
+        return base::Error{"the mask has " + std::to_string(mask->size()) + " entries for " +
+                           std::to_string(pixels) + " pixels"};
     return base::Done{};
 }
 
 base::Result<ErrorStats> compare(const Image& test, const Image& reference,
                                  const std::vector<std::uint8_t>* mask, Encoding encoding) {
-    if (base::Status sizes = checkComparable(test, reference); !sizes)
+    if (base::Status sizes = checkComparable(test, reference, mask); !sizes)
         return base::Error{sizes.error()};
     const std::size_t pixels = static_cast<std::size_t>(test.width) * test.height;
-    if (mask && mask->size() != pixels)
-        return base::Error{"the mask has " + std::to_string(mask->size()) + " entries for " +
-                           std::to_string(pixels) + " pixels"};
     ErrorStats stats;
     double sum = 0.0, absolute = 0.0, relative = 0.0;
     for (std::size_t p = 0; p < pixels; ++p) {

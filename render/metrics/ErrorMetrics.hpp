@@ -34,8 +34,10 @@ struct ErrorStats {
 // Keeps the relative MSE finite where the reference is black.
 inline constexpr double kRelativeMseEpsilon = 0.01;
 
-// Whether two images can be compared: the same size, and data that matches it. The error names both sizes.
-base::Status checkComparable(const Image& test, const Image& reference);
+// Whether two images can be compared: the same size, and data that matches it (the error names both
+// sizes), and a mask, if given, with one byte per pixel.
+base::Status checkComparable(const Image& test, const Image& reference,
+                             const std::vector<std::uint8_t>* mask = nullptr);
 
 // RMSE and PSNR of `test` against `reference` over all pixels, or over those whose mask byte is non-zero
 // (mask: one byte per pixel, row 0 at the top, e.g. reference::mirrorMask). Errors: sizes differ, or the

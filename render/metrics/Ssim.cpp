@@ -52,12 +52,9 @@ void addChannel(const Image& test, const Image& reference, int c, std::vector<fl
 
 base::Result<SsimResult> ssim(const Image& test, const Image& reference,
                               const std::vector<std::uint8_t>* mask) {
-    if (base::Status sizes = checkComparable(test, reference); !sizes)
+    if (base::Status sizes = checkComparable(test, reference, mask); !sizes)
         return base::Error{sizes.error()};
     const std::size_t pixels = static_cast<std::size_t>(test.width) * test.height;
-    if (mask && mask->size() != pixels)
-        return base::Error{"the mask has " + std::to_string(mask->size()) + " entries for " +
-                           std::to_string(pixels) + " pixels"};
     SsimResult result;
     result.map.assign(pixels, 0.0f);
     for (int c = 0; c < 3; ++c)
