@@ -5,6 +5,7 @@
 #include "accuracy/ReportConvergence.hpp"
 #include "accuracy/ReportEnergy.hpp"
 #include "accuracy/ReportFlip.hpp"
+#include "accuracy/ReportShards.hpp"
 #include "base/AtomicFile.hpp"
 
 #include <algorithm>
@@ -661,6 +662,7 @@ base::Status writeReport(const std::filesystem::path& folder, const RunInfo& run
     furnaceSection(md, run.furnace);
     if (run.convergence)
         convergenceSection(md, *run.convergence);
+    shardsSection(md, run, records);
     md << "## Files\n\n`results.csv` and `results.json` hold one record per configuration (the same fields); "
           "`render.png` is the frame with the scene's own settings; `reference*.png` the exact images; "
           "`errors/<id>.png` the error map of each configuration (per-pixel error on a fixed scale: black "

@@ -142,7 +142,40 @@ void writePerceptualCsv(std::ostream& csv, const Record& r) {
         << optionalNumber(r.flipToBest) << "," << optionalNumber(r.relativeMseRough);
 }
 
+QJsonObject shardJson(const ShardInfo& info) {
+    QJsonArray configurations;
+    for (const std::string& id : info.configurations)
+        configurations.append(q(id));
+    return QJsonObject{{"index", info.shard.index},
+                       {"count", info.shard.count},
+                       {"contiguous", info.shard.contiguous},
+                       {"configurations", configurations},
+                       {"projectSha256", q(info.projectDigest)},
+                       {"convergence", info.convergence},
+                       {"host", q(info.host)}};
+}
+
+ShardInfo shardFromJson(const QJsonObject& object) {
+    ShardInfo info;
+    info.shard.index = object.value("index").toInt(-1);
+    info.shard.count = object.value("count").toInt(0);
+    info.shard.contiguous = object.value("contiguous").toBool();
+    for (const QJsonValue& id : object.value("configurations").toArray())
+        info.configurations.push_back(id.toString().toStdString());
+    info.projectDigest = object.value("projectSha256").toString().toStdString();
+    info.convergence = object.value("convergence").toBool();
+    info.host = object.value("host").toString().toStdString();
+    return info;
+}
+
 } // namespace
+
+bool RunInfo::timesFromSeveralMachines() const {
+    for (const ShardOrigin& o : shards)
+        if (o.host != shards.front().host || o.renderer != shards.front().renderer)
+            return true;
+    return false;
+}
 
 QJsonArray furnaceJson(const std::vector<FurnaceRow>& rows) {
     QJsonArray array;
@@ -220,11 +253,8 @@ std::string ResultsFile::size() const {
                                            : "?";
 }
 
-base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& name) {
-    if (root.value("format").toString() != QStringLiteral("speculum-bench"))
-        return base::Error{name + ": not a speculum bench result (format is not \"speculum-bench\")"};
-    ResultsFile out;
-    RunInfo& run = out.run;
+RunInfo runInfoFromJson(const QJsonObject& root) {
+    RunInfo run;
     run.scene = root.value("scene").toString().toStdString();
     run.sceneName = QString::fromStdString(run.scene).section(QLatin1Char('/'), -1).toStdString();
     const QJsonValue size = root.value("size");
@@ -254,6 +284,23 @@ base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& n
                                   ref.value("threads").toInt(1),
                                   ref.value("image").toString().toStdString()});
     }
+    if (root.value("shard").isObject())
+        run.shard = shardFromJson(root.value("shard").toObject());
+    for (const QJsonValue& value : root.value("shards").toArray()) {
+        const QJsonObject o = value.toObject();
+        run.shards.push_back({o.value("shard").toString().toStdString(),
+                              o.value("host").toString().toStdString(),
+                              o.value("renderer").toString().toStdString(),
+                              static_cast<std::size_t>(o.value("configurations").toInt())});
+    }
+    return run;
+}
+
+base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& name) {
+    if (root.value("format").toString() != QStringLiteral("speculum-bench"))
+        return base::Error{name + ": not a speculum bench result (format is not \"speculum-bench\")"};
+    ResultsFile out;
+    out.run = runInfoFromJson(root);
     const QJsonArray results = root.value("results").toArray();
     for (qsizetype i = 0; i < results.size(); ++i) {
         const QJsonObject r = results.at(i).toObject();
@@ -295,6 +342,11 @@ base::Result<ResultsFile> readJson(const QJsonObject& root, const std::string& n
         record.psnrReflector = finite(r.value("psnrReflector"));
         record.errorMap = r.value("errorMap").toString().toStdString();
         readPerceptual(r, record);
+        if (r.value("ranOn").isObject()) {
+            const QJsonObject on = r.value("ranOn").toObject();
+            record.ranOn =
+                RanOn{on.value("shard").toString().toStdString(), on.value("host").toString().toStdString()};
+        }
         out.records.push_back(std::move(record));
     }
     if (out.records.empty())
@@ -327,6 +379,45 @@ base::Status writeCsv(const std::string& path, const std::vector<Record>& record
     return writeText(path, csv.str());
 }
 
+namespace {
+
+// One record of results.json's "results".
+QJsonObject recordJson(const Record& r) {
+    QJsonObject settings;
+    for (const auto& [key, value] : r.settings) {
+        bool isNumber = false;
+        const int n = QString::fromStdString(value).toInt(&isNumber);
+        settings[q(key)] = isNumber ? QJsonValue(n) : QJsonValue(q(value));
+    }
+    QJsonObject object{
+        {"id", q(r.config.id)},
+        {"family", q(familyName(r.config.family))},
+        {"label", q(r.config.label)},
+        {"series", q(r.config.series)},
+        {"reference", q(referenceName(r.config.reference))},
+        {"sceneSetting", r.sceneSetting},
+        {"settings", settings},
+        {"gpuMs", r.gpuMs >= 0.0 ? QJsonValue(r.gpuMs) : QJsonValue(QJsonValue::Null)},
+        {"cpuMs", r.cpuMs},
+        {"memoryBytes", static_cast<double>(r.memory.total())},
+        {"memory", QJsonObject{{"main", static_cast<double>(r.memory.main)},
+                               {"mirrors", static_cast<double>(r.memory.mirrors)},
+                               {"shadows", static_cast<double>(r.memory.shadows)},
+                               {"envmap", static_cast<double>(r.memory.envmap)}}},
+        {"rmse", r.rmse},
+        {"psnr", r.psnr},
+        {"psnrMirrors", orNull(r.psnrMirrors)},
+        {"psnrReflector", orNull(r.psnrReflector)},
+        {"errorMap", q(r.errorMap)},
+    };
+    addPerceptual(object, r);
+    if (r.ranOn)
+        object.insert("ranOn", QJsonObject{{"shard", q(r.ranOn->shard)}, {"host", q(r.ranOn->host)}});
+    return object;
+}
+
+} // namespace
+
 base::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records) {
     QJsonArray references;
     for (const ReferenceInfo& ref : run.references)
@@ -336,37 +427,8 @@ base::Status writeJson(const std::string& path, const RunInfo& run, const std::v
                                       {"threads", ref.threads},
                                       {"image", q(ref.image)}});
     QJsonArray results;
-    for (const Record& r : records) {
-        QJsonObject settings;
-        for (const auto& [key, value] : r.settings) {
-            bool isNumber = false;
-            const int n = QString::fromStdString(value).toInt(&isNumber);
-            settings[q(key)] = isNumber ? QJsonValue(n) : QJsonValue(q(value));
-        }
-        QJsonObject object{
-            {"id", q(r.config.id)},
-            {"family", q(familyName(r.config.family))},
-            {"label", q(r.config.label)},
-            {"series", q(r.config.series)},
-            {"reference", q(referenceName(r.config.reference))},
-            {"sceneSetting", r.sceneSetting},
-            {"settings", settings},
-            {"gpuMs", r.gpuMs >= 0.0 ? QJsonValue(r.gpuMs) : QJsonValue(QJsonValue::Null)},
-            {"cpuMs", r.cpuMs},
-            {"memoryBytes", static_cast<double>(r.memory.total())},
-            {"memory", QJsonObject{{"main", static_cast<double>(r.memory.main)},
-                                   {"mirrors", static_cast<double>(r.memory.mirrors)},
-                                   {"shadows", static_cast<double>(r.memory.shadows)},
-                                   {"envmap", static_cast<double>(r.memory.envmap)}}},
-            {"rmse", r.rmse},
-            {"psnr", r.psnr},
-            {"psnrMirrors", orNull(r.psnrMirrors)},
-            {"psnrReflector", orNull(r.psnrReflector)},
-            {"errorMap", q(r.errorMap)},
-        };
-        addPerceptual(object, r);
-        results.append(object);
-    }
+    for (const Record& r : records)
+        results.append(recordJson(r));
     QJsonObject root{
         {"format", "speculum-bench"},
         {"version", 1},
@@ -383,6 +445,18 @@ base::Status writeJson(const std::string& path, const RunInfo& run, const std::v
         root.insert("furnace", furnaceJson(run.furnace));
     if (run.convergence)
         root.insert("convergence", convergenceJson(*run.convergence));
+    if (run.shard)
+        root.insert("shard", shardJson(*run.shard));
+    if (!run.shards.empty()) {
+        QJsonArray shards;
+        for (const ShardOrigin& o : run.shards)
+            shards.append(QJsonObject{{"shard", q(o.shard)},
+                                      {"host", q(o.host)},
+                                      {"renderer", q(o.renderer)},
+                                      {"configurations", static_cast<double>(o.configurations)}});
+        root.insert("shards", shards);
+        root.insert("timesFromSeveralMachines", run.timesFromSeveralMachines());
+    }
     return writeText(path, QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString());
 }
 

@@ -2,6 +2,7 @@
 
 #include "accuracy/Sweep.hpp"
 #include "base/Result.hpp"
+#include "base/Shard.hpp"
 #include "render/plan/FrameReport.hpp"
 
 #include <QJsonArray>
@@ -11,6 +12,12 @@
 #include <vector>
 
 namespace speculum::accuracy {
+
+// A share of a run measured on one machine (bench --shard): "1/4", and that machine's host name.
+struct RanOn {
+    std::string shard;
+    std::string host;
+};
 
 // One measured configuration: a row of results.csv and a record of results.json.
 struct Record {
@@ -52,6 +59,8 @@ struct Record {
     // The relative MSE on the pixels that see a rough surface (where the reference has noise); none where
     // there are none.
     std::optional<double> relativeMseRough;
+    // Where it was measured, in a run joined from shards (bench --merge); none in a one-machine run.
+    std::optional<RanOn> ranOn;
 };
 
 // The time a chart plots for a record: the GPU's where measured (what the settings cost the frame), else
@@ -106,6 +115,27 @@ struct ReferenceInfo {
     std::string image; // relative to the output folder
 };
 
+// What a shard run (bench --shard K/N) was, for the merge to check its folders against each other and join
+// them. A shard's records lack the figures that compare a configuration with others of its family
+// (tiedWith, flipToBest): the merge computes them from the frames the shard keeps.
+struct ShardInfo {
+    base::Shard shard;
+    // Every configuration of the whole sweep in its order (ids): the share is base::shardItems of it, and
+    // two shards of one sweep have the same list.
+    std::vector<std::string> configurations;
+    std::string projectDigest; // SHA-256 of the project file, hex: the shards measured the same file
+    bool convergence = false;  // bench --convergence: shard 0 studies the reference's convergence
+    std::string host;
+};
+
+// A shard a merged run joined: where its configurations were measured.
+struct ShardOrigin {
+    std::string shard; // "1/4"
+    std::string host;
+    std::string renderer;
+    std::size_t configurations = 0; // measured there
+};
+
 // What the whole run was: for the JSON header and the report.
 struct RunInfo {
     std::string scene;     // the project file as given
@@ -119,11 +149,19 @@ struct RunInfo {
     std::vector<ReferenceInfo> references;
     std::vector<FurnaceRow> furnace;             // the white-furnace test, where the scene has rough surfaces
     std::optional<ConvergenceStudy> convergence; // bench --convergence
+    std::optional<ShardInfo> shard;              // a shard run: its records are its share only
+    std::vector<ShardOrigin> shards;             // a merged run: the shards it joined, in shard order
+
+    // The shards ran on more than one machine or GPU: their times are not one machine's.
+    bool timesFromSeveralMachines() const;
 };
 
 // The convergence study's object in results.json ("convergence": {...}) and back.
 QJsonObject convergenceJson(const ConvergenceStudy& study);
 ConvergenceStudy convergenceFromJson(const QJsonObject& object);
+
+// The run's description in the root object of a results.json (everything but its records).
+RunInfo runInfoFromJson(const QJsonObject& root);
 
 // A results.json read back.
 struct ResultsFile {
@@ -152,8 +190,12 @@ base::Status writeCsv(const std::string& path, const std::vector<Record>& record
 //               "rmse", "psnr", "psnrMirrors", "psnrReflector", "errorMap", "mae", "relativeMse",
 //               "ssim", "flip", "hdrFlip", "flipMirrors", "flipReflector", "referenceNoise",
 //               "psnrInterval": [low, high], "tiedWith": [ids], "flipMap", "flipToBest",
-//               "relativeMseRough"}]}
-// Missing values (no GPU timer, no mirror pixels) are null.
+//               "relativeMseRough", "ranOn": {"shard", "host"}}],
+//  "shard": {"index", "count", "contiguous", "configurations": [ids], "projectSha256", "convergence",
+//            "host"},
+//  "shards": [{"shard", "host", "renderer", "configurations"}], "timesFromSeveralMachines"}
+// Missing values (no GPU timer, no mirror pixels) are null; "ranOn" and "shards" only in a merged run,
+// "shard" only in a shard run's.
 base::Status writeJson(const std::string& path, const RunInfo& run, const std::vector<Record>& records);
 
 } // namespace speculum::accuracy

@@ -2,13 +2,16 @@
 
 #include "accuracy/Report.hpp"
 #include "accuracy/Results.hpp"
+#include "accuracy/ShardMerge.hpp"
 #include "accuracy/StagedOutput.hpp"
 #include "accuracy/run/Convergence.hpp"
+#include "accuracy/run/ShardFiles.hpp"
 #include "accuracy/run/SweepRun.hpp"
 #include "app/Interrupt.hpp"
 #include "app/OutputPaths.hpp"
 #include "app/Progress.hpp"
 #include "app/ProjectInput.hpp"
+#include "base/Printable.hpp"
 #include "render/gl/HeadlessContext.hpp"
 #include "render/imageio/ImageWriter.hpp"
 #include "render/metrics/ErrorMetrics.hpp"
@@ -16,6 +19,8 @@
 #include "render/renderer/Renderer.hpp"
 #include "scene/evaluate/Snapshot.hpp"
 
+#include <QCryptographicHash>
+#include <QFile>
 #include <QGuiApplication>
 #include <chrono>
 #include <csignal>
@@ -23,6 +28,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <unistd.h>
 
 namespace speculum::app::bench {
 
@@ -126,21 +132,34 @@ accuracy::SweepInput sweepInput(const Options& options, const ProjectFrame& proj
 // reference, each configuration's error map, the scene's own frame) written into the staging folder as
 // soon as it exists, so that none is held until the end. A frame warning is printed once, however many
 // configurations repeat it (`warned` remembers them).
-accuracy::SweepObserver sweepObserver(const fs::path& staging, std::set<std::string>& warned) {
+//
+// A shard also keeps each reference and each frame exactly (accuracy/run/ShardFiles.hpp), for the merge to
+// find the ties and the distances to each family's best, which compare frames of different shards.
+accuracy::SweepObserver sweepObserver(const fs::path& staging, std::set<std::string>& warned, bool shard) {
     accuracy::SweepObserver observer;
     observer.progress = progress;
     observer.stop = [] { return StopOnSignal::requested(); };
-    observer.referenceTraced = [staging](const accuracy::Reference& reference,
-                                         const accuracy::ReferenceInfo& info) {
+    observer.referenceTraced = [staging, shard](const accuracy::Reference& reference,
+                                                const accuracy::ReferenceInfo& info) -> base::Status {
         printWarnings(reference.traced.warnings);
+        if (shard)
+            if (base::Status s = accuracy::writeShardReference(
+                    (staging / accuracy::shardReferenceFile(info.kind)).string(), reference);
+                !s)
+                return s;
         return render::writeImage((staging / info.image).string(), reference.traced.image);
     };
-    observer.measured = [staging, &warned](std::size_t, std::size_t, const accuracy::Record& record,
-                                           const accuracy::FrameCost& cost,
-                                           const accuracy::ErrorFigures& errors) -> base::Status {
+    observer.measured = [staging, &warned, shard](std::size_t, std::size_t, const accuracy::Record& record,
+                                                  const accuracy::FrameCost& cost,
+                                                  const accuracy::ErrorFigures& errors) -> base::Status {
         for (const std::string& w : cost.warnings)
             if (warned.insert(w).second)
                 printWarnings({w});
+        if (shard)
+            if (base::Status s = accuracy::writeShardFrame(
+                    (staging / accuracy::shardFrameFile(record.config.id)).string(), cost.image);
+                !s)
+                return s;
         if (base::Status s =
                 render::metrics::writeErrorMap((staging / record.errorMap).string(), errors.difference);
             !s)
@@ -155,8 +174,9 @@ accuracy::SweepObserver sweepObserver(const fs::path& staging, std::set<std::str
     return observer;
 }
 
-// results.csv, results.json, report.md and its plots, into the staging folder. A failed write is told as
-// the user sees it (outputMessage).
+// results.csv, results.json, report.md and its plots, into the staging folder; a shard's share gets no
+// report (its findings would be of a part of each family). A failed write is told as the user sees it
+// (outputMessage).
 base::Status writeResults(const StagedOutput& output, const accuracy::RunInfo& run,
                           const std::vector<accuracy::Record>& records) {
     const fs::path staging = output.staging();
@@ -164,6 +184,8 @@ base::Status writeResults(const StagedOutput& output, const accuracy::RunInfo& r
         return base::Error{outputMessage(s.error(), output)};
     if (base::Status s = accuracy::writeJson((staging / "results.json").string(), run, records); !s)
         return base::Error{outputMessage(s.error(), output)};
+    if (run.shard)
+        return base::Done{};
     if (base::Status s = writeReportWithGui(staging, run, records); !s)
         return base::Error{outputMessage(s.error(), output)};
     return base::Done{};
@@ -180,15 +202,198 @@ double smallestError(const std::vector<accuracy::Record>& records) {
     return smallest;
 }
 
-// Plots and references of an earlier run in the same folder would mix two runs: the commit removes them.
+// Plots and references of an earlier run in the same folder would mix two runs: the commit removes them
+// (and a shard, which writes no report, an earlier run's report.md and render.png).
 bool isEarlierOutput(const std::string& name) {
     const bool png = name.size() > 4 && name.compare(name.size() - 4, 4, ".png") == 0;
     return png && (name.rfind("plot-", 0) == 0 || name.rfind("reference", 0) == 0);
 }
 
-} // namespace
+bool isEarlierShardOutput(const std::string& name) {
+    return isEarlierOutput(name) || name == "report.md" || name == "render.png";
+}
 
-int run(const Options& options) {
+// The machine a shard ran on, as its results name it.
+std::string hostName() {
+    char name[256] = {};
+    if (::gethostname(name, sizeof name - 1) != 0 || name[0] == '\0')
+        return "unknown host";
+    return name;
+}
+
+// SHA-256 of the project file, hex: the shards and the merge check they read the same project.
+base::Result<std::string> projectDigest(const std::string& project) {
+    QFile file(QString::fromStdString(project));
+    if (!file.open(QIODevice::ReadOnly))
+        return base::Error{base::quoted(project) + ": cannot read (" + file.errorString().toStdString() +
+                           ")"};
+    QCryptographicHash hash(QCryptographicHash::Sha256);
+    if (!hash.addData(&file))
+        return base::Error{base::quoted(project) + ": cannot read"};
+    return hash.result().toHex().toStdString();
+}
+
+// The folders the staging folder needs before the sweep writes into it.
+base::Status makeSubfolders(const fs::path& staging, bool shard) {
+    std::error_code ec;
+    for (const char* sub : {"errors", "flip", accuracy::kShardFolder}) {
+        if (!shard && std::string(sub) == accuracy::kShardFolder)
+            continue;
+        fs::create_directory(staging / sub, ec);
+        if (ec)
+            return base::Error{(staging / sub).string() + ": " + ec.message()};
+    }
+    return base::Done{};
+}
+
+// What a shard adds to its run's description for the merge: the project's digest, the convergence study
+// asked for, the host.
+base::Status describeShard(accuracy::RunInfo& run, const Options& options) {
+    auto digest = projectDigest(options.project);
+    if (!digest)
+        return base::Error{digest.error()};
+    run.shard->projectDigest = *digest;
+    run.shard->convergence = options.convergence;
+    run.shard->host = hostName();
+    return base::Done{};
+}
+
+// The sweep (a shard's share of it with --shard) and, with --convergence, the study of the reference (in
+// shard 0 alone: the merge judges it against every shard's errors). Errors as the user sees them.
+base::Result<accuracy::SweepOutcome> measure(const Options& options, const accuracy::SweepInput& input,
+                                             const StagedOutput& output, std::string& renderer) {
+    auto context = render::gl::HeadlessContext::create();
+    if (!context)
+        return base::Error{"no OpenGL: " + context.error()};
+    auto gl = render::Renderer::create();
+    if (!gl)
+        return base::Error{gl.error()};
+    std::set<std::string> warned;
+    const accuracy::SweepObserver observer =
+        sweepObserver(output.staging(), warned, options.shard.has_value());
+    auto swept = accuracy::runSweep(**gl, input, observer);
+    if (!swept)
+        return base::Error{outputMessage(swept.error(), output)};
+    if (options.convergence && (!options.shard || options.shard->index == 0)) {
+        auto study = accuracy::studyConvergence(input, swept->run.width, swept->run.height,
+                                                smallestError(swept->records), progress,
+                                                [] { return StopOnSignal::requested(); });
+        if (!study)
+            return base::Error{outputMessage(study.error(), output)};
+        swept->run.convergence = std::move(*study);
+    }
+    renderer = (*context)->description();
+    return swept;
+}
+
+// Copies `relative` from a shard's folder into the staging folder (a hard link where the file system
+// allows: the shards' files are replaced by renames, never written in place, so the link stays theirs).
+base::Status copyFromShard(const fs::path& shard, const std::string& relative, const fs::path& staging) {
+    std::error_code ec;
+    const fs::path from = shard / relative, to = staging / relative;
+    fs::create_hard_link(from, to, ec);
+    if (ec) {
+        ec.clear();
+        fs::copy_file(from, to, ec);
+    }
+    if (ec)
+        return base::Error{base::quoted(from.string()) + ": cannot copy (" + ec.message() + ")"};
+    return base::Done{};
+}
+
+// The images a one-machine run writes, from the shards that made them: references, error and FLIP maps,
+// the scene's own frame.
+base::Status copyImages(const accuracy::MergedShards& merged, const fs::path& staging) {
+    for (const accuracy::ReferenceInfo& ref : merged.run.references)
+        if (base::Status s = copyFromShard(merged.referenceFolder.at(ref.kind), ref.image, staging); !s)
+            return s;
+    for (std::size_t i = 0; i < merged.records.size(); ++i) {
+        const accuracy::Record& r = merged.records[i];
+        for (const std::string& image : {r.errorMap, r.flipMap})
+            if (base::Status s = copyFromShard(merged.recordFolder[i], image, staging); !s)
+                return s;
+        if (r.config.family == accuracy::Family::Scene)
+            if (base::Status s = copyFromShard(merged.recordFolder[i], "render.png", staging); !s)
+                return s;
+    }
+    return base::Done{};
+}
+
+// --out is neither one of the merged folders nor inside one (a merge leaves its inputs as they are), nor
+// a folder that holds one (the commit replaces what it writes there).
+base::Status checkMergeFolders(const Options& options) {
+    std::vector<std::string> inputs{options.project};
+    std::error_code ec;
+    const fs::path out = fs::weakly_canonical(options.outDir, ec);
+    for (const std::string& dir : options.mergeDirs) {
+        inputs.push_back((fs::path(dir) / "results.json").string());
+        fs::path in = fs::weakly_canonical(dir, ec);
+        if (in.filename().empty()) // "shard0/": its last element is empty
+            in = in.parent_path();
+        const auto [inEnd, outAt] = std::mismatch(in.begin(), in.end(), out.begin(), out.end());
+        if (!ec && inEnd == in.end())
+            return base::Error{"--out: " + base::quoted(options.outDir) + " is, or is inside, " +
+                               base::quoted(dir) +
+                               ", a folder it merges, which a merge leaves as it is: choose another folder"};
+    }
+    return checkOutputFolder(options.outDir, inputs);
+}
+
+// The images and records of a merge, their ties and distances to each family's best, the convergence
+// study judged against every shard's errors: ready to write.
+base::Status joinShards(accuracy::MergedShards& merged, const Options& options, const StagedOutput& output) {
+    if (base::Status s = makeSubfolders(output.staging(), false); !s)
+        return s;
+    progress("copying the shards' images");
+    if (base::Status s = copyImages(merged, output.staging()); !s)
+        return base::Error{outputMessage(s.error(), output)};
+    if (base::Status s = accuracy::compareShardFrames(merged.records, merged.recordFolder,
+                                                      merged.referenceFolder, progress);
+        !s)
+        return s;
+    if (merged.run.convergence)
+        accuracy::judgeConvergence(*merged.run.convergence, smallestError(merged.records));
+    merged.run.scene = options.project;
+    return base::Done{};
+}
+
+// `bench --merge DIR... --out DIR`: the shards' results joined into what one machine's run writes.
+int merge(const Options& options) {
+    const auto start = Clock::now();
+    const StopOnSignal stop;
+    if (base::Status folders = checkMergeFolders(options); !folders)
+        return fail(folders.error());
+    auto digest = projectDigest(options.project);
+    if (!digest)
+        return fail(digest.error());
+    progress("reading " + std::to_string(options.mergeDirs.size()) + " shard folders");
+    auto merged = accuracy::mergeShards({options.mergeDirs.begin(), options.mergeDirs.end()});
+    if (!merged)
+        return fail(merged.error());
+    if (merged->projectDigest != *digest)
+        return fail(base::quoted(options.project) +
+                    ": not the project the shards measured (the file's contents differ)");
+    auto output = StagedOutput::begin(options.outDir);
+    if (!output)
+        return fail(output.error());
+    if (base::Status joined = joinShards(*merged, options, *output); !joined)
+        return fail(joined.error());
+    if (stop.requested())
+        return interrupted();
+    progress("writing results, plots and the report");
+    if (base::Status s = writeResults(*output, merged->run, merged->records); !s)
+        return fail(s.error());
+    if (base::Status s = output->commit(isEarlierOutput); !s)
+        return fail(s.error());
+    const fs::path report = output->folder() / "report.md";
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    progress("merged in " + std::to_string(static_cast<int>(seconds + 0.5)) + " s: " + report.string());
+    std::cout << report.string() << "\n";
+    return 0;
+}
+
+// `bench PROJECT --out DIR` and, with --shard K/N, its share.
+int sweep(const Options& options) {
     const auto start = Clock::now();
     const StopOnSignal stop; // before the output folder exists: a stop always finds it to clean up
 
@@ -205,55 +410,42 @@ int run(const Options& options) {
     auto output = StagedOutput::begin(options.outDir);
     if (!output)
         return fail(output.error());
-    const fs::path staging = output->staging();
-    std::error_code ec;
-    for (const char* maps : {"errors", "flip"}) {
-        fs::create_directory(staging / maps, ec);
-        if (ec)
-            return fail((staging / maps).string() + ": " + ec.message());
-    }
-    auto context = render::gl::HeadlessContext::create();
-    if (!context)
-        return fail("no OpenGL: " + context.error());
-    auto renderer = render::Renderer::create();
-    if (!renderer)
-        return fail(renderer.error());
+    if (base::Status s = makeSubfolders(output->staging(), options.shard.has_value()); !s)
+        return fail(s.error());
 
-    const accuracy::SweepInput input = sweepInput(options, *project);
-    std::set<std::string> warned;
-    const accuracy::SweepObserver observer = sweepObserver(staging, warned);
-    auto swept = accuracy::runSweep(**renderer, input, observer);
+    accuracy::SweepInput input = sweepInput(options, *project);
+    input.shard = options.shard;
+    std::string renderer;
+    auto swept = measure(options, input, *output, renderer);
     if (stop.requested())
         return interrupted();
     if (!swept)
-        return fail(outputMessage(swept.error(), *output));
-    if (options.convergence) {
-        auto study = accuracy::studyConvergence(input, swept->run.width, swept->run.height,
-                                                smallestError(swept->records), progress,
-                                                [] { return StopOnSignal::requested(); });
-        if (stop.requested())
-            return interrupted();
-        if (!study)
-            return fail(outputMessage(study.error(), *output));
-        swept->run.convergence = std::move(*study);
-    }
-    // The GL work is done: free it before the plots.
-    renderer->reset();
+        return fail(swept.error());
     accuracy::RunInfo run = std::move(swept->run);
     run.scene = options.project;
-    run.renderer = (*context)->description();
-    context->reset();
+    run.renderer = renderer;
+    if (run.shard)
+        if (base::Status s = describeShard(run, options); !s)
+            return fail(s.error());
 
-    progress("writing results, plots and the report");
+    progress(run.shard ? "writing the shard's results" : "writing results, plots and the report");
     if (base::Status s = writeResults(*output, run, swept->records); !s)
         return fail(s.error());
-    if (base::Status s = output->commit(isEarlierOutput); !s)
+    if (base::Status s = output->commit(run.shard ? isEarlierShardOutput : isEarlierOutput); !s)
         return fail(s.error());
-    const fs::path report = output->folder() / "report.md";
+    const fs::path written = output->folder() / (run.shard ? "results.json" : "report.md");
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    progress("done in " + std::to_string(static_cast<int>(seconds + 0.5)) + " s: " + report.string());
-    std::cout << report.string() << "\n";
+    progress("done in " + std::to_string(static_cast<int>(seconds + 0.5)) + " s: " + written.string());
+    std::cout << written.string() << "\n";
     return 0;
+}
+
+} // namespace
+
+int run(const Options& options) {
+    if (options.shard && !options.mergeDirs.empty())
+        return fail("--merge: not with --shard (merge the shards' folders once every shard is measured)");
+    return options.mergeDirs.empty() ? sweep(options) : merge(options);
 }
 
 } // namespace speculum::app::bench

@@ -78,8 +78,8 @@ base::Status parsePreview(const std::string& text, render::PreviewPolicy& previe
     return base::Done{};
 }
 
-constexpr std::array<std::string_view, 6> kCommands = {"render", "explain", "bench",
-                                                       "time",   "export",  "help"};
+constexpr std::array<std::string_view, 7> kCommands = {"render", "explain", "bench", "time",
+                                                       "export", "join",    "help"};
 
 // Edit distance (insertions, deletions, substitutions, case ignored), for "did you mean".
 std::size_t distance(std::string_view a, std::string_view b) {
@@ -127,7 +127,7 @@ std::string unknownCommand(const std::string& word) {
     std::string message = "unknown command " + base::quoted(word);
     if (!best.empty())
         return message + " (did you mean '" + std::string(best) + "'?)";
-    return message + " (commands: render, explain, bench, time, export; see speculum --help)";
+    return message + " (commands: render, explain, bench, time, export, join; see speculum --help)";
 }
 
 } // namespace
@@ -138,9 +138,14 @@ std::string usageText() {
            "  speculum --recover FILE                     open the editor on an editor's recovery file\n"
            "  speculum render PROJECT -o OUT [--size WxH] [--ssaa N] [--time T] [--reference [--samples N]] "
            "[--screen-space-sources] [--keep-going]\n"
+           "  speculum render PROJECT --frames A..B|--turntable SECONDS -o OUT [--fps N] [--shard K/N "
+           "[--contiguous]] [still options]\n"
+           "  speculum join SEQUENCE -o CLIP [--frames A..B] [--fps N]\n"
            "  speculum explain PROJECT [--size WxH] [--time T] [--frame N [--animated]] "
            "[--preview SCALE[,CUT] [--preview-drag]] [--pixel X,Y] [--json]\n"
-           "  speculum bench PROJECT --out DIR [--quick] [--convergence] [--size WxH] [--keep-going]\n"
+           "  speculum bench PROJECT --out DIR [--quick] [--convergence] [--size WxH] [--shard K/N "
+           "[--contiguous]] [--keep-going]\n"
+           "  speculum bench PROJECT --merge DIR... --out DIR\n"
            "  speculum time PROJECT [--size WxH] [--frames N] [--animated] [--time T] [--half-float] "
            "[--json]\n"
            "  speculum export PROJECT -o OUT.glb|OUT.gltf [--keep-going]\n"
@@ -152,6 +157,12 @@ std::string usageText() {
            "per sample average rough reflections, and the noise left is printed.\n"
            "--screen-space-sources draws each screen-space mirror in the colour of where its reflection\n"
            "comes from: green, met in the image; blue, the reflector's map; red, the background.\n"
+           "--frames A..B renders an animation, frame N at N / fps seconds (--fps, default 24), into an\n"
+           "image sequence (OUT with a frame number: frames/shot_%04d.png) or a clip (.mp4 H.264, .webm\n"
+           "VP9, .gif); --turntable SECONDS orbits the camera about its target once in SECONDS (a seamless\n"
+           "loop; without --frames, SECONDS x fps frames). --shard K/N renders the Kth (from 0) of N\n"
+           "interleaved shares of the frames (contiguous with --contiguous) into the sequence; join encodes\n"
+           "a finished sequence into a clip and refuses one with missing or mismatched frames.\n"
            "explain renders a frame and lists the passes that ran and the effects skipped, with reasons;\n"
            "--frame N explains the Nth of N identical frames, showing what a static scene reuses;\n"
            "--animated plays them 1/60 s apart from --time, as the playing editor draws them.\n"
@@ -166,6 +177,8 @@ std::string usageText() {
            "depth, PCF, tessellation), times each and measures its error against the exact tracer; it "
            "writes\n"
            "results.csv, results.json, plots and report.md into DIR. --quick: fewer points at 480x270.\n"
+           "--shard K/N measures the Kth (from 0) of N shares of the configurations; --merge joins the\n"
+           "shards' folders into one results set and report in --out.\n"
            "--convergence also traces the reference at 4, 16, 64, 256 (and 1024) paths per rough pixel and\n"
            "picks the count whose noise is below a tenth of the smallest error the run measured.\n"
            "time draws N frames (default 100, after 5 warm-up frames) into an 8-bit target like a window's\n"
@@ -204,6 +217,9 @@ const char* describe(Command command) {
                "minimum and maximum frame time and each pass kind's share.";
     case Command::Export:
         return "Writes PROJECT as glTF 2.0: OUT.glb (one file) or OUT.gltf (with its .bin and images).";
+    case Command::Join:
+        return "Encodes a finished image sequence (SEQUENCE: its name with the frame number, "
+               "frames/shot_%04d.png) into a clip: .mp4 (H.264), .webm (VP9) or .gif.";
     case Command::Editor:
     case Command::Help:
     case Command::Version:
@@ -234,7 +250,74 @@ base::Status parsePixel(const std::string& text, CliOptions& o) {
 
 struct Typed {
     std::string size, ssaa, time, frame, frames, samples, preview, pixel;
+    std::string frameRange, fps, turntable, shard;
+    bool contiguous = false;
 };
+
+// --frames A..B: both frame numbers included, A <= B.
+base::Status parseFrameRange(const std::string& text, CliOptions& o) {
+    static const std::regex range(R"((\d+)\.\.(\d+))");
+    std::smatch m;
+    if (!std::regex_match(text, m, range))
+        return Error{"--frames: expected A..B such as 0..239 (frame numbers, both included), got " +
+                     base::quoted(text)};
+    auto first = parseInt("--frames A", m[1].str(), 0, 9999999);
+    if (!first)
+        return Error{first.error()};
+    auto last = parseInt("--frames B", m[2].str(), 0, 9999999);
+    if (!last)
+        return Error{last.error()};
+    if (*last < *first)
+        return Error{"--frames: " + base::quoted(text) + " is empty: B comes before A (A..B with A <= B)"};
+    o.frameRange = std::pair{*first, *last};
+    return base::Done{};
+}
+
+// render's and join's animation options: --frames A..B, --fps, --turntable, --shard K/N [--contiguous].
+base::Status checkAnimationValues(const Typed& t, CliOptions& o) {
+    if (!t.frameRange.empty())
+        if (base::Status range = parseFrameRange(t.frameRange, o); !range)
+            return range;
+    if (!t.fps.empty()) {
+        auto fps = parseInt("--fps", t.fps, 1, 240);
+        if (!fps)
+            return Error{fps.error()};
+        o.fps = *fps;
+        o.fpsGiven = true;
+    }
+    if (!t.turntable.empty()) {
+        double seconds = 0.0;
+        const auto [end, ec] = std::from_chars(t.turntable.data(), t.turntable.data() + t.turntable.size(),
+                                               seconds, std::chars_format::general);
+        if (ec != std::errc() || end != t.turntable.data() + t.turntable.size() || !std::isfinite(seconds))
+            return Error{"--turntable: expected the seconds of one turn, got " + base::quoted(t.turntable)};
+        if (seconds < 0.1 || seconds > 86400.0)
+            return Error{"--turntable: " + base::quoted(t.turntable) +
+                         " is out of range (0.1..86400 seconds)"};
+        o.turntable = seconds;
+        if (!o.frameRange) {
+            const long long frames = std::llround(seconds * o.fps);
+            o.frameRange = std::pair{0, static_cast<int>(std::max(1ll, frames) - 1)};
+        }
+    }
+    if (!t.shard.empty()) {
+        auto shard = base::parseShard("--shard", t.shard);
+        if (!shard)
+            return Error{shard.error()};
+        shard->contiguous = t.contiguous;
+        o.shard = *shard;
+    } else if (t.contiguous) {
+        return Error{"--contiguous: only with --shard K/N"};
+    }
+    if (o.command == Command::Render && !o.frameRange) {
+        for (const auto& [given, name] : {std::pair{!t.fps.empty(), "--fps"}, {!t.shard.empty(), "--shard"}})
+            if (given)
+                return Error{std::string(name) + ": only with --frames A..B or --turntable SECONDS"};
+    }
+    if (o.command == Command::Render && o.frameRange && !t.time.empty())
+        return Error{"--time: not with --frames (frame N shows the scene at N / fps seconds)"};
+    return base::Done{};
+}
 
 base::Status checkValues(const Typed& t, CliOptions& o) {
     if (!t.size.empty()) {
@@ -294,6 +377,8 @@ base::Status checkValues(const Typed& t, CliOptions& o) {
     if (!t.pixel.empty())
         if (base::Status pixel = parsePixel(t.pixel, o); !pixel)
             return pixel;
+    if (base::Status animation = checkAnimationValues(t, o); !animation)
+        return animation;
     if (!t.frames.empty()) {
         auto n = parseInt("--frames", t.frames, 1, 100000);
         if (!n)
@@ -342,6 +427,24 @@ base::Status checkGivenOnceWithAValue(const CLI::App& app, const std::vector<std
     return base::Done{};
 }
 
+// render's and join's animation options.
+void addAnimationOptions(CLI::App& app, Typed& typed, Command command) {
+    app.add_option("--frames", typed.frameRange,
+                   command == Command::Render ? "Render frames A to B of the animation (N at N / fps seconds)"
+                                              : "The frames the sequence must hold (default: those on disk)")
+        ->type_name("A..B");
+    app.add_option("--fps", typed.fps, "Frames per second (1..240, default 24)")->type_name("N");
+    if (command != Command::Render)
+        return;
+    app.add_option("--turntable", typed.turntable,
+                   "Orbit the camera about its target once in SECONDS (a seamless loop; without --frames, "
+                   "SECONDS x fps frames)")
+        ->type_name("SECONDS");
+    app.add_option("--shard", typed.shard, "Render the Kth (from 0) of N interleaved shares of the frames")
+        ->type_name("K/N");
+    app.add_flag("--contiguous", typed.contiguous, "With --shard: a contiguous share, not every Nth frame");
+}
+
 // explain's own options: which frame, and which preview of it.
 void addExplainOptions(CLI::App& app, Typed& typed, CliOptions& o) {
     app.add_option("--frame", typed.frame, "Explain the Nth of N identical frames (1..100)")->type_name("N");
@@ -370,13 +473,31 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
     app.set_help_flag("-h,--help", "Print this help and exit");
     // Unknown words are checked below, to name them the way every other error of speculum does.
     app.allow_extras();
-    app.add_option("PROJECT", o.project, "The project file (*.speculum.json)")->type_name("");
+    if (command == Command::Join)
+        app.add_option("SEQUENCE", o.project, "The image sequence: its name with the frame number")
+            ->type_name("");
+    else
+        app.add_option("PROJECT", o.project, "The project file (*.speculum.json)")->type_name("");
     const bool renders = command == Command::Render || command == Command::Explain;
-    if (command == Command::Render || command == Command::Export)
+    if (command == Command::Render || command == Command::Export || command == Command::Join)
         app.add_option("-o,--output", o.output,
-                       command == Command::Render ? "The image to write (.png, .jpg, .tif, .exr, .webp, ...)"
-                                                  : "The glTF file to write (.glb or .gltf)")
-            ->type_name("OUT");
+                       command == Command::Render
+                           ? "The image to write (.png, .jpg, .tif, .exr, .webp, ...), "
+                             "or with --frames a sequence (shot_%04d.png) or a clip "
+                             "(.mp4, .webm, .gif)"
+                       : command == Command::Export ? "The glTF file to write (.glb or .gltf)"
+                                                    : "The clip to write (.mp4, .webm, .gif)")
+            ->type_name(command == Command::Join ? "CLIP" : "OUT");
+    if (command == Command::Render || command == Command::Join)
+        addAnimationOptions(app, typed, command);
+    if (command == Command::Bench) {
+        app.add_option("--shard", typed.shard, "Measure the Kth (from 0) of N shares of the configurations")
+            ->type_name("K/N");
+        app.add_flag("--contiguous", typed.contiguous, "With --shard: a contiguous share, not every Nth");
+        app.add_option("--merge", o.mergeDirs, "Join these shards' result folders into --out")
+            ->type_name("DIR...")
+            ->expected(1, 100000);
+    }
     if (command == Command::Bench)
         app.add_option("--out", o.outDir, "The folder for the results (made if missing)")->type_name("DIR");
     if (renders || command == Command::Time || command == Command::Bench)
@@ -409,7 +530,7 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
         app.add_flag("--convergence", o.convergence,
                      "Also trace the reference at rising paths per rough pixel and pick the count it needs");
     }
-    if (command != Command::Explain)
+    if (command != Command::Explain && command != Command::Join)
         app.add_flag("--keep-going", o.keepGoing, "A missing or unreadable model or texture is a warning");
     app.add_flag("-q,--quiet", o.quiet, "No progress on stderr (warnings and errors still)");
 
@@ -439,7 +560,11 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
     if (base::Status values = checkValues(typed, o); !values)
         return Error{values.error()};
     if (o.project.empty())
-        return Error{name + ": missing PROJECT file"};
+        return Error{name + (command == Command::Join ? ": missing SEQUENCE" : ": missing PROJECT file")};
+    if (command == Command::Join && o.output.empty())
+        return Error{"join: missing -o CLIP"};
+    if (!o.mergeDirs.empty() && o.shard)
+        return Error{"--merge: not with --shard (merge the shards' folders once they are done)"};
     if (command == Command::Render && o.output.empty())
         return Error{"render: missing -o OUT"};
     if (command == Command::Export && o.output.empty())
@@ -453,11 +578,9 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
 
 namespace {
 
-constexpr std::pair<const char*, Command> kNamed[] = {{"render", Command::Render},
-                                                      {"explain", Command::Explain},
-                                                      {"bench", Command::Bench},
-                                                      {"export", Command::Export},
-                                                      {"time", Command::Time}};
+constexpr std::pair<const char*, Command> kNamed[] = {
+    {"render", Command::Render}, {"explain", Command::Explain}, {"bench", Command::Bench},
+    {"export", Command::Export}, {"time", Command::Time},       {"join", Command::Join}};
 
 } // namespace
 

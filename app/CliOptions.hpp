@@ -1,6 +1,7 @@
 #pragma once
 
 #include "base/Result.hpp"
+#include "base/Shard.hpp"
 #include "render/plan/RenderOptions.hpp"
 
 #include <optional>
@@ -9,7 +10,7 @@
 
 namespace speculum::app {
 
-enum class Command { Editor, Render, Explain, Bench, Time, Export, Help, Version };
+enum class Command { Editor, Render, Explain, Bench, Time, Export, Join, Help, Version };
 // The word that names a command on the command line ("render"); "speculum" for the editor, help, version.
 std::string commandWord(Command command);
 
@@ -49,7 +50,14 @@ struct CliOptions {
         false; // time, explain --frame: the animation plays (1/60 s a frame), maps redrawn as needed
     bool halfFloat = false; // time: the camera's view always in half float with its composite (to compare)
     bool quiet = false;     // --quiet: no progress on stderr (warnings and errors still)
-    std::string helpText;   // Help: what to print (the usage, or one command's own help)
+    // render --frames A..B: an animation, frames A to B (both included); join --frames: the frames expected
+    std::optional<std::pair<int, int>> frameRange;
+    int fps = 24; // render, join: frames per second (--fps)
+    bool fpsGiven = false;
+    std::optional<double> turntable;    // render --turntable SECONDS: orbit the camera once in that time
+    std::optional<base::Shard> shard;   // render, bench --shard K/N [--contiguous]
+    std::vector<std::string> mergeDirs; // bench --merge DIR...
+    std::string helpText;               // Help: what to print (the usage, or one command's own help)
 };
 
 // Exit status for a command line that cannot be parsed (as for the usage errors of most tools).

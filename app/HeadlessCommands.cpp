@@ -1,5 +1,6 @@
 #include "app/HeadlessCommands.hpp"
 
+#include "app/AnimationCommand.hpp"
 #include "app/BenchCommand.hpp"
 #include "app/Interrupt.hpp"
 #include "app/OutputPaths.hpp"
@@ -408,6 +409,8 @@ void printExplanationText(const CliOptions& options, const HeadlessFrame& frame,
 // The still through scene::writeStill, the path the editor's Export Still takes too: rasterized on an EGL
 // context, or traced by the exact tracer on the CPU (no GL) with --reference.
 int runRender(const CliOptions& options) {
+    if (options.frameRange)
+        return runAnimation(options);
     const auto start = Clock::now();
     if (base::Status output = checkRenderOutput(options); !output) {
         fail(output.error());
@@ -565,6 +568,8 @@ int runBench(const CliOptions& options) {
     b.quick = options.quick;
     b.convergence = options.convergence;
     b.keepGoing = options.keepGoing;
+    b.shard = options.shard;
+    b.mergeDirs = options.mergeDirs;
     if (options.sizeGiven) {
         b.width = options.width;
         b.height = options.height;

@@ -1,4 +1,5 @@
 // speculum: the editor when run with no command (or a project file), the headless commands otherwise.
+#include "app/AnimationCommand.hpp"
 #include "app/CliOptions.hpp"
 #include "app/HeadlessCommands.hpp"
 #include "app/Interrupt.hpp"
@@ -50,6 +51,8 @@ std::optional<int> runCommand(const speculum::app::CliOptions& options) {
         return runTime(options);
     case Command::Export:
         return runExport(options);
+    case Command::Join:
+        return runJoin(options);
     case Command::Editor:
         break;
     }

@@ -49,6 +49,14 @@ void pick(ConvergenceStudy& study) {
 
 } // namespace
 
+void judgeConvergence(ConvergenceStudy& study, double smallestError) {
+    study.smallestError = smallestError;
+    study.enough.reset();
+    study.extrapolated = 0;
+    if (!study.exact && !study.points.empty())
+        pick(study);
+}
+
 std::vector<int> convergenceSamples(bool quick) {
     return quick ? std::vector<int>{4, 16, 64, 256} : std::vector<int>{4, 16, 64, 256, 1024};
 }

@@ -24,4 +24,8 @@ base::Result<ConvergenceStudy> studyConvergence(const SweepInput& sweep, int wid
                                                 const std::function<void(const std::string&)>& progress = {},
                                                 const std::function<bool()>& stop = {});
 
+// Picks the samples again for another smallest error (ConvergenceStudy::enough or ::extrapolated): a merge of
+// shards knows the run's smallest error only once every shard's records are in.
+void judgeConvergence(ConvergenceStudy& study, double smallestError);
+
 } // namespace speculum::accuracy

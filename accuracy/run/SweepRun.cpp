@@ -2,6 +2,7 @@
 
 #include "accuracy/Analysis.hpp"
 #include "accuracy/Report.hpp"
+#include "accuracy/run/FamilyComparison.hpp"
 #include "accuracy/run/Furnace.hpp"
 #include "render/plan/Planner.hpp"
 
@@ -50,8 +51,15 @@ public:
 
     base::Result<SweepOutcome> operator()() {
         const SweepTiming timing = sweepTiming(m_input.quick);
-        const std::vector<Configuration> configs = planSweep(m_input.scene, m_traits, {m_input.quick});
+        const std::vector<Configuration> plan = planSweep(m_input.scene, m_traits, {m_input.quick});
+        const std::vector<Configuration> configs = share(plan);
         SweepOutcome out;
+        if (m_input.shard) {
+            out.run.shard.emplace();
+            out.run.shard->shard = *m_input.shard;
+            for (const Configuration& c : plan)
+                out.run.shard->configurations.push_back(c.id);
+        }
         out.run.sceneName = m_input.sceneName;
         out.run.width = m_width;
         out.run.height = m_height;
@@ -60,7 +68,12 @@ public:
         out.run.timedFrames = timing.rounds;
         progress(std::to_string(configs.size()) + " configurations of " + m_input.sceneName + " at " +
                  std::to_string(m_width) + "x" + std::to_string(m_height) +
-                 (m_input.quick ? " (quick)" : ""));
+                 (m_input.quick ? " (quick)" : "") +
+                 (m_input.shard
+                      ? ", shard " + base::shardText(*m_input.shard) + " of " + std::to_string(plan.size())
+                      : std::string()));
+        if (configs.empty())
+            return out; // a shard with no share (more shards than configurations)
 
         auto references = traceReferences(configs, out.run);
         if (!references)
@@ -79,8 +92,7 @@ public:
             return base::Error{measured.error()};
         if (base::Status timed = timeRounds(timing, frames, out.records); !timed)
             return base::Error{timed.error()};
-        if (std::any_of(configs.begin(), configs.end(),
-                        [](const Configuration& c) { return c.family == Family::Glossy; })) {
+        if (runsFurnace(plan, configs)) {
             progress("white furnace: the raster glossy paths' energy against the GGX lobe's");
             auto furnace = runFurnace(m_renderer, m_observer.stop);
             if (!furnace)
@@ -92,6 +104,28 @@ public:
     }
 
 private:
+    // The configurations this run measures: all, or its shard's share.
+    std::vector<Configuration> share(const std::vector<Configuration>& plan) const {
+        if (!m_input.shard)
+            return plan;
+        std::vector<Configuration> configs;
+        for (int i : base::shardItems(*m_input.shard, static_cast<int>(plan.size())))
+            configs.push_back(plan[static_cast<std::size_t>(i)]);
+        return configs;
+    }
+
+    // The white furnace runs where the sweep has the glossy family: in a sharded sweep, once, in the
+    // shard that measures the family's first configuration.
+    bool runsFurnace(const std::vector<Configuration>& plan,
+                     const std::vector<Configuration>& configs) const {
+        auto glossy = [](const Configuration& c) { return c.family == Family::Glossy; };
+        const auto first = std::find_if(plan.begin(), plan.end(), glossy);
+        if (first == plan.end())
+            return false;
+        return std::any_of(configs.begin(), configs.end(),
+                           [&](const Configuration& c) { return c.id == first->id; });
+    }
+
     void progress(const std::string& line) const {
         if (m_observer.progress)
             m_observer.progress(line);
@@ -181,9 +215,13 @@ private:
             records.push_back(std::move(record));
             frames.keys.push_back(k);
         }
-        if (base::Status tied = findTies(records, frames.keys, costs, references); !tied)
-            return tied;
-        return compareWithBest(records, frames.keys, costs, references);
+        if (m_input.shard)
+            return base::Done{}; // the merge compares the shards' frames
+        auto image = [&](std::size_t i) -> const render::Image& { return costs.at(frames.keys[i]).image; };
+        for (const auto& [family, members] : familyMembers(records))
+            if (base::Status compared = compareFamily(records, members, image, references); !compared)
+                return compared;
+        return base::Done{};
     }
 
     // The record's figures from its frame and its comparison with the reference.
@@ -211,68 +249,6 @@ private:
         record.psnrHigh = errors.interval.psnrHigh;
         record.flipMap = "flip/" + record.config.id + ".png";
         record.relativeMseRough = errors.roughRelativeMse;
-    }
-
-    static std::map<Family, std::vector<const Record*>> rowsByFamily(const std::vector<Record>& records) {
-        std::map<Family, std::vector<const Record*>> rows;
-        for (const Record& r : records)
-            rows[r.config.family].push_back(&r);
-        return rows;
-    }
-
-    // Which records of each family the reference's noise cannot tell apart, on the pixels the family is
-    // judged by: every pair of the family, their images against their shared reference.
-    static base::Status findTies(std::vector<Record>& records, const std::vector<std::string>& keys,
-                                 const std::map<std::string, FrameCost>& costs,
-                                 const std::map<ReferenceKind, Reference>& references) {
-        std::map<Family, Metric> judged; // by the same pixels as the report ranks them
-        for (const auto& [family, rows] : rowsByFamily(records))
-            judged[family] = judgedMetric(family, rows);
-        for (std::size_t a = 0; a < records.size(); ++a)
-            for (std::size_t b = a + 1; b < records.size(); ++b) {
-                const Record &ra = records[a], &rb = records[b];
-                if (ra.config.family != rb.config.family || ra.config.reference != rb.config.reference)
-                    continue;
-                const Reference& reference = references.at(ra.config.reference);
-                auto tie = comparedWithinNoise(costs.at(keys[a]).image, costs.at(keys[b]).image, reference,
-                                               judged.at(ra.config.family));
-                if (!tie)
-                    return base::Error{tie.error()};
-                if (*tie) {
-                    records[a].tiedWith.push_back(rb.config.id);
-                    records[b].tiedWith.push_back(ra.config.id);
-                }
-            }
-        return base::Done{};
-    }
-
-    // How far each record's image is from its family's best one (by mean FLIP on the family's pixels), as
-    // a viewer would see it: Record::flipToBest. The glossy family has a best per roughness: left out.
-    static base::Status compareWithBest(std::vector<Record>& records, const std::vector<std::string>& keys,
-                                        const std::map<std::string, FrameCost>& costs,
-                                        const std::map<ReferenceKind, Reference>& references) {
-        std::map<Family, std::vector<std::size_t>> families;
-        for (std::size_t i = 0; i < records.size(); ++i)
-            if (records[i].config.family != Family::Glossy && records[i].config.family != Family::Scene)
-                families[records[i].config.family].push_back(i);
-        for (const auto& [family, members] : families) {
-            std::vector<const Record*> rows;
-            for (std::size_t i : members)
-                rows.push_back(&records[i]);
-            const Metric metric = judgedMetric(family, rows);
-            std::size_t best = members.front();
-            for (std::size_t i : members)
-                if (*focusFlip(records[i], metric) < *focusFlip(records[best], metric))
-                    best = i;
-            for (std::size_t i : members) {
-                auto apart = flipBetween(costs.at(keys[i]).image, costs.at(keys[best]).image,
-                                         references.at(records[i].config.reference), metric);
-                if (!apart)
-                    return base::Error{apart.error()};
-                records[i].flipToBest = *apart;
-            }
-        }
-        return base::Done{};
     }
 
     // Each round times every distinct configuration once; after each, every record's times are the
@@ -392,6 +368,10 @@ std::string summaryLine(const std::string& step, const Record& r) {
     }
     std::snprintf(text, sizeof text, ", %.1f MiB", static_cast<double>(r.memory.total()) / (1024.0 * 1024.0));
     return line + text;
+}
+
+std::vector<Configuration> sweepPlan(const SweepInput& input) {
+    return planSweep(input.scene, traitsOf(input), {input.quick});
 }
 
 base::Result<SweepOutcome> runSweep(render::Renderer& renderer, const SweepInput& input,

@@ -43,7 +43,13 @@ struct SweepInput {
     int width = 0; // 0: defaultSweepSize(quick)
     int height = 0;
     bool quick = false;
+    // Measure only this share of the configurations (base::shardItems of sweepPlan's list): bench --shard.
+    std::optional<base::Shard> shard;
 };
+
+// The configurations the sweep measures, in its order (planSweep on the scene's traits): a shard run's
+// share is base::shardItems of this list.
+std::vector<Configuration> sweepPlan(const SweepInput& input);
 
 // What a running sweep tells its caller. Every callback is called on the thread running the sweep, and
 // each may be empty.
@@ -64,7 +70,10 @@ struct SweepObserver {
 };
 
 // A finished sweep: the run's description (scene name, size, frames, references; the caller adds the
-// project path and the renderer) and one record per configuration, in the order of planSweep.
+// project path and the renderer) and one record per configuration, in the order of planSweep. A shard's
+// (SweepInput::shard) has the records of its share only, RunInfo::shard says which (the caller adds the
+// project's digest and the host), and its records have no tiedWith nor flipToBest: those compare frames of
+// other shards, and the merge finds them (compareFamily).
 struct SweepOutcome {
     RunInfo run;
     std::vector<Record> records;
@@ -75,6 +84,8 @@ inline constexpr const char* kSweepStopped = "stopped";
 
 // The bench's sweep: plans the configurations the scene calls for (planSweep), traces each reference they
 // need, renders and compares every configuration once, then times all distinct configurations in rounds.
+// A shard does the same for its share; the white furnace runs in the shard that measures the first glossy
+// configuration.
 // Needs `renderer`'s GL context current on the calling thread. Errors: a reference or a frame that fails,
 // an observer's error, or kSweepStopped.
 base::Result<SweepOutcome> runSweep(render::Renderer& renderer, const SweepInput& input,

@@ -122,6 +122,19 @@ render::ImageMetadata stillMetadata(const std::string& projectPath, const StillE
     return metadata;
 }
 
+base::Result<StillExportResult> renderStillImage(render::Renderer* renderer, const render::FrameInput& input,
+                                                 const StillExportSettings& settings,
+                                                 const render::ProgressCallback& progress,
+                                                 const std::string& rendererDescription) {
+    if (!settings.reference && !renderer)
+        return base::Error{"no renderer to draw the still with"};
+    auto result = settings.reference ? traceStill(input, settings, progress)
+                                     : rasterStill(*renderer, input, settings, progress);
+    if (result && !settings.reference)
+        result->renderer = rendererDescription;
+    return result;
+}
+
 base::Result<StillExportResult> writeStill(render::Renderer* renderer, const render::FrameInput& input,
                                            const std::string& projectPath,
                                            const StillExportSettings& settings, const std::string& outputPath,
@@ -129,14 +142,9 @@ base::Result<StillExportResult> writeStill(render::Renderer* renderer, const ren
                                            const std::string& rendererDescription) {
     if (auto valid = validateStillExport(settings, outputPath); !valid)
         return base::Error{valid.error()};
-    if (!settings.reference && !renderer)
-        return base::Error{"no renderer to draw the still with"};
-    auto result = settings.reference ? traceStill(input, settings, progress)
-                                     : rasterStill(*renderer, input, settings, progress);
+    auto result = renderStillImage(renderer, input, settings, progress, rendererDescription);
     if (!result)
         return result;
-    if (!settings.reference)
-        result->renderer = rendererDescription;
     if (auto written = render::writeImage(outputPath, result->still.image,
                                           stillMetadata(projectPath, settings, *result));
         !written)

@@ -58,6 +58,12 @@ struct StillExportResult {
 render::ImageMetadata stillMetadata(const std::string& projectPath, const StillExportSettings& settings,
                                     const StillExportResult& result);
 
+// Renders `input` as writeStill() does, without writing it: for the frames of an animation.
+base::Result<StillExportResult> renderStillImage(render::Renderer* renderer, const render::FrameInput& input,
+                                                 const StillExportSettings& settings,
+                                                 const render::ProgressCallback& progress = {},
+                                                 const std::string& rendererDescription = {});
+
 // Renders `input` (a scene evaluated at settings.time) with `renderer` (its context current), or traces it
 // for a reference still, and writes `outputPath`. A cancel through `progress` returns an error "cancelled"
 // and writes nothing; so does any failure.
