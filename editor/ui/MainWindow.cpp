@@ -4,6 +4,7 @@
 #include "base/Printable.hpp"
 #include "editor/document/NewScene.hpp"
 #include "editor/ui/AccuracyPanel.hpp"
+#include "editor/ui/AnimationExportJob.hpp"
 #include "editor/ui/InspectPanel.hpp"
 #include "editor/ui/Inspector.hpp"
 #include "editor/ui/RenderPassesPanel.hpp"
@@ -114,7 +115,11 @@ MainWindow::MainWindow(QWidget* parent)
     newProject();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // Before the document goes with the other children: a running export stops and waits for its worker,
+    // which asks the GUI thread for the document's frames.
+    delete m_animationJob;
+}
 
 QAction* MainWindow::action(const QString& objectName) const {
     return findChild<QAction*>(objectName);

@@ -4,6 +4,7 @@
 #include "editor/document/DocumentSession.hpp"
 #include "editor/document/EditOperations.hpp"
 #include "editor/document/NodeFactory.hpp"
+#include "scene/export/AnimationExport.hpp"
 #include "scene/export/GltfExport.hpp"
 #include "scene/export/StillExport.hpp"
 #include "scene/project/Recovery.hpp"
@@ -16,6 +17,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QAction;
@@ -24,6 +26,7 @@ class QLabel;
 class QMenu;
 class QPlainTextEdit;
 class QProgressBar;
+class QProgressDialog;
 class QToolButton;
 class QUndoStack;
 
@@ -38,6 +41,7 @@ class Selection;
 namespace speculum::ui {
 
 class AccuracyPanel;
+class AnimationExportJob;
 class Inspector;
 class ModelImportJob;
 class RenderPassesPanel;
@@ -137,6 +141,16 @@ public:
     base::Result<scene::StillExportResult> exportStillFile(const QString& path,
                                                            const scene::StillExportSettings& settings,
                                                            const render::ProgressCallback& progress = {});
+    // File ▸ Export Animation, without the dialog: checks the settings, then draws the frames on a worker
+    // (AnimationExportJob) and returns at once; a window-modal progress dialog shows the frame, the time
+    // left and Cancel meanwhile. The document is only read, never changed. When the export ends:
+    // animationExportFinished(), lastAnimationExport(), a status bar message, and the result opened in the
+    // desktop's player (a clip) or file manager (a sequence's folder) unless setOpensExports(false).
+    base::Status startAnimationExport(const QString& path, const scene::AnimationSettings& settings);
+    bool animationExportRunning() const;
+    void cancelAnimationExport(); // as the progress dialog's Cancel
+    const std::optional<scene::AnimationResult>& lastAnimationExport() const { return m_lastAnimationExport; }
+    void setOpensExports(bool on) { m_opensExports = on; }
 
     // Crash recovery. The store defaults to RecoveryStore::forThisProcess(); tests use their own folder.
     void setRecoveryStore(const scene::RecoveryStore& store);
@@ -175,6 +189,8 @@ signals:
     void importFinished(const QString& path, bool ok, const QString& message);
     // The viewport's right-click menu, about to open (tests close it from here).
     void viewportMenuShown(QMenu* menu);
+    // An animation export ended (done, failed or cancelled): lastAnimationExport() says how.
+    void animationExportFinished();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -198,6 +214,7 @@ private slots:
     void onImportModel(bool asReflector);
     void onExportGltf();
     void onExportStill();
+    void onExportAnimation();
     void showControls();
     void showAbout();
     void updateTitle();
@@ -211,6 +228,19 @@ private:
                                                              const render::ProgressCallback& progress);
     void logStillExport(const QString& path, const scene::StillExportSettings& settings,
                         base::Result<scene::StillExportResult>& result);
+    // ---- Export Animation (MainWindowAnimation.cpp)
+    render::FrameInput animationFrame(double time); // the export's frame source, on the GUI thread
+    QProgressDialog* animationProgressDialog(const QString& path);
+    void showAnimationProgress(const scene::AnimationProgress& progress);
+    void animationExportEnded(const scene::AnimationResult& result);
+    void logAnimationExport(const scene::AnimationResult& result);
+    AnimationExportJob* m_animationJob = nullptr; // QObject child
+    QProgressDialog* m_animationProgress = nullptr;
+    QString m_animationPath; // as the user wrote it: a clip, or a sequence's pattern
+    scene::AnimationSettings m_animationSettings;
+    std::optional<std::vector<scene::Warning>> m_animationSceneWarnings; // the first frame's
+    std::optional<scene::AnimationResult> m_lastAnimationExport;
+    bool m_opensExports = true;
     // Construction: a builder per menu (MainWindowActions.cpp) and per dock (MainWindow.cpp).
     void createActions();
     void createFileMenu();

@@ -538,6 +538,8 @@ void MainWindow::createFileMenu() {
     connect(makeAction(file, QStringLiteral("actionExportStill"), tr("Export S&till…"),
                        QKeySequence(Qt::CTRL | Qt::Key_E)),
             &QAction::triggered, this, &MainWindow::onExportStill);
+    connect(makeAction(file, QStringLiteral("actionExportAnimation"), tr("Export &Animation…")),
+            &QAction::triggered, this, &MainWindow::onExportAnimation);
     file->addSeparator();
     QAction* quit = makeAction(file, QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
     quit->setMenuRole(QAction::QuitRole);

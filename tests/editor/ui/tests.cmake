@@ -66,3 +66,8 @@ speculum_add_test(ViewportNavigationGuiTest TIER gui
 # View ▸ Inspect Pixel: a click explains the pixel in the Pixel Inspector and draws its path in the view.
 speculum_add_test(PixelInspectorGuiTest TIER gui
     SOURCES PixelInspectorGuiTest.cpp ${gui_main} LIBS speculum_editor_ui Qt6::Test)
+# File ▸ Export Animation: the dialog's defaults and remembered choices, a PNG sequence through the menu
+# and a GIF clip of the teapot demo while the event loop runs, Cancel (the sequence's finished frames kept,
+# no clip), exact frames, closing the editor mid-export; the document unchanged throughout.
+speculum_add_test(ExportAnimationGuiTest TIER gui
+    SOURCES ExportAnimationGuiTest.cpp ${gui_main} LIBS speculum_editor_ui Qt6::Test)
