@@ -233,9 +233,13 @@ void AnimationRun::stopped(const base::Status& why, int frame) {
     std::string message = m_cancelled ? std::string("cancelled") : why.error();
     if (!m_output.video) {
         m_result.resumeFrom = frame;
+        // The frame that failed left nothing (its own "; nothing was written"); the earlier ones stay.
+        const std::string unwritten = "; nothing was written";
+        if (message.ends_with(unwritten))
+            message.resize(message.size() - unwritten.size());
         if (!m_result.written.empty())
             message += "; frames " + rangeText(m_result.written.front(), m_result.written.back()) +
-                       " are written; resume with --frames " + rangeText(frame, m_settings.frames.last);
+                       " are kept; resume with --frames " + rangeText(frame, m_settings.frames.last);
         else
             message += "; no frame was written";
     } else {

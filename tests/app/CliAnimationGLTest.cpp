@@ -373,3 +373,41 @@ TEST_F(CliAnimation, ShardsThatSplitTheRangeDifferentlyAreRefused) {
     for (const std::string& name : filesIn(m_dir))
         EXPECT_EQ(name.find(".shard-"), std::string::npos) << name;
 }
+
+TEST_F(CliAnimation, AFullDiskMidSequenceKeepsTheFramesDoneAndSaysWhereToResume) {
+    // A real full disk: a 48 KiB tmpfs mounted in a mount namespace of the command's own (root only), which
+    // a dozen of these frames fill. The namespace's shell copies out what the render left before the tmpfs
+    // goes with it.
+    const fs::path disk = m_dir / "disk", kept = m_dir / "kept";
+    fs::create_directories(disk);
+    fs::create_directories(kept);
+    const std::string script = "unshare -m sh -c '\n"
+                               "mount -t tmpfs -o size=48k tmpfs \"" +
+                               disk.string() + "\" || exit 77\n" + speculum::testCliBinary() + " render \"" +
+                               scene("teapot.speculum.json") + "\" --size 160x90 --frames 0..99 -q -o \"" +
+                               (disk / "shot_%04d.png").string() + "\" >/dev/null 2>\"" +
+                               (m_dir / "err.txt").string() + "\"\n" + "echo $? >\"" +
+                               (m_dir / "status.txt").string() + "\"\nls -A \"" + disk.string() + "\" >\"" +
+                               (m_dir / "listing.txt").string() + "\"\ncp \"" + disk.string() +
+                               "\"/shot_* \"" + kept.string() + "\"\n'\n";
+    std::ofstream(m_dir / "run.sh") << script;
+    const int raw = std::system(("/bin/sh '" + (m_dir / "run.sh").string() + "'").c_str());
+    if (::geteuid() != 0 || (WIFEXITED(raw) && WEXITSTATUS(raw) == 77))
+        GTEST_SKIP() << "no tmpfs of our own here (it needs root and mount namespaces)";
+    ASSERT_EQ(readAll(m_dir / "status.txt"), "1\n") << readAll(m_dir / "err.txt");
+    const std::string err = readAll(m_dir / "err.txt");
+    const std::vector<std::string> frames = filesIn(kept);
+    ASSERT_GE(frames.size(), 2u) << err;
+    ASSERT_LT(frames.size(), 100u);
+    const std::string next = std::to_string(frames.size());
+    EXPECT_NE(err.find("the disk is full"), std::string::npos) << err;
+    EXPECT_NE(err.find("frames 0.." + std::to_string(frames.size() - 1) + " are kept; resume with --frames " +
+                       next + "..99"),
+              std::string::npos)
+        << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_EQ(readAll(m_dir / "listing.txt").find('.'), readAll(m_dir / "listing.txt").find(".png"))
+        << "only whole frames, no temporary: " << readAll(m_dir / "listing.txt");
+    for (const std::string& frame : frames)
+        EXPECT_EQ(rgbOf(kept / frame).size(), 160u * 90u * 3u) << frame << " is whole";
+}
