@@ -91,16 +91,10 @@ void printProgress(Progress& progress, const scene::AnimationProgress& p) {
 int reportResult(const CliOptions& options, const scene::AnimationOutput& output,
                  const scene::AnimationResult& result) {
     printWarnings(result.warnings);
-    if (StopOnSignal::requested() || result.cancelled) {
-        const std::string kept =
-            output.video ? std::string("the partial clip was removed")
-            : result.written.empty()
-                ? std::string("no frame was written")
-                : "frames " + rangeText(result.written) + " are kept; resume with --frames " +
-                      std::to_string(result.resumeFrom.value_or(options.frameRange->first)) + ".." +
-                      std::to_string(options.frameRange->second);
-        return interrupted("render", kept);
-    }
+    // A signal that came as the work was done does not undo it: only a stopped export is interrupted.
+    if (result.cancelled || (!result.status && StopOnSignal::requested()))
+        return interrupted("render",
+                           output.video ? std::string("the partial clip was removed") : result.outcome);
     if (!result.status) {
         printError("render: " + result.status.error());
         return 1;
@@ -171,7 +165,7 @@ int runAnimation(const CliOptions& options) {
         return !StopOnSignal::requested();
     };
     std::error_code ec;
-    const std::string projectPath = std::filesystem::absolute(options.project, ec).string();
+    const std::string projectPath = std::filesystem::weakly_canonical(options.project, ec).string();
     const scene::AnimationResult result = scene::exportAnimation(
         renderer.get(), source, projectPath, animationSettings(options), *output, report, description);
     progress.finish();

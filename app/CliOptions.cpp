@@ -297,6 +297,9 @@ base::Status checkAnimationValues(const Typed& t, CliOptions& o) {
         o.turntable = seconds;
         if (!o.frameRange) {
             const long long frames = std::llround(seconds * o.fps);
+            if (frames > 10000000)
+                return Error{"--turntable: " + base::quoted(t.turntable) + " seconds at " +
+                             std::to_string(o.fps) + " fps is more than 10000000 frames"};
             o.frameRange = std::pair{0, static_cast<int>(std::max(1ll, frames) - 1)};
         }
     }

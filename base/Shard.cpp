@@ -40,7 +40,7 @@ std::vector<int> shardItems(const Shard& shard, int itemCount) {
             items.push_back(i);
         return items;
     }
-    // Runs as even as can be: the first (itemCount mod count) shards take one item more.
+    // Runs as even as can be: shard k takes [k n / c, (k + 1) n / c), so the runs differ by one item at most.
     const long long n = itemCount, k = shard.index, c = shard.count;
     const long long begin = k * n / c, end = (k + 1) * n / c;
     for (long long i = begin; i < end; ++i)

@@ -116,6 +116,11 @@ base::Status checkVideoTarget(VideoFormat format, int width, int height, int fps
         return base::Error{"--fps " + std::to_string(fps) + " is out of range (" + std::to_string(kMinFps) +
                            ".." + std::to_string(kMaxFps) + ")"};
     if (format == VideoFormat::Gif) {
+        // A GIF counts each frame's delay in hundredths of a second; players stretch delays under 2.
+        if (fps > 50)
+            return base::Error{"a GIF plays at most 50 frames a second (its frame delays are hundredths of "
+                               "a second), not " +
+                               std::to_string(fps) + "; use .mp4 or .webm"};
         if (width > 65535 || height > 65535)
             return base::Error{"a GIF is at most 65535 pixels a side, not " + std::to_string(width) + "x" +
                                std::to_string(height)};

@@ -105,13 +105,14 @@ base::Result<DecodedVideo> decodeVideo(const std::string& path) {
     const auto fail = [&](const std::string& why) {
         return base::Error{base::printable(path, 400) + ": cannot decode: " + why};
     };
-    if (int code = avformat_open_input(&r.format, path.c_str(), nullptr, nullptr); code < 0)
+    if (int code = avformat_open_input(&r.format, ("file:" + path).c_str(), nullptr, nullptr); code < 0)
         return fail(avError(code));
     if (int code = avformat_find_stream_info(r.format, nullptr); code < 0)
         return fail(avError(code));
     if (base::Status opened = openDecoder(r, video); !opened)
         return fail(opened.error());
-    while (av_read_frame(r.format, r.packet) >= 0) {
+    int read = 0;
+    while ((read = av_read_frame(r.format, r.packet)) >= 0) {
         const bool ours = r.packet->stream_index == r.stream;
         const int code = ours ? avcodec_send_packet(r.context, r.packet) : 0;
         av_packet_unref(r.packet);
@@ -120,6 +121,8 @@ base::Result<DecodedVideo> decodeVideo(const std::string& path) {
         if (base::Status drained = drain(r, video); !drained)
             return fail(drained.error());
     }
+    if (read != AVERROR_EOF) // a damaged clip is an error, not a shorter one
+        return fail(avError(read));
     avcodec_send_packet(r.context, nullptr);
     if (base::Status drained = drain(r, video); !drained)
         return fail(drained.error());

@@ -142,7 +142,7 @@ VideoWriter::VideoWriter(std::string path, VideoFormat format, Settings settings
     , m_settings(std::move(settings))
     , m_codec(std::make_unique<Codec>()) {}
 
-VideoWriter::~VideoWriter() = default; // the codec first, then the AtomicFile removes the temporary
+VideoWriter::~VideoWriter() = default; // the codec first (declared last), then the AtomicFile
 
 base::Result<std::unique_ptr<VideoWriter>> VideoWriter::open(const std::string& path, VideoFormat format,
                                                              const Settings& settings) {
@@ -196,7 +196,7 @@ base::Status VideoWriter::start() {
     c.stream->avg_frame_rate = ctx.framerate;
     for (const auto& [key, value] : m_settings.metadata)
         av_dict_set(&c.format->metadata, key.c_str(), value.c_str(), 0);
-    if ((code = avio_open(&c.format->pb, temp.c_str(), AVIO_FLAG_WRITE)) < 0)
+    if ((code = avio_open(&c.format->pb, ("file:" + temp).c_str(), AVIO_FLAG_WRITE)) < 0)
         return failure("cannot open the file", code);
     c.ioOpen = true;
     if ((code = avformat_write_header(c.format, nullptr)) < 0)

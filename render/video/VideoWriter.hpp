@@ -53,8 +53,10 @@ private:
     std::string m_path;
     VideoFormat m_format;
     Settings m_settings;
-    std::unique_ptr<Codec> m_codec;
+    // The file first: members go in reverse order, so the encoder closes its handle on the temporary
+    // before the AtomicFile removes an uncommitted one.
     std::optional<base::AtomicFile> m_file;
+    std::unique_ptr<Codec> m_codec;
     int m_frames = 0;
     bool m_failed = false;
 };

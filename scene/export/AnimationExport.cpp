@@ -49,14 +49,28 @@ std::vector<std::uint8_t> toSrgb8(const render::Image& image) {
     return bytes;
 }
 
+// The project by its file's name and contents (FNV-1a), not its path: the shards of one clip on machines
+// that mount the project in other places, or name it by another relative path, draw the same clip.
+std::string projectIdentity(const std::string& projectPath) {
+    if (projectPath.empty())
+        return "untitled";
+    std::ifstream in(projectPath, std::ios::binary);
+    std::uint64_t hash = 14695981039346656037ull;
+    for (char c; in.get(c);)
+        hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    std::ostringstream text;
+    text << std::filesystem::path(projectPath).filename().string() << " (" << std::hex << hash << ")";
+    return text.str();
+}
+
 // The settings every frame of one clip shares, stored in each frame ("speculum:clip") so that `join`
 // can refuse frames of another clip.
 std::string clipFingerprint(const std::string& projectPath, const AnimationSettings& s) {
     std::ostringstream text;
-    text << "scene " << (projectPath.empty() ? std::string("untitled") : projectPath) << "; size "
-         << s.still.width << "x" << s.still.height << "; ssaa " << s.still.ssaa << "; "
+    text << "scene " << projectIdentity(projectPath) << "; size " << s.still.width << "x" << s.still.height
+         << "; ssaa " << s.still.ssaa << "; "
          << (s.still.reference ? "reference, " + std::to_string(s.still.samples) + " paths" : "raster")
-         << "; frames " << s.frames.first << ".." << s.frames.last << "; fps " << s.fps;
+         << "; fps " << s.fps;
     if (s.turntableSeconds)
         text << "; turntable " << *s.turntableSeconds << " s";
     return text.str();
@@ -122,6 +136,7 @@ private:
     base::Status prepare(const std::vector<int>& frames);
     base::Status drawAndWrite(int frame);
     void stopped(const base::Status& why, int frame);
+    std::string keptAndResume(int frame) const;
 
     render::Renderer* m_renderer;
     const FrameSource& m_source;
@@ -218,10 +233,8 @@ base::Status AnimationRun::writeFrame(int frame, const StillExportResult& drawn)
 base::Status AnimationRun::prepareShardRecords() {
     if (m_output.video)
         return base::Done{};
-    if (m_settings.shard.whole()) {
-        clearShardRecords(m_output.path);
+    if (m_settings.shard.whole())
         return base::Done{};
-    }
     if (base::Status agree = checkShardRecords(m_output.path, m_settings.frames, m_settings.shard); !agree)
         return agree;
     return recordShard(m_output.path, m_settings.frames, m_settings.shard);
@@ -231,21 +244,37 @@ base::Status AnimationRun::prepareShardRecords() {
 void AnimationRun::stopped(const base::Status& why, int frame) {
     m_result.cancelled = m_cancelled;
     std::string message = m_cancelled ? std::string("cancelled") : why.error();
-    if (!m_output.video) {
-        m_result.resumeFrom = frame;
-        // The frame that failed left nothing (its own "; nothing was written"); the earlier ones stay.
-        const std::string unwritten = "; nothing was written";
-        if (message.ends_with(unwritten))
+    for (const std::string unwritten : {"; nothing was written", "; no clip was written"})
+        if (message.ends_with(unwritten)) // the frame or clip that failed says so itself; said once below
             message.resize(message.size() - unwritten.size());
-        if (!m_result.written.empty())
-            message += "; frames " + rangeText(m_result.written.front(), m_result.written.back()) +
-                       " are kept; resume with --frames " + rangeText(frame, m_settings.frames.last);
-        else
-            message += "; no frame was written";
+    if (m_output.video) {
+        m_result.outcome = "no clip was written";
     } else {
-        message += "; no clip was written";
+        m_result.resumeFrom = frame;
+        m_result.outcome = keptAndResume(frame);
     }
-    m_result.status = base::Error{message};
+    m_result.status = base::Error{message + "; " + m_result.outcome};
+}
+
+// What a sequence that stopped before `frame` kept, and how to finish it. A range resumes from `frame`
+// where nothing carries between frames; where maps do (time-sliced, drawn once), the frames before
+// `frame` must be drawn again for its maps, and a shard's share is its own: both run again whole.
+std::string AnimationRun::keptAndResume(int frame) const {
+    const std::vector<int>& kept = m_result.written;
+    std::string text;
+    if (kept.empty())
+        text = "no frame was written";
+    else if (m_settings.shard.whole())
+        text = "frames " + rangeText(kept.front(), kept.back()) + " are kept";
+    else
+        text = std::to_string(kept.size()) + (kept.size() == 1 ? " frame" : " frames") + " of shard " +
+               base::shardText(m_settings.shard) + " are kept";
+    if (!m_settings.shard.whole())
+        return text + "; run the same command again to finish the shard";
+    if (m_history != MapHistory::None && !m_settings.still.reference)
+        return text + "; run the same command again (the maps of frame " + std::to_string(frame) +
+               " depend on the frames before it)";
+    return text + "; resume with --frames " + rangeText(frame, m_settings.frames.last);
 }
 
 // Everything before the first frame: the checks, the shards' records, what the maps carry between
@@ -293,6 +322,10 @@ base::Status AnimationRun::drawAndWrite(int frame) {
 }
 
 AnimationResult AnimationRun::run() {
+    if (base::Status valid = validateAnimationExport(m_settings, m_output); !valid) {
+        m_result.status = valid;
+        return m_result;
+    }
     const std::vector<int> frames = framesToDraw(m_settings);
     m_total = static_cast<int>(frames.size());
     if (base::Status prepared = prepare(frames); !prepared) {
@@ -310,6 +343,12 @@ AnimationResult AnimationRun::run() {
             return m_result;
         }
     }
+    if (m_cancelled) { // a cancel as the last frame was finished: a clip is not committed after it
+        stopped(base::Error{"cancelled"}, frames.back() + 1);
+        return m_result;
+    }
+    if (!m_output.video && m_settings.shard.whole())
+        clearShardRecords(m_output.path, m_settings.frames); // this render drew every frame itself
     if (m_video) {
         if (base::Status finished = m_video->finish(); !finished) {
             m_result.status = finished;
@@ -374,11 +413,11 @@ std::vector<int> framesOnDisk(const std::string& pattern) {
         return std::regex_replace(text, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)");
     };
     const int width = n[1].matched ? std::stoi(n[1].str().substr(1)) : 1;
-    const std::regex file(escape(n.prefix().str()) + "([0-9]{" + std::to_string(width) + ",9})" +
+    const std::regex file(escape(n.prefix().str()) + "([0-9]{" + std::to_string(width) + ",7})" +
                           escape(n.suffix().str()));
     std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-        const std::string candidate = entry.path().filename().string();
+    for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string candidate = it->path().filename().string();
         std::smatch f;
         if (std::regex_match(candidate, f, file) &&
             sequenceFramePath(name, std::stoi(f[1].str())) == candidate)
@@ -414,14 +453,19 @@ std::vector<ShardRecord> shardRecords(const std::string& pattern) {
     std::vector<ShardRecord> records;
     const std::string prefix = recordPrefix(pattern);
     std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(folderOf(pattern), ec)) {
-        const std::string name = entry.path().filename().string();
+    for (std::filesystem::directory_iterator it(folderOf(pattern), ec), end; !ec && it != end;
+         it.increment(ec)) {
+        const std::filesystem::path entry = it->path();
+        const std::string name = entry.filename().string();
         if (!name.starts_with(prefix))
             continue;
-        std::ifstream in(entry.path());
-        ShardRecord record{entry.path().string(), {}, {}};
+        std::ifstream in(entry);
+        ShardRecord record{entry.string(), {}, {}};
         std::getline(in, record.shard);
         std::getline(in, record.layout);
+        record.shard =
+            base::printable(record.shard, 40); // a record edited by hand stays one line in messages
+        record.layout = base::printable(record.layout, 200);
         records.push_back(std::move(record));
     }
     std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) { return a.file < b.file; });
@@ -456,8 +500,12 @@ base::Status recordShard(const std::string& pattern, const FrameRange& frames, c
     return out->commit();
 }
 
-void clearShardRecords(const std::string& pattern) {
+void clearShardRecords(const std::string& pattern, const FrameRange& frames) {
+    const std::string range =
+        "frames " + std::to_string(frames.first) + ".." + std::to_string(frames.last) + ",";
     for (const ShardRecord& record : shardRecords(pattern)) {
+        if (!record.layout.starts_with(range))
+            continue;
         std::error_code ec;
         std::filesystem::remove(record.file, ec);
     }

@@ -52,7 +52,7 @@ std::vector<int> framesOnDisk(const std::string& pattern);
 base::Status checkShardRecords(const std::string& pattern, const FrameRange& frames,
                                const base::Shard& shard);
 base::Status recordShard(const std::string& pattern, const FrameRange& frames, const base::Shard& shard);
-void clearShardRecords(const std::string& pattern);
+void clearShardRecords(const std::string& pattern, const FrameRange& frames);
 // The records `join` checks: all alike, or an error naming two that differ.
 base::Status checkShardRecordsAgree(const std::string& pattern);
 
@@ -94,8 +94,11 @@ using FrameSource = std::function<render::FrameInput(double time)>;
 struct AnimationResult {
     base::Status status = base::Done{};
     bool cancelled = false;
-    std::vector<int> written;          // frames written to the sequence, or encoded into the clip
-    std::optional<int> resumeFrom;     // a sequence that stopped: the first frame it lacks
+    std::vector<int> written;      // frames written to the sequence, or encoded into the clip
+    std::optional<int> resumeFrom; // a sequence that stopped: the first frame it lacks
+    // What a stop left and how to finish ("frames 0..37 are kept; resume with --frames 38..239", "no
+    // clip was written"); the status's error ends with it.
+    std::string outcome;
     int replayed = 0;                  // frames drawn only to bring the maps to where the clip has them
     std::vector<std::string> warnings; // each once, the first frame's
     double totalMs = 0.0;

@@ -231,6 +231,16 @@ TEST_F(CliAnimation, JoinEncodesASequenceAndRefusesMissingOrMismatchedFrames) {
     EXPECT_EQ(run.status, 1);
     EXPECT_NE(run.err.find("frame 5 belongs to another clip"), std::string::npos) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    // A sequence finished in two runs (as a stopped render is resumed) is one clip.
+    fs::create_directories(m_dir / "resumed");
+    for (const char* range : {"0..9", "10..23"}) {
+        run = cli("render " + scene("teapot.speculum.json") + " --frames " + range +
+                  " --size 160x90 -q -o '" + (m_dir / "resumed" / "shot_%04d.png").string() + "'");
+        ASSERT_EQ(run.status, 0) << run.err;
+    }
+    run = cli("join '" + (m_dir / "resumed" / "shot_%04d.png").string() + "' -q -o " +
+              (m_dir / "resumed.mp4").string());
+    EXPECT_EQ(run.status, 0) << run.err;
     for (const char* refused : {"gap.mp4", "size.mp4", "other.mp4"})
         EXPECT_FALSE(fs::exists(m_dir / refused)) << refused;
 }
@@ -254,6 +264,8 @@ TEST_F(CliAnimation, BadInputIsOneLineAndWritesNothing) {
          "even width and height"},
         {teapot + "--frames 0..3 --shard 0/2 -o " + (m_dir / "clip.mp4").string(), 1, "speculum join"},
         {teapot + "--frames 0..3 --shard 2/2" + seq, 2, "K is out of range (0..1"},
+        {teapot + "--frames 0..3 --fps 60 -o " + (m_dir / "clip.gif").string(), 1,
+         "at most 50 frames a second"},
         {teapot + "--frames 0..3 --contiguous" + seq, 2, "only with --shard"},
         {teapot + "--fps 12" + seq, 2, "only with --frames"},
         {teapot + "--frames 0..3 --time 1" + seq, 2, "not with --frames"},
