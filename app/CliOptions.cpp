@@ -465,23 +465,14 @@ void addExplainOptions(CLI::App& app, Typed& typed, CliOptions& o) {
                  "With --preview: as while a handle is dragged (shadow maps drawn smaller)");
 }
 
-// One command's options, parsed by CLI11: --opt value and --opt=value alike, -h/--help for the command's
-// own help. Values are kept as typed and checked by checkValues, so every form gets the same message.
-base::Result<CliOptions> parseCommand(Command command, const std::string& name,
-                                      const std::vector<std::string>& rest) {
-    CliOptions o;
-    o.command = command;
-    Typed typed;
-    CLI::App app(describe(command), "speculum " + name);
-    app.set_help_flag("-h,--help", "Print this help and exit");
-    // Unknown words are checked below, to name them the way every other error of speculum does.
-    app.allow_extras();
+// What a command reads and writes: PROJECT (join: SEQUENCE), -o (bench: --out), and the options that
+// choose which frames or configurations (render and join: --frames and their kin; bench: --shard, --merge).
+void addTargetOptions(CLI::App& app, Typed& typed, CliOptions& o, Command command) {
     if (command == Command::Join)
         app.add_option("SEQUENCE", o.project, "The image sequence: its name with the frame number")
             ->type_name("");
     else
         app.add_option("PROJECT", o.project, "The project file (*.speculum.json)")->type_name("");
-    const bool renders = command == Command::Render || command == Command::Explain;
     if (command == Command::Render || command == Command::Export || command == Command::Join)
         app.add_option("-o,--output", o.output,
                        command == Command::Render
@@ -503,6 +494,21 @@ base::Result<CliOptions> parseCommand(Command command, const std::string& name,
     }
     if (command == Command::Bench)
         app.add_option("--out", o.outDir, "The folder for the results (made if missing)")->type_name("DIR");
+}
+
+// One command's options, parsed by CLI11: --opt value and --opt=value alike, -h/--help for the command's
+// own help. Values are kept as typed and checked by checkValues, so every form gets the same message.
+base::Result<CliOptions> parseCommand(Command command, const std::string& name,
+                                      const std::vector<std::string>& rest) {
+    CliOptions o;
+    o.command = command;
+    Typed typed;
+    CLI::App app(describe(command), "speculum " + name);
+    app.set_help_flag("-h,--help", "Print this help and exit");
+    // Unknown words are checked below, to name them the way every other error of speculum does.
+    app.allow_extras();
+    addTargetOptions(app, typed, o, command);
+    const bool renders = command == Command::Render || command == Command::Explain;
     if (renders || command == Command::Time || command == Command::Bench)
         app.add_option("--size", typed.size, "WIDTHxHEIGHT of the frame (default 1280x720)")
             ->type_name("WxH");
