@@ -205,7 +205,9 @@ const char* describe(Command command) {
     case Command::Render:
         return "Writes a still of PROJECT to OUT, in the format of its extension: PNG, JPEG, TIFF, EXR or "
                "any "
-               "other format OpenImageIO writes (WebP, Targa, Radiance HDR, ...).";
+               "other format OpenImageIO writes (WebP, Targa, Radiance HDR, ...); with --frames or "
+               "--turntable, an "
+               "animation: an image sequence or a clip (.mp4, .webm, .gif).";
     case Command::Explain:
         return "Renders a frame of PROJECT and lists the passes that ran and the effects skipped, with "
                "reasons and times.";
